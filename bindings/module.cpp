@@ -1,0 +1,14 @@
+// The single extension module vistrack._core; each area binds itself in bind_<area>.cpp.
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "vistrack/error.hpp"
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation.";
+  m.attr("__version__") = VISTRACK_VERSION;
+  // One error type, a ValueError, for every invalid input (DESIGN.md, Conventions).
+  pybind11::register_exception<vistrack::Error>(m, "VistrackError", PyExc_ValueError);
+
+  vistrack::bindings::bind_environment(m);
+}

@@ -1,0 +1,103 @@
+// The world the UAV flies in: 2.5D buildings or an arbitrary triangle mesh, the ground, the
+// road network, and the point of interest (POI) moving along it. Section III.B-C of the
+// visibility-volume paper.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vistrack/geometry.hpp"
+
+namespace vistrack {
+
+// An extruded footprint B_i = A_i x [0, h_i] (section III.B).
+struct Building {
+  Polygon footprint;  // normalised: outer counter-clockwise, holes clockwise
+  double height = 0.0;
+  int id = 0;         // from properties.id when present, else the feature index
+};
+
+// Graph G = (N, E) of road nodes on the ground plane with bidirectional edges.
+struct RoadNetwork {
+  std::vector<Vec2> nodes;
+  std::vector<std::pair<int, int>> edges;
+};
+
+// A closed triangle mesh: vertices (n, 3) and faces (m, 3) indexing them.
+struct TriangleMesh {
+  Points3 vertices;
+  Faces faces;
+};
+
+class Environment {
+ public:
+  // 2.5D buildings from a GeoJSON FeatureCollection of Polygon / MultiPolygon features with
+  // properties.height (or building:levels x 3 m). Validates every footprint (simple, at least
+  // 3 points, positive finite height, disjoint interiors).
+  static Environment from_geojson(const std::string& path);
+  // Validated buildings plus optional roads (each edge checked against every footprint).
+  static Environment from_buildings(std::vector<Building> buildings, RoadNetwork roads = {});
+  // Any triangle mesh file (OBJ, PLY, STL, OFF). up = "z", or "y" for Y-up files whose north
+  // is -Z: (east, north, up) = (x, -z, y).
+  static Environment from_mesh(const std::string& path, const std::string& up = "z");
+  // Triangles already in east-north-up metres.
+  static Environment from_triangles(Points3 vertices, Faces faces);
+  // The embedded synthetic downtown: a street grid (the road network) and blocks of buildings
+  // from 10 to 150 m. Deterministic.
+  static Environment demo();
+
+  // Every obstacle triangle (buildings or mesh), without the ground plane.
+  const TriangleMesh& mesh() const { return mesh_; }
+  std::size_t num_triangles() const { return static_cast<std::size_t>(mesh_.faces.rows()); }
+  // Tallest point of any obstacle above the ground level.
+  double max_height() const;
+  // Height of the ground plane (0 for buildings; the lowest vertex for a mesh).
+  double ground_level() const { return ground_level_; }
+  Bounds3 bounds() const { return bounds_; }
+  // Empty for an environment made from a mesh.
+  const std::vector<Building>& buildings() const { return buildings_; }
+  std::vector<Polygon> footprints() const;
+  const RoadNetwork& roads() const { return roads_; }
+  // Replaces the road network after checking that no edge crosses a building footprint.
+  void set_roads(RoadNetwork roads);
+  // A deterministic content hash (geometry and roads), for caches keyed by environment.
+  std::uint64_t fingerprint() const;
+
+ private:
+  std::vector<Building> buildings_;
+  RoadNetwork roads_;
+  TriangleMesh mesh_;
+  Bounds3 bounds_{};
+  double ground_level_ = 0.0;
+};
+
+// A POI moving at constant speed through waypoints (section III.C): piecewise-linear
+// g(t) = p_i + v_g (t - t_i) (p_j - p_i) / |p_j - p_i|.
+class PoiPath {
+ public:
+  // Waypoints (n, 2) or (n, 3); consecutive repeated points are dropped; at least two distinct
+  // points; speed finite and > 0.
+  PoiPath(const Eigen::MatrixXd& waypoints, double speed);
+  // CSV with one waypoint per line "x,y[,z]".
+  static PoiPath from_csv(const std::string& path, double speed);
+  // Through a sequence of road-network nodes, each consecutive pair joined by an edge.
+  static PoiPath from_nodes(const RoadNetwork& roads, const std::vector<int>& nodes, double speed);
+
+  Vec3 position(double t) const;   // clamped to [0, duration]
+  Vec2 velocity(double t) const;   // of the segment containing t (right-continuous)
+  double heading(double t) const;  // gamma, direction of the velocity
+  const std::vector<double>& node_times() const { return node_times_; }  // t_i
+  const Points3& waypoints() const { return waypoints_; }
+  double speed() const { return speed_; }
+  double duration() const { return node_times_.back(); }
+  double length() const { return duration() * speed_; }
+
+ private:
+  Points3 waypoints_;
+  std::vector<double> node_times_;
+  double speed_ = 0.0;
+};
+
+}  // namespace vistrack

@@ -1,0 +1,60 @@
+// Angles, points and planar polygons shared by every area.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+namespace vistrack {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+
+// Row-major (n, 3) arrays: they map onto numpy arrays of shape (n, 3) without reordering.
+using Points3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+using Points2 = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;
+using Faces = Eigen::Matrix<std::int32_t, Eigen::Dynamic, 3, Eigen::RowMajor>;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kTwoPi = 2.0 * kPi;
+
+// Angle in (-pi, pi].
+double wrap_to_pi(double angle);
+// Angle in [0, 2 pi).
+double wrap_to_two_pi(double angle);
+
+// A closed ring of points; the last point is not a repeat of the first.
+using Ring = std::vector<Vec2>;
+
+// A simple polygon with optional holes. Outer ring counter-clockwise, holes clockwise once
+// normalised (see normalize_orientation).
+struct Polygon {
+  Ring outer;
+  std::vector<Ring> holes;
+};
+
+struct Bounds2 {
+  Vec2 min;
+  Vec2 max;
+};
+
+struct Bounds3 {
+  Vec3 min;
+  Vec3 max;
+};
+
+// Shoelace signed area: positive for counter-clockwise rings.
+double signed_area(const Ring& ring);
+// Area of the outer ring minus the holes.
+double area(const Polygon& polygon);
+// True when no two non-adjacent edges touch and no edge has zero length (exact predicates).
+bool is_simple(const Ring& ring);
+// Outer ring counter-clockwise, holes clockwise.
+void normalize_orientation(Polygon& polygon);
+// Even-odd rule over the outer ring and the holes; points on the boundary count as inside.
+bool contains(const Polygon& polygon, const Vec2& point);
+// Euclidean distance from a point to the nearest edge of any ring of the polygon.
+double distance_to_boundary(const Polygon& polygon, const Vec2& point);
+Bounds2 bounds(const Ring& ring);
+
+}  // namespace vistrack

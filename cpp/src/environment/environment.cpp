@@ -1,0 +1,70 @@
+#include "vistrack/environment.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+#include "vistrack/error.hpp"
+
+namespace vistrack {
+
+namespace {
+
+Bounds3 bounds_of(const Points3& vertices) {
+  Bounds3 box{Vec3::Zero(), Vec3::Zero()};
+  if (vertices.rows() == 0) return box;
+  box.min = vertices.colwise().minCoeff().transpose();
+  box.max = vertices.colwise().maxCoeff().transpose();
+  return box;
+}
+
+// FNV-1a over raw bytes: stable across runs and platforms with the same endianness.
+void hash_bytes(std::uint64_t& hash, const void* data, std::size_t size) {
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < size; ++i) {
+    hash ^= bytes[i];
+    hash *= 1099511628211ULL;
+  }
+}
+
+}  // namespace
+
+Environment Environment::from_triangles(Points3 vertices, Faces faces) {
+  if (faces.rows() == 0) throw Error("faces: the mesh has no triangles");
+  for (Eigen::Index i = 0; i < vertices.rows(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(vertices(i, k)))
+        detail::fail_field("vertices[" + std::to_string(i) + "]", vertices(i, k),
+                           "vertex coordinates must be finite");
+  for (Eigen::Index i = 0; i < faces.rows(); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (faces(i, k) < 0 || faces(i, k) >= vertices.rows())
+        detail::fail_field("faces[" + std::to_string(i) + "]", faces(i, k),
+                           "vertex index out of range [0, " + std::to_string(vertices.rows()) + ")");
+  Environment env;
+  env.mesh_.vertices = std::move(vertices);
+  env.mesh_.faces = std::move(faces);
+  env.bounds_ = bounds_of(env.mesh_.vertices);
+  env.ground_level_ = env.bounds_.min.z();
+  return env;
+}
+
+double Environment::max_height() const { return bounds_.max.z() - ground_level_; }
+
+std::vector<Polygon> Environment::footprints() const {
+  std::vector<Polygon> result;
+  result.reserve(buildings_.size());
+  for (const Building& b : buildings_) result.push_back(b.footprint);
+  return result;
+}
+
+std::uint64_t Environment::fingerprint() const {
+  std::uint64_t hash = 14695981039346656037ULL;
+  hash_bytes(hash, mesh_.vertices.data(), sizeof(double) * mesh_.vertices.size());
+  hash_bytes(hash, mesh_.faces.data(), sizeof(std::int32_t) * mesh_.faces.size());
+  for (const Vec2& node : roads_.nodes) hash_bytes(hash, node.data(), 2 * sizeof(double));
+  for (const auto& edge : roads_.edges) hash_bytes(hash, &edge, sizeof(edge));
+  return hash;
+}
+
+}  // namespace vistrack

@@ -1,0 +1,24 @@
+"""vistrack: occlusion-aware tracking of a moving ground target by a Dubins UAV.
+
+The C++ core lives in ``vistrack._core``; this package re-exports it and adds scenario files,
+the command line, plotting and pipelines.
+"""
+
+from __future__ import annotations
+
+from importlib.metadata import PackageNotFoundError, version as _version
+
+from . import _core
+from ._core import Environment, PoiPath, VistrackError
+
+try:
+    __version__ = _version("vistrack")
+except PackageNotFoundError:  # running from a build tree
+    __version__ = _core.__version__
+
+__all__ = [
+    "Environment",
+    "PoiPath",
+    "VistrackError",
+    "__version__",
+]

@@ -1,0 +1,1 @@
+"""Sub-commands of the ``vistrack`` command line, one module each."""

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Quick start, second command: install what is needed, then run every test (GoogleTest through
+# ctest, then pytest). Exits non-zero when any test fails.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir=build/test
+bash scripts/install.sh -Cbuild-dir="$build_dir" -Ccmake.define.VISTRACK_BUILD_TESTS=ON \
+  -Ccmake.define.VISTRACK_WERROR=ON
+ctest_bin=$(command -v ctest || echo .venv/bin/ctest)
+"$ctest_bin" --test-dir "$build_dir" --output-on-failure -j2
+.venv/bin/python -m pytest tests/python "$@"

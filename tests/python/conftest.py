@@ -1,0 +1,54 @@
+"""Shared fixtures. Tests read real data from ../shared/data and skip when it is absent.
+
+For development against a CMake build tree instead of the installed package, set
+VISTRACK_BUILD_DIR to the build folder holding bindings/_core*.so: the package is then
+imported from python/ with that extension.
+"""
+
+from __future__ import annotations
+
+import glob
+import importlib.util
+import os
+import sys
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+SHARED_DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
+
+
+def _use_build_tree() -> None:
+    build_dir = os.environ.get("VISTRACK_BUILD_DIR")
+    if not build_dir:
+        return
+    candidates = glob.glob(os.path.join(build_dir, "bindings", "_core*.so"))
+    if not candidates:
+        raise RuntimeError(f"VISTRACK_BUILD_DIR={build_dir}: no bindings/_core*.so there")
+    sys.path.insert(0, str(REPO / "python"))
+    spec = importlib.util.spec_from_file_location("vistrack._core", candidates[0])
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["vistrack._core"] = module
+    spec.loader.exec_module(module)
+
+
+_use_build_tree()
+
+
+@pytest.fixture(scope="session")
+def shared_data() -> Path:
+    """The real data folder; the test is skipped with a clear message when it is absent."""
+    if not SHARED_DATA.is_dir():
+        pytest.skip(f"real data not found at {SHARED_DATA} (set VISTRACK_DATA or place ../shared/data)")
+    return SHARED_DATA
+
+
+@pytest.fixture(scope="session")
+def charlotte(shared_data: Path) -> Path:
+    return shared_data / "charlotte"
+
+
+@pytest.fixture(scope="session")
+def campus(shared_data: Path) -> Path:
+    return shared_data / "campus"
