@@ -6,5 +6,12 @@
 namespace vistrack::bindings {
 
 void bind_environment(pybind11::module_& m);
+void bind_dubins(pybind11::module_& m);
+void bind_visibility(pybind11::module_& m);
+void bind_volume(pybind11::module_& m);
+void bind_orbit(pybind11::module_& m);
+void bind_guidance(pybind11::module_& m);
+void bind_ode(pybind11::module_& m);
+void bind_simulate(pybind11::module_& m);
 
 }  // namespace vistrack::bindings

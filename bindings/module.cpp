@@ -11,4 +11,11 @@ PYBIND11_MODULE(_core, m) {
   pybind11::register_exception<vistrack::Error>(m, "VistrackError", PyExc_ValueError);
 
   vistrack::bindings::bind_environment(m);
+  vistrack::bindings::bind_dubins(m);
+  vistrack::bindings::bind_visibility(m);
+  vistrack::bindings::bind_volume(m);
+  vistrack::bindings::bind_orbit(m);
+  vistrack::bindings::bind_guidance(m);
+  vistrack::bindings::bind_ode(m);
+  vistrack::bindings::bind_simulate(m);
 }

@@ -1,0 +1,53 @@
+// Parameter structs shared by planning, guidance and simulation. Every default lives here, and
+// nowhere else (the Python side reads them from the bindings).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace vistrack {
+
+// The Dubins vehicle (1): constant speed v, minimum turn radius r_min = v / u_psi_max, altitude.
+struct Uav {
+  double speed = 20.0;             // v, m/s
+  double min_turn_radius = 50.0;   // r_min, m
+  double altitude = 300.0;         // h_UAV, m above the ground plane
+  void validate() const;           // throws Error naming the field
+};
+
+// The line-of-sight sensor (section III.D).
+struct Sensor {
+  double d_max = 400.0;                                 // maximum viewing distance, m
+  std::optional<std::pair<double, double>> altitude_band;  // feasible airspace (h_lo, h_hi), m
+  void validate() const;
+};
+
+// Adaptive placement of visibility volumes (section IV.B).
+struct Planning {
+  double spacing = 20.0;         // initial spacing of VVs along the path, m
+  double cutoff = 20e6;          // d_cutoff, m^3
+  double resolution_deg = 1.0;   // angular step of the VV ray grid, degrees
+  double min_spacing = 1.0;      // never insert VVs closer than this, m
+  int max_depth = 8;             // maximum number of halvings of one initial interval
+  void validate() const;
+};
+
+// Guidance (section V): circulation beta, heading gain k_psi, direction of travel.
+struct Control {
+  double beta = 0.025;
+  double k_psi = 20.0;
+  std::string direction = "ccw";  // "ccw" or "cw"
+  void validate() const;
+};
+
+// Closed-loop integration (section VI).
+struct SimulationOptions {
+  double rtol = 1e-6;
+  double atol = 1e-8;
+  double max_step = 1.0;      // s
+  double output_step = 0.1;   // s between output samples
+  void validate() const;
+};
+
+}  // namespace vistrack

@@ -1,0 +1,50 @@
+#include "vistrack/parameters.hpp"
+
+#include "vistrack/error.hpp"
+
+namespace vistrack {
+
+void Uav::validate() const {
+  require_positive(speed, "uav.speed");
+  require_positive(min_turn_radius, "uav.min_turn_radius");
+  require_finite(altitude, "uav.altitude");
+}
+
+void Sensor::validate() const {
+  require_positive(d_max, "sensor.d_max");
+  if (altitude_band) {
+    require_finite(altitude_band->first, "sensor.altitude_band[0]");
+    require_finite(altitude_band->second, "sensor.altitude_band[1]");
+    if (!(altitude_band->first < altitude_band->second))
+      detail::fail_field("sensor.altitude_band", detail::to_text(altitude_band->first) + ", " +
+                                                     detail::to_text(altitude_band->second),
+                         "the lower altitude must be below the upper one");
+  }
+}
+
+void Planning::validate() const {
+  require_positive(spacing, "planning.spacing");
+  require_positive(cutoff, "planning.cutoff");
+  require_positive(resolution_deg, "planning.resolution_deg");
+  if (resolution_deg > 45.0)
+    detail::fail_field("planning.resolution_deg", resolution_deg, "must be at most 45 degrees");
+  require_positive(min_spacing, "planning.min_spacing");
+  if (max_depth < 0 || max_depth > 30)
+    detail::fail_field("planning.max_depth", max_depth, "must be in [0, 30]");
+}
+
+void Control::validate() const {
+  require_positive(beta, "control.beta");
+  require_positive(k_psi, "control.k_psi");
+  if (direction != "ccw" && direction != "cw")
+    detail::fail_field("control.direction", direction, "must be \"ccw\" or \"cw\"");
+}
+
+void SimulationOptions::validate() const {
+  require_positive(rtol, "simulation.rtol");
+  require_positive(atol, "simulation.atol");
+  require_positive(max_step, "simulation.max_step");
+  require_positive(output_step, "simulation.output_step");
+}
+
+}  // namespace vistrack
