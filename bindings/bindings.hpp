@@ -5,6 +5,7 @@
 
 namespace vistrack::bindings {
 
+void bind_parameters(pybind11::module_& m);
 void bind_environment(pybind11::module_& m);
 void bind_dubins(pybind11::module_& m);
 void bind_visibility(pybind11::module_& m);

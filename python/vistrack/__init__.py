@@ -9,7 +9,16 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError, version as _version
 
 from . import _core
-from ._core import Environment, PoiPath, VistrackError
+from ._core import (
+    Control,
+    Environment,
+    Planning,
+    PoiPath,
+    Sensor,
+    SimulationOptions,
+    Uav,
+    VistrackError,
+)
 
 try:
     __version__ = _version("vistrack")
@@ -17,8 +26,13 @@ except PackageNotFoundError:  # running from a build tree
     __version__ = _core.__version__
 
 __all__ = [
+    "Control",
     "Environment",
+    "Planning",
     "PoiPath",
+    "Sensor",
+    "SimulationOptions",
+    "Uav",
     "VistrackError",
     "__version__",
 ]

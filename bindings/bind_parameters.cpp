@@ -1,0 +1,98 @@
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "vistrack/parameters.hpp"
+
+namespace py = pybind11;
+
+namespace vistrack::bindings {
+
+namespace {
+
+// Keyword constructor: every argument defaults to the C++ default, then the struct validates.
+template <class T>
+T make_validated(T value) {
+  value.validate();
+  return value;
+}
+
+}  // namespace
+
+void bind_parameters(py::module_& m) {
+  const Uav uav_defaults;
+  py::class_<Uav>(m, "Uav", "The Dubins vehicle: constant speed, minimum turn radius, altitude.")
+      .def(py::init([](double speed, double min_turn_radius, double altitude) {
+             return make_validated(Uav{speed, min_turn_radius, altitude});
+           }),
+           py::kw_only(), py::arg("speed") = uav_defaults.speed,
+           py::arg("min_turn_radius") = uav_defaults.min_turn_radius,
+           py::arg("altitude") = uav_defaults.altitude,
+           "speed v (m/s), min_turn_radius r_min (m), altitude h_UAV (m).")
+      .def_readwrite("speed", &Uav::speed, "v, m/s")
+      .def_readwrite("min_turn_radius", &Uav::min_turn_radius, "r_min, m")
+      .def_readwrite("altitude", &Uav::altitude, "h_UAV, m")
+      .def("validate", &Uav::validate, "Raise VistrackError naming the first invalid field.")
+      .def("__repr__", [](const Uav& u) {
+        return "Uav(speed=" + std::to_string(u.speed) + ", min_turn_radius=" +
+               std::to_string(u.min_turn_radius) + ", altitude=" + std::to_string(u.altitude) + ")";
+      });
+
+  const Sensor sensor_defaults;
+  py::class_<Sensor>(m, "Sensor", "Line-of-sight sensor: range d_max and optional altitude band.")
+      .def(py::init([](double d_max, std::optional<std::pair<double, double>> band) {
+             return make_validated(Sensor{d_max, band});
+           }),
+           py::kw_only(), py::arg("d_max") = sensor_defaults.d_max, py::arg("altitude_band") = py::none(),
+           "d_max (m); altitude_band (h_lo, h_hi) in m or None for no band.")
+      .def_readwrite("d_max", &Sensor::d_max, "maximum viewing distance, m")
+      .def_readwrite("altitude_band", &Sensor::altitude_band, "(h_lo, h_hi) in m, or None")
+      .def("validate", &Sensor::validate, "Raise VistrackError naming the first invalid field.");
+
+  const Planning planning_defaults;
+  py::class_<Planning>(m, "Planning", "Adaptive placement of visibility volumes (section IV.B).")
+      .def(py::init([](double spacing, double cutoff, double resolution_deg, double min_spacing,
+                       int max_depth) {
+             return make_validated(Planning{spacing, cutoff, resolution_deg, min_spacing, max_depth});
+           }),
+           py::kw_only(), py::arg("spacing") = planning_defaults.spacing,
+           py::arg("cutoff") = planning_defaults.cutoff,
+           py::arg("resolution_deg") = planning_defaults.resolution_deg,
+           py::arg("min_spacing") = planning_defaults.min_spacing,
+           py::arg("max_depth") = planning_defaults.max_depth,
+           "spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth.")
+      .def_readwrite("spacing", &Planning::spacing, "initial spacing of VVs along the path, m")
+      .def_readwrite("cutoff", &Planning::cutoff, "d_cutoff, m^3")
+      .def_readwrite("resolution_deg", &Planning::resolution_deg, "VV ray grid step, degrees")
+      .def_readwrite("min_spacing", &Planning::min_spacing, "smallest spacing inserted, m")
+      .def_readwrite("max_depth", &Planning::max_depth, "most halvings of one initial interval")
+      .def("validate", &Planning::validate, "Raise VistrackError naming the first invalid field.");
+
+  const Control control_defaults;
+  py::class_<Control>(m, "Control", "Guidance gains (section V): beta, k_psi, direction.")
+      .def(py::init([](double beta, double k_psi, std::string direction) {
+             return make_validated(Control{beta, k_psi, std::move(direction)});
+           }),
+           py::kw_only(), py::arg("beta") = control_defaults.beta,
+           py::arg("k_psi") = control_defaults.k_psi, py::arg("direction") = control_defaults.direction,
+           "beta (circulation), k_psi (heading gain), direction 'ccw' or 'cw'.")
+      .def_readwrite("beta", &Control::beta, "circulation parameter")
+      .def_readwrite("k_psi", &Control::k_psi, "heading gain")
+      .def_readwrite("direction", &Control::direction, "'ccw' or 'cw'")
+      .def("validate", &Control::validate, "Raise VistrackError naming the first invalid field.");
+
+  const SimulationOptions sim_defaults;
+  py::class_<SimulationOptions>(m, "SimulationOptions", "Closed-loop integration settings.")
+      .def(py::init([](double rtol, double atol, double max_step, double output_step) {
+             return make_validated(SimulationOptions{rtol, atol, max_step, output_step});
+           }),
+           py::kw_only(), py::arg("rtol") = sim_defaults.rtol, py::arg("atol") = sim_defaults.atol,
+           py::arg("max_step") = sim_defaults.max_step, py::arg("output_step") = sim_defaults.output_step,
+           "rtol, atol, max_step (s), output_step (s).")
+      .def_readwrite("rtol", &SimulationOptions::rtol, "relative tolerance")
+      .def_readwrite("atol", &SimulationOptions::atol, "absolute tolerance")
+      .def_readwrite("max_step", &SimulationOptions::max_step, "largest step, s")
+      .def_readwrite("output_step", &SimulationOptions::output_step, "output sample spacing, s")
+      .def("validate", &SimulationOptions::validate, "Raise VistrackError naming the first invalid field.");
+}
+
+}  // namespace vistrack::bindings
