@@ -3,8 +3,17 @@
 
 #include <pybind11/pybind11.h>
 
+#include <string>
+
+#include "vistrack/geometry.hpp"
+
 namespace vistrack::bindings {
 
+// Rings cross the boundary as (n, 2) numpy arrays.
+Ring ring_from_array(const Points2& points, const std::string& field);
+Points2 ring_to_array(const Ring& ring);
+
+void bind_geometry(pybind11::module_& m);
 void bind_parameters(pybind11::module_& m);
 void bind_environment(pybind11::module_& m);
 void bind_dubins(pybind11::module_& m);

@@ -10,6 +10,7 @@ PYBIND11_MODULE(_core, m) {
   // One error type, a ValueError, for every invalid input (DESIGN.md, Conventions).
   pybind11::register_exception<vistrack::Error>(m, "VistrackError", PyExc_ValueError);
 
+  vistrack::bindings::bind_geometry(m);
   vistrack::bindings::bind_parameters(m);
   vistrack::bindings::bind_environment(m);
   vistrack::bindings::bind_dubins(m);

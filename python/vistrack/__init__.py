@@ -12,12 +12,16 @@ from . import _core
 from ._core import (
     Control,
     Environment,
+    OrbitPlan,
     Planning,
     PoiPath,
+    Polygon,
     Sensor,
     SimulationOptions,
     Uav,
     VistrackError,
+    constant_radius_plan,
+    max_inscribed_radius,
 )
 
 try:
@@ -28,11 +32,15 @@ except PackageNotFoundError:  # running from a build tree
 __all__ = [
     "Control",
     "Environment",
+    "OrbitPlan",
     "Planning",
     "PoiPath",
+    "Polygon",
     "Sensor",
     "SimulationOptions",
     "Uav",
     "VistrackError",
+    "constant_radius_plan",
+    "max_inscribed_radius",
     "__version__",
 ]

@@ -30,6 +30,15 @@ struct OrbitPlan {
   std::size_t segment(double t) const;
 };
 
+// Radius of the largest circle centred at `center` inside the visibility polygon (the union of
+// `polygons`, holes included): the distance to the nearest boundary of the polygon containing the
+// centre, or 0 when no polygon contains it. Exact, not a sampled bisection (MaxRadius, sec. IV).
+double max_inscribed_radius(const std::vector<Polygon>& polygons, const Vec2& center);
+
+// JSON round trip of a plan (the POI path is stored as waypoints and speed).
+std::string to_json(const OrbitPlan& plan);
+OrbitPlan orbit_plan_from_json(const std::string& text);
+
 // Orbits of one radius along the whole POI path (the paper's constant-radius baselines).
 OrbitPlan constant_radius_plan(const PoiPath& poi, double radius, const Uav& uav);
 

@@ -1,0 +1,66 @@
+#include <pybind11/eigen.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "vistrack/error.hpp"
+#include "vistrack/geometry.hpp"
+
+namespace py = pybind11;
+
+namespace vistrack::bindings {
+
+Ring ring_from_array(const Points2& points, const std::string& field) {
+  Ring ring;
+  ring.reserve(static_cast<std::size_t>(points.rows()));
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const Vec2 p = points.row(i).transpose();
+    require_finite(p.x(), field + "[" + std::to_string(i) + "][0]");
+    require_finite(p.y(), field + "[" + std::to_string(i) + "][1]");
+    ring.push_back(p);
+  }
+  // A closing repeat of the first point is common in files; the ring stores it once.
+  if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
+  return ring;
+}
+
+Points2 ring_to_array(const Ring& ring) {
+  Points2 points(static_cast<Eigen::Index>(ring.size()), 2);
+  for (std::size_t i = 0; i < ring.size(); ++i) points.row(static_cast<Eigen::Index>(i)) = ring[i].transpose();
+  return points;
+}
+
+void bind_geometry(py::module_& m) {
+  py::class_<Polygon>(m, "Polygon", "A simple polygon with optional holes, in metres.")
+      .def(py::init([](const Points2& outer, const std::vector<Points2>& holes) {
+             Polygon polygon{ring_from_array(outer, "outer"), {}};
+             for (std::size_t h = 0; h < holes.size(); ++h)
+               polygon.holes.push_back(ring_from_array(holes[h], "holes[" + std::to_string(h) + "]"));
+             return polygon;
+           }),
+           py::arg("outer"), py::arg("holes") = std::vector<Points2>{},
+           "outer: (n, 2) array; holes: list of (m, 2) arrays. A closing repeat is dropped.")
+      .def_property_readonly("outer", [](const Polygon& p) { return ring_to_array(p.outer); },
+                             "Outer ring (n, 2), without a closing repeat.")
+      .def_property_readonly(
+          "holes",
+          [](const Polygon& p) {
+            std::vector<Points2> holes;
+            for (const Ring& hole : p.holes) holes.push_back(ring_to_array(hole));
+            return holes;
+          },
+          "Holes, each (m, 2).")
+      .def_property_readonly("area", [](const Polygon& p) { return area(p); }, "Area minus holes, m^2.")
+      .def("contains", [](const Polygon& p, const Vec2& point) { return contains(p, point); },
+           py::arg("point"), "Even-odd containment; boundary points count as inside.")
+      .def("distance_to_boundary",
+           [](const Polygon& p, const Vec2& point) { return distance_to_boundary(p, point); },
+           py::arg("point"), "Distance from a point to the nearest edge of any ring.")
+      .def("__repr__", [](const Polygon& p) {
+        return "Polygon(" + std::to_string(p.outer.size()) + " vertices, " +
+               std::to_string(p.holes.size()) + " holes)";
+      });
+
+  m.def("wrap_to_pi", &wrap_to_pi, py::arg("angle"), "Angle wrapped to (-pi, pi].");
+}
+
+}  // namespace vistrack::bindings

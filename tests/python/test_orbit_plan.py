@@ -1,0 +1,49 @@
+"""Orbit plan basics: max inscribed radius, constant-radius plans and the JSON round trip."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import vistrack as vt
+
+
+def square(half: float, center=(0.0, 0.0)) -> np.ndarray:
+    cx, cy = center
+    return np.array([[cx - half, cy - half], [cx + half, cy - half], [cx + half, cy + half], [cx - half, cy + half]])
+
+
+def test_max_inscribed_radius_analytic() -> None:
+    poly = vt.Polygon(square(10.0), [square(1.0, center=(5.0, 0.0))])
+    # Nearest boundary from the origin is the hole's left edge at x = 4.
+    assert vt.max_inscribed_radius([poly], np.array([0.0, 0.0])) == pytest.approx(4.0)
+    assert vt.max_inscribed_radius([poly], np.array([0.0, 8.0])) == pytest.approx(2.0)
+    assert vt.max_inscribed_radius([poly], np.array([5.0, 0.0])) == 0.0  # inside the hole
+    assert vt.max_inscribed_radius([poly], np.array([20.0, 0.0])) == 0.0
+    # Brute force: the radius is the largest r with every sampled circle point inside.
+    rng = np.random.default_rng(3)
+    for _ in range(50):
+        c = rng.uniform(-9.5, 9.5, size=2)
+        r = vt.max_inscribed_radius([poly], c)
+        if r == 0.0:
+            continue
+        theta = np.linspace(0, 2 * np.pi, 720, endpoint=False)
+        inside = [poly.contains(c + 0.999 * r * np.array([np.cos(t), np.sin(t)])) for t in theta]
+        assert all(inside)
+        outside = [poly.contains(c + 1.01 * r * np.array([np.cos(t), np.sin(t)])) for t in theta]
+        assert not all(outside)
+
+
+def test_constant_radius_plan_and_json_round_trip() -> None:
+    poi = vt.PoiPath(np.array([[0.0, 0.0], [100.0, 0.0], [100.0, 50.0]]), speed=5.0)
+    plan = vt.constant_radius_plan(poi, 60.0, vt.Uav(speed=20.0, min_turn_radius=50.0))
+    assert plan.radius(7.0) == 60.0 and plan.radius_rate(7.0) == 0.0
+    again = vt.OrbitPlan.from_json(plan.to_json())
+    assert again.times == plan.times and again.radii == plan.radii
+    assert np.allclose(again.centers, plan.centers)
+    with pytest.raises(vt.VistrackError, match="uav.speed"):
+        vt.constant_radius_plan(poi, 60.0, vt.Uav(speed=4.0))
+    with pytest.raises(vt.VistrackError, match="radius"):
+        vt.constant_radius_plan(poi, -1.0, vt.Uav())
+    with pytest.raises(vt.VistrackError, match="orbit plan JSON"):
+        vt.OrbitPlan.from_json("{")
