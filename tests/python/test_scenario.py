@@ -1,0 +1,82 @@
+"""Scenario files: defaults, validation messages, path resolution."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+import yaml
+
+import vistrack as vt
+from vistrack.scenario import Scenario, default_scenario_text
+
+
+def write(tmp_path: Path, text: str) -> Path:
+    path = tmp_path / "s.yaml"
+    path.write_text(text)
+    return path
+
+
+def test_defaults_come_from_the_cpp_structs() -> None:
+    s = Scenario.from_dict({})
+    assert s.uav.speed == vt.Uav().speed
+    assert s.planning.cutoff == vt.Planning().cutoff
+    assert s.control.direction == "ccw"
+    assert s.environment.kind == "demo"
+    again = Scenario.from_dict(yaml.safe_load(default_scenario_text()))
+    assert again.to_dict() == s.to_dict()
+
+
+def test_full_scenario_resolves_relative_paths(tmp_path: Path) -> None:
+    path = write(tmp_path, """
+name: paper
+environment: {mesh: city.obj, up: y}
+poi: {path: paths/p.csv, speed: 5}
+uav: {speed: 20, min_turn_radius: 50, altitude: 300, start: [0, 100, -3.14159]}
+sensor: {d_max: 400}
+planning: {spacing: 20, cutoff: 20e6}
+control: {beta: 0.025, k_psi: 20, direction: cw}
+simulation: {rtol: 1.0e-6}
+baselines: [11.2, 35]
+""")
+    s = Scenario.load(path)
+    assert s.environment.kind == "mesh" and s.environment.up == "y"
+    assert s.environment.path == tmp_path / "city.obj"
+    assert s.poi.path == tmp_path / "paths" / "p.csv"
+    assert s.planning.cutoff == 20e6  # "20e6" is a string in YAML 1.1; accepted as a number
+    assert s.start == (0.0, 100.0, -3.14159)
+    assert s.baselines == [11.2, 35.0]
+    assert s.control.direction == "cw"
+
+
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        ("uav: {sped: 3}", r"uav.sped = 3: unknown key; allowed keys in uav: altitude, min_turn_radius"),
+        ("colour: red", r"colour = 'red': unknown section"),
+        ("uav: {speed: -2}", r"uav.speed = -2: must be > 0"),
+        ("uav: {speed: .nan}", r"uav.speed = nan: must be a finite number"),
+        ("uav: {speed: fast}", r"uav.speed = 'fast': must be a number"),
+        ("uav: {speed: 4}\npoi: {speed: 5}", r"uav.speed = 4.0: must exceed poi.speed"),
+        ("control: {direction: up}", r"control.direction = 'up': must be \"ccw\" or \"cw\""),
+        ("planning: {max_depth: 99}", r"planning.max_depth = 99: must be an integer in \[0, 30\]"),
+        ("planning: {resolution_deg: 90}", r"planning.resolution_deg = 90: must be <= 45"),
+        ("sensor: {altitude_band: [100, 50]}", r"sensor.altitude_band"),
+        ("environment: {mesh: a.obj, up: x}", r"environment.up = 'x': must be \"z\" or \"y\""),
+        ("environment: {demo: true, mesh: a.obj}", r"environment = .*exactly one of"),
+        ("poi: {waypoints: [[0, 0]]}", r"poi.waypoints = .*at least two"),
+        ("uav: {start: [0, 1]}", r"uav.start = \[0, 1\]: must be \[x, y, psi\]"),
+        ("baselines: [10, -1]", r"baselines\[1\] = -1: must be > 0"),
+        ("- 1\n- 2", r"scenario = .*must be a mapping"),
+    ],
+)
+def test_schema_errors_name_key_value_and_range(tmp_path: Path, text: str, message: str) -> None:
+    with pytest.raises(vt.VistrackError, match=message):
+        Scenario.load(write(tmp_path, text))
+
+
+def test_unreadable_and_invalid_files(tmp_path: Path) -> None:
+    with pytest.raises(vt.VistrackError, match="cannot read the file"):
+        Scenario.load(tmp_path / "missing.yaml")
+    with pytest.raises(vt.VistrackError, match="not valid YAML"):
+        Scenario.load(write(tmp_path, "uav: {speed: [1,"))
