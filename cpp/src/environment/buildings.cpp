@@ -25,7 +25,11 @@ void validate_ring(const Ring& ring, const std::string& field) {
     const std::size_t n = ring.size();
     const std::string edge_i = "edge " + std::to_string(i) + " " + point_text(ring[i]) + "-" + point_text(ring[(i + 1) % n]);
     const std::string edge_j = "edge " + std::to_string(j) + " " + point_text(ring[j]) + "-" + point_text(ring[(j + 1) % n]);
-    if (std::abs(signed_area(ring)) == 0.0)
+    const bool one_line = std::all_of(ring.begin(), ring.end(), [&](const Vec2& q) {
+      const Vec2 u = ring[1] - ring[0], v = q - ring[0];
+      return u.x() * v.y() - u.y() * v.x() == 0.0;
+    });
+    if (one_line)
       fail_field(field, "ring of " + std::to_string(n) + " points starting at " + point_text(ring[0]),
                  "degenerate footprint: all points on one line (zero area)");
     if (i == j) fail_field(field, edge_i, "degenerate footprint: zero-length edge");
