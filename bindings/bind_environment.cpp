@@ -48,7 +48,8 @@ std::vector<Building> buildings_from_python(const py::iterable& items) {
     if (entry.size() != 2 && entry.size() != 3)
       detail::fail_field(field, py::str(item).cast<std::string>(), "expected (Polygon, height) or (Polygon, height, id)");
     Building building;
-    building.footprint = entry[0].cast<Polygon>();
+    if (py::isinstance<Polygon>(entry[0])) building.footprint = entry[0].cast<Polygon>();
+    else building.footprint.outer = ring_from_array(entry[0].cast<Points2>(), field + "[0]");  // an (n, 2) array
     building.height = entry[1].cast<double>();
     building.id = entry.size() == 3 ? entry[2].cast<int>() : static_cast<int>(buildings.size());
     buildings.push_back(std::move(building));
@@ -104,7 +105,8 @@ void bind_environment(py::module_& m) {
             return Environment::from_buildings(std::move(buildings), roads.value_or(RoadNetwork{}));
           },
           py::arg("buildings"), py::arg("roads") = py::none(),
-          "Environment from a list of (Polygon, height) or (Polygon, height, id), validated as in "
+          "Environment from a list of (Polygon, height) or (Polygon, height, id) (an (n, 2) array "
+          "may stand for a Polygon without holes), validated as in "
           "from_geojson; optional RoadNetwork checked against every footprint.")
       .def_static("from_triangles", &Environment::from_triangles, py::arg("vertices"), py::arg("faces"),
                   "Environment from triangles: vertices (n, 3) float in east-north-up metres, faces "

@@ -72,6 +72,15 @@ def test_from_buildings_extrudes_closed_outward_meshes() -> None:
     assert env.footprints[0].area == pytest.approx(1200.0)
 
 
+def test_from_buildings_accepts_arrays_and_names_bad_items() -> None:
+    env = vt.Environment.from_buildings([(np.array([[0, 0], [10, 0], [0, 10.0]]), 3.0)])
+    assert env.num_triangles == 8 and _signed_volume(env) == pytest.approx(150.0)
+    with pytest.raises(vt.VistrackError, match=r"buildings\[1\].height = -1"):
+        vt.Environment.from_buildings([(_square(0, 0, 1), 1.0), (_square(5, 5, 1), -1.0)])
+    with pytest.raises(vt.VistrackError, match=r"buildings\[0\]"):
+        vt.Environment.from_buildings([(_square(0, 0, 1),)])
+
+
 def test_from_triangles_and_fingerprint() -> None:
     vertices = np.array([[0, 0, 2.0], [1, 0, 2], [0, 1, 5]])
     env = vt.Environment.from_triangles(vertices, np.array([[0, 1, 2]]))
