@@ -237,7 +237,7 @@ def test_from_mesh_matches_trimesh(tmp_path) -> None:
 
 
 def test_charlotte_geojson(charlotte) -> None:
-    env = vt.Environment.from_geojson(str(charlotte / "buildings.geojson"))
+    env = vt.Environment.from_geojson(charlotte / "buildings.geojson")  # a pathlib.Path works too
     assert env.num_buildings == 167
     assert env.max_height == pytest.approx(265.0)
     assert _is_closed_and_oriented(env.faces)
@@ -254,13 +254,13 @@ def test_charlotte_mesh(charlotte) -> None:
 
 
 def test_campus_mesh(campus) -> None:
-    env = vt.Environment.from_mesh(str(campus / "campus.obj"), up="y")
+    env = vt.Environment.from_mesh(campus / "campus.obj", up="y")
     assert env.num_triangles > 2000
     assert env.ground_level == pytest.approx(-8.6, abs=0.1)
 
 
 def test_poi_paths_from_csv(charlotte, campus) -> None:
-    poi = vt.PoiPath.from_csv(str(charlotte / "paths" / "paper_slow.csv"), 5.0)
+    poi = vt.PoiPath.from_csv(charlotte / "paths" / "paper_slow.csv", speed=5.0)
     assert poi.waypoints.shape == (3, 3)
     assert poi.length == pytest.approx(np.hypot(100, 90) + np.hypot(70, 80))
     for path in [*sorted((charlotte / "paths").glob("*.csv")), campus / "poi_path.csv", campus / "flight_test_path.csv"]:
