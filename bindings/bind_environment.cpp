@@ -101,8 +101,10 @@ void bind_environment(py::module_& m) {
           py::arg("path"),
                   "2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: "
                   "height from properties.height, else building:levels x 3 m; id from properties.id, "
-                  "else the feature index. Footprints are validated (simple, >= 3 points, holes inside, "
-                  "disjoint interiors up to 1 m^2 of overlap) and normalised counter-clockwise.")
+                  "else the feature index. Coordinates in local east-north metres. Footprints are validated "
+                  "(simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up "
+                  "to 1 m^2 are taken as touching walls, and a footprint inside a building at least as "
+                  "tall as a building part) and normalised counter-clockwise.")
       .def_static(
           "from_mesh",
           [](const py::object& path, const std::string& up) {
