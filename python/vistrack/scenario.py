@@ -110,9 +110,9 @@ class PoiSpec:
             return PoiPath.from_csv(str(self.path), self.speed)
         if self.waypoints is not None:
             return PoiPath(np.asarray(self.waypoints, dtype=float), self.speed)
-        assert self.nodes is not None
-        return PoiPath.from_nodes(env.roads_network(), self.nodes, self.speed) \
-            if hasattr(env, "roads_network") else PoiPath.from_nodes(env, self.nodes, self.speed)
+        if self.nodes is not None:
+            return PoiPath.from_nodes(env.roads, self.nodes, self.speed)
+        raise VistrackError("poi: no path given (path: CSV, waypoints: [[x, y], ...] or nodes: [...])")
 
 
 @dataclass
