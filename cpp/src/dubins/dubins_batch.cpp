@@ -1,7 +1,10 @@
-// Shortest Dubins lengths for many pairs: one allocation-free kernel, TBB across cores.
+// Shortest Dubins lengths for many pairs: an allocation-free kernel (branch-free CSC part with
+// polynomial sin/cos/atan2, CCC words only for the pairs whose circles are within 4 rho), TBB
+// across cores.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -21,23 +24,15 @@ void require_finite_rows(const double* rows, std::size_t n, const char* name) {
                          rows[i], "must be a finite number");
 }
 
-// Minimum over the six words without building paths.
-inline double shortest_normalised(const detail::DubinsFrame& f, std::uint8_t& word) {
-  double best = detail::word_lsl(f).total();
-  std::uint8_t best_word = 0;
-  const auto consider = [&](const detail::WordSegments& w, std::uint8_t k) {
-    if (w.ok && w.total() < best) {
-      best = w.total();
-      best_word = k;
-    }
-  };
-  consider(detail::word_lsr(f), 1);
-  consider(detail::word_rsl(f), 2);
-  consider(detail::word_rsr(f), 3);
-  consider(detail::word_rlr(f), 4);
-  consider(detail::word_lrl(f), 5);
-  word = best_word;
-  return best;
+void lengths_range(const double* q0s, const double* q1s, std::size_t begin, std::size_t end, double rho,
+                   double* lengths, std::uint8_t* words) {
+  for (std::size_t i = begin; i < end; ++i) {
+    const Configuration a{q0s[3 * i], q0s[3 * i + 1], q0s[3 * i + 2]};
+    const Configuration b{q1s[3 * i], q1s[3 * i + 1], q1s[3 * i + 2]};
+    std::uint8_t word = 0;
+    lengths[i] = detail::shortest_length_normalised(detail::make_frame(a, b, rho), word) * rho;
+    words[i] = word;
+  }
 }
 
 }  // namespace
@@ -45,7 +40,7 @@ inline double shortest_normalised(const detail::DubinsFrame& f, std::uint8_t& wo
 double dubins_shortest_length(const Configuration& q0, const Configuration& q1, double rho,
                               DubinsWord* word) {
   std::uint8_t k = 0;
-  const double length = shortest_normalised(detail::make_frame(q0, q1, rho), k) * rho;
+  const double length = detail::shortest_length_normalised(detail::make_frame(q0, q1, rho), k) * rho;
   if (word) *word = static_cast<DubinsWord>(k);
   return length;
 }
@@ -55,15 +50,9 @@ void dubins_shortest_lengths(const double* q0s, const double* q1s, std::size_t n
   require_positive(rho, "rho");
   require_finite_rows(q0s, n, "q0s");
   require_finite_rows(q1s, n, "q1s");
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 2048),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
                     [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        const Configuration a{q0s[3 * i], q0s[3 * i + 1], q0s[3 * i + 2]};
-                        const Configuration b{q1s[3 * i], q1s[3 * i + 1], q1s[3 * i + 2]};
-                        std::uint8_t k = 0;
-                        lengths[i] = shortest_normalised(detail::make_frame(a, b, rho), k) * rho;
-                        words[i] = k;
-                      }
+                      lengths_range(q0s, q1s, range.begin(), range.end(), rho, lengths, words);
                     });
 }
 

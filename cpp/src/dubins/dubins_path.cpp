@@ -170,19 +170,13 @@ DubinsPath dubins_shortest_path(const Configuration& q0, const Configuration& q1
   require_configuration(q0, "q0");
   require_configuration(q1, "q1");
   require_positive(rho, "rho");
+  // The length-only kernel chooses the word (so the batch and this function always agree);
+  // the word formulas then give its segments.
   const detail::DubinsFrame f = detail::make_frame(q0, q1, rho);
-  DubinsWord best_word = DubinsWord::LSL;
-  detail::WordSegments best;
-  double best_length = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < kDubinsWordCount; ++k) {
-    const auto word = static_cast<DubinsWord>(k);
-    const detail::WordSegments w = detail::word_segments(f, word);
-    if (w.ok && w.total() < best_length) {
-      best_length = w.total();
-      best = w;
-      best_word = word;
-    }
-  }
+  std::uint8_t code = 0;
+  detail::shortest_length_normalised(f, code);
+  const auto best_word = static_cast<DubinsWord>(code);
+  const detail::WordSegments best = detail::word_segments(f, best_word);
   return make_path(q0, q1, rho, best_word, best);
 }
 
