@@ -99,24 +99,29 @@ TEST(DubinsHand, LrlAndMirroredRlr) {
   EXPECT_NEAR(m.length, 5 * kPiTest / 3, 1e-12);
 }
 
-TEST(DubinsHand, LsrTangentCircles) {
-  // From (0,0,0), rho = 1: left circle (0,1). Goal (2, 2, 0): its right circle is centred at
-  // (2, 1)... too close to be a clean case, so use goal (0, 2, pi): right circle centre
-  // (0, 2) + (sin pi, -cos pi) = (0, 3)?  Heading pi at (0,2) is the top of the start's left
-  // circle: one left half turn, length pi.
+TEST(DubinsHand, HalfTurnsAndTangentInnerCircles) {
+  // (0, 2) heading pi is the top of the start's left circle (centre (0, 1)): half a left turn,
+  // length pi.
   const DubinsPath p = dubins_shortest_path({0, 0, 0}, {0, 2, kPiTest}, 1.0);
-  EXPECT_NEAR(p.length, kPiTest, 1e-12);
   EXPECT_EQ(p.word, DubinsWord::LSL);
-  // The path through the left half circle then 3 m west: LSL (pi, 3, 0), length pi + 3.
+  EXPECT_NEAR(p.length, kPiTest, 1e-12);
+  // The half turn then 3 m west to (-3, 2): LSL (pi, 3, 0), length pi + 3.
   const DubinsPath q = dubins_shortest_path({0, 0, 0}, {-3, 2, kPiTest}, 1.0);
+  EXPECT_NEAR(q.segment_lengths[0], kPiTest, 1e-12);
+  EXPECT_NEAR(q.segment_lengths[1], 3.0, 1e-12);
   EXPECT_NEAR(q.length, kPiTest + 3.0, 1e-12);
-  // Inner tangent: from (0,0,0) to (4, 0, 0)... RSL/LSR to (x, y) with circles 2 sqrt2 apart:
-  // goal (2, 2, 0): left-start centre (0,1), right-goal centre (2,1): distance 2, tangent, so
-  // LSR = quarter left + quarter right = pi (p = 0).
+  // Goal (2, 2, 0): start left centre (0, 1), goal right centre (2, 2) + (sin 0, -cos 0) = (2, 1),
+  // 2 apart: tangent circles, so LSR = quarter left to (1, 1) heading pi/2, then quarter right:
+  // (pi/2, 0, pi/2), length pi. It is also the shortest (the straight-line distance is 2.83 and
+  // any path must turn by +pi/2 then -pi/2).
   const DubinsPath r = dubins_path({0, 0, 0}, {2, 2, 0}, 1.0, DubinsWord::LSR);
   EXPECT_NEAR(r.segment_lengths[0], kPiTest / 2, 1e-9);
   EXPECT_NEAR(r.segment_lengths[1], 0.0, 1e-9);
   EXPECT_NEAR(r.segment_lengths[2], kPiTest / 2, 1e-9);
+  EXPECT_NEAR(dubins_shortest_path({0, 0, 0}, {2, 2, 0}, 1.0).length, kPiTest, 1e-9);
+  // RSL mirror: (2, -2, 0).
+  const DubinsPath m = dubins_path({0, 0, 0}, {2, -2, 0}, 1.0, DubinsWord::RSL);
+  EXPECT_NEAR(m.length, kPiTest, 1e-9);
 }
 
 // ---- robustness ---------------------------------------------------------------------------
@@ -346,4 +351,185 @@ TEST(DubinsErrors, NamesTheField) {
   EXPECT_NE(message([&] { intercept_circle(bad); }).find("radius = -2"), std::string::npos);
   TargetCircle circle;
   EXPECT_NE(message([&] { dubins_path_to_circle({0, 0, 0}, 1.0, circle, nan); }).find("angle"), std::string::npos);
+}
+
+// ---- polynomial sin/cos/atan2 used by the length kernel --------------------------------------
+
+#include "dubins/fast_math.hpp"
+
+TEST(DubinsFastMath, MatchesLibm) {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> wide(-1e5, 1e5), unit(-1.0, 1.0);
+  for (int n = 0; n < 200000; ++n) {
+    const double x = n % 2 ? wide(rng) : 8.0 * unit(rng);
+    const auto sc = detail::fast_sincos(x);
+    ASSERT_NEAR(sc.s, std::sin(x), 2e-16 * (1.0 + std::fabs(x) * 1e-5)) << x;
+    ASSERT_NEAR(sc.c, std::cos(x), 2e-16 * (1.0 + std::fabs(x) * 1e-5)) << x;
+    const double y = unit(rng) * std::pow(10.0, 6.0 * unit(rng)), z = unit(rng) * std::pow(10.0, 6.0 * unit(rng));
+    ASSERT_NEAR(detail::fast_atan2(y, z), std::atan2(y, z), 4.5e-16 * std::fabs(std::atan2(y, z)) + 1e-300) << y << " " << z;
+  }
+  // Axes and quadrant boundaries.
+  for (double y : {0.0, 1.0, -1.0})
+    for (double z : {1.0, -1.0, 0.0})
+      if (y != 0.0 || z != 0.0) {
+        EXPECT_NEAR(detail::fast_atan2(y, z), std::atan2(y, z), 1e-16);
+      }
+  EXPECT_NEAR(detail::fast_sincos(1e7).s, std::sin(1e7), 1e-15);  // libm fallback beyond 1e6
+  EXPECT_NEAR(detail::mod_two_pi_poly(2.0 * kPiTest * 1000.0 + 0.5), 0.5, 1e-12);
+}
+
+// ---- path to a circle (Section III) ----------------------------------------------------------
+
+TEST(DubinsCircle, GoalIsTangentAndLengthIsContinuousUnderFourRho) {
+  std::mt19937_64 rng(123);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int cases = 0;
+  while (cases < 40) {
+    const double rho = 0.3 + unit(rng);
+    TargetCircle circle;
+    circle.center = Vec2(40.0 * (unit(rng) - 0.5), 40.0 * (unit(rng) - 0.5));
+    circle.radius = 0.2 + 4.0 * unit(rng);
+    circle.direction = cases % 2 ? CircleDirection::Clockwise : CircleDirection::CounterClockwise;
+    const Configuration q0{0.0, 0.0, 2.0 * kPiTest * unit(rng)};
+    if (!four_rho_condition(Vec2(q0.x, q0.y), rho, circle)) continue;
+    ++cases;
+    // Dense sampling: neighbouring angles differ by at most (r + 2 rho + |C| + r) h: no 2 pi rho jump.
+    const int n = 20000;
+    const double h = kTwoPi / n;
+    const double bound = (2.0 * circle.radius + 2.0 * rho + circle.center.norm()) * h;
+    double previous = dubins_length_to_circle(q0, rho, circle, 0.0);
+    for (int k = 1; k <= n; ++k) {
+      const double angle = k * h;
+      const double d = dubins_length_to_circle(q0, rho, circle, angle);
+      ASSERT_LE(std::fabs(d - previous), bound) << "case " << cases << " angle " << angle;
+      // Under the 4 rho condition the shortest word is CSC: D == D_CSC (Section II).
+      if (k % 50 == 0) {
+        ASSERT_NEAR(d, dubins_csc_length_to_circle(q0, rho, circle, angle), 1e-12 * (1.0 + d));
+        const DubinsPath p = dubins_path_to_circle(q0, rho, circle, angle);
+        const Configuration goal = circle.configuration(angle);
+        ASSERT_LT(position_error(p.integrate(p.length), goal), 1e-9 * (1.0 + circle.center.norm()));
+        ASSERT_LT(heading_error(p.integrate(p.length), goal), 1e-9);
+        // Tangent heading in the travel direction.
+        const double tangent = circle.direction == CircleDirection::Clockwise ? angle - kPiTest / 2 : angle + kPiTest / 2;
+        ASSERT_NEAR(wrap_to_pi(goal.psi - tangent), 0.0, 1e-12);
+      }
+      previous = d;
+    }
+    // Period exactly 2 pi.
+    EXPECT_NEAR(dubins_length_to_circle(q0, rho, circle, 0.7), dubins_length_to_circle(q0, rho, circle, 0.7 + 6 * kTwoPi),
+                1e-9);
+  }
+}
+
+TEST(DubinsCircle, PaperEquationsForRhoEqualToRadius) {
+  // Section III with r_t = rho, clockwise travel, pursuer at the origin heading 0:
+  // LSL: L_S = |(c_x + 2 rho cos a, c_y + 2 rho sin a - rho)| (2), phi_1 = angle of that vector
+  // mod 2 pi (3), phi_2 = mod(a - phi_1 - pi/2, 2 pi) (4).
+  // LSR: the goal's right circle is centred at C, so L_S = sqrt(c_x^2 + (c_y - rho)^2 - 4 rho^2)
+  // (5) does not depend on a; phi_1 = mod(psi_1 + psi_2) (6) with psi_1 = atan(2 rho / L_S) and
+  // psi_2 the angle of (c_x, c_y - rho) -- a two-argument arctangent: with the one-argument
+  // atan of the paper the quadrant is lost for c_x < 0 (the case below); phi_2 = mod(phi_1 - a
+  // + pi/2) (7).
+  const double rho = 1.0, cx = -4.0, cy = 3.0;
+  TargetCircle circle;
+  circle.center = Vec2(cx, cy);
+  circle.radius = rho;
+  circle.direction = CircleDirection::Clockwise;
+  const auto mod = [](double x) { return x - kTwoPi * std::floor(x / kTwoPi); };
+  for (int k = 0; k < 64; ++k) {
+    const double a = kTwoPi * k / 64.0 + 0.01;
+    const Configuration goal = circle.configuration(a);
+    const double ex = cx + 2 * rho * std::cos(a), ey = cy + 2 * rho * std::sin(a) - rho;
+    const double ls_lsl = std::hypot(ex, ey);
+    const double phi1 = mod(std::atan2(ey, ex));
+    const double phi2 = mod(a - phi1 - kPiTest / 2);
+    const DubinsPath lsl = dubins_path({0, 0, 0}, goal, rho, DubinsWord::LSL);
+    EXPECT_NEAR(lsl.segment_lengths[1], ls_lsl, 1e-12);
+    EXPECT_NEAR(lsl.length, rho * (phi1 + phi2) + ls_lsl, 1e-9) << a;
+    const double ls_lsr = std::sqrt(cx * cx + (cy - rho) * (cy - rho) - 4 * rho * rho);
+    const double psi1 = std::atan(2 * rho / ls_lsr), psi2 = std::atan2(cy - rho, cx);
+    const double phi1_lsr = mod(psi1 + psi2), phi2_lsr = mod(phi1_lsr - a + kPiTest / 2);
+    const DubinsPath lsr = dubins_path({0, 0, 0}, goal, rho, DubinsWord::LSR);
+    EXPECT_NEAR(lsr.segment_lengths[1], ls_lsr, 1e-12);
+    EXPECT_NEAR(lsr.length, rho * (phi1_lsr + phi2_lsr) + ls_lsr, 1e-9) << a;
+    // The one-argument atan of (6) would give a different first arc here (c_x < 0).
+    EXPECT_GT(std::fabs(mod(psi1 + std::atan((cy - rho) / cx)) - phi1_lsr), 1.0);
+  }
+}
+
+// ---- intercept (Section IV) against a brute-force oracle -------------------------------------
+
+namespace {
+
+// Earliest T on a grid of step dt with D(alpha(T)) <= v_p T.
+double brute_force_intercept_time(const InterceptProblem& p, double dt) {
+  const double sign = p.circle.direction == CircleDirection::Clockwise ? -1.0 : 1.0;
+  for (double t = 0.0; t < 1e4; t += dt) {
+    const double angle = p.target_angle0 + sign * p.target_speed * t / p.circle.radius;
+    if (dubins_length_to_circle(p.pursuer, p.rho, p.circle, angle) <= p.pursuer_speed * t) return t;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+}  // namespace
+
+TEST(DubinsIntercept, MatchesBruteForceScan) {
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int with_condition = 0, without = 0;
+  for (int n = 0; n < 60; ++n) {
+    InterceptProblem p;
+    p.rho = 0.3 + 1.5 * unit(rng);
+    p.pursuer = {10.0 * (unit(rng) - 0.5), 10.0 * (unit(rng) - 0.5), kTwoPi * unit(rng)};
+    p.circle.center = Vec2(30.0 * (unit(rng) - 0.5), 30.0 * (unit(rng) - 0.5));
+    p.circle.radius = 0.5 + 5.0 * unit(rng);
+    p.circle.direction = n % 2 ? CircleDirection::Clockwise : CircleDirection::CounterClockwise;
+    p.target_angle0 = kTwoPi * (unit(rng) - 0.5);
+    p.pursuer_speed = 0.5 + 2.0 * unit(rng);
+    p.target_speed = 0.2 + 3.0 * unit(rng);  // faster than the pursuer in many cases
+    const InterceptResult r = intercept_circle(p);
+    (r.four_rho_condition ? with_condition : without)++;
+    const double dt = 1e-3;
+    const double t_brute = brute_force_intercept_time(p, dt);
+    ASSERT_TRUE(std::isfinite(t_brute));
+    // The grid finds the first grid time at or after the first crossing.
+    EXPECT_LE(r.time, t_brute + 1e-9) << n;
+    EXPECT_GE(r.time, t_brute - dt - 1e-9) << n;
+    // Equal travel times at the answer (the paper's loop condition "dt > eps" would stop at the
+    // first negative dt; we bisect on the bracket): residual tiny and <= 0.
+    EXPECT_LE(r.residual, 0.0);
+    EXPECT_GT(r.residual, -1e-9);
+    // The target is at the path's goal at that time, with the path's final heading.
+    const double sign = p.circle.direction == CircleDirection::Clockwise ? -1.0 : 1.0;
+    const Configuration target = p.circle.configuration(p.target_angle0 + sign * p.target_speed * r.time / p.circle.radius);
+    EXPECT_LT(position_error(r.path.integrate(r.path.length), target), 1e-8);
+    EXPECT_LT(heading_error(r.path.integrate(r.path.length), target), 1e-8);
+    EXPECT_DOUBLE_EQ(r.period, kTwoPi);
+    // alpha_min is the minimum of D over a dense scan.
+    double dense_min = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 4000; ++k) dense_min = std::min(dense_min, dubins_length_to_circle(p.pursuer, p.rho, p.circle, kTwoPi * k / 4000));
+    EXPECT_LE(dubins_length_to_circle(p.pursuer, p.rho, p.circle, r.alpha_min), dense_min + 1e-9);
+  }
+  EXPECT_GT(with_condition, 5);
+  EXPECT_GT(without, 5);
+}
+
+TEST(DubinsIntercept, PaperScenarioAndTrivialStart) {
+  // Fig. 7 scenario: pursuer (0, 0, 0), C = (-4, 3), alpha_i = pi, v_p = 1, v_t = 1.2, rho = r = 1.
+  InterceptProblem p;
+  p.circle.center = Vec2(-4.0, 3.0);
+  p.circle.radius = 1.0;
+  p.target_angle0 = kPiTest;
+  p.pursuer_speed = 1.0;
+  p.target_speed = 1.2;
+  const InterceptResult r = intercept_circle(p);
+  // |p - C| - r = 4 = 4 rho: the strict condition fails (answer feasible, optimality not proven).
+  EXPECT_FALSE(r.four_rho_condition);
+  EXPECT_NEAR(r.time, brute_force_intercept_time(p, 1e-4), 1e-4);
+  // Pursuer already on the target with its heading: time 0.
+  InterceptProblem q = p;
+  q.pursuer = q.circle.configuration(q.target_angle0);
+  const InterceptResult z = intercept_circle(q);
+  EXPECT_EQ(z.time, 0.0);
+  EXPECT_EQ(z.path.length, 0.0);
 }
