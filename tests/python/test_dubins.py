@@ -199,3 +199,51 @@ def test_intercept_against_brute_force(case: dict) -> None:
     assert r.period == pytest.approx(2 * math.pi)
     near = math.hypot(case["pursuer"][0] - case["center"][0], case["pursuer"][1] - case["center"][1])
     assert r.four_rho_condition == (abs(near - case["radius"]) > 4 * case["rho"])
+
+
+# ---- standalone executable -------------------------------------------------------------------
+
+
+def _vistrack_dubins_executable() -> str | None:
+    import os
+    import shutil
+
+    build = os.environ.get("VISTRACK_BUILD_DIR")
+    if build:
+        candidate = os.path.join(build, "cpp", "vistrack_dubins")
+        if os.access(candidate, os.X_OK):
+            return candidate
+    return shutil.which("vistrack_dubins")
+
+
+def test_vistrack_dubins_csv(tmp_path) -> None:
+    import subprocess
+
+    exe = _vistrack_dubins_executable()
+    if exe is None:
+        pytest.skip("vistrack_dubins not built (set VISTRACK_BUILD_DIR or install the package)")
+    rng = np.random.default_rng(8)
+    q0 = rng.uniform(-20, 20, (500, 3))
+    q1 = rng.uniform(-20, 20, (500, 3))
+    source = tmp_path / "pairs.csv"
+    lines = ["x0,y0,psi0,x1,y1,psi1"] + [",".join(repr(float(v)) for v in (*a, *b)) for a, b in zip(q0, q1)]
+    source.write_text("\n".join(lines) + "\n")
+    out = tmp_path / "out.csv"
+    done = subprocess.run([exe, "--rho", "2.5", "--segments", "-o", str(out), str(source)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    rows = out.read_text().splitlines()
+    assert rows[0] == "length,word,seg1,seg2,seg3" and len(rows) == 501
+    lengths, words = dubins.shortest_lengths(q0, q1, 2.5)
+    for i, row in enumerate(rows[1:]):
+        length, word, *segments = row.split(",")
+        assert float(length) == pytest.approx(lengths[i], rel=1e-15, abs=1e-15)
+        assert word == dubins.WORDS[words[i]]
+        assert sum(map(float, segments)) == pytest.approx(float(length), rel=1e-12)
+    # Bad input: a clear message naming the line and column, exit code 2, input untouched.
+    bad = tmp_path / "bad.csv"
+    bad.write_text("0,0,0,1,1,0\n0,0,nan,1,1,0\n")
+    done = subprocess.run([exe, "--rho", "1", str(bad)], capture_output=True, text=True)
+    assert done.returncode == 2 and "bad.csv:2 psi0" in done.stderr
+    assert bad.read_text() == "0,0,0,1,1,0\n0,0,nan,1,1,0\n"
+    done = subprocess.run([exe, "--rho", "-1", str(source)], capture_output=True, text=True)
+    assert done.returncode == 2 and "--rho = -1" in done.stderr
