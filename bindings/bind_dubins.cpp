@@ -110,6 +110,20 @@ void bind_dubins(py::module_& parent) {
       },
       py::arg("q0"), py::arg("q1"), py::arg("rho"), "Shortest of the six Dubins words from q0 to q1.");
   m.def(
+      "shortest_length",
+      [](const Triple& q0, const Triple& q1, double rho) {
+        const Configuration a = to_configuration(q0), b = to_configuration(q1);
+        static const char* const names[] = {"x", "y", "psi"};
+        for (std::size_t k = 0; k < 3; ++k) {
+          require_finite(q0[k], std::string("q0.") + names[k]);
+          require_finite(q1[k], std::string("q1.") + names[k]);
+        }
+        require_positive(rho, "rho");
+        return dubins_shortest_length(a, b, rho);
+      },
+      py::arg("q0"), py::arg("q1"), py::arg("rho"),
+      "Length of the shortest Dubins path (no path object; the batch kernel for one pair).");
+  m.def(
       "path",
       [](const Triple& q0, const Triple& q1, double rho, const std::string& word) {
         return dubins_path(to_configuration(q0), to_configuration(q1), rho, dubins_word_from_string(word));
@@ -127,7 +141,7 @@ void bind_dubins(py::module_& parent) {
       py::arg("q0"), py::arg("q1"), py::arg("rho"), "Length of every word (inf where it does not exist), keyed by word.");
   m.def(
       "shortest_lengths",
-      [](const InputArray& q0s_in, const InputArray& q1s_in, double rho) {
+      [](const InputArray& q0s_in, const InputArray& q1s_in, double rho, int threads) {
         const InputArray q0s = require_rows3(q0s_in, "q0s");
         const InputArray q1s = require_rows3(q1s_in, "q1s");
         if (q0s.shape(0) != q1s.shape(0))
@@ -141,13 +155,13 @@ void bind_dubins(py::module_& parent) {
         std::uint8_t* w = codes.mutable_data();
         {
           py::gil_scoped_release release;
-          dubins_shortest_lengths(a, b, n, rho, out, w);
+          dubins_shortest_lengths(a, b, n, rho, out, w, threads);
         }
         return py::make_tuple(lengths, codes);
       },
-      py::arg("q0s"), py::arg("q1s"), py::arg("rho"),
+      py::arg("q0s"), py::arg("q1s"), py::arg("rho"), py::arg("threads") = 0,
       "Batch: arrays (n, 3) of start and goal configurations -> (lengths (n,), words (n,) uint8 indexing "
-      "WORDS). Multi-threaded (TBB), releases the GIL.");
+      "WORDS). Multi-threaded (TBB; threads=0 uses all cores, else at most `threads`), releases the GIL.");
 
   m.def(
       "path_to_circle",

@@ -13,6 +13,7 @@ InterceptResult = _dubins.InterceptResult
 WORDS: tuple[str, ...] = _dubins.WORDS
 SNAP: float = _dubins.SNAP
 shortest_path = _dubins.shortest_path
+shortest_length = _dubins.shortest_length
 path = _dubins.path
 word_lengths = _dubins.word_lengths
 shortest_lengths = _dubins.shortest_lengths
@@ -33,6 +34,7 @@ __all__ = [
     "length_to_circle",
     "path",
     "path_to_circle",
+    "shortest_length",
     "shortest_lengths",
     "shortest_path",
     "word_lengths",

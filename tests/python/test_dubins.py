@@ -72,9 +72,13 @@ def test_batch_matches_scalar() -> None:
         p = dubins.shortest_path(q0[i], q1[i], 2.0)
         assert lengths[i] == pytest.approx(p.length, rel=1e-12, abs=1e-12)
         assert dubins.WORDS[words[i]] == p.word
+        assert dubins.shortest_length(q0[i], q1[i], 2.0) == lengths[i]
     # Fortran-ordered and float32 inputs are converted.
     l2, _ = dubins.shortest_lengths(np.asfortranarray(q0), q1.astype(np.float32).astype(np.float64), 2.0)
     assert np.allclose(l2, lengths)
+    # One thread gives the same numbers as all cores.
+    l1, w1 = dubins.shortest_lengths(q0, q1, 2.0, threads=1)
+    assert np.array_equal(l1, lengths) and np.array_equal(w1, words)
 
 
 def test_batch_runs_concurrently_with_the_gil_released() -> None:
@@ -97,6 +101,9 @@ def test_batch_runs_concurrently_with_the_gil_released() -> None:
         (lambda: dubins.shortest_path((0, 0, 0), (1, 1, 0), 0.0), "rho"),
         (lambda: dubins.shortest_path((0, 0, 0), (1, 1, 0), -2.0), "rho = -2"),
         (lambda: dubins.shortest_path((0, float("nan"), 0), (1, 1, 0), 1.0), "q0.y"),
+        (lambda: dubins.shortest_length((0, 0, 0), (1, 1, float("inf")), 1.0), "q1.psi"),
+        (lambda: dubins.shortest_length((0, 0, 0), (1, 1, 0), 0.0), "rho"),
+        (lambda: dubins.shortest_lengths(np.zeros((3, 3)), np.zeros((3, 3)), 1.0, threads=-1), "threads"),
         (lambda: dubins.path((0, 0, 0), (1, 1, 0), 1.0, "LLL"), "word"),
         (lambda: dubins.path((0, 0, 0), (100, 0, 0), 1.0, "RLR"), "word"),
         (lambda: dubins.shortest_lengths(np.zeros((3, 2)), np.zeros((3, 3)), 1.0), "q0s"),

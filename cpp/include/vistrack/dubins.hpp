@@ -87,14 +87,15 @@ std::array<double, kDubinsWordCount> dubins_word_lengths(const Configuration& q0
                                                          const Configuration& q1, double rho);
 
 // Batch: row i of q0s/q1s (n x 3, row-major x, y, psi) -> lengths[i], words[i] (DubinsWord
-// values). Multi-threaded with TBB. Allocation-free inner loop.
+// values). Multi-threaded with TBB (threads = 0: all cores; otherwise at most that many).
+// Allocation-free inner loop.
 struct DubinsBatch {
   std::vector<double> lengths;
   std::vector<std::uint8_t> words;
 };
 void dubins_shortest_lengths(const double* q0s, const double* q1s, std::size_t n, double rho,
-                             double* lengths, std::uint8_t* words);
-DubinsBatch dubins_shortest_lengths(const Points3& q0s, const Points3& q1s, double rho);
+                             double* lengths, std::uint8_t* words, int threads = 0);
+DubinsBatch dubins_shortest_lengths(const Points3& q0s, const Points3& q1s, double rho, int threads = 0);
 // Single-threaded length of the shortest path (the kernel of the batch).
 double dubins_shortest_length(const Configuration& q0, const Configuration& q1, double rho,
                               DubinsWord* word = nullptr);

@@ -3,6 +3,7 @@
 // across cores.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <array>
 #include <cmath>
@@ -46,24 +47,32 @@ double dubins_shortest_length(const Configuration& q0, const Configuration& q1, 
 }
 
 void dubins_shortest_lengths(const double* q0s, const double* q1s, std::size_t n, double rho,
-                             double* lengths, std::uint8_t* words) {
+                             double* lengths, std::uint8_t* words, int threads) {
   require_positive(rho, "rho");
+  if (threads < 0) detail::fail_field("threads", threads, "must be 0 (all cores) or positive");
   require_finite_rows(q0s, n, "q0s");
   require_finite_rows(q1s, n, "q1s");
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      lengths_range(q0s, q1s, range.begin(), range.end(), rho, lengths, words);
-                    });
+  const auto run = [&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](const tbb::blocked_range<std::size_t>& range) {
+      lengths_range(q0s, q1s, range.begin(), range.end(), rho, lengths, words);
+    });
+  };
+  if (threads == 0) {
+    run();
+  } else {
+    tbb::task_arena arena(threads);
+    arena.execute(run);
+  }
 }
 
-DubinsBatch dubins_shortest_lengths(const Points3& q0s, const Points3& q1s, double rho) {
+DubinsBatch dubins_shortest_lengths(const Points3& q0s, const Points3& q1s, double rho, int threads) {
   if (q0s.rows() != q1s.rows())
     detail::fail_field("q1s.rows", q1s.rows(), "must equal q0s.rows = " + std::to_string(q0s.rows()));
   const auto n = static_cast<std::size_t>(q0s.rows());
   DubinsBatch out;
   out.lengths.resize(n);
   out.words.resize(n);
-  dubins_shortest_lengths(q0s.data(), q1s.data(), n, rho, out.lengths.data(), out.words.data());
+  dubins_shortest_lengths(q0s.data(), q1s.data(), n, rho, out.lengths.data(), out.words.data(), threads);
   return out;
 }
 
