@@ -152,6 +152,9 @@ inline WordSegments word_rsl(const DubinsFrame& f) {
   return r;
 }
 
+// acos on [0, 1] as atan2(sqrt((1 - x)(1 + x)), x): accurate near 1 as well.
+inline double fast_acos(double x) { return fast_atan2(std::sqrt((1.0 - x) * (1.0 + x)), x); }
+
 // CCC: centres of the outer circles at distance D <= 4, the middle circle at distance 2 from
 // both; kappa = acos(D / 4) is the base angle of that isosceles triangle. The middle arc of
 // the candidate kept is pi + 2 kappa >= pi (the other one, pi - 2 kappa, is never shortest).
@@ -161,8 +164,8 @@ inline WordSegments word_lrl(const DubinsFrame& f) {
   WordSegments r;
   if (quarter > 1.0 + 1e-12) return r;
   r.ok = true;
-  const double kappa = std::acos(std::min(quarter, 1.0));
-  const double theta = std::atan2(wy, wx);
+  const double kappa = fast_acos(std::min(quarter, 1.0));
+  const double theta = fast_atan2(wy, wx);
   r.t = mod2pi_snap(theta + kappa + kHalfPi, f.snap);
   r.p = kPi + 2.0 * kappa;
   r.q = mod2pi_snap(f.phi - theta + kappa + kHalfPi, f.snap);
@@ -175,8 +178,8 @@ inline WordSegments word_rlr(const DubinsFrame& f) {
   WordSegments r;
   if (quarter > 1.0 + 1e-12) return r;
   r.ok = true;
-  const double kappa = std::acos(std::min(quarter, 1.0));
-  const double theta = std::atan2(wy, wx);
+  const double kappa = fast_acos(std::min(quarter, 1.0));
+  const double theta = fast_atan2(wy, wx);
   r.t = mod2pi_snap(-theta + kappa + kHalfPi, f.snap);
   r.p = kPi + 2.0 * kappa;
   r.q = mod2pi_snap(-f.phi + theta + kappa + kHalfPi, f.snap);
