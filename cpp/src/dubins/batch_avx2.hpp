@@ -9,8 +9,9 @@ namespace vistrack::detail {
 bool avx2_kernel_available();
 
 // For `count` pairs (rows of 3 doubles) whose |psi0| and |psi1 - psi0| are below the
-// polynomial range (kFastTrigLimit): best CSC length (units of rho), its word code and whether
-// a CCC word must still be checked, bit-identical to shortest_csc(make_frame_poly(...)).
+// polynomial range (kFastTrigLimit): shortest length (units of rho) and word code over all six
+// words, bit-identical to shortest_length_normalised(make_frame_poly(...)); ccc is set to 0
+// (kept for the scalar remainder, which flags pairs still needing the CCC words).
 void csc_block_avx2(const double* q0s, const double* q1s, std::size_t count, double rho, double snap_constant,
                     double* best, double* code, unsigned char* ccc);
 

@@ -118,6 +118,29 @@ inline M in_wedge(V wx, V wy, V p, V phi, V c, V s, V snap) {
   return sel(le(phi, set(kPiD)), narrow, mnot(outside_wide));
 }
 
+// kernel.hpp mod2pi_snap: x - 2 pi floor(x / 2 pi), within snap of 2 pi (or negative) -> 0.
+inline V mod2pi_snap(V x, V snap) {
+  const V r = sub(x, mul(set(kTwoPiD), _mm256_floor_pd(div(x, set(kTwoPiD)))));
+  return sel(mor(ge(r, sub(set(kTwoPiD), snap)), lt(r, set(0.0))), set(0.0), r);
+}
+
+// kernel.hpp word_lrl / word_rlr totals; `mirror` selects RLR. w is the vector between the
+// outer circles, d = |w|.
+inline V ccc_total(V wx, V wy, V d, V phi, V snap, bool mirror, M& ok) {
+  const V quarter = mul(set(0.25), d);
+  ok = mnot(gt(quarter, set(1.0 + 1e-12)));
+  const V x = sel(lt(set(1.0), quarter), set(1.0), quarter);  // std::min(quarter, 1.0)
+  const V kappa = atan2_poly(_mm256_sqrt_pd(mul(sub(set(1.0), x), add(set(1.0), x))), x);
+  const V theta = atan2_poly(wy, wx);
+  const V half_pi = set(0.5 * kPiD);
+  const V t = mirror ? mod2pi_snap(add(add(neg(theta), kappa), half_pi), snap)
+                     : mod2pi_snap(add(add(theta, kappa), half_pi), snap);
+  const V p = add(set(kPiD), mul(set(2.0), kappa));
+  const V q = mirror ? mod2pi_snap(add(add(add(neg(phi), theta), kappa), half_pi), snap)
+                     : mod2pi_snap(add(add(sub(phi, theta), kappa), half_pi), snap);
+  return add(add(t, p), q);
+}
+
 inline V load3(const double* rows, int component) {
   return _mm256_set_pd(rows[9 + component], rows[6 + component], rows[3 + component], rows[component]);
 }
@@ -188,10 +211,22 @@ void csc_block_avx2(const double* q0s, const double* q1s, std::size_t count, dou
     better = lt(rsr, best);
     code = sel(better, set(3.0), code);
     best = sel(better, rsr, best);
-    const int ccc = _mm256_movemask_pd(mor(le(r2, set(kCccLimit)), le(l2, set(kCccLimit))));
+    // kernel.hpp finish_with_ccc, only where shortest_csc flags it: RLR then LRL.
+    const M need = mor(le(r2, set(kCccLimit)), le(l2, set(kCccLimit)));
+    if (_mm256_movemask_pd(need) != 0) {
+      M ok;
+      const V rlr = ccc_total(rx, ry, rp, phi, snap, true, ok);
+      better = mand(mand(need, ok), lt(rlr, best));
+      code = sel(better, set(4.0), code);
+      best = sel(better, rlr, best);
+      const V lrl = ccc_total(lx, ly, lp, phi, snap, false, ok);
+      better = mand(mand(need, ok), lt(lrl, best));
+      code = sel(better, set(5.0), code);
+      best = sel(better, lrl, best);
+    }
     _mm256_storeu_pd(best_out + i, best);
     _mm256_storeu_pd(code_out + i, code);
-    for (int lane = 0; lane < 4; ++lane) ccc_out[i + static_cast<std::size_t>(lane)] = static_cast<unsigned char>((ccc >> lane) & 1);
+    for (std::size_t lane = 0; lane < 4; ++lane) ccc_out[i + lane] = 0;  // CCC done here
   }
   // The caller handles the remainder (count % 4) with the scalar kernel.
   (void)i;
