@@ -154,6 +154,10 @@ InterceptResult intercept_circle(const InterceptProblem& problem) {
   const double d_min = dubins_shortest_length(problem.pursuer, problem.circle.configuration(result.alpha_min),
                                               problem.rho);
   const double swept_needed = d_min / problem.pursuer_speed * problem.target_speed / problem.circle.radius;
+  if (!(swept_needed < 1e9))
+    detail::fail_field("target_speed", problem.target_speed,
+                       "the target would circle more than 1e8 times before the pursuer can reach the circle "
+                       "(pursuer_speed = " + detail::to_text(problem.pursuer_speed) + ")");
   int windows = 0;
   if (swept_needed > upper) windows = static_cast<int>(std::floor((swept_needed - upper) / kTwoPi));
   double lower = windows > 0 ? upper + (windows - 1) * kTwoPi : 0.0;
