@@ -17,6 +17,13 @@
 // of the start with the same heading is the start (length ~0); a goal just behind the start by
 // more than that needs the full loop (~2 pi rho): the Dubins distance is discontinuous there.
 // With these, re-planning from any sampled point of a path gives the remaining length.
+// Compared with OMPL (DubinsStateSpace: 1e-6 rho / 1e-7 rad tolerances) the lengths agree to
+// ~1e-14 relative except inside OMPL's looser snaps (bench/dubins_bench.py lists them).
+//
+// Speed: one length kernel (src/dubins/kernel.hpp) picks the word for dubins_shortest_path and
+// the batch: no atan2 for LSL/RSR, one for LSR/RSL, polynomial sin/cos/atan2 (a few ulp), no
+// allocation; the batch runs it four pairs per AVX2 instruction when the CPU has AVX2, bit-
+// identical to the scalar kernel.
 #pragma once
 
 #include <array>
