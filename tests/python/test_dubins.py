@@ -46,6 +46,8 @@ def test_sampling_and_at() -> None:
     mid = p.sample_at([0.0, p.length / 2, p.length])
     assert mid.shape == (3, 3)
     assert tuple(mid[1]) == pytest.approx(p.at(p.length / 2))
+    # A zero-length path samples to the goal alone.
+    assert dubins.shortest_path((1, 1, 0), (1, 1, 2 * math.pi), 1.0).sample(0.1).tolist() == [[1.0, 1.0, 2 * math.pi]]
     # Re-planning from the middle gives the remaining length.
     rest = dubins.shortest_path(tuple(mid[1]), (-4, 5, 2.0), 1.5)
     assert rest.length == pytest.approx(p.length / 2, abs=1e-9)

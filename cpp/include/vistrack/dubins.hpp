@@ -78,7 +78,8 @@ struct DubinsPath {
   // Configuration reached by integrating the segments to s (no snapping to the goal); tests
   // use it to check that the segments really end at the goal.
   Configuration integrate(double s) const;
-  // Rows (x, y, psi) at s = 0, step, 2 step, ... and the goal exactly as the last row.
+  // Rows (x, y, psi) at s = 0, step, 2 step, ... and the goal exactly as the last row (only
+  // the goal when length == 0).
   Points3 sample(double step) const;
   // Rows at the given arc lengths (each in [0, length]).
   Points3 sample_at(const std::vector<double>& arc_lengths) const;

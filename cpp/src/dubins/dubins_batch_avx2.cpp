@@ -147,8 +147,6 @@ inline V load3(const double* rows, int component) {
 
 }  // namespace
 
-bool avx2_kernel_available() { return __builtin_cpu_supports("avx2"); }
-
 void csc_block_avx2(const double* q0s, const double* q1s, std::size_t count, double rho, double snap_constant,
                     double* best_out, double* code_out, unsigned char* ccc_out) {
   const double inv_scalar = 1.0 / rho;
@@ -234,7 +232,6 @@ void csc_block_avx2(const double* q0s, const double* q1s, std::size_t count, dou
 
 #else
 
-bool avx2_kernel_available() { return false; }
 void csc_block_avx2(const double*, const double*, std::size_t, double, double, double*, double*, unsigned char*) {}
 
 #endif

@@ -111,6 +111,11 @@ Points3 DubinsPath::sample(double step) const {
   require_positive(step, "step");
   const double count_real = std::floor(length / step);
   if (count_real > 1e8) detail::fail_field("step", step, "gives more than 1e8 samples");
+  if (length == 0.0) {  // start and goal coincide: one row, the goal
+    Points3 row(1, 3);
+    row << goal.x, goal.y, goal.psi;
+    return row;
+  }
   auto count = static_cast<Eigen::Index>(count_real);
   // The last regular sample may coincide with the goal; keep the goal once.
   if (count > 0 && static_cast<double>(count) * step >= length) --count;
