@@ -12,13 +12,48 @@
 
 namespace py = pybind11;
 
+// (x, y, psi) from any sequence of three numbers (tuple, list, numpy row), to a tuple: a
+// direct conversion keeps the per-path call cheap.
+namespace pybind11::detail {
+template <>
+struct type_caster<vistrack::Configuration> {
+  PYBIND11_TYPE_CASTER(vistrack::Configuration, const_name("tuple[float, float, float]"));
+
+  bool load(handle source, bool) {
+    if (!source || PyUnicode_Check(source.ptr()) || PyBytes_Check(source.ptr())) return false;
+    PyObject* sequence = PySequence_Fast(source.ptr(), "");
+    if (!sequence) {
+      PyErr_Clear();
+      return false;
+    }
+    bool ok = PySequence_Fast_GET_SIZE(sequence) == 3;
+    double values[3] = {0.0, 0.0, 0.0};
+    PyObject** items = PySequence_Fast_ITEMS(sequence);
+    for (int k = 0; ok && k < 3; ++k) {
+      values[k] = PyFloat_AsDouble(items[k]);
+      if (values[k] == -1.0 && PyErr_Occurred()) {
+        PyErr_Clear();
+        ok = false;
+      }
+    }
+    Py_DECREF(sequence);
+    if (ok) value = {values[0], values[1], values[2]};
+    return ok;
+  }
+
+  static handle cast(const vistrack::Configuration& q, return_value_policy, handle) {
+    return make_tuple(q.x, q.y, q.psi).release();
+  }
+};
+}  // namespace pybind11::detail
+
 namespace vistrack::bindings {
 namespace {
 
-using Triple = std::array<double, 3>;
+using Triple = Configuration;
 using InputArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-Configuration to_configuration(const Triple& q) { return {q[0], q[1], q[2]}; }
+const Configuration& to_configuration(const Configuration& q) { return q; }
 py::tuple to_tuple(const Configuration& q) { return py::make_tuple(q.x, q.y, q.psi); }
 
 const char* segment_letter(DubinsSegment s) {
@@ -113,10 +148,10 @@ void bind_dubins(py::module_& parent) {
       "shortest_length",
       [](const Triple& q0, const Triple& q1, double rho) {
         const Configuration a = to_configuration(q0), b = to_configuration(q1);
-        static const char* const names[] = {"x", "y", "psi"};
-        for (std::size_t k = 0; k < 3; ++k) {
-          require_finite(q0[k], std::string("q0.") + names[k]);
-          require_finite(q1[k], std::string("q1.") + names[k]);
+        for (const auto& [q, name] : {std::pair<const Configuration&, const char*>{q0, "q0"}, {q1, "q1"}}) {
+          require_finite(q.x, std::string(name) + ".x");
+          require_finite(q.y, std::string(name) + ".y");
+          require_finite(q.psi, std::string(name) + ".psi");
         }
         require_positive(rho, "rho");
         return dubins_shortest_length(a, b, rho);
