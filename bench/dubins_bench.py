@@ -131,6 +131,15 @@ def throughput(rho: float, per_path: int, batch: int, repeat: int, seed: int) ->
     ompl = Ompl(rho)
     l0, l1 = q0.tolist(), q1.tolist()
     t_ompl = best_of(repeat, lambda: [ompl.length(a, b) for a, b in zip(l0, l1)])
+    # OMPL's distance() alone, on states built beforehand (the kernel plus one Python call).
+    states = []
+    for p, q in zip(l0, l1):
+        a, b = ompl.space.allocState(), ompl.space.allocState()
+        a.setX(p[0]); a.setY(p[1]); a.setYaw(p[2])  # noqa: E702
+        b.setX(q[0]); b.setY(q[1]); b.setYaw(q[2])  # noqa: E702
+        states.append((a, b))
+    distance = ompl.space.distance
+    t_ompl_distance = best_of(repeat, lambda: [distance(a, b) for a, b in states])
     t_ours_length = best_of(repeat, lambda: [dubins.shortest_length(a, b, rho) for a, b in zip(l0, l1)])
     t_ours_path = best_of(repeat, lambda: [dubins.shortest_path(a, b, rho) for a, b in zip(l0, l1)])
     b0, b1 = random_pairs(rng, batch, 10.0 * rho)
@@ -144,6 +153,8 @@ def throughput(rho: float, per_path: int, batch: int, repeat: int, seed: int) ->
     t_near = best_of(repeat, lambda: dubins.shortest_lengths(n0, n1, rho))
     return {
         "ompl_python_per_path": {"paths_per_s": per_path / t_ompl, "ns_per_path": 1e9 * t_ompl / per_path},
+        "ompl_python_distance_only": {"paths_per_s": per_path / t_ompl_distance,
+                                      "ns_per_path": 1e9 * t_ompl_distance / per_path},
         "vistrack_python_shortest_length": {"paths_per_s": per_path / t_ours_length,
                                             "ns_per_path": 1e9 * t_ours_length / per_path},
         "vistrack_python_shortest_path": {"paths_per_s": per_path / t_ours_path, "ns_per_path": 1e9 * t_ours_path / per_path},
@@ -182,10 +193,16 @@ def main() -> int:
         extra = f"  (cpu {row['cpu_ns_per_path']:.0f} ns/path over all threads)" if "cpu_ns_per_path" in row else ""
         print(f"{name:32s} {row['paths_per_s'] / 1e6:8.3f} M paths/s  {row['ns_per_path']:9.1f} ns/path{extra}")
     base = speed["ompl_python_per_path"]["paths_per_s"]
-    print("\nratios vs OMPL Python API: per path (length) x%.2f, per path (path object) x%.2f, "
+    print("\nratios vs OMPL Python API (states set per pair): per path (length) x%.2f, per path (path object) x%.2f, "
           "batch one core x%.1f, batch all cores x%.1f" % (
         speed["vistrack_python_shortest_length"]["paths_per_s"] / base,
         speed["vistrack_python_shortest_path"]["paths_per_s"] / base,
+        speed["vistrack_batch_one_core"]["paths_per_s"] / base,
+        speed["vistrack_batch_all_cores"]["paths_per_s"] / base))
+    base = speed["ompl_python_distance_only"]["paths_per_s"]
+    print("ratios vs OMPL distance() on prebuilt states: per path (length) x%.2f, batch one core x%.1f, "
+          "batch all cores x%.1f" % (
+        speed["vistrack_python_shortest_length"]["paths_per_s"] / base,
         speed["vistrack_batch_one_core"]["paths_per_s"] / base,
         speed["vistrack_batch_all_cores"]["paths_per_s"] / base))
     if args.json:
