@@ -38,7 +38,8 @@ struct DubinsFrame {
 };
 
 // The frame without range checks: |q0.psi| and |q1.psi - q0.psi| below kFastTrigLimit.
-// Straight-line code (the batch loop vectorizes it).
+// Straight-line code, mirrored lane by lane in dubins_batch_avx2.cpp (keep the two in step:
+// DubinsBatch.BitIdenticalToScalarKernel checks it).
 VISTRACK_DUBINS_INLINE DubinsFrame make_frame_poly(const Configuration& q0, const Configuration& q1, double rho) {
   DubinsFrame f;
   const double inv = 1.0 / rho;
@@ -218,6 +219,7 @@ VISTRACK_DUBINS_INLINE bool in_wedge(double wx, double wy, double p, double phi,
 }
 
 // Shortest CSC length (units of rho) and its word code; whether a CCC word may be shorter
+// (mirrored in dubins_batch_avx2.cpp)
 // (outer circles within 4 rho). LSL and RSR need no atan2: t + q = phi or phi + 2 pi, decided
 // by whether the straight's direction lies in the wedge swept by the arcs. LSR and RSL take
 // one atan2 each. Straight-line code; same snapping as the word formulas above.
