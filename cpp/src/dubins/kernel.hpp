@@ -219,10 +219,10 @@ VISTRACK_DUBINS_INLINE bool in_wedge(double wx, double wy, double p, double phi,
 }
 
 // Shortest CSC length (units of rho) and its word code; whether a CCC word may be shorter
-// (mirrored in dubins_batch_avx2.cpp)
 // (outer circles within 4 rho). LSL and RSR need no atan2: t + q = phi or phi + 2 pi, decided
 // by whether the straight's direction lies in the wedge swept by the arcs. LSR and RSL take
-// one atan2 each. Straight-line code; same snapping as the word formulas above.
+// one atan2 each. Straight-line code; same snapping as the word formulas above; mirrored in
+// dubins_batch_avx2.cpp.
 struct CscChoice {
   double length;
   double code;       // word index as a double (keeps the batch loop in one type)
