@@ -9,6 +9,7 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError, version as _version
 
 from . import _core
+from . import dubins
 from ._core import (
     Control,
     Environment,
@@ -43,6 +44,7 @@ __all__ = [
     "Uav",
     "VistrackError",
     "constant_radius_plan",
+    "dubins",
     "max_inscribed_radius",
     "__version__",
 ]
