@@ -110,6 +110,10 @@ CircularOrbits circular_orbits(const std::vector<double>& times, const std::vect
           << max_orbit_curvature(std::max(radius[k], 1e-300), uav.speed, poi_speed)
           << " 1/m exceeds kappa_max = 1/r_min = " << 1.0 / uav.min_turn_radius << " 1/m (Lemma 6)";
     why << "; " << out.failing_samples.size() << " of " << n << " samples fail";
+    std::size_t invisible = 0;
+    for (std::size_t j : out.failing_samples) invisible += max_radii[j] <= 0.0 ? 1 : 0;
+    if (invisible > 0 && max_radii[k] > 0.0)
+      why << " (" << invisible << " of them with MaxRadius = 0: POI not visible at h_UAV)";
     out.infeasibility = why.str();
   }
   return out;
