@@ -103,7 +103,7 @@ struct Discretization {
   std::size_t volumes_computed = 0;  // VVs this call computed (the rest came from the cache)
 };
 
-// Thread-safe memo of VVs by arc length, to reuse VVs across calls (e.g. several spacings).
+// Thread-safe memo of VVs by POI position, to reuse VVs across calls (e.g. several spacings).
 class VolumeCache {
  public:
   explicit VolumeCache(VolumeFunction compute);
@@ -155,5 +155,30 @@ VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor
 
 std::string to_json(const VisibilityOrbitPlan& plan);
 VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text);
+
+// Section IV on a real environment: one Embree scene built once, VVs through a shared cache (so
+// several spacings or plans reuse them), the grid XOR metric (56) in the POI frame, and VPs
+// sliced at world z = ground level + h_UAV.
+class OrbitPlanner {
+ public:
+  OrbitPlanner(const Environment& env, const Sensor& sensor, double resolution_deg = 1.0);
+  Discretization adaptive(const PoiPath& poi, const Planning& planning, const ProgressFunction& progress = {});
+  Discretization fixed(const PoiPath& poi, double spacing, const ProgressFunction& progress = {});
+  // Error when planning.resolution_deg differs from the planner's.
+  VisibilityOrbitPlan plan(const PoiPath& poi, const Uav& uav, const Planning& planning,
+                           const ProgressFunction& progress = {});
+  std::size_t cached_volumes() const { return cache_.size(); }
+  const VisibilityScene& scene() const { return scene_; }
+
+ private:
+  VisibilityScene scene_;
+  Sensor sensor_;
+  double resolution_deg_;
+  VolumeCache cache_;
+};
+
+// vt.plan_orbits: OrbitPlanner(env, sensor, planning.resolution_deg).plan(poi, uav, planning).
+VisibilityOrbitPlan plan_orbits(const Environment& env, const PoiPath& poi, const Uav& uav, const Sensor& sensor,
+                                const Planning& planning, const ProgressFunction& progress = {});
 
 }  // namespace vistrack

@@ -1,5 +1,6 @@
 // Adaptive placement of visibility volumes along the POI path (section IV.B, metric (56)).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -15,7 +16,7 @@ namespace vistrack {
 struct VolumeCache::State {
   VolumeFunction compute;
   std::mutex mutex;
-  std::map<long long, VolumePtr> volumes;  // key: arc length in micrometres
+  std::map<std::array<long long, 3>, VolumePtr> volumes;  // key: POI position in micrometres
 };
 
 VolumeCache::VolumeCache(VolumeFunction compute) : state_(std::make_shared<State>()) {
@@ -25,7 +26,8 @@ VolumeCache::VolumeCache(VolumeFunction compute) : state_(std::make_shared<State
 
 VolumePtr VolumeCache::at(const PoiPath& poi, double arc_length, bool* computed) {
   require_finite(arc_length, "arc_length");
-  const long long key = std::llround(arc_length * 1e6);
+  const Vec3 g = poi.position(arc_length / poi.speed());
+  const std::array<long long, 3> key{std::llround(g.x() * 1e6), std::llround(g.y() * 1e6), std::llround(g.z() * 1e6)};
   {
     std::lock_guard<std::mutex> lock(state_->mutex);
     auto it = state_->volumes.find(key);
@@ -35,7 +37,7 @@ VolumePtr VolumeCache::at(const PoiPath& poi, double arc_length, bool* computed)
     }
   }
   // Computed outside the lock so that several threads trace at once; a rare duplicate is harmless.
-  VolumePtr volume = state_->compute(poi.position(arc_length / poi.speed()));
+  VolumePtr volume = state_->compute(g);
   if (!volume) throw Error("VolumeCache: the volume function returned no volume at s = " + detail::to_text(arc_length));
   std::lock_guard<std::mutex> lock(state_->mutex);
   auto inserted = state_->volumes.emplace(key, std::move(volume));
