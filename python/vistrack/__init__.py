@@ -10,6 +10,17 @@ from importlib.metadata import PackageNotFoundError, version as _version
 
 from . import _core
 from ._core import (
+    CircularOrbits,
+    Discretization,
+    VisibilityOrbitPlan,
+    circular_orbits,
+    grid_xor_volume,
+    max_orbit_curvature,
+    mesh_xor_volume,
+    min_feasible_radius,
+    orbit_curvature,
+    shares_direction_grid,
+    xor_volume,
     Control,
     Environment,
     OrbitPlan,
@@ -30,6 +41,17 @@ except PackageNotFoundError:  # running from a build tree
     __version__ = _core.__version__
 
 __all__ = [
+    "CircularOrbits",
+    "Discretization",
+    "VisibilityOrbitPlan",
+    "circular_orbits",
+    "grid_xor_volume",
+    "max_orbit_curvature",
+    "mesh_xor_volume",
+    "min_feasible_radius",
+    "orbit_curvature",
+    "shares_direction_grid",
+    "xor_volume",
     "Control",
     "Environment",
     "OrbitPlan",
