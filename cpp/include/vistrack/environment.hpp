@@ -3,6 +3,7 @@
 // visibility-volume paper.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -24,6 +25,10 @@ struct RoadNetwork {
   std::vector<Vec2> nodes;
   std::vector<std::pair<int, int>> edges;
 };
+
+// Nodes of a shortest route along road edges (Dijkstra, edge length = Euclidean distance),
+// from `from` to `to` inclusive. Error when a node does not exist or `to` is unreachable.
+std::vector<int> shortest_route(const RoadNetwork& roads, int from, int to);
 
 // A closed triangle mesh: vertices (n, 3) and faces (m, 3) indexing them.
 struct TriangleMesh {
@@ -59,6 +64,8 @@ class Environment {
   // Empty for an environment made from a mesh.
   const std::vector<Building>& buildings() const { return buildings_; }
   std::vector<Polygon> footprints() const;
+  std::vector<double> heights() const;
+  std::size_t num_buildings() const { return buildings_.size(); }
   const RoadNetwork& roads() const { return roads_; }
   // Replaces the road network after checking that no edge crosses a building footprint.
   void set_roads(RoadNetwork roads);
@@ -66,6 +73,9 @@ class Environment {
   std::uint64_t fingerprint() const;
 
  private:
+  // Buildings already validated and normalised: extrudes them, ground level 0.
+  static Environment from_validated_buildings(std::vector<Building> buildings);
+
   std::vector<Building> buildings_;
   RoadNetwork roads_;
   TriangleMesh mesh_;
