@@ -39,8 +39,8 @@ Ring rectangle(double x0, double y0, double x1, double y1) {
 // A tall core that falls off towards the edges, with per-lot variation, rounded to 1 m.
 double lot_height(const Vec2& centre, double u) {
   const double r = centre.norm() / 400.0;
-  const double core = kMinHeight + (kMaxHeight - kMinHeight) * std::exp(-(r / 0.38) * (r / 0.38));
-  return std::clamp(std::round(core * (0.55 + 0.6 * u)), kMinHeight, kMaxHeight);
+  const double core = kMinHeight + (kMaxHeight - kMinHeight) * std::exp(-(r / 0.5) * (r / 0.5));
+  return std::clamp(std::round(core * (0.5 + 0.7 * u)), kMinHeight, kMaxHeight);
 }
 
 void add_block(std::vector<Building>& buildings, std::size_t i, std::size_t j) {
@@ -78,9 +78,15 @@ void add_block(std::vector<Building>& buildings, std::size_t i, std::size_t j) {
     const Vec2 lot_centre(0.5 * (a0 + a1), 0.5 * (b0 + b1));
     const double height = lot_height(lot_centre, unit(i, j, k, 7));
     if (unit(i, j, k, 8) < 0.2) {
-      // L shape: the lot's rectangle without the quadrant at the lot's inner corner.
+      // L shape: the lot's rectangle without one quadrant (the hash picks which corner).
       const double cx = a0 + (a1 - a0) * 0.55, cy = b0 + (b1 - b0) * 0.55;
-      add({{Vec2(a0, b0), Vec2(a1, b0), Vec2(a1, cy), Vec2(cx, cy), Vec2(cx, b1), Vec2(a0, b1)}, {}}, height);
+      Ring l_shape{Vec2(a0, b0), Vec2(a1, b0), Vec2(a1, cy), Vec2(cx, cy), Vec2(cx, b1), Vec2(a0, b1)};
+      const auto corner = static_cast<int>(4.0 * unit(i, j, k, 9));  // mirror in x and/or y
+      for (Vec2& p : l_shape) {
+        if (corner & 1) p.x() = a0 + a1 - p.x();
+        if (corner & 2) p.y() = b0 + b1 - p.y();
+      }
+      add({l_shape, {}}, height);
     } else {
       add({rectangle(a0, b0, a1, b1), {}}, height);
     }

@@ -1,0 +1,474 @@
+// alpha(g) of eq. (4) (section III.D) on a direction grid: Embree rays give the visible interval
+// per direction, and the grid corners' intervals give a closed radial mesh.
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <unordered_map>
+
+#include "visibility/embree_scene.hpp"
+#include "vistrack/error.hpp"
+#include "vistrack/visibility.hpp"
+
+namespace vistrack {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kBandTolerance = 1e-3;  // m: a POI this close to a band face counts as inside the band
+
+// Which surface ends a visible interval: the position of a mesh vertex on a band cap or on the
+// ground gets that surface's exact z.
+enum class Surface : unsigned char { radial, band_low, band_high, ground };
+
+struct Setup {
+  Vec3 g;
+  double d_max = 0.0;
+  bool has_band = false;
+  double low = 0.0;
+  double high = 0.0;
+  double ground = 0.0;
+  bool poi_in_band = true;  // near = 0 along every ray (the VV is star-shaped about g)
+};
+
+struct Interval {
+  double near = 0.0;
+  double far = 0.0;
+  Surface near_surface = Surface::radial;
+  Surface far_surface = Surface::radial;
+};
+
+// The visible part of the ray g + t d (|d| = 1, d.z = sin_el) given the first obstacle hit.
+Interval visible_interval(const Setup& s, double sin_el, double obstacle_hit) {
+  Interval iv;
+  iv.far = std::min(s.d_max, obstacle_hit);
+  if (sin_el < 0.0) {
+    const double t_ground = std::max(0.0, (s.ground - s.g.z()) / sin_el);
+    if (t_ground < iv.far) {
+      iv.far = t_ground;
+      iv.far_surface = Surface::ground;
+    }
+  }
+  if (s.has_band) {
+    double enter = -kInf;
+    double exit = kInf;
+    Surface enter_surface = Surface::radial;
+    Surface exit_surface = Surface::radial;
+    if (sin_el > 0.0) {
+      enter = (s.low - s.g.z()) / sin_el;
+      exit = (s.high - s.g.z()) / sin_el;
+      enter_surface = Surface::band_low;
+      exit_surface = Surface::band_high;
+    } else if (sin_el < 0.0) {
+      enter = (s.high - s.g.z()) / sin_el;
+      exit = (s.low - s.g.z()) / sin_el;
+      enter_surface = Surface::band_high;
+      exit_surface = Surface::band_low;
+    } else if (!s.poi_in_band) {
+      exit = -kInf;  // a horizontal ray from outside the band never enters it
+    }
+    if (exit < iv.far) {
+      iv.far = exit;
+      iv.far_surface = exit_surface;
+    }
+    if (!s.poi_in_band && enter > iv.near) {
+      iv.near = enter;
+      iv.near_surface = enter_surface;
+    }
+  }
+  return iv;
+}
+
+Vec3 point_on(const Setup& s, const Vec3& d, double t, Surface surface) {
+  Vec3 p = s.g + t * d;
+  if (surface == Surface::band_low) p.z() = s.low;
+  if (surface == Surface::band_high) p.z() = s.high;
+  if (surface == Surface::ground) p.z() = s.ground;
+  return p;
+}
+
+void validate(const VisibilityScene& scene, const Vec3& g, double d_max,
+              const std::optional<std::pair<double, double>>& band, const std::string& g_field) {
+  for (int k = 0; k < 3; ++k) require_finite(g[k], g_field + "[" + std::to_string(k) + "]");
+  require_positive(d_max, "d_max");
+  if (band) {
+    require_finite(band->first, "altitude_band[0]");
+    require_finite(band->second, "altitude_band[1]");
+    if (!(band->first < band->second))
+      detail::fail_field("altitude_band", "(" + detail::to_text(band->first) + ", " + detail::to_text(band->second) + ")",
+                         "h_lo must be below h_hi");
+  }
+  if (g.z() < scene.ground_level() - 1e-9)
+    detail::fail_field(g_field + "[2]", g.z(), "below the ground level " + detail::to_text(scene.ground_level()));
+  if (scene.inside_obstacle(g))
+    detail::fail_field(g_field, "(" + detail::to_text(g.x()) + ", " + detail::to_text(g.y()) + ", " + detail::to_text(g.z()) + ")",
+                       "the POI lies inside an obstacle");
+}
+
+// The triangulated sphere of grid corners. Vertex rows i = 0..ne at elevations
+// -pi/2 + i pi/ne (rows 0 and ne are the poles), columns j at azimuths j d_az. Quad (i, j) splits
+// into Ta = [(i,j), (i,j+1), (i+1,j+1)] (absent at the south pole row) and
+// Tb = [(i,j), (i+1,j+1), (i+1,j)] (absent at the north pole row), both outward oriented.
+struct SphereGrid {
+  int ne = 0;
+  int na = 0;
+  int num_vertices() const { return 2 + (ne - 1) * na; }
+  int vertex(int i, int j) const {
+    if (i <= 0) return 0;
+    if (i >= ne) return num_vertices() - 1;
+    return 1 + (i - 1) * na + ((j % na) + na) % na;
+  }
+  int wrap(int j) const { return ((j % na) + na) % na; }
+  int ta(int i, int j) const { return 2 * (i * na + wrap(j)); }
+  int tb(int i, int j) const { return 2 * (i * na + wrap(j)) + 1; }
+  int num_triangle_slots() const { return 2 * ne * na; }
+  bool exists(int t) const {
+    const int i = (t / 2) / na;
+    return (t % 2 == 0) ? i >= 1 : i <= ne - 2;
+  }
+  std::array<int, 3> corners(int t) const {
+    const int q = t / 2;
+    const int i = q / na;
+    const int j = q % na;
+    if (t % 2 == 0) return {vertex(i, j), vertex(i, j + 1), vertex(i + 1, j + 1)};
+    return {vertex(i, j), vertex(i + 1, j + 1), vertex(i + 1, j)};
+  }
+  // The triangle across edge e (corner e to corner e+1) of triangle t.
+  int neighbour(int t, int e) const {
+    const int q = t / 2;
+    const int i = q / na;
+    const int j = q % na;
+    if (t % 2 == 0) {
+      if (e == 0) return tb(i - 1, j);
+      if (e == 1) return i <= ne - 2 ? tb(i, j + 1) : ta(ne - 1, j + 1);
+      return i <= ne - 2 ? tb(i, j) : ta(ne - 1, j - 1);
+    }
+    if (e == 0) return i >= 1 ? ta(i, j) : tb(0, j + 1);
+    if (e == 1) return ta(i + 1, j);
+    return i >= 1 ? ta(i, j - 1) : tb(0, j - 1);
+  }
+  // Existing triangles around vertex (i, j) in cyclic order.
+  int ring(int v, std::array<int, 6>& out, std::vector<int>& pole_ring) const {
+    if (v == 0 || v == num_vertices() - 1) {
+      pole_ring.clear();
+      for (int j = 0; j < na; ++j) pole_ring.push_back(v == 0 ? tb(0, j) : ta(ne - 1, j));
+      return -1;
+    }
+    const int i = 1 + (v - 1) / na;
+    const int j = (v - 1) % na;
+    const std::array<int, 6> all{ta(i, j), tb(i, j), ta(i, j - 1), tb(i - 1, j - 1), ta(i - 1, j - 1), tb(i - 1, j)};
+    int n = 0;
+    for (int t : all)
+      if (exists(t)) out[static_cast<std::size_t>(n++)] = t;
+    return n;
+  }
+};
+
+struct Tracer {
+  const detail::EmbreeScene& scene;
+  // Traces n unit directions from g in parallel chunks; ground hits are dropped (the ground is
+  // applied exactly, and a ray grazing the ground plane from a POI on it must not stop).
+  void operator()(const Vec3& g, const std::vector<float>& dirs, double t_max, std::vector<double>& hits) const {
+    const std::size_t n = dirs.size() / 3;
+    std::vector<float> t(n);
+    std::vector<char> ground_flag(n);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
+      detail::FlushDenormals flush;
+      std::array<bool, 2048> ground;
+      for (std::size_t start = r.begin(); start < r.end(); start += ground.size()) {
+        const std::size_t count = std::min(ground.size(), r.end() - start);
+        scene.trace(g, dirs.data() + 3 * start, count, 0.0f, static_cast<float>(t_max), t.data() + start, ground.data());
+        for (std::size_t k = 0; k < count; ++k) ground_flag[start + k] = ground[k] ? 1 : 0;
+      }
+    });
+    hits.resize(n);
+    for (std::size_t k = 0; k < n; ++k) hits[k] = ground_flag[k] ? kInf : static_cast<double>(t[k]);
+  }
+};
+
+struct MeshBuilder {
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> faces;
+
+  int add(const Vec3& p) {
+    points.push_back(p);
+    return static_cast<int>(points.size()) - 1;
+  }
+  TriangleMesh finish() const {
+    TriangleMesh mesh;
+    mesh.vertices.resize(static_cast<Eigen::Index>(points.size()), 3);
+    for (std::size_t k = 0; k < points.size(); ++k) mesh.vertices.row(static_cast<Eigen::Index>(k)) = points[k].transpose();
+    mesh.faces.resize(static_cast<Eigen::Index>(faces.size()), 3);
+    for (std::size_t k = 0; k < faces.size(); ++k)
+      for (int c = 0; c < 3; ++c) mesh.faces(static_cast<Eigen::Index>(k), c) = faces[k][static_cast<std::size_t>(c)];
+    return mesh;
+  }
+};
+
+// Star-shaped VV (near = 0 on every ray): the radial surface r = far over the triangles whose
+// three corners see something, closed by a fan to g along the border of that region (the border
+// only appears where far = 0, i.e. the ground or a band face through g: the fan is then exact).
+TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const std::vector<Vec3>& dirs,
+                             const std::vector<Interval>& corner) {
+  const int nv = sphere.num_vertices();
+  const double alive_gap = 1e-6 * std::max(1.0, s.d_max);
+  std::vector<char> alive(static_cast<std::size_t>(nv));
+  for (int v = 0; v < nv; ++v) alive[v] = corner[v].far - corner[v].near > alive_gap ? 1 : 0;
+
+  const int nt = sphere.num_triangle_slots();
+  std::vector<char> tri_alive(static_cast<std::size_t>(nt));
+  auto update_triangles = [&]() {
+    for (int t = 0; t < nt; ++t) {
+      if (!sphere.exists(t)) {
+        tri_alive[t] = 0;
+        continue;
+      }
+      const auto c = sphere.corners(t);
+      tri_alive[t] = alive[c[0]] && alive[c[1]] && alive[c[2]];
+    }
+  };
+  update_triangles();
+  // A corner where the visible region touches itself (two separate fans of live triangles) would
+  // be a non-manifold vertex: drop it, until there is none.
+  std::vector<int> pole_ring;
+  for (int round = 0; round < 64; ++round) {
+    bool changed = false;
+    for (int v = 0; v < nv; ++v) {
+      if (!alive[v]) continue;
+      std::array<int, 6> local{};
+      const int n = sphere.ring(v, local, pole_ring);
+      const int* ring = n < 0 ? pole_ring.data() : local.data();
+      const int size = n < 0 ? static_cast<int>(pole_ring.size()) : n;
+      int runs = 0;
+      for (int k = 0; k < size; ++k)
+        if (tri_alive[ring[k]] && !tri_alive[ring[(k + size - 1) % size]]) ++runs;
+      if (runs >= 2) {
+        alive[v] = 0;
+        changed = true;
+      }
+    }
+    if (!changed) break;
+    update_triangles();
+  }
+
+  MeshBuilder out;
+  std::vector<int> outer(static_cast<std::size_t>(nv), -1);
+  int apex = -1;
+  auto outer_of = [&](int v) {
+    if (outer[v] < 0) outer[v] = out.add(point_on(s, dirs[v], corner[v].far, corner[v].far_surface));
+    return outer[v];
+  };
+  for (int t = 0; t < nt; ++t) {
+    if (!tri_alive[t]) continue;
+    const auto c = sphere.corners(t);
+    out.faces.push_back({outer_of(c[0]), outer_of(c[1]), outer_of(c[2])});
+    for (int e = 0; e < 3; ++e) {
+      if (tri_alive[sphere.neighbour(t, e)]) continue;
+      const int p = c[static_cast<std::size_t>(e)];
+      const int q = c[static_cast<std::size_t>((e + 1) % 3)];
+      if (apex < 0) apex = out.add(s.g);
+      out.faces.push_back({outer_of(q), outer_of(p), apex});
+    }
+  }
+  return out.finish();
+}
+
+// VV of a POI outside the band (near > 0): the outer surface r = far and the inner surface
+// r = near over the region where far > near, linearly clipped in each triangle of the sphere
+// grid (marching triangles on the gap far - near). The two surfaces meet on the clipping
+// contour, where the chords of far and near cross: along the directions u + lambda (w - u),
+// 1/r of a chord is linear in lambda, so the crossing is exact and both surfaces stay in the
+// triangle's cone with the outer one outside (1/far <= 1/near at every corner).
+TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const std::vector<Vec3>& dirs,
+                              const std::vector<Interval>& corner) {
+  const int nv = sphere.num_vertices();
+  const double alive_gap = 1e-6 * std::max(1.0, s.d_max);
+  std::vector<char> alive(static_cast<std::size_t>(nv));
+  for (int v = 0; v < nv; ++v) alive[v] = corner[v].far - corner[v].near > alive_gap ? 1 : 0;
+
+  MeshBuilder out;
+  std::vector<int> outer(static_cast<std::size_t>(nv), -1), inner(static_cast<std::size_t>(nv), -1);
+  auto outer_of = [&](int v) {
+    if (outer[v] < 0) outer[v] = out.add(point_on(s, dirs[v], corner[v].far, corner[v].far_surface));
+    return outer[v];
+  };
+  auto inner_of = [&](int v) {
+    if (inner[v] < 0) inner[v] = out.add(point_on(s, dirs[v], corner[v].near, corner[v].near_surface));
+    return inner[v];
+  };
+  // 1/far and 1/near of a corner; a dead corner's far is capped at its near (gap <= 0).
+  auto inverse_radii = [&](int v, double& inv_far, double& inv_near) {
+    const double near = corner[v].near;
+    const double far = alive[v] ? corner[v].far : std::min(corner[v].far, near);
+    inv_near = std::isfinite(near) && near > 0.0 ? 1.0 / near : 0.0;
+    inv_far = far > 0.0 ? 1.0 / far : 1e12;
+  };
+  // Contour vertex on the edge from live corner u to dead corner w, shared by both triangles.
+  std::unordered_map<std::uint64_t, int> contour;
+  auto contour_of = [&](int u, int w) {
+    const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(w);
+    const auto found = contour.find(key);
+    if (found != contour.end()) return found->second;
+    double fu, nu, fw, nw;
+    inverse_radii(u, fu, nu);
+    inverse_radii(w, fw, nw);
+    const double a = fu - nu;  // < 0: u sees something
+    const double b = fw - nw;  // >= 0: w does not
+    double lambda = (b - a) > 0.0 ? a / (a - b) : 0.5;
+    lambda = std::clamp(lambda, 1e-3, 1.0 - 1e-3);  // keep contour vertices apart from the corners
+    const Vec3 d = (1.0 - lambda) * dirs[u] + lambda * dirs[w];
+    const double inv_r = (1.0 - lambda) * fu + lambda * fw;
+    const int id = out.add(s.g + d / inv_r);
+    contour.emplace(key, id);
+    return id;
+  };
+
+  const int nt = sphere.num_triangle_slots();
+  for (int t = 0; t < nt; ++t) {
+    if (!sphere.exists(t)) continue;
+    const auto c = sphere.corners(t);
+    const int live = alive[c[0]] + alive[c[1]] + alive[c[2]];
+    if (live == 0) continue;
+    if (live == 3) {
+      out.faces.push_back({outer_of(c[0]), outer_of(c[1]), outer_of(c[2])});
+      out.faces.push_back({inner_of(c[0]), inner_of(c[2]), inner_of(c[1])});
+      continue;
+    }
+    // Rotate so that the lone corner (live when live == 1, dead when live == 2) comes first.
+    int r = 0;
+    for (int k = 0; k < 3; ++k)
+      if ((live == 1) == static_cast<bool>(alive[c[static_cast<std::size_t>(k)]])) r = k;
+    const int a = c[static_cast<std::size_t>(r)];
+    const int b = c[static_cast<std::size_t>((r + 1) % 3)];
+    const int d = c[static_cast<std::size_t>((r + 2) % 3)];
+    if (live == 1) {
+      // Live corner a; contour points on a-b and a-d.
+      const int pab = contour_of(a, b);
+      const int pad = contour_of(a, d);
+      out.faces.push_back({outer_of(a), pab, pad});
+      out.faces.push_back({inner_of(a), pad, pab});
+    } else {
+      // Dead corner a; live b and d; contour points on b-a and d-a. Quad b, d, p_da, p_ba.
+      const int pba = contour_of(b, a);
+      const int pda = contour_of(d, a);
+      out.faces.push_back({outer_of(b), outer_of(d), pda});
+      out.faces.push_back({outer_of(b), pda, pba});
+      out.faces.push_back({inner_of(b), pda, inner_of(d)});
+      out.faces.push_back({inner_of(b), pba, pda});
+    }
+  }
+  return out.finish();
+}
+
+VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_max,
+                         const std::optional<std::pair<double, double>>& band, double resolution_deg) {
+  VisibilityVolume vv;
+  vv.poi = g;
+  vv.d_max = d_max;
+  vv.altitude_band = band;
+  vv.grid = DirectionGrid::from_resolution(resolution_deg);
+  const int ne = vv.grid.num_elevation;
+  const int na = vv.grid.num_azimuth;
+
+  Setup s;
+  s.g = g;
+  s.d_max = d_max;
+  s.ground = scene.ground_level();
+  if (band) {
+    s.has_band = true;
+    s.low = band->first;
+    s.high = band->second;
+    s.poi_in_band = g.z() >= s.low - kBandTolerance && g.z() <= s.high + kBandTolerance;
+  }
+
+  // Directions: every cell centre (the grid's rays), then every corner of the sphere grid.
+  const SphereGrid sphere{ne, na};
+  const std::size_t n_cells = vv.grid.size();
+  const auto n_corners = static_cast<std::size_t>(sphere.num_vertices());
+  std::vector<double> cos_az_c(static_cast<std::size_t>(na)), sin_az_c(static_cast<std::size_t>(na));
+  std::vector<double> cos_az_v(static_cast<std::size_t>(na)), sin_az_v(static_cast<std::size_t>(na));
+  const double d_az = kTwoPi / na;
+  for (int j = 0; j < na; ++j) {
+    cos_az_c[j] = std::cos((j + 0.5) * d_az);
+    sin_az_c[j] = std::sin((j + 0.5) * d_az);
+    cos_az_v[j] = std::cos(j * d_az);
+    sin_az_v[j] = std::sin(j * d_az);
+  }
+  std::vector<float> rays(3 * (n_cells + n_corners));
+  std::vector<double> sin_el_cell(static_cast<std::size_t>(ne));
+  for (int i = 0; i < ne; ++i) {
+    const double el = vv.grid.elevation(i);
+    const double ce = std::cos(el);
+    sin_el_cell[i] = std::sin(el);
+    for (int j = 0; j < na; ++j) {
+      const std::size_t k = 3 * (static_cast<std::size_t>(i) * na + j);
+      rays[k] = static_cast<float>(ce * cos_az_c[j]);
+      rays[k + 1] = static_cast<float>(ce * sin_az_c[j]);
+      rays[k + 2] = static_cast<float>(sin_el_cell[i]);
+    }
+  }
+  std::vector<Vec3> corner_dirs(n_corners);
+  corner_dirs[0] = Vec3(0, 0, -1);
+  corner_dirs[n_corners - 1] = Vec3(0, 0, 1);
+  for (int i = 1; i < ne; ++i) {
+    // (2i - ne) pi / (2 ne): exactly 0 on the horizon row.
+    const double el = (2 * i - ne) * kPi / (2.0 * ne);
+    const double ce = std::cos(el);
+    const double se = (2 * i == ne) ? 0.0 : std::sin(el);
+    for (int j = 0; j < na; ++j) corner_dirs[static_cast<std::size_t>(sphere.vertex(i, j))] = Vec3(ce * cos_az_v[j], ce * sin_az_v[j], se);
+  }
+  for (std::size_t v = 0; v < n_corners; ++v)
+    for (int c = 0; c < 3; ++c) rays[3 * (n_cells + v) + c] = static_cast<float>(corner_dirs[v][c]);
+
+  std::vector<double> hits;
+  Tracer{detail::EmbreeScene::of(scene)}(g, rays, d_max, hits);
+
+  vv.near.assign(n_cells, 0.0);
+  vv.far.assign(n_cells, 0.0);
+  for (std::size_t k = 0; k < n_cells; ++k) {
+    const Interval iv = visible_interval(s, sin_el_cell[k / na], hits[k]);
+    if (iv.far > iv.near) {
+      vv.near[k] = iv.near;
+      vv.far[k] = iv.far;
+    }
+  }
+  std::vector<Interval> corner(n_corners);
+  for (std::size_t v = 0; v < n_corners; ++v) corner[v] = visible_interval(s, corner_dirs[v].z(), hits[n_cells + v]);
+  vv.mesh = s.poi_in_band ? build_star_mesh(s, sphere, corner_dirs, corner)
+                          : build_shell_mesh(s, sphere, corner_dirs, corner);
+  vv.volume = mesh_volume(vv.mesh);
+  return vv;
+}
+
+}  // namespace
+
+VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, double d_max,
+                                   std::optional<std::pair<double, double>> altitude_band, double resolution_deg) {
+  validate(scene, g, d_max, altitude_band, "g");
+  (void)DirectionGrid::from_resolution(resolution_deg);
+  return compute(scene, g, d_max, altitude_band, resolution_deg);
+}
+
+VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double d_max,
+                                   std::optional<std::pair<double, double>> altitude_band, double resolution_deg) {
+  return visibility_volume(VisibilityScene(env), g, d_max, altitude_band, resolution_deg);
+}
+
+std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, const Points3& pois, double d_max,
+                                                 std::optional<std::pair<double, double>> altitude_band,
+                                                 double resolution_deg) {
+  (void)DirectionGrid::from_resolution(resolution_deg);
+  // Validate every point first, on the calling thread, so the error names the row.
+  for (Eigen::Index k = 0; k < pois.rows(); ++k)
+    validate(scene, pois.row(k).transpose(), d_max, altitude_band, "pois[" + std::to_string(k) + "]");
+  std::vector<VisibilityVolume> result(static_cast<std::size_t>(pois.rows()));
+  tbb::parallel_for(Eigen::Index{0}, pois.rows(), [&](Eigen::Index k) {
+    result[static_cast<std::size_t>(k)] = compute(scene, pois.row(k).transpose(), d_max, altitude_band, resolution_deg);
+  });
+  return result;
+}
+
+}  // namespace vistrack
