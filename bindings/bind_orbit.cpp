@@ -45,6 +45,15 @@ void bind_orbit(py::module_& m) {
         "0 when none contains it.");
   m.def("constant_radius_plan", &constant_radius_plan, py::arg("poi"), py::arg("radius"), py::arg("uav"),
         "Baseline plan: orbits of one radius along the whole POI path.");
+  m.def(
+      "plane_visibility_polygon",
+      [](const VisibilityVolume& vv, double altitude) {
+        py::gil_scoped_release release;
+        return plane_visibility_polygon(vv, altitude);
+      },
+      py::arg("vv"), py::arg("altitude"),
+      "VP of a VV at world altitude z by walking the mesh edges that cross the plane (what the orbit "
+      "planner uses); the same polygons as vv.slice(z), which uses CGAL's slicer.");
   m.def("orbit_curvature", &orbit_curvature, py::arg("radius"), py::arg("radius_rate"), py::arg("relative_angle"),
         py::arg("uav_speed"), py::arg("poi_speed"), py::arg("counter_clockwise") = true,
         "Curvature (31) of the path that stays on the orbit at a = theta - gamma, with theta' from (13); "
@@ -95,6 +104,63 @@ void bind_orbit(py::module_& m) {
            py::arg("k"), "A copy of the VV of sample k (VVs are not stored in JSON).")
       .def("to_json", [](const VisibilityOrbitPlan& p) { return to_json(p); }, "The plan as JSON (without VVs).")
       .def_static("from_json", &visibility_orbit_plan_from_json, py::arg("text"), "A plan from its JSON text.");
+  // Wraps a Python progress callable: called with the GIL taken, from the planning thread.
+  auto wrap_progress = [](const py::object& callback) -> ProgressFunction {
+    if (callback.is_none()) return {};
+    return [callback](std::size_t done, std::size_t total) {
+      py::gil_scoped_acquire acquire;
+      callback(done, total);
+    };
+  };
+  py::class_<OrbitPlanner>(m, "OrbitPlanner",
+                           "Section IV on one environment: an Embree scene built once, a VV cache shared by "
+                           "every call (spacings and plans reuse VVs), the grid XOR metric (56) in the POI "
+                           "frame, VPs at ground level + h_UAV.")
+      .def(py::init<const Environment&, const Sensor&, double>(), py::arg("env"), py::arg("sensor"),
+           py::arg("resolution_deg") = 1.0, py::call_guard<py::gil_scoped_release>())
+      .def(
+          "adaptive",
+          [wrap_progress](OrbitPlanner& p, const PoiPath& poi, const Planning& planning, const py::object& progress) {
+            ProgressFunction f = wrap_progress(progress);
+            py::gil_scoped_release release;
+            return p.adaptive(poi, planning, f);
+          },
+          py::arg("poi"), py::arg("planning"), py::arg("progress") = py::none(),
+          "Adaptive discretization (IV.B): initial spacing, halving while the metric exceeds the cutoff. "
+          "progress(done, total) is called as VVs are computed.")
+      .def(
+          "fixed",
+          [wrap_progress](OrbitPlanner& p, const PoiPath& poi, double spacing, const py::object& progress) {
+            ProgressFunction f = wrap_progress(progress);
+            py::gil_scoped_release release;
+            return p.fixed(poi, spacing, f);
+          },
+          py::arg("poi"), py::arg("spacing"), py::arg("progress") = py::none(),
+          "VVs every `spacing` m from each edge start plus every node, and the metric between neighbours.")
+      .def(
+          "plan",
+          [wrap_progress](OrbitPlanner& p, const PoiPath& poi, const Uav& uav, const Planning& planning,
+                          const py::object& progress) {
+            ProgressFunction f = wrap_progress(progress);
+            py::gil_scoped_release release;
+            return p.plan(poi, uav, planning, f);
+          },
+          py::arg("poi"), py::arg("uav"), py::arg("planning"), py::arg("progress") = py::none(),
+          "Adaptive VVs, VPs at h_UAV, MaxRadius and Algorithm 1: a VisibilityOrbitPlan.")
+      .def_property_readonly("cached_volumes", &OrbitPlanner::cached_volumes, "VVs held in the cache.");
+  m.def(
+      "plan_orbits",
+      [wrap_progress](const Environment& env, const PoiPath& poi, const Uav& uav, const Sensor& sensor,
+                      const Planning& planning, const py::object& progress) {
+        ProgressFunction f = wrap_progress(progress);
+        py::gil_scoped_release release;
+        return plan_orbits(env, poi, uav, sensor, planning, f);
+      },
+      py::arg("env"), py::arg("poi"), py::arg("uav"), py::arg("sensor"), py::arg("planning"),
+      py::arg("progress") = py::none(),
+      "Section IV end to end: adaptive VVs along the POI path (IV.B), VPs at h_UAV, MaxRadius, then "
+      "Algorithm 1 (IV.C). Returns a VisibilityOrbitPlan (an OrbitPlan); infeasible plans say which "
+      "sample fails and why. VistrackError when the UAV is not faster than the POI.");
 }
 
 }  // namespace vistrack::bindings

@@ -10,6 +10,8 @@ from importlib.metadata import PackageNotFoundError, version as _version
 
 from . import _core
 from ._core import (
+    OrbitPlanner,
+    plan_orbits,
     CircularOrbits,
     Discretization,
     VisibilityOrbitPlan,
@@ -42,6 +44,8 @@ except PackageNotFoundError:  # running from a build tree
     __version__ = _core.__version__
 
 __all__ = [
+    "OrbitPlanner",
+    "plan_orbits",
     "CircularOrbits",
     "Discretization",
     "VisibilityOrbitPlan",

@@ -156,6 +156,14 @@ VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor
 std::string to_json(const VisibilityOrbitPlan& plan);
 VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text);
 
+// Rings where the plane z = altitude cuts a closed 2-manifold triangle mesh, by walking the
+// crossing edges (O(faces), no spatial tree; vertices on the plane count as below). Error when
+// the mesh is not closed or not 2-manifold along the cut.
+std::vector<Ring> plane_slice_rings(const TriangleMesh& mesh, double altitude);
+// The VP of a VV at world altitude z from plane_slice_rings: the same polygons as
+// visibility_polygon (CGAL slicer) at a fraction of the cost; the planner uses it.
+std::vector<Polygon> plane_visibility_polygon(const VisibilityVolume& vv, double altitude);
+
 // Section IV on a real environment: one Embree scene built once, VVs through a shared cache (so
 // several spacings or plans reuse them), the grid XOR metric (56) in the POI frame, and VPs
 // sliced at world z = ground level + h_UAV.
