@@ -108,10 +108,19 @@ def figure_metric(results: dict[str, "_core.Discretization"], cutoff: float, pat
 
 
 def _footprints(env) -> list:
-    try:
-        return list(env.footprints())
-    except Exception:  # an environment made from a mesh has no footprints
+    footprints = getattr(env, "footprints", None)  # a property of Environment ([] for meshes)
+    if footprints is None:
         return []
+    return list(footprints() if callable(footprints) else footprints)
+
+
+def footprint_environment(map_path: str | Path, footprints: str | Path | None = None):
+    """Where to draw building footprints from: the given GeoJSON, else buildings.geojson beside a
+    mesh map (Charlotte ships both), else None."""
+    candidate = Path(footprints) if footprints else Path(map_path).with_name("buildings.geojson")
+    if candidate.suffix.lower() in (".geojson", ".json") and candidate.exists():
+        return _core.Environment.from_geojson(str(candidate))
+    return None
 
 
 def _pick(n: int, count: int) -> list[int]:
@@ -180,7 +189,7 @@ def figure_radius(plan: "_core.VisibilityOrbitPlan", path: str | Path) -> None:
     ax.grid(alpha=0.3)
     if len(t) > 1:
         rates = np.asarray(plan.radius_rates)
-        bx.step(t[:-1], rates, where="post", color="tab:blue", label="dR/dt")
+        bx.step(np.r_[t[:-1], t[-1]], np.r_[rates, rates[-1]], where="post", color="tab:blue", label="dR/dt")
         bx.axhline(rate_limit, color="tab:red", ls="--", label=f"±(v − v_g) = ±{rate_limit:g} m/s (Lemma 5)")
         bx.axhline(-rate_limit, color="tab:red", ls="--")
         bx.legend(fontsize=8)

@@ -44,6 +44,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--resolution", type=float, default=d.resolution_deg, help="VV ray grid step, degrees")
     p.add_argument("--min-spacing", type=float, default=d.min_spacing, help="smallest VV spacing, m")
     p.add_argument("--max-depth", type=int, default=d.max_depth, help="most halvings of one interval")
+    p.add_argument("--footprints", default=None,
+                   help="GeoJSON footprints drawn under the orbits (default: buildings.geojson beside --map)")
     p.add_argument("--figure-metric", action="store_true", help="also draw Figure 4 (metric along the path)")
     p.add_argument("--spacings", type=_spacings, default=[50.0, 25.0, 10.0, 1.0],
                    help="fixed spacings for --figure-metric (default 50,25,10,1)")
@@ -71,7 +73,9 @@ def run(args: argparse.Namespace) -> int:
     pl.write_plan(plan, out / "plan.json")
     summary = pl.plan_summary(plan)
     summary["seconds"] = seconds
-    pl.figure_orbits(plan, env, out / "orbits.png")
+    background = env if str(args.map).lower().endswith((".geojson", ".json")) else \
+        pl.footprint_environment(args.map, args.footprints)
+    pl.figure_orbits(plan, background if background is not None else env, out / "orbits.png")
     pl.figure_radius(plan, out / "radius.png")
     if args.figure_metric:
         results = pl.metric_along_path(planner, poi, planning, args.spacings, not args.quiet)
