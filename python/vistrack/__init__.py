@@ -10,6 +10,7 @@ from importlib.metadata import PackageNotFoundError, version as _version
 
 from . import _core
 from ._core import (
+    plane_visibility_polygon,
     OrbitPlanner,
     plan_orbits,
     CircularOrbits,
@@ -44,6 +45,7 @@ except PackageNotFoundError:  # running from a build tree
     __version__ = _core.__version__
 
 __all__ = [
+    "plane_visibility_polygon",
     "OrbitPlanner",
     "plan_orbits",
     "CircularOrbits",
