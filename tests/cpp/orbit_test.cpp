@@ -274,3 +274,30 @@ TEST(PlanOrbits, SyntheticWorldEndToEndAndJsonRoundTrip) {
   // A UAV not faster than the POI is an error.
   EXPECT_THROW(vt::plan_orbits(poi, uav(5.0, 10.0), sensor, planning, cache, grid_metric, slice), vt::Error);
 }
+
+TEST(PlaneSlice, BoxAndOctahedronGiveTheirAnalyticSections) {
+  vt::TriangleMesh box;
+  box.vertices.resize(8, 3);
+  for (int i = 0; i < 8; ++i) box.vertices.row(i) << ((i & 1) ? 2.0 : 0.0), ((i & 2) ? 3.0 : 0.0), ((i & 4) ? 2.0 : 0.0);
+  box.faces.resize(12, 3);
+  box.faces << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7,
+      5;
+  auto rings = vt::plane_slice_rings(box, 1.0);
+  ASSERT_EQ(rings.size(), 1u);
+  EXPECT_NEAR(std::abs(vt::signed_area(rings[0])), 6.0, 1e-12);
+  EXPECT_TRUE(vt::plane_slice_rings(box, 2.5).empty());
+  // On a vertex height the vertices count as below: the top face is not cut.
+  EXPECT_TRUE(vt::plane_slice_rings(box, 2.0).empty());
+  vt::TriangleMesh oct;
+  oct.vertices.resize(6, 3);
+  oct.vertices << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1;
+  oct.faces.resize(8, 3);
+  oct.faces << 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5;
+  rings = vt::plane_slice_rings(oct, 0.25);  // |x| + |y| <= 0.75: area 2 * 0.75^2
+  ASSERT_EQ(rings.size(), 1u);
+  EXPECT_NEAR(std::abs(vt::signed_area(rings[0])), 2 * 0.75 * 0.75, 1e-12);
+  auto open = box;
+  open.faces.conservativeResize(11, 3);  // drops a side triangle cut by z = 1
+  EXPECT_THROW(vt::plane_slice_rings(open, 1.0), vt::Error);
+  EXPECT_THROW(vt::plane_slice_rings(box, std::nan("")), vt::Error);
+}
