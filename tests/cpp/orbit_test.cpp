@@ -10,6 +10,7 @@
 #include "vistrack/error.hpp"
 #include "vistrack/orbit.hpp"
 #include "vistrack/volume.hpp"
+#include "test_data.hpp"
 
 namespace vt = vistrack;
 
@@ -300,4 +301,40 @@ TEST(PlaneSlice, BoxAndOctahedronGiveTheirAnalyticSections) {
   open.faces.conservativeResize(11, 3);  // drops a side triangle cut by z = 1
   EXPECT_THROW(vt::plane_slice_rings(open, 1.0), vt::Error);
   EXPECT_THROW(vt::plane_slice_rings(box, std::nan("")), vt::Error);
+}
+
+TEST(PlanOrbits, PaperSlowExampleOnCharlotte) {
+  VISTRACK_REQUIRE_DATA(city, "charlotte/uptown_charlotte.obj");
+  VISTRACK_REQUIRE_DATA(path, "charlotte/paths/paper_slow.csv");
+  const auto env = vt::Environment::from_mesh(city, "y");
+  const auto poi = vt::PoiPath::from_csv(path, 5.0);
+  vt::Uav u = uav(20.0, 50.0);
+  u.altitude = 300.0;
+  vt::Sensor sensor;
+  sensor.d_max = 400.0;
+  vt::Planning planning;  // spacing 20 m, cutoff 20e6 m^3, 1 degree
+  std::size_t last_done = 0, last_total = 0;
+  const auto plan = vt::plan_orbits(env, poi, u, sensor, planning, [&](std::size_t done, std::size_t total) {
+    EXPECT_LE(done, total);
+    last_done = done;
+    last_total = total;
+  });
+  EXPECT_TRUE(plan.feasible) << plan.infeasibility;
+  EXPECT_EQ(last_done, last_total);
+  EXPECT_EQ(plan.volumes_computed, plan.times.size());
+  EXPECT_NEAR(plan.times.back(), poi.duration(), 1e-9);
+  for (std::size_t k = 0; k < plan.times.size(); ++k) {
+    EXPECT_LE(plan.radii[k], plan.max_radii[k] + 1e-9);
+    EXPECT_GE(plan.radii[k], plan.min_feasible_radius);
+    // MaxRadius is at most the sensor's reach at h_UAV: sqrt(d_max^2 - (h - g_z)^2).
+    EXPECT_LE(plan.max_radii[k], std::sqrt(400.0 * 400.0 - 299.5 * 299.5) + 1e-6);
+    EXPECT_EQ(plan.max_radii[k], vt::max_inscribed_radius(plan.polygons[k], poi.position(plan.times[k]).head<2>()));
+  }
+  for (std::size_t k = 0; k + 1 < plan.times.size(); ++k) {
+    EXPECT_LE(std::abs(plan.radius_rates[k]), 15.0 + 1e-9);
+    EXPECT_NEAR(plan.metric[k], vt::grid_xor_volume(*plan.volumes[k], *plan.volumes[k + 1]), 1e-6 * plan.metric[k]);
+  }
+  // The paper reports 158 m -> 127 m (see README for why ours differs by ~4 %).
+  EXPECT_NEAR(plan.radii.front(), 158.0, 0.1 * 158.0);
+  EXPECT_NEAR(plan.radii.back(), 127.0, 0.1 * 127.0);
 }
