@@ -11,7 +11,9 @@ from importlib.metadata import PackageNotFoundError, version as _version
 from . import _core
 from ._core import (
     Control,
+    DirectionGrid,
     Environment,
+    MeshCheck,
     OrbitPlan,
     Planning,
     PoiPath,
@@ -20,10 +22,16 @@ from ._core import (
     Sensor,
     SimulationOptions,
     Uav,
+    VisibilityScene,
+    VisibilityVolume,
     VistrackError,
+    check_closed_mesh,
     constant_radius_plan,
     max_inscribed_radius,
+    mesh_volume,
+    slice_mesh,
 )
+from .visibility import visibility_scene, visibility_volume, visibility_volumes
 
 try:
     __version__ = _version("vistrack")
@@ -32,7 +40,9 @@ except PackageNotFoundError:  # running from a build tree
 
 __all__ = [
     "Control",
+    "DirectionGrid",
     "Environment",
+    "MeshCheck",
     "OrbitPlan",
     "Planning",
     "PoiPath",
@@ -41,8 +51,16 @@ __all__ = [
     "Sensor",
     "SimulationOptions",
     "Uav",
+    "VisibilityScene",
+    "VisibilityVolume",
     "VistrackError",
+    "check_closed_mesh",
     "constant_radius_plan",
     "max_inscribed_radius",
+    "mesh_volume",
+    "slice_mesh",
+    "visibility_scene",
+    "visibility_volume",
+    "visibility_volumes",
     "__version__",
 ]
