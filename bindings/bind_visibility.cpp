@@ -105,6 +105,8 @@ void bind_visibility(py::module_& m) {
             return to_bool_array(visible);
           },
           py::arg("a"), py::arg("b"), "Bool array: segment a[k]-b[k] is unobstructed (occlusion rays).")
+      .def("surface_height", &VisibilityScene::surface_height, py::arg("xy"),
+           "Height of the topmost surface (obstacle or ground) under the vertical through xy (2,).")
       .def("inside_obstacle", &VisibilityScene::inside_obstacle, py::arg("point"),
            "Whether a point lies inside an obstacle.");
 

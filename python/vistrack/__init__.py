@@ -25,7 +25,9 @@ from ._core import (
     shares_direction_grid,
     xor_volume,
     Control,
+    DirectionGrid,
     Environment,
+    MeshCheck,
     OrbitPlan,
     Planning,
     PoiPath,
@@ -34,10 +36,16 @@ from ._core import (
     Sensor,
     SimulationOptions,
     Uav,
+    VisibilityScene,
+    VisibilityVolume,
     VistrackError,
+    check_closed_mesh,
     constant_radius_plan,
     max_inscribed_radius,
+    mesh_volume,
+    slice_mesh,
 )
+from .visibility import visibility_scene, visibility_volume, visibility_volumes
 
 try:
     __version__ = _version("vistrack")
@@ -60,7 +68,9 @@ __all__ = [
     "shares_direction_grid",
     "xor_volume",
     "Control",
+    "DirectionGrid",
     "Environment",
+    "MeshCheck",
     "OrbitPlan",
     "Planning",
     "PoiPath",
@@ -69,8 +79,16 @@ __all__ = [
     "Sensor",
     "SimulationOptions",
     "Uav",
+    "VisibilityScene",
+    "VisibilityVolume",
     "VistrackError",
+    "check_closed_mesh",
     "constant_radius_plan",
     "max_inscribed_radius",
+    "mesh_volume",
+    "slice_mesh",
+    "visibility_scene",
+    "visibility_volume",
+    "visibility_volumes",
     "__version__",
 ]

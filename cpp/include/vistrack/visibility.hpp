@@ -76,6 +76,10 @@ class VisibilityScene {
   // the ray crossings (majority over three directions) for a mesh.
   bool inside_obstacle(const Vec3& p) const;
 
+  // Height of the topmost surface (obstacle or ground) under the vertical through xy: where a
+  // POI on uneven terrain stands.
+  double surface_height(const Vec2& xy) const;
+
   double ground_level() const;
   Bounds3 bounds() const;                 // of the obstacle triangles
   std::size_t num_triangles() const;      // obstacle triangles, ground not counted

@@ -28,6 +28,10 @@ struct MeshCheck {
 // Checks a mesh with CGAL (Surface_mesh, exact predicates). An empty mesh is reported invalid.
 MeshCheck check_closed_mesh(const TriangleMesh& mesh);
 
+// For each row of `points`: inside the closed mesh (CGAL Side_of_triangle_mesh; boundary counts
+// as inside). Throws Error when the mesh is not a closed 2-manifold.
+std::vector<bool> points_inside(const TriangleMesh& mesh, const Points3& points);
+
 // Polylines where the plane z = altitude cuts the mesh (CGAL Polygon_mesh_slicer), chained into
 // closed rings (open pieces joined end to end, repeated points dropped). When `altitude` lies on
 // a vertex height it is nudged by a few micrometres first.

@@ -266,6 +266,20 @@ std::vector<bool> VisibilityScene::line_of_sight(const Points3& a, const Points3
   return {visible.begin(), visible.end()};
 }
 
+double VisibilityScene::surface_height(const Vec2& xy) const {
+  require_finite(xy.x(), "xy[0]");
+  require_finite(xy.y(), "xy[1]");
+  const detail::EmbreeScene& s = *impl_;
+  const double top = std::max(s.bounds.max.z(), s.ground_level) + 1.0;
+  const float down[3] = {0.0f, 0.0f, -1.0f};
+  float t = 0.0f;
+  bool ground = false;
+  detail::FlushDenormals flush;
+  s.trace(Vec3(xy.x(), xy.y(), top), down, 1, 0.0f, std::numeric_limits<float>::infinity(), &t, &ground);
+  if (!std::isfinite(t)) return s.ground_level;
+  return ground ? s.ground_level : top - static_cast<double>(t);
+}
+
 bool VisibilityScene::inside_obstacle(const Vec3& p) const {
   const detail::EmbreeScene& s = *impl_;
   if (!s.buildings.empty()) {

@@ -119,9 +119,10 @@ struct SphereGrid {
   int vertex(int i, int j) const {
     if (i <= 0) return 0;
     if (i >= ne) return num_vertices() - 1;
-    return 1 + (i - 1) * na + ((j % na) + na) % na;
+    return 1 + (i - 1) * na + wrap(j);
   }
-  int wrap(int j) const { return ((j % na) + na) % na; }
+  // Column index modulo na for j in [-1, na] (no division in the hot loops).
+  int wrap(int j) const { return j < 0 ? j + na : (j >= na ? j - na : j); }
   int ta(int i, int j) const { return 2 * (i * na + wrap(j)); }
   int tb(int i, int j) const { return 2 * (i * na + wrap(j)) + 1; }
   int num_triangle_slots() const { return 2 * ne * na; }
@@ -167,52 +168,94 @@ struct SphereGrid {
   }
 };
 
-struct Tracer {
-  const detail::EmbreeScene& scene;
-  // Traces n unit directions from g in parallel chunks; ground hits are dropped (the ground is
-  // applied exactly, and a ray grazing the ground plane from a POI on it must not stop).
-  void operator()(const Vec3& g, const std::vector<float>& dirs, double t_max, std::vector<double>& hits) const {
-    const std::size_t n = dirs.size() / 3;
-    std::vector<float> t(n);
-    std::vector<char> ground_flag(n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
-      detail::FlushDenormals flush;
-      std::array<bool, 2048> ground;
-      for (std::size_t start = r.begin(); start < r.end(); start += ground.size()) {
-        const std::size_t count = std::min(ground.size(), r.end() - start);
-        scene.trace(g, dirs.data() + 3 * start, count, 0.0f, static_cast<float>(t_max), t.data() + start, ground.data());
-        for (std::size_t k = 0; k < count; ++k) ground_flag[start + k] = ground[k] ? 1 : 0;
-      }
-    });
-    hits.resize(n);
-    for (std::size_t k = 0; k < n; ++k) hits[k] = ground_flag[k] ? kInf : static_cast<double>(t[k]);
+// Unit directions of the grid's cell centres and of the sphere grid's corners, from trig tables.
+struct Directions {
+  const DirectionGrid& grid;
+  const SphereGrid& sphere;
+  std::vector<double> cos_el_cell, sin_el_cell, cos_az_cell, sin_az_cell;
+  std::vector<double> cos_el_corner, sin_el_corner, cos_az_corner, sin_az_corner;
+
+  Directions(const DirectionGrid& g, const SphereGrid& s) : grid(g), sphere(s) {
+    const int ne = g.num_elevation;
+    const int na = g.num_azimuth;
+    const double d_az = kTwoPi / na;
+    for (int i = 0; i < ne; ++i) {
+      cos_el_cell.push_back(std::cos(g.elevation(i)));
+      sin_el_cell.push_back(std::sin(g.elevation(i)));
+    }
+    for (int i = 0; i <= ne; ++i) {
+      // (2i - ne) pi / (2 ne): exactly 0 on the horizon row, exactly -+pi/2 at the poles.
+      const double el = (2 * i - ne) * kPi / (2.0 * ne);
+      cos_el_corner.push_back(i == 0 || i == ne ? 0.0 : std::cos(el));
+      sin_el_corner.push_back(i == 0 ? -1.0 : i == ne ? 1.0 : (2 * i == ne ? 0.0 : std::sin(el)));
+    }
+    for (int j = 0; j < na; ++j) {
+      cos_az_cell.push_back(std::cos((j + 0.5) * d_az));
+      sin_az_cell.push_back(std::sin((j + 0.5) * d_az));
+      cos_az_corner.push_back(std::cos(j * d_az));
+      sin_az_corner.push_back(std::sin(j * d_az));
+    }
+  }
+  std::size_t num_cells() const { return grid.size(); }
+  // Ray k: the cell centres first (k = i * na + j), then the corners (k - num_cells).
+  Vec3 ray(std::size_t k) const {
+    const auto na = static_cast<std::size_t>(grid.num_azimuth);
+    if (k < num_cells()) {
+      const std::size_t i = k / na, j = k % na;
+      return {cos_el_cell[i] * cos_az_cell[j], cos_el_cell[i] * sin_az_cell[j], sin_el_cell[i]};
+    }
+    return corner(static_cast<int>(k - num_cells()));
+  }
+  Vec3 corner(int v) const {
+    if (v == 0) return {0.0, 0.0, -1.0};
+    if (v == sphere.num_vertices() - 1) return {0.0, 0.0, 1.0};
+    const int i = 1 + (v - 1) / sphere.na;
+    const int j = (v - 1) % sphere.na;
+    return {cos_el_corner[i] * cos_az_corner[j], cos_el_corner[i] * sin_az_corner[j], sin_el_corner[i]};
   }
 };
 
-struct MeshBuilder {
-  std::vector<Vec3> points;
-  std::vector<std::array<int, 3>> faces;
-
+// Writes vertices and faces straight into the mesh's arrays (sized for the worst case, trimmed at
+// the end) and sums the volume on the way: signed tetrahedra against g (divergence theorem).
+class MeshBuilder {
+ public:
+  MeshBuilder(const Vec3& g, Eigen::Index max_points, Eigen::Index max_faces) : g_(g) {
+    mesh_.vertices.resize(max_points, 3);
+    mesh_.faces.resize(max_faces, 3);
+  }
   int add(const Vec3& p) {
-    points.push_back(p);
-    return static_cast<int>(points.size()) - 1;
+    mesh_.vertices.row(num_points_) = p.transpose();
+    return static_cast<int>(num_points_++);
   }
-  TriangleMesh finish() const {
-    TriangleMesh mesh;
-    mesh.vertices.resize(static_cast<Eigen::Index>(points.size()), 3);
-    for (std::size_t k = 0; k < points.size(); ++k) mesh.vertices.row(static_cast<Eigen::Index>(k)) = points[k].transpose();
-    mesh.faces.resize(static_cast<Eigen::Index>(faces.size()), 3);
-    for (std::size_t k = 0; k < faces.size(); ++k)
-      for (int c = 0; c < 3; ++c) mesh.faces(static_cast<Eigen::Index>(k), c) = faces[k][static_cast<std::size_t>(c)];
-    return mesh;
+  void face(int a, int b, int c) {
+    mesh_.faces.row(num_faces_) << a, b, c;
+    ++num_faces_;
+    const Vec3 pa = mesh_.vertices.row(a).transpose() - g_;
+    const Vec3 pb = mesh_.vertices.row(b).transpose() - g_;
+    const Vec3 pc = mesh_.vertices.row(c).transpose() - g_;
+    six_volume_ += pa.x() * (pb.y() * pc.z() - pb.z() * pc.y()) - pa.y() * (pb.x() * pc.z() - pb.z() * pc.x()) +
+                   pa.z() * (pb.x() * pc.y() - pb.y() * pc.x());
   }
+  TriangleMesh finish(double& volume) {
+    mesh_.vertices.conservativeResize(num_points_, 3);
+    mesh_.faces.conservativeResize(num_faces_, 3);
+    volume = six_volume_ / 6.0;
+    return std::move(mesh_);
+  }
+
+ private:
+  Vec3 g_;
+  TriangleMesh mesh_;
+  Eigen::Index num_points_ = 0;
+  Eigen::Index num_faces_ = 0;
+  double six_volume_ = 0.0;
 };
 
 // Star-shaped VV (near = 0 on every ray): the radial surface r = far over the triangles whose
 // three corners see something, closed by a fan to g along the border of that region (the border
 // only appears where far = 0, i.e. the ground or a band face through g: the fan is then exact).
-TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const std::vector<Vec3>& dirs,
-                             const std::vector<Interval>& corner) {
+TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
+                             const std::vector<Interval>& corner, double& volume) {
   const int nv = sphere.num_vertices();
   const double alive_gap = 1e-6 * std::max(1.0, s.d_max);
   std::vector<char> alive(static_cast<std::size_t>(nv));
@@ -221,23 +264,34 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const std
   const int nt = sphere.num_triangle_slots();
   std::vector<char> tri_alive(static_cast<std::size_t>(nt));
   auto update_triangles = [&]() {
-    for (int t = 0; t < nt; ++t) {
-      if (!sphere.exists(t)) {
-        tri_alive[t] = 0;
-        continue;
+    const int na = sphere.na;
+    for (int i = 0; i < sphere.ne; ++i) {
+      for (int j = 0; j < na; ++j) {
+        const int jn = j + 1 == na ? 0 : j + 1;
+        const int v00 = sphere.vertex(i, j), v01 = sphere.vertex(i, jn);
+        const int v10 = sphere.vertex(i + 1, j), v11 = sphere.vertex(i + 1, jn);
+        const int t = 2 * (i * na + j);
+        tri_alive[t] = i >= 1 && alive[v00] && alive[v01] && alive[v11];
+        tri_alive[t + 1] = i <= sphere.ne - 2 && alive[v00] && alive[v11] && alive[v10];
       }
-      const auto c = sphere.corners(t);
-      tri_alive[t] = alive[c[0]] && alive[c[1]] && alive[c[2]];
     }
   };
   update_triangles();
   // A corner where the visible region touches itself (two separate fans of live triangles) would
   // be a non-manifold vertex: drop it, until there is none.
+  // Only live corners of dead triangles can be pinched.
   std::vector<int> pole_ring;
+  std::vector<char> candidate(static_cast<std::size_t>(nv), 0);
   for (int round = 0; round < 64; ++round) {
+    std::fill(candidate.begin(), candidate.end(), 0);
+    for (int t = 0; t < nt; ++t) {
+      if (tri_alive[t] || !sphere.exists(t)) continue;
+      for (int v : sphere.corners(t))
+        if (alive[v]) candidate[v] = 1;
+    }
     bool changed = false;
     for (int v = 0; v < nv; ++v) {
-      if (!alive[v]) continue;
+      if (!candidate[v]) continue;
       std::array<int, 6> local{};
       const int n = sphere.ring(v, local, pole_ring);
       const int* ring = n < 0 ? pole_ring.data() : local.data();
@@ -254,26 +308,33 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const std
     update_triangles();
   }
 
-  MeshBuilder out;
+  MeshBuilder out(s.g, nv + 1, 5 * static_cast<Eigen::Index>(nv) + 8);
   std::vector<int> outer(static_cast<std::size_t>(nv), -1);
   int apex = -1;
   auto outer_of = [&](int v) {
-    if (outer[v] < 0) outer[v] = out.add(point_on(s, dirs[v], corner[v].far, corner[v].far_surface));
+    if (outer[v] < 0) outer[v] = out.add(point_on(s, dirs.corner(v), corner[v].far, corner[v].far_surface));
     return outer[v];
   };
+  // Triangles on the border of the live region (the only ones that need their neighbours).
+  std::vector<char> border(static_cast<std::size_t>(nt), 0);
+  for (int t = 0; t < nt; ++t) {
+    if (tri_alive[t] || !sphere.exists(t)) continue;
+    for (int e = 0; e < 3; ++e) border[sphere.neighbour(t, e)] = 1;
+  }
   for (int t = 0; t < nt; ++t) {
     if (!tri_alive[t]) continue;
     const auto c = sphere.corners(t);
-    out.faces.push_back({outer_of(c[0]), outer_of(c[1]), outer_of(c[2])});
+    out.face(outer_of(c[0]), outer_of(c[1]), outer_of(c[2]));
+    if (!border[t]) continue;
     for (int e = 0; e < 3; ++e) {
       if (tri_alive[sphere.neighbour(t, e)]) continue;
       const int p = c[static_cast<std::size_t>(e)];
       const int q = c[static_cast<std::size_t>((e + 1) % 3)];
       if (apex < 0) apex = out.add(s.g);
-      out.faces.push_back({outer_of(q), outer_of(p), apex});
+      out.face(outer_of(q), outer_of(p), apex);
     }
   }
-  return out.finish();
+  return out.finish(volume);
 }
 
 // VV of a POI outside the band (near > 0): the outer surface r = far and the inner surface
@@ -282,21 +343,21 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const std
 // contour, where the chords of far and near cross: along the directions u + lambda (w - u),
 // 1/r of a chord is linear in lambda, so the crossing is exact and both surfaces stay in the
 // triangle's cone with the outer one outside (1/far <= 1/near at every corner).
-TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const std::vector<Vec3>& dirs,
-                              const std::vector<Interval>& corner) {
+TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
+                              const std::vector<Interval>& corner, double& volume) {
   const int nv = sphere.num_vertices();
   const double alive_gap = 1e-6 * std::max(1.0, s.d_max);
   std::vector<char> alive(static_cast<std::size_t>(nv));
   for (int v = 0; v < nv; ++v) alive[v] = corner[v].far - corner[v].near > alive_gap ? 1 : 0;
 
-  MeshBuilder out;
+  MeshBuilder out(s.g, 5 * static_cast<Eigen::Index>(nv), 8 * static_cast<Eigen::Index>(nv));
   std::vector<int> outer(static_cast<std::size_t>(nv), -1), inner(static_cast<std::size_t>(nv), -1);
   auto outer_of = [&](int v) {
-    if (outer[v] < 0) outer[v] = out.add(point_on(s, dirs[v], corner[v].far, corner[v].far_surface));
+    if (outer[v] < 0) outer[v] = out.add(point_on(s, dirs.corner(v), corner[v].far, corner[v].far_surface));
     return outer[v];
   };
   auto inner_of = [&](int v) {
-    if (inner[v] < 0) inner[v] = out.add(point_on(s, dirs[v], corner[v].near, corner[v].near_surface));
+    if (inner[v] < 0) inner[v] = out.add(point_on(s, dirs.corner(v), corner[v].near, corner[v].near_surface));
     return inner[v];
   };
   // 1/far and 1/near of a corner; a dead corner's far is capped at its near (gap <= 0).
@@ -319,7 +380,7 @@ TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const st
     const double b = fw - nw;  // >= 0: w does not
     double lambda = (b - a) > 0.0 ? a / (a - b) : 0.5;
     lambda = std::clamp(lambda, 1e-3, 1.0 - 1e-3);  // keep contour vertices apart from the corners
-    const Vec3 d = (1.0 - lambda) * dirs[u] + lambda * dirs[w];
+    const Vec3 d = (1.0 - lambda) * dirs.corner(u) + lambda * dirs.corner(w);
     const double inv_r = (1.0 - lambda) * fu + lambda * fw;
     const int id = out.add(s.g + d / inv_r);
     contour.emplace(key, id);
@@ -333,8 +394,8 @@ TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const st
     const int live = alive[c[0]] + alive[c[1]] + alive[c[2]];
     if (live == 0) continue;
     if (live == 3) {
-      out.faces.push_back({outer_of(c[0]), outer_of(c[1]), outer_of(c[2])});
-      out.faces.push_back({inner_of(c[0]), inner_of(c[2]), inner_of(c[1])});
+      out.face(outer_of(c[0]), outer_of(c[1]), outer_of(c[2]));
+      out.face(inner_of(c[0]), inner_of(c[2]), inner_of(c[1]));
       continue;
     }
     // Rotate so that the lone corner (live when live == 1, dead when live == 2) comes first.
@@ -348,19 +409,19 @@ TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const st
       // Live corner a; contour points on a-b and a-d.
       const int pab = contour_of(a, b);
       const int pad = contour_of(a, d);
-      out.faces.push_back({outer_of(a), pab, pad});
-      out.faces.push_back({inner_of(a), pad, pab});
+      out.face(outer_of(a), pab, pad);
+      out.face(inner_of(a), pad, pab);
     } else {
       // Dead corner a; live b and d; contour points on b-a and d-a. Quad b, d, p_da, p_ba.
       const int pba = contour_of(b, a);
       const int pda = contour_of(d, a);
-      out.faces.push_back({outer_of(b), outer_of(d), pda});
-      out.faces.push_back({outer_of(b), pda, pba});
-      out.faces.push_back({inner_of(b), pda, inner_of(d)});
-      out.faces.push_back({inner_of(b), pba, pda});
+      out.face(outer_of(b), outer_of(d), pda);
+      out.face(outer_of(b), pda, pba);
+      out.face(inner_of(b), pda, inner_of(d));
+      out.face(inner_of(b), pba, pda);
     }
   }
-  return out.finish();
+  return out.finish(volume);
 }
 
 VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_max,
@@ -384,62 +445,51 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
     s.poi_in_band = g.z() >= s.low - kBandTolerance && g.z() <= s.high + kBandTolerance;
   }
 
-  // Directions: every cell centre (the grid's rays), then every corner of the sphere grid.
+  // Rays: every cell centre (the grid's intervals), then every corner of the sphere grid (the
+  // mesh). Traced in parallel chunks of neighbouring directions, 64 per rtcIntersect1M call.
   const SphereGrid sphere{ne, na};
+  const Directions dirs(vv.grid, sphere);
   const std::size_t n_cells = vv.grid.size();
   const auto n_corners = static_cast<std::size_t>(sphere.num_vertices());
-  std::vector<double> cos_az_c(static_cast<std::size_t>(na)), sin_az_c(static_cast<std::size_t>(na));
-  std::vector<double> cos_az_v(static_cast<std::size_t>(na)), sin_az_v(static_cast<std::size_t>(na));
-  const double d_az = kTwoPi / na;
-  for (int j = 0; j < na; ++j) {
-    cos_az_c[j] = std::cos((j + 0.5) * d_az);
-    sin_az_c[j] = std::sin((j + 0.5) * d_az);
-    cos_az_v[j] = std::cos(j * d_az);
-    sin_az_v[j] = std::sin(j * d_az);
-  }
-  std::vector<float> rays(3 * (n_cells + n_corners));
-  std::vector<double> sin_el_cell(static_cast<std::size_t>(ne));
-  for (int i = 0; i < ne; ++i) {
-    const double el = vv.grid.elevation(i);
-    const double ce = std::cos(el);
-    sin_el_cell[i] = std::sin(el);
-    for (int j = 0; j < na; ++j) {
-      const std::size_t k = 3 * (static_cast<std::size_t>(i) * na + j);
-      rays[k] = static_cast<float>(ce * cos_az_c[j]);
-      rays[k + 1] = static_cast<float>(ce * sin_az_c[j]);
-      rays[k + 2] = static_cast<float>(sin_el_cell[i]);
-    }
-  }
-  std::vector<Vec3> corner_dirs(n_corners);
-  corner_dirs[0] = Vec3(0, 0, -1);
-  corner_dirs[n_corners - 1] = Vec3(0, 0, 1);
-  for (int i = 1; i < ne; ++i) {
-    // (2i - ne) pi / (2 ne): exactly 0 on the horizon row.
-    const double el = (2 * i - ne) * kPi / (2.0 * ne);
-    const double ce = std::cos(el);
-    const double se = (2 * i == ne) ? 0.0 : std::sin(el);
-    for (int j = 0; j < na; ++j) corner_dirs[static_cast<std::size_t>(sphere.vertex(i, j))] = Vec3(ce * cos_az_v[j], ce * sin_az_v[j], se);
-  }
-  for (std::size_t v = 0; v < n_corners; ++v)
-    for (int c = 0; c < 3; ++c) rays[3 * (n_cells + v) + c] = static_cast<float>(corner_dirs[v][c]);
-
-  std::vector<double> hits;
-  Tracer{detail::EmbreeScene::of(scene)}(g, rays, d_max, hits);
-
   vv.near.assign(n_cells, 0.0);
   vv.far.assign(n_cells, 0.0);
-  for (std::size_t k = 0; k < n_cells; ++k) {
-    const Interval iv = visible_interval(s, sin_el_cell[k / na], hits[k]);
-    if (iv.far > iv.near) {
-      vv.near[k] = iv.near;
-      vv.far[k] = iv.far;
-    }
-  }
   std::vector<Interval> corner(n_corners);
-  for (std::size_t v = 0; v < n_corners; ++v) corner[v] = visible_interval(s, corner_dirs[v].z(), hits[n_cells + v]);
-  vv.mesh = s.poi_in_band ? build_star_mesh(s, sphere, corner_dirs, corner)
-                          : build_shell_mesh(s, sphere, corner_dirs, corner);
-  vv.volume = mesh_volume(vv.mesh);
+  const detail::EmbreeScene& embree = detail::EmbreeScene::of(scene);
+  const auto t_far = static_cast<float>(d_max);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n_cells + n_corners, 4096),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      detail::FlushDenormals flush;
+                      constexpr std::size_t kChunk = 64;
+                      std::array<float, 3 * kChunk> rays{};
+                      std::array<float, kChunk> t{};
+                      std::array<bool, kChunk> ground{};
+                      std::array<Vec3, kChunk> d;
+                      for (std::size_t start = r.begin(); start < r.end(); start += kChunk) {
+                        const std::size_t count = std::min(kChunk, r.end() - start);
+                        for (std::size_t k = 0; k < count; ++k) {
+                          d[k] = dirs.ray(start + k);
+                          for (int c = 0; c < 3; ++c) rays[3 * k + c] = static_cast<float>(d[k][c]);
+                        }
+                        embree.trace(g, rays.data(), count, 0.0f, t_far, t.data(), ground.data());
+                        for (std::size_t k = 0; k < count; ++k) {
+                          // Ground hits are dropped: the ground is applied exactly, and a ray
+                          // grazing the ground plane from a POI on it must not stop.
+                          const double hit = ground[k] ? kInf : static_cast<double>(t[k]);
+                          const Interval iv = visible_interval(s, d[k].z(), hit);
+                          const std::size_t index = start + k;
+                          if (index < n_cells) {
+                            if (iv.far > iv.near) {
+                              vv.near[index] = iv.near;
+                              vv.far[index] = iv.far;
+                            }
+                          } else {
+                            corner[index - n_cells] = iv;
+                          }
+                        }
+                      }
+                    });
+  vv.mesh = s.poi_in_band ? build_star_mesh(s, sphere, dirs, corner, vv.volume)
+                          : build_shell_mesh(s, sphere, dirs, corner, vv.volume);
   return vv;
 }
 

@@ -4,6 +4,7 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "volume/cgal_mesh.hpp"
+#include "vistrack/error.hpp"
 #include "vistrack/volume.hpp"
 
 namespace vistrack {
@@ -79,6 +81,18 @@ MeshCheck check_closed_mesh(const TriangleMesh& mesh) {
     return check;
   }
   return check;
+}
+
+std::vector<bool> points_inside(const TriangleMesh& mesh, const Points3& points) {
+  detail::CgalMesh sm;
+  if (mesh.faces.rows() == 0 || !detail::to_surface_mesh(mesh, sm) || !CGAL::is_closed(sm))
+    throw Error("points_inside: the mesh is not a closed 2-manifold; check it with check_closed_mesh");
+  const CGAL::Side_of_triangle_mesh<detail::CgalMesh, detail::CgalKernel> side(sm);
+  std::vector<bool> inside(static_cast<std::size_t>(points.rows()));
+  for (Eigen::Index i = 0; i < points.rows(); ++i)
+    inside[static_cast<std::size_t>(i)] =
+        side(detail::CgalKernel::Point_3(points(i, 0), points(i, 1), points(i, 2))) != CGAL::ON_UNBOUNDED_SIDE;
+  return inside;
 }
 
 }  // namespace vistrack

@@ -3,7 +3,12 @@
 // Boost.Graph's edge descriptors inside the slicer trip GCC 12's -Wmaybe-uninitialized (a false
 // positive in third-party code instantiated here).
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_slicer.h>
+
+#include <array>
+#include <cstdint>
 
 #include <algorithm>
 #include <cmath>
@@ -56,11 +61,35 @@ std::vector<Ring> slice_rings(const TriangleMesh& mesh, double altitude) {
   require_finite(altitude, "altitude");
   std::vector<Ring> rings;
   if (mesh.faces.rows() == 0) return rings;
-  detail::CgalMesh sm;
-  if (!detail::to_surface_mesh(mesh, sm))
-    throw Error("slice: the mesh is not an oriented 2-manifold; check it with check_closed_mesh");
   const double scale = std::max(1.0, (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm());
   const double z = nudged_altitude(mesh, altitude, 1e-9 * scale + 1e-7);
+  // Only the faces that cross the plane matter: slicing that band of faces instead of the whole
+  // mesh saves building the slicer's AABB tree over every face (a VV has ~10^5).
+  std::vector<detail::CgalKernel::Point_3> points;
+  std::vector<std::array<std::size_t, 3>> polygons;
+  std::vector<std::size_t> remap(static_cast<std::size_t>(mesh.vertices.rows()), SIZE_MAX);
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
+    int below = 0;
+    for (int c = 0; c < 3; ++c) below += mesh.vertices(mesh.faces(f, c), 2) < z ? 1 : 0;
+    if (below == 0 || below == 3) continue;
+    std::array<std::size_t, 3> face{};
+    for (int c = 0; c < 3; ++c) {
+      const auto v = static_cast<std::size_t>(mesh.faces(f, c));
+      if (remap[v] == SIZE_MAX) {
+        remap[v] = points.size();
+        points.emplace_back(mesh.vertices(mesh.faces(f, c), 0), mesh.vertices(mesh.faces(f, c), 1),
+                            mesh.vertices(mesh.faces(f, c), 2));
+      }
+      face[static_cast<std::size_t>(c)] = remap[v];
+    }
+    polygons.push_back(face);
+  }
+  if (polygons.empty()) return rings;
+  // The band may touch itself at vertices away from the plane: split those (edges crossing the
+  // plane, which carry the slice from face to face, are untouched).
+  CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
+  detail::CgalMesh sm;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, sm);
   CGAL::Polygon_mesh_slicer<detail::CgalMesh, detail::CgalKernel> slicer(sm);
   std::list<Polyline> polylines;
   slicer(detail::CgalKernel::Plane_3(0, 0, 1, -z), std::back_inserter(polylines));
