@@ -72,14 +72,15 @@ def test_grid_and_mesh_paths_against_monte_carlo_line_of_sight(city):
     a = vt._core.visibility_volume(scene, ga, 400.0, None, 1.0)
     b = vt._core.visibility_volume(scene, gb, 400.0, None, 1.0)
     grid = vt.xor_volume(a, b, frame="poi", method="grid")
-    assert grid == pytest.approx(mc, rel=0.01, abs=3 * sigma)
+    # Discretization allowance plus three standard deviations of the estimate.
+    assert abs(grid - mc) <= 0.01 * mc + 3 * sigma, (grid, mc, sigma)
     assert vt.xor_volume(b, a) == pytest.approx(grid, rel=1e-12)
     a2 = vt._core.visibility_volume(scene, ga, 400.0, None, 2.0)
     b2 = vt._core.visibility_volume(scene, gb, 400.0, None, 2.0)
     grid2 = vt.xor_volume(a2, b2, method="grid")
     mesh2 = vt.xor_volume(a2, b2, method="mesh", time_limit=120.0)
-    assert grid2 == pytest.approx(mc, rel=0.01, abs=3 * sigma)
-    assert mesh2 == pytest.approx(mc, rel=0.015, abs=3 * sigma)
+    assert abs(grid2 - mc) <= 0.01 * mc + 3 * sigma, (grid2, mc, sigma)
+    assert abs(mesh2 - mc) <= 0.015 * mc + 3 * sigma, (mesh2, mc, sigma)
     assert mesh2 == pytest.approx(grid2, rel=0.025)
 
 
