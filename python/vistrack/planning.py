@@ -108,7 +108,7 @@ def figure_metric(results: dict[str, "_core.Discretization"], cutoff: float, pat
 
 
 def _footprints(env) -> list:
-    footprints = getattr(env, "footprints", None)  # a property of Environment ([] for meshes)
+    footprints = getattr(env, "footprints", None) if env is not None else None  # [] for meshes
     if footprints is None:
         return []
     return list(footprints() if callable(footprints) else footprints)

@@ -164,5 +164,10 @@ def test_cli_orbits_writes_plan_and_figures(charlotte, tmp_path):
         assert (out / name).stat().st_size > 300, name
     plan = vt.VisibilityOrbitPlan.from_json((out / "plan.json").read_text())
     assert plan.feasible
+    again_dir = tmp_path / "again"
+    assert main(["orbits", "--from-plan", str(out / "plan.json"), "--out", str(again_dir),
+                 "--footprints", str(charlotte / "buildings.geojson")]) == 0
+    assert (again_dir / "orbits.png").stat().st_size > 300
+    assert main(["orbits", "--out", str(again_dir)]) == 2  # neither map and path nor a plan
     assert main(["orbits", "--map", str(tmp_path / "missing.obj"), "--path",
                  str(charlotte / "paths" / "paper_small.csv"), "--out", str(out)]) == 2

@@ -29,9 +29,11 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "h_UAV, MaxRadius and Algorithm 1 (sec. IV.C). Writes plan.json, summary.json, orbits.png, "
         "radius.png and, with --figure-metric, metric.png (Figure 4).",
     )
-    p.add_argument("--map", required=True, help="city: .geojson footprints or a triangle mesh (.obj ...)")
+    p.add_argument("--map", help="city: .geojson footprints or a triangle mesh (.obj ...)")
     p.add_argument("--up", default="y", choices=["y", "z"], help="up axis of a mesh file (default y)")
-    p.add_argument("--path", required=True, help="POI path CSV, one x,y[,z] waypoint per line")
+    p.add_argument("--path", help="POI path CSV, one x,y[,z] waypoint per line")
+    p.add_argument("--from-plan", default=None,
+                   help="redraw the figures of a saved plan.json (VPs are stored in it; no VVs recomputed)")
     p.add_argument("--out", default="orbits_out", help="output folder (created)")
     p.add_argument("--poi-speed", type=float, default=5.0, help="v_g, m/s")
     p.add_argument("--speed", type=float, default=_core.Uav().speed, help="UAV speed v, m/s")
@@ -53,9 +55,24 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
+def redraw(args: argparse.Namespace, out: Path) -> int:
+    plan = pl.read_plan(args.from_plan)
+    background = pl.footprint_environment(args.map or "", args.footprints) if (args.map or args.footprints) else None
+    if background is None and args.map and str(args.map).lower().endswith((".geojson", ".json")):
+        background = _core.Environment.from_geojson(str(args.map))
+    pl.figure_orbits(plan, background, out / "orbits.png")
+    pl.figure_radius(plan, out / "radius.png")
+    print(f"redrew {out}/orbits.png, radius.png from {args.from_plan}")
+    return 0
+
+
 def run(args: argparse.Namespace) -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
+    if args.from_plan:
+        return redraw(args, out)
+    if not args.map or not args.path:
+        raise _core.VistrackError("orbits: --map and --path are required (or --from-plan PLAN.json)")
     env = pl.load_environment(args.map, args.up)
     poi = _core.PoiPath.from_csv(args.path, args.poi_speed)
     uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude)
