@@ -96,7 +96,7 @@ TEST(MeshXor, CubeAndOctahedronHaveTheAnalyticXor) {
   EXPECT_NEAR(vt::mesh_xor_volume(cube, octahedron(1.0)), 8.0 - 4.0 / 3.0, 1e-9);
   // r = 1.5: six corner pyramids of volume 1/12 stick out, so |A n B| = 4.5 - 0.5 = 4.
   EXPECT_NEAR(vt::mesh_xor_volume(cube, octahedron(1.5)), 8.0 + 4.5 - 8.0, 1e-9);
-  EXPECT_NEAR(vt::enclosed_volume(octahedron(1.5)), 4.5, 1e-12);
+  EXPECT_NEAR(vt::mesh_volume(octahedron(1.5)), 4.5, 1e-12);
 }
 
 TEST(MeshXor, SymmetricAndIndependentOfOrientation) {
@@ -111,7 +111,7 @@ TEST(MeshXor, SymmetricAndIndependentOfOrientation) {
 
 TEST(MeshXor, NestedSpheresGiveTheDifferenceOfTheirVolumes) {
   const auto big = uv_sphere(10.0, 24, 48), small = uv_sphere(6.0, 18, 36, {1.0, -0.5, 0.3});
-  EXPECT_NEAR(vt::mesh_xor_volume(big, small), vt::enclosed_volume(big) - vt::enclosed_volume(small), 1e-6);
+  EXPECT_NEAR(vt::mesh_xor_volume(big, small), vt::mesh_volume(big) - vt::mesh_volume(small), 1e-6);
 }
 
 TEST(MeshXor, PerturbationHandlesIdenticalSpheresAndStaysSmall) {
@@ -123,12 +123,12 @@ TEST(MeshXor, PerturbationHandlesIdenticalSpheresAndStaysSmall) {
   const auto start = std::chrono::steady_clock::now();
   const double d = vt::mesh_xor_volume(s, s, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_LT(d, 1e-4 * vt::enclosed_volume(s));
+  EXPECT_LT(d, 1e-4 * vt::mesh_volume(s));
   RecordProperty("seconds", std::to_string(seconds));
   // And a real difference is kept: bigger sphere, same faces directions.
   const auto t = uv_sphere(110.0, 32, 64);
-  EXPECT_NEAR(vt::mesh_xor_volume(s, t, options), vt::enclosed_volume(t) - vt::enclosed_volume(s),
-              1e-4 * vt::enclosed_volume(s));
+  EXPECT_NEAR(vt::mesh_xor_volume(s, t, options), vt::mesh_volume(t) - vt::mesh_volume(s),
+              1e-4 * vt::mesh_volume(s));
 }
 
 TEST(MeshXor, EmptyMeshIsTheEmptySet) {
@@ -227,7 +227,7 @@ TEST(GridXor, MatchesTheMeshPathOnStarShapedVolumes) {
   b.poi = {1000, 0, 0};
   b.mesh = uv_sphere(120.0, 64, 128, b.poi);
   EXPECT_NEAR(vt::xor_volume(a, b, vt::XorFrame::world),
-              vt::enclosed_volume(a.mesh) + vt::enclosed_volume(b.mesh), 1e-6 * grid);
+              vt::mesh_volume(a.mesh) + vt::mesh_volume(b.mesh), 1e-6 * grid);
   EXPECT_THROW(vt::xor_volume(a, b, vt::XorFrame::world, vt::XorMethod::grid), vt::Error);
 }
 

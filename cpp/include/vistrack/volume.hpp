@@ -80,9 +80,6 @@ struct MeshXorOptions {
 // limit is exceeded.
 double mesh_xor_volume(const TriangleMesh& a, const TriangleMesh& b, const MeshXorOptions& options = {});
 
-// Volume enclosed by a closed, outward oriented triangle mesh (divergence theorem, no checks).
-double enclosed_volume(const TriangleMesh& mesh);
-
 // True when both VVs use the same direction grid with intervals for every cell.
 bool shares_direction_grid(const VisibilityVolume& a, const VisibilityVolume& b);
 

@@ -83,17 +83,6 @@ Mesh to_cgal(const TriangleMesh& input, const std::string& name, const Eigen::Ma
 
 }  // namespace
 
-double enclosed_volume(const TriangleMesh& mesh) {
-  double six_volume = 0.0;
-  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
-    const Vec3 a = mesh.vertices.row(mesh.faces(f, 0)).transpose();
-    const Vec3 b = mesh.vertices.row(mesh.faces(f, 1)).transpose();
-    const Vec3 c = mesh.vertices.row(mesh.faces(f, 2)).transpose();
-    six_volume += a.dot(b.cross(c));
-  }
-  return six_volume / 6.0;
-}
-
 double mesh_xor_volume(const TriangleMesh& a, const TriangleMesh& b, const MeshXorOptions& options) {
   require_positive(options.time_limit, "options.time_limit");
   require_non_negative(options.perturbation, "options.perturbation");
