@@ -199,7 +199,7 @@ def test_cli_volumes_writes_results(charlotte, tmp_path: Path):
 
     out = tmp_path / "vols"
     code = main([
-        "volumes", "--map", str(charlotte / "buildings.geojson"), "--points", "-150,-45;-50,45,0.5",
+        "volumes", "--map", str(charlotte / "buildings.geojson"), "--points=-150,-45;-50,45,0.5",
         "--d-max", "300", "--altitude", "50", "--resolution", "3", "--out", str(out), "--check", "--quiet",
     ])
     assert code == 0

@@ -36,7 +36,7 @@ def register(subparsers: Any) -> None:
     p.add_argument("--up", default="z", choices=["z", "y"], help="up axis of a mesh file (y: north is -Z)")
     where = p.add_mutually_exclusive_group(required=True)
     where.add_argument("--path", type=Path, help="POI path CSV (x,y[,z] per line): VVs every --spacing metres")
-    where.add_argument("--points", help='POI positions "x,y[,z];x,y[,z];..." (z defaults to 0.5 m above the surface)')
+    where.add_argument("--points", help='POI positions "x,y[,z];x,y[,z];..." (z defaults to 0.5 m above the surface); write --points=-1,2 when the first number is negative')
     p.add_argument("--spacing", type=float, default=planning.spacing, help="metres between VVs along --path")
     p.add_argument("--d-max", type=float, default=sensor.d_max, help="maximum viewing distance d_max (m)")
     p.add_argument("--altitude", type=float, default=uav.altitude, help="UAV altitude h_UAV for the VPs (world z, m)")
