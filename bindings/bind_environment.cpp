@@ -48,12 +48,18 @@ std::vector<Building> buildings_from_python(const py::iterable& items) {
     if (entry.size() != 2 && entry.size() != 3)
       detail::fail_field(field, py::str(item).cast<std::string>(), "expected (Polygon, height) or (Polygon, height, id)");
     Building building;
-    building.footprint = entry[0].cast<Polygon>();
+    if (py::isinstance<Polygon>(entry[0])) building.footprint = entry[0].cast<Polygon>();
+    else building.footprint.outer = ring_from_array(entry[0].cast<Points2>(), field + "[0]");  // an (n, 2) array
     building.height = entry[1].cast<double>();
     building.id = entry.size() == 3 ? entry[2].cast<int>() : static_cast<int>(buildings.size());
     buildings.push_back(std::move(building));
   }
   return buildings;
+}
+
+// str or os.PathLike (pathlib.Path) to a file name.
+std::string file_name(const py::object& path) {
+  return py::module_::import("os").attr("fspath")(path).cast<std::string>();
 }
 
 }  // namespace
@@ -85,14 +91,28 @@ void bind_environment(py::module_& m) {
 
   py::class_<Environment>(m, "Environment",
                           "Obstacles (2.5D buildings or a triangle mesh), ground and road network.")
-      .def_static("from_geojson", &Environment::from_geojson, py::arg("path"),
-                  py::call_guard<py::gil_scoped_release>(),
+      .def_static(
+          "from_geojson",
+          [](const py::object& path) {
+            const std::string name = file_name(path);
+            py::gil_scoped_release release;
+            return Environment::from_geojson(name);
+          },
+          py::arg("path"),
                   "2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: "
                   "height from properties.height, else building:levels x 3 m; id from properties.id, "
-                  "else the feature index. Footprints are validated (simple, >= 3 points, holes inside, "
-                  "disjoint interiors up to 1 m^2 of overlap) and normalised counter-clockwise.")
-      .def_static("from_mesh", &Environment::from_mesh, py::arg("path"), py::arg("up") = "z",
-                  py::call_guard<py::gil_scoped_release>(),
+                  "else the feature index. Coordinates in local east-north metres. Footprints are validated "
+                  "(simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up "
+                  "to 1 m^2 are taken as touching walls, and a footprint inside a building at least as "
+                  "tall as a building part) and normalised counter-clockwise.")
+      .def_static(
+          "from_mesh",
+          [](const py::object& path, const std::string& up) {
+            const std::string name = file_name(path);
+            py::gil_scoped_release release;
+            return Environment::from_mesh(name, up);
+          },
+          py::arg("path"), py::arg("up") = "z",
                   "Any mesh file CGAL reads (.obj .ply .stl .off): duplicate points merged, polygons "
                   "triangulated, degenerate triangles dropped. up='y' maps a Y-up, north=-Z file "
                   "(x, y, z) to east-north-up (x, -z, y). The ground level is the lowest vertex.")
@@ -104,7 +124,8 @@ void bind_environment(py::module_& m) {
             return Environment::from_buildings(std::move(buildings), roads.value_or(RoadNetwork{}));
           },
           py::arg("buildings"), py::arg("roads") = py::none(),
-          "Environment from a list of (Polygon, height) or (Polygon, height, id), validated as in "
+          "Environment from a list of (Polygon, height) or (Polygon, height, id) (an (n, 2) array "
+          "may stand for a Polygon without holes), validated as in "
           "from_geojson; optional RoadNetwork checked against every footprint.")
       .def_static("from_triangles", &Environment::from_triangles, py::arg("vertices"), py::arg("faces"),
                   "Environment from triangles: vertices (n, 3) float in east-north-up metres, faces "
@@ -165,7 +186,9 @@ void bind_environment(py::module_& m) {
   py::class_<PoiPath>(m, "PoiPath", "A point of interest moving at constant speed through waypoints.")
       .def(py::init<const Eigen::MatrixXd&, double>(), py::arg("waypoints"), py::arg("speed"),
            "Waypoints (n, 2) or (n, 3) in metres; speed in m/s (> 0).")
-      .def_static("from_csv", &PoiPath::from_csv, py::arg("path"), py::arg("speed"),
+      .def_static(
+          "from_csv", [](const py::object& path, double speed) { return PoiPath::from_csv(file_name(path), speed); },
+          py::arg("path"), py::arg("speed"),
                   "Read waypoints from a CSV file with lines x,y[,z].")
       .def_static("from_nodes", &PoiPath::from_nodes, py::arg("roads"), py::arg("nodes"), py::arg("speed"),
                   "Path through a sequence of road-network node indices, each consecutive pair joined by an edge.")

@@ -283,6 +283,9 @@ TEST(GeoJson, BadFilesNameTheFieldAndValue) {
   expect_error(load(dir.write("ov.geojson", collection({feature(kSquare, R"({"height": 5, "id": 11})"),
                                                        feature("[[[5,5],[15,5],[15,15],[5,15]]]", R"({"height": 5})")}))),
                {"features[0] (id 11) and features[1] (id 1) overlap", "shared area = 25"});
+  expect_error(load(dir.write("deg.geojson", collection({feature("[[[-80.8403,35.2249],[-80.8402,35.2249],[-80.8402,35.2250]]]",
+                                                                R"({"height": 5})")}))),
+               {"features[*].geometry.coordinates = extent", "longitude/latitude"});
 }
 
 TEST(GeoJson, Charlotte) {
@@ -404,11 +407,13 @@ TEST(Demo, DeterministicDowntownWithClearRoads) {
 TEST(Roads, EdgeThroughABuildingIsAnErrorAlongAWallIsNot) {
   Environment env = Environment::from_buildings({{{rectangle(0, 0, 10, 10), {}}, 5.0, 3},
                                                  {{rectangle(20, 0, 30, 10), {rectangle(22, 2, 28, 8)}}, 5.0, 8}});
+  const std::uint64_t without_roads = env.fingerprint();
   RoadNetwork roads{{Vec2(-5, 5), Vec2(15, 5), Vec2(0, -5), Vec2(0, 20), Vec2(25, 5), Vec2(26, 6)}, {{0, 1}}};
   expect_error([&] { env.set_roads(roads); }, {"roads.edges[0] = (0, 1)", "building id 3", "buildings[0]"});
   roads.edges = {{2, 3}};  // runs along the wall x = 0
   EXPECT_NO_THROW(env.set_roads(roads));
   EXPECT_EQ(env.roads().edges.size(), 1u);
+  EXPECT_NE(env.fingerprint(), without_roads);  // the roads are part of the content hash
   roads.edges = {{4, 5}};  // inside the courtyard
   EXPECT_NO_THROW(env.set_roads(roads));
   roads.edges = {{1, 4}};  // from outside into the courtyard through the wall

@@ -43,6 +43,9 @@ class Environment {
   // 3 points, positive finite height, disjoint interiors).
   static Environment from_geojson(const std::string& path);
   // Validated buildings plus optional roads (each edge checked against every footprint).
+  // Footprints may overlap by at most 1 m^2 (walls drawn approximately); a footprint lying
+  // inside another building that is at least as tall is accepted (a building part drawn inside
+  // its outline adds nothing to the obstacles).
   static Environment from_buildings(std::vector<Building> buildings, RoadNetwork roads = {});
   // Any triangle mesh file (OBJ, PLY, STL, OFF). up = "z", or "y" for Y-up files whose north
   // is -Z: (east, north, up) = (x, -z, y).
@@ -67,7 +70,9 @@ class Environment {
   std::vector<double> heights() const;
   std::size_t num_buildings() const { return buildings_.size(); }
   const RoadNetwork& roads() const { return roads_; }
-  // Replaces the road network after checking that no edge crosses a building footprint.
+  // Replaces the road network after checking the nodes (finite), the edges (valid, distinct
+  // nodes) and that no edge crosses a building footprint's interior (running along a wall is
+  // allowed). An environment made from a mesh has no footprints to check against.
   void set_roads(RoadNetwork roads);
   // A deterministic content hash (geometry and roads), for caches keyed by environment.
   std::uint64_t fingerprint() const;

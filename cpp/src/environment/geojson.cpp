@@ -1,6 +1,7 @@
 // Environment::from_geojson: 2.5D buildings from a GeoJSON FeatureCollection.
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -134,6 +135,19 @@ Environment Environment::from_geojson(const std::string& path) {
       detail::fail_field(name + ".geometry.type", "\"" + type + "\"", "expected Polygon or MultiPolygon");
     }
   }
+  // Plain GeoJSON is longitude/latitude in degrees; a whole city then spans well under one
+  // unit, and extruding metres of height over it would be silently wrong.
+  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (const Building& building : buildings)
+    for (const Vec2& p : building.footprint.outer) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+  const double extent = (high - low).maxCoeff();
+  if (extent < 1.0)
+    detail::fail_field("features[*].geometry.coordinates", "extent " + detail::to_text(extent),
+                       "the buildings span less than 1 unit: coordinates look like longitude/latitude "
+                       "degrees; vistrack needs local east-north metres");
   detail::validate_buildings(buildings, sources);
   return from_validated_buildings(std::move(buildings));
 }

@@ -13,28 +13,23 @@ namespace {
 
 std::string point_text(const Vec2& p) { return "(" + detail::to_text(p.x()) + ", " + detail::to_text(p.y()) + ")"; }
 
-// Parameters t in [0, 1] where the segment a + t (b - a) meets the ring's edges.
-void boundary_contacts(const Ring& ring, const Vec2& a, const Vec2& b, std::vector<double>& ts) {
+// Parameters t in [0, 1] where the segment a + t (b - a) meets the ring: every corner within
+// `tolerance` of the segment (this also covers the ends of walls the road runs along, which
+// are rarely exactly collinear in floating point), and every proper crossing of an edge.
+void boundary_contacts(const Ring& ring, const Vec2& a, const Vec2& b, double tolerance, std::vector<double>& ts) {
   const Vec2 d = b - a;
   const double length_squared = d.squaredNorm();
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const Vec2& c = ring[i];
-    const Vec2& e = ring[(i + 1) % ring.size()];
-    const Vec2 f = e - c;
+    const double t = std::clamp((c - a).dot(d) / length_squared, 0.0, 1.0);
+    if ((a + t * d - c).norm() <= tolerance) ts.push_back(t);
+    const Vec2 f = ring[(i + 1) % ring.size()] - c;
     const double denominator = d.x() * f.y() - d.y() * f.x();
+    if (std::abs(denominator) <= 1e-12 * std::sqrt(length_squared * f.squaredNorm())) continue;  // parallel
     const Vec2 ac = c - a;
-    if (denominator == 0.0) {
-      // Parallel: when collinear, the overlap ends are where the road meets the wall.
-      if (ac.x() * d.y() - ac.y() * d.x() != 0.0) continue;
-      for (const Vec2& q : {c, e}) {
-        const double t = (q - a).dot(d) / length_squared;
-        if (t >= 0.0 && t <= 1.0) ts.push_back(t);
-      }
-      continue;
-    }
-    const double t = (ac.x() * f.y() - ac.y() * f.x()) / denominator;
-    const double s = (ac.x() * d.y() - ac.y() * d.x()) / denominator;
-    if (t >= 0.0 && t <= 1.0 && s >= 0.0 && s <= 1.0) ts.push_back(t);
+    const double t_cross = (ac.x() * f.y() - ac.y() * f.x()) / denominator;
+    const double s_cross = (ac.x() * d.y() - ac.y() * d.x()) / denominator;
+    if (t_cross >= 0.0 && t_cross <= 1.0 && s_cross >= 0.0 && s_cross <= 1.0) ts.push_back(t_cross);
   }
 }
 
@@ -42,15 +37,16 @@ void boundary_contacts(const Ring& ring, const Vec2& a, const Vec2& b, std::vect
 // consecutive boundary contacts the segment is either inside or outside, so the midpoint of
 // each piece decides; a piece running along a wall is on the boundary, which is allowed.
 bool crosses_interior(const Polygon& footprint, const Vec2& a, const Vec2& b) {
-  std::vector<double> ts{0.0, 1.0};
-  boundary_contacts(footprint.outer, a, b, ts);
-  for (const Ring& hole : footprint.holes) boundary_contacts(hole, a, b, ts);
-  std::sort(ts.begin(), ts.end());
   const double scale = std::max({1.0, a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff()});
+  const double tolerance = 1e-9 * scale;
+  std::vector<double> ts{0.0, 1.0};
+  boundary_contacts(footprint.outer, a, b, tolerance, ts);
+  for (const Ring& hole : footprint.holes) boundary_contacts(hole, a, b, tolerance, ts);
+  std::sort(ts.begin(), ts.end());
   for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
     if (ts[k + 1] - ts[k] <= 1e-12) continue;
     const Vec2 middle = a + 0.5 * (ts[k] + ts[k + 1]) * (b - a);
-    if (contains(footprint, middle) && distance_to_boundary(footprint, middle) > 1e-9 * scale) return true;
+    if (contains(footprint, middle) && distance_to_boundary(footprint, middle) > tolerance) return true;
   }
   return false;
 }
