@@ -190,3 +190,30 @@ def test_charlotte_volumes_are_valid_and_converge(charlotte):
     # The VP at 300 m contains the POI's vertical and gives a positive MaxRadius.
     vv = vt.visibility_volume(scene, pois[0], 400.0, None, 1.0)
     assert vt.max_inscribed_radius(vv.slice(300.0), pois[0][:2]) > 0.0
+
+
+def test_cli_volumes_writes_results(charlotte, tmp_path: Path):
+    import json
+
+    from vistrack.cli import main
+
+    out = tmp_path / "vols"
+    code = main([
+        "volumes", "--map", str(charlotte / "buildings.geojson"), "--points=-150,-45;-50,45,0.5",
+        "--d-max", "300", "--altitude", "50", "--resolution", "3", "--out", str(out), "--check", "--quiet",
+    ])
+    assert code == 0
+    summary = json.loads((out / "volumes.json").read_text())
+    assert len(summary["points"]) == 2
+    for k, record in enumerate(summary["points"]):
+        assert record["mesh_valid"], record["mesh_problem"]
+        assert record["poi"][2] == pytest.approx(0.5)
+        assert record["max_radius"] > 0.0
+        assert (out / record["mesh"]).is_file()
+        # MaxRadius is the distance from the POI to the nearest ring of its VP.
+        polygon = vt.Polygon(np.array(record["visibility_polygon"][0]["outer"]),
+                             [np.array(h) for h in record["visibility_polygon"][0]["holes"]])
+        assert polygon.distance_to_boundary(np.array(record["poi"][:2])) == pytest.approx(record["max_radius"])
+    assert (out / "plan.png").stat().st_size > 10_000 and (out / "vv3d.png").stat().st_size > 10_000
+    assert main(["volumes", "--map", str(tmp_path / "missing.geojson"), "--points", "0,0", "--out", str(out)]) == 2
+    assert main(["volumes", "--map", str(charlotte / "buildings.geojson"), "--points", "a,b", "--out", str(out)]) == 2

@@ -30,8 +30,9 @@ struct EmbreeScene {
   // First hits of n rays from `origin` (world) along unit directions dirs[3k..3k+2] within
   // [t_near, t_far] metres: t_hit[k] (+inf when none) and the hit geometry (ground or obstacle).
   // Traced in coherent batches of 64 with rtcIntersect1M on the calling thread.
+  // With t_far_each, ray k ends at t_far_each[k] instead of t_far.
   void trace(const Vec3& origin, const float* dirs, std::size_t n, float t_near, float t_far,
-             float* t_hit, bool* hit_ground) const;
+             float* t_hit, bool* hit_ground, const float* t_far_each = nullptr) const;
   // Number of obstacle crossings (ground excluded) along a ray, for parity tests.
   int count_crossings(const Vec3& origin, const Vec3& direction) const;
 

@@ -136,7 +136,7 @@ EmbreeScene::~EmbreeScene() {
 }
 
 void EmbreeScene::trace(const Vec3& world_origin, const float* dirs, std::size_t n, float t_near, float t_far,
-                        float* t_hit, bool* hit_ground) const {
+                        float* t_hit, bool* hit_ground, const float* t_far_each) const {
   const float o[3] = {static_cast<float>(world_origin.x() - origin.x()),
                       static_cast<float>(world_origin.y() - origin.y()),
                       static_cast<float>(world_origin.z() - origin.z())};
@@ -144,7 +144,7 @@ void EmbreeScene::trace(const Vec3& world_origin, const float* dirs, std::size_t
   for (std::size_t start = 0; start < n; start += kBatch) {
     const std::size_t count = std::min(kBatch, n - start);
     for (std::size_t k = 0; k < count; ++k) {
-      init_ray(batch[k].ray, o, dirs + 3 * (start + k), t_near, t_far);
+      init_ray(batch[k].ray, o, dirs + 3 * (start + k), t_near, t_far_each ? t_far_each[start + k] : t_far);
       batch[k].hit.geomID = RTC_INVALID_GEOMETRY_ID;
       batch[k].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     }

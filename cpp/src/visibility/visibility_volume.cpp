@@ -257,38 +257,38 @@ class MeshBuilder {
 TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
                              const std::vector<Interval>& corner, double& volume) {
   const int nv = sphere.num_vertices();
+  const int ne = sphere.ne;
+  const int na = sphere.na;
   const double alive_gap = 1e-6 * std::max(1.0, s.d_max);
   std::vector<char> alive(static_cast<std::size_t>(nv));
   for (int v = 0; v < nv; ++v) alive[v] = corner[v].far - corner[v].near > alive_gap ? 1 : 0;
 
+  // Live triangles (all three corners see something), and the live corners of dead triangles:
+  // only those can be pinched, and only triangles with two of them can border the dead region.
   const int nt = sphere.num_triangle_slots();
   std::vector<char> tri_alive(static_cast<std::size_t>(nt));
+  std::vector<char> candidate(static_cast<std::size_t>(nv));
   auto update_triangles = [&]() {
-    const int na = sphere.na;
-    for (int i = 0; i < sphere.ne; ++i) {
+    std::fill(candidate.begin(), candidate.end(), 0);
+    for (int i = 0; i < ne; ++i) {
       for (int j = 0; j < na; ++j) {
         const int jn = j + 1 == na ? 0 : j + 1;
         const int v00 = sphere.vertex(i, j), v01 = sphere.vertex(i, jn);
         const int v10 = sphere.vertex(i + 1, j), v11 = sphere.vertex(i + 1, jn);
         const int t = 2 * (i * na + j);
         tri_alive[t] = i >= 1 && alive[v00] && alive[v01] && alive[v11];
-        tri_alive[t + 1] = i <= sphere.ne - 2 && alive[v00] && alive[v11] && alive[v10];
+        tri_alive[t + 1] = i <= ne - 2 && alive[v00] && alive[v11] && alive[v10];
+        if (i >= 1 && !tri_alive[t]) candidate[v00] |= alive[v00], candidate[v01] |= alive[v01], candidate[v11] |= alive[v11];
+        if (i <= ne - 2 && !tri_alive[t + 1])
+          candidate[v00] |= alive[v00], candidate[v11] |= alive[v11], candidate[v10] |= alive[v10];
       }
     }
   };
   update_triangles();
   // A corner where the visible region touches itself (two separate fans of live triangles) would
   // be a non-manifold vertex: drop it, until there is none.
-  // Only live corners of dead triangles can be pinched.
   std::vector<int> pole_ring;
-  std::vector<char> candidate(static_cast<std::size_t>(nv), 0);
   for (int round = 0; round < 64; ++round) {
-    std::fill(candidate.begin(), candidate.end(), 0);
-    for (int t = 0; t < nt; ++t) {
-      if (tri_alive[t] || !sphere.exists(t)) continue;
-      for (int v : sphere.corners(t))
-        if (alive[v]) candidate[v] = 1;
-    }
     bool changed = false;
     for (int v = 0; v < nv; ++v) {
       if (!candidate[v]) continue;
@@ -315,23 +315,26 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Dir
     if (outer[v] < 0) outer[v] = out.add(point_on(s, dirs.corner(v), corner[v].far, corner[v].far_surface));
     return outer[v];
   };
-  // Triangles on the border of the live region (the only ones that need their neighbours).
-  std::vector<char> border(static_cast<std::size_t>(nt), 0);
-  for (int t = 0; t < nt; ++t) {
-    if (tri_alive[t] || !sphere.exists(t)) continue;
-    for (int e = 0; e < 3; ++e) border[sphere.neighbour(t, e)] = 1;
-  }
-  for (int t = 0; t < nt; ++t) {
-    if (!tri_alive[t]) continue;
-    const auto c = sphere.corners(t);
-    out.face(outer_of(c[0]), outer_of(c[1]), outer_of(c[2]));
-    if (!border[t]) continue;
+  auto emit = [&](int t, int a, int b, int c) {
+    out.face(outer_of(a), outer_of(b), outer_of(c));
+    if (candidate[a] + candidate[b] + candidate[c] < 2) return;  // no edge on the border
+    const std::array<int, 3> corners{a, b, c};
     for (int e = 0; e < 3; ++e) {
       if (tri_alive[sphere.neighbour(t, e)]) continue;
-      const int p = c[static_cast<std::size_t>(e)];
-      const int q = c[static_cast<std::size_t>((e + 1) % 3)];
+      const int p = corners[static_cast<std::size_t>(e)];
+      const int q = corners[static_cast<std::size_t>((e + 1) % 3)];
       if (apex < 0) apex = out.add(s.g);
       out.face(outer_of(q), outer_of(p), apex);
+    }
+  };
+  for (int i = 0; i < ne; ++i) {
+    for (int j = 0; j < na; ++j) {
+      const int jn = j + 1 == na ? 0 : j + 1;
+      const int v00 = sphere.vertex(i, j), v01 = sphere.vertex(i, jn);
+      const int v10 = sphere.vertex(i + 1, j), v11 = sphere.vertex(i + 1, jn);
+      const int t = 2 * (i * na + j);
+      if (tri_alive[t]) emit(t, v00, v01, v11);
+      if (tri_alive[t + 1]) emit(t + 1, v00, v11, v10);
     }
   }
   return out.finish(volume);
@@ -461,21 +464,32 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
                       detail::FlushDenormals flush;
                       constexpr std::size_t kChunk = 64;
                       std::array<float, 3 * kChunk> rays{};
-                      std::array<float, kChunk> t{};
+                      std::array<float, kChunk> t{}, t_max{};
                       std::array<bool, kChunk> ground{};
+                      std::array<std::size_t, kChunk> slot{};
                       std::array<Vec3, kChunk> d;
+                      std::array<double, kChunk> hit{};
                       for (std::size_t start = r.begin(); start < r.end(); start += kChunk) {
                         const std::size_t count = std::min(kChunk, r.end() - start);
+                        // Rays end where the band, the ground or d_max end the interval anyway;
+                        // rays with nothing to see there are not traced at all.
+                        std::size_t traced = 0;
                         for (std::size_t k = 0; k < count; ++k) {
                           d[k] = dirs.ray(start + k);
-                          for (int c = 0; c < 3; ++c) rays[3 * k + c] = static_cast<float>(d[k][c]);
+                          hit[k] = kInf;
+                          const Interval bound = visible_interval(s, d[k].z(), kInf);
+                          if (!(bound.far > bound.near)) continue;
+                          for (int c = 0; c < 3; ++c) rays[3 * traced + c] = static_cast<float>(d[k][c]);
+                          t_max[traced] = static_cast<float>(bound.far) * (1.0f + 1e-6f);
+                          slot[traced++] = k;
                         }
-                        embree.trace(g, rays.data(), count, 0.0f, t_far, t.data(), ground.data());
+                        embree.trace(g, rays.data(), traced, 0.0f, t_far, t.data(), ground.data(), t_max.data());
+                        // Ground hits are dropped: the ground is applied exactly, and a ray
+                        // grazing the ground plane from a POI on it must not stop.
+                        for (std::size_t m = 0; m < traced; ++m)
+                          if (!ground[m]) hit[slot[m]] = static_cast<double>(t[m]);
                         for (std::size_t k = 0; k < count; ++k) {
-                          // Ground hits are dropped: the ground is applied exactly, and a ray
-                          // grazing the ground plane from a POI on it must not stop.
-                          const double hit = ground[k] ? kInf : static_cast<double>(t[k]);
-                          const Interval iv = visible_interval(s, d[k].z(), hit);
+                          const Interval iv = visible_interval(s, d[k].z(), hit[k]);
                           const std::size_t index = start + k;
                           if (index < n_cells) {
                             if (iv.far > iv.near) {
