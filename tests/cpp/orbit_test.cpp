@@ -338,3 +338,53 @@ TEST(PlanOrbits, PaperSlowExampleOnCharlotte) {
   EXPECT_NEAR(plan.radii.front(), 158.0, 0.1 * 158.0);
   EXPECT_NEAR(plan.radii.back(), 127.0, 0.1 * 127.0);
 }
+
+TEST(AdaptiveDiscretization, RandomWorldsKeepTheInvariants) {
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    // Far radius a random staircase of x: the metric between neighbours is known in closed form.
+    std::vector<double> steps;
+    for (int k = 0; k < 4; ++k) steps.push_back(200.0 * u(rng));
+    std::atomic<int> calls{0};
+    vt::VolumeCache cache([&](const vt::Vec3& g) {
+      ++calls;
+      auto v = std::make_shared<vt::VisibilityVolume>();
+      v->poi = g;
+      v->grid.num_elevation = 6;
+      v->grid.num_azimuth = 12;
+      double far = 40.0;
+      for (double s : steps) far += g.x() > s ? 5.0 : 0.0;
+      v->near.assign(v->grid.size(), 0.0);
+      v->far.assign(v->grid.size(), far);
+      return vt::VolumePtr(v);
+    });
+    Eigen::MatrixXd w(2, 2);
+    w << 0, 0, 200, 0;
+    const vt::PoiPath poi(w, 1.0 + 9.0 * u(rng));
+    vt::Planning planning;
+    planning.spacing = 5.0 + 60.0 * u(rng);
+    planning.cutoff = 1e3;
+    planning.min_spacing = 0.1 + 3.0 * u(rng);
+    planning.max_depth = static_cast<int>(10 * u(rng));
+    const auto d = vt::adaptive_discretization(poi, planning, cache, grid_metric);
+    ASSERT_EQ(d.times.size(), d.volumes.size());
+    ASSERT_EQ(d.metric.size() + 1, d.times.size());
+    EXPECT_EQ(d.arc_lengths.front(), 0.0);
+    EXPECT_NEAR(d.arc_lengths.back(), 200.0, 1e-9);
+    EXPECT_EQ(calls.load(), static_cast<int>(d.times.size()));
+    for (std::size_t k = 0; k + 1 < d.times.size(); ++k) {
+      const double gap = d.arc_lengths[k + 1] - d.arc_lengths[k];
+      EXPECT_GT(gap, 0.0);
+      EXPECT_LE(gap, planning.spacing + 1e-9);
+      EXPECT_NEAR(d.metric[k], vt::grid_xor_volume(*d.volumes[k], *d.volumes[k + 1]), 1e-9);
+      const int depth = std::max(d.depths[k], d.depths[k + 1]);
+      // Above the cutoff only where halving had to stop.
+      if (d.metric[k] > planning.cutoff) {
+        EXPECT_TRUE(gap / 2 < planning.min_spacing || depth >= planning.max_depth)
+            << "gap " << gap << " depth " << depth;
+      }
+      EXPECT_LE(depth, planning.max_depth);
+    }
+  }
+}
