@@ -65,7 +65,10 @@ void bind_simulate(py::module_& m) {
           "line of sight UAV -> POI at each sample (bool array), or None when not evaluated")
       .def_readonly("visibility_fraction", &SimulationResult::visibility_fraction,
                     "fraction of samples with line of sight, or None")
-      .def_readonly("statistics", &SimulationResult::statistics, "integrator work (all segments)");
+      .def_readonly("statistics", &SimulationResult::statistics, "integrator work (all segments)")
+      .def("to_csv", &trajectory_csv,
+           "The trajectory as CSV text (header t,x,y,psi,psi_d,psi_d_rate,radial_error,heading_error,"
+           "u_psi,u_psi_unsaturated,poi_x,poi_y,poi_z,orbit_radius[,visible]), as vistrack_sim writes it.");
 
   m.def(
       "simulate",

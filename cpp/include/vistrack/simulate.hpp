@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "vistrack/geometry.hpp"
@@ -52,6 +53,11 @@ OrbitState orbit_state(const OrbitPlan& plan, double segment_start, double t);
 SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
                           const SimulationOptions& options = {}, const LineOfSight& line_of_sight = {},
                           double fixed_step = 0.0);
+
+// The trajectory as CSV text, one sample per line, with the header
+// t,x,y,psi,psi_d,psi_d_rate,radial_error,heading_error,u_psi,u_psi_unsaturated,poi_x,poi_y,poi_z,
+// orbit_radius[,visible]. Full double precision.
+std::string trajectory_csv(const SimulationResult& result);
 
 // Fills result.visible / visibility_fraction: UAV at (x, y, altitude), POI at g(t).
 void evaluate_visibility(SimulationResult& result, double altitude, const LineOfSight& line_of_sight);
