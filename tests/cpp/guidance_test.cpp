@@ -160,6 +160,27 @@ TEST(Steering, LyapunovIdentityOfLemma7) {
   }
 }
 
+// The integrator's lean command is the same law as steering(): random states, tiny heading errors,
+// errors near +-pi, saturated and not.
+TEST(Steering, LeanCommandEqualsTheFullLaw) {
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> angle(-kPiValue, kPiValue);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 20000; ++trial) {
+    RandomCase c = random_case(rng, trial % 2 == 0 ? 1 : -1);
+    c.gains.max_turn_rate = trial % 3 == 0 ? 0.3 : 1e9;
+    const double psi_d = vector_field(c.xi, c.orbit, c.gains).heading;
+    double psi = angle(rng);
+    if (trial % 4 == 1) psi = psi_d + 1e-9 * (unit(rng) - 0.5);
+    if (trial % 4 == 2) psi = psi_d + kPiValue - 1e-7 * unit(rng);
+    if (trial % 8 == 3) psi = psi_d;
+    const Vec3 q(c.xi.x(), c.xi.y(), psi + 2 * kPiValue * std::floor(4 * unit(rng) - 2));
+    const double full = steering(q, c.orbit, c.gains).command;
+    const double lean = steering_command(q, std::cos(q.z()), std::sin(q.z()), c.orbit, c.gains);
+    EXPECT_NEAR(lean, full, 1e-9 * (1.0 + std::abs(full))) << trial;
+  }
+}
+
 TEST(Steering, ShortWayRoundAndSaturation) {
   GuidanceGains gains;  // v = 20, max turn rate 0.4
   OrbitState orbit;

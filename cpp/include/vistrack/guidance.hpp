@@ -74,6 +74,12 @@ struct Steering {
 };
 Steering steering(const Vec3& q, const OrbitState& orbit, const GuidanceGains& gains);
 
+// Only the clamped command of steering(q, ...), for the integrator's right-hand side: the same
+// equations evaluated with fewer transcendental calls (the heading error from the dot and cross
+// products of the heading and the field). cos_psi, sin_psi: cos and sin of q.z().
+double steering_command(const Vec3& q, double cos_psi, double sin_psi, const OrbitState& orbit,
+                        const GuidanceGains& gains);
+
 // The Lyapunov term u_lyap of (86) given the field at the UAV and its heading error.
 double lyapunov_term(const VectorField& field, const OrbitState& orbit, double beta,
                      double heading_error);

@@ -137,6 +137,50 @@ Steering steering(const Vec3& q, const OrbitState& orbit, const GuidanceGains& g
   return s;
 }
 
+double steering_command(const Vec3& q, double cos_psi, double sin_psi, const OrbitState& orbit,
+                        const GuidanceGains& gains) {
+  // The equations of vector_field() and steering() above, in the same order.
+  const Vec2 d = q.head<2>() - orbit.center;
+  const double r = d.norm();
+  const double tiny = kCentreTolerance * std::max(1.0, orbit.radius);
+  const Vec2 e_r = r > tiny ? Vec2(d / r) : Vec2(cos_psi, sin_psi);
+  const Vec2 e_theta(-e_r.y(), e_r.x());
+  const double v = gains.speed;
+  const double beta = gains.beta;
+  const double r_dot = orbit.radius_rate;
+  const double g_r = orbit.center_velocity.dot(e_r);
+  const double g_theta = orbit.center_velocity.dot(e_theta);
+  const double margin = std::max(0.0, v - orbit.center_velocity.norm() - std::abs(r_dot));
+  const double bt = beta * (r - orbit.radius);
+  const double atan_bt = std::atan(bt);
+  const double shape = 1.0 / (1.0 + bt * bt);
+  const double u_r = -margin * kTwoOverPi * atan_bt + r_dot + g_r;                       // (74)
+  const double u_theta = gains.direction * std::sqrt(std::max(0.0, v * v - u_r * u_r));
+  const double r_safe = std::max(r, tiny);
+  const double theta_dot = (u_theta - g_theta) / r_safe;                                // (84)
+  double u_theta_safe = u_theta;
+  if (std::abs(u_theta_safe) < 1e-12 * v) u_theta_safe = gains.direction * 1e-12 * v;
+  const double heading_rate =
+      (-(4.0 / (kPi * kPi)) * atan_bt * beta * margin * margin * shape + r_safe * theta_dot * theta_dot) /
+      u_theta_safe;                                                                       // (83), (85)
+  // psi~ = q_psi - psi_d from the heading h and the unit field u / |u|: cos = h.u, sin = u x h.
+  const Vec2 u = u_r * e_r + u_theta * e_theta;
+  const double norm_u = u.norm();
+  const double c = (cos_psi * u.x() + sin_psi * u.y()) / norm_u;
+  const double s = (u.x() * sin_psi - u.y() * cos_psi) / norm_u;
+  const double error = std::atan2(s, c);
+  // (1 - cos e) / e and sin e / e from s and c without cancellation.
+  double one_minus_cos = c > 0.0 ? s * s / (1.0 + c) : 1.0 - c;
+  double omc = error == 0.0 ? 0.0 : one_minus_cos / error;
+  double sin_over = error == 0.0 ? 1.0 : s / error;
+  if (std::abs(error) < 1e-4) {  // series: s / e loses nothing, but keep the same limits
+    omc = 0.5 * error;
+    sin_over = 1.0 - error * error / 6.0;
+  }
+  const double lyapunov = beta * kTwoOverPi * atan_bt * shape * ((g_r + r_dot) * omc + u_theta * sin_over);  // (86)
+  return std::clamp(-gains.k_psi * error + heading_rate + lyapunov, -gains.max_turn_rate, gains.max_turn_rate);
+}
+
 namespace {
 
 // sqrt(v^2 - (g_dot . e_r + R_dot)^2), the tangential speed on the orbit; Lemma 5 makes it real.

@@ -115,9 +115,9 @@ SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0,
 
   Vec3 y = x0;
   auto next_output = outputs.begin();
-  for (std::size_t s = 0; s + 1 < boundaries.size(); ++s) {
-    const double a = boundaries[s];
-    const double b = boundaries[s + 1];
+  for (std::size_t i = 0; i + 1 < boundaries.size(); ++i) {
+    const double a = boundaries[i];
+    const double b = boundaries[i + 1];
     // Constant over the segment: POI velocity, R_dot; g and R linear from their values at a.
     const Vec2 g_a = plan.poi.position(a).head<2>();
     const Vec2 g_dot = plan.poi.velocity(a);
@@ -130,9 +130,11 @@ SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0,
       orbit.center_velocity = g_dot;
       orbit.radius = radius_a + radius_rate * (t - a);
       orbit.radius_rate = radius_rate;
-      dq[0] = v * std::cos(q[2]);  // (1)
-      dq[1] = v * std::sin(q[2]);
-      dq[2] = steering(q, orbit, gains).command;
+      const double c = std::cos(q[2]);
+      const double s = std::sin(q[2]);
+      dq[0] = v * c;  // (1)
+      dq[1] = v * s;
+      dq[2] = steering_command(q, c, s, orbit, gains);
     };
     // Samples in this segment, and always its end b: the state there starts the next segment.
     std::vector<double> t_eval;
