@@ -206,6 +206,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--atol", type=float, default=options.atol)
     p.add_argument("--max-step", type=float, default=options.max_step, help="s")
     p.add_argument("--output-step", type=float, default=options.output_step, help="s")
+    p.add_argument("--fixed-step", type=float, default=0.0, help="fixed integration step, s (0: adaptive)")
     p.add_argument("--baseline-radius", type=float, action="append", default=[],
                    help="also simulate constant-radius orbits of this radius (repeatable)")
     p.add_argument("--window", type=float, default=None, help="errors.png shows only the first WINDOW s")
@@ -251,7 +252,8 @@ def run(args: argparse.Namespace) -> int:
         (f"constant R = {r:g} m", _core.constant_radius_plan(plan.poi, r, uav)) for r in args.baseline_radius]
     for label, p in plans:
         start = time.perf_counter()
-        result = _core.simulate(p, uav, x0, control, None, options, line_of_sight=los)
+        result = _core.simulate(p, uav, x0, control, None, options, line_of_sight=los,
+                                fixed_step=args.fixed_step)
         seconds = time.perf_counter() - start
         m = metrics(result, args.converge_after)
         m["seconds"] = seconds

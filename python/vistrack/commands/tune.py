@@ -100,8 +100,8 @@ def run(args: argparse.Namespace) -> int:
     ax0.set_aspect("equal")
     ax0.set_xlabel("x relative to the POI (m), POI moving along +x")
     ax0.set_ylabel("y (m)")
-    ax0.set_title(f"beta = {args.beta:g}: R = {args.radius:g} m, dR/dt = {args.radius_rate:g} m/s, "
-                  f"v = {args.speed:g}, v_g = {args.poi_speed:g}")
+    ax0.set_title(f"beta = {args.beta:g}, R = {args.radius:g} m, dR/dt = {args.radius_rate:g} m/s,\n"
+                  f"v = {args.speed:g} m/s, v_g = {args.poi_speed:g} m/s, r >= {args.tau:g} R", fontsize=10)
     ax0.legend(fontsize=8, loc="upper right")
     ax1.loglog(betas, sweep, "o-", ms=3, label="max |dpsi_d/dt + u_lyap| over r >= tau R")
     ax1.axhline(limit, color="r", ls="--", label=f"v / r_min = {limit:.3g} rad/s")
