@@ -6,6 +6,14 @@ constant radii 11.2, 23.4 and 35 m, beside the paper's SITL numbers.
     python3 examples/campus_flight_test.py [--out campus_out] [--k-psi 20]
 
 The UAV starts on each reference orbit (ccw), so the four runs differ only in the orbit.
+
+Two readings of the site model, both stated in the output:
+- the robot path's waypoints are at z = 0.5 m, but the campus terrain is not flat (-2.1 to +1.7 m
+  along the path), so part of that path lies under the terrain and cannot be seen from anywhere.
+  The POI is put on the terrain surface + 0.5 m (the path densified to 2 m, heights from a
+  downward ray), as on the real site;
+- h_UAV = 35 m is taken above the site (world z = 35 m: above the 31 m tree boxes, as the paper
+  requires), not above the mesh's lowest vertex (-8.6 m, away from the site).
 """
 
 from __future__ import annotations
@@ -32,6 +40,19 @@ PAPER = {"visibility orbit R(t)": 99.3, "constant R = 11.2 m": 100.0, "constant 
          "constant R = 35 m": 64.0}
 
 
+def surface_path(scene, waypoints: np.ndarray, speed: float, step: float = 2.0, lift: float = 0.5):
+    """The path densified every `step` m with z = terrain surface + `lift` (downward rays from 10 m)."""
+    points = []
+    for a, b in zip(waypoints[:-1, :2], waypoints[1:, :2]):
+        n = int(np.ceil(np.linalg.norm(b - a) / step))
+        points.extend(a + (b - a) * k / n for k in range(n))
+    points.append(waypoints[-1, :2])
+    points = np.array(points)
+    down = np.array([[0.0, 0.0, -1.0]])
+    z = [10.0 - scene.first_hits(np.array([p[0], p[1], 10.0]), down, 100.0)[0] for p in points]
+    return vt.PoiPath(np.column_stack([points, np.array(z) + lift]), speed)
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", default="campus_out")
@@ -44,8 +65,10 @@ def main() -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     env = vt.Environment.from_mesh(str(DATA / "campus.obj"), "y")
-    poi = vt.PoiPath.from_csv(str(DATA / "flight_test_path.csv"), 0.35)
-    uav = vt.Uav(speed=3.0, min_turn_radius=5.0, altitude=35.0)
+    scene = vt._core.VisibilityScene(env)
+    poi = surface_path(scene, np.loadtxt(DATA / "flight_test_path.csv", delimiter=","), 0.35)
+    # Altitudes are measured from the scene's ground level (the lowest vertex): world z = 35 m.
+    uav = vt.Uav(speed=3.0, min_turn_radius=5.0, altitude=35.0 - scene.ground_level)
     sensor = vt.Sensor(d_max=50.0)
     planning = vt.Planning(spacing=20.0, cutoff=1e5, resolution_deg=args.resolution)
     control = vt.Control(beta=0.5, k_psi=args.k_psi)
@@ -60,7 +83,7 @@ def main() -> int:
         orbit = vt.OrbitState(center=np.asarray(p.centers)[0], center_velocity=np.asarray(poi.velocity(0.0)),
                               radius=p.radii[0], radius_rate=p.radius_rate(0.0))
         x0 = vt.orbit_configuration(0.0, orbit, uav.speed, 1)
-        result = vt.simulate(p, uav, x0, control, env)
+        result = vt.simulate(p, uav, x0, control, scene)
         runs.append((label, p, result))
         m = metrics(result, 30.0)
         rows.append(dict(orbit=label, visibility=100 * m["visibility_fraction"], paper=PAPER[label],
