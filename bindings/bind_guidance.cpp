@@ -102,7 +102,7 @@ void bind_guidance(py::module_& m) {
   m.def("sinc", &sinc, py::arg("x"), "sin(x) / x, 1 at x = 0, accurate near 0.");
   m.def("orbit_polar_rate", &orbit_polar_rate, py::arg("theta"), py::arg("orbit"), py::arg("speed"),
         py::arg("direction") = 1, "theta_dot of (13) for a vehicle remaining on the orbit.");
-  m.def("orbit_curvature", &orbit_curvature, py::arg("theta"), py::arg("orbit"), py::arg("speed"),
+  m.def("orbit_signed_curvature", &orbit_signed_curvature, py::arg("theta"), py::arg("orbit"), py::arg("speed"),
         py::arg("direction") = 1,
         "Signed path curvature (31) of a vehicle remaining on the orbit at polar angle theta "
         "(Theorem 1: steering with v * this keeps it there).");

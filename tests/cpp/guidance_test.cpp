@@ -217,7 +217,7 @@ TEST(OrbitTheory, Theorem1VehicleStaysOnTheOrbit) {
     auto rhs = [&](double t, const OdeVector<3>& q, OdeVector<3>& dq) {
       const OrbitState o = moving_orbit(orbit0, t);
       const double theta = std::atan2(q.y() - o.center.y(), q.x() - o.center.x());
-      dq << c.v * std::cos(q.z()), c.v * std::sin(q.z()), c.v * orbit_curvature(theta, o, c.v, c.direction);
+      dq << c.v * std::cos(q.z()), c.v * std::sin(q.z()), c.v * orbit_signed_curvature(theta, o, c.v, c.direction);
     };
     OdeOptions options;
     options.rtol = 1e-11;
@@ -256,7 +256,7 @@ TEST(OrbitTheory, Lemma6MaximumCurvature) {
     double best = 0.0, at = 0.0;
     for (int k = 0; k < 20000; ++k) {
       const double theta = 2 * kPiValue * k / 20000.0;
-      const double kappa = std::abs(orbit_curvature(theta, orbit, v, direction));
+      const double kappa = std::abs(orbit_signed_curvature(theta, orbit, v, direction));
       if (kappa > best) { best = kappa; at = theta; }
     }
     const double bound = lemma6_curvature_bound(orbit.radius, v, vg);
@@ -274,8 +274,8 @@ TEST(OrbitTheory, Lemma5ViolationIsAnError) {
   orbit.center_velocity = Vec2(5.0, 0.0);
   orbit.radius = 100.0;
   orbit.radius_rate = 16.0;  // v - v_g = 15 at v = 20
-  EXPECT_THROW(orbit_curvature(0.0, orbit, 20.0, 1), Error);
-  EXPECT_NO_THROW(orbit_curvature(kPiValue, orbit, 20.0, 1));  // g_dot . e_r = -5 there
+  EXPECT_THROW(orbit_signed_curvature(0.0, orbit, 20.0, 1), Error);
+  EXPECT_NO_THROW(orbit_signed_curvature(kPiValue, orbit, 20.0, 1));  // g_dot . e_r = -5 there
   try {
     orbit_polar_rate(0.0, orbit, 20.0, 1);
   } catch (const Error& e) {

@@ -60,7 +60,7 @@ def test_lemma6_maximum_curvature():
     theta = np.linspace(0, 2 * math.pi, 20001)
     for v, vg, radius in [(20.0, 5.0, 150.0), (3.0, 0.35, 20.0), (10.0, 9.9, 40.0)]:
         orbit = vt.OrbitState(center_velocity=np.array([vg * math.cos(0.4), vg * math.sin(0.4)]), radius=radius)
-        kappa = np.array([vt.orbit_curvature(a, orbit, v) for a in theta])
+        kappa = np.array([vt.orbit_signed_curvature(a, orbit, v) for a in theta])
         assert kappa.max() == pytest.approx(vt.lemma6_curvature_bound(radius, v, vg), rel=1e-7)
         assert kappa.max() == pytest.approx((vg + v) ** 2 / (radius * v * v), rel=1e-7)
 
@@ -97,7 +97,7 @@ def test_bad_gains_name_the_field():
     with pytest.raises(vt.VistrackError, match="gains.direction"):
         vt.GuidanceGains(direction=2)
     with pytest.raises(vt.VistrackError, match="orbit.radius_rate"):
-        vt.orbit_curvature(0.0, vt.OrbitState(center_velocity=np.array([5.0, 0.0]), radius=10.0, radius_rate=16.0), 20.0)
+        vt.orbit_signed_curvature(0.0, vt.OrbitState(center_velocity=np.array([5.0, 0.0]), radius=10.0, radius_rate=16.0), 20.0)
 
 
 # --- the integrator against scipy's RK45 (the same method): same steps, same values ---------

@@ -95,7 +95,7 @@ double sinc(double x);
 // theta_dot of (13) and the signed curvature of the path, +-(31) (+ for direction +1).
 // Throws Error when v^2 < (g_dot . e_r + R_dot)^2, i.e. Lemma 5 is violated at theta.
 double orbit_polar_rate(double theta, const OrbitState& orbit, double speed, int direction);
-double orbit_curvature(double theta, const OrbitState& orbit, double speed, int direction);
+double orbit_signed_curvature(double theta, const OrbitState& orbit, double speed, int direction);
 
 // Initial configuration (38)-(40) on the orbit at polar angle theta_0.
 Vec3 orbit_configuration(double theta0, const OrbitState& orbit, double speed, int direction);

@@ -212,7 +212,7 @@ double orbit_polar_rate(double theta, const OrbitState& orbit, double speed, int
          orbit.radius;
 }
 
-double orbit_curvature(double theta, const OrbitState& orbit, double speed, int direction) {
+double orbit_signed_curvature(double theta, const OrbitState& orbit, double speed, int direction) {
   // (31) with the sign of the circulation. Re-derived from Lemma 2: a = g_dot . e_r + R_dot,
   // b = +-sqrt(v^2 - a^2), a_dot = theta_dot g_dot . e_theta, so kappa_s = R theta_dot^2 / (v b).
   // (The printed (45) has g_dot . e_theta inside the root; (13) and (31) have g_dot . e_r.)
