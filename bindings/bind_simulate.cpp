@@ -1,11 +1,129 @@
+#include <pybind11/eigen.h>
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
 #include "bindings.hpp"
+#include "vistrack/environment.hpp"
+#include "vistrack/error.hpp"
+#include "vistrack/simulate.hpp"
 
 namespace py = pybind11;
 
 namespace vistrack::bindings {
 
+namespace {
+
+py::array_t<double> to_numpy(const std::vector<double>& values) {
+  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+// A Python callable line_of_sight(from (n, 3), to (n, 3)) -> bool array (n,), called with the GIL.
+LineOfSight python_line_of_sight(py::function function) {
+  return [function](const Points3& from, const Points3& to) {
+    py::gil_scoped_acquire acquire;
+    const auto answer = function(from, to).cast<py::array_t<bool, py::array::c_style | py::array::forcecast>>();
+    std::vector<std::uint8_t> out(static_cast<std::size_t>(answer.size()));
+    for (py::ssize_t i = 0; i < answer.size(); ++i) out[static_cast<std::size_t>(i)] = answer.data()[i] ? 1 : 0;
+    return out;
+  };
+}
+
+}  // namespace
+
 void bind_simulate(py::module_& m) {
-  (void)m;  // filled in by the simulate area
+  py::class_<SimulationResult>(m, "SimulationResult", "Closed-loop trajectory and its errors (section VI).")
+      .def_property_readonly("t", [](const SimulationResult& r) { return to_numpy(r.t); }, "output times (n,), s")
+      .def_readonly("state", &SimulationResult::state, "(n, 3): x, y, psi (psi as integrated, unwrapped)")
+      .def_property_readonly("desired_heading", [](const SimulationResult& r) { return to_numpy(r.desired_heading); },
+                             "psi_d (77) at each sample, rad")
+      .def_property_readonly("desired_heading_rate",
+                             [](const SimulationResult& r) { return to_numpy(r.desired_heading_rate); },
+                             "dpsi_d/dt along the field (85), rad/s")
+      .def_property_readonly("radial_error", [](const SimulationResult& r) { return to_numpy(r.radial_error); },
+                             "r - R, m")
+      .def_property_readonly("heading_error", [](const SimulationResult& r) { return to_numpy(r.heading_error); },
+                             "psi - psi_d wrapped to (-pi, pi], rad")
+      .def_property_readonly("control", [](const SimulationResult& r) { return to_numpy(r.control); },
+                             "applied turn rate u_psi (clamped to +-v/r_min), rad/s")
+      .def_property_readonly("control_unsaturated",
+                             [](const SimulationResult& r) { return to_numpy(r.control_unsaturated); },
+                             "the steering law (86) before the clamp, rad/s")
+      .def_readonly("poi", &SimulationResult::poi, "(n, 3) POI position g(t)")
+      .def_property_readonly("orbit_radius", [](const SimulationResult& r) { return to_numpy(r.orbit_radius); },
+                             "R(t), m")
+      .def_property_readonly("restart_times", [](const SimulationResult& r) { return to_numpy(r.restart_times); },
+                             "segment boundaries where the integrator restarted, s")
+      .def_property_readonly(
+          "visible",
+          [](const SimulationResult& r) -> py::object {
+            if (r.visible.empty() && !r.visibility_fraction) return py::none();
+            py::array_t<bool> out(static_cast<py::ssize_t>(r.visible.size()));
+            for (std::size_t i = 0; i < r.visible.size(); ++i) out.mutable_data()[i] = r.visible[i] != 0;
+            return std::move(out);
+          },
+          "line of sight UAV -> POI at each sample (bool array), or None when not evaluated")
+      .def_readonly("visibility_fraction", &SimulationResult::visibility_fraction,
+                    "fraction of samples with line of sight, or None")
+      .def_readonly("statistics", &SimulationResult::statistics, "integrator work (all segments)")
+      .def("to_csv", &trajectory_csv,
+           "The trajectory as CSV text (header t,x,y,psi,psi_d,psi_d_rate,radial_error,heading_error,"
+           "u_psi,u_psi_unsaturated,poi_x,poi_y,poi_z,orbit_radius[,visible]), as vistrack_sim writes it.");
+
+  m.def(
+      "simulate",
+      [](const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control, py::object env,
+         const SimulationOptions& options, std::optional<py::function> line_of_sight, double fixed_step) {
+        LineOfSight los;
+        if (!env.is_none()) {
+          throw Error("env: visibility evaluation needs the visibility area (Embree scene); pass line_of_sight");
+        }
+        if (line_of_sight) los = python_line_of_sight(*line_of_sight);
+        py::gil_scoped_release release;
+        return simulate(plan, uav, x0, control, options, los, fixed_step);
+      },
+      py::arg("plan"), py::arg("uav"), py::arg("x0"), py::arg("control"), py::arg("env") = py::none(),
+      py::arg("options") = SimulationOptions{}, py::kw_only(), py::arg("line_of_sight") = py::none(),
+      py::arg("fixed_step") = 0.0,
+      "Closed loop of section VI: the Dubins vehicle (1) from x0 = (x, y, psi) steered by (86) around "
+      "the plan's time-varying orbit, Dormand-Prince 5(4) restarted at each segment boundary "
+      "(options.rtol/atol/max_step; fixed_step > 0 for fixed steps), sampled every "
+      "options.output_step. With env (or a line_of_sight(from, to) -> bool array callable), also "
+      "the line of sight from the UAV at uav.altitude to the POI at every sample. Releases the GIL.");
+
+  py::class_<TuningResult>(m, "TuningResult", "Grid search of max |dpsi_d/dt + u_lyap| (section V.D).")
+      .def_readonly("max_turn_rate", &TuningResult::max_turn_rate, "max |dpsi_d/dt + u_lyap|, rad/s")
+      .def_readonly("at_r", &TuningResult::at_r, "distance to the POI of the maximum, m")
+      .def_readonly("at_theta", &TuningResult::at_theta, "polar angle of the maximum from the POI's motion, rad")
+      .def_readonly("at_heading_error", &TuningResult::at_heading_error, "heading error of the maximum, rad")
+      .def_property_readonly("radii", [](const TuningResult& r) { return to_numpy(r.radii); }, "grid radii, m")
+      .def_property_readonly("angles", [](const TuningResult& r) { return to_numpy(r.angles); }, "grid angles, rad")
+      .def_property_readonly(
+          "map",
+          [](const TuningResult& r) {
+            py::array_t<double> out({static_cast<py::ssize_t>(r.radii.size()), static_cast<py::ssize_t>(r.angles.size())});
+            std::copy(r.map.begin(), r.map.end(), out.mutable_data());
+            return out;
+          },
+          "(num_radii, num_angles): max over heading errors at each grid point, rad/s");
+
+  m.def(
+      "tune_turn_rate",
+      [](double radius, double radius_rate, double speed, double poi_speed, double beta, const std::string& direction,
+         double tau, double r_max_factor, int num_radii, int num_angles, int num_heading_errors) {
+        const int sign = circulation_sign(direction);
+        TuningGrid grid{tau, r_max_factor, num_radii, num_angles, num_heading_errors};
+        py::gil_scoped_release release;
+        return tune_turn_rate(radius, radius_rate, speed, poi_speed, beta, sign, grid);
+      },
+      py::arg("radius"), py::arg("radius_rate"), py::arg("speed"), py::arg("poi_speed"), py::arg("beta"),
+      py::kw_only(), py::arg("direction") = "ccw", py::arg("tau") = 1.0, py::arg("r_max_factor") = 4.0,
+      py::arg("num_radii") = 200, py::arg("num_angles") = 360, py::arg("num_heading_errors") = 73,
+      "Largest |dpsi_d/dt + u_lyap| (85), (106) over r in [tau R, r_max_factor R], all polar angles and "
+      "heading errors, for orbit radius R, dR/dt, UAV speed v, POI speed v_g and beta (Fig. 9). "
+      "Compare with v / r_min.");
+  m.def("segment_boundaries", &segment_boundaries, py::arg("plan"),
+        "Times where dR/dt or the POI velocity may jump: plan samples and path nodes.");
 }
 
 }  // namespace vistrack::bindings

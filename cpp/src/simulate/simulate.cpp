@@ -1,0 +1,199 @@
+// Closed-loop simulation of section VI: the Dubins vehicle (1) under the steering law (86).
+#include "vistrack/simulate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "vistrack/error.hpp"
+
+namespace vistrack {
+
+namespace {
+
+double plan_end(const OrbitPlan& plan) { return std::min(plan.times.back(), plan.poi.duration()); }
+
+void validate_plan(const OrbitPlan& plan, const Uav& uav) {
+  if (plan.times.size() < 2)
+    detail::fail_field("plan.times", plan.times.size(), "a plan needs at least two samples");
+  if (plan.radii.size() != plan.times.size())
+    detail::fail_field("plan.radii", plan.radii.size(),
+                       "must have one radius per time (" + std::to_string(plan.times.size()) + ")");
+  for (std::size_t k = 0; k < plan.times.size(); ++k) {
+    require_finite(plan.times[k], "plan.times[" + std::to_string(k) + "]");
+    require_positive(plan.radii[k], "plan.radii[" + std::to_string(k) + "]");
+    if (k > 0 && !(plan.times[k] > plan.times[k - 1]))
+      detail::fail_field("plan.times[" + std::to_string(k) + "]", plan.times[k], "times must increase");
+  }
+  if (!(plan_end(plan) > plan.times.front()))
+    detail::fail_field("plan.times[0]", plan.times.front(), "the plan starts after the POI path ends");
+  const double poi_speed = plan.poi.speed();
+  if (!(uav.speed > poi_speed))
+    detail::fail_field("uav.speed", uav.speed,
+                       "must exceed the POI speed " + detail::to_text(poi_speed) + " to orbit it");
+  // Lemma 5: |R_dot| <= v - v_g on every segment, or no constant-speed vehicle can follow it.
+  const double limit = uav.speed - poi_speed;
+  for (std::size_t k = 0; k + 1 < plan.times.size(); ++k) {
+    const double rate = (plan.radii[k + 1] - plan.radii[k]) / (plan.times[k + 1] - plan.times[k]);
+    if (std::abs(rate) > limit * (1.0 + 1e-9) + 1e-12)
+      detail::fail_field("plan.radii[" + std::to_string(k + 1) + "]", plan.radii[k + 1],
+                         "dR/dt = " + detail::to_text(rate) + " on segment " + std::to_string(k) +
+                             " exceeds v - v_g = " + detail::to_text(limit) + " (Lemma 5)");
+  }
+}
+
+std::vector<double> output_times(double t0, double t1, double step) {
+  std::vector<double> times;
+  const double count = std::floor((t1 - t0) / step + 1e-9);
+  if (count > 5e7) detail::fail_field("simulation.output_step", step, "too many output samples for the span");
+  const auto n = static_cast<std::size_t>(count);
+  times.reserve(n + 2);
+  for (std::size_t k = 0; k <= n; ++k) times.push_back(t0 + static_cast<double>(k) * step);
+  if (t1 - times.back() > 1e-9 * step) times.push_back(t1);
+  else times.back() = t1;
+  return times;
+}
+
+}  // namespace
+
+std::vector<double> segment_boundaries(const OrbitPlan& plan) {
+  const double t0 = plan.times.front();
+  const double t1 = plan_end(plan);
+  std::vector<double> times{t0, t1};
+  for (double t : plan.times)
+    if (t > t0 && t < t1) times.push_back(t);
+  for (double t : plan.poi.node_times())
+    if (t > t0 && t < t1) times.push_back(t);
+  std::sort(times.begin(), times.end());
+  // Boundaries closer than this are one boundary (a plan sample placed on a path node).
+  const double merge = 1e-9 * std::max(1.0, t1 - t0);
+  std::vector<double> unique;
+  for (double t : times)
+    if (unique.empty() || t - unique.back() > merge) unique.push_back(t);
+  if (unique.back() != t1) unique.back() = t1;
+  return unique;
+}
+
+OrbitState orbit_state(const OrbitPlan& plan, double segment_start, double t) {
+  // Within a segment g and R are exactly linear (Definitions 1 and 2), so they are evaluated
+  // from the segment start with the segment's rates: no clamping or switching inside a step.
+  const Vec2 g0 = plan.poi.position(segment_start).head<2>();
+  OrbitState orbit;
+  orbit.center_velocity = plan.poi.velocity(segment_start);
+  orbit.radius_rate = plan.radius_rate(segment_start);
+  orbit.center = g0 + orbit.center_velocity * (t - segment_start);
+  orbit.radius = plan.radius(segment_start) + orbit.radius_rate * (t - segment_start);
+  return orbit;
+}
+
+SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
+                          const SimulationOptions& options, const LineOfSight& line_of_sight,
+                          double fixed_step) {
+  uav.validate();
+  control.validate();
+  options.validate();
+  require_non_negative(fixed_step, "fixed_step");
+  for (int i = 0; i < 3; ++i) require_finite(x0[i], "x0[" + std::to_string(i) + "]");
+  validate_plan(plan, uav);
+  const GuidanceGains gains = GuidanceGains::from(uav, control);
+
+  const std::vector<double> boundaries = segment_boundaries(plan);
+  const std::vector<double> outputs = output_times(boundaries.front(), boundaries.back(), options.output_step);
+
+  OdeOptions ode;
+  ode.rtol = options.rtol;
+  ode.atol = options.atol;
+  ode.max_step = options.max_step;
+  ode.fixed_step = fixed_step;
+
+  SimulationResult result;
+  result.restart_times = boundaries;
+  std::vector<Vec3> states;
+  std::vector<double> sample_segment;  // segment start each sample was produced in
+  states.reserve(outputs.size());
+  result.t.reserve(outputs.size());
+
+  Vec3 y = x0;
+  auto next_output = outputs.begin();
+  for (std::size_t i = 0; i + 1 < boundaries.size(); ++i) {
+    const double a = boundaries[i];
+    const double b = boundaries[i + 1];
+    // Constant over the segment: POI velocity, R_dot; g and R linear from their values at a.
+    const Vec2 g_a = plan.poi.position(a).head<2>();
+    const Vec2 g_dot = plan.poi.velocity(a);
+    const double radius_a = plan.radius(a);
+    const double radius_rate = plan.radius_rate(a);
+    const double v = uav.speed;
+    auto rhs = [&](double t, const Vec3& q, Vec3& dq) {
+      OrbitState orbit;
+      orbit.center = g_a + g_dot * (t - a);
+      orbit.center_velocity = g_dot;
+      orbit.radius = radius_a + radius_rate * (t - a);
+      orbit.radius_rate = radius_rate;
+      const double c = std::cos(q[2]);
+      const double s = std::sin(q[2]);
+      dq[0] = v * c;  // (1)
+      dq[1] = v * s;
+      dq[2] = steering_command(q, c, s, orbit, gains);
+    };
+    // Samples in this segment, and always its end b: the state there starts the next segment.
+    std::vector<double> t_eval;
+    while (next_output != outputs.end() && *next_output <= b) t_eval.push_back(*next_output++);
+    const bool end_is_output = !t_eval.empty() && t_eval.back() == b;
+    if (!end_is_output) t_eval.push_back(b);
+    const OdeResult<3> segment = solve_ode<3>(rhs, a, b, y, ode, t_eval);
+    y = segment.y.back();
+    const std::size_t kept = end_is_output ? segment.t.size() : segment.t.size() - 1;
+    for (std::size_t k = 0; k < kept; ++k) {
+      result.t.push_back(segment.t[k]);
+      states.push_back(segment.y[k]);
+      sample_segment.push_back(a);
+    }
+    result.statistics += segment.statistics;
+  }
+
+  const std::size_t n = result.t.size();
+  result.state.resize(static_cast<Eigen::Index>(n), 3);
+  result.poi.resize(static_cast<Eigen::Index>(n), 3);
+  result.desired_heading.resize(n);
+  result.desired_heading_rate.resize(n);
+  result.radial_error.resize(n);
+  result.heading_error.resize(n);
+  result.control.resize(n);
+  result.control_unsaturated.resize(n);
+  result.orbit_radius.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto row = static_cast<Eigen::Index>(k);
+    const OrbitState orbit = orbit_state(plan, sample_segment[k], result.t[k]);
+    const Steering s = steering(states[k], orbit, gains);
+    result.state.row(row) = states[k].transpose();
+    result.poi.row(row) = plan.poi.position(result.t[k]).transpose();
+    result.desired_heading[k] = s.field.heading;
+    result.desired_heading_rate[k] = s.field.heading_rate;
+    result.radial_error[k] = s.field.radial_error;
+    result.heading_error[k] = s.heading_error;
+    result.control[k] = s.command;
+    result.control_unsaturated[k] = s.unsaturated;
+    result.orbit_radius[k] = orbit.radius;
+  }
+  if (line_of_sight) evaluate_visibility(result, uav.altitude, line_of_sight);
+  return result;
+}
+
+void evaluate_visibility(SimulationResult& result, double altitude, const LineOfSight& line_of_sight) {
+  require_finite(altitude, "uav.altitude");
+  if (!line_of_sight) throw Error("line_of_sight: no line-of-sight function given");
+  const Eigen::Index n = result.state.rows();
+  Points3 from(n, 3);
+  from.leftCols<2>() = result.state.leftCols<2>();
+  from.col(2).setConstant(altitude);
+  result.visible = line_of_sight(from, result.poi);
+  if (result.visible.size() != static_cast<std::size_t>(n))
+    detail::fail_field("line_of_sight", result.visible.size(),
+                       "returned a different number of answers than the " + std::to_string(n) + " samples");
+  std::size_t count = 0;
+  for (std::uint8_t v : result.visible) count += v != 0;
+  result.visibility_fraction = n > 0 ? static_cast<double>(count) / static_cast<double>(n) : 0.0;
+}
+
+}  // namespace vistrack
