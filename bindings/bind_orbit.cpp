@@ -147,7 +147,9 @@ void bind_orbit(py::module_& m) {
           },
           py::arg("poi"), py::arg("uav"), py::arg("planning"), py::arg("progress") = py::none(),
           "Adaptive VVs, VPs at h_UAV, MaxRadius and Algorithm 1: a VisibilityOrbitPlan.")
-      .def_property_readonly("cached_volumes", &OrbitPlanner::cached_volumes, "VVs held in the cache.");
+      .def_property_readonly("cached_volumes", &OrbitPlanner::cached_volumes, "VVs held in the cache.")
+      .def_property_readonly("scene", &OrbitPlanner::scene, py::return_value_policy::reference_internal,
+                             "The planner's Embree scene (for line-of-sight queries on the same city).");
   m.def(
       "plan_orbits",
       [wrap_progress](const Environment& env, const PoiPath& poi, const Uav& uav, const Sensor& sensor,

@@ -151,10 +151,9 @@ def _finite(value: float) -> float | None:
 
 
 def _metrics(result: RunResult) -> dict[str, Any]:
+    from .commands.simulate import metrics as simulation_metrics
+
     plan, sim, s = result.plan, result.simulation, result.scenario
-    radial = np.abs(np.asarray(sim.radial_error))
-    t = np.asarray(sim.t)
-    settled = t >= min(20.0, 0.25 * t[-1])
     metrics: dict[str, Any] = {
         "scenario": s.name,
         "environment": s.environment.describe(),
@@ -174,15 +173,7 @@ def _metrics(result: RunResult) -> dict[str, Any]:
             "max_metric_m3": max(plan.metric) if len(plan.metric) else 0.0,
             "cutoff_m3": s.planning.cutoff,
         },
-        "simulation": {
-            "duration_s": float(t[-1] - t[0]),
-            "samples": int(t.size),
-            "visibility_fraction": _finite(sim.visibility_fraction),
-            "max_abs_radial_error_after_settling_m": float(radial[settled].max()) if settled.any() else None,
-            "mean_abs_radial_error_after_settling_m": float(radial[settled].mean()) if settled.any() else None,
-            "max_abs_control_rad_s": float(np.abs(np.asarray(sim.control)).max()),
-            "turn_rate_limit_rad_s": s.uav.speed / s.uav.min_turn_radius,
-        },
+        "simulation": simulation_metrics(sim),
         "baselines": {f"{r:g}": {"radius_m": r, "visibility_fraction": _finite(b.visibility_fraction)}
                       for r, b in result.baselines.items()},
         "timings_s": {k: round(v, 4) for k, v in result.timings.items()},
