@@ -39,17 +39,26 @@ struct Interval {
   double far = 0.0;
   Surface near_surface = Surface::radial;
   Surface far_surface = Surface::radial;
+  // 1/near and 1/far without clamping (<= 0: the band is never entered). For a plane z = c the
+  // inverse distance along g + t d is d.z / (c - g.z), linear in d: the shell mesh interpolates
+  // these to find where the visible interval closes between two directions.
+  double inv_near = 0.0;
+  double inv_far = 0.0;
 };
+
+constexpr double kHugeInverse = 1e30;  // 1/t for t = 0 (kept finite for the interpolation)
 
 // The visible part of the ray g + t d (|d| = 1, d.z = sin_el) given the first obstacle hit.
 Interval visible_interval(const Setup& s, double sin_el, double obstacle_hit) {
   Interval iv;
   iv.far = std::min(s.d_max, obstacle_hit);
+  iv.inv_far = 1.0 / iv.far;
   if (sin_el < 0.0) {
     const double t_ground = std::max(0.0, (s.ground - s.g.z()) / sin_el);
     if (t_ground < iv.far) {
       iv.far = t_ground;
       iv.far_surface = Surface::ground;
+      iv.inv_far = t_ground > 0.0 ? 1.0 / t_ground : kHugeInverse;
     }
   }
   if (s.has_band) {
@@ -57,6 +66,7 @@ Interval visible_interval(const Setup& s, double sin_el, double obstacle_hit) {
     double exit = kInf;
     Surface enter_surface = Surface::radial;
     Surface exit_surface = Surface::radial;
+    double z_enter = s.low, z_exit = s.high;  // planes met first and last going up
     if (sin_el > 0.0) {
       enter = (s.low - s.g.z()) / sin_el;
       exit = (s.high - s.g.z()) / sin_el;
@@ -77,6 +87,13 @@ Interval visible_interval(const Setup& s, double sin_el, double obstacle_hit) {
     if (!s.poi_in_band && enter > iv.near) {
       iv.near = enter;
       iv.near_surface = enter_surface;
+    }
+    if (!s.poi_in_band) {
+      // The POI is below (or above) the band: it is entered through the near plane and left
+      // through the far one, for upward (downward) rays only.
+      if (s.g.z() > s.high) std::swap(z_enter, z_exit);
+      iv.inv_near = sin_el / (z_enter - s.g.z());
+      iv.inv_far = std::max(iv.inv_far, sin_el / (z_exit - s.g.z()));
     }
   }
   return iv;
@@ -353,6 +370,8 @@ TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const Di
   std::vector<char> alive(static_cast<std::size_t>(nv));
   for (int v = 0; v < nv; ++v) alive[v] = corner[v].far - corner[v].near > alive_gap ? 1 : 0;
 
+  // A live corner is live in both senses (a positive gap, and 1/far < 1/near for the contour).
+  for (int v = 0; v < nv; ++v) alive[v] = alive[v] && corner[v].inv_far < corner[v].inv_near;
   MeshBuilder out(s.g, 5 * static_cast<Eigen::Index>(nv), 8 * static_cast<Eigen::Index>(nv));
   std::vector<int> outer(static_cast<std::size_t>(nv), -1), inner(static_cast<std::size_t>(nv), -1);
   auto outer_of = [&](int v) {
@@ -363,12 +382,10 @@ TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const Di
     if (inner[v] < 0) inner[v] = out.add(point_on(s, dirs.corner(v), corner[v].near, corner[v].near_surface));
     return inner[v];
   };
-  // 1/far and 1/near of a corner; a dead corner's far is capped at its near (gap <= 0).
+  // 1/far and 1/near of a corner, linear in the direction for the band and ground planes.
   auto inverse_radii = [&](int v, double& inv_far, double& inv_near) {
-    const double near = corner[v].near;
-    const double far = alive[v] ? corner[v].far : std::min(corner[v].far, near);
-    inv_near = std::isfinite(near) && near > 0.0 ? 1.0 / near : 0.0;
-    inv_far = far > 0.0 ? 1.0 / far : 1e12;
+    inv_far = corner[v].inv_far;
+    inv_near = corner[v].inv_near;
   };
   // Contour vertex on the edge from live corner u to dead corner w, shared by both triangles.
   std::unordered_map<std::uint64_t, int> contour;
