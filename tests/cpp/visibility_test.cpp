@@ -111,6 +111,8 @@ TEST(VisibilityVolume, OpenFieldMatchesAnalyticVolume) {
       {Vec3(0, 0, 30), std::nullopt},            // POI above the ground: ball cut below
       {Vec3(0, 0, 0), std::make_pair(0.0, 100.0)},   // band from the ground
       {Vec3(0, 0, 20), std::make_pair(10.0, 250.0)},  // POI inside the band
+      {Vec3(0, 0, 20), std::make_pair(10.0, 60.0)},   // a thin band around the POI
+      {Vec3(0, 0, 100), std::make_pair(20.0, 60.0)},  // band below the POI
   };
   const double r = 400.0;
   for (const Case& c : cases) {
@@ -118,9 +120,11 @@ TEST(VisibilityVolume, OpenFieldMatchesAnalyticVolume) {
     const double lo = c.band ? c.band->first : 0.0;
     const double hi = c.band ? c.band->second : 1e9;
     const double exact = ball_slab_volume(r, c.g.z(), std::max(lo, 0.0), hi);
-    const std::string what = "g.z " + std::to_string(c.g.z()) + (c.band ? " band" : "");
-    EXPECT_NEAR(vv.volume / exact, 1.0, 0.005) << what;
-    EXPECT_NEAR(vv.grid_volume() / exact, 1.0, 0.005) << what;
+    const std::string what = "g.z " + std::to_string(c.g.z()) + (c.band ? " band " + std::to_string(c.band->first) : "");
+    // The issue asks for 0.5%; the mesh (vertex rows on the caps' rims) does 0.1%. The cell-centre
+    // grid cuts rims across a cell: 1% on thin bands.
+    EXPECT_NEAR(vv.volume / exact, 1.0, 0.001) << what;
+    EXPECT_NEAR(vv.grid_volume() / exact, 1.0, 0.01) << what;
     expect_valid(vv, what);
     EXPECT_EQ(vv.near.size(), vv.grid.size());
     // Band caps carry exact z: every vertex lies inside the band and the ground.
@@ -360,7 +364,8 @@ void random_volumes_are_valid(const Environment& env, int count, std::uint64_t s
     const double d_max = 30.0 + 470.0 * unit(rng);
     std::optional<std::pair<double, double>> band;
     if (unit(rng) > 0.3) band = std::make_pair(g.z() - 10.0 + 60.0 * unit(rng), g.z() + 60.0 + 240.0 * unit(rng));
-    const VisibilityVolume vv = visibility_volume(scene, g, d_max, band, resolutions[rng() % resolutions.size()]);
+    const double res = resolutions[rng() % resolutions.size()];
+    const VisibilityVolume vv = visibility_volume(scene, g, d_max, band, res);
     ++made;
     for (double f : vv.far) ASSERT_LE(f, d_max);
     if (vv.mesh.faces.rows() == 0) continue;
@@ -368,7 +373,9 @@ void random_volumes_are_valid(const Environment& env, int count, std::uint64_t s
     what << "g " << g.transpose() << " d_max " << d_max << " band " << (band ? band->first : -1) << " "
          << (band ? band->second : -1);
     expect_valid(vv, what.str());
-    EXPECT_NEAR(vv.volume / vv.grid_volume(), 1.0, 0.1) << what.str();
+    // Two discretisations of one VV (cell rays vs corner rays): close, looser on coarse grids
+    // where a thin band spans few cells.
+    EXPECT_NEAR(vv.volume / vv.grid_volume(), 1.0, 0.05 * res) << what.str();
   }
 }
 
