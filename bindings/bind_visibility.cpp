@@ -124,8 +124,7 @@ void bind_visibility(py::module_& m) {
           },
           py::arg("a"), py::arg("b"),
           "Bool array: segment a[k]-b[k] ((n, 3) each) is unobstructed by obstacles and ground. Builds a "
-          "BVH per call: use VisibilityScene(env).line_of_sight for repeated queries.")
-      .def_property_readonly("fingerprint", &Environment::fingerprint, "Deterministic content hash.");
+          "BVH per call: use VisibilityScene(env).line_of_sight for repeated queries.");
 
   m.def(
       "visibility_volume",

@@ -39,17 +39,26 @@ struct Interval {
   double far = 0.0;
   Surface near_surface = Surface::radial;
   Surface far_surface = Surface::radial;
+  // 1/near and 1/far without clamping (<= 0: the band is never entered). For a plane z = c the
+  // inverse distance along g + t d is d.z / (c - g.z), linear in d: the shell mesh interpolates
+  // these to find where the visible interval closes between two directions.
+  double inv_near = 0.0;
+  double inv_far = 0.0;
 };
+
+constexpr double kHugeInverse = 1e30;  // 1/t for t = 0 (kept finite for the interpolation)
 
 // The visible part of the ray g + t d (|d| = 1, d.z = sin_el) given the first obstacle hit.
 Interval visible_interval(const Setup& s, double sin_el, double obstacle_hit) {
   Interval iv;
   iv.far = std::min(s.d_max, obstacle_hit);
+  iv.inv_far = 1.0 / iv.far;
   if (sin_el < 0.0) {
     const double t_ground = std::max(0.0, (s.ground - s.g.z()) / sin_el);
     if (t_ground < iv.far) {
       iv.far = t_ground;
       iv.far_surface = Surface::ground;
+      iv.inv_far = t_ground > 0.0 ? 1.0 / t_ground : kHugeInverse;
     }
   }
   if (s.has_band) {
@@ -57,6 +66,7 @@ Interval visible_interval(const Setup& s, double sin_el, double obstacle_hit) {
     double exit = kInf;
     Surface enter_surface = Surface::radial;
     Surface exit_surface = Surface::radial;
+    double z_enter = s.low, z_exit = s.high;  // planes met first and last going up
     if (sin_el > 0.0) {
       enter = (s.low - s.g.z()) / sin_el;
       exit = (s.high - s.g.z()) / sin_el;
@@ -77,6 +87,13 @@ Interval visible_interval(const Setup& s, double sin_el, double obstacle_hit) {
     if (!s.poi_in_band && enter > iv.near) {
       iv.near = enter;
       iv.near_surface = enter_surface;
+    }
+    if (!s.poi_in_band) {
+      // The POI is below (or above) the band: it is entered through the near plane and left
+      // through the far one, for upward (downward) rays only.
+      if (s.g.z() > s.high) std::swap(z_enter, z_exit);
+      iv.inv_near = sin_el / (z_enter - s.g.z());
+      iv.inv_far = std::max(iv.inv_far, sin_el / (z_exit - s.g.z()));
     }
   }
   return iv;
@@ -175,7 +192,9 @@ struct Directions {
   std::vector<double> cos_el_cell, sin_el_cell, cos_az_cell, sin_az_cell;
   std::vector<double> cos_el_corner, sin_el_corner, cos_az_corner, sin_az_corner;
 
-  Directions(const DirectionGrid& g, const SphereGrid& s) : grid(g), sphere(s) {
+  // sin_el_rows: sines of the mesh's vertex-row elevations, from -1 (south pole) to 1.
+  Directions(const DirectionGrid& g, const SphereGrid& s, const std::vector<double>& sin_el_rows)
+      : grid(g), sphere(s) {
     const int ne = g.num_elevation;
     const int na = g.num_azimuth;
     const double d_az = kTwoPi / na;
@@ -183,11 +202,9 @@ struct Directions {
       cos_el_cell.push_back(std::cos(g.elevation(i)));
       sin_el_cell.push_back(std::sin(g.elevation(i)));
     }
-    for (int i = 0; i <= ne; ++i) {
-      // (2i - ne) pi / (2 ne): exactly 0 on the horizon row, exactly -+pi/2 at the poles.
-      const double el = (2 * i - ne) * kPi / (2.0 * ne);
-      cos_el_corner.push_back(i == 0 || i == ne ? 0.0 : std::cos(el));
-      sin_el_corner.push_back(i == 0 ? -1.0 : i == ne ? 1.0 : (2 * i == ne ? 0.0 : std::sin(el)));
+    for (double se : sin_el_rows) {
+      sin_el_corner.push_back(se);
+      cos_el_corner.push_back(std::sqrt(std::max(0.0, 1.0 - se * se)));
     }
     for (int j = 0; j < na; ++j) {
       cos_az_cell.push_back(std::cos((j + 0.5) * d_az));
@@ -353,6 +370,8 @@ TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const Di
   std::vector<char> alive(static_cast<std::size_t>(nv));
   for (int v = 0; v < nv; ++v) alive[v] = corner[v].far - corner[v].near > alive_gap ? 1 : 0;
 
+  // A live corner is live in both senses (a positive gap, and 1/far < 1/near for the contour).
+  for (int v = 0; v < nv; ++v) alive[v] = alive[v] && corner[v].inv_far < corner[v].inv_near;
   MeshBuilder out(s.g, 5 * static_cast<Eigen::Index>(nv), 8 * static_cast<Eigen::Index>(nv));
   std::vector<int> outer(static_cast<std::size_t>(nv), -1), inner(static_cast<std::size_t>(nv), -1);
   auto outer_of = [&](int v) {
@@ -363,12 +382,10 @@ TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const Di
     if (inner[v] < 0) inner[v] = out.add(point_on(s, dirs.corner(v), corner[v].near, corner[v].near_surface));
     return inner[v];
   };
-  // 1/far and 1/near of a corner; a dead corner's far is capped at its near (gap <= 0).
+  // 1/far and 1/near of a corner, linear in the direction for the band and ground planes.
   auto inverse_radii = [&](int v, double& inv_far, double& inv_near) {
-    const double near = corner[v].near;
-    const double far = alive[v] ? corner[v].far : std::min(corner[v].far, near);
-    inv_near = std::isfinite(near) && near > 0.0 ? 1.0 / near : 0.0;
-    inv_far = far > 0.0 ? 1.0 / far : 1e12;
+    inv_far = corner[v].inv_far;
+    inv_near = corner[v].inv_near;
   };
   // Contour vertex on the edge from live corner u to dead corner w, shared by both triangles.
   std::unordered_map<std::uint64_t, int> contour;
@@ -427,6 +444,53 @@ TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const Di
   return out.finish(volume);
 }
 
+// Sines of the elevations of the mesh's vertex rows: the grid's cell boundaries (exactly 0 on the
+// horizon), plus the creases of the open-field VV, which are latitude circles about g: where the
+// sphere r = d_max meets the band planes and the ground (sin el = (z - g.z) / d_max). A vertex
+// row on each crease keeps the caps' rims exact instead of cutting the corner across a cell;
+// grid rows closer than a quarter step to a crease are dropped (no slivers).
+std::vector<double> vertex_row_sines(const DirectionGrid& grid, const Setup& s) {
+  const int ne = grid.num_elevation;
+  const double step = kPi / ne;
+  std::vector<double> creases;
+  std::vector<double> planes = {s.ground};
+  if (s.has_band) {
+    planes.push_back(s.low);
+    planes.push_back(s.high);
+  }
+  for (double z : planes) {
+    const double c = (z - s.g.z()) / s.d_max;
+    if (std::abs(c) < 1.0 - 1e-9 && c != 0.0) creases.push_back(std::asin(c));
+  }
+  std::vector<double> elevations;
+  for (int i = 0; i <= ne; ++i) {
+    const double el = (2 * i - ne) * kPi / (2.0 * ne);  // exactly 0 on the horizon row
+    bool near_crease = false;
+    for (double e : creases) near_crease = near_crease || std::abs(e - el) < 0.25 * step;
+    if (i == 0 || i == ne || 2 * i == ne || !near_crease) elevations.push_back(el);
+  }
+  for (double e : creases)
+    if (std::abs(e) > 0.25 * step && std::abs(std::abs(e) - kPi / 2.0) > 0.25 * step) elevations.push_back(e);
+  std::sort(elevations.begin(), elevations.end());
+  elevations.erase(std::unique(elevations.begin(), elevations.end(), [](double a, double b) { return std::abs(a - b) < 1e-12; }),
+                   elevations.end());
+  std::vector<double> sines;
+  for (std::size_t k = 0; k < elevations.size(); ++k) {
+    const double el = elevations[k];
+    if (k == 0) sines.push_back(-1.0);
+    else if (k + 1 == elevations.size()) sines.push_back(1.0);
+    else if (el == 0.0) sines.push_back(0.0);
+    else sines.push_back(std::sin(el));
+  }
+  // A crease row's sine is set exactly: its corner rays meet sphere and plane at the same point.
+  for (double z : planes) {
+    const double c = (z - s.g.z()) / s.d_max;
+    for (std::size_t k = 1; k + 1 < sines.size(); ++k)
+      if (std::abs(sines[k] - c) < 1e-12) sines[k] = c;
+  }
+  return sines;
+}
+
 VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_max,
                          const std::optional<std::pair<double, double>>& band, double resolution_deg) {
   VisibilityVolume vv;
@@ -434,7 +498,6 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   vv.d_max = d_max;
   vv.altitude_band = band;
   vv.grid = DirectionGrid::from_resolution(resolution_deg);
-  const int ne = vv.grid.num_elevation;
   const int na = vv.grid.num_azimuth;
 
   Setup s;
@@ -450,8 +513,9 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
 
   // Rays: every cell centre (the grid's intervals), then every corner of the sphere grid (the
   // mesh). Traced in parallel chunks of neighbouring directions, 64 per rtcIntersect1M call.
-  const SphereGrid sphere{ne, na};
-  const Directions dirs(vv.grid, sphere);
+  const std::vector<double> row_sines = vertex_row_sines(vv.grid, s);
+  const SphereGrid sphere{static_cast<int>(row_sines.size()) - 1, na};
+  const Directions dirs(vv.grid, sphere, row_sines);
   const std::size_t n_cells = vv.grid.size();
   const auto n_corners = static_cast<std::size_t>(sphere.num_vertices());
   vv.near.assign(n_cells, 0.0);
