@@ -10,6 +10,8 @@ from importlib.metadata import PackageNotFoundError, version as _version
 
 from . import _core
 from . import dubins
+from .pipeline import RunResult, run
+from .scenario import Scenario
 from ._core import (
     plane_visibility_polygon,
     OrbitPlanner,
@@ -80,6 +82,9 @@ except PackageNotFoundError:  # running from a build tree
     __version__ = _core.__version__
 
 __all__ = [
+    "RunResult",
+    "Scenario",
+    "run",
     "plane_visibility_polygon",
     "OrbitPlanner",
     "plan_orbits",

@@ -13,13 +13,27 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable, Mapping
+from typing import Any, Callable, Mapping, Sequence
 
 import yaml
 
 from ._core import Control, Planning, Sensor, SimulationOptions, Uav, VistrackError
 
-__all__ = ["Scenario", "EnvironmentSpec", "PoiSpec", "default_scenario_text"]
+__all__ = ["Scenario", "EnvironmentSpec", "PoiSpec", "default_scenario_text", "road_route"]
+
+DEMO_SCENARIO = Path(__file__).with_name("scenarios") / "demo.yaml"
+
+
+def road_route(roads: Any, via_points: Sequence[Sequence[float]]) -> list[int]:
+    """Road nodes from the node nearest the first point, through the nodes nearest the others,
+    joined by shortest routes along the road edges."""
+    import numpy as np
+
+    via = [roads.nearest_node(np.asarray(p, dtype=float)) for p in via_points]
+    nodes = [via[0]]
+    for a, b in zip(via, via[1:]):
+        nodes += roads.shortest_route(a, b)[1:]
+    return nodes
 
 
 def _fail(key: str, value: Any, allowed: str) -> VistrackError:
@@ -68,7 +82,7 @@ def _resolve(base: Path, value: Any, key: str) -> Path:
     if not isinstance(value, (str, Path)) or not str(value):
         raise _fail(key, value, "must be a file path")
     path = Path(value).expanduser()
-    return path if path.is_absolute() else (base / path)
+    return (path if path.is_absolute() else base / path).resolve()
 
 
 @dataclass
@@ -94,12 +108,14 @@ class EnvironmentSpec:
 
 @dataclass
 class PoiSpec:
-    """The POI's path: a CSV file, explicit waypoints, or road-network nodes; and its speed."""
+    """The POI's path: a CSV file, explicit waypoints, road-network nodes, or a route along the
+    roads through the nodes nearest to given points; and its speed."""
 
     speed: float = 5.0
     path: Path | None = None
     waypoints: list[list[float]] | None = None
     nodes: list[int] | None = None
+    route: list[list[float]] | None = None
 
     def build(self, env):
         import numpy as np
@@ -112,6 +128,8 @@ class PoiSpec:
             return PoiPath(np.asarray(self.waypoints, dtype=float), self.speed)
         if self.nodes is not None:
             return PoiPath.from_nodes(env.roads, self.nodes, self.speed)
+        if self.route is not None:
+            return PoiPath.from_nodes(env.roads, road_route(env.roads, self.route), self.speed)
         raise VistrackError("poi: no path given (path: CSV, waypoints: [[x, y], ...] or nodes: [...])")
 
 
@@ -153,6 +171,11 @@ class Scenario:
         return scenario
 
     @classmethod
+    def demo(cls) -> "Scenario":
+        """The scenario ``vistrack demo`` runs: the embedded city, no files needed."""
+        return cls.load(DEMO_SCENARIO)
+
+    @classmethod
     def from_dict(cls, data: Mapping[str, Any], base: str | Path = ".") -> "Scenario":
         """Validate a scenario given as a mapping (the parsed YAML)."""
         base = Path(base)
@@ -168,7 +191,7 @@ class Scenario:
                 raise _fail("name", data["name"], "must be a non-empty string")
             scenario.name = data["name"]
         scenario.environment = _environment(_section(data, "environment", {"demo", "geojson", "mesh", "up"}), base)
-        scenario.poi = _poi(_section(data, "poi", {"path", "waypoints", "nodes", "speed"}), base)
+        scenario.poi = _poi(_section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
         scenario.uav, scenario.start = _uav(_section(data, "uav", {"speed", "min_turn_radius", "altitude", "start"}))
         scenario.sensor = _sensor(_section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(_section(
@@ -195,6 +218,8 @@ class Scenario:
             poi["waypoints"] = self.poi.waypoints
         if self.poi.nodes is not None:
             poi["nodes"] = self.poi.nodes
+        if self.poi.route is not None:
+            poi["route"] = self.poi.route
         band = self.sensor.altitude_band
         return {
             "name": self.name,
@@ -241,9 +266,10 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     spec = PoiSpec()
     if "speed" in section:
         spec.speed = _number("poi.speed", section["speed"], low=0.0, low_open=True)
-    sources = [key for key in ("path", "waypoints", "nodes") if key in section]
+    sources = [key for key in ("path", "waypoints", "nodes", "route") if key in section]
     if len(sources) > 1:
-        raise _fail("poi", section, "give one of path: CSV, waypoints: [[x, y], ...], nodes: [...]")
+        raise _fail("poi", section, "give one of path: CSV, waypoints: [[x, y], ...], nodes: [...], "
+                                    "route: [[x, y], ...]")
     if not sources:
         spec.nodes = None
         return spec  # the pipeline picks a default road route (demo city)
@@ -251,15 +277,15 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     value = section[key]
     if key == "path":
         spec.path = _resolve(base, value, "poi.path")
-    elif key == "waypoints":
+    elif key in ("waypoints", "route"):
         if not isinstance(value, list) or len(value) < 2:
-            raise _fail("poi.waypoints", value, "must be a list of at least two [x, y] or [x, y, z] points")
+            raise _fail(f"poi.{key}", value, "must be a list of at least two [x, y] or [x, y, z] points")
         points = []
         for i, point in enumerate(value):
             if not isinstance(point, list) or len(point) not in (2, 3):
-                raise _fail(f"poi.waypoints[{i}]", point, "must be [x, y] or [x, y, z]")
-            points.append([_number(f"poi.waypoints[{i}][{k}]", c) for k, c in enumerate(point)])
-        spec.waypoints = points
+                raise _fail(f"poi.{key}[{i}]", point, "must be [x, y] or [x, y, z]")
+            points.append([_number(f"poi.{key}[{i}][{k}]", c) for k, c in enumerate(point)])
+        setattr(spec, key, points)
     else:
         if not isinstance(value, list) or len(value) < 2:
             raise _fail("poi.nodes", value, "must be a list of at least two road-node indices")
@@ -341,5 +367,7 @@ def _baselines(value: Any) -> list[float]:
 
 
 def default_scenario_text() -> str:
-    """A complete scenario with every default written out (the demo city)."""
-    return yaml.safe_dump(Scenario().to_dict(), sort_keys=False)
+    """A complete scenario with every default written out (the demo city and route)."""
+    scenario = Scenario.demo()
+    scenario.name = "scenario"
+    return yaml.safe_dump(scenario.to_dict(), sort_keys=False)
