@@ -112,12 +112,25 @@ void bind_orbit(py::module_& m) {
       callback(done, total);
     };
   };
+  // None -> "" (no disk cache); str or os.PathLike -> its path.
+  const auto cache_folder = [](const py::object& cache_dir) -> std::string {
+    if (cache_dir.is_none()) return {};
+    return py::str(py::module_::import("os").attr("fspath")(cache_dir));
+  };
   py::class_<OrbitPlanner>(m, "OrbitPlanner",
                            "Section IV on one environment: an Embree scene built once, a VV cache shared by "
                            "every call (spacings and plans reuse VVs), the grid XOR metric (56) in the POI "
                            "frame, VPs at ground level + h_UAV.")
-      .def(py::init<const Environment&, const Sensor&, double>(), py::arg("env"), py::arg("sensor"),
-           py::arg("resolution_deg") = 1.0, py::call_guard<py::gil_scoped_release>())
+      .def(py::init([cache_folder](const Environment& env, const Sensor& sensor, double resolution_deg,
+                                   const py::object& cache_dir) {
+             const std::string folder = cache_folder(cache_dir);
+             py::gil_scoped_release release;
+             return std::make_unique<OrbitPlanner>(env, sensor, resolution_deg, folder);
+           }),
+           py::arg("env"), py::arg("sensor"), py::arg("resolution_deg") = 1.0, py::arg("cache_dir") = py::none(),
+           "cache_dir (str or os.PathLike, created when missing): keep every VV on disk there, keyed by the "
+           "environment fingerprint, the POI position, d_max, the altitude band and the resolution, so a "
+           "later planner with the same inputs reads them instead of ray casting. None: no disk cache.")
       .def(
           "adaptive",
           [wrap_progress](OrbitPlanner& p, const PoiPath& poi, const Planning& planning, const py::object& progress) {
@@ -148,20 +161,26 @@ void bind_orbit(py::module_& m) {
           py::arg("poi"), py::arg("uav"), py::arg("planning"), py::arg("progress") = py::none(),
           "Adaptive VVs, VPs at h_UAV, MaxRadius and Algorithm 1: a VisibilityOrbitPlan.")
       .def_property_readonly("cached_volumes", &OrbitPlanner::cached_volumes, "VVs held in the cache.")
+      .def_property_readonly("disk_hits", &OrbitPlanner::disk_hits,
+                             "VVs read from the disk cache so far (0 without cache_dir).")
+      .def_property_readonly("disk_misses", &OrbitPlanner::disk_misses,
+                             "VVs computed and written to the disk cache so far (0 without cache_dir).")
       .def_property_readonly("scene", &OrbitPlanner::scene, py::return_value_policy::reference_internal,
                              "The planner's Embree scene (for line-of-sight queries on the same city).");
   m.def(
       "plan_orbits",
-      [wrap_progress](const Environment& env, const PoiPath& poi, const Uav& uav, const Sensor& sensor,
-                      const Planning& planning, const py::object& progress) {
+      [wrap_progress, cache_folder](const Environment& env, const PoiPath& poi, const Uav& uav,
+                                    const Sensor& sensor, const Planning& planning, const py::object& progress,
+                                    const py::object& cache_dir) {
         ProgressFunction f = wrap_progress(progress);
+        const std::string folder = cache_folder(cache_dir);
         py::gil_scoped_release release;
-        return plan_orbits(env, poi, uav, sensor, planning, f);
+        return plan_orbits(env, poi, uav, sensor, planning, f, folder);
       },
       py::arg("env"), py::arg("poi"), py::arg("uav"), py::arg("sensor"), py::arg("planning"),
-      py::arg("progress") = py::none(),
+      py::arg("progress") = py::none(), py::arg("cache_dir") = py::none(),
       "Section IV end to end: adaptive VVs along the POI path (IV.B), VPs at h_UAV, MaxRadius, then "
-      "Algorithm 1 (IV.C). Returns a VisibilityOrbitPlan (an OrbitPlan); infeasible plans say which "
+      "Algorithm 1 (IV.C). cache_dir: as for OrbitPlanner. Returns a VisibilityOrbitPlan (an OrbitPlan); infeasible plans say which "
       "sample fails and why. VistrackError when the UAV is not faster than the POI.");
 }
 

@@ -129,7 +129,7 @@ def plan_discretization(plan: Any) -> Any:
 
 
 def _planner(env: Any, scenario: Scenario, cache_dir: str | Path | None) -> Any:
-    return _core.OrbitPlanner(env, scenario.sensor, scenario.planning.resolution_deg)
+    return _core.OrbitPlanner(env, scenario.sensor, scenario.planning.resolution_deg, None if cache_dir is None else str(cache_dir))
 
 
 def _line_of_sight(planner: Any) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:

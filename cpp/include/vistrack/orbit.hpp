@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -116,6 +118,26 @@ class VolumeCache {
   std::shared_ptr<State> state_;
 };
 
+// VVs on disk, one file per input (volume_cache_key) in `folder`, so a second run with the same
+// environment, POI positions and parameters computes nothing. A missing, corrupt or stale file
+// is a miss: the VV is computed and the file (re)written atomically. Copies share the counters.
+class DiskVolumeCache {
+ public:
+  // Creates the folder when missing; Error naming cache_dir when it cannot be created or written.
+  DiskVolumeCache(std::string folder, std::uint64_t environment_fingerprint, double d_max,
+                  std::optional<std::pair<double, double>> altitude_band, double resolution_deg);
+  // `compute` behind the disk: thread-safe when `compute` is.
+  VolumeFunction wrap(VolumeFunction compute) const;
+  std::string path(const Vec3& poi) const;   // the file of the VV at g
+  const std::string& folder() const;
+  std::size_t hits() const;    // VVs read from disk
+  std::size_t misses() const;  // VVs computed (and written)
+
+ private:
+  struct State;
+  std::shared_ptr<State> state_;
+};
+
 // Initial samples every planning.spacing metres from the start of each path edge, plus every
 // node; then, recursively, a VV halfway between neighbours whose metric exceeds planning.cutoff,
 // while the halves stay >= planning.min_spacing and the depth < planning.max_depth (so it always
@@ -169,7 +191,9 @@ std::vector<Polygon> plane_visibility_polygon(const VisibilityVolume& vv, double
 // sliced at world z = ground level + h_UAV.
 class OrbitPlanner {
  public:
-  OrbitPlanner(const Environment& env, const Sensor& sensor, double resolution_deg = 1.0);
+  // cache_dir: folder of the on-disk VV cache (created when missing); empty for none.
+  OrbitPlanner(const Environment& env, const Sensor& sensor, double resolution_deg = 1.0,
+               std::string cache_dir = "");
   Discretization adaptive(const PoiPath& poi, const Planning& planning, const ProgressFunction& progress = {});
   Discretization fixed(const PoiPath& poi, double spacing, const ProgressFunction& progress = {});
   // Error when planning.resolution_deg differs from the planner's.
@@ -177,16 +201,21 @@ class OrbitPlanner {
                            const ProgressFunction& progress = {});
   std::size_t cached_volumes() const { return cache_.size(); }
   const VisibilityScene& scene() const { return scene_; }
+  // VVs read from / computed into the disk cache so far (0 without one).
+  std::size_t disk_hits() const { return disk_ ? disk_->hits() : 0; }
+  std::size_t disk_misses() const { return disk_ ? disk_->misses() : 0; }
 
  private:
   VisibilityScene scene_;
   Sensor sensor_;
   double resolution_deg_;
+  std::optional<DiskVolumeCache> disk_;
   VolumeCache cache_;
 };
 
-// vt.plan_orbits: OrbitPlanner(env, sensor, planning.resolution_deg).plan(poi, uav, planning).
+// vt.plan_orbits: OrbitPlanner(env, sensor, planning.resolution_deg, cache_dir).plan(poi, uav, planning).
 VisibilityOrbitPlan plan_orbits(const Environment& env, const PoiPath& poi, const Uav& uav, const Sensor& sensor,
-                                const Planning& planning, const ProgressFunction& progress = {});
+                                const Planning& planning, const ProgressFunction& progress = {},
+                                const std::string& cache_dir = "");
 
 }  // namespace vistrack

@@ -6,6 +6,7 @@
 // mesh: the `volume` area computes XOR volumes per direction from them (its fast path).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -112,5 +113,28 @@ std::vector<bool> line_of_sight(const Environment& env, const Points3& a, const 
 
 // Volume enclosed by a closed, consistently oriented triangle mesh (divergence theorem).
 double mesh_volume(const TriangleMesh& mesh);
+
+// ---------------------------------------------------------------------------------------------
+// VV files for the on-disk cache: magic "VISTRKVV", uint32 format version, then little-endian
+// int32 / uint64 / IEEE doubles (poi, d_max, band, grid, near, far, mesh, volume) and a 64-bit
+// checksum of everything before it. Bump the version whenever the layout or the output of
+// visibility_volume changes, so stale cache files miss instead of being reused.
+inline constexpr std::uint32_t kVolumeFileVersion = 1;
+
+// Writes `vv` to `path` through a temporary file in the same folder renamed over `path`, so
+// readers see the old file or the whole new one, never half a file. Error naming the path when
+// it cannot be written.
+void write_volume_file(const VisibilityVolume& vv, const std::string& path);
+// The VV stored in `path`; nullopt when the file does not exist; Error naming the path when it
+// is unreadable, truncated, corrupt (checksum) or of another format version.
+std::optional<VisibilityVolume> read_volume_file(const std::string& path);
+
+// Stable 64-bit key (FNV-1a over the exact bits, independent of the host) of a VV's inputs:
+// environment fingerprint, g, d_max, band, resolution and kVolumeFileVersion.
+std::uint64_t volume_cache_key(std::uint64_t environment_fingerprint, const Vec3& g, double d_max,
+                               const std::optional<std::pair<double, double>>& altitude_band,
+                               double resolution_deg);
+// "vv-<16 lower-case hex digits>.bin".
+std::string volume_cache_file_name(std::uint64_t key);
 
 }  // namespace vistrack
