@@ -107,6 +107,17 @@ void bind_visibility(py::module_& m) {
           py::arg("a"), py::arg("b"), "Bool array: segment a[k]-b[k] is unobstructed (occlusion rays).")
       .def("surface_height", &VisibilityScene::surface_height, py::arg("xy"),
            "Height of the topmost surface (obstacle or ground) under the vertical through xy (2,).")
+      .def(
+          "poi_on_surface",
+          [](const VisibilityScene& s, const Points3& points) {
+            Points3 lifted(points.rows(), 3);
+            for (Eigen::Index i = 0; i < points.rows(); ++i)
+              lifted.row(i) = s.poi_on_surface(points.row(i).transpose()).transpose();
+            return lifted;
+          },
+          py::arg("points"),
+          "Where ground POIs (n, 3) stand: unchanged, unless below the topmost surface over their xy "
+          "(uneven terrain), then 0.5 m above it.")
       .def("inside_obstacle", &VisibilityScene::inside_obstacle, py::arg("point"),
            "Whether a point lies inside an obstacle.");
 

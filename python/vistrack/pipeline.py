@@ -135,8 +135,9 @@ def _planner(env: Any, scenario: Scenario, cache_dir: str | Path | None) -> Any:
 def _line_of_sight(planner: Any) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
     scene = planner.scene
 
-    def line_of_sight(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-        return np.asarray(scene.line_of_sight(a, b))
+    def line_of_sight(uav: np.ndarray, poi: np.ndarray) -> np.ndarray:
+        # The POI stands where the planner put it (on uneven terrain, above the surface).
+        return np.asarray(scene.line_of_sight(uav, scene.poi_on_surface(poi)))
 
     return line_of_sight
 

@@ -80,7 +80,7 @@ def test_run_equals_python_api(tmp_path: Path) -> None:
     assert metrics["simulation"]["visibility_fraction"] == pytest.approx(result.simulation.visibility_fraction)
 
 
-@pytest.mark.parametrize("example", ["charlotte_paper_slow", "charlotte_paper_small"])
+@pytest.mark.parametrize("example", ["charlotte_paper_slow", "charlotte_paper_small", "campus_flight_test"])
 def test_examples_run(example: str, shared_data: Path, tmp_path: Path) -> None:
     out = tmp_path / example
     assert main(["run", str(REPO / "examples" / f"{example}.yaml"), "--out", str(out), "--quiet",

@@ -12,7 +12,7 @@ namespace vistrack {
 struct Uav {
   double speed = 20.0;             // v, m/s
   double min_turn_radius = 50.0;   // r_min, m
-  double altitude = 300.0;         // h_UAV, m above the ground plane
+  double altitude = 300.0;         // h_UAV: world z of the flight plane, m (height above a ground at z = 0)
   void validate() const;           // throws Error naming the field
 };
 

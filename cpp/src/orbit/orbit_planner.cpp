@@ -107,7 +107,9 @@ VolumeFunction planner_volume_function(const VisibilityScene& scene, const Senso
     return std::make_shared<const VisibilityVolume>(
         visibility_volume(scene, g, sensor.d_max, sensor.altitude_band, resolution_deg));
   };
-  return disk ? disk->wrap(std::move(compute)) : compute;
+  VolumeFunction cached = disk ? disk->wrap(std::move(compute)) : std::move(compute);
+  // A path's z under uneven terrain stands on the terrain (VisibilityScene::poi_on_surface).
+  return [scene, cached = std::move(cached)](const Vec3& g) { return cached(scene.poi_on_surface(g)); };
 }
 
 std::optional<DiskVolumeCache> make_disk_cache(std::string cache_dir, const VisibilityScene& scene,
@@ -144,9 +146,12 @@ VisibilityOrbitPlan OrbitPlanner::plan(const PoiPath& poi, const Uav& uav, const
   if (planning.resolution_deg != resolution_deg_)
     detail::fail_field("planning.resolution_deg", planning.resolution_deg,
                        "differs from the planner's VV resolution " + detail::to_text(resolution_deg_));
-  const double ground = scene_.ground_level();
-  const SliceFunction slice = [ground](const VisibilityVolume& vv, double altitude) {
-    return plane_visibility_polygon(vv, ground + altitude);
+  // h_UAV is the world z of the flight plane (the height above ground where the ground is at 0).
+  if (!(uav.altitude > scene_.ground_level()))
+    detail::fail_field("uav.altitude", uav.altitude,
+                       "the flight plane must lie above the ground level " + detail::to_text(scene_.ground_level()));
+  const SliceFunction slice = [](const VisibilityVolume& vv, double altitude) {
+    return plane_visibility_polygon(vv, altitude);
   };
   return plan_orbits(poi, uav, sensor_, planning, cache_, poi_frame_metric, slice, progress);
 }

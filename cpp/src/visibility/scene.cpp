@@ -280,6 +280,12 @@ double VisibilityScene::surface_height(const Vec2& xy) const {
   return ground ? s.ground_level : top - static_cast<double>(t);
 }
 
+Vec3 VisibilityScene::poi_on_surface(const Vec3& g) const {
+  for (int k = 0; k < 3; ++k) require_finite(g[k], "g[" + std::to_string(k) + "]");
+  const double surface = surface_height(g.head<2>());
+  return g.z() < surface ? Vec3(g.x(), g.y(), surface + kPoiClearance) : g;
+}
+
 bool VisibilityScene::inside_obstacle(const Vec3& p) const {
   const detail::EmbreeScene& s = *impl_;
   if (!s.buildings.empty()) {

@@ -20,7 +20,6 @@ import numpy as np
 import vistrack as vt
 
 DEFAULT_OUT = Path("vistrack-out") / "volumes"
-POI_HEIGHT = 0.5  # m above the surface for points given without z (as in the data's paths)
 BATCH = 8  # VVs per parallel batch between progress updates
 
 
@@ -86,11 +85,9 @@ def poi_positions(args: argparse.Namespace, scene: vt.VisibilityScene) -> np.nda
     else:
         given = parse_points(args.points)
         points = np.array([p if len(p) == 3 else [p[0], p[1], np.nan] for p in given])
-    for row in points:
-        surface = scene.surface_height(row[:2])
-        if not np.isfinite(row[2]) or row[2] < surface:
-            row[2] = surface + POI_HEIGHT
-    return points
+    below_everything = scene.ground_level - 1.0  # a point without z stands on the surface
+    points[:, 2] = np.where(np.isfinite(points[:, 2]), points[:, 2], below_everything)
+    return scene.poi_on_surface(points)
 
 
 def polygon_json(polygon: vt.Polygon) -> dict[str, Any]:
