@@ -3,35 +3,195 @@
 
 #include "bindings.hpp"
 #include "vistrack/environment.hpp"
+#include "vistrack/error.hpp"
 
 namespace py = pybind11;
 
 namespace vistrack::bindings {
 
+namespace {
+
+using Edges = Eigen::Matrix<std::int64_t, Eigen::Dynamic, 2, Eigen::RowMajor>;
+
+RoadNetwork roads_from_arrays(const Points2& nodes, const Edges& edges) {
+  RoadNetwork roads;
+  for (Eigen::Index i = 0; i < nodes.rows(); ++i) roads.nodes.emplace_back(nodes(i, 0), nodes(i, 1));
+  for (Eigen::Index e = 0; e < edges.rows(); ++e) {
+    for (int k = 0; k < 2; ++k)
+      if (edges(e, k) < 0 || edges(e, k) > std::numeric_limits<int>::max())
+        detail::fail_field("edges[" + std::to_string(e) + "][" + std::to_string(k) + "]", edges(e, k),
+                           "must be a node index");
+    roads.edges.emplace_back(static_cast<int>(edges(e, 0)), static_cast<int>(edges(e, 1)));
+  }
+  return roads;
+}
+
+Points2 nodes_array(const RoadNetwork& roads) {
+  Points2 nodes(static_cast<Eigen::Index>(roads.nodes.size()), 2);
+  for (std::size_t i = 0; i < roads.nodes.size(); ++i) nodes.row(static_cast<Eigen::Index>(i)) = roads.nodes[i].transpose();
+  return nodes;
+}
+
+Edges edges_array(const RoadNetwork& roads) {
+  Edges edges(static_cast<Eigen::Index>(roads.edges.size()), 2);
+  for (std::size_t e = 0; e < roads.edges.size(); ++e)
+    edges.row(static_cast<Eigen::Index>(e)) << roads.edges[e].first, roads.edges[e].second;
+  return edges;
+}
+
+// Items (Polygon, height) or (Polygon, height, id); the id defaults to the position.
+std::vector<Building> buildings_from_python(const py::iterable& items) {
+  std::vector<Building> buildings;
+  for (const py::handle item : items) {
+    const std::string field = "buildings[" + std::to_string(buildings.size()) + "]";
+    const auto entry = py::reinterpret_borrow<py::sequence>(item);
+    if (entry.size() != 2 && entry.size() != 3)
+      detail::fail_field(field, py::str(item).cast<std::string>(), "expected (Polygon, height) or (Polygon, height, id)");
+    Building building;
+    if (py::isinstance<Polygon>(entry[0])) building.footprint = entry[0].cast<Polygon>();
+    else building.footprint.outer = ring_from_array(entry[0].cast<Points2>(), field + "[0]");  // an (n, 2) array
+    building.height = entry[1].cast<double>();
+    building.id = entry.size() == 3 ? entry[2].cast<int>() : static_cast<int>(buildings.size());
+    buildings.push_back(std::move(building));
+  }
+  return buildings;
+}
+
+// str or os.PathLike (pathlib.Path) to a file name.
+std::string file_name(const py::object& path) {
+  return py::module_::import("os").attr("fspath")(path).cast<std::string>();
+}
+
+}  // namespace
+
 void bind_environment(py::module_& m) {
+  py::class_<RoadNetwork>(m, "RoadNetwork",
+                          "Road graph G = (N, E): nodes on the ground plane, bidirectional edges.")
+      .def(py::init([](const Points2& nodes, const Edges& edges) { return roads_from_arrays(nodes, edges); }),
+           py::arg("nodes"), py::arg("edges"),
+           "nodes: (n, 2) float array of positions in metres; edges: (m, 2) int array of node pairs.")
+      .def_property_readonly("nodes", &nodes_array, "Node positions, numpy array (n, 2).")
+      .def_property_readonly("edges", &edges_array, "Edges as node index pairs, numpy int64 array (m, 2).")
+      .def("shortest_route", [](const RoadNetwork& roads, int from, int to) { return shortest_route(roads, from, to); },
+           py::arg("start"), py::arg("goal"),
+           "Node indices of a shortest route along the edges from start to goal (Dijkstra, Euclidean "
+           "edge lengths), both included. VistrackError when goal is unreachable.")
+      .def("nearest_node", [](const RoadNetwork& roads, const Vec2& point) {
+             if (roads.nodes.empty()) throw Error("nodes: the road network has no nodes");
+             int best = 0;
+             for (std::size_t i = 1; i < roads.nodes.size(); ++i)
+               if ((roads.nodes[i] - point).squaredNorm() < (roads.nodes[static_cast<std::size_t>(best)] - point).squaredNorm())
+                 best = static_cast<int>(i);
+             return best;
+           },
+           py::arg("point"), "Index of the node closest to a point (x, y) (lowest index on ties).")
+      .def("__repr__", [](const RoadNetwork& r) {
+        return "RoadNetwork(" + std::to_string(r.nodes.size()) + " nodes, " + std::to_string(r.edges.size()) + " edges)";
+      });
+
   py::class_<Environment>(m, "Environment",
                           "Obstacles (2.5D buildings or a triangle mesh), ground and road network.")
+      .def_static(
+          "from_geojson",
+          [](const py::object& path) {
+            const std::string name = file_name(path);
+            py::gil_scoped_release release;
+            return Environment::from_geojson(name);
+          },
+          py::arg("path"),
+                  "2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: "
+                  "height from properties.height, else building:levels x 3 m; id from properties.id, "
+                  "else the feature index. Coordinates in local east-north metres. Footprints are validated "
+                  "(simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up "
+                  "to 1 m^2 are taken as touching walls, and a footprint inside a building at least as "
+                  "tall as a building part) and normalised counter-clockwise.")
+      .def_static(
+          "from_mesh",
+          [](const py::object& path, const std::string& up) {
+            const std::string name = file_name(path);
+            py::gil_scoped_release release;
+            return Environment::from_mesh(name, up);
+          },
+          py::arg("path"), py::arg("up") = "z",
+                  "Any mesh file CGAL reads (.obj .ply .stl .off): duplicate points merged, polygons "
+                  "triangulated, degenerate triangles dropped. up='y' maps a Y-up, north=-Z file "
+                  "(x, y, z) to east-north-up (x, -z, y). The ground level is the lowest vertex.")
+      .def_static(
+          "from_buildings",
+          [](const py::iterable& items, std::optional<RoadNetwork> roads) {
+            std::vector<Building> buildings = buildings_from_python(items);
+            py::gil_scoped_release release;
+            return Environment::from_buildings(std::move(buildings), roads.value_or(RoadNetwork{}));
+          },
+          py::arg("buildings"), py::arg("roads") = py::none(),
+          "Environment from a list of (Polygon, height) or (Polygon, height, id) (an (n, 2) array "
+          "may stand for a Polygon without holes), validated as in "
+          "from_geojson; optional RoadNetwork checked against every footprint.")
       .def_static("from_triangles", &Environment::from_triangles, py::arg("vertices"), py::arg("faces"),
                   "Environment from triangles: vertices (n, 3) float in east-north-up metres, faces "
-                  "(m, 3) int indexing them.")
+                  "(m, 3) int indexing them. The ground level is the lowest vertex.")
+      .def_static("demo", &Environment::demo, py::call_guard<py::gil_scoped_release>(),
+                  "The embedded synthetic downtown (800 m x 800 m, street grid as road network, "
+                  "buildings 10-150 m tall). Deterministic.")
       .def_property_readonly("num_triangles", &Environment::num_triangles,
                              "Number of obstacle triangles (the ground plane not counted).")
       .def_property_readonly("max_height", &Environment::max_height,
                              "Tallest obstacle point above the ground level, in metres.")
       .def_property_readonly("ground_level", &Environment::ground_level,
-                             "Height of the ground plane in metres.")
+                             "Height of the ground plane in metres (0 for buildings, lowest vertex for a mesh).")
+      .def_property_readonly(
+          "bounds",
+          [](const Environment& e) {
+            Eigen::Matrix<double, 2, 3, Eigen::RowMajor> box;
+            box.row(0) = e.bounds().min.transpose();
+            box.row(1) = e.bounds().max.transpose();
+            return box;
+          },
+          "Axis-aligned bounds of the obstacles, numpy array (2, 3): [min, max].")
       .def_property_readonly(
           "vertices", [](const Environment& e) { return e.mesh().vertices; },
           "Obstacle vertices, numpy array (n, 3).")
       .def_property_readonly(
           "faces", [](const Environment& e) { return e.mesh().faces; },
-          "Obstacle triangles, numpy int32 array (m, 3) of vertex indices.");
+          "Obstacle triangles, numpy int32 array (m, 3) of vertex indices, outward oriented for buildings.")
+      .def_property_readonly("num_buildings", &Environment::num_buildings,
+                             "Number of 2.5D buildings (0 for an environment made from a mesh).")
+      .def_property_readonly("footprints", &Environment::footprints,
+                             "Building footprints as a list of Polygon (outer counter-clockwise, holes clockwise).")
+      .def_property_readonly(
+          "heights", [](const Environment& e) { const auto h = e.heights(); return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(h.data(), static_cast<Eigen::Index>(h.size()))); },
+          "Building heights in metres, numpy array (num_buildings,).")
+      .def_property_readonly(
+          "building_ids",
+          [](const Environment& e) {
+            std::vector<int> ids;
+            for (const Building& b : e.buildings()) ids.push_back(b.id);
+            return ids;
+          },
+          "Building ids (properties.id, else the feature index), list of int.")
+      .def_property_readonly("roads", &Environment::roads, "The road network (RoadNetwork).")
+      .def("set_roads", &Environment::set_roads, py::arg("roads"),
+           "Replace the road network; VistrackError naming the edge and the building when an edge "
+           "crosses a footprint interior (running along a wall is allowed).")
+      .def("set_roads",
+           [](Environment& e, const Points2& nodes, const Edges& edges) { e.set_roads(roads_from_arrays(nodes, edges)); },
+           py::arg("nodes"), py::arg("edges"), "Replace the road network from arrays nodes (n, 2) and edges (m, 2).")
+      .def_property_readonly("fingerprint", &Environment::fingerprint,
+                             "Deterministic 64-bit content hash of the geometry and roads, for caches.")
+      .def("__repr__", [](const Environment& e) {
+        return "Environment(" + std::to_string(e.num_buildings()) + " buildings, " + std::to_string(e.num_triangles()) +
+               " triangles, max height " + detail::to_text(e.max_height()) + " m)";
+      });
 
   py::class_<PoiPath>(m, "PoiPath", "A point of interest moving at constant speed through waypoints.")
       .def(py::init<const Eigen::MatrixXd&, double>(), py::arg("waypoints"), py::arg("speed"),
            "Waypoints (n, 2) or (n, 3) in metres; speed in m/s (> 0).")
-      .def_static("from_csv", &PoiPath::from_csv, py::arg("path"), py::arg("speed"),
+      .def_static(
+          "from_csv", [](const py::object& path, double speed) { return PoiPath::from_csv(file_name(path), speed); },
+          py::arg("path"), py::arg("speed"),
                   "Read waypoints from a CSV file with lines x,y[,z].")
+      .def_static("from_nodes", &PoiPath::from_nodes, py::arg("roads"), py::arg("nodes"), py::arg("speed"),
+                  "Path through a sequence of road-network node indices, each consecutive pair joined by an edge.")
       .def("position", &PoiPath::position, py::arg("t"), "Position (3,) at time t (clamped to the path).")
       .def("velocity", &PoiPath::velocity, py::arg("t"), "Velocity (2,) of the segment containing t.")
       .def("heading", &PoiPath::heading, py::arg("t"), "Direction of the velocity at t, radians.")

@@ -1,11 +1,152 @@
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
 #include "bindings.hpp"
+#include "vistrack/error.hpp"
+#include "vistrack/visibility.hpp"
 
 namespace py = pybind11;
 
 namespace vistrack::bindings {
 
+namespace {
+
+using Band = std::optional<std::pair<double, double>>;
+
+py::array_t<double> per_cell(const VisibilityVolume& vv, const std::vector<double>& values) {
+  py::array_t<double> out({vv.grid.num_elevation, vv.grid.num_azimuth});
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+py::array_t<bool> to_bool_array(const std::vector<bool>& values) {
+  py::array_t<bool> out(static_cast<py::ssize_t>(values.size()));
+  bool* data = out.mutable_data();
+  for (std::size_t k = 0; k < values.size(); ++k) data[k] = values[k];
+  return out;
+}
+
+Vec3 as_point(const Eigen::VectorXd& g, const char* field) {
+  if (g.size() != 3) throw Error(std::string(field) + " must have 3 coordinates (x, y, z), got " + std::to_string(g.size()));
+  return g;
+}
+
+}  // namespace
+
 void bind_visibility(py::module_& m) {
-  (void)m;  // filled in by the visibility area
+  py::class_<DirectionGrid>(m, "DirectionGrid",
+                            "Angular grid of a VV: num_elevation rows x num_azimuth columns of equal angular "
+                            "size over the sphere; the ray of cell (i, j) goes through the cell centre.")
+      .def_readonly("num_elevation", &DirectionGrid::num_elevation)
+      .def_readonly("num_azimuth", &DirectionGrid::num_azimuth)
+      .def("elevation", &DirectionGrid::elevation, py::arg("row"), "Centre elevation of row i (rad).")
+      .def("azimuth", &DirectionGrid::azimuth, py::arg("column"), "Centre azimuth of column j (rad, from +x).")
+      .def("solid_angle", &DirectionGrid::solid_angle, py::arg("row"), "Solid angle of each cell of row i (sr).")
+      .def("direction", &DirectionGrid::direction, py::arg("row"), py::arg("column"), "Unit vector of cell (i, j).")
+      .def_property_readonly("size", &DirectionGrid::size, "Number of cells.")
+      .def_static("from_resolution", &DirectionGrid::from_resolution, py::arg("resolution_deg"),
+                  "Grid with steps of about resolution_deg degrees (an even number of rows).");
+
+  py::class_<VisibilityVolume>(m, "VisibilityVolume",
+                               "Visibility volume alpha(g) (eq. 4): per-direction visible intervals on a grid "
+                               "and a closed, outward-oriented triangle mesh.")
+      .def_readonly("poi", &VisibilityVolume::poi, "The POI g (3,).")
+      .def_readonly("d_max", &VisibilityVolume::d_max, "Maximum viewing distance (m).")
+      .def_readonly("altitude_band", &VisibilityVolume::altitude_band, "(h_lo, h_hi) in world z, or None.")
+      .def_readonly("grid", &VisibilityVolume::grid, "The direction grid.")
+      .def_property_readonly("near", [](const VisibilityVolume& vv) { return per_cell(vv, vv.near); },
+                             "Start of the visible interval per cell, (num_elevation, num_azimuth) metres.")
+      .def_property_readonly("far", [](const VisibilityVolume& vv) { return per_cell(vv, vv.far); },
+                             "End of the visible interval per cell (near >= far: nothing visible).")
+      .def_property_readonly("vertices", [](const VisibilityVolume& vv) { return vv.mesh.vertices; },
+                             "Mesh vertices (n, 3).")
+      .def_property_readonly("faces", [](const VisibilityVolume& vv) { return vv.mesh.faces; },
+                             "Mesh triangles (m, 3) int32, outward oriented.")
+      .def_readonly("volume", &VisibilityVolume::volume, "Volume of the mesh (m^3).")
+      .def("grid_volume", &VisibilityVolume::grid_volume,
+           "Volume represented by the grid intervals: sum of solid_angle * (far^3 - near^3) / 3.")
+      .def("save", &VisibilityVolume::save, py::arg("path"), "Write the mesh to .obj or .ply.")
+      .def("__repr__", [](const VisibilityVolume& vv) {
+        return "VisibilityVolume(poi=(" + std::to_string(vv.poi.x()) + ", " + std::to_string(vv.poi.y()) + ", " +
+               std::to_string(vv.poi.z()) + "), volume=" + std::to_string(vv.volume) + ", faces=" +
+               std::to_string(vv.mesh.faces.rows()) + ")";
+      });
+
+  py::class_<VisibilityScene>(m, "VisibilityScene",
+                              "Embree BVH of an environment (obstacles plus ground plane), built once and shared "
+                              "by every visibility query; thread-safe.")
+      .def(py::init<const Environment&>(), py::arg("env"), py::call_guard<py::gil_scoped_release>(),
+           "Build the BVH (validates the triangles first).")
+      .def_property_readonly("ground_level", &VisibilityScene::ground_level, "Ground plane height (m).")
+      .def_property_readonly("num_triangles", &VisibilityScene::num_triangles, "Obstacle triangles in the BVH.")
+      .def_property_readonly("fingerprint", &VisibilityScene::fingerprint, "Fingerprint of the source environment.")
+      .def(
+          "first_hits",
+          [](const VisibilityScene& s, const Eigen::VectorXd& origin, const Points3& directions, double t_max) {
+            const Vec3 o = as_point(origin, "origin");
+            std::vector<double> hits;
+            {
+              py::gil_scoped_release release;
+              hits = s.first_hits(o, directions, t_max);
+            }
+            return py::array_t<double>(static_cast<py::ssize_t>(hits.size()), hits.data());
+          },
+          py::arg("origin"), py::arg("directions"), py::arg("t_max") = 1e30,
+          "Distance (m) to the first obstacle or ground hit along each direction (n, 3); inf when none.")
+      .def(
+          "line_of_sight",
+          [](const VisibilityScene& s, const Points3& a, const Points3& b) {
+            std::vector<bool> visible;
+            {
+              py::gil_scoped_release release;
+              visible = s.line_of_sight(a, b);
+            }
+            return to_bool_array(visible);
+          },
+          py::arg("a"), py::arg("b"), "Bool array: segment a[k]-b[k] is unobstructed (occlusion rays).")
+      .def("surface_height", &VisibilityScene::surface_height, py::arg("xy"),
+           "Height of the topmost surface (obstacle or ground) under the vertical through xy (2,).")
+      .def("inside_obstacle", &VisibilityScene::inside_obstacle, py::arg("point"),
+           "Whether a point lies inside an obstacle.");
+
+  // Line of sight on the Environment class itself (bind_environment ran before this).
+  py::reinterpret_borrow<py::class_<Environment>>(m.attr("Environment"))
+      .def(
+          "line_of_sight",
+          [](const Environment& env, const Points3& a, const Points3& b) {
+            std::vector<bool> visible;
+            {
+              py::gil_scoped_release release;
+              visible = line_of_sight(env, a, b);
+            }
+            return to_bool_array(visible);
+          },
+          py::arg("a"), py::arg("b"),
+          "Bool array: segment a[k]-b[k] ((n, 3) each) is unobstructed by obstacles and ground. Builds a "
+          "BVH per call: use VisibilityScene(env).line_of_sight for repeated queries.");
+
+  m.def(
+      "visibility_volume",
+      [](const VisibilityScene& scene, const Eigen::VectorXd& g, double d_max, Band band, double resolution_deg) {
+        const Vec3 p = as_point(g, "g");
+        py::gil_scoped_release release;
+        return visibility_volume(scene, p, d_max, band, resolution_deg);
+      },
+      py::arg("scene"), py::arg("g"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
+      py::arg("resolution_deg") = 1.0,
+      "Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when "
+      "given, on a grid of about resolution_deg degrees.");
+  m.def(
+      "visibility_volumes",
+      [](const VisibilityScene& scene, const Points3& pois, double d_max, Band band, double resolution_deg) {
+        py::gil_scoped_release release;
+        return visibility_volumes(scene, pois, d_max, band, resolution_deg);
+      },
+      py::arg("scene"), py::arg("pois"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
+      py::arg("resolution_deg") = 1.0, "VVs for every row of pois (n, 3), in parallel over the points.");
+  m.def("mesh_volume", [](const Points3& v, const Faces& f) { return mesh_volume(TriangleMesh{v, f}); },
+        py::arg("vertices"), py::arg("faces"), "Volume of a closed, consistently oriented triangle mesh.");
 }
 
 }  // namespace vistrack::bindings

@@ -11,15 +11,18 @@ from importlib.metadata import PackageNotFoundError, version as _version
 from . import _core
 from ._core import (
     Control,
+    DirectionGrid,
     Environment,
     GuidanceGains,
     OdeResult,
     OdeStatistics,
+    MeshCheck,
     OrbitPlan,
     OrbitState,
     Planning,
     PoiPath,
     Polygon,
+    RoadNetwork,
     Sensor,
     SimulationOptions,
     SimulationResult,
@@ -27,7 +30,10 @@ from ._core import (
     TuningResult,
     Uav,
     VectorField,
+    VisibilityScene,
+    VisibilityVolume,
     VistrackError,
+    check_closed_mesh,
     constant_radius_plan,
     epsilon_max,
     lambda_max,
@@ -48,7 +54,10 @@ from ._core import (
     steering,
     tune_turn_rate,
     vector_field,
+    mesh_volume,
+    slice_mesh,
 )
+from .visibility import visibility_scene, visibility_volume, visibility_volumes
 
 try:
     __version__ = _version("vistrack")
@@ -57,15 +66,18 @@ except PackageNotFoundError:  # running from a build tree
 
 __all__ = [
     "Control",
+    "DirectionGrid",
     "Environment",
     "GuidanceGains",
     "OdeResult",
     "OdeStatistics",
+    "MeshCheck",
     "OrbitPlan",
     "OrbitState",
     "Planning",
     "PoiPath",
     "Polygon",
+    "RoadNetwork",
     "Sensor",
     "SimulationOptions",
     "SimulationResult",
@@ -73,7 +85,10 @@ __all__ = [
     "TuningResult",
     "Uav",
     "VectorField",
+    "VisibilityScene",
+    "VisibilityVolume",
     "VistrackError",
+    "check_closed_mesh",
     "constant_radius_plan",
     "epsilon_max",
     "lambda_max",
@@ -94,5 +109,10 @@ __all__ = [
     "steering",
     "tune_turn_rate",
     "vector_field",
+    "mesh_volume",
+    "slice_mesh",
+    "visibility_scene",
+    "visibility_volume",
+    "visibility_volumes",
     "__version__",
 ]

@@ -3,6 +3,7 @@
 // visibility-volume paper.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,6 +26,10 @@ struct RoadNetwork {
   std::vector<std::pair<int, int>> edges;
 };
 
+// Nodes of a shortest route along road edges (Dijkstra, edge length = Euclidean distance),
+// from `from` to `to` inclusive. Error when a node does not exist or `to` is unreachable.
+std::vector<int> shortest_route(const RoadNetwork& roads, int from, int to);
+
 // A closed triangle mesh: vertices (n, 3) and faces (m, 3) indexing them.
 struct TriangleMesh {
   Points3 vertices;
@@ -38,6 +43,9 @@ class Environment {
   // 3 points, positive finite height, disjoint interiors).
   static Environment from_geojson(const std::string& path);
   // Validated buildings plus optional roads (each edge checked against every footprint).
+  // Footprints may overlap by at most 1 m^2 (walls drawn approximately); a footprint lying
+  // inside another building that is at least as tall is accepted (a building part drawn inside
+  // its outline adds nothing to the obstacles).
   static Environment from_buildings(std::vector<Building> buildings, RoadNetwork roads = {});
   // Any triangle mesh file (OBJ, PLY, STL, OFF). up = "z", or "y" for Y-up files whose north
   // is -Z: (east, north, up) = (x, -z, y).
@@ -59,13 +67,20 @@ class Environment {
   // Empty for an environment made from a mesh.
   const std::vector<Building>& buildings() const { return buildings_; }
   std::vector<Polygon> footprints() const;
+  std::vector<double> heights() const;
+  std::size_t num_buildings() const { return buildings_.size(); }
   const RoadNetwork& roads() const { return roads_; }
-  // Replaces the road network after checking that no edge crosses a building footprint.
+  // Replaces the road network after checking the nodes (finite), the edges (valid, distinct
+  // nodes) and that no edge crosses a building footprint's interior (running along a wall is
+  // allowed). An environment made from a mesh has no footprints to check against.
   void set_roads(RoadNetwork roads);
   // A deterministic content hash (geometry and roads), for caches keyed by environment.
   std::uint64_t fingerprint() const;
 
  private:
+  // Buildings already validated and normalised: extrudes them, ground level 0.
+  static Environment from_validated_buildings(std::vector<Building> buildings);
+
   std::vector<Building> buildings_;
   RoadNetwork roads_;
   TriangleMesh mesh_;

@@ -47,6 +47,70 @@ struct VisibilityVolume {
   double volume = 0.0;      // of the mesh (divergence theorem)
   // Sum over cells of solid_angle * (far^3 - near^3) / 3: the volume the grid represents.
   double grid_volume() const;
+
+  // Writes the mesh as Wavefront OBJ (".obj") or ASCII PLY (".ply"), chosen by the extension.
+  void save(const std::string& path) const;
+  // The visible interval of direction k is empty (nothing visible along that ray).
+  bool empty(std::size_t k) const { return !(far[k] > near[k]); }
 };
+
+namespace detail {
+struct EmbreeScene;
+}
+
+// An Embree BVH over an environment's obstacle triangles plus its ground plane (a square of
+// half-size 1e6 m at ground_level()), built once and shared by every query. Copies share the
+// same BVH; queries are thread-safe. Embree stays behind this pimpl.
+class VisibilityScene {
+ public:
+  explicit VisibilityScene(const Environment& env);
+
+  // Distance from `origin` along each row of `directions` (not necessarily unit; distances are
+  // in metres) to the first obstacle or ground hit, or +infinity when none is closer than
+  // t_max. Rays are traced in coherent batches (rtcIntersect1M).
+  std::vector<double> first_hits(const Vec3& origin, const Points3& directions, double t_max) const;
+  // For each pair (a[k], b[k]): true when the open segment between them meets no obstacle and
+  // does not pass below the ground (occlusion rays; a and b themselves may lie on a surface).
+  std::vector<bool> line_of_sight(const Points3& a, const Points3& b) const;
+  // Whether p lies inside an obstacle: the footprint test for 2.5D buildings, else the parity of
+  // the ray crossings (majority over three directions) for a mesh.
+  bool inside_obstacle(const Vec3& p) const;
+
+  // Height of the topmost surface (obstacle or ground) under the vertical through xy: where a
+  // POI on uneven terrain stands.
+  double surface_height(const Vec2& xy) const;
+
+  double ground_level() const;
+  Bounds3 bounds() const;                 // of the obstacle triangles
+  std::size_t num_triangles() const;      // obstacle triangles, ground not counted
+  std::uint64_t fingerprint() const;      // Environment::fingerprint() of the source
+
+ private:
+  friend struct detail::EmbreeScene;
+  std::shared_ptr<const detail::EmbreeScene> impl_;
+};
+
+// alpha(g) of eq. (4): the points within d_max of g, inside the altitude band (h_lo, h_hi) of
+// world z when given, with an unobstructed line of sight to g (obstacles and ground). One ray per
+// grid cell centre gives near/far; one ray per grid corner gives the mesh (a piecewise-linear
+// radial surface, band caps with exact z). Throws Error naming the field for g below the ground
+// or inside an obstacle, d_max <= 0, NaN, or a band with h_lo >= h_hi.
+VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, double d_max,
+                                   std::optional<std::pair<double, double>> altitude_band = std::nullopt,
+                                   double resolution_deg = 1.0);
+// Same, building a scene for this one call (prefer a shared VisibilityScene for many VVs).
+VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double d_max,
+                                   std::optional<std::pair<double, double>> altitude_band = std::nullopt,
+                                   double resolution_deg = 1.0);
+// VVs for many POI positions (rows of `pois`), in parallel over the points (TBB).
+std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, const Points3& pois,
+                                                 double d_max,
+                                                 std::optional<std::pair<double, double>> altitude_band = std::nullopt,
+                                                 double resolution_deg = 1.0);
+// Line of sight for segment pairs, building a scene for this call.
+std::vector<bool> line_of_sight(const Environment& env, const Points3& a, const Points3& b);
+
+// Volume enclosed by a closed, consistently oriented triangle mesh (divergence theorem).
+double mesh_volume(const TriangleMesh& mesh);
 
 }  // namespace vistrack

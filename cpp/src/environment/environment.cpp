@@ -4,6 +4,7 @@
 #include <cstring>
 #include <limits>
 
+#include "environment/detail.hpp"
 #include "vistrack/error.hpp"
 
 namespace vistrack {
@@ -47,6 +48,30 @@ Environment Environment::from_triangles(Points3 vertices, Faces faces) {
   env.bounds_ = bounds_of(env.mesh_.vertices);
   env.ground_level_ = env.bounds_.min.z();
   return env;
+}
+
+Environment Environment::from_buildings(std::vector<Building> buildings, RoadNetwork roads) {
+  if (buildings.empty()) detail::fail_field("buildings", "[]", "an environment needs at least one building");
+  detail::validate_buildings(buildings, detail::sources_for_buildings(buildings));
+  Environment env = from_validated_buildings(std::move(buildings));
+  env.set_roads(std::move(roads));
+  return env;
+}
+
+Environment Environment::from_validated_buildings(std::vector<Building> buildings) {
+  Environment env;
+  env.buildings_ = std::move(buildings);
+  env.mesh_ = detail::extrude(env.buildings_);
+  env.bounds_ = bounds_of(env.mesh_.vertices);
+  env.ground_level_ = 0.0;  // buildings stand on the ground plane z = 0
+  return env;
+}
+
+std::vector<double> Environment::heights() const {
+  std::vector<double> result;
+  result.reserve(buildings_.size());
+  for (const Building& b : buildings_) result.push_back(b.height);
+  return result;
 }
 
 double Environment::max_height() const { return bounds_.max.z() - ground_level_; }

@@ -1,0 +1,155 @@
+// Environment::from_geojson: 2.5D buildings from a GeoJSON FeatureCollection.
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "environment/detail.hpp"
+#include "vistrack/error.hpp"
+
+namespace vistrack {
+
+namespace {
+
+using nlohmann::json;
+
+// A number, or a numeric string such as "12" or "12.5 m" as OSM tags often are; nothing when
+// the property is absent or null.
+std::optional<double> number_property(const json& properties, const std::string& key, const std::string& field) {
+  const auto it = properties.find(key);
+  if (it == properties.end() || it->is_null()) return std::nullopt;
+  if (it->is_number()) return it->get<double>();
+  if (it->is_string()) {
+    const std::string text = it->get<std::string>();
+    std::istringstream in(text);
+    double value = 0.0;
+    if (in >> value) {
+      std::string unit;
+      in >> unit;
+      if (unit.empty() || unit == "m") return value;
+    } else if (text == "nan" || text == "NaN" || text == "NAN") {
+      return std::nan("");
+    }
+    detail::fail_field(field, "\"" + text + "\"", "expected a number of metres");
+  }
+  detail::fail_field(field, it->dump(), "expected a number");
+}
+
+Ring ring_from_json(const json& coordinates, const std::string& field) {
+  if (!coordinates.is_array()) detail::fail_field(field, coordinates.dump(), "a ring must be an array of [x, y] points");
+  Ring ring;
+  for (std::size_t i = 0; i < coordinates.size(); ++i) {
+    const json& point = coordinates[i];
+    if (!point.is_array() || point.size() < 2 || !point[0].is_number() || !point[1].is_number())
+      detail::fail_field(field + "[" + std::to_string(i) + "]", point.dump(), "a point must be [x, y] numbers");
+    ring.emplace_back(point[0].get<double>(), point[1].get<double>());
+  }
+  return detail::clean_ring(ring);
+}
+
+Polygon polygon_from_json(const json& rings, const std::string& field, detail::BuildingSource& source) {
+  if (!rings.is_array() || rings.empty())
+    detail::fail_field(field, rings.dump(), "a Polygon needs at least its outer ring");
+  Polygon polygon;
+  source.outer_field = field + "[0]";
+  polygon.outer = ring_from_json(rings[0], source.outer_field);
+  for (std::size_t r = 1; r < rings.size(); ++r) {
+    source.hole_fields.push_back(field + "[" + std::to_string(r) + "]");
+    polygon.holes.push_back(ring_from_json(rings[r], source.hole_fields.back()));
+  }
+  return polygon;
+}
+
+}  // namespace
+
+Environment Environment::from_geojson(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) detail::fail_field("path", path, "cannot open the GeoJSON file for reading");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    detail::fail_field("path", path, "the GeoJSON file is empty");
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& error) {
+    detail::fail_field("path", path, std::string("not valid JSON: ") + error.what());
+  }
+  if (!root.is_object() || root.value("type", std::string()) != "FeatureCollection")
+    detail::fail_field("type", root.is_object() && root.contains("type") ? root["type"].dump() : std::string("missing"),
+                       "expected a GeoJSON FeatureCollection");
+  const auto features = root.find("features");
+  if (features == root.end() || !features->is_array())
+    detail::fail_field("features", features == root.end() ? std::string("missing") : features->dump(),
+                       "expected an array of features");
+  if (features->empty()) detail::fail_field("features", "[]", "the collection has no buildings");
+
+  std::vector<Building> buildings;
+  std::vector<detail::BuildingSource> sources;
+  for (std::size_t f = 0; f < features->size(); ++f) {
+    const json& feature = (*features)[f];
+    const std::string name = "features[" + std::to_string(f) + "]";
+    const json properties = feature.contains("properties") && feature["properties"].is_object()
+                                ? feature["properties"] : json::object();
+    int id = static_cast<int>(f);
+    if (const auto it = properties.find("id"); it != properties.end() && it->is_number_integer())
+      id = it->get<int>();
+    double height = 0.0;
+    std::string height_field = name + ".properties.height";
+    if (const auto h = number_property(properties, "height", height_field)) {
+      height = *h;
+    } else if (const auto levels = number_property(properties, "building:levels", name + ".properties.building:levels")) {
+      height_field = name + ".properties.building:levels";
+      require_positive(*levels, height_field);
+      height = 3.0 * *levels;  // 3 m per storey
+    } else {
+      detail::fail_field(height_field, "missing", "each building needs properties.height or building:levels");
+    }
+    if (!feature.contains("geometry") || !feature["geometry"].is_object())
+      detail::fail_field(name + ".geometry", "missing", "each feature needs a Polygon or MultiPolygon geometry");
+    const json& geometry = feature["geometry"];
+    const std::string type = geometry.value("type", std::string());
+    const std::string coordinates_field = name + ".geometry.coordinates";
+    if (!geometry.contains("coordinates"))
+      detail::fail_field(coordinates_field, "missing", "the geometry has no coordinates");
+    const json& coordinates = geometry["coordinates"];
+    if (type == "Polygon") {
+      detail::BuildingSource source{name, height_field, {}, {}};
+      Building building{polygon_from_json(coordinates, coordinates_field, source), height, id};
+      buildings.push_back(std::move(building));
+      sources.push_back(std::move(source));
+    } else if (type == "MultiPolygon") {
+      if (!coordinates.is_array() || coordinates.empty())
+        detail::fail_field(coordinates_field, coordinates.dump(), "a MultiPolygon needs at least one polygon");
+      // Each part becomes its own building with the feature's id and height.
+      for (std::size_t p = 0; p < coordinates.size(); ++p) {
+        detail::BuildingSource source{name + ".geometry.coordinates[" + std::to_string(p) + "]", height_field, {}, {}};
+        Building building{polygon_from_json(coordinates[p], coordinates_field + "[" + std::to_string(p) + "]", source),
+                          height, id};
+        buildings.push_back(std::move(building));
+        sources.push_back(std::move(source));
+      }
+    } else {
+      detail::fail_field(name + ".geometry.type", "\"" + type + "\"", "expected Polygon or MultiPolygon");
+    }
+  }
+  // Plain GeoJSON is longitude/latitude in degrees; a whole city then spans well under one
+  // unit, and extruding metres of height over it would be silently wrong.
+  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (const Building& building : buildings)
+    for (const Vec2& p : building.footprint.outer) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+  const double extent = (high - low).maxCoeff();
+  if (extent < 1.0)
+    detail::fail_field("features[*].geometry.coordinates", "extent " + detail::to_text(extent),
+                       "the buildings span less than 1 unit: coordinates look like longitude/latitude "
+                       "degrees; vistrack needs local east-north metres");
+  detail::validate_buildings(buildings, sources);
+  return from_validated_buildings(std::move(buildings));
+}
+
+}  // namespace vistrack

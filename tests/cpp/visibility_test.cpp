@@ -1,0 +1,443 @@
+// Visibility volumes (section III.D, eq. (4)): analytic volumes, a brute-force oracle for one box
+// building, line-of-sight cross-checks, real-city meshes checked with CGAL.
+#include "vistrack/visibility.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "test_data.hpp"
+#include "vistrack/error.hpp"
+#include "vistrack/orbit.hpp"
+#include "vistrack/volume.hpp"
+
+namespace vistrack {
+namespace {
+
+struct Box {
+  Vec3 lo;
+  Vec3 hi;
+};
+
+void add_box(const Box& b, std::vector<Vec3>& v, std::vector<std::array<int, 3>>& f) {
+  const int o = static_cast<int>(v.size());
+  for (int k = 0; k < 8; ++k)
+    v.emplace_back((k & 1) ? b.hi.x() : b.lo.x(), (k & 2) ? b.hi.y() : b.lo.y(), (k & 4) ? b.hi.z() : b.lo.z());
+  // Outward triangles of the 6 faces (corner k: bit0 x, bit1 y, bit2 z).
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    f.push_back({o + q[0], o + q[1], o + q[2]});
+    f.push_back({o + q[0], o + q[2], o + q[3]});
+  }
+}
+
+Environment boxes_env(const std::vector<Box>& boxes) {
+  std::vector<Vec3> v;
+  std::vector<std::array<int, 3>> f;
+  for (const Box& b : boxes) add_box(b, v, f);
+  Points3 vertices(static_cast<Eigen::Index>(v.size()), 3);
+  for (std::size_t k = 0; k < v.size(); ++k) vertices.row(static_cast<Eigen::Index>(k)) = v[k].transpose();
+  Faces faces(static_cast<Eigen::Index>(f.size()), 3);
+  for (std::size_t k = 0; k < f.size(); ++k) faces.row(static_cast<Eigen::Index>(k)) << f[k][0], f[k][1], f[k][2];
+  return Environment::from_triangles(vertices, faces);
+}
+
+// An open field: one small box far outside every query (the environment needs a triangle).
+Environment open_field() { return boxes_env({{Vec3(5000, 5000, 0), Vec3(5010, 5010, 5)}}); }
+
+// Exact slab test: does the closed segment p-q meet the closed box?
+bool segment_hits_box(const Vec3& p, const Vec3& q, const Box& b) {
+  double t0 = 0.0, t1 = 1.0;
+  for (int k = 0; k < 3; ++k) {
+    const double d = q[k] - p[k];
+    if (d == 0.0) {
+      if (p[k] < b.lo[k] || p[k] > b.hi[k]) return false;
+      continue;
+    }
+    double a = (b.lo[k] - p[k]) / d, c = (b.hi[k] - p[k]) / d;
+    if (a > c) std::swap(a, c);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, c);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// Volume of {|p - g| <= r, lo <= z <= hi} for g = (0, 0, gz): integral of pi (r^2 - (z - gz)^2).
+double ball_slab_volume(double r, double gz, double lo, double hi) {
+  lo = std::max(lo, gz - r);
+  hi = std::min(hi, gz + r);
+  if (hi <= lo) return 0.0;
+  auto primitive = [&](double z) { return r * r * (z - gz) - std::pow(z - gz, 3) / 3.0; };
+  return kPi * (primitive(hi) - primitive(lo));
+}
+
+void expect_valid(const VisibilityVolume& vv, const std::string& what) {
+  const MeshCheck check = check_closed_mesh(vv.mesh);
+  EXPECT_TRUE(check.valid()) << what << ": " << check.problem;
+  EXPECT_NEAR(check.volume, vv.volume, 1e-6 * std::max(1.0, vv.volume)) << what;
+}
+
+TEST(DirectionGrid, CellsTileTheSphere) {
+  for (double res : {0.5, 1.0, 2.0, 7.0}) {
+    const DirectionGrid grid = DirectionGrid::from_resolution(res);
+    EXPECT_EQ(grid.num_elevation % 2, 0) << "a row boundary must lie on the horizon";
+    double total = 0.0;
+    for (int i = 0; i < grid.num_elevation; ++i) total += grid.solid_angle(i) * grid.num_azimuth;
+    EXPECT_NEAR(total, 4.0 * kPi, 1e-9);
+    EXPECT_NEAR(grid.direction(3, 5).norm(), 1.0, 1e-12);
+    EXPECT_NEAR(grid.elevation(0) + grid.elevation(grid.num_elevation - 1), 0.0, 1e-12);
+  }
+  EXPECT_THROW(DirectionGrid::from_resolution(0.0), Error);
+  EXPECT_THROW(DirectionGrid::from_resolution(std::nan("")), Error);
+  EXPECT_THROW(DirectionGrid::from_resolution(90.0), Error);
+}
+
+// Open field: the VV is the ball of radius d_max cut by the ground and the band (analytic).
+TEST(VisibilityVolume, OpenFieldMatchesAnalyticVolume) {
+  const VisibilityScene scene(open_field());
+  struct Case {
+    Vec3 g;
+    std::optional<std::pair<double, double>> band;
+  };
+  const std::vector<Case> cases = {
+      {Vec3(0, 0, 0), std::nullopt},             // POI on the ground: half ball
+      {Vec3(0, 0, 0), std::make_pair(50.0, 200.0)},  // band above the POI: near > 0
+      {Vec3(0, 0, 30), std::nullopt},            // POI above the ground: ball cut below
+      {Vec3(0, 0, 0), std::make_pair(0.0, 100.0)},   // band from the ground
+      {Vec3(0, 0, 20), std::make_pair(10.0, 250.0)},  // POI inside the band
+      {Vec3(0, 0, 20), std::make_pair(10.0, 60.0)},   // a thin band around the POI
+      {Vec3(0, 0, 100), std::make_pair(20.0, 60.0)},  // band below the POI
+  };
+  const double r = 400.0;
+  for (const Case& c : cases) {
+    const VisibilityVolume vv = visibility_volume(scene, c.g, r, c.band, 1.0);
+    const double lo = c.band ? c.band->first : 0.0;
+    const double hi = c.band ? c.band->second : 1e9;
+    const double exact = ball_slab_volume(r, c.g.z(), std::max(lo, 0.0), hi);
+    const std::string what = "g.z " + std::to_string(c.g.z()) + (c.band ? " band " + std::to_string(c.band->first) : "");
+    // The issue asks for 0.5%; the mesh (vertex rows on the caps' rims) does 0.1%. The cell-centre
+    // grid cuts rims across a cell: 1% on thin bands.
+    EXPECT_NEAR(vv.volume / exact, 1.0, 0.001) << what;
+    EXPECT_NEAR(vv.grid_volume() / exact, 1.0, 0.01) << what;
+    expect_valid(vv, what);
+    EXPECT_EQ(vv.near.size(), vv.grid.size());
+    // Band caps carry exact z: every vertex lies inside the band and the ground.
+    EXPECT_GE(vv.mesh.vertices.col(2).minCoeff(), std::max(lo, 0.0) - 1e-9) << what;
+    EXPECT_LE(vv.mesh.vertices.col(2).maxCoeff(), std::min(hi, c.g.z() + r) + 1e-9) << what;
+  }
+}
+
+TEST(VisibilityVolume, NearIsPositiveWhenTheBandStartsAboveThePoi) {
+  const VisibilityVolume vv = visibility_volume(open_field(), Vec3(0, 0, 0), 300.0, std::make_pair(50.0, 100.0), 2.0);
+  const int row = vv.grid.num_elevation - 1;  // looking straight up: visible from z = 50 to 100
+  const std::size_t k = static_cast<std::size_t>(row) * vv.grid.num_azimuth;
+  const double s = std::sin(vv.grid.elevation(row));
+  EXPECT_NEAR(vv.near[k], 50.0 / s, 1e-9);
+  EXPECT_NEAR(vv.far[k], 100.0 / s, 1e-9);
+  // Looking down or along the ground: nothing.
+  EXPECT_TRUE(vv.empty(0));
+  EXPECT_TRUE(vv.empty(static_cast<std::size_t>(vv.grid.num_elevation / 2 - 1) * vv.grid.num_azimuth));
+}
+
+TEST(VisibilityVolume, BandOutOfReachGivesAnEmptyVolume) {
+  const VisibilityVolume vv = visibility_volume(open_field(), Vec3(0, 0, 0), 100.0, std::make_pair(200.0, 300.0), 2.0);
+  EXPECT_EQ(vv.mesh.faces.rows(), 0);
+  EXPECT_EQ(vv.volume, 0.0);
+  EXPECT_EQ(vv.grid_volume(), 0.0);
+  EXPECT_TRUE(visibility_polygon(vv, 250.0).empty());
+}
+
+TEST(VisibilityVolume, BadInputNamesTheField) {
+  const Box box{Vec3(40, -20, 0), Vec3(60, 20, 30)};
+  const VisibilityScene scene(boxes_env({box}));
+  auto message = [&](auto&& call) {
+    try {
+      call();
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([&] { visibility_volume(scene, Vec3(50, 0, 10), 100.0); }).find("inside an obstacle"), std::string::npos);
+  EXPECT_NE(message([&] { visibility_volume(scene, Vec3(0, 0, -1), 100.0); }).find("g[2]"), std::string::npos);
+  EXPECT_NE(message([&] { visibility_volume(scene, Vec3(0, std::nan(""), 0), 100.0); }).find("g[1]"), std::string::npos);
+  EXPECT_NE(message([&] { visibility_volume(scene, Vec3(0, 0, 0), 0.0); }).find("d_max"), std::string::npos);
+  EXPECT_NE(message([&] { visibility_volume(scene, Vec3(0, 0, 0), std::nan("")); }).find("d_max"), std::string::npos);
+  EXPECT_NE(message([&] { visibility_volume(scene, Vec3(0, 0, 0), 100.0, std::make_pair(50.0, 20.0)); }).find("altitude_band"),
+            std::string::npos);
+  EXPECT_NE(message([&] { visibility_volume(scene, Vec3(0, 0, 0), 100.0, std::make_pair(std::nan(""), 20.0)); })
+                .find("altitude_band[0]"),
+            std::string::npos);
+  EXPECT_NE(message([&] { visibility_volume(scene, Vec3(0, 0, 0), 100.0, std::nullopt, -1.0); }).find("resolution_deg"),
+            std::string::npos);
+  Points3 pois(2, 3);
+  pois << 0, 0, 0, 50, 0, 5;
+  EXPECT_NE(message([&] { visibility_volumes(scene, pois, 100.0); }).find("pois[1]"), std::string::npos);
+}
+
+// One box building: the VP at an altitude against dense plane points tested exactly.
+TEST(VisibilityVolume, BoxBuildingPolygonMatchesBruteForce) {
+  const Box box{Vec3(40, -20, 0), Vec3(60, 20, 30)};
+  const VisibilityScene scene(boxes_env({box}));
+  const Vec3 g(0, 0, 0);
+  const double d_max = 200.0;
+  const VisibilityVolume vv = visibility_volume(scene, g, d_max, std::nullopt, 0.5);
+  expect_valid(vv, "box");
+  for (double h : {20.0, 50.0, 100.0}) {
+    const std::vector<Polygon> vp = visibility_polygon(vv, h);
+    ASSERT_EQ(vp.size(), 1u) << "h " << h;
+    long both = 0, either = 0;
+    for (double x = -d_max; x <= d_max; x += 1.0)
+      for (double y = -d_max; y <= d_max; y += 1.0) {
+        const Vec3 p(x + 0.37, y + 0.61, h);
+        const bool truth = (p - g).norm() <= d_max && !segment_hits_box(g, p, box);
+        const bool ours = contains(vp[0], p.head<2>());
+        both += truth && ours;
+        either += truth || ours;
+      }
+    const double iou = static_cast<double>(both) / static_cast<double>(either);
+    EXPECT_GE(iou, 0.99) << "h " << h;
+  }
+  // MaxRadius: below the roof the nearest boundary is the wall x = 40; above it the shadow
+  // starts where the ray over the near roof edge (40, y, 30) reaches h: x = 40 h / 30.
+  const double cell = 0.5 * kPi / 180.0;
+  EXPECT_NEAR(max_inscribed_radius(visibility_polygon(vv, 20.0), g.head<2>()), 40.0, 1e-3);
+  for (double h : {50.0, 90.0}) {
+    const double exact = 40.0 * h / 30.0;
+    EXPECT_NEAR(max_inscribed_radius(visibility_polygon(vv, h), g.head<2>()), exact, exact * cell) << "h " << h;
+  }
+}
+
+TEST(LineOfSight, MatchesExactSegmentBoxTest) {
+  const std::vector<Box> boxes = {{Vec3(40, -20, 0), Vec3(60, 20, 30)}, {Vec3(-50, 30, 0), Vec3(-10, 80, 70)}};
+  const Environment env = boxes_env(boxes);
+  const VisibilityScene scene(env);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> xy(-120.0, 120.0), z(0.0, 100.0);
+  const int n = 20000;
+  Points3 a(n, 3), b(n, 3);
+  for (int k = 0; k < n; ++k) {
+    a.row(k) << xy(rng), xy(rng), z(rng);
+    b.row(k) << xy(rng), xy(rng), z(rng);
+  }
+  const std::vector<bool> visible = scene.line_of_sight(a, b);
+  const std::vector<bool> reverse = scene.line_of_sight(b, a);
+  int checked = 0, agree = 0;
+  for (int k = 0; k < n; ++k) {
+    const Vec3 p = a.row(k).transpose(), q = b.row(k).transpose();
+    bool blocked = false, inside_end = false;
+    for (const Box& box : boxes) {
+      blocked = blocked || segment_hits_box(p, q, box);
+      for (const Vec3& e : {p, q})
+        inside_end = inside_end || ((e.array() >= box.lo.array() - 1e-2).all() && (e.array() <= box.hi.array() + 1e-2).all());
+    }
+    if (inside_end) continue;  // endpoints inside a building: not a meaningful query
+    ++checked;
+    agree += visible[k] == !blocked;
+    EXPECT_EQ(visible[k], reverse[k]) << k;
+  }
+  EXPECT_GT(checked, n / 2);
+  // Grazing segments (touching an edge within float precision) may go either way.
+  EXPECT_GE(agree, checked - 3);
+  EXPECT_EQ(line_of_sight(env, a.topRows(100), b.topRows(100)), std::vector<bool>(visible.begin(), visible.begin() + 100));
+  EXPECT_THROW(scene.line_of_sight(a.topRows(3), b.topRows(2)), Error);
+}
+
+// Points well inside or outside the VV (every neighbour one grid step away agrees) must agree with
+// a direct line-of-sight query.
+void cross_check_with_line_of_sight(const VisibilityScene& scene, const VisibilityVolume& vv, std::uint64_t seed,
+                                    int samples) {
+  const double step = kPi / vv.grid.num_elevation;
+  const Vec3 g = vv.poi;
+  const double ground = scene.ground_level();
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Vec3> points;
+  while (static_cast<int>(points.size()) < samples) {
+    const Vec3 p = g + vv.d_max * 1.05 * Vec3(unit(rng), unit(rng), unit(rng));
+    if (p.z() >= ground) points.push_back(p);
+  }
+  auto truth_of = [&](const std::vector<Vec3>& ps) {
+    Points3 a(static_cast<Eigen::Index>(ps.size()), 3), b(static_cast<Eigen::Index>(ps.size()), 3);
+    for (std::size_t k = 0; k < ps.size(); ++k) {
+      a.row(static_cast<Eigen::Index>(k)) = g.transpose();
+      b.row(static_cast<Eigen::Index>(k)) = ps[k].transpose();
+    }
+    const std::vector<bool> los = scene.line_of_sight(a, b);
+    std::vector<bool> truth(ps.size());
+    for (std::size_t k = 0; k < ps.size(); ++k) {
+      const bool band = !vv.altitude_band || (ps[k].z() >= vv.altitude_band->first && ps[k].z() <= vv.altitude_band->second);
+      truth[k] = los[k] && (ps[k] - g).norm() <= vv.d_max && band && ps[k].z() >= ground;
+    }
+    return truth;
+  };
+  // Neighbours up to one step away: a 5 x 5 pattern of half steps in azimuth and elevation (thin
+  // occluders such as canopy slabs fit between whole steps), and one step in range.
+  std::vector<std::array<double, 3>> offsets = {{0, 0, 0}, {step, 0, 0}, {-step, 0, 0}};
+  for (int a = -2; a <= 2; ++a)
+    for (int e = -2; e <= 2; ++e)
+      if (a != 0 || e != 0) offsets.push_back({0, 0.5 * a * step, 0.5 * e * step});
+  std::vector<Vec3> neighbours;
+  for (const Vec3& p : points) {
+    const Vec3 d = p - g;
+    const double r = d.norm(), az = std::atan2(d.y(), d.x()), el = std::asin(d.z() / r);
+    for (const auto& [dr, daz, del] : offsets) {
+      const double rr = r * (1.0 + dr), aa = az + daz, ee = std::clamp(el + del, -kPi / 2, kPi / 2);
+      neighbours.push_back(g + rr * Vec3(std::cos(ee) * std::cos(aa), std::cos(ee) * std::sin(aa), std::sin(ee)));
+    }
+  }
+  const std::vector<bool> truth = truth_of(neighbours);
+  const std::size_t kNeighbours = offsets.size();
+  Points3 query(static_cast<Eigen::Index>(points.size()), 3);
+  for (std::size_t k = 0; k < points.size(); ++k) query.row(static_cast<Eigen::Index>(k)) = points[k].transpose();
+  const std::vector<bool> inside = points_inside(vv.mesh, query);
+  int clear = 0, agree = 0, visible = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    bool same = true;
+    for (std::size_t n = 1; n < kNeighbours; ++n) same = same && truth[kNeighbours * k + n] == truth[kNeighbours * k];
+    if (!same) continue;
+    ++clear;
+    visible += truth[kNeighbours * k];
+    agree += inside[k] == truth[kNeighbours * k];
+    EXPECT_EQ(inside[k], truth[kNeighbours * k]) << "point " << points[k].transpose() << " poi " << g.transpose();
+  }
+  EXPECT_GT(clear, samples / 2);
+  EXPECT_GT(visible, clear / 20);
+  EXPECT_EQ(agree, clear);
+}
+
+TEST(VisibilityVolume, InsideTestAgreesWithLineOfSightBox) {
+  const VisibilityScene scene(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)}, {Vec3(-50, 30, 0), Vec3(-10, 80, 70)}}));
+  cross_check_with_line_of_sight(scene, visibility_volume(scene, Vec3(0, 0, 0), 200.0, std::nullopt, 1.0), 1, 3000);
+  cross_check_with_line_of_sight(scene, visibility_volume(scene, Vec3(0, 0, 0), 200.0, std::make_pair(20.0, 90.0), 1.0),
+                                 2, 3000);
+}
+
+TEST(VisibilityVolume, BatchEqualsSingleAndIsDeterministic) {
+  const VisibilityScene scene(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)}}));
+  Points3 pois(6, 3);
+  pois << 0, 0, 0, 10, 50, 0, -30, -30, 2, 100, 0, 0.5, 0, 90, 0, -80, 10, 1;
+  const auto batch = visibility_volumes(scene, pois, 150.0, std::make_pair(10.0, 80.0), 2.0);
+  ASSERT_EQ(batch.size(), 6u);
+  for (Eigen::Index k = 0; k < pois.rows(); ++k) {
+    const VisibilityVolume one = visibility_volume(scene, pois.row(k).transpose(), 150.0, std::make_pair(10.0, 80.0), 2.0);
+    EXPECT_EQ(one.volume, batch[static_cast<std::size_t>(k)].volume);
+    EXPECT_EQ(one.far, batch[static_cast<std::size_t>(k)].far);
+    EXPECT_TRUE(one.mesh.faces == batch[static_cast<std::size_t>(k)].mesh.faces);
+  }
+}
+
+TEST(VisibilityVolume, SavesObjAndPly) {
+  const VisibilityVolume vv = visibility_volume(open_field(), Vec3(0, 0, 0), 100.0, std::nullopt, 10.0);
+  const auto dir = std::filesystem::temp_directory_path();
+  for (const std::string name : {"vistrack_vv_test.obj", "vistrack_vv_test.ply"}) {
+    const std::string path = (dir / name).string();
+    vv.save(path);
+    const Environment back = Environment::from_mesh(path);
+    EXPECT_EQ(back.num_triangles(), static_cast<std::size_t>(vv.mesh.faces.rows())) << name;
+    std::filesystem::remove(path);
+  }
+  EXPECT_THROW(vv.save((dir / "vv.stl").string()), Error);
+  EXPECT_THROW(vv.save("/nonexistent-dir/vv.obj"), Error);
+}
+
+// Seeded random POIs, bands (below, around and above the POI), ranges and resolutions: every VV
+// mesh is valid, its volume is close to the grid's, and no visible interval exceeds d_max.
+void random_volumes_are_valid(const Environment& env, int count, std::uint64_t seed) {
+  const VisibilityScene scene(env);
+  std::mt19937_64 rng(seed);
+  const Bounds3 box = scene.bounds();
+  std::uniform_real_distribution<double> x(box.min.x(), box.max.x()), y(box.min.y(), box.max.y()), unit(0.0, 1.0);
+  const std::vector<double> lifts = {0.0, 0.5, 3.0, 20.0};
+  const std::vector<double> resolutions = {2.0, 3.0, 5.0};
+  int made = 0;
+  while (made < count) {
+    Vec3 g(x(rng), y(rng), 0.0);
+    g.z() = scene.surface_height(g.head<2>()) + lifts[rng() % lifts.size()];
+    if (scene.inside_obstacle(g)) continue;
+    const double d_max = 30.0 + 470.0 * unit(rng);
+    std::optional<std::pair<double, double>> band;
+    if (unit(rng) > 0.3) band = std::make_pair(g.z() - 10.0 + 60.0 * unit(rng), g.z() + 60.0 + 240.0 * unit(rng));
+    const double res = resolutions[rng() % resolutions.size()];
+    const VisibilityVolume vv = visibility_volume(scene, g, d_max, band, res);
+    ++made;
+    for (double f : vv.far) ASSERT_LE(f, d_max);
+    if (vv.mesh.faces.rows() == 0) continue;
+    std::ostringstream what;
+    what << "g " << g.transpose() << " d_max " << d_max << " band " << (band ? band->first : -1) << " "
+         << (band ? band->second : -1);
+    expect_valid(vv, what.str());
+    // Two discretisations of one VV (cell rays vs corner rays): close, looser on coarse grids
+    // where a thin band spans few cells.
+    EXPECT_NEAR(vv.volume / vv.grid_volume(), 1.0, 0.05 * res) << what.str();
+  }
+}
+
+TEST(VisibilityVolume, RandomBoxCityVolumesAreValid) {
+  random_volumes_are_valid(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)},
+                                      {Vec3(-50, 30, 0), Vec3(-10, 80, 70)},
+                                      {Vec3(-80, -90, 0), Vec3(-20, -40, 15)}}),
+                           40, 21);
+}
+
+TEST(VisibilityVolumeData, RandomCharlotteVolumesAreValid) {
+  VISTRACK_REQUIRE_DATA(geojson, "charlotte/buildings.geojson");
+  random_volumes_are_valid(Environment::from_geojson(geojson), 40, 22);
+}
+
+// Real data: VVs along the road paths are closed, valid meshes; the volume converges.
+void check_city(const Environment& env, const std::string& path_csv, double d_max,
+                std::pair<double, double> band, std::uint64_t seed) {
+  const VisibilityScene scene(env);
+  const PoiPath poi = PoiPath::from_csv(path_csv, 5.0);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> when(0.0, poi.duration());
+  Points3 pois(50, 3);
+  for (int k = 0; k < 50; ++k) pois.row(k) = poi.position(when(rng)).transpose();
+  // On uneven terrain the path's z may lie under the surface: drape the POI 0.5 m above it.
+  for (int k = 0; k < 50; ++k) pois(k, 2) = std::max(pois(k, 2), scene.surface_height(pois.row(k).head<2>().transpose()) + 0.5);
+  const std::vector<double> resolutions = {4.0, 3.0, 2.5};
+  for (int k = 0; k < 50; ++k) {
+    const auto b = k % 2 ? std::optional(band) : std::nullopt;
+    const VisibilityVolume vv = visibility_volume(scene, pois.row(k).transpose(), d_max, b, resolutions[k % 3]);
+    expect_valid(vv, path_csv + " #" + std::to_string(k));
+    EXPECT_GT(vv.volume, 0.0);
+  }
+  // Convergence at one point: successive differences shrink as the resolution halves.
+  std::vector<double> volumes;
+  for (double res : {4.0, 2.0}) volumes.push_back(visibility_volume(scene, pois.row(0).transpose(), d_max, std::nullopt, res).volume);
+  const VisibilityVolume fine = visibility_volume(scene, pois.row(0).transpose(), d_max, std::nullopt, 1.0);
+  expect_valid(fine, "1 degree");
+  volumes.push_back(fine.volume);
+  volumes.push_back(visibility_volume(scene, pois.row(0).transpose(), d_max, std::nullopt, 0.5).volume);
+  EXPECT_LT(std::abs(volumes[3] - volumes[2]), std::abs(volumes[1] - volumes[0]));
+  EXPECT_LT(std::abs(volumes[3] - volumes[2]) / volumes[3], 0.01);
+  cross_check_with_line_of_sight(scene, fine, seed, 2000);
+}
+
+TEST(VisibilityVolumeData, CharlotteMesh) {
+  VISTRACK_REQUIRE_DATA(obj, "charlotte/uptown_charlotte.obj");
+  VISTRACK_REQUIRE_DATA(path, "charlotte/paths/3d_dense.csv");
+  check_city(Environment::from_mesh(obj, "y"), path, 400.0, {60.0, 300.0}, 11);
+}
+
+TEST(VisibilityVolumeData, CharlotteGeoJson) {
+  VISTRACK_REQUIRE_DATA(geojson, "charlotte/buildings.geojson");
+  VISTRACK_REQUIRE_DATA(path, "charlotte/paths/paper_slow.csv");
+  check_city(Environment::from_geojson(geojson), path, 400.0, {60.0, 300.0}, 12);
+}
+
+TEST(VisibilityVolumeData, Campus) {
+  VISTRACK_REQUIRE_DATA(obj, "campus/campus.obj");
+  VISTRACK_REQUIRE_DATA(path, "campus/poi_path.csv");
+  check_city(Environment::from_mesh(obj, "y"), path, 100.0, {20.0, 60.0}, 13);
+}
+
+}  // namespace
+}  // namespace vistrack

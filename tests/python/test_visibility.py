@@ -1,0 +1,219 @@
+"""Visibility volumes, line of sight and visibility polygons through the Python API."""
+
+from __future__ import annotations
+
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import vistrack as vt
+
+
+def box(lo, hi):
+    x0, y0, z0 = lo
+    x1, y1, z1 = hi
+    v = np.array(
+        [[x0, y0, z0], [x1, y0, z0], [x1, y1, z0], [x0, y1, z0], [x0, y0, z1], [x1, y0, z1], [x1, y1, z1], [x0, y1, z1]],
+        float,
+    )
+    f = np.array(
+        [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4], [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6],
+         [3, 0, 4], [3, 4, 7]],
+        np.int32,
+    )
+    return v, f
+
+
+@pytest.fixture(scope="module")
+def box_env() -> vt.Environment:
+    return vt.Environment.from_triangles(*box((40, -20, 0), (60, 20, 30)))
+
+
+@pytest.fixture(scope="module")
+def open_field() -> vt.Environment:
+    return vt.Environment.from_triangles(*box((5000, 5000, 0), (5010, 5010, 5)))
+
+
+def segment_hits_box(p, q, lo, hi) -> bool:
+    t0, t1 = 0.0, 1.0
+    for k in range(3):
+        d = q[k] - p[k]
+        if d == 0.0:
+            if p[k] < lo[k] or p[k] > hi[k]:
+                return False
+            continue
+        a, c = sorted(((lo[k] - p[k]) / d, (hi[k] - p[k]) / d))
+        t0, t1 = max(t0, a), min(t1, c)
+        if t0 > t1:
+            return False
+    return True
+
+
+def test_open_field_volume_is_the_cut_ball(open_field):
+    r = 400.0
+    vv = vt.visibility_volume(open_field, (0.0, 0.0, 0.0), r)
+    assert vv.volume == pytest.approx(2.0 / 3.0 * np.pi * r**3, rel=0.005)
+    assert vv.grid_volume() == pytest.approx(2.0 / 3.0 * np.pi * r**3, rel=0.005)
+    lo, hi = 50.0, 200.0
+    banded = vt.visibility_volume(open_field, (0.0, 0.0, 0.0), r, altitude_band=(lo, hi))
+    exact = np.pi * ((r * r * hi - hi**3 / 3) - (r * r * lo - lo**3 / 3))
+    assert banded.volume == pytest.approx(exact, rel=0.005)
+    assert banded.vertices[:, 2].min() >= lo - 1e-9 and banded.vertices[:, 2].max() <= hi + 1e-9
+    assert banded.check().valid
+    assert vv.near.shape == (vv.grid.num_elevation, vv.grid.num_azimuth)
+    assert vv.faces.dtype == np.int32 and vv.vertices.shape[1] == 3
+
+
+def test_scene_is_reused_and_batch_matches_single(box_env):
+    scene = vt.visibility_scene(box_env)
+    assert vt.visibility_scene(box_env) is scene
+    assert vt.visibility_scene(scene) is scene
+    pois = np.array([[0.0, 0.0, 0.0], [10.0, 50.0, 0.0], [-30.0, -30.0, 2.0]])
+    batch = vt.visibility_volumes(scene, pois, 150.0, (10.0, 80.0), 2.0)
+    for poi, vv in zip(pois, batch):
+        one = vt.visibility_volume(box_env, poi, 150.0, (10.0, 80.0), 2.0)
+        assert one.volume == vv.volume
+        np.testing.assert_array_equal(one.far, vv.far)
+        np.testing.assert_array_equal(one.poi, poi)
+
+
+def test_box_polygon_and_max_radius(box_env):
+    vv = vt.visibility_volume(box_env, (0.0, 0.0, 0.0), 200.0, resolution_deg=0.5)
+    assert vv.check().valid
+    # Below the roof the wall x = 40 is nearest; above it the shadow starts at x = 40 h / 30.
+    assert vt.max_inscribed_radius(vv.slice(20.0), (0.0, 0.0)) == pytest.approx(40.0, abs=1e-3)
+    radius = vt.max_inscribed_radius(vv.slice(60.0), (0.0, 0.0))
+    assert radius == pytest.approx(80.0, abs=80.0 * np.radians(0.5))
+    polygons = vv.slice(60.0)
+    assert len(polygons) == 1 and isinstance(polygons[0], vt.Polygon)
+    # Brute force on a coarse grid: the VP matches exact segment-box tests.
+    both = either = 0
+    for x in np.arange(-200.0, 200.0, 4.0):
+        for y in np.arange(-200.0, 200.0, 4.0):
+            p = np.array([x + 0.3, y + 0.7, 60.0])
+            truth = np.linalg.norm(p) <= 200.0 and not segment_hits_box((0, 0, 0), p, (40, -20, 0), (60, 20, 30))
+            ours = polygons[0].contains(p[:2])
+            both += truth and ours
+            either += truth or ours
+    assert both / either >= 0.99
+
+
+def test_line_of_sight_matches_exact_test(box_env):
+    rng = np.random.default_rng(5)
+    a = np.column_stack([rng.uniform(-100, 100, 3000), rng.uniform(-100, 100, 3000), rng.uniform(0, 60, 3000)])
+    b = np.column_stack([rng.uniform(-100, 100, 3000), rng.uniform(-100, 100, 3000), rng.uniform(0, 60, 3000)])
+    inside = lambda p: (p >= (40 - 0.01, -20 - 0.01, -1)).all() and (p <= (60.01, 20.01, 30.01)).all()
+    keep = np.array([not inside(p) and not inside(q) for p, q in zip(a, b)])
+    visible = box_env.line_of_sight(a[keep], b[keep])
+    assert visible.dtype == bool
+    truth = np.array([not segment_hits_box(p, q, (40, -20, 0), (60, 20, 30)) for p, q in zip(a[keep], b[keep])])
+    assert (visible != truth).sum() <= 2  # grazing edges within float precision
+    assert 0.2 < visible.mean() < 0.95
+    scene = vt.visibility_scene(box_env)
+    np.testing.assert_array_equal(scene.line_of_sight(b[keep], a[keep]), visible)
+    with pytest.raises(vt.VistrackError, match="b.rows"):
+        box_env.line_of_sight(a[:3], b[:2])
+
+
+@pytest.mark.parametrize(
+    "kwargs, field",
+    [
+        (dict(g=(50.0, 0.0, 10.0), d_max=100.0), "inside an obstacle"),
+        (dict(g=(0.0, 0.0, -1.0), d_max=100.0), r"g\[2\]"),
+        (dict(g=(0.0, np.nan, 0.0), d_max=100.0), r"g\[1\]"),
+        (dict(g=(0.0, 0.0, 0.0), d_max=0.0), "d_max"),
+        (dict(g=(0.0, 0.0, 0.0), d_max=np.nan), "d_max"),
+        (dict(g=(0.0, 0.0, 0.0), d_max=100.0, altitude_band=(60.0, 20.0)), "altitude_band"),
+        (dict(g=(0.0, 0.0, 0.0), d_max=100.0, resolution_deg=0.0), "resolution_deg"),
+        (dict(g=(0.0, 0.0), d_max=100.0), "g must have 3"),
+    ],
+)
+def test_bad_input_names_the_field(box_env, kwargs, field):
+    with pytest.raises(vt.VistrackError, match=field):
+        vt.visibility_volume(box_env, **kwargs)
+
+
+def test_batch_errors_name_the_row(box_env):
+    with pytest.raises(vt.VistrackError, match=r"pois\[1\]"):
+        vt.visibility_volumes(box_env, np.array([[0.0, 0.0, 0.0], [50.0, 0.0, 5.0]]), 100.0)
+    with pytest.raises(vt.VistrackError, match="pois"):
+        vt.visibility_volumes(box_env, np.zeros((3, 2)), 100.0)
+
+
+def test_save_round_trip(open_field, tmp_path: Path):
+    vv = vt.visibility_volume(open_field, (0.0, 0.0, 0.0), 100.0, resolution_deg=10.0)
+    for name in ("vv.obj", "vv.ply"):
+        vv.save(str(tmp_path / name))
+        back = vt.Environment.from_mesh(str(tmp_path / name))
+        assert back.num_triangles == len(vv.faces)
+        assert vt.mesh_volume(back.vertices, back.faces) == pytest.approx(vv.volume, rel=1e-6)
+    with pytest.raises(vt.VistrackError, match="path"):
+        vv.save(str(tmp_path / "vv.stl"))
+
+
+def test_long_calls_release_the_gil(open_field):
+    scene = vt.visibility_scene(open_field)
+    pois = np.zeros((24, 3))
+    ticks = []
+    stop = threading.Event()
+
+    def ticker() -> None:
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.001)
+
+    thread = threading.Thread(target=ticker)
+    thread.start()
+    try:
+        vt.visibility_volumes(scene, pois, 300.0, None, 1.0)
+    finally:
+        stop.set()
+        thread.join()
+    assert len(ticks) >= 3
+
+
+def test_charlotte_volumes_are_valid_and_converge(charlotte):
+    env = vt.Environment.from_mesh(str(charlotte / "uptown_charlotte.obj"), up="y")
+    scene = vt.visibility_scene(env)
+    poi = vt.PoiPath.from_csv(str(charlotte / "paths" / "paper_slow.csv"), speed=5.0)
+    rng = np.random.default_rng(3)
+    pois = np.array([poi.position(t) for t in rng.uniform(0.0, poi.duration, 8)])
+    for vv in vt.visibility_volumes(scene, pois, 400.0, (60.0, 300.0), 3.0):
+        check = vv.check()
+        assert check.valid, check.problem
+        assert vv.volume == pytest.approx(check.volume, rel=1e-9)
+    volumes = [vt.visibility_volume(scene, pois[0], 400.0, None, res).volume for res in (4.0, 2.0, 1.0, 0.5)]
+    assert abs(volumes[3] - volumes[2]) < abs(volumes[1] - volumes[0])
+    # The VP at 300 m contains the POI's vertical and gives a positive MaxRadius.
+    vv = vt.visibility_volume(scene, pois[0], 400.0, None, 1.0)
+    assert vt.max_inscribed_radius(vv.slice(300.0), pois[0][:2]) > 0.0
+
+
+def test_cli_volumes_writes_results(charlotte, tmp_path: Path):
+    import json
+
+    from vistrack.cli import main
+
+    out = tmp_path / "vols"
+    code = main([
+        "volumes", "--map", str(charlotte / "buildings.geojson"), "--points=-150,-45;-50,45,0.5",
+        "--d-max", "300", "--altitude", "50", "--resolution", "3", "--out", str(out), "--check", "--quiet",
+    ])
+    assert code == 0
+    summary = json.loads((out / "volumes.json").read_text())
+    assert len(summary["points"]) == 2
+    for k, record in enumerate(summary["points"]):
+        assert record["mesh_valid"], record["mesh_problem"]
+        assert record["poi"][2] == pytest.approx(0.5)
+        assert record["max_radius"] > 0.0
+        assert (out / record["mesh"]).is_file()
+        # MaxRadius is the distance from the POI to the nearest ring of its VP.
+        polygon = vt.Polygon(np.array(record["visibility_polygon"][0]["outer"]),
+                             [np.array(h) for h in record["visibility_polygon"][0]["holes"]])
+        assert polygon.distance_to_boundary(np.array(record["poi"][:2])) == pytest.approx(record["max_radius"])
+    assert (out / "plan.png").stat().st_size > 10_000 and (out / "vv3d.png").stat().st_size > 10_000
+    assert main(["volumes", "--map", str(tmp_path / "missing.geojson"), "--points", "0,0", "--out", str(out)]) == 2
+    assert main(["volumes", "--map", str(charlotte / "buildings.geojson"), "--points", "a,b", "--out", str(out)]) == 2
