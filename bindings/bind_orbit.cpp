@@ -1,8 +1,10 @@
 #include <pybind11/eigen.h>
+#include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "vistrack/orbit.hpp"
+#include "vistrack/visibility.hpp"
 
 namespace py = pybind11;
 
@@ -43,6 +45,122 @@ void bind_orbit(py::module_& m) {
         "0 when none contains it.");
   m.def("constant_radius_plan", &constant_radius_plan, py::arg("poi"), py::arg("radius"), py::arg("uav"),
         "Baseline plan: orbits of one radius along the whole POI path.");
+  m.def(
+      "plane_visibility_polygon",
+      [](const VisibilityVolume& vv, double altitude) {
+        py::gil_scoped_release release;
+        return plane_visibility_polygon(vv, altitude);
+      },
+      py::arg("vv"), py::arg("altitude"),
+      "VP of a VV at world altitude z by walking the mesh edges that cross the plane (what the orbit "
+      "planner uses); the same polygons as vv.slice(z), which uses CGAL's slicer.");
+  m.def("orbit_curvature", &orbit_curvature, py::arg("radius"), py::arg("radius_rate"), py::arg("relative_angle"),
+        py::arg("uav_speed"), py::arg("poi_speed"), py::arg("counter_clockwise") = true,
+        "Curvature (31) of the path that stays on the orbit at a = theta - gamma, with theta' from (13); "
+        "inf when (g'.e_r + R')^2 >= v^2 (Lemma 5).");
+  m.def("max_orbit_curvature", &max_orbit_curvature, py::arg("radius"), py::arg("uav_speed"), py::arg("poi_speed"),
+        "Lemma 6: (1 + v_g/v)^2 / R, the largest curvature (31) over angles and admissible dR/dt.");
+  m.def("min_feasible_radius", &min_feasible_radius, py::arg("uav"), py::arg("poi_speed"),
+        "r_min (1 + v_g/v)^2: the smallest orbit radius Lemma 6 allows (at most 4 r_min, Corollary 1).");
+
+  py::class_<CircularOrbits>(m, "CircularOrbits", "Result of Algorithm 1 on given MaxRadius values.")
+      .def_readonly("radii", &CircularOrbits::radii, "R_k after the forward and backward rate passes (m).")
+      .def_readonly("radius_rates", &CircularOrbits::radius_rates, "dR/dt per segment (m/s).")
+      .def_readonly("min_feasible_radius", &CircularOrbits::min_feasible_radius, "r_min (1 + v_g/v)^2 (m).")
+      .def_readonly("feasible", &CircularOrbits::feasible, "Every sample passes Lemma 6.")
+      .def_readonly("failing_samples", &CircularOrbits::failing_samples, "Samples that break Lemma 6.")
+      .def_readonly("infeasibility", &CircularOrbits::infeasibility, "The first failing sample and why.");
+  m.def("circular_orbits", &circular_orbits, py::arg("times"), py::arg("max_radii"), py::arg("uav"),
+        py::arg("poi_speed"),
+        "Algorithm 1 (lines 2-18): lower radii so that |dR/dt| <= v - v_g (Lemma 5), each limited radius "
+        "built from its neighbour's, then check R_k >= r_min (1 + v_g/v)^2 (Lemma 6). VistrackError when "
+        "the UAV is not faster than the POI.");
+
+  py::class_<Discretization>(m, "Discretization", "VV samples along the POI path (section IV.B).")
+      .def_readonly("arc_lengths", &Discretization::arc_lengths, "s_k along the path (m).")
+      .def_readonly("times", &Discretization::times, "t_k = s_k / v_g (s).")
+      .def_readonly("points", &Discretization::points, "g(t_k), (n, 3).")
+      .def_readonly("depths", &Discretization::depths, "0 for initial samples, d for one inserted at halving d.")
+      .def_readonly("metric", &Discretization::metric, "d(alpha_k, alpha_k+1) of eq. (56) (m^3), size n - 1.")
+      .def_readonly("volumes_computed", &Discretization::volumes_computed, "VVs computed by this call.")
+      .def("volume", [](const Discretization& d, std::size_t k) { return VisibilityVolume(*d.volumes.at(k)); },
+           py::arg("k"), "A copy of VV k.");
+
+  py::class_<VisibilityOrbitPlan, OrbitPlan>(
+      m, "VisibilityOrbitPlan",
+      "An orbit plan with what it was made from: samples, VPs, VVs, dR/dt, Lemma 6 threshold.")
+      .def_readonly("uav", &VisibilityOrbitPlan::uav)
+      .def_readonly("sensor", &VisibilityOrbitPlan::sensor)
+      .def_readonly("planning", &VisibilityOrbitPlan::planning)
+      .def_readonly("arc_lengths", &VisibilityOrbitPlan::arc_lengths, "s_k of the samples (m).")
+      .def_readonly("depths", &VisibilityOrbitPlan::depths, "Refinement depth of each sample.")
+      .def_readonly("radius_rates", &VisibilityOrbitPlan::radius_rates, "dR/dt per segment (m/s).")
+      .def_readonly("min_feasible_radius", &VisibilityOrbitPlan::min_feasible_radius, "r_min (1 + v_g/v)^2 (m).")
+      .def_readonly("failing_samples", &VisibilityOrbitPlan::failing_samples, "Samples that break Lemma 6.")
+      .def_readonly("polygons", &VisibilityOrbitPlan::polygons, "VPs at h_UAV, one list of Polygon per sample.")
+      .def_readonly("volumes_computed", &VisibilityOrbitPlan::volumes_computed, "VVs computed by this plan.")
+      .def_property_readonly("num_volumes", [](const VisibilityOrbitPlan& p) { return p.volumes.size(); })
+      .def("volume", [](const VisibilityOrbitPlan& p, std::size_t k) { return VisibilityVolume(*p.volumes.at(k)); },
+           py::arg("k"), "A copy of the VV of sample k (VVs are not stored in JSON).")
+      .def("to_json", [](const VisibilityOrbitPlan& p) { return to_json(p); }, "The plan as JSON (without VVs).")
+      .def_static("from_json", &visibility_orbit_plan_from_json, py::arg("text"), "A plan from its JSON text.");
+  // Wraps a Python progress callable: called with the GIL taken, from the planning thread.
+  auto wrap_progress = [](const py::object& callback) -> ProgressFunction {
+    if (callback.is_none()) return {};
+    return [callback](std::size_t done, std::size_t total) {
+      py::gil_scoped_acquire acquire;
+      callback(done, total);
+    };
+  };
+  py::class_<OrbitPlanner>(m, "OrbitPlanner",
+                           "Section IV on one environment: an Embree scene built once, a VV cache shared by "
+                           "every call (spacings and plans reuse VVs), the grid XOR metric (56) in the POI "
+                           "frame, VPs at ground level + h_UAV.")
+      .def(py::init<const Environment&, const Sensor&, double>(), py::arg("env"), py::arg("sensor"),
+           py::arg("resolution_deg") = 1.0, py::call_guard<py::gil_scoped_release>())
+      .def(
+          "adaptive",
+          [wrap_progress](OrbitPlanner& p, const PoiPath& poi, const Planning& planning, const py::object& progress) {
+            ProgressFunction f = wrap_progress(progress);
+            py::gil_scoped_release release;
+            return p.adaptive(poi, planning, f);
+          },
+          py::arg("poi"), py::arg("planning"), py::arg("progress") = py::none(),
+          "Adaptive discretization (IV.B): initial spacing, halving while the metric exceeds the cutoff. "
+          "progress(done, total) is called as VVs are computed.")
+      .def(
+          "fixed",
+          [wrap_progress](OrbitPlanner& p, const PoiPath& poi, double spacing, const py::object& progress) {
+            ProgressFunction f = wrap_progress(progress);
+            py::gil_scoped_release release;
+            return p.fixed(poi, spacing, f);
+          },
+          py::arg("poi"), py::arg("spacing"), py::arg("progress") = py::none(),
+          "VVs every `spacing` m from each edge start plus every node, and the metric between neighbours.")
+      .def(
+          "plan",
+          [wrap_progress](OrbitPlanner& p, const PoiPath& poi, const Uav& uav, const Planning& planning,
+                          const py::object& progress) {
+            ProgressFunction f = wrap_progress(progress);
+            py::gil_scoped_release release;
+            return p.plan(poi, uav, planning, f);
+          },
+          py::arg("poi"), py::arg("uav"), py::arg("planning"), py::arg("progress") = py::none(),
+          "Adaptive VVs, VPs at h_UAV, MaxRadius and Algorithm 1: a VisibilityOrbitPlan.")
+      .def_property_readonly("cached_volumes", &OrbitPlanner::cached_volumes, "VVs held in the cache.");
+  m.def(
+      "plan_orbits",
+      [wrap_progress](const Environment& env, const PoiPath& poi, const Uav& uav, const Sensor& sensor,
+                      const Planning& planning, const py::object& progress) {
+        ProgressFunction f = wrap_progress(progress);
+        py::gil_scoped_release release;
+        return plan_orbits(env, poi, uav, sensor, planning, f);
+      },
+      py::arg("env"), py::arg("poi"), py::arg("uav"), py::arg("sensor"), py::arg("planning"),
+      py::arg("progress") = py::none(),
+      "Section IV end to end: adaptive VVs along the POI path (IV.B), VPs at h_UAV, MaxRadius, then "
+      "Algorithm 1 (IV.C). Returns a VisibilityOrbitPlan (an OrbitPlan); infeasible plans say which "
+      "sample fails and why. VistrackError when the UAV is not faster than the POI.");
 }
 
 }  // namespace vistrack::bindings

@@ -20,6 +20,7 @@ void bind_dubins(pybind11::module_& m);
 void bind_visibility(pybind11::module_& m);
 void bind_volume(pybind11::module_& m);
 void bind_orbit(pybind11::module_& m);
+void bind_xor(pybind11::module_& m);  // XOR volume (eq. 56), bindings/bind_xor.cpp
 void bind_guidance(pybind11::module_& m);
 void bind_ode(pybind11::module_& m);
 void bind_simulate(pybind11::module_& m);

@@ -16,6 +16,7 @@ PYBIND11_MODULE(_core, m) {
   vistrack::bindings::bind_dubins(m);
   vistrack::bindings::bind_visibility(m);
   vistrack::bindings::bind_volume(m);
+  vistrack::bindings::bind_xor(m);
   vistrack::bindings::bind_orbit(m);
   vistrack::bindings::bind_guidance(m);
   vistrack::bindings::bind_ode(m);

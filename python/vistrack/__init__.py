@@ -10,6 +10,20 @@ from importlib.metadata import PackageNotFoundError, version as _version
 
 from . import _core
 from ._core import (
+    plane_visibility_polygon,
+    OrbitPlanner,
+    plan_orbits,
+    CircularOrbits,
+    Discretization,
+    VisibilityOrbitPlan,
+    circular_orbits,
+    grid_xor_volume,
+    max_orbit_curvature,
+    mesh_xor_volume,
+    min_feasible_radius,
+    orbit_curvature,
+    shares_direction_grid,
+    xor_volume,
     Control,
     DirectionGrid,
     Environment,
@@ -65,6 +79,20 @@ except PackageNotFoundError:  # running from a build tree
     __version__ = _core.__version__
 
 __all__ = [
+    "plane_visibility_polygon",
+    "OrbitPlanner",
+    "plan_orbits",
+    "CircularOrbits",
+    "Discretization",
+    "VisibilityOrbitPlan",
+    "circular_orbits",
+    "grid_xor_volume",
+    "max_orbit_curvature",
+    "mesh_xor_volume",
+    "min_feasible_radius",
+    "orbit_curvature",
+    "shares_direction_grid",
+    "xor_volume",
     "Control",
     "DirectionGrid",
     "Environment",

@@ -14,7 +14,7 @@ from typing import Sequence
 from . import VistrackError, __version__
 
 # Order shown in --help.
-COMMANDS: list[str] = ["demo", "volumes", "simulate", "tune"]
+COMMANDS: list[str] = ["demo", "volumes", "orbits", "simulate", "tune"]
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -47,4 +47,52 @@ std::vector<Polygon> nest_rings(const std::vector<Ring>& rings);
 // Throws Error when the altitude is not finite.
 std::vector<Polygon> visibility_polygon(const VisibilityVolume& vv, double altitude, bool all_parts = false);
 
+// ---------------------------------------------------------------------------------------------
+// XOR volume, the difference metric d(alpha_i, alpha_j) of eq. (56).
+
+// "poi": each VV is first translated by minus its own POI (as the paper's public implementation
+// does), so open terrain gives zero; "world": the VVs are compared where they are.
+enum class XorFrame { poi, world };
+XorFrame parse_xor_frame(const std::string& name);  // "poi" or "world", else Error
+
+// "auto": the per-direction path when it applies (same grid, POI frame), else the mesh path.
+enum class XorMethod { automatic, grid, mesh };
+XorMethod parse_xor_method(const std::string& name);  // "auto", "grid" or "mesh", else Error
+
+struct MeshXorOptions {
+  // CGAL corefinement cannot be bounded in advance (coplanar overlaps make it pathologically
+  // slow, see notes/embree-cgal.md): past this many seconds it is aborted with an Error.
+  double time_limit = 120.0;
+  // Rotation (rad) of the second mesh about the axis (1, 2, 3)/|(1, 2, 3)| through the origin
+  // before the Boolean. 0 = exact. A tiny value (1e-6) takes identical and coplanar faces (two
+  // VVs about the same POI) out of CGAL's slow coincident-face branch; it moves a point at
+  // distance r by at most angle * r, so it changes the XOR by at most about
+  // angle * r_max * (surface area of both meshes).
+  double perturbation = 0.0;
+  // Check both meshes for self-intersections first (O(n log n); CGAL's Boolean requires none).
+  bool check_self_intersection = true;
+};
+
+// volume(A xor B) = vol(A) + vol(B) - 2 vol(A n B) of two closed, outward oriented, 2-manifold
+// triangle meshes without self-intersections, by CGAL corefinement with exact predicates
+// (Epick; the inputs are copied). A mesh without faces is the empty set. Error when a mesh is
+// not closed, not a valid triangle mesh, self-intersecting, does not bound a volume, or the time
+// limit is exceeded.
+double mesh_xor_volume(const TriangleMesh& a, const TriangleMesh& b, const MeshXorOptions& options = {});
+
+// True when both VVs use the same direction grid with intervals for every cell.
+bool shares_direction_grid(const VisibilityVolume& a, const VisibilityVolume& b);
+
+// The exact XOR volume of two VVs described on one direction grid, each about its own POI
+// (frame "poi"): both are then star-shaped about the origin, and along every direction of a
+// cell the symmetric difference of the visible intervals has the measure
+// integral r^2 dr = (f^3 - n^3)/3 per piece. Sum over cells of solid_angle * that measure.
+// Error unless shares_direction_grid(a, b).
+double grid_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b);
+
+// d(a, b) of eq. (56) for two VVs, in the given frame, by the chosen method. The mesh path in
+// frame "poi" applies options.perturbation (see MeshXorOptions) as given.
+double xor_volume(const VisibilityVolume& a, const VisibilityVolume& b, XorFrame frame = XorFrame::poi,
+                  XorMethod method = XorMethod::automatic, const MeshXorOptions& options = {});
+
 }  // namespace vistrack

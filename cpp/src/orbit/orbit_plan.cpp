@@ -94,7 +94,7 @@ OrbitPlan orbit_plan_from_json(const std::string& text) {
                          "must have one entry per time (" + std::to_string(plan.times.size()) + ")");
     for (std::size_t k = 0; k < plan.times.size(); ++k) {
       require_finite(plan.times[k], "times[" + std::to_string(k) + "]");
-      require_positive(plan.radii[k], "radii[" + std::to_string(k) + "]");
+      require_non_negative(plan.radii[k], "radii[" + std::to_string(k) + "]");  // 0: POI not visible (infeasible plan)
       if (k > 0 && !(plan.times[k] > plan.times[k - 1]))
         detail::fail_field("times[" + std::to_string(k) + "]", plan.times[k], "times must increase");
     }

@@ -1,0 +1,109 @@
+"""``vistrack orbits``: adaptive VVs along a POI path, Algorithm 1, plan JSON and figures."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import time
+from pathlib import Path
+
+from .. import _core
+from .. import planning as pl
+
+
+def _spacings(text: str) -> list[float]:
+    try:
+        values = [float(v) for v in text.split(",") if v.strip()]
+    except ValueError as error:
+        raise argparse.ArgumentTypeError(f"--spacings: {error}") from None
+    if not values or any(not (v > 0) for v in values):
+        raise argparse.ArgumentTypeError(f"--spacings = {text}: need positive numbers like 50,25,10,1")
+    return values
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    p = subparsers.add_parser(
+        "orbits",
+        help="plan the orbit locus (adaptive VVs + Algorithm 1) for a POI path",
+        description="Adaptive visibility volumes along a POI path (sec. IV.B), visibility polygons at "
+        "h_UAV, MaxRadius and Algorithm 1 (sec. IV.C). Writes plan.json, summary.json, orbits.png, "
+        "radius.png and, with --figure-metric, metric.png (Figure 4).",
+    )
+    p.add_argument("--map", help="city: .geojson footprints or a triangle mesh (.obj ...)")
+    p.add_argument("--up", default="y", choices=["y", "z"], help="up axis of a mesh file (default y)")
+    p.add_argument("--path", help="POI path CSV, one x,y[,z] waypoint per line")
+    p.add_argument("--from-plan", default=None,
+                   help="redraw the figures of a saved plan.json (VPs are stored in it; no VVs recomputed)")
+    p.add_argument("--out", default="orbits_out", help="output folder (created)")
+    p.add_argument("--poi-speed", type=float, default=5.0, help="v_g, m/s")
+    p.add_argument("--speed", type=float, default=_core.Uav().speed, help="UAV speed v, m/s")
+    p.add_argument("--min-turn-radius", type=float, default=_core.Uav().min_turn_radius, help="r_min, m")
+    p.add_argument("--altitude", type=float, default=_core.Uav().altitude, help="h_UAV above ground, m")
+    p.add_argument("--d-max", type=float, default=_core.Sensor().d_max, help="sensor range, m")
+    d = _core.Planning()
+    p.add_argument("--spacing", type=float, default=d.spacing, help="initial VV spacing, m")
+    p.add_argument("--cutoff", type=float, default=d.cutoff, help="d_cutoff, m^3")
+    p.add_argument("--resolution", type=float, default=d.resolution_deg, help="VV ray grid step, degrees")
+    p.add_argument("--min-spacing", type=float, default=d.min_spacing, help="smallest VV spacing, m")
+    p.add_argument("--max-depth", type=int, default=d.max_depth, help="most halvings of one interval")
+    p.add_argument("--footprints", default=None,
+                   help="GeoJSON footprints drawn under the orbits (default: buildings.geojson beside --map)")
+    p.add_argument("--figure-metric", action="store_true", help="also draw Figure 4 (metric along the path)")
+    p.add_argument("--spacings", type=_spacings, default=[50.0, 25.0, 10.0, 1.0],
+                   help="fixed spacings for --figure-metric (default 50,25,10,1)")
+    p.add_argument("--quiet", action="store_true", help="no progress bars")
+    p.set_defaults(func=run)
+
+
+def redraw(args: argparse.Namespace, out: Path) -> int:
+    plan = pl.read_plan(args.from_plan)
+    background = pl.footprint_environment(args.map or "", args.footprints) if (args.map or args.footprints) else None
+    if background is None and args.map and str(args.map).lower().endswith((".geojson", ".json")):
+        background = _core.Environment.from_geojson(str(args.map))
+    pl.figure_orbits(plan, background, out / "orbits.png")
+    pl.figure_radius(plan, out / "radius.png")
+    print(f"redrew {out}/orbits.png, radius.png from {args.from_plan}")
+    return 0
+
+
+def run(args: argparse.Namespace) -> int:
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    if args.from_plan:
+        return redraw(args, out)
+    if not args.map or not args.path:
+        raise _core.VistrackError("orbits: --map and --path are required (or --from-plan PLAN.json)")
+    env = pl.load_environment(args.map, args.up)
+    poi = _core.PoiPath.from_csv(args.path, args.poi_speed)
+    uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude)
+    sensor = _core.Sensor(d_max=args.d_max)
+    planning = _core.Planning(spacing=args.spacing, cutoff=args.cutoff, resolution_deg=args.resolution,
+                              min_spacing=args.min_spacing, max_depth=args.max_depth)
+    start = time.perf_counter()
+    planner = _core.OrbitPlanner(env, sensor, args.resolution)
+    bar = pl.Progress("adaptive VVs", not args.quiet)
+    try:
+        plan = planner.plan(poi, uav, planning, bar)
+    finally:
+        bar.close()
+    seconds = time.perf_counter() - start
+    pl.write_plan(plan, out / "plan.json")
+    summary = pl.plan_summary(plan)
+    summary["seconds"] = seconds
+    background = env if str(args.map).lower().endswith((".geojson", ".json")) else \
+        pl.footprint_environment(args.map, args.footprints)
+    pl.figure_orbits(plan, background if background is not None else env, out / "orbits.png")
+    pl.figure_radius(plan, out / "radius.png")
+    if args.figure_metric:
+        results = pl.metric_along_path(planner, poi, planning, args.spacings, not args.quiet)
+        pl.figure_metric(results, args.cutoff, out / "metric.png",
+                         f"{Path(args.path).name}: d_max {args.d_max:g} m, {args.resolution:g}° grid")
+        summary["metric_max"] = {k: (max(v.metric) if len(v.metric) else 0.0) for k, v in results.items()}
+        summary["metric_volumes"] = {k: len(v.times) for k, v in results.items()}
+    (out / "summary.json").write_text(json.dumps(summary, indent=1))
+    print(f"{len(plan.times)} VVs ({plan.volumes_computed} computed) in {seconds:.2f} s; "
+          f"R {plan.radii[0]:.1f} m -> {plan.radii[-1]:.1f} m; "
+          + ("feasible" if plan.feasible else f"INFEASIBLE: {plan.infeasibility}"))
+    print(f"wrote {out}/plan.json, summary.json, orbits.png, radius.png"
+          + (", metric.png" if args.figure_metric else ""))
+    return 0

@@ -1,0 +1,234 @@
+"""Orbit planning pipeline around the C++ core (section IV): environment loading, progress bars,
+and the figures of the paper (Figure 4: the XOR metric along a path; Figure 5: orbits inside
+their visibility polygons; R(t) against its rate limits).
+
+Figures made from the Charlotte data show OpenStreetMap geometry (© OpenStreetMap contributors,
+ODbL 1.0).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Callable, Iterable, Sequence
+
+import numpy as np
+
+from . import _core
+
+OSM_CREDIT = "Buildings © OpenStreetMap contributors (ODbL)"
+
+
+def load_environment(path: str | Path, up: str = "y") -> "_core.Environment":
+    """A GeoJSON city (2.5D footprints) or any triangle mesh (``up`` = "y" for Y-up files)."""
+    path = Path(path)
+    if path.suffix.lower() in (".geojson", ".json"):
+        return _core.Environment.from_geojson(str(path))
+    return _core.Environment.from_mesh(str(path), up)
+
+
+class Progress:
+    """A tqdm bar fed by the core's progress(done, total) callback (silent when disabled)."""
+
+    def __init__(self, description: str, enabled: bool = True) -> None:
+        self.bar = None
+        if enabled:
+            from tqdm import tqdm
+
+            self.bar = tqdm(total=0, desc=description, unit="VV", leave=False)
+
+    def __call__(self, done: int, total: int) -> None:
+        if self.bar is None:
+            return
+        self.bar.total = total
+        self.bar.n = done
+        self.bar.refresh()
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.close()
+
+
+def metric_along_path(
+    planner: "_core.OrbitPlanner",
+    poi: "_core.PoiPath",
+    planning: "_core.Planning",
+    spacings: Sequence[float] = (50.0, 25.0, 10.0, 1.0),
+    progress: bool = True,
+) -> dict[str, "_core.Discretization"]:
+    """Figure 4's data: fixed spacings (finest last reuses the cached VVs) and the adaptive method."""
+    results: dict[str, _core.Discretization] = {}
+    for spacing in sorted(spacings):  # finest first: coarser spacings then come from the cache
+        bar = Progress(f"VVs every {spacing:g} m", progress)
+        try:
+            results[f"{spacing:g} m"] = planner.fixed(poi, spacing, bar)
+        finally:
+            bar.close()
+    bar = Progress("adaptive VVs", progress)
+    try:
+        results["adaptive"] = planner.adaptive(poi, planning, bar)
+    finally:
+        bar.close()
+    ordered = {f"{s:g} m": results[f"{s:g} m"] for s in spacings}
+    ordered["adaptive"] = results["adaptive"]
+    return ordered
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def figure_metric(results: dict[str, "_core.Discretization"], cutoff: float, path: str | Path, title: str = "") -> None:
+    """Figure 4: the XOR metric (56) between neighbouring VVs against distance along the path."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for label, d in results.items():
+        s = np.asarray(d.arc_lengths)
+        if len(s) < 2:
+            continue
+        mid = 0.5 * (s[1:] + s[:-1])
+        style = dict(lw=2.2, color="purple") if label == "adaptive" else dict(lw=1.2)
+        ax.plot(mid, np.asarray(d.metric), marker=".", ms=3, label=f"{label} ({len(s)} VVs)", **style)
+    ax.axhline(cutoff, color="k", ls="--", lw=1, label=f"cutoff {cutoff:.3g} m$^3$")
+    ax.set_xlabel("distance along the POI path (m)")
+    ax.set_ylabel("XOR volume between neighbouring VVs (m$^3$)")
+    ax.set_title(title or "VV difference metric (eq. 56) along the path")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    fig.text(0.99, 0.01, OSM_CREDIT, ha="right", va="bottom", fontsize=6, color="gray")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def _footprints(env) -> list:
+    footprints = getattr(env, "footprints", None) if env is not None else None  # [] for meshes
+    if footprints is None:
+        return []
+    return list(footprints() if callable(footprints) else footprints)
+
+
+def footprint_environment(map_path: str | Path, footprints: str | Path | None = None):
+    """Where to draw building footprints from: the given GeoJSON, else buildings.geojson beside a
+    mesh map (Charlotte ships both), else None."""
+    candidate = Path(footprints) if footprints else Path(map_path).with_name("buildings.geojson")
+    if candidate.suffix.lower() in (".geojson", ".json") and candidate.exists():
+        return _core.Environment.from_geojson(str(candidate))
+    return None
+
+
+def _pick(n: int, count: int) -> list[int]:
+    if n <= count:
+        return list(range(n))
+    return sorted({int(round(i)) for i in np.linspace(0, n - 1, count)})
+
+
+def figure_orbits(plan: "_core.VisibilityOrbitPlan", env, path: str | Path, count: int = 4) -> None:
+    """Figure 5: orbit circles inside their VPs at h_UAV, over the building footprints."""
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(7.5, 7.5))
+    centres = np.asarray(plan.centers)
+    picked = _pick(len(plan.times), count)
+    colors = plt.cm.plasma(np.linspace(0.0, 0.85, len(picked)))
+    reach = max([max(plan.max_radii) if len(plan.max_radii) else 0.0, plan.sensor.d_max * 0.3])
+    lo = centres.min(axis=0) - reach - 20
+    hi = centres.max(axis=0) + reach + 20
+    for fp in _footprints(env):
+        outer = np.asarray(fp.outer)
+        if outer.size and (outer.max(axis=0) > lo).all() and (outer.min(axis=0) < hi).all():
+            ax.fill(outer[:, 0], outer[:, 1], color="#4a78c2", alpha=0.55, lw=0)
+    way = np.asarray(plan.poi.waypoints)
+    ax.plot(way[:, 0], way[:, 1], color="gray", lw=1, label="POI path")
+    theta = np.linspace(0, 2 * math.pi, 200)
+    for color, k in zip(colors, picked):
+        for poly in plan.polygons[k]:
+            ring = np.vstack([poly.outer, poly.outer[:1]])
+            ax.plot(ring[:, 0], ring[:, 1], color=color, ls="--", lw=1)
+            for hole in poly.holes:
+                h = np.vstack([hole, hole[:1]])
+                ax.plot(h[:, 0], h[:, 1], color=color, ls=":", lw=0.8)
+        c = centres[k]
+        r = plan.radii[k]
+        ax.plot(c[0] + r * np.cos(theta), c[1] + r * np.sin(theta), color=color, lw=2,
+                label=f"t = {plan.times[k]:.1f} s, R = {r:.1f} m")
+        ax.plot(c[0], c[1], "x", color=color, ms=9, mew=2)
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.set_aspect("equal")
+    ax.set_xlabel("east (m)")
+    ax.set_ylabel("north (m)")
+    status = "feasible" if plan.feasible else "INFEASIBLE"
+    ax.set_title(f"Orbits inside their VPs at h_UAV = {plan.uav.altitude:g} m ({status})")
+    ax.legend(fontsize=8, loc="upper right")
+    fig.text(0.99, 0.01, OSM_CREDIT, ha="right", va="bottom", fontsize=6, color="gray")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def figure_radius(plan: "_core.VisibilityOrbitPlan", path: str | Path) -> None:
+    """R(t) after Algorithm 1 against MaxRadius, Lemma 6's threshold, and dR/dt against Lemma 5."""
+    plt = _pyplot()
+    t = np.asarray(plan.times)
+    rate_limit = plan.uav.speed - plan.poi.speed
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 6), sharex=True, gridspec_kw=dict(height_ratios=[2, 1]))
+    ax.plot(t, plan.max_radii, "o", ms=3, color="tab:gray", label="MaxRadius in the VP")
+    ax.plot(t, plan.radii, "-", lw=2, color="tab:blue", label="R(t) after Algorithm 1")
+    ax.axhline(plan.min_feasible_radius, color="tab:red", ls="--",
+               label=f"r_min (1 + v_g/v)$^2$ = {plan.min_feasible_radius:.1f} m (Lemma 6)")
+    for k in plan.failing_samples:
+        ax.plot(t[k], plan.radii[k], "rx", ms=8, mew=2)
+    ax.set_ylabel("orbit radius (m)")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    if len(t) > 1:
+        rates = np.asarray(plan.radius_rates)
+        bx.step(np.r_[t[:-1], t[-1]], np.r_[rates, rates[-1]], where="post", color="tab:blue", label="dR/dt")
+        bx.axhline(rate_limit, color="tab:red", ls="--", label=f"±(v − v_g) = ±{rate_limit:g} m/s (Lemma 5)")
+        bx.axhline(-rate_limit, color="tab:red", ls="--")
+        bx.legend(fontsize=8)
+    bx.set_xlabel("time (s)")
+    bx.set_ylabel("dR/dt (m/s)")
+    bx.grid(alpha=0.3)
+    fig.suptitle(f"R(t): {plan.radii[0]:.1f} m → {plan.radii[-1]:.1f} m over {t[-1]:.2f} s")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def plan_summary(plan: "_core.VisibilityOrbitPlan") -> dict:
+    """The numbers worth printing and comparing with the paper."""
+    depths = list(plan.depths)
+    return {
+        "samples": len(plan.times),
+        "volumes_computed": int(plan.volumes_computed),
+        "inserted": sum(1 for d in depths if d > 0),
+        "initial_radius": plan.radii[0],
+        "final_radius": plan.radii[-1],
+        "initial_max_radius": plan.max_radii[0],
+        "final_max_radius": plan.max_radii[-1],
+        "min_radius": min(plan.radii),
+        "min_feasible_radius": plan.min_feasible_radius,
+        "max_metric": max(plan.metric) if len(plan.metric) else 0.0,
+        "feasible": plan.feasible,
+        "infeasibility": plan.infeasibility,
+        "duration": plan.times[-1],
+    }
+
+
+def write_plan(plan: "_core.VisibilityOrbitPlan", path: str | Path) -> None:
+    Path(path).write_text(plan.to_json())
+
+
+def read_plan(path: str | Path) -> "_core.VisibilityOrbitPlan":
+    return _core.VisibilityOrbitPlan.from_json(Path(path).read_text())
+
+
+def summary_json(summary: dict) -> str:
+    return json.dumps(summary, indent=1)

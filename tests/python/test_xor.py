@@ -1,0 +1,99 @@
+"""XOR volume (eq. 56): the CGAL mesh path on analytic shapes; grid vs mesh vs Monte Carlo on
+Charlotte VVs."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import vistrack as vt
+
+
+def box(lo, hi):
+    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
+    v = np.array([[hi[0] if i & 1 else lo[0], hi[1] if i & 2 else lo[1], hi[2] if i & 4 else lo[2]] for i in range(8)])
+    f = np.array([[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
+                  [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]], dtype=np.int32)
+    return v, f
+
+
+def test_mesh_xor_of_boxes_is_analytic():
+    a = box([0, 0, 0], [2, 2, 2])
+    assert vt.mesh_xor_volume(*a, *box([1, 0, 0], [3, 2, 2])) == pytest.approx(8.0, abs=1e-9)
+    assert vt.mesh_xor_volume(*a, *box([1, 1, 1], [3, 3, 3])) == pytest.approx(14.0, abs=1e-9)
+    # Seeded random boxes: |A xor B| = |A| + |B| - 2 |A n B| with the box intersection in closed form.
+    rng = np.random.default_rng(11)
+    for _ in range(10):
+        lo1, lo2 = rng.uniform(-5, 5, 3), rng.uniform(-5, 5, 3)
+        hi1, hi2 = lo1 + rng.uniform(0.5, 6, 3), lo2 + rng.uniform(0.5, 6, 3)
+        inter = np.prod(np.clip(np.minimum(hi1, hi2) - np.maximum(lo1, lo2), 0, None))
+        expected = np.prod(hi1 - lo1) + np.prod(hi2 - lo2) - 2 * inter
+        assert vt.mesh_xor_volume(*box(lo1, hi1), *box(lo2, hi2)) == pytest.approx(expected, rel=1e-9, abs=1e-9)
+
+
+def test_mesh_xor_rejects_open_meshes_and_bad_options():
+    v, f = box([0, 0, 0], [1, 1, 1])
+    with pytest.raises(vt.VistrackError, match="not closed"):
+        vt.mesh_xor_volume(v, f[:-1], v, f)
+    with pytest.raises(vt.VistrackError, match="time_limit"):
+        vt.mesh_xor_volume(v, f, v, f, time_limit=-1.0)
+
+
+# --- Charlotte ---------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def city(charlotte):
+    env = vt.Environment.from_mesh(str(charlotte / "uptown_charlotte.obj"), "y")
+    return env, vt._core.VisibilityScene(env)
+
+
+def monte_carlo_xor(scene, ga, gb, d_max, n, seed):
+    """|A xor B| in the POI frame from line-of-sight queries (eq. 4): uniform points in the ball."""
+    rng = np.random.default_rng(seed)
+    p = rng.normal(size=(n, 3))
+    p *= (d_max * rng.uniform(0, 1, n) ** (1 / 3) / np.linalg.norm(p, axis=1))[:, None]
+    va = scene.line_of_sight(np.repeat(ga[None], n, 0), ga + p)
+    vb = scene.line_of_sight(np.repeat(gb[None], n, 0), gb + p)
+    ball = 4 / 3 * np.pi * d_max**3
+    x = float(np.mean(va != vb))
+    return ball * x, ball * np.sqrt(x * (1 - x) / n)
+
+
+def test_grid_and_mesh_paths_against_monte_carlo_line_of_sight(city):
+    """Both XOR paths on a Charlotte pair against an independent estimate from line-of-sight
+    queries (eq. 4). The mesh path runs on 2-degree VVs to keep CGAL at a few seconds. The VV
+    meshes go through the grid corners while the intervals are sampled at cell centres: two
+    discretizations of eq. (4) whose volumes differ by 1-3 %, so the paths agree to about 1-2 %
+    with each other (measured 1.1 % here) and each to about 1 % with the truth."""
+    env, scene = city
+    ga = np.array([-150.0, -45.0, 0.5])
+    gb = ga + np.array([14.0, 14.0, 0.0])
+    mc, sigma = monte_carlo_xor(scene, ga, gb, 400.0, 1_000_000, 3)
+    a = vt._core.visibility_volume(scene, ga, 400.0, None, 1.0)
+    b = vt._core.visibility_volume(scene, gb, 400.0, None, 1.0)
+    grid = vt.xor_volume(a, b, frame="poi", method="grid")
+    # Discretization allowance plus three standard deviations of the estimate.
+    assert abs(grid - mc) <= 0.01 * mc + 3 * sigma, (grid, mc, sigma)
+    assert vt.xor_volume(b, a) == pytest.approx(grid, rel=1e-12)
+    a2 = vt._core.visibility_volume(scene, ga, 400.0, None, 2.0)
+    b2 = vt._core.visibility_volume(scene, gb, 400.0, None, 2.0)
+    grid2 = vt.xor_volume(a2, b2, method="grid")
+    mesh2 = vt.xor_volume(a2, b2, method="mesh", time_limit=120.0)
+    assert abs(grid2 - mc) <= 0.01 * mc + 3 * sigma, (grid2, mc, sigma)
+    assert abs(mesh2 - mc) <= 0.015 * mc + 3 * sigma, (mesh2, mc, sigma)
+    assert mesh2 == pytest.approx(grid2, rel=0.025)
+
+
+def test_open_terrain_is_zero_in_the_poi_frame_only(city):
+    env, scene = city
+    # Far outside the city nothing occludes: both VVs are the same hemisphere about their POI.
+    ga, gb = np.array([3000.0, 3000.0, 0.5]), np.array([3030.0, 3000.0, 0.5])
+    a = vt._core.visibility_volume(scene, ga, 100.0, None, 4.0)
+    b = vt._core.visibility_volume(scene, gb, 100.0, None, 4.0)
+    assert vt.xor_volume(a, b, frame="poi") == 0.0
+    assert vt.xor_volume(a, b, frame="poi", method="mesh") < 1e-4 * a.volume  # the documented nudge
+    # In the world frame two hemispheres 30 m apart differ by 2 (V - overlap) > 0.
+    world = vt.xor_volume(a, b, frame="world")
+    assert 0.3 * a.volume < world < 2 * a.volume
+    with pytest.raises(vt.VistrackError, match="frame"):
+        vt.xor_volume(a, b, frame="body")
