@@ -33,24 +33,11 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     import conftest  # noqa: F401  (vistrack from the build tree)
 
 import vistrack as vt  # noqa: E402
-from vistrack.commands.simulate import figure_errors, figure_trajectory, metrics  # noqa: E402
+from vistrack.commands.simulate import figure_errors, figure_trajectory, metrics, surface_path  # noqa: E402
 
 DATA = Path(os.environ.get("VISTRACK_DATA", HERE.parent.parent / "shared" / "data")) / "campus"
 PAPER = {"visibility orbit R(t)": 99.3, "constant R = 11.2 m": 100.0, "constant R = 23.4 m": 84.0,
          "constant R = 35 m": 64.0}
-
-
-def surface_path(scene, waypoints: np.ndarray, speed: float, step: float = 2.0, lift: float = 0.5):
-    """The path densified every `step` m with z = terrain surface + `lift` (downward rays from 10 m)."""
-    points = []
-    for a, b in zip(waypoints[:-1, :2], waypoints[1:, :2]):
-        n = int(np.ceil(np.linalg.norm(b - a) / step))
-        points.extend(a + (b - a) * k / n for k in range(n))
-    points.append(waypoints[-1, :2])
-    points = np.array(points)
-    down = np.array([[0.0, 0.0, -1.0]])
-    z = [10.0 - scene.first_hits(np.array([p[0], p[1], 10.0]), down, 100.0)[0] for p in points]
-    return vt.PoiPath(np.column_stack([points, np.array(z) + lift]), speed)
 
 
 def main() -> int:
@@ -65,7 +52,7 @@ def main() -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     env = vt.Environment.from_mesh(str(DATA / "campus.obj"), "y")
-    scene = vt._core.VisibilityScene(env)
+    scene = vt.VisibilityScene(env)
     poi = surface_path(scene, np.loadtxt(DATA / "flight_test_path.csv", delimiter=","), 0.35)
     # Altitudes are measured from the scene's ground level (the lowest vertex): world z = 35 m.
     uav = vt.Uav(speed=3.0, min_turn_radius=5.0, altitude=35.0 - scene.ground_level)

@@ -46,7 +46,7 @@ def load_city(kind: str):
     return vt.Environment.from_mesh(str(DATA / "uptown_charlotte.obj"), "y")
 
 
-def run(example: dict, env, out: Path, resolution: float) -> dict:
+def run(example: dict, env, out: Path, resolution: float, drawing) -> dict:
     from tqdm import tqdm
 
     poi = vt.PoiPath.from_csv(str(DATA / "paths" / example["path"]), 5.0)
@@ -72,7 +72,8 @@ def run(example: dict, env, out: Path, resolution: float) -> dict:
     (out / f"{example['name']}_trajectory.csv").write_text(result.to_csv())
     title = (f"{example['name']}: v {uav.speed:g} m/s, r_min {uav.min_turn_radius:g} m, h {uav.altitude:g} m, "
              f"beta {control.beta:g}, k_psi {control.k_psi:g}")
-    figure_trajectory([("UAV", plan, result)], env, out / f"{example['name']}_trajectory.png", title)
+    figure_trajectory([("UAV", plan, result)], drawing, out / f"{example['name']}_trajectory.png", title,
+                      orbit_count=6)
     figure_errors(result, out / f"{example['name']}_errors.png", 20.0, title + " (first 20 s)",
                   uav.speed / uav.min_turn_radius)
     m = metrics(result)
@@ -96,7 +97,8 @@ def main() -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     env = load_city(args.map)
-    rows = [run(example, env, out, args.resolution) for example in EXAMPLES]
+    drawing = load_city("geojson")  # footprints for the figures, whichever model is simulated
+    rows = [run(example, env, out, args.resolution, drawing) for example in EXAMPLES]
     (out / "summary.json").write_text(json.dumps(rows, indent=1))
     print(f"{'':10s} {'R_i ours':>9s} {'paper':>6s} {'R_f ours':>9s} {'paper':>6s} {'T ours':>7s} {'paper':>6s}"
           f" {'visible':>8s} {'|r-R| >20s':>10s} {'VVs':>4s} {'plan s':>7s} {'sim ms':>7s}")

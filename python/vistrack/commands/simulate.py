@@ -38,6 +38,25 @@ def read_plan(path: str | Path) -> Any:
     return _core.OrbitPlan.from_json(text)
 
 
+def surface_path(scene: Any, waypoints: np.ndarray, speed: float, step: float = 2.0, lift: float = 0.5,
+                 probe_height: float = 10.0) -> Any:
+    """A PoiPath through the (x, y) of ``waypoints``, densified every ``step`` m, with z on the
+    scene's surface + ``lift`` (a downward ray from ``probe_height``): for uneven terrain, where
+    a path at a fixed z would dip under the ground."""
+    waypoints = np.asarray(waypoints, float)
+    points = []
+    for a, b in zip(waypoints[:-1, :2], waypoints[1:, :2]):
+        n = max(1, int(np.ceil(np.linalg.norm(b - a) / step)))
+        points.extend(a + (b - a) * k / n for k in range(n))
+    points.append(waypoints[-1, :2])
+    points = np.array(points)
+    down = np.array([[0.0, 0.0, -1.0]])
+    hits = np.array([scene.first_hits(np.array([p[0], p[1], probe_height]), down, 1e4)[0] for p in points])
+    if not np.all(np.isfinite(hits)):
+        raise _core.VistrackError(f"probe_height = {probe_height}: no surface below some waypoints")
+    return _core.PoiPath(np.column_stack([points, probe_height - hits + lift]), speed)
+
+
 def metrics(result: Any, converge_after: float = 20.0) -> dict[str, Any]:
     """Summary numbers of one closed-loop run (errors after ``converge_after`` seconds)."""
     t = np.asarray(result.t)
@@ -77,12 +96,11 @@ def _pyplot():
 
 
 def _footprints(env: Any) -> list:
-    if env is None:
-        return []
-    try:
-        return list(env.footprints())
-    except Exception:  # an environment made from a mesh has no footprints
-        return []
+    """Building footprints of a 2.5D environment ([] for a mesh or no environment)."""
+    footprints = getattr(env, "footprints", None) if env is not None else None
+    if callable(footprints):
+        footprints = footprints()
+    return list(footprints or [])
 
 
 def figure_trajectory(runs: Sequence[tuple[str, Any, Any]], env: Any, path: str | Path, title: str = "",
@@ -215,17 +233,6 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
-def line_of_sight_for(env: Any):
-    """The visibility area's line-of-sight query for ``env`` (None without an environment)."""
-    if env is None:
-        return None
-    scene_type = getattr(_core, "VisibilityScene", None)
-    if scene_type is None:
-        raise _core.VistrackError("--map: this build has no visibility scene (the visibility area is missing)")
-    scene = scene_type(env)
-    return lambda start, end: np.asarray(scene.line_of_sight(start, end), bool)
-
-
 def run(args: argparse.Namespace) -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -240,7 +247,7 @@ def run(args: argparse.Namespace) -> int:
         x0 = np.array([g[0] + plan.radii[0], g[1], math.pi / 2])
     else:
         x0 = args.x0
-    los = line_of_sight_for(env)
+    scene = _core.VisibilityScene(env) if env is not None else None  # one BVH for every run
     runs = []
     summary: dict[str, Any] = {"plan": str(args.plan), "x0": [float(v) for v in x0],
                                "uav": {"speed": uav.speed, "min_turn_radius": uav.min_turn_radius,
@@ -252,8 +259,7 @@ def run(args: argparse.Namespace) -> int:
         (f"constant R = {r:g} m", _core.constant_radius_plan(plan.poi, r, uav)) for r in args.baseline_radius]
     for label, p in plans:
         start = time.perf_counter()
-        result = _core.simulate(p, uav, x0, control, None, options, line_of_sight=los,
-                                fixed_step=args.fixed_step)
+        result = _core.simulate(p, uav, x0, control, scene, options, fixed_step=args.fixed_step)
         seconds = time.perf_counter() - start
         m = metrics(result, args.converge_after)
         m["seconds"] = seconds
