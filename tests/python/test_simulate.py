@@ -188,3 +188,14 @@ def test_campus_flight_test_visibility_matches_the_paper(campus):
         assert visibility(vt.constant_radius_plan(poi, radius, uav)) == pytest.approx(paper, abs=0.03), radius
     plan = vt.plan_orbits(env, poi, uav, vt.Sensor(d_max=50.0), vt.Planning(spacing=20.0, cutoff=1e5))
     assert visibility(plan) >= 0.97  # paper: 99.3 %
+
+
+@pytest.mark.parametrize("script", ["paper_examples.py", "campus_flight_test.py"])
+def test_examples_run(script, shared_data, tmp_path):
+    env = dict(os.environ, VISTRACK_DATA=str(shared_data))
+    done = subprocess.run([sys.executable, str(REPO / "examples" / script), "--out", str(tmp_path)],
+                          capture_output=True, text=True, env=env, timeout=600)
+    assert done.returncode == 0, done.stderr[-2000:]
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert summary
+    assert any(p.suffix == ".png" for p in tmp_path.iterdir())
