@@ -7,6 +7,7 @@
 #include "vistrack/environment.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/simulate.hpp"
+#include "vistrack/visibility.hpp"
 
 namespace py = pybind11;
 
@@ -74,10 +75,23 @@ void bind_simulate(py::module_& m) {
       "simulate",
       [](const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control, py::object env,
          const SimulationOptions& options, std::optional<py::function> line_of_sight, double fixed_step) {
-        LineOfSight los;
         if (!env.is_none()) {
-          throw Error("env: visibility evaluation needs the visibility area (Embree scene); pass line_of_sight");
+          if (line_of_sight) throw Error("line_of_sight: give either env or line_of_sight, not both");
+          std::optional<VisibilityScene> scene;
+          if (py::isinstance<VisibilityScene>(env)) {
+            scene = env.cast<VisibilityScene>();
+          } else if (py::isinstance<Environment>(env)) {
+            const Environment& environment = env.cast<const Environment&>();
+            py::gil_scoped_release release;
+            scene.emplace(environment);
+          } else {
+            throw Error("env: expected an Environment or a VisibilityScene, got " +
+                        std::string(py::str(py::type::of(env).attr("__name__"))));
+          }
+          py::gil_scoped_release release;
+          return simulate(plan, uav, x0, control, options, *scene, fixed_step);
         }
+        LineOfSight los;
         if (line_of_sight) los = python_line_of_sight(*line_of_sight);
         py::gil_scoped_release release;
         return simulate(plan, uav, x0, control, options, los, fixed_step);
@@ -88,8 +102,11 @@ void bind_simulate(py::module_& m) {
       "Closed loop of section VI: the Dubins vehicle (1) from x0 = (x, y, psi) steered by (86) around "
       "the plan's time-varying orbit, Dormand-Prince 5(4) restarted at each segment boundary "
       "(options.rtol/atol/max_step; fixed_step > 0 for fixed steps), sampled every "
-      "options.output_step. With env (or a line_of_sight(from, to) -> bool array callable), also "
-      "the line of sight from the UAV at uav.altitude to the POI at every sample. Releases the GIL.");
+      "options.output_step. With env (an Environment or a VisibilityScene: Embree occlusion rays from "
+      "the UAV at world z = uav.altitude to the POI, lifted onto the surface where its path z is "
+      "underground) or a line_of_sight(from (n, 3), to (n, 3)) -> bool array callable (UAV at z = "
+      "uav.altitude, POI at its path z), also the line of sight at every "
+      "sample and the visibility fraction. Releases the GIL.");
 
   py::class_<TuningResult>(m, "TuningResult", "Grid search of max |dpsi_d/dt + u_lyap| (section V.D).")
       .def_readonly("max_turn_rate", &TuningResult::max_turn_rate, "max |dpsi_d/dt + u_lyap|, rad/s")

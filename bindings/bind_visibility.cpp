@@ -116,8 +116,8 @@ void bind_visibility(py::module_& m) {
             return lifted;
           },
           py::arg("points"),
-          "Where ground POIs (n, 3) stand: unchanged, unless below the topmost surface over their xy "
-          "(uneven terrain), then 0.5 m above it.")
+          "Where ground POIs stand: rows (x, y, h) of a POI path, h the height above the surface, "
+          "become (x, y, surface_height(x, y) + h).")
       .def("inside_obstacle", &VisibilityScene::inside_obstacle, py::arg("point"),
            "Whether a point lies inside an obstacle.");
 

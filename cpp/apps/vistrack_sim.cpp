@@ -3,18 +3,21 @@
 //   vistrack_sim --plan plan.json --out trajectory.csv [--speed 20] [--min-turn-radius 50]
 //                [--altitude 300] [--beta 0.025] [--k-psi 20] [--direction ccw]
 //                [--x0 X,Y,PSI] [--rtol 1e-6] [--atol 1e-8] [--max-step 1] [--output-step 0.1]
-//                [--fixed-step 0]
+//                [--fixed-step 0] [--map city.geojson|mesh.obj [--up y|z]]
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
 
+#include "vistrack/environment.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/orbit.hpp"
 #include "vistrack/simulate.hpp"
+#include "vistrack/visibility.hpp"
 
 namespace {
 
@@ -22,9 +25,11 @@ const char* kUsage =
     "usage: vistrack_sim --plan PLAN.json [--out TRAJECTORY.csv] [--speed V] [--min-turn-radius R]\n"
     "                    [--altitude H] [--beta B] [--k-psi K] [--direction ccw|cw] [--x0 X,Y,PSI]\n"
     "                    [--rtol R] [--atol A] [--max-step S] [--output-step S] [--fixed-step S]\n"
+    "                    [--map CITY.geojson|MESH.obj [--up y|z]]\n"
     "Simulates the Dubins UAV steered by the guidance law (86) around the plan's orbits and writes\n"
     "the trajectory CSV (stdout without --out). Defaults: the Uav, Control, SimulationOptions\n"
-    "defaults of vistrack; x0 starts on the first orbit, heading north.\n";
+    "defaults of vistrack; x0 starts on the first orbit, heading north. With --map, the line of\n"
+    "sight UAV -> POI (Embree) is added as a column `visible` and its fraction is printed.\n";
 
 double number(const std::string& flag, const std::string& text) {
   try {
@@ -60,7 +65,8 @@ int main(int argc, char** argv) {
       flags[flag] = argv[++i];
     }
     const char* known[] = {"--plan", "--out", "--speed", "--min-turn-radius", "--altitude", "--beta", "--k-psi",
-                           "--direction", "--x0", "--rtol", "--atol", "--max-step", "--output-step", "--fixed-step"};
+                           "--direction", "--x0", "--rtol", "--atol", "--max-step", "--output-step", "--fixed-step",
+                           "--map", "--up"};
     for (const auto& [flag, value] : flags) {
       bool ok = false;
       for (const char* k : known) ok = ok || flag == k;
@@ -105,7 +111,18 @@ int main(int argc, char** argv) {
       x0 = vistrack::Vec3(g.x() + plan.radii.front(), g.y(), vistrack::kPi / 2);
     }
 
-    const vistrack::SimulationResult result = vistrack::simulate(plan, uav, x0, control, options, {}, fixed_step);
+    vistrack::SimulationResult result;
+    if (flags.count("--map")) {
+      const std::string& map = flags["--map"];
+      const std::string extension = std::filesystem::path(map).extension().string();
+      const vistrack::Environment env =
+          extension == ".geojson" || extension == ".json"
+              ? vistrack::Environment::from_geojson(map)
+              : vistrack::Environment::from_mesh(map, flags.count("--up") ? flags["--up"] : std::string("y"));
+      result = vistrack::simulate(plan, uav, x0, control, options, vistrack::VisibilityScene(env), fixed_step);
+    } else {
+      result = vistrack::simulate(plan, uav, x0, control, options, vistrack::LineOfSight{}, fixed_step);
+    }
     const std::string csv = vistrack::trajectory_csv(result);
     if (flags.count("--out")) {
       std::ofstream out(flags["--out"]);
@@ -117,6 +134,9 @@ int main(int argc, char** argv) {
     }
     std::fprintf(stderr, "vistrack_sim: %zu samples, %zu steps, %zu right-hand side evaluations\n", result.t.size(),
                  result.statistics.accepted_steps, result.statistics.rhs_evaluations);
+    if (result.visibility_fraction)
+      std::fprintf(stderr, "vistrack_sim: POI in line of sight at %.1f%% of the samples\n",
+                   100.0 * *result.visibility_fraction);
     return 0;
   } catch (const std::exception& error) {
     std::cerr << "vistrack_sim: error: " << error.what() << "\n";

@@ -99,13 +99,13 @@ def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True
                                                    spacing, bar_unit="VV")
     metric_runs["adaptive"] = plan_discretization(plan)
     x0 = np.asarray(scenario.start) if scenario.start is not None else start_on_orbit(plan, scenario.control)
-    line_of_sight = _line_of_sight(planner)
-    simulation = stages.run("closed-loop simulation", _simulate, plan, scenario, x0, line_of_sight)
+    scene = planner.scene
+    simulation = stages.run("closed-loop simulation", _simulate, plan, scenario, x0, scene)
     baselines = {}
     for radius in scenario.baselines:
         baseline_plan = _core.constant_radius_plan(poi, radius, scenario.uav)
         baselines[radius] = stages.run(f"baseline R = {radius:g} m", _simulate, baseline_plan, scenario,
-                                       start_on_orbit(baseline_plan, scenario.control), line_of_sight)
+                                       start_on_orbit(baseline_plan, scenario.control), scene)
     result = RunResult(scenario, env, poi, plan, simulation, baselines, metric_runs)
     result.timings = stages.timings
     result.metrics = _metrics(result)
@@ -132,19 +132,8 @@ def _planner(env: Any, scenario: Scenario, cache_dir: str | Path | None) -> Any:
     return _core.OrbitPlanner(env, scenario.sensor, scenario.planning.resolution_deg, None if cache_dir is None else str(cache_dir))
 
 
-def _line_of_sight(planner: Any) -> Callable[[np.ndarray, np.ndarray], np.ndarray]:
-    scene = planner.scene
-
-    def line_of_sight(uav: np.ndarray, poi: np.ndarray) -> np.ndarray:
-        # The POI stands where the planner put it (on uneven terrain, above the surface).
-        return np.asarray(scene.line_of_sight(uav, scene.poi_on_surface(poi)))
-
-    return line_of_sight
-
-
-def _simulate(plan: Any, scenario: Scenario, x0: np.ndarray, line_of_sight: Any) -> Any:
-    return _core.simulate(plan, scenario.uav, x0, scenario.control, None, scenario.simulation,
-                          line_of_sight=line_of_sight)
+def _simulate(plan: Any, scenario: Scenario, x0: np.ndarray, scene: Any) -> Any:
+    return _core.simulate(plan, scenario.uav, x0, scenario.control, scene, scenario.simulation)
 
 
 def _finite(value: float) -> float | None:

@@ -9,6 +9,7 @@
 #include "vistrack/error.hpp"
 #include "vistrack/guidance.hpp"
 #include "vistrack/ode.hpp"
+#include "vistrack/orbit.hpp"
 
 namespace vistrack {
 namespace {
@@ -267,6 +268,26 @@ TEST(OrbitTheory, Lemma6MaximumCurvature) {
   }
   // Corollary 1: v_g -> v gives 4 / R.
   EXPECT_NEAR(lemma6_curvature_bound(50.0, 10.0, 10.0), 4.0 / 50.0, 1e-15);
+}
+
+// (31) written twice, independently: here from an OrbitState at polar angle theta, and by the
+// orbit area from (R, R_dot, a = theta - gamma, v, v_g) for Algorithm 1. They must agree.
+TEST(OrbitTheory, CurvatureAgreesWithTheOrbitArea) {
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double v = 1.0 + 30.0 * unit(rng), vg = 0.95 * v * unit(rng), gamma = 2 * kPiValue * unit(rng);
+    OrbitState orbit;
+    orbit.center_velocity = vg * Vec2(std::cos(gamma), std::sin(gamma));
+    orbit.radius = 5.0 + 200.0 * unit(rng);
+    orbit.radius_rate = (2 * unit(rng) - 1) * (v - vg);
+    const double theta = 2 * kPiValue * unit(rng);
+    const int direction = trial % 2 == 0 ? 1 : -1;
+    const double theirs = orbit_curvature(orbit.radius, orbit.radius_rate, theta - gamma, v, vg, direction > 0);
+    const double ours = direction * orbit_signed_curvature(theta, orbit, v, direction);
+    EXPECT_NEAR(ours, theirs, 1e-9 * theirs) << trial;
+    EXPECT_NEAR(lemma6_curvature_bound(orbit.radius, v, vg), max_orbit_curvature(orbit.radius, v, vg), 1e-15);
+  }
 }
 
 TEST(OrbitTheory, Lemma5ViolationIsAnError) {

@@ -223,6 +223,49 @@ TEST(Simulate, LineOfSightAtEverySample) {
   EXPECT_FALSE(simulate(plan, uav, Vec3(0.0, 100.0, 0.0), Control{}).visibility_fraction.has_value());
 }
 
+// Line of sight on the real city against a brute-force oracle: points every 0.25 m along each
+// UAV -> POI segment tested against every building footprint below its roof.
+TEST(Simulate, VisibilityOnCharlotteMatchesBruteForce) {
+  VISTRACK_REQUIRE_DATA(city, "charlotte/buildings.geojson");
+  VISTRACK_REQUIRE_DATA(path, "charlotte/paths/paper_small.csv");
+  const Environment env = Environment::from_geojson(city);
+  const VisibilityScene scene(env);
+  Uav uav;
+  uav.speed = 20.0;
+  uav.min_turn_radius = 5.0;
+  uav.altitude = 50.0;
+  Control control;
+  control.beta = 0.5;
+  control.k_psi = 40.0;
+  const OrbitPlan plan = constant_radius_plan(PoiPath::from_csv(path, 5.0), 40.0, uav);
+  SimulationOptions options;
+  options.output_step = 0.5;
+  const SimulationResult r = simulate(plan, uav, Vec3(-45.0, 450.0, 0.0), control, options, scene);
+  ASSERT_EQ(r.visible.size(), r.t.size());
+  ASSERT_TRUE(r.visibility_fraction.has_value());
+  std::size_t agree = 0, visible = 0;
+  for (Eigen::Index k = 0; k < r.state.rows(); ++k) {
+    const Vec3 a(r.state(k, 0), r.state(k, 1), scene.ground_level() + uav.altitude);
+    const Vec3 b = r.poi.row(k).transpose();
+    bool blocked = false;
+    const int n = static_cast<int>((a - b).norm() / 0.25);
+    for (int i = 1; i < n && !blocked; ++i) {
+      const Vec3 p = b + (a - b) * (static_cast<double>(i) / n);
+      for (const Building& building : env.buildings())
+        if (p.z() < building.height && contains(building.footprint, p.head<2>())) {
+          blocked = true;
+          break;
+        }
+    }
+    agree += r.visible[static_cast<std::size_t>(k)] == !blocked;
+    visible += r.visible[static_cast<std::size_t>(k)];
+  }
+  const double n = static_cast<double>(r.t.size());
+  EXPECT_GE(static_cast<double>(agree) / n, 0.98);  // sampling can miss a grazing corner
+  EXPECT_DOUBLE_EQ(*r.visibility_fraction, static_cast<double>(visible) / n);
+  EXPECT_GT(*r.visibility_fraction, 0.0);
+}
+
 TEST(Simulate, BadInputNamesTheField) {
   const Uav uav;
   const PoiPath poi = two_leg_path(5.0);

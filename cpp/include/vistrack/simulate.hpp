@@ -14,6 +14,7 @@
 #include "vistrack/ode.hpp"
 #include "vistrack/orbit.hpp"
 #include "vistrack/parameters.hpp"
+#include "vistrack/visibility.hpp"
 
 namespace vistrack {
 
@@ -49,7 +50,8 @@ OrbitState orbit_state(const OrbitPlan& plan, double segment_start, double t);
 // Simulates the closed loop from configuration x0 = (x, y, psi) at the plan's first time to its
 // end. options.rtol/atol/max_step drive the adaptive steps; fixed_step > 0 switches to fixed
 // steps of that size. Samples every options.output_step and at the end. Throws Error for
-// invalid inputs, including a plan segment whose |R_dot| exceeds v - v_g (Lemma 5).
+// invalid inputs, including a plan segment whose |R_dot| exceeds v - v_g (Lemma 5). With a
+// line_of_sight function, visibility at every sample with the UAV at z = uav.altitude.
 SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
                           const SimulationOptions& options = {}, const LineOfSight& line_of_sight = {},
                           double fixed_step = 0.0);
@@ -59,8 +61,17 @@ SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0,
 // orbit_radius[,visible]. Full double precision.
 std::string trajectory_csv(const SimulationResult& result);
 
-// Fills result.visible / visibility_fraction: UAV at (x, y, altitude), POI at g(t).
-void evaluate_visibility(SimulationResult& result, double altitude, const LineOfSight& line_of_sight);
+// The same closed loop with the line of sight of an Embree scene at every sample: the UAV at
+// world z = scene ground level + h_UAV (the altitude the orbit planner slices its VPs at), the
+// POI at g(t) with the path's z.
+SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
+                          const SimulationOptions& options, const VisibilityScene& scene, double fixed_step = 0.0);
+
+// The scene's occlusion-ray line of sight as a LineOfSight.
+LineOfSight scene_line_of_sight(const VisibilityScene& scene);
+
+// Fills result.visible / visibility_fraction: UAV at (x, y, uav_z), POI at g(t).
+void evaluate_visibility(SimulationResult& result, double uav_z, const LineOfSight& line_of_sight);
 
 // Controller tuning (section V.D, Fig. 9): the largest |dpsi_d/dt + u_lyap| over positions
 // r in [tau R, r_max] (all polar angles) and all heading errors, for an orbit of radius R and

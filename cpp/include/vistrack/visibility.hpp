@@ -22,9 +22,6 @@ namespace vistrack {
 // Row i covers elevations [-pi/2 + i*d_el, -pi/2 + (i+1)*d_el] with d_el = pi / num_elevation;
 // column j covers azimuths [j*d_az, (j+1)*d_az] with d_az = 2 pi / num_azimuth (from +x,
 // counter-clockwise). The ray of cell (i, j) goes through the cell's centre.
-// Height of a lifted POI above the terrain under it (VisibilityScene::poi_on_surface), m.
-constexpr double kPoiClearance = 0.5;
-
 struct DirectionGrid {
   int num_elevation = 0;
   int num_azimuth = 0;
@@ -83,9 +80,10 @@ class VisibilityScene {
   // Height of the topmost surface (obstacle or ground) under the vertical through xy: where a
   // POI on uneven terrain stands.
   double surface_height(const Vec2& xy) const;
-  // Where a ground POI at g stands: g itself, unless it lies below surface_height(xy) (a path
-  // file's z under uneven terrain, as on the campus), then kPoiClearance above that surface.
-  // Caveat: under a canopy or overhang the topmost surface is the canopy's top.
+  // Where a ground POI stands: a POI path's z is the POI's height above the surface under it
+  // (0.5 m in the data's paths), so on uneven terrain (the campus) it follows the ground:
+  // (x, y, surface_height(x, y) + z). Caveat: under a canopy or an overhang the topmost surface
+  // is the canopy's top. Error for a negative or NaN height.
   Vec3 poi_on_surface(const Vec3& g) const;
 
   double ground_level() const;

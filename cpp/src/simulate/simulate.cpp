@@ -54,41 +54,8 @@ std::vector<double> output_times(double t0, double t1, double step) {
   return times;
 }
 
-}  // namespace
-
-std::vector<double> segment_boundaries(const OrbitPlan& plan) {
-  const double t0 = plan.times.front();
-  const double t1 = plan_end(plan);
-  std::vector<double> times{t0, t1};
-  for (double t : plan.times)
-    if (t > t0 && t < t1) times.push_back(t);
-  for (double t : plan.poi.node_times())
-    if (t > t0 && t < t1) times.push_back(t);
-  std::sort(times.begin(), times.end());
-  // Boundaries closer than this are one boundary (a plan sample placed on a path node).
-  const double merge = 1e-9 * std::max(1.0, t1 - t0);
-  std::vector<double> unique;
-  for (double t : times)
-    if (unique.empty() || t - unique.back() > merge) unique.push_back(t);
-  if (unique.back() != t1) unique.back() = t1;
-  return unique;
-}
-
-OrbitState orbit_state(const OrbitPlan& plan, double segment_start, double t) {
-  // Within a segment g and R are exactly linear (Definitions 1 and 2), so they are evaluated
-  // from the segment start with the segment's rates: no clamping or switching inside a step.
-  const Vec2 g0 = plan.poi.position(segment_start).head<2>();
-  OrbitState orbit;
-  orbit.center_velocity = plan.poi.velocity(segment_start);
-  orbit.radius_rate = plan.radius_rate(segment_start);
-  orbit.center = g0 + orbit.center_velocity * (t - segment_start);
-  orbit.radius = plan.radius(segment_start) + orbit.radius_rate * (t - segment_start);
-  return orbit;
-}
-
-SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
-                          const SimulationOptions& options, const LineOfSight& line_of_sight,
-                          double fixed_step) {
+SimulationResult closed_loop(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
+                             const SimulationOptions& options, double fixed_step) {
   uav.validate();
   control.validate();
   options.validate();
@@ -176,17 +143,73 @@ SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0,
     result.control_unsaturated[k] = s.unsaturated;
     result.orbit_radius[k] = orbit.radius;
   }
+  return result;
+}
+
+}  // namespace
+
+std::vector<double> segment_boundaries(const OrbitPlan& plan) {
+  const double t0 = plan.times.front();
+  const double t1 = plan_end(plan);
+  std::vector<double> times{t0, t1};
+  for (double t : plan.times)
+    if (t > t0 && t < t1) times.push_back(t);
+  for (double t : plan.poi.node_times())
+    if (t > t0 && t < t1) times.push_back(t);
+  std::sort(times.begin(), times.end());
+  // Boundaries closer than this are one boundary (a plan sample placed on a path node).
+  const double merge = 1e-9 * std::max(1.0, t1 - t0);
+  std::vector<double> unique;
+  for (double t : times)
+    if (unique.empty() || t - unique.back() > merge) unique.push_back(t);
+  if (unique.back() != t1) unique.back() = t1;
+  return unique;
+}
+
+OrbitState orbit_state(const OrbitPlan& plan, double segment_start, double t) {
+  // Within a segment g and R are exactly linear (Definitions 1 and 2), so they are evaluated
+  // from the segment start with the segment's rates: no clamping or switching inside a step.
+  const Vec2 g0 = plan.poi.position(segment_start).head<2>();
+  OrbitState orbit;
+  orbit.center_velocity = plan.poi.velocity(segment_start);
+  orbit.radius_rate = plan.radius_rate(segment_start);
+  orbit.center = g0 + orbit.center_velocity * (t - segment_start);
+  orbit.radius = plan.radius(segment_start) + orbit.radius_rate * (t - segment_start);
+  return orbit;
+}
+
+SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
+                          const SimulationOptions& options, const LineOfSight& line_of_sight,
+                          double fixed_step) {
+  SimulationResult result = closed_loop(plan, uav, x0, control, options, fixed_step);
   if (line_of_sight) evaluate_visibility(result, uav.altitude, line_of_sight);
   return result;
 }
 
-void evaluate_visibility(SimulationResult& result, double altitude, const LineOfSight& line_of_sight) {
-  require_finite(altitude, "uav.altitude");
+SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
+                          const SimulationOptions& options, const VisibilityScene& scene, double fixed_step) {
+  SimulationResult result = closed_loop(plan, uav, x0, control, options, fixed_step);
+  evaluate_visibility(result, uav.altitude, scene_line_of_sight(scene));
+  return result;
+}
+
+LineOfSight scene_line_of_sight(const VisibilityScene& scene) {
+  return [scene](const Points3& from, const Points3& to) {
+    // The POI stands where the planner put it: on the surface where its path z is underground.
+    Points3 poi(to.rows(), 3);
+    for (Eigen::Index i = 0; i < to.rows(); ++i) poi.row(i) = scene.poi_on_surface(to.row(i).transpose()).transpose();
+    const std::vector<bool> visible = scene.line_of_sight(from, poi);
+    return std::vector<std::uint8_t>(visible.begin(), visible.end());
+  };
+}
+
+void evaluate_visibility(SimulationResult& result, double uav_z, const LineOfSight& line_of_sight) {
+  require_finite(uav_z, "uav_z");
   if (!line_of_sight) throw Error("line_of_sight: no line-of-sight function given");
   const Eigen::Index n = result.state.rows();
   Points3 from(n, 3);
   from.leftCols<2>() = result.state.leftCols<2>();
-  from.col(2).setConstant(altitude);
+  from.col(2).setConstant(uav_z);
   result.visible = line_of_sight(from, result.poi);
   if (result.visible.size() != static_cast<std::size_t>(n))
     detail::fail_field("line_of_sight", result.visible.size(),

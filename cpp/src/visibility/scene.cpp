@@ -281,9 +281,9 @@ double VisibilityScene::surface_height(const Vec2& xy) const {
 }
 
 Vec3 VisibilityScene::poi_on_surface(const Vec3& g) const {
-  for (int k = 0; k < 3; ++k) require_finite(g[k], "g[" + std::to_string(k) + "]");
-  const double surface = surface_height(g.head<2>());
-  return g.z() < surface ? Vec3(g.x(), g.y(), surface + kPoiClearance) : g;
+  for (int k = 0; k < 2; ++k) require_finite(g[k], "g[" + std::to_string(k) + "]");
+  require_non_negative(g.z(), "g[2] (height of the POI above the surface)");
+  return Vec3(g.x(), g.y(), surface_height(g.head<2>()) + g.z());
 }
 
 bool VisibilityScene::inside_obstacle(const Vec3& p) const {

@@ -77,12 +77,11 @@ def _pyplot():
 
 
 def _footprints(env: Any) -> list:
-    if env is None:
-        return []
-    try:
-        return list(env.footprints())
-    except Exception:  # an environment made from a mesh has no footprints
-        return []
+    """Building footprints of a 2.5D environment ([] for a mesh or no environment)."""
+    footprints = getattr(env, "footprints", None) if env is not None else None
+    if callable(footprints):
+        footprints = footprints()
+    return list(footprints or [])
 
 
 def figure_trajectory(runs: Sequence[tuple[str, Any, Any]], env: Any, path: str | Path, title: str = "",
@@ -215,17 +214,6 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
-def line_of_sight_for(env: Any):
-    """The visibility area's line-of-sight query for ``env`` (None without an environment)."""
-    if env is None:
-        return None
-    scene_type = getattr(_core, "VisibilityScene", None)
-    if scene_type is None:
-        raise _core.VistrackError("--map: this build has no visibility scene (the visibility area is missing)")
-    scene = scene_type(env)
-    return lambda start, end: np.asarray(scene.line_of_sight(start, end), bool)
-
-
 def run(args: argparse.Namespace) -> int:
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -240,7 +228,7 @@ def run(args: argparse.Namespace) -> int:
         x0 = np.array([g[0] + plan.radii[0], g[1], math.pi / 2])
     else:
         x0 = args.x0
-    los = line_of_sight_for(env)
+    scene = _core.VisibilityScene(env) if env is not None else None  # one BVH for every run
     runs = []
     summary: dict[str, Any] = {"plan": str(args.plan), "x0": [float(v) for v in x0],
                                "uav": {"speed": uav.speed, "min_turn_radius": uav.min_turn_radius,
@@ -252,8 +240,7 @@ def run(args: argparse.Namespace) -> int:
         (f"constant R = {r:g} m", _core.constant_radius_plan(plan.poi, r, uav)) for r in args.baseline_radius]
     for label, p in plans:
         start = time.perf_counter()
-        result = _core.simulate(p, uav, x0, control, None, options, line_of_sight=los,
-                                fixed_step=args.fixed_step)
+        result = _core.simulate(p, uav, x0, control, scene, options, fixed_step=args.fixed_step)
         seconds = time.perf_counter() - start
         m = metrics(result, args.converge_after)
         m["seconds"] = seconds

@@ -71,9 +71,12 @@ def parse_points(text: str) -> list[list[float]]:
     return points
 
 
+POI_HEIGHT = 0.5  # m above the surface for points given without z (as in the data's paths)
+
+
 def poi_positions(args: argparse.Namespace, scene: vt.VisibilityScene) -> np.ndarray:
     """POI positions (n, 3): along the path every --spacing metres (ends included), or the given
-    points. A POI below the surface under it (uneven terrain) is lifted to 0.5 m above it."""
+    points; z is the height above the surface (0.5 m when not given)."""
     if args.path is not None:
         if not args.path.is_file():
             raise vt.VistrackError(f"--path = {args.path}: no such file")
@@ -85,8 +88,7 @@ def poi_positions(args: argparse.Namespace, scene: vt.VisibilityScene) -> np.nda
     else:
         given = parse_points(args.points)
         points = np.array([p if len(p) == 3 else [p[0], p[1], np.nan] for p in given])
-    below_everything = scene.ground_level - 1.0  # a point without z stands on the surface
-    points[:, 2] = np.where(np.isfinite(points[:, 2]), points[:, 2], below_everything)
+    points[:, 2] = np.where(np.isfinite(points[:, 2]), points[:, 2], POI_HEIGHT)
     return scene.poi_on_surface(points)
 
 
