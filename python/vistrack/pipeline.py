@@ -109,6 +109,9 @@ def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True
     result = RunResult(scenario, env, poi, plan, simulation, baselines, metric_runs)
     result.timings = stages.timings
     result.metrics = _metrics(result)
+    if cache_dir is not None:
+        result.metrics["volume_cache"] = {"folder": str(cache_dir), "hits": planner.disk_hits,
+                                          "misses": planner.disk_misses}
     if out is not None:
         from .report import write_report
 

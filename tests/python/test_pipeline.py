@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import yaml
 
 import vistrack as vt
 from vistrack.cli import main
@@ -51,7 +52,7 @@ def check_report(out: Path) -> dict:
 
 def test_demo_writes_a_complete_report(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     out = tmp_path / "demo"
-    assert main(["demo", "--out", str(out), "--quiet", "--no-cache"]) == 0
+    assert main(["demo", "--out", str(out), "--quiet"]) == 0
     printed = capsys.readouterr().out
     assert f"report: {out / 'report.md'}" in printed
     metrics = check_report(out)
@@ -74,7 +75,7 @@ def test_run_equals_python_api(tmp_path: Path) -> None:
     result = vt.run(scenario)  # no report folder
     assert result.out is None and result.files == []
     assert main(["run", str(Path(vt.__file__).parent / "scenarios" / "demo.yaml"), "--out",
-                 str(tmp_path / "r"), "--quiet", "--no-cache"]) == 0
+                 str(tmp_path / "r"), "--quiet"]) == 0
     metrics = json.loads((tmp_path / "r" / "metrics.json").read_text())
     assert metrics["plan"]["samples"] == len(result.plan.times)
     assert metrics["simulation"]["visibility_fraction"] == pytest.approx(result.simulation.visibility_fraction)
@@ -83,8 +84,7 @@ def test_run_equals_python_api(tmp_path: Path) -> None:
 @pytest.mark.parametrize("example", ["charlotte_paper_slow", "charlotte_paper_small", "campus_flight_test"])
 def test_examples_run(example: str, shared_data: Path, tmp_path: Path) -> None:
     out = tmp_path / example
-    assert main(["run", str(REPO / "examples" / f"{example}.yaml"), "--out", str(out), "--quiet",
-                 "--no-cache"]) == 0
+    assert main(["run", str(REPO / "examples" / f"{example}.yaml"), "--out", str(out), "--quiet"]) == 0
     metrics = check_report(out)
     assert metrics["plan"]["samples"] >= 2
     assert all(math.isfinite(v) for v in (metrics["plan"]["initial_radius_m"], metrics["plan"]["final_radius_m"]))
@@ -114,3 +114,21 @@ def test_run_errors_are_one_clear_line(text: str, message: str, tmp_path: Path,
     err = capsys.readouterr().err.strip()
     assert err.startswith("vistrack run: error:") and message in err
     assert len(err.splitlines()) == 1
+
+
+def test_second_run_reads_the_volume_cache(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    scenario = Scenario.demo()
+    scenario.planning.resolution_deg = 3.0  # small cache files
+    cache = tmp_path / "cache"
+    first = vt.run(scenario, cache_dir=cache)
+    second = vt.run(scenario, cache_dir=cache)
+    computed = first.metrics["volume_cache"]["misses"]
+    assert computed > 0 and first.metrics["volume_cache"]["hits"] == 0
+    assert second.metrics["volume_cache"] == {"folder": str(cache), "hits": computed, "misses": 0}
+    assert list(second.plan.radii) == list(first.plan.radii)
+    assert second.simulation.visibility_fraction == first.simulation.visibility_fraction
+    # The command line says so too.
+    path = tmp_path / "s.yaml"
+    path.write_text(yaml.safe_dump(scenario.to_dict()))
+    assert main(["run", str(path), "--out", str(tmp_path / "d"), "--quiet", "--cache", str(cache)]) == 0
+    assert f"{computed} read, 0 computed" in capsys.readouterr().out

@@ -13,7 +13,7 @@ DEFAULT_OUT = Path("vistrack-out") / "demo"
 
 
 def main(args: argparse.Namespace) -> int:
-    return run_scenario(Scenario.demo(), Path(args.out), args.cache, args.no_cache, args.quiet)
+    return run_scenario(Scenario.demo(), Path(args.out), args.cache, args.quiet)
 
 
 def register(subparsers: Any) -> None:
@@ -23,7 +23,6 @@ def register(subparsers: Any) -> None:
                     "route on its streets): visibility volumes, orbit plan, closed-loop simulation, "
                     "baselines; writes the report folder and prints where it is.")
     parser.add_argument("--out", default=str(DEFAULT_OUT), help=f"report folder (default: ./{DEFAULT_OUT})")
-    parser.add_argument("--cache", default=None, help="visibility-volume cache folder (default: <out>/../vv-cache)")
-    parser.add_argument("--no-cache", action="store_true", help="compute every visibility volume afresh")
+    parser.add_argument("--cache", default=None, help="visibility-volume cache folder (off by default)")
     parser.add_argument("--quiet", action="store_true", help="no progress output")
     parser.set_defaults(func=main)

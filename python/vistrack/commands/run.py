@@ -19,20 +19,19 @@ def register(subparsers: Any) -> None:
     parser.add_argument("scenario", nargs="?", help="scenario YAML file (see --print-defaults)")
     parser.add_argument("--out", default=None, help="report folder (default: ./vistrack-out/<scenario name>)")
     parser.add_argument("--cache", default=None,
-                        help="folder caching visibility volumes between runs (default: <out>/../vv-cache)")
-    parser.add_argument("--no-cache", action="store_true", help="compute every visibility volume afresh")
+                        help="folder caching visibility volumes between runs (about 4 MB per 1-degree VV); "
+                             "a second run with the same inputs reads them instead of ray casting")
     parser.add_argument("--quiet", action="store_true", help="no progress output")
     parser.add_argument("--print-defaults", action="store_true",
                         help="print a complete scenario with every default and exit")
     parser.set_defaults(func=main)
 
 
-def run_scenario(scenario: Scenario, out: Path, cache: str | None, no_cache: bool, quiet: bool) -> int:
+def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool) -> int:
     """Shared by ``run`` and ``demo``: run, then print the headline numbers and the report path."""
     from ..pipeline import run
 
-    cache_dir = None if no_cache else Path(cache) if cache else out.parent / "vv-cache"
-    result = run(scenario, out, quiet=quiet, cache_dir=cache_dir)
+    result = run(scenario, out, quiet=quiet, cache_dir=cache)
     m = result.metrics
     plan, sim = m["plan"], m["simulation"]
     status = "feasible" if plan["feasible"] else "INFEASIBLE"
@@ -43,6 +42,9 @@ def run_scenario(scenario: Scenario, out: Path, cache: str | None, no_cache: boo
     for radius, baseline in m["baselines"].items():
         fraction = baseline["visibility_fraction"]
         print(f"  constant R = {radius} m: visible {100 * fraction:.1f}%")
+    cache = m.get("volume_cache")
+    if cache:
+        print(f"visibility-volume cache {cache['folder']}: {cache['hits']} read, {cache['misses']} computed")
     print(f"report: {out / 'report.md'}")
     return 0
 
@@ -55,4 +57,4 @@ def main(args: argparse.Namespace) -> int:
         raise SystemExit("vistrack run: error: a scenario file is required (or --print-defaults)")
     scenario = Scenario.load(args.scenario)
     out = Path(args.out) if args.out else Path("vistrack-out") / scenario.name
-    return run_scenario(scenario, out, args.cache, args.no_cache, args.quiet)
+    return run_scenario(scenario, out, args.cache, args.quiet)
