@@ -16,8 +16,8 @@ from typing import Callable, Iterable, Sequence
 import numpy as np
 
 from . import _core
+from .plotting import OSM_CREDIT, plot_buildings
 
-OSM_CREDIT = "Buildings © OpenStreetMap contributors (ODbL)"
 
 
 def load_environment(path: str | Path, up: str = "y") -> "_core.Environment":
@@ -107,13 +107,6 @@ def figure_metric(results: dict[str, "_core.Discretization"], cutoff: float, pat
     plt.close(fig)
 
 
-def _footprints(env) -> list:
-    footprints = getattr(env, "footprints", None) if env is not None else None  # [] for meshes
-    if footprints is None:
-        return []
-    return list(footprints() if callable(footprints) else footprints)
-
-
 def footprint_environment(map_path: str | Path, footprints: str | Path | None = None):
     """Where to draw building footprints from: the given GeoJSON, else buildings.geojson beside a
     mesh map (Charlotte ships both), else None."""
@@ -129,7 +122,8 @@ def _pick(n: int, count: int) -> list[int]:
     return sorted({int(round(i)) for i in np.linspace(0, n - 1, count)})
 
 
-def figure_orbits(plan: "_core.VisibilityOrbitPlan", env, path: str | Path, count: int = 4) -> None:
+def figure_orbits(plan: "_core.VisibilityOrbitPlan", env, path: str | Path, count: int = 4,
+                  credit: str | None = OSM_CREDIT) -> None:
     """Figure 5: orbit circles inside their VPs at h_UAV, over the building footprints."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(7.5, 7.5))
@@ -139,10 +133,8 @@ def figure_orbits(plan: "_core.VisibilityOrbitPlan", env, path: str | Path, coun
     reach = max([max(plan.max_radii) if len(plan.max_radii) else 0.0, plan.sensor.d_max * 0.3])
     lo = centres.min(axis=0) - reach - 20
     hi = centres.max(axis=0) + reach + 20
-    for fp in _footprints(env):
-        outer = np.asarray(fp.outer)
-        if outer.size and (outer.max(axis=0) > lo).all() and (outer.min(axis=0) < hi).all():
-            ax.fill(outer[:, 0], outer[:, 1], color="#4a78c2", alpha=0.55, lw=0)
+    if env is not None:
+        plot_buildings(ax, env, cmap="Blues", edgecolor="none")
     way = np.asarray(plan.poi.waypoints)
     ax.plot(way[:, 0], way[:, 1], color="gray", lw=1, label="POI path")
     theta = np.linspace(0, 2 * math.pi, 200)
@@ -166,7 +158,8 @@ def figure_orbits(plan: "_core.VisibilityOrbitPlan", env, path: str | Path, coun
     status = "feasible" if plan.feasible else "INFEASIBLE"
     ax.set_title(f"Orbits inside their VPs at h_UAV = {plan.uav.altitude:g} m ({status})")
     ax.legend(fontsize=8, loc="upper right")
-    fig.text(0.99, 0.01, OSM_CREDIT, ha="right", va="bottom", fontsize=6, color="gray")
+    if credit:
+        fig.text(0.99, 0.01, credit, ha="right", va="bottom", fontsize=6, color="gray")
     fig.tight_layout()
     fig.savefig(path, dpi=130)
     plt.close(fig)

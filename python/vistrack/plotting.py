@@ -14,6 +14,9 @@ import numpy as np
 
 from ._core import Environment, PoiPath, RoadNetwork
 
+# Shown on figures of real cities (the data is OpenStreetMap-derived).
+OSM_CREDIT = "Buildings © OpenStreetMap contributors (ODbL)"
+
 
 def new_figure(size: tuple[float, float] = (8.0, 8.0)) -> tuple[Any, Any]:
     """A figure with one axes, on the non-interactive Agg backend."""

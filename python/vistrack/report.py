@@ -20,7 +20,7 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
     """Write every file of the report into ``out`` (created) and return their paths."""
     from . import planning
     from .commands import simulate as sim_cmd
-    from .plotting import new_figure, plot_city, save_figure
+    from .plotting import OSM_CREDIT, new_figure, plot_city, save_figure
 
     out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []
@@ -40,7 +40,8 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
                     "Eq. (56) between neighbouring VVs for fixed spacings and the adaptive method, "
                     f"cutoff {s.planning.cutoff:.3g} m³."))
 
-    planning.figure_orbits(result.plan, result.env, out / "orbits.png")
+    credit = None if s.environment.kind == "demo" else OSM_CREDIT
+    planning.figure_orbits(result.plan, result.env, out / "orbits.png", credit=credit)
     files.append(out / "orbits.png")
     figures.append(("orbits.png", "Figure 5: orbits inside their visibility polygons",
                     f"Circles of radius R(t_k) centred on the POI inside the VP at h_UAV = {s.uav.altitude:g} m."))
@@ -53,7 +54,8 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
     runs = [("visibility orbit", result.plan, result.simulation)]
     runs += [(f"R = {r:g} m", None, b) for r, b in result.baselines.items()]
     sim_cmd.figure_trajectory([(label, plan if plan is not None else result.plan, sim) for label, plan, sim in runs],
-                              result.env, out / "trajectory.png", title=f"{s.name}: UAV tracking the POI (Fig. 10)")
+                              result.env, out / "trajectory.png", title=f"{s.name}: UAV tracking the POI (Fig. 10)",
+                              credit=credit)
     files.append(out / "trajectory.png")
     figures.append(("trajectory.png", "Figure 10: trajectory",
                     "UAV path (red) with the reference orbits and the POI path" +

@@ -19,7 +19,7 @@ import numpy as np
 
 from .. import _core
 
-OSM_CREDIT = "Buildings © OpenStreetMap contributors (ODbL)"
+from ..plotting import OSM_CREDIT, plot_buildings
 
 
 def load_environment(path: str | Path, up: str = "y") -> Any:
@@ -76,16 +76,8 @@ def _pyplot():
     return plt
 
 
-def _footprints(env: Any) -> list:
-    """Building footprints of a 2.5D environment ([] for a mesh or no environment)."""
-    footprints = getattr(env, "footprints", None) if env is not None else None
-    if callable(footprints):
-        footprints = footprints()
-    return list(footprints or [])
-
-
 def figure_trajectory(runs: Sequence[tuple[str, Any, Any]], env: Any, path: str | Path, title: str = "",
-                      orbit_count: int = 8) -> None:
+                      orbit_count: int = 8, credit: str | None = OSM_CREDIT) -> None:
     """Figure 10 style: each run's UAV path (label, plan, result) with its orbits and the POI path."""
     plt = _pyplot()
     fig, ax = plt.subplots(figsize=(8, 8))
@@ -93,10 +85,8 @@ def figure_trajectory(runs: Sequence[tuple[str, Any, Any]], env: Any, path: str 
     everything = np.vstack([np.asarray(r.state)[:, :2] for _, _, r in runs] + [np.asarray(result0.poi)[:, :2]])
     lo = everything.min(axis=0) - 30
     hi = everything.max(axis=0) + 30
-    for fp in _footprints(env):
-        outer = np.asarray(fp.outer)
-        if outer.size and (outer.max(axis=0) > lo).all() and (outer.min(axis=0) < hi).all():
-            ax.fill(outer[:, 0], outer[:, 1], color="0.6", alpha=0.7, lw=0)
+    if env is not None:
+        plot_buildings(ax, env, cmap="Greys", edgecolor="none")
     poi = np.asarray(result0.poi)
     ax.plot(poi[:, 0], poi[:, 1], color="0.3", ls="--", lw=1.2, label="POI path")
     theta = np.linspace(0, 2 * math.pi, 181)
@@ -128,8 +118,8 @@ def figure_trajectory(runs: Sequence[tuple[str, Any, Any]], env: Any, path: str 
     ax.set_ylabel("north (m)")
     ax.set_title(title or "UAV tracking the POI")
     ax.legend(fontsize=8, loc="best")
-    if _footprints(env):
-        fig.text(0.99, 0.01, OSM_CREDIT, ha="right", va="bottom", fontsize=6, color="gray")
+    if env is not None and credit:
+        fig.text(0.99, 0.01, credit, ha="right", va="bottom", fontsize=6, color="gray")
     fig.tight_layout()
     fig.savefig(path, dpi=130)
     plt.close(fig)
