@@ -1,13 +1,11 @@
 """Visibility volumes from Python: the Embree scene is built once per environment and reused.
 
-``visibility_volume`` and ``visibility_volumes`` accept either an :class:`Environment` (its
-scene is built on first use and kept in a small cache keyed by the environment's content
-fingerprint) or a :class:`VisibilityScene` (no lookup at all: the fastest path for many VVs).
+``visibility_volume`` and ``visibility_volumes`` accept either an :class:`Environment` (a scene
+is built for the call) or a :class:`VisibilityScene` (built once: the fast path for many VVs).
 """
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from typing import Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -15,28 +13,17 @@ import numpy as np
 from . import _core
 from ._core import Environment, VisibilityScene, VisibilityVolume
 
-_CACHE_SIZE = 4
-_scenes: "OrderedDict[int, VisibilityScene]" = OrderedDict()
-
 Band = Optional[Tuple[float, float]]
 
 
 def visibility_scene(env: Union[Environment, VisibilityScene]) -> VisibilityScene:
-    """The Embree scene of ``env``, built once per environment content (LRU of 4 scenes)."""
+    """The Embree scene of ``env`` (a scene is returned as it is). Building one costs a BVH build
+    (about 6 ms for 8k triangles): make it once and pass it for many VVs."""
     if isinstance(env, VisibilityScene):
         return env
     if not isinstance(env, Environment):
         raise TypeError(f"env must be a vistrack.Environment or VisibilityScene, not {type(env).__name__}")
-    key = env.fingerprint
-    scene = _scenes.get(key)
-    if scene is None:
-        scene = VisibilityScene(env)
-        _scenes[key] = scene
-        while len(_scenes) > _CACHE_SIZE:
-            _scenes.popitem(last=False)
-    else:
-        _scenes.move_to_end(key)
-    return scene
+    return VisibilityScene(env)
 
 
 def visibility_volume(

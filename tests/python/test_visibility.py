@@ -69,7 +69,7 @@ def test_open_field_volume_is_the_cut_ball(open_field):
 
 def test_scene_is_reused_and_batch_matches_single(box_env):
     scene = vt.visibility_scene(box_env)
-    assert vt.visibility_scene(box_env) is scene
+    assert vt.visibility_scene(box_env).fingerprint == scene.fingerprint == box_env.fingerprint
     assert vt.visibility_scene(scene) is scene
     pois = np.array([[0.0, 0.0, 0.0], [10.0, 50.0, 0.0], [-30.0, -30.0, 2.0]])
     batch = vt.visibility_volumes(scene, pois, 150.0, (10.0, 80.0), 2.0)
