@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <optional>
 #include <vector>
 
 #include "vistrack/environment.hpp"
@@ -45,6 +46,10 @@ std::vector<Polygon> nest_rings(const std::vector<Ring>& rings);
 // polygons with holes. By default only the polygon(s) containing the POI's vertical (g.x, g.y)
 // are kept (empty when none does: MaxRadius is then 0); all_parts keeps every part.
 // Throws Error when the altitude is not finite.
+// The height at which to slice a VV for the VP at `altitude`: none when the altitude lies
+// outside the VV's band, else nudged strictly inside it (exactly on a cap the slicer returns the
+// cap's edges). Shared by both slicers.
+std::optional<double> visibility_slice_height(const VisibilityVolume& vv, double altitude);
 std::vector<Polygon> visibility_polygon(const VisibilityVolume& vv, double altitude, bool all_parts = false);
 
 // ---------------------------------------------------------------------------------------------

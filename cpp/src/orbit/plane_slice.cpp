@@ -79,17 +79,11 @@ std::vector<Ring> plane_slice_rings(const TriangleMesh& mesh, double altitude) {
 }
 
 std::vector<Polygon> plane_visibility_polygon(const VisibilityVolume& vv, double altitude) {
-  require_finite(altitude, "altitude");
-  double z = altitude;
-  if (vv.altitude_band) {
-    const double gap = 1e-6 * std::max(1.0, vv.d_max);
-    const auto [low, high] = *vv.altitude_band;
-    if (z < low - gap || z > high + gap) return {};
-    z = std::clamp(z, low + gap, high - gap);
-  }
+  const std::optional<double> z = visibility_slice_height(vv, altitude);
+  if (!z) return {};
   std::vector<Polygon> kept;
   const Vec2 centre = vv.poi.head<2>();
-  for (Polygon& p : nest_rings(plane_slice_rings(vv.mesh, z)))
+  for (Polygon& p : nest_rings(plane_slice_rings(vv.mesh, *z)))
     if (contains(p, centre)) kept.push_back(std::move(p));
   return kept;
 }

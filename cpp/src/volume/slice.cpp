@@ -181,17 +181,19 @@ std::vector<Polygon> nest_rings(const std::vector<Ring>& rings) {
   return polygons;
 }
 
-std::vector<Polygon> visibility_polygon(const VisibilityVolume& vv, double altitude, bool all_parts) {
+std::optional<double> visibility_slice_height(const VisibilityVolume& vv, double altitude) {
   require_finite(altitude, "altitude");
-  double z = altitude;
-  if (vv.altitude_band) {
-    // Slice strictly inside the band: exactly on a cap the slicer returns the cap's edges.
-    const double gap = 1e-6 * std::max(1.0, vv.d_max);
-    const auto [low, high] = *vv.altitude_band;
-    if (z < low - gap || z > high + gap) return {};
-    z = std::clamp(z, low + gap, high - gap);
-  }
-  std::vector<Polygon> polygons = nest_rings(slice_rings(vv.mesh, z));
+  if (!vv.altitude_band) return altitude;
+  const double gap = 1e-6 * std::max(1.0, vv.d_max);
+  const auto [low, high] = *vv.altitude_band;
+  if (altitude < low - gap || altitude > high + gap) return std::nullopt;
+  return std::clamp(altitude, low + gap, high - gap);
+}
+
+std::vector<Polygon> visibility_polygon(const VisibilityVolume& vv, double altitude, bool all_parts) {
+  const std::optional<double> z = visibility_slice_height(vv, altitude);
+  if (!z) return {};
+  std::vector<Polygon> polygons = nest_rings(slice_rings(vv.mesh, *z));
   if (all_parts) return polygons;
   const Vec2 center = vv.poi.head<2>();
   std::vector<Polygon> kept;
