@@ -36,6 +36,22 @@ def _use_build_tree() -> None:
 _use_build_tree()
 
 
+def standalone_executable(name: str) -> Path | None:
+    """A standalone executable (vistrack_vv, vistrack_sim, vistrack_dubins): from the CMake build
+    tree given by VISTRACK_BUILD_DIR, else installed beside the ``vistrack`` command."""
+    import shutil
+    import sysconfig
+
+    build_dir = os.environ.get("VISTRACK_BUILD_DIR")
+    candidates = [Path(build_dir) / "cpp" / name] if build_dir else []
+    candidates.append(Path(sysconfig.get_path("scripts")) / name)
+    for candidate in candidates:
+        if os.access(candidate, os.X_OK):
+            return candidate
+    found = shutil.which(name)
+    return Path(found) if found else None
+
+
 @pytest.fixture(scope="session")
 def shared_data() -> Path:
     """The real data folder; the test is skipped with a clear message when it is absent."""

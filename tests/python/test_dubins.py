@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from conftest import standalone_executable
 from vistrack import VistrackError, dubins
 
 
@@ -213,22 +214,10 @@ def test_intercept_against_brute_force(case: dict) -> None:
 # ---- standalone executable -------------------------------------------------------------------
 
 
-def _vistrack_dubins_executable() -> str | None:
-    import os
-    import shutil
-
-    build = os.environ.get("VISTRACK_BUILD_DIR")
-    if build:
-        candidate = os.path.join(build, "cpp", "vistrack_dubins")
-        if os.access(candidate, os.X_OK):
-            return candidate
-    return shutil.which("vistrack_dubins")
-
-
 def test_vistrack_dubins_csv(tmp_path) -> None:
     import subprocess
 
-    exe = _vistrack_dubins_executable()
+    exe = standalone_executable("vistrack_dubins")
     if exe is None:
         pytest.skip("vistrack_dubins not built (set VISTRACK_BUILD_DIR or install the package)")
     rng = np.random.default_rng(8)

@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from conftest import standalone_executable
 from vistrack.cli import main
 
 REPO = Path(__file__).resolve().parents[2]
@@ -116,10 +117,9 @@ def test_cli_simulate_and_tune(tmp_path):
 
 
 def test_standalone_executable_matches_python(tmp_path):
-    build = os.environ.get("VISTRACK_BUILD_DIR")
-    exe = Path(build, "cpp", "vistrack_sim") if build else None
-    if exe is None or not exe.exists():
-        pytest.skip("vistrack_sim not built here (set VISTRACK_BUILD_DIR to a CMake build tree)")
+    exe = standalone_executable("vistrack_sim")
+    if exe is None:
+        pytest.skip("vistrack_sim not built (set VISTRACK_BUILD_DIR or install the package)")
     uav = vt.Uav(speed=20.0, min_turn_radius=5.0, altitude=50.0)
     plan = _morphing_plan(uav)
     plan_path = tmp_path / "plan.json"

@@ -217,3 +217,31 @@ def test_cli_volumes_writes_results(charlotte, tmp_path: Path):
     assert (out / "plan.png").stat().st_size > 10_000 and (out / "vv3d.png").stat().st_size > 10_000
     assert main(["volumes", "--map", str(tmp_path / "missing.geojson"), "--points", "0,0", "--out", str(out)]) == 2
     assert main(["volumes", "--map", str(charlotte / "buildings.geojson"), "--points", "a,b", "--out", str(out)]) == 2
+
+
+def test_standalone_vistrack_vv_matches_python(charlotte, tmp_path):
+    """vistrack_vv (no Python) gives the same VV volume and MaxRadius as the bindings."""
+    import json
+    import subprocess
+
+    from conftest import standalone_executable
+
+    exe = standalone_executable("vistrack_vv")
+    if exe is None:
+        pytest.skip("vistrack_vv not built (set VISTRACK_BUILD_DIR or install the package)")
+    city = charlotte / "buildings.geojson"
+    done = subprocess.run([str(exe), "--map", str(city), "--points", "-150,-45,0.5;-45,430,0.5", "--d-max", "400",
+                           "--altitude", "300", "--out", str(tmp_path), "--no-meshes"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    points = json.loads((tmp_path / "volumes.json").read_text())["points"]
+    scene = vt.VisibilityScene(vt.Environment.from_geojson(str(city)))
+    for row in points:
+        vv = vt.visibility_volume(scene, np.asarray(row["poi"]), 400.0)
+        assert row["volume"] == pytest.approx(vv.volume, rel=1e-12)
+        expected = vt.max_inscribed_radius(vv.slice(300.0), np.asarray(row["poi"])[:2])
+        assert row["max_radius"] == pytest.approx(expected, rel=1e-9)
+    assert points[0]["max_radius"] == pytest.approx(180.0, abs=0.5)  # exact MaxRadius, paper example 1
+    bad = subprocess.run([str(exe), "--map", str(tmp_path / "missing.geojson"), "--points", "0,0"],
+                         capture_output=True, text=True, timeout=60)
+    assert bad.returncode != 0 and "missing.geojson" in bad.stderr
