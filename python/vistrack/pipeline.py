@@ -36,6 +36,7 @@ class RunResult:
     poi: Any
     plan: Any
     simulation: Any
+    planner: Any = None
     baselines: dict[float, Any] = field(default_factory=dict)
     metric_runs: dict[str, Any] = field(default_factory=dict)
     metrics: dict[str, Any] = field(default_factory=dict)
@@ -106,7 +107,7 @@ def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True
         baseline_plan = _core.constant_radius_plan(poi, radius, scenario.uav)
         baselines[radius] = stages.run(f"baseline R = {radius:g} m", _simulate, baseline_plan, scenario,
                                        start_on_orbit(baseline_plan, scenario.control), scene)
-    result = RunResult(scenario, env, poi, plan, simulation, baselines, metric_runs)
+    result = RunResult(scenario, env, poi, plan, simulation, planner, baselines, metric_runs)
     result.timings = stages.timings
     result.metrics = _metrics(result)
     if cache_dir is not None:

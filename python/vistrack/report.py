@@ -20,7 +20,7 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
     """Write every file of the report into ``out`` (created) and return their paths."""
     from . import planning
     from .commands import simulate as sim_cmd
-    from .plotting import OSM_CREDIT, new_figure, plot_city, save_figure
+    from .plotting import OSM_CREDIT, figure_volume_3d, new_figure, plot_city, save_figure
 
     out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []
@@ -67,6 +67,13 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
     files.append(out / "errors.png")
     figures.append(("errors.png", "Figure 11: errors and control",
                     "Radial error r - R, heading and heading error, and the steering command against time."))
+
+    first = result.plan.volume(0)
+    figure_volume_3d(result.planner.scene, first, out / "volume3d.png", caption=credit or "")
+    files.append(out / "volume3d.png")
+    figures.append(("volume3d.png", "Visibility volume in 3D",
+                    f"The VV of the first sample (eq. 4), d_max = {s.sensor.d_max:g} m; the orbit lies "
+                    "in its slice at h_UAV."))
 
     (out / "plan.json").write_text(result.plan.to_json())
     (out / "trajectory.csv").write_text(result.simulation.to_csv())

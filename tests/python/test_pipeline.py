@@ -17,7 +17,7 @@ from vistrack.scenario import Scenario
 
 REPO = Path(__file__).resolve().parents[2]
 REPORT_FILES = ["report.md", "metrics.json", "plan.json", "trajectory.csv", "city.png", "metric.png",
-                "orbits.png", "radius.png", "trajectory.png", "errors.png"]
+                "orbits.png", "radius.png", "trajectory.png", "errors.png", "volume3d.png"]
 
 
 def check_report(out: Path) -> dict:

@@ -18,6 +18,7 @@ from typing import Any, Optional
 import numpy as np
 
 import vistrack as vt
+from vistrack.plotting import figure_volume_3d
 
 DEFAULT_OUT = Path("vistrack-out") / "volumes"
 BATCH = 8  # VVs per parallel batch between progress updates
@@ -151,7 +152,7 @@ def run(args: argparse.Namespace) -> int:
     (out / "volumes.json").write_text(json.dumps(summary, indent=1))
     plot_plan(env, shown, args, out / "plan.png")
     if first is not None:
-        plot_volume(scene, first, args, band, out / "vv3d.png")
+        figure_volume_3d(scene, first, out / "vv3d.png", caption=attribution(args))
     if not args.quiet:
         radii = [r["max_radius"] for r in records]
         print(f"{len(records)} VVs, MaxRadius {min(radii):.1f}-{max(radii):.1f} m at z = {args.altitude:g} m; wrote {out}")
@@ -197,42 +198,3 @@ def plot_plan(env: vt.Environment, shown: list, args: argparse.Namespace, path: 
                  f"{args.resolution:g}°)")
     ax.text(0.01, 0.01, attribution(args), transform=ax.transAxes, fontsize=7, color="0.3")
     save_figure(fig, path)
-
-
-def plot_volume(scene: vt.VisibilityScene, vv: vt.VisibilityVolume, args: argparse.Namespace,
-                band: Optional[tuple[float, float]], path: Path) -> None:
-    """3D view of the first VV (recomputed at 3° or coarser for display: matplotlib draws every face)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
-
-    shown = vv if args.resolution >= 3.0 else vt.visibility_volume(scene, vv.poi, args.d_max, band, 3.0)
-    triangles = shown.vertices[shown.faces]
-    normals = np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0])
-    normals /= np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-12)
-    light = np.array([0.4, -0.5, 0.77])
-    shade = 0.35 + 0.65 * np.clip(normals @ light, 0.0, 1.0)
-    colors = np.column_stack([0.2 * shade, 0.75 * shade, 0.35 * shade, np.full_like(shade, 0.55)])
-    fig = plt.figure(figsize=(9.0, 7.5))
-    ax = fig.add_subplot(projection="3d")
-    ax.add_collection3d(Poly3DCollection(triangles, facecolors=colors, edgecolors="none"))
-    ax.scatter(*vv.poi, color="crimson", s=30, label="POI g", depthshade=False)
-    lo, hi = shown.vertices.min(axis=0), shown.vertices.max(axis=0)
-    span = max(hi - lo)
-    center = (lo + hi) / 2
-    ax.set_xlim(center[0] - span / 2, center[0] + span / 2)
-    ax.set_ylim(center[1] - span / 2, center[1] + span / 2)
-    ax.set_zlim(lo[2], lo[2] + span / 2)
-    ax.set_box_aspect((2, 2, 1))
-    ax.view_init(elev=28, azim=-60)
-    ax.set_xlabel("east (m)")
-    ax.set_ylabel("north (m)")
-    ax.set_zlabel("up (m)")
-    ax.set_title(f"Visibility volume at POI ({vv.poi[0]:.0f}, {vv.poi[1]:.0f}): {vv.volume / 1e6:.2f}e6 m³ "
-                 f"(mesh shown at {max(args.resolution, 3.0):g}°)")
-    ax.legend(loc="upper left")
-    fig.text(0.01, 0.01, attribution(args), fontsize=7, color="0.3")
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
