@@ -120,7 +120,7 @@ void bind_orbit(py::module_& m) {
   py::class_<OrbitPlanner>(m, "OrbitPlanner",
                            "Section IV on one environment: an Embree scene built once, a VV cache shared by "
                            "every call (spacings and plans reuse VVs), the grid XOR metric (56) in the POI "
-                           "frame, VPs at ground level + h_UAV.")
+                           "frame, VPs at world z = h_UAV.")
       .def(py::init([cache_folder](const Environment& env, const Sensor& sensor, double resolution_deg,
                                    const py::object& cache_dir) {
              const std::string folder = cache_folder(cache_dir);

@@ -110,6 +110,7 @@ void bind_visibility(py::module_& m) {
       .def(
           "poi_on_surface",
           [](const VisibilityScene& s, const Points3& points) {
+            py::gil_scoped_release release;
             Points3 lifted(points.rows(), 3);
             for (Eigen::Index i = 0; i < points.rows(); ++i)
               lifted.row(i) = s.poi_on_surface(points.row(i).transpose()).transpose();
@@ -118,7 +119,12 @@ void bind_visibility(py::module_& m) {
           py::arg("points"),
           "Where ground POIs stand: rows (x, y, h) of a POI path, h the height above the surface, "
           "become (x, y, surface_height(x, y) + h).")
-      .def("inside_obstacle", &VisibilityScene::inside_obstacle, py::arg("point"),
+      .def("inside_obstacle",
+           [](const VisibilityScene& s, const Vec3& p) {
+             for (int k = 0; k < 3; ++k) require_finite(p[k], "point[" + std::to_string(k) + "]");
+             return s.inside_obstacle(p);
+           },
+           py::arg("point"),
            "Whether a point lies inside an obstacle.");
 
   // Line of sight on the Environment class itself (bind_environment ran before this).
@@ -156,7 +162,11 @@ void bind_visibility(py::module_& m) {
       },
       py::arg("scene"), py::arg("pois"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
       py::arg("resolution_deg") = 1.0, "VVs for every row of pois (n, 3), in parallel over the points.");
-  m.def("mesh_volume", [](const Points3& v, const Faces& f) { return mesh_volume(TriangleMesh{v, f}); },
+  m.def("mesh_volume",
+        [](const Points3& v, const Faces& f) {
+          validate_triangle_mesh(v, f);
+          return mesh_volume(TriangleMesh{v, f});
+        },
         py::arg("vertices"), py::arg("faces"), "Volume of a closed, consistently oriented triangle mesh.");
 }
 

@@ -2,6 +2,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "vistrack/error.hpp"
 #include "vistrack/volume.hpp"
 
 namespace py = pybind11;
@@ -25,13 +26,18 @@ void bind_volume(py::module_& m) {
 
   m.def(
       "check_closed_mesh",
-      [](const Points3& vertices, const Faces& faces) { return check_closed_mesh(TriangleMesh{vertices, faces}); },
+      [](const Points3& vertices, const Faces& faces) {
+        validate_triangle_mesh(vertices, faces);
+        return check_closed_mesh(TriangleMesh{vertices, faces});
+      },
       py::arg("vertices"), py::arg("faces"), py::call_guard<py::gil_scoped_release>(),
       "Check with CGAL that a triangle mesh is closed, 2-manifold, free of self-intersections, bounds a "
       "volume and is outward oriented.");
   m.def(
       "slice_mesh",
       [](const Points3& vertices, const Faces& faces, double altitude) {
+        validate_triangle_mesh(vertices, faces);
+        require_finite(altitude, "altitude");
         return nest_rings(slice_rings(TriangleMesh{vertices, faces}, altitude));
       },
       py::arg("vertices"), py::arg("faces"), py::arg("altitude"), py::call_guard<py::gil_scoped_release>(),

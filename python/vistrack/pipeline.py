@@ -99,6 +99,10 @@ def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True
         metric_runs[f"{spacing:g} m"] = stages.run(f"metric at {spacing:g} m spacing", planner.fixed, poi,
                                                    spacing, bar_unit="VV")
     metric_runs["adaptive"] = plan_discretization(plan)
+    if min(plan.radii) <= 0.0:
+        raise _core.VistrackError(
+            f"plan: the POI is not visible from the flight plane at some samples ({plan.infeasibility}); "
+            f"raise sensor.d_max = {scenario.sensor.d_max:g} m or change uav.altitude = {scenario.uav.altitude:g} m")
     x0 = np.asarray(scenario.start) if scenario.start is not None else start_on_orbit(plan, scenario.control)
     scene = planner.scene
     simulation = stages.run("closed-loop simulation", _simulate, plan, scenario, x0, scene)
@@ -121,15 +125,17 @@ def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True
     return result
 
 
-def plan_discretization(plan: Any) -> Any:
-    """The adaptive samples of a plan in the shape Figure 4 draws (arc lengths, metric)."""
+@dataclass
+class PathSamples:
+    """Samples along the POI path in the shape Figure 4 draws."""
 
-    @dataclass
-    class Samples:
-        arc_lengths: list[float]
-        metric: list[float]
+    arc_lengths: list[float]
+    metric: list[float]
 
-    return Samples(list(plan.arc_lengths), list(plan.metric))
+
+def plan_discretization(plan: Any) -> PathSamples:
+    """The adaptive samples of a plan (arc lengths and the metric between neighbours)."""
+    return PathSamples(list(plan.arc_lengths), list(plan.metric))
 
 
 def _planner(env: Any, scenario: Scenario, cache_dir: str | Path | None) -> Any:
@@ -173,7 +179,3 @@ def _metrics(result: RunResult) -> dict[str, Any]:
         "timings_s": {k: round(v, 4) for k, v in result.timings.items()},
     }
     return metrics
-
-
-def metrics_json(result: RunResult) -> str:
-    return json.dumps(result.metrics, indent=1)

@@ -117,13 +117,13 @@ def _markdown(result: "RunResult", figures: list[tuple[str, str, str]]) -> str:
              f"R from {plan['initial_radius_m']:.1f} m to {plan['final_radius_m']:.1f} m "
              f"(min {plan['min_radius_m']:.1f} m, Lemma 6 needs >= {plan['min_feasible_radius_m']:.1f} m)",
              f"- Simulation: {sim['duration_s']:.2f} s; POI in line of sight "
-             f"{_percent(sim['visibility_fraction'])} of the samples; largest |radial error| after "
+             f"{percent(sim['visibility_fraction'])} of the samples; largest |radial error| after "
              f"settling (after {sim['converge_after_s']:g} s) {sim['radial_error_after_max_abs_m']:.2f} m",
              ]
     if m["baselines"]:
         lines += ["", "| orbit | visibility |", "|---|---|",
-                  f"| visibility-informed R(t) | {_percent(sim['visibility_fraction'])} |"]
-        lines += [f"| constant R = {b['radius_m']:g} m | {_percent(b['visibility_fraction'])} |"
+                  f"| visibility-informed R(t) | {percent(sim['visibility_fraction'])} |"]
+        lines += [f"| constant R = {b['radius_m']:g} m | {percent(b['visibility_fraction'])} |"
                   for b in m["baselines"].values()]
     lines += ["", "Files: `metrics.json`, `plan.json`, `trajectory.csv`, `volumes/*.ply`.", ""]
     for file, title, caption in figures:
@@ -135,5 +135,6 @@ def _markdown(result: "RunResult", figures: list[tuple[str, str, str]]) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _percent(value: Any) -> str:
+def percent(value: Any) -> str:
+    """A fraction as a percentage with one decimal, or n/a."""
     return "n/a" if value is None else f"{100.0 * value:.1f}%"

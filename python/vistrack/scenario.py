@@ -11,6 +11,7 @@ Relative paths inside a scenario file are resolved against the file's own folder
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Mapping, Sequence
@@ -187,8 +188,10 @@ class Scenario:
                         "unknown section; allowed sections: " + ", ".join(cls.SECTIONS))
         scenario = cls()
         if "name" in data:
-            if not isinstance(data["name"], str) or not data["name"]:
-                raise _fail("name", data["name"], "must be a non-empty string")
+            name = data["name"]
+            if not isinstance(name, str) or not re.fullmatch(r"[\w.-]+", name) or set(name) == {"."}:
+                raise _fail("name", name, "must be a non-empty name of letters, digits, '_', '-' or '.' "
+                                          "(it names the output folder)")
             scenario.name = data["name"]
         scenario.environment = _environment(_section(data, "environment", {"demo", "geojson", "mesh", "up"}), base)
         scenario.poi = _poi(_section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
@@ -271,19 +274,19 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
         raise _fail("poi", section, "give one of path: CSV, waypoints: [[x, y], ...], nodes: [...], "
                                     "route: [[x, y], ...]")
     if not sources:
-        spec.nodes = None
-        return spec  # the pipeline picks a default road route (demo city)
+        return spec  # PoiSpec.build says what is missing when the scenario is run
     key = sources[0]
     value = section[key]
     if key == "path":
         spec.path = _resolve(base, value, "poi.path")
     elif key in ("waypoints", "route"):
         if not isinstance(value, list) or len(value) < 2:
-            raise _fail(f"poi.{key}", value, "must be a list of at least two [x, y] or [x, y, z] points")
+            raise _fail(f"poi.{key}", value, "must be a list of at least two points")
         points = []
         for i, point in enumerate(value):
-            if not isinstance(point, list) or len(point) not in (2, 3):
-                raise _fail(f"poi.{key}[{i}]", point, "must be [x, y] or [x, y, z]")
+            sizes = (2, 3) if key == "waypoints" else (2,)
+            if not isinstance(point, list) or len(point) not in sizes:
+                raise _fail(f"poi.{key}[{i}]", point, "must be [x, y] or [x, y, z]" if key == "waypoints" else "must be [x, y]")
             points.append([_number(f"poi.{key}[{i}][{k}]", c) for k, c in enumerate(point)])
         setattr(spec, key, points)
     else:
@@ -298,10 +301,7 @@ def _apply(target: Any, section: dict[str, Any], prefix: str,
     for key, check in checks.items():
         if key in section:
             setattr(target, key, check(f"{prefix}.{key}", section[key]))
-    try:
-        target.validate()
-    except VistrackError:
-        raise
+    target.validate()
     return target
 
 
@@ -337,7 +337,7 @@ def _sensor(section: dict[str, Any]) -> Sensor:
 def _planning(section: dict[str, Any]) -> Planning:
     return _apply(Planning(), section, "planning", {
         "spacing": _positive, "cutoff": _positive,
-        "resolution_deg": lambda k, v: _number(k, v, low=0.0, high=45.0, low_open=True),
+        "resolution_deg": lambda k, v: _number(k, v, low=0.1, high=30.0),
         "min_spacing": _positive,
         "max_depth": lambda k, v: _integer(k, v, 0, 30)})
 

@@ -20,7 +20,7 @@ REPORT_FILES = ["report.md", "metrics.json", "plan.json", "trajectory.csv", "cit
                 "orbits.png", "radius.png", "trajectory.png", "errors.png", "volume3d.png"]
 
 
-def check_report(out: Path) -> dict:
+def check_report(out: Path, uav_speed: float) -> dict:
     for name in REPORT_FILES:
         path = out / name
         assert path.is_file() and path.stat().st_size > 0, name
@@ -43,8 +43,7 @@ def check_report(out: Path) -> dict:
     assert np.isfinite(trajectory["x"]).all() and np.isfinite(trajectory["radial_error"]).all()
     # The UAV flies at constant speed: consecutive samples are at most v * dt apart.
     step = np.hypot(np.diff(trajectory["x"]), np.diff(trajectory["y"]))
-    speed = metrics["simulation"].get("uav_speed_mps")
-    assert step.max() <= np.diff(trajectory["t"]).max() * (speed or 1e9) + 1e-6
+    assert step.max() <= np.diff(trajectory["t"]).max() * uav_speed * (1 + 1e-5)  # CSV rounding
     visible = metrics["simulation"]["visibility_fraction"]
     assert visible is not None and 0.0 <= visible <= 1.0
     return metrics
@@ -55,7 +54,7 @@ def test_demo_writes_a_complete_report(tmp_path: Path, capsys: pytest.CaptureFix
     assert main(["demo", "--out", str(out), "--quiet"]) == 0
     printed = capsys.readouterr().out
     assert f"report: {out / 'report.md'}" in printed
-    metrics = check_report(out)
+    metrics = check_report(out, Scenario.demo().uav.speed)
     plan = metrics["plan"]
     assert plan["feasible"], plan["infeasibility"]
     # Lemma 5 and Lemma 6 hold on the plan: rates within v - v_g, radii above the threshold.
@@ -85,7 +84,7 @@ def test_run_equals_python_api(tmp_path: Path) -> None:
 def test_examples_run(example: str, shared_data: Path, tmp_path: Path) -> None:
     out = tmp_path / example
     assert main(["run", str(REPO / "examples" / f"{example}.yaml"), "--out", str(out), "--quiet"]) == 0
-    metrics = check_report(out)
+    metrics = check_report(out, Scenario.load(REPO / "examples" / f"{example}.yaml").uav.speed)
     assert metrics["plan"]["samples"] >= 2
     assert all(math.isfinite(v) for v in (metrics["plan"]["initial_radius_m"], metrics["plan"]["final_radius_m"]))
 

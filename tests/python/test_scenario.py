@@ -28,7 +28,7 @@ def test_defaults_come_from_the_cpp_structs() -> None:
     demo = Scenario.demo()
     demo.name = "scenario"
     assert again.to_dict() == demo.to_dict()
-    assert again.uav.altitude != s.uav.altitude or again.poi.route is not None
+    assert again.uav.altitude == 200.0 and again.poi.route[0] == [-290.0, -210.0]
 
 
 def test_full_scenario_resolves_relative_paths(tmp_path: Path) -> None:
@@ -64,7 +64,9 @@ baselines: [11.2, 35]
         ("uav: {speed: 4}\npoi: {speed: 5}", r"uav.speed = 4.0: must exceed poi.speed"),
         ("control: {direction: up}", r"control.direction = 'up': must be \"ccw\" or \"cw\""),
         ("planning: {max_depth: 99}", r"planning.max_depth = 99: must be an integer in \[0, 30\]"),
-        ("planning: {resolution_deg: 90}", r"planning.resolution_deg = 90: must be <= 45"),
+        ("planning: {resolution_deg: 90}", r"planning.resolution_deg = 90: must be <= 30"),
+        ("poi: {route: [[0, 0, 1], [5, 5]]}", r"poi.route\[0\] = \[0, 0, 1\]: must be \[x, y\]"),
+        ("name: ../../etc", r"name = .*it names the output folder"),
         ("sensor: {altitude_band: [100, 50]}", r"sensor.altitude_band"),
         ("environment: {mesh: a.obj, up: x}", r"environment.up = 'x': must be \"z\" or \"y\""),
         ("environment: {demo: true, mesh: a.obj}", r"environment = .*exactly one of"),

@@ -36,6 +36,10 @@ struct TriangleMesh {
   Faces faces;
 };
 
+// Throws Error naming `field` for a mesh with no faces, a non-finite vertex or a face index out
+// of range; every function taking triangles from outside checks them with this.
+void validate_triangle_mesh(const Points3& vertices, const Faces& faces, const std::string& field = "mesh");
+
 class Environment {
  public:
   // 2.5D buildings from a GeoJSON FeatureCollection of Polygon / MultiPolygon features with

@@ -30,18 +30,22 @@ void hash_bytes(std::uint64_t& hash, const void* data, std::size_t size) {
 
 }  // namespace
 
-Environment Environment::from_triangles(Points3 vertices, Faces faces) {
-  if (faces.rows() == 0) throw Error("faces: the mesh has no triangles");
+void validate_triangle_mesh(const Points3& vertices, const Faces& faces, const std::string& field) {
+  if (faces.rows() == 0) throw Error(field + ".faces: the mesh has no triangles");
   for (Eigen::Index i = 0; i < vertices.rows(); ++i)
     for (int k = 0; k < 3; ++k)
       if (!std::isfinite(vertices(i, k)))
-        detail::fail_field("vertices[" + std::to_string(i) + "]", vertices(i, k),
+        detail::fail_field(field + ".vertices[" + std::to_string(i) + "]", vertices(i, k),
                            "vertex coordinates must be finite");
   for (Eigen::Index i = 0; i < faces.rows(); ++i)
     for (int k = 0; k < 3; ++k)
       if (faces(i, k) < 0 || faces(i, k) >= vertices.rows())
-        detail::fail_field("faces[" + std::to_string(i) + "]", faces(i, k),
+        detail::fail_field(field + ".faces[" + std::to_string(i) + "]", faces(i, k),
                            "vertex index out of range [0, " + std::to_string(vertices.rows()) + ")");
+}
+
+Environment Environment::from_triangles(Points3 vertices, Faces faces) {
+  validate_triangle_mesh(vertices, faces, "triangles");
   Environment env;
   env.mesh_.vertices = std::move(vertices);
   env.mesh_.faces = std::move(faces);

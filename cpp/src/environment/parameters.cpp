@@ -25,9 +25,8 @@ void Sensor::validate() const {
 void Planning::validate() const {
   require_positive(spacing, "planning.spacing");
   require_positive(cutoff, "planning.cutoff");
-  require_positive(resolution_deg, "planning.resolution_deg");
-  if (resolution_deg > 45.0)
-    detail::fail_field("planning.resolution_deg", resolution_deg, "must be at most 45 degrees");
+  if (!(resolution_deg >= 0.1 && resolution_deg <= 30.0))
+    detail::fail_field("planning.resolution_deg", resolution_deg, "must be in [0.1, 30] degrees (the VV grid's range)");
   require_positive(min_spacing, "planning.min_spacing");
   if (max_depth < 0 || max_depth > 30)
     detail::fail_field("planning.max_depth", max_depth, "must be in [0, 30]");

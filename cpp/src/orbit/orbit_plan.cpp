@@ -42,6 +42,13 @@ OrbitPlan constant_radius_plan(const PoiPath& poi, double radius, const Uav& uav
   OrbitPlan plan{poi, poi.node_times(), {}, {}, {}, true, {}};
   plan.radii.assign(plan.times.size(), radius);
   plan.max_radii = plan.radii;
+  // Lemma 6 / Corollary 1: a constant orbit about a moving POI is flyable only from r_min (1 + v_g/v)^2.
+  const double needed = min_feasible_radius(uav, poi.speed());
+  if (radius < needed) {
+    plan.feasible = false;
+    plan.infeasibility = "radius " + detail::to_text(radius) + " m < r_min (1 + v_g/v)^2 = " + detail::to_text(needed) +
+                         " m: the orbit's curvature exceeds 1/r_min (Lemma 6)";
+  }
   return plan;
 }
 

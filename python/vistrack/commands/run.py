@@ -30,18 +30,16 @@ def register(subparsers: Any) -> None:
 def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool) -> int:
     """Shared by ``run`` and ``demo``: run, then print the headline numbers and the report path."""
     from ..pipeline import run
+    from ..report import percent
 
     result = run(scenario, out, quiet=quiet, cache_dir=cache)
     m = result.metrics
     plan, sim = m["plan"], m["simulation"]
     status = "feasible" if plan["feasible"] else "INFEASIBLE"
-    visible = sim["visibility_fraction"]
     print(f"{scenario.name}: {plan['samples']} orbit samples ({status}), R {plan['initial_radius_m']:.1f} -> "
-          f"{plan['final_radius_m']:.1f} m; POI visible {100 * visible:.1f}% of the time"
-          if visible is not None else f"{scenario.name}: {plan['samples']} orbit samples ({status})")
+          f"{plan['final_radius_m']:.1f} m; POI visible {percent(sim['visibility_fraction'])} of the time")
     for radius, baseline in m["baselines"].items():
-        fraction = baseline["visibility_fraction"]
-        print(f"  constant R = {radius} m: visible {100 * fraction:.1f}%")
+        print(f"  constant R = {radius} m: visible {percent(baseline['visibility_fraction'])}")
     cache = m.get("volume_cache")
     if cache:
         print(f"visibility-volume cache {cache['folder']}: {cache['hits']} read, {cache['misses']} computed")

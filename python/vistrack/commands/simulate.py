@@ -9,6 +9,7 @@ evaluated at every sample; ``--baseline-radius`` adds the same loop around const
 from __future__ import annotations
 
 import argparse
+import itertools
 import json
 import math
 import time
@@ -104,7 +105,7 @@ def figure_trajectory(runs: Sequence[tuple[str, Any, Any]], env: Any, path: str 
                 ax.plot(ring[:, 0], ring[:, 1], color="green", ls="--", lw=0.8,
                         label="visibility polygons" if (n == 0 and poly is polygons[k][0]) else None)
     colors = ["red", "tab:blue", "tab:orange", "tab:purple", "tab:brown"]
-    for (label, _, result), color in zip(runs, colors):
+    for (label, _, result), color in zip(runs, itertools.cycle(colors)):
         s = np.asarray(result.state)
         text = label
         if result.visibility_fraction is not None:
