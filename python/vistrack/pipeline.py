@@ -7,7 +7,6 @@ closed-loop simulation with line-of-sight evaluation (sections V-VI) -> constant
 
 from __future__ import annotations
 
-import json
 import math
 import time
 from dataclasses import dataclass, field

@@ -11,12 +11,12 @@ from __future__ import annotations
 import json
 import math
 from pathlib import Path
-from typing import Callable, Iterable, Sequence
+from typing import Sequence
 
 import numpy as np
 
 from . import _core
-from .plotting import OSM_CREDIT, plot_buildings
+from .plotting import OSM_CREDIT, evenly_spaced_indices, plot_buildings, pyplot
 
 
 
@@ -75,18 +75,9 @@ def metric_along_path(
     return ordered
 
 
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
 def figure_metric(results: dict[str, "_core.Discretization"], cutoff: float, path: str | Path, title: str = "") -> None:
     """Figure 4: the XOR metric (56) between neighbouring VVs against distance along the path."""
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for label, d in results.items():
         s = np.asarray(d.arc_lengths)
@@ -116,19 +107,13 @@ def footprint_environment(map_path: str | Path, footprints: str | Path | None = 
     return None
 
 
-def _pick(n: int, count: int) -> list[int]:
-    if n <= count:
-        return list(range(n))
-    return sorted({int(round(i)) for i in np.linspace(0, n - 1, count)})
-
-
 def figure_orbits(plan: "_core.VisibilityOrbitPlan", env, path: str | Path, count: int = 4,
                   credit: str | None = OSM_CREDIT) -> None:
     """Figure 5: orbit circles inside their VPs at h_UAV, over the building footprints."""
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7.5, 7.5))
     centres = np.asarray(plan.centers)
-    picked = _pick(len(plan.times), count)
+    picked = evenly_spaced_indices(len(plan.times), count)
     colors = plt.cm.plasma(np.linspace(0.0, 0.85, len(picked)))
     reach = max([max(plan.max_radii) if len(plan.max_radii) else 0.0, plan.sensor.d_max * 0.3])
     lo = centres.min(axis=0) - reach - 20
@@ -167,7 +152,7 @@ def figure_orbits(plan: "_core.VisibilityOrbitPlan", env, path: str | Path, coun
 
 def figure_radius(plan: "_core.VisibilityOrbitPlan", path: str | Path) -> None:
     """R(t) after Algorithm 1 against MaxRadius, Lemma 6's threshold, and dR/dt against Lemma 5."""
-    plt = _pyplot()
+    plt = pyplot()
     t = np.asarray(plan.times)
     rate_limit = plan.uav.speed - plan.poi.speed
     fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 6), sharex=True, gridspec_kw=dict(height_ratios=[2, 1]))

@@ -18,14 +18,26 @@ from ._core import Environment, PoiPath, RoadNetwork
 OSM_CREDIT = "Buildings © OpenStreetMap contributors (ODbL)"
 
 
-def new_figure(size: tuple[float, float] = (8.0, 8.0)) -> tuple[Any, Any]:
-    """A figure with one axes, on the non-interactive Agg backend."""
+def pyplot() -> Any:
+    """matplotlib.pyplot on the non-interactive Agg backend (no display needed)."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    return plt.subplots(figsize=size, constrained_layout=True)
+    return plt
+
+
+def evenly_spaced_indices(n: int, count: int) -> list[int]:
+    """At most ``count`` indices of ``range(n)`` spread evenly, first and last included."""
+    if n <= count:
+        return list(range(n))
+    return sorted({int(round(i)) for i in np.linspace(0, n - 1, count)})
+
+
+def new_figure(size: tuple[float, float] = (8.0, 8.0)) -> tuple[Any, Any]:
+    """A figure with one axes, on the non-interactive Agg backend."""
+    return pyplot().subplots(figsize=size, constrained_layout=True)
 
 
 def save_figure(fig: Any, path: Path | str, dpi: int = 150) -> Path:
@@ -140,10 +152,6 @@ def figure_volume_3d(scene: Any, vv: Any, path: Path | str, caption: str = "",
                      display_resolution_deg: float = 3.0) -> Path:
     """3D view of a VV, shaded, with its POI. Finer VVs are recomputed at display_resolution_deg
     for the picture (matplotlib draws every face); the title gives the true volume."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
     from . import _core
@@ -157,7 +165,7 @@ def figure_volume_3d(scene: Any, vv: Any, path: Path | str, caption: str = "",
     light = np.array([0.4, -0.5, 0.77])
     shade = 0.35 + 0.65 * np.clip(normals @ light, 0.0, 1.0)
     colors = np.column_stack([0.2 * shade, 0.75 * shade, 0.35 * shade, np.full_like(shade, 0.55)])
-    fig = plt.figure(figsize=(9.0, 7.5))
+    fig = pyplot().figure(figsize=(9.0, 7.5))
     ax = fig.add_subplot(projection="3d")
     ax.add_collection3d(Poly3DCollection(triangles, facecolors=colors, edgecolors="none"))
     ax.scatter(*vv.poi, color="crimson", s=30, label="POI g", depthshade=False)

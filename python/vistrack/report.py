@@ -7,7 +7,6 @@ import json
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
 
 if TYPE_CHECKING:
     from .pipeline import RunResult
@@ -92,10 +91,11 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
 
 def _save_volumes(result: "RunResult", folder: Path) -> list[Path]:
     from .pipeline import MAX_SAVED_VOLUMES
+    from .plotting import evenly_spaced_indices
 
     folder.mkdir(parents=True, exist_ok=True)
     n = result.plan.num_volumes
-    picked = sorted({int(round(k)) for k in np.linspace(0, n - 1, min(n, MAX_SAVED_VOLUMES))})
+    picked = evenly_spaced_indices(n, MAX_SAVED_VOLUMES)
     files = []
     for k in picked:
         path = folder / f"vv_{k:03d}_t{result.plan.times[k]:07.2f}.ply"

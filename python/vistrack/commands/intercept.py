@@ -19,6 +19,7 @@ import numpy as np
 
 from .. import VistrackError
 from .. import dubins
+from ..plotting import pyplot
 
 DEFAULTS: dict[str, Any] = {
     "pursuer": [0.0, 0.0, 0.0],
@@ -136,10 +137,7 @@ def result_record(problem: dict[str, Any], result: dubins.InterceptResult) -> di
 
 
 def plot(problem: dict[str, Any], result: dubins.InterceptResult, out: Path) -> list[Path]:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     # (a) travel times against the target's angular position, a little past the interception.
     swept = np.linspace(0.0, max(result.swept_angle * 1.25, result.swept_angle + math.pi / 2), 1500)

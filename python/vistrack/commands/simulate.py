@@ -20,7 +20,7 @@ import numpy as np
 
 from .. import _core
 
-from ..plotting import OSM_CREDIT, plot_buildings
+from ..plotting import OSM_CREDIT, evenly_spaced_indices, plot_buildings, pyplot
 
 
 def load_environment(path: str | Path, up: str = "y") -> Any:
@@ -68,19 +68,10 @@ def metrics(result: Any, converge_after: float = 20.0) -> dict[str, Any]:
     return out
 
 
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
 def figure_trajectory(runs: Sequence[tuple[str, Any, Any]], env: Any, path: str | Path, title: str = "",
                       orbit_count: int = 8, credit: str | None = OSM_CREDIT) -> None:
     """Figure 10 style: each run's UAV path (label, plan, result) with its orbits and the POI path."""
-    plt = _pyplot()
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(8, 8))
     label0, plan0, result0 = runs[0]
     everything = np.vstack([np.asarray(r.state)[:, :2] for _, _, r in runs] + [np.asarray(result0.poi)[:, :2]])
@@ -92,7 +83,7 @@ def figure_trajectory(runs: Sequence[tuple[str, Any, Any]], env: Any, path: str 
     ax.plot(poi[:, 0], poi[:, 1], color="0.3", ls="--", lw=1.2, label="POI path")
     theta = np.linspace(0, 2 * math.pi, 181)
     times = np.asarray(plan0.times)
-    picked = np.unique(np.linspace(0, len(times) - 1, min(orbit_count, len(times))).round().astype(int))
+    picked = evenly_spaced_indices(len(times), orbit_count)
     centers = np.asarray(plan0.centers)
     polygons = getattr(plan0, "polygons", None)  # visibility polygons when the plan carries them
     for n, k in enumerate(picked):
@@ -129,7 +120,7 @@ def figure_trajectory(runs: Sequence[tuple[str, Any, Any]], env: Any, path: str 
 def figure_errors(result: Any, path: str | Path, window: float | None = None, title: str = "",
                   max_turn_rate: float | None = None) -> None:
     """Figure 11 style: radial error, heading and its error, and control against time."""
-    plt = _pyplot()
+    plt = pyplot()
     t = np.asarray(result.t)
     keep = t <= (t[0] + window) if window else np.ones_like(t, bool)
     fig, axes = plt.subplots(3, 1, figsize=(8, 8), sharex=True)

@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import _core
+from ..plotting import pyplot
 
 
 def _betas(text: str) -> list[float]:
@@ -80,10 +81,7 @@ def run(args: argparse.Namespace) -> int:
     }
     (out / "tune.json").write_text(json.dumps(summary, indent=1))
 
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
 
     fig, (ax0, ax1) = plt.subplots(1, 2, figsize=(12, 5.2))
     radii, angles = np.asarray(chosen.radii), np.asarray(chosen.angles)
