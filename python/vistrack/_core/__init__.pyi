@@ -1,0 +1,1391 @@
+"""
+vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation.
+"""
+from __future__ import annotations
+import collections.abc
+import numpy
+import numpy.typing
+import typing
+from . import dubins
+__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'wrap_to_pi', 'xor_volume']
+class VistrackError(ValueError):
+    pass
+class Polygon:
+    """
+    A simple polygon with optional holes, in metres.
+    """
+    def __init__(self, outer: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], holes: collections.abc.Sequence[typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"]] = []) -> None:
+        """
+        outer: (n, 2) array; holes: list of (m, 2) arrays. A closing repeat is dropped.
+        """
+    def __repr__(self) -> str:
+        ...
+    def contains(self, point: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> bool:
+        """
+        Even-odd containment; boundary points count as inside.
+        """
+    def distance_to_boundary(self, point: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> float:
+        """
+        Distance from a point to the nearest edge of any ring.
+        """
+    @property
+    def area(self) -> float:
+        """
+        Area minus holes, m^2.
+        """
+    @property
+    def holes(self) -> list[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]]:
+        """
+        Holes, each (m, 2).
+        """
+    @property
+    def outer(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        Outer ring (n, 2), without a closing repeat.
+        """
+class Uav:
+    """
+    The Dubins vehicle: constant speed, minimum turn radius, altitude.
+    """
+    def __init__(self, *, speed: typing.SupportsFloat | typing.SupportsIndex = 20.0, min_turn_radius: typing.SupportsFloat | typing.SupportsIndex = 50.0, altitude: typing.SupportsFloat | typing.SupportsIndex = 300.0) -> None:
+        """
+        speed v (m/s), min_turn_radius r_min (m), altitude h_UAV (m).
+        """
+    def __repr__(self) -> str:
+        ...
+    def validate(self) -> None:
+        """
+        Raise VistrackError naming the first invalid field.
+        """
+    @property
+    def altitude(self) -> float:
+        """
+        h_UAV, m
+        """
+    @altitude.setter
+    def altitude(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def min_turn_radius(self) -> float:
+        """
+        r_min, m
+        """
+    @min_turn_radius.setter
+    def min_turn_radius(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def speed(self) -> float:
+        """
+        v, m/s
+        """
+    @speed.setter
+    def speed(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class Sensor:
+    """
+    Line-of-sight sensor: range d_max and optional altitude band.
+    """
+    def __init__(self, *, d_max: typing.SupportsFloat | typing.SupportsIndex = 400.0, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None) -> None:
+        """
+        d_max (m); altitude_band (h_lo, h_hi) in m or None for no band.
+        """
+    def validate(self) -> None:
+        """
+        Raise VistrackError naming the first invalid field.
+        """
+    @property
+    def altitude_band(self) -> tuple[float, float] | None:
+        """
+        (h_lo, h_hi) in m, or None
+        """
+    @altitude_band.setter
+    def altitude_band(self, arg0: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None) -> None:
+        ...
+    @property
+    def d_max(self) -> float:
+        """
+        maximum viewing distance, m
+        """
+    @d_max.setter
+    def d_max(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class Planning:
+    """
+    Adaptive placement of visibility volumes (section IV.B).
+    """
+    def __init__(self, *, spacing: typing.SupportsFloat | typing.SupportsIndex = 20.0, cutoff: typing.SupportsFloat | typing.SupportsIndex = 20000000.0, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_depth: typing.SupportsInt | typing.SupportsIndex = 8) -> None:
+        """
+        spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth.
+        """
+    def validate(self) -> None:
+        """
+        Raise VistrackError naming the first invalid field.
+        """
+    @property
+    def cutoff(self) -> float:
+        """
+        d_cutoff, m^3
+        """
+    @cutoff.setter
+    def cutoff(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_depth(self) -> int:
+        """
+        most halvings of one initial interval
+        """
+    @max_depth.setter
+    def max_depth(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def min_spacing(self) -> float:
+        """
+        smallest spacing inserted, m
+        """
+    @min_spacing.setter
+    def min_spacing(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def resolution_deg(self) -> float:
+        """
+        VV ray grid step, degrees
+        """
+    @resolution_deg.setter
+    def resolution_deg(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def spacing(self) -> float:
+        """
+        initial spacing of VVs along the path, m
+        """
+    @spacing.setter
+    def spacing(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class Control:
+    """
+    Guidance gains (section V): beta, k_psi, direction.
+    """
+    def __init__(self, *, beta: typing.SupportsFloat | typing.SupportsIndex = 0.025, k_psi: typing.SupportsFloat | typing.SupportsIndex = 20.0, direction: str = 'ccw') -> None:
+        """
+        beta (circulation), k_psi (heading gain), direction 'ccw' or 'cw'.
+        """
+    def validate(self) -> None:
+        """
+        Raise VistrackError naming the first invalid field.
+        """
+    @property
+    def beta(self) -> float:
+        """
+        circulation parameter
+        """
+    @beta.setter
+    def beta(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def direction(self) -> str:
+        """
+        'ccw' or 'cw'
+        """
+    @direction.setter
+    def direction(self, arg0: str) -> None:
+        ...
+    @property
+    def k_psi(self) -> float:
+        """
+        heading gain
+        """
+    @k_psi.setter
+    def k_psi(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class SimulationOptions:
+    """
+    Closed-loop integration settings.
+    """
+    def __init__(self, *, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-06, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-08, max_step: typing.SupportsFloat | typing.SupportsIndex = 1.0, output_step: typing.SupportsFloat | typing.SupportsIndex = 0.1) -> None:
+        """
+        rtol, atol, max_step (s), output_step (s).
+        """
+    def validate(self) -> None:
+        """
+        Raise VistrackError naming the first invalid field.
+        """
+    @property
+    def atol(self) -> float:
+        """
+        absolute tolerance
+        """
+    @atol.setter
+    def atol(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_step(self) -> float:
+        """
+        largest step, s
+        """
+    @max_step.setter
+    def max_step(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def output_step(self) -> float:
+        """
+        output sample spacing, s
+        """
+    @output_step.setter
+    def output_step(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def rtol(self) -> float:
+        """
+        relative tolerance
+        """
+    @rtol.setter
+    def rtol(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class RoadNetwork:
+    """
+    Road graph G = (N, E): nodes on the ground plane, bidirectional edges.
+    """
+    def __init__(self, nodes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], edges: typing.Annotated[numpy.typing.ArrayLike, numpy.int64, "[m, 2]"]) -> None:
+        """
+        nodes: (n, 2) float array of positions in metres; edges: (m, 2) int array of node pairs.
+        """
+    def __repr__(self) -> str:
+        ...
+    def nearest_node(self, point: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> int:
+        """
+        Index of the node closest to a point (x, y) (lowest index on ties).
+        """
+    def shortest_route(self, start: typing.SupportsInt | typing.SupportsIndex, goal: typing.SupportsInt | typing.SupportsIndex) -> list[int]:
+        """
+        Node indices of a shortest route along the edges from start to goal (Dijkstra, Euclidean edge lengths), both included. VistrackError when goal is unreachable.
+        """
+    @property
+    def edges(self) -> typing.Annotated[numpy.typing.NDArray[numpy.int64], "[m, 2]"]:
+        """
+        Edges as node index pairs, numpy int64 array (m, 2).
+        """
+    @property
+    def nodes(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        Node positions, numpy array (n, 2).
+        """
+class Environment:
+    """
+    Obstacles (2.5D buildings or a triangle mesh), ground and road network.
+    """
+    @staticmethod
+    def demo() -> Environment:
+        """
+        The embedded synthetic downtown (800 m x 800 m, street grid as road network, buildings 10-150 m tall). Deterministic.
+        """
+    @staticmethod
+    def from_buildings(buildings: collections.abc.Iterable, roads: RoadNetwork | None = None) -> Environment:
+        """
+        Environment from a list of (Polygon, height) or (Polygon, height, id) (an (n, 2) array may stand for a Polygon without holes), validated as in from_geojson; optional RoadNetwork checked against every footprint.
+        """
+    @staticmethod
+    def from_geojson(path: typing.Any) -> Environment:
+        """
+        2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: height from properties.height, else building:levels x 3 m; id from properties.id, else the feature index. Coordinates in local east-north metres. Footprints are validated (simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up to 1 m^2 are taken as touching walls, and a footprint inside a building at least as tall as a building part) and normalised counter-clockwise.
+        """
+    @staticmethod
+    def from_mesh(path: typing.Any, up: str = 'z') -> Environment:
+        """
+        Any mesh file CGAL reads (.obj .ply .stl .off): duplicate points merged, polygons triangulated, degenerate triangles dropped. up='y' maps a Y-up, north=-Z file (x, y, z) to east-north-up (x, -z, y). The ground level is the lowest vertex.
+        """
+    @staticmethod
+    def from_triangles(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"]) -> Environment:
+        """
+        Environment from triangles: vertices (n, 3) float in east-north-up metres, faces (m, 3) int indexing them. The ground level is the lowest vertex.
+        """
+    def __repr__(self) -> str:
+        ...
+    def line_of_sight(self, a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"]) -> numpy.typing.NDArray[numpy.bool]:
+        """
+        Bool array: segment a[k]-b[k] ((n, 3) each) is unobstructed by obstacles and ground. Builds a BVH per call: use VisibilityScene(env).line_of_sight for repeated queries.
+        """
+    @typing.overload
+    def set_roads(self, roads: RoadNetwork) -> None:
+        """
+        Replace the road network; VistrackError naming the edge and the building when an edge crosses a footprint interior (running along a wall is allowed).
+        """
+    @typing.overload
+    def set_roads(self, nodes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], edges: typing.Annotated[numpy.typing.ArrayLike, numpy.int64, "[m, 2]"]) -> None:
+        """
+        Replace the road network from arrays nodes (n, 2) and edges (m, 2).
+        """
+    @property
+    def bounds(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 3]"]:
+        """
+        Axis-aligned bounds of the obstacles, numpy array (2, 3): [min, max].
+        """
+    @property
+    def building_ids(self) -> list[int]:
+        """
+        Building ids (properties.id, else the feature index), list of int.
+        """
+    @property
+    def faces(self) -> typing.Annotated[numpy.typing.NDArray[numpy.int32], "[m, 3]"]:
+        """
+        Obstacle triangles, numpy int32 array (m, 3) of vertex indices, outward oriented for buildings.
+        """
+    @property
+    def fingerprint(self) -> int:
+        """
+        Deterministic 64-bit content hash of the geometry and roads, for caches.
+        """
+    @property
+    def footprints(self) -> list[Polygon]:
+        """
+        Building footprints as a list of Polygon (outer counter-clockwise, holes clockwise).
+        """
+    @property
+    def ground_level(self) -> float:
+        """
+        Height of the ground plane in metres (0 for buildings, lowest vertex for a mesh).
+        """
+    @property
+    def heights(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        Building heights in metres, numpy array (num_buildings,).
+        """
+    @property
+    def max_height(self) -> float:
+        """
+        Tallest obstacle point above the ground level, in metres.
+        """
+    @property
+    def num_buildings(self) -> int:
+        """
+        Number of 2.5D buildings (0 for an environment made from a mesh).
+        """
+    @property
+    def num_triangles(self) -> int:
+        """
+        Number of obstacle triangles (the ground plane not counted).
+        """
+    @property
+    def roads(self) -> RoadNetwork:
+        """
+        The road network (RoadNetwork).
+        """
+    @property
+    def vertices(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 3]"]:
+        """
+        Obstacle vertices, numpy array (n, 3).
+        """
+class PoiPath:
+    """
+    A point of interest moving at constant speed through waypoints.
+    """
+    @staticmethod
+    def from_csv(path: typing.Any, speed: typing.SupportsFloat | typing.SupportsIndex) -> PoiPath:
+        """
+        Read waypoints from a CSV file with lines x,y[,z].
+        """
+    @staticmethod
+    def from_nodes(roads: RoadNetwork, nodes: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex], speed: typing.SupportsFloat | typing.SupportsIndex) -> PoiPath:
+        """
+        Path through a sequence of road-network node indices, each consecutive pair joined by an edge.
+        """
+    def __init__(self, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], speed: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        Waypoints (n, 2) or (n, 3) in metres; speed in m/s (> 0).
+        """
+    def heading(self, t: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        Direction of the velocity at t, radians.
+        """
+    def position(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[3, 1]"]:
+        """
+        Position (3,) at time t (clamped to the path).
+        """
+    def velocity(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        Velocity (2,) of the segment containing t.
+        """
+    @property
+    def duration(self) -> float:
+        """
+        Time to travel the whole path (s).
+        """
+    @property
+    def length(self) -> float:
+        """
+        Path length in metres.
+        """
+    @property
+    def node_times(self) -> list[float]:
+        """
+        Times t_i at each waypoint (s).
+        """
+    @property
+    def speed(self) -> float:
+        """
+        Speed v_g in m/s.
+        """
+    @property
+    def waypoints(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 3]"]:
+        """
+        Waypoints (n, 3) after dropping repeats.
+        """
+class DirectionGrid:
+    """
+    Angular grid of a VV: num_elevation rows x num_azimuth columns of equal angular size over the sphere; the ray of cell (i, j) goes through the cell centre.
+    """
+    @staticmethod
+    def from_resolution(resolution_deg: typing.SupportsFloat | typing.SupportsIndex) -> DirectionGrid:
+        """
+        Grid with steps of about resolution_deg degrees (an even number of rows).
+        """
+    def azimuth(self, column: typing.SupportsInt | typing.SupportsIndex) -> float:
+        """
+        Centre azimuth of column j (rad, from +x).
+        """
+    def direction(self, row: typing.SupportsInt | typing.SupportsIndex, column: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[3, 1]"]:
+        """
+        Unit vector of cell (i, j).
+        """
+    def elevation(self, row: typing.SupportsInt | typing.SupportsIndex) -> float:
+        """
+        Centre elevation of row i (rad).
+        """
+    def solid_angle(self, row: typing.SupportsInt | typing.SupportsIndex) -> float:
+        """
+        Solid angle of each cell of row i (sr).
+        """
+    @property
+    def num_azimuth(self) -> int:
+        ...
+    @property
+    def num_elevation(self) -> int:
+        ...
+    @property
+    def size(self) -> int:
+        """
+        Number of cells.
+        """
+class VisibilityVolume:
+    """
+    Visibility volume alpha(g) (eq. 4): per-direction visible intervals on a grid and a closed, outward-oriented triangle mesh.
+    """
+    def __repr__(self) -> str:
+        ...
+    def check(self) -> MeshCheck:
+        """
+        check_closed_mesh on this VV's mesh.
+        """
+    def grid_volume(self) -> float:
+        """
+        Volume represented by the grid intervals: sum of solid_angle * (far^3 - near^3) / 3.
+        """
+    def save(self, path: str) -> None:
+        """
+        Write the mesh to .obj or .ply.
+        """
+    def slice(self, altitude: typing.SupportsFloat | typing.SupportsIndex, all_parts: bool = False) -> list[Polygon]:
+        """
+        Visibility polygon at world altitude z: list of Polygon. By default only the part(s) containing the POI's vertical; all_parts=True keeps every part.
+        """
+    @property
+    def altitude_band(self) -> tuple[float, float] | None:
+        """
+        (h_lo, h_hi) in world z, or None.
+        """
+    @property
+    def d_max(self) -> float:
+        """
+        Maximum viewing distance (m).
+        """
+    @property
+    def faces(self) -> typing.Annotated[numpy.typing.NDArray[numpy.int32], "[m, 3]"]:
+        """
+        Mesh triangles (m, 3) int32, outward oriented.
+        """
+    @property
+    def far(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        End of the visible interval per cell (near >= far: nothing visible).
+        """
+    @property
+    def grid(self) -> DirectionGrid:
+        """
+        The direction grid.
+        """
+    @property
+    def near(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Start of the visible interval per cell, (num_elevation, num_azimuth) metres.
+        """
+    @property
+    def poi(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[3, 1]"]:
+        """
+        The POI g (3,).
+        """
+    @property
+    def vertices(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 3]"]:
+        """
+        Mesh vertices (n, 3).
+        """
+    @property
+    def volume(self) -> float:
+        """
+        Volume of the mesh (m^3).
+        """
+class VisibilityScene:
+    """
+    Embree BVH of an environment (obstacles plus ground plane), built once and shared by every visibility query; thread-safe.
+    """
+    def __init__(self, env: Environment) -> None:
+        """
+        Build the BVH (validates the triangles first).
+        """
+    def first_hits(self, origin: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], directions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], t_max: typing.SupportsFloat | typing.SupportsIndex = 1e+30) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Distance (m) to the first obstacle or ground hit along each direction (n, 3); inf when none.
+        """
+    def inside_obstacle(self, point: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"]) -> bool:
+        """
+        Whether a point lies inside an obstacle.
+        """
+    def line_of_sight(self, a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"]) -> numpy.typing.NDArray[numpy.bool]:
+        """
+        Bool array: segment a[k]-b[k] is unobstructed (occlusion rays).
+        """
+    def poi_on_surface(self, points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 3]"]:
+        """
+        Where ground POIs stand: rows (x, y, h) of a POI path, h the height above the surface, become (x, y, surface_height(x, y) + h).
+        """
+    def surface_height(self, xy: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> float:
+        """
+        Height of the topmost surface (obstacle or ground) under the vertical through xy (2,).
+        """
+    @property
+    def fingerprint(self) -> int:
+        """
+        Fingerprint of the source environment.
+        """
+    @property
+    def ground_level(self) -> float:
+        """
+        Ground plane height (m).
+        """
+    @property
+    def num_triangles(self) -> int:
+        """
+        Obstacle triangles in the BVH.
+        """
+class MeshCheck:
+    """
+    CGAL's verdict on a mesh that should bound a solid.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def bounds_volume(self) -> bool:
+        ...
+    @property
+    def closed(self) -> bool:
+        ...
+    @property
+    def outward(self) -> bool:
+        ...
+    @property
+    def polygon_mesh(self) -> bool:
+        """
+        Faces form an oriented 2-manifold.
+        """
+    @property
+    def problem(self) -> str:
+        """
+        First failed property, '' when valid.
+        """
+    @property
+    def self_intersecting(self) -> bool:
+        ...
+    @property
+    def triangles_valid(self) -> bool:
+        ...
+    @property
+    def valid(self) -> bool:
+        ...
+    @property
+    def volume(self) -> float:
+        """
+        CGAL's volume (m^3).
+        """
+class OrbitPlan:
+    """
+    Time-varying reference orbit about the POI: R(t) piecewise linear between samples (times, radii), centred on the POI path g(t) (eq. 5).
+    """
+    @staticmethod
+    def from_json(text: str) -> OrbitPlan:
+        """
+        A plan from JSON text.
+        """
+    def radius(self, t: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        R(t), linear between samples.
+        """
+    def radius_rate(self, t: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        dR/dt on the segment containing t.
+        """
+    def to_json(self) -> str:
+        """
+        The plan as JSON text.
+        """
+    @property
+    def centers(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        Orbit centres g(t_k), array (n, 2).
+        """
+    @property
+    def feasible(self) -> bool:
+        """
+        Whether Algorithm 1 found the plan feasible.
+        """
+    @property
+    def infeasibility(self) -> str:
+        """
+        Which sample fails and why.
+        """
+    @property
+    def max_radii(self) -> list[float]:
+        """
+        MaxRadius from the visibility polygons (m).
+        """
+    @property
+    def metric(self) -> list[float]:
+        """
+        XOR volume between neighbouring VVs (m^3).
+        """
+    @property
+    def poi(self) -> PoiPath:
+        """
+        The POI path g(t).
+        """
+    @property
+    def radii(self) -> list[float]:
+        """
+        Orbit radii R(t_k) after Algorithm 1 (m).
+        """
+    @property
+    def times(self) -> list[float]:
+        """
+        Sample times t_k (s).
+        """
+class CircularOrbits:
+    """
+    Result of Algorithm 1 on given MaxRadius values.
+    """
+    @property
+    def failing_samples(self) -> list[int]:
+        """
+        Samples that break Lemma 6.
+        """
+    @property
+    def feasible(self) -> bool:
+        """
+        Every sample passes Lemma 6.
+        """
+    @property
+    def infeasibility(self) -> str:
+        """
+        The first failing sample and why.
+        """
+    @property
+    def min_feasible_radius(self) -> float:
+        """
+        r_min (1 + v_g/v)^2 (m).
+        """
+    @property
+    def radii(self) -> list[float]:
+        """
+        R_k after the forward and backward rate passes (m).
+        """
+    @property
+    def radius_rates(self) -> list[float]:
+        """
+        dR/dt per segment (m/s).
+        """
+class Discretization:
+    """
+    VV samples along the POI path (section IV.B).
+    """
+    def volume(self, k: typing.SupportsInt | typing.SupportsIndex) -> VisibilityVolume:
+        """
+        A copy of VV k.
+        """
+    @property
+    def arc_lengths(self) -> list[float]:
+        """
+        s_k along the path (m).
+        """
+    @property
+    def depths(self) -> list[int]:
+        """
+        0 for initial samples, d for one inserted at halving d.
+        """
+    @property
+    def metric(self) -> list[float]:
+        """
+        d(alpha_k, alpha_k+1) of eq. (56) (m^3), size n - 1.
+        """
+    @property
+    def points(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 3]"]:
+        """
+        g(t_k), (n, 3).
+        """
+    @property
+    def times(self) -> list[float]:
+        """
+        t_k = s_k / v_g (s).
+        """
+    @property
+    def volumes_computed(self) -> int:
+        """
+        VVs computed by this call.
+        """
+class VisibilityOrbitPlan(OrbitPlan):
+    """
+    An orbit plan with what it was made from: samples, VPs, VVs, dR/dt, Lemma 6 threshold.
+    """
+    @staticmethod
+    def from_json(text: str) -> VisibilityOrbitPlan:
+        """
+        A plan from its JSON text.
+        """
+    def to_json(self) -> str:
+        """
+        The plan as JSON (without VVs).
+        """
+    def volume(self, k: typing.SupportsInt | typing.SupportsIndex) -> VisibilityVolume:
+        """
+        A copy of the VV of sample k (VVs are not stored in JSON).
+        """
+    @property
+    def arc_lengths(self) -> list[float]:
+        """
+        s_k of the samples (m).
+        """
+    @property
+    def depths(self) -> list[int]:
+        """
+        Refinement depth of each sample.
+        """
+    @property
+    def failing_samples(self) -> list[int]:
+        """
+        Samples that break Lemma 6.
+        """
+    @property
+    def min_feasible_radius(self) -> float:
+        """
+        r_min (1 + v_g/v)^2 (m).
+        """
+    @property
+    def num_volumes(self) -> int:
+        ...
+    @property
+    def planning(self) -> Planning:
+        ...
+    @property
+    def polygons(self) -> list[list[Polygon]]:
+        """
+        VPs at h_UAV, one list of Polygon per sample.
+        """
+    @property
+    def radius_rates(self) -> list[float]:
+        """
+        dR/dt per segment (m/s).
+        """
+    @property
+    def sensor(self) -> Sensor:
+        ...
+    @property
+    def uav(self) -> Uav:
+        ...
+    @property
+    def volumes_computed(self) -> int:
+        """
+        VVs computed by this plan.
+        """
+class OrbitPlanner:
+    """
+    Section IV on one environment: an Embree scene built once, a VV cache shared by every call (spacings and plans reuse VVs), the grid XOR metric (56) in the POI frame, VPs at world z = h_UAV.
+    """
+    def __init__(self, env: Environment, sensor: Sensor, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, cache_dir: typing.Any = None) -> None:
+        """
+        cache_dir (str or os.PathLike, created when missing): keep every VV on disk there, keyed by the environment fingerprint, the POI position, d_max, the altitude band and the resolution, so a later planner with the same inputs reads them instead of ray casting. None: no disk cache.
+        """
+    def adaptive(self, poi: PoiPath, planning: Planning, progress: typing.Any = None) -> Discretization:
+        """
+        Adaptive discretization (IV.B): initial spacing, halving while the metric exceeds the cutoff. progress(done, total) is called as VVs are computed.
+        """
+    def fixed(self, poi: PoiPath, spacing: typing.SupportsFloat | typing.SupportsIndex, progress: typing.Any = None) -> Discretization:
+        """
+        VVs every `spacing` m from each edge start plus every node, and the metric between neighbours.
+        """
+    def plan(self, poi: PoiPath, uav: Uav, planning: Planning, progress: typing.Any = None) -> VisibilityOrbitPlan:
+        """
+        Adaptive VVs, VPs at h_UAV, MaxRadius and Algorithm 1: a VisibilityOrbitPlan.
+        """
+    @property
+    def cached_volumes(self) -> int:
+        """
+        VVs held in the cache.
+        """
+    @property
+    def disk_hits(self) -> int:
+        """
+        VVs read from the disk cache so far (0 without cache_dir).
+        """
+    @property
+    def disk_misses(self) -> int:
+        """
+        VVs computed and written to the disk cache so far (0 without cache_dir).
+        """
+    @property
+    def scene(self) -> VisibilityScene:
+        """
+        The planner's Embree scene (for line-of-sight queries on the same city).
+        """
+class OrbitState:
+    """
+    The reference orbit at one instant (Definitions 1-2): centre g, its velocity g_dot, radius R and dR/dt.
+    """
+    def __init__(self, *, center: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., center_velocity: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., radius: typing.SupportsFloat | typing.SupportsIndex = 1.0, radius_rate: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        """
+        center g (m), center_velocity g_dot (m/s), radius R (m), radius_rate dR/dt (m/s).
+        """
+    @property
+    def center(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        g, (2,)
+        """
+    @center.setter
+    def center(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> None:
+        ...
+    @property
+    def center_velocity(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        g_dot, (2,)
+        """
+    @center_velocity.setter
+    def center_velocity(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> None:
+        ...
+    @property
+    def radius(self) -> float:
+        """
+        R, m
+        """
+    @radius.setter
+    def radius(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def radius_rate(self) -> float:
+        """
+        dR/dt, m/s
+        """
+    @radius_rate.setter
+    def radius_rate(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class GuidanceGains:
+    """
+    Gains of the vector field and steering law: speed v, beta, k_psi, direction (+1 ccw, -1 cw), max_turn_rate = v / r_min.
+    """
+    @staticmethod
+    def from_parameters(uav: Uav, control: Control) -> GuidanceGains:
+        """
+        Gains from a Uav and a Control (max_turn_rate = speed / min_turn_radius).
+        """
+    def __init__(self, *, speed: typing.SupportsFloat | typing.SupportsIndex = 20.0, beta: typing.SupportsFloat | typing.SupportsIndex = 0.025, k_psi: typing.SupportsFloat | typing.SupportsIndex = 20.0, direction: typing.SupportsInt | typing.SupportsIndex = 1, max_turn_rate: typing.SupportsFloat | typing.SupportsIndex = 0.4) -> None:
+        """
+        Validated gains.
+        """
+    @property
+    def beta(self) -> float:
+        """
+        beta of a_1 (59)
+        """
+    @beta.setter
+    def beta(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def direction(self) -> int:
+        """
+        +1 counter-clockwise, -1 clockwise
+        """
+    @direction.setter
+    def direction(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def k_psi(self) -> float:
+        """
+        heading gain of (86)
+        """
+    @k_psi.setter
+    def k_psi(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_turn_rate(self) -> float:
+        """
+        u_psi,max = v / r_min, rad/s
+        """
+    @max_turn_rate.setter
+    def max_turn_rate(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def speed(self) -> float:
+        """
+        v, m/s
+        """
+    @speed.setter
+    def speed(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class VectorField:
+    """
+    The guidance vector field (74) at one point.
+    """
+    @property
+    def attraction(self) -> float:
+        """
+        Phi' (70), m/s
+        """
+    @property
+    def attraction_rate(self) -> float:
+        """
+        dPhi'/dt along the field (83)
+        """
+    @property
+    def e_r(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        radial unit vector
+        """
+    @property
+    def e_theta(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        tangential unit vector
+        """
+    @property
+    def heading(self) -> float:
+        """
+        desired heading psi_d (77), rad
+        """
+    @property
+    def heading_rate(self) -> float:
+        """
+        dpsi_d/dt along the field (85), rad/s
+        """
+    @property
+    def polar_rate(self) -> float:
+        """
+        theta_dot along the field (84)
+        """
+    @property
+    def r(self) -> float:
+        """
+        distance to the POI, m
+        """
+    @property
+    def radial_error(self) -> float:
+        """
+        r - R, m
+        """
+    @property
+    def theta(self) -> float:
+        """
+        polar angle about the POI, rad
+        """
+    @property
+    def u(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        u in x, y (75), |u| = v
+        """
+    @property
+    def u_r(self) -> float:
+        """
+        radial component of u, m/s
+        """
+    @property
+    def u_theta(self) -> float:
+        """
+        circulation component of u, m/s
+        """
+class Steering:
+    """
+    The steering law (86) at one configuration.
+    """
+    @property
+    def command(self) -> float:
+        """
+        u_psi clamped to +-max_turn_rate, rad/s
+        """
+    @property
+    def feed_forward(self) -> float:
+        """
+        dpsi_d/dt (85)
+        """
+    @property
+    def field(self) -> VectorField:
+        """
+        the vector field at the UAV
+        """
+    @property
+    def heading_error(self) -> float:
+        """
+        psi - psi_d wrapped to (-pi, pi]
+        """
+    @property
+    def lyapunov(self) -> float:
+        """
+        u_lyap, the last term of (86)
+        """
+    @property
+    def proportional(self) -> float:
+        """
+        k_psi (psi_d - psi)
+        """
+    @property
+    def saturated(self) -> bool:
+        """
+        whether the clamp was active
+        """
+    @property
+    def unsaturated(self) -> float:
+        """
+        sum of the three terms, rad/s
+        """
+class OdeStatistics:
+    """
+    Work done by the integrator.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def accepted_steps(self) -> int:
+        """
+        accepted steps
+        """
+    @property
+    def rejected_steps(self) -> int:
+        """
+        rejected trial steps
+        """
+    @property
+    def rhs_evaluations(self) -> int:
+        """
+        right-hand side evaluations
+        """
+class OdeResult:
+    """
+    Solution of solve_ode.
+    """
+    @property
+    def event_index(self) -> list[int]:
+        """
+        which event each crossing belongs to
+        """
+    @property
+    def event_t(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        crossing times, in time order
+        """
+    @property
+    def event_y(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        states at the crossings (k, dim)
+        """
+    @property
+    def statistics(self) -> OdeStatistics:
+        """
+        work done
+        """
+    @property
+    def t(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        output times (n,)
+        """
+    @property
+    def terminated(self) -> bool:
+        """
+        stopped by a terminal event
+        """
+    @property
+    def y(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, n]"]:
+        """
+        states (n, dim)
+        """
+class SimulationResult:
+    """
+    Closed-loop trajectory and its errors (section VI).
+    """
+    def to_csv(self) -> str:
+        """
+        The trajectory as CSV text (header t,x,y,psi,psi_d,psi_d_rate,radial_error,heading_error,u_psi,u_psi_unsaturated,poi_x,poi_y,poi_z,orbit_radius[,visible]), as vistrack_sim writes it.
+        """
+    @property
+    def control(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        applied turn rate u_psi (clamped to +-v/r_min), rad/s
+        """
+    @property
+    def control_unsaturated(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        the steering law (86) before the clamp, rad/s
+        """
+    @property
+    def desired_heading(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        psi_d (77) at each sample, rad
+        """
+    @property
+    def desired_heading_rate(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        dpsi_d/dt along the field (85), rad/s
+        """
+    @property
+    def heading_error(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        psi - psi_d wrapped to (-pi, pi], rad
+        """
+    @property
+    def orbit_radius(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        R(t), m
+        """
+    @property
+    def poi(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 3]"]:
+        """
+        (n, 3) POI position g(t)
+        """
+    @property
+    def radial_error(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        r - R, m
+        """
+    @property
+    def restart_times(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        segment boundaries where the integrator restarted, s
+        """
+    @property
+    def state(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 3]"]:
+        """
+        (n, 3): x, y, psi (psi as integrated, unwrapped)
+        """
+    @property
+    def statistics(self) -> OdeStatistics:
+        """
+        integrator work (all segments)
+        """
+    @property
+    def t(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        output times (n,), s
+        """
+    @property
+    def visibility_fraction(self) -> float | None:
+        """
+        fraction of samples with line of sight, or None
+        """
+    @property
+    def visible(self) -> typing.Any:
+        """
+        line of sight UAV -> POI at each sample (bool array), or None when not evaluated
+        """
+class TuningResult:
+    """
+    Grid search of max |dpsi_d/dt + u_lyap| (section V.D).
+    """
+    @property
+    def angles(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        grid angles, rad
+        """
+    @property
+    def at_heading_error(self) -> float:
+        """
+        heading error of the maximum, rad
+        """
+    @property
+    def at_r(self) -> float:
+        """
+        distance to the POI of the maximum, m
+        """
+    @property
+    def at_theta(self) -> float:
+        """
+        polar angle of the maximum from the POI's motion, rad
+        """
+    @property
+    def map(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (num_radii, num_angles): max over heading errors at each grid point, rad/s
+        """
+    @property
+    def max_turn_rate(self) -> float:
+        """
+        max |dpsi_d/dt + u_lyap|, rad/s
+        """
+    @property
+    def radii(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        grid radii, m
+        """
+def check_closed_mesh(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"]) -> MeshCheck:
+    """
+    Check with CGAL that a triangle mesh is closed, 2-manifold, free of self-intersections, bounds a volume and is outward oriented.
+    """
+def circular_orbits(times: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], max_radii: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], uav: Uav, poi_speed: typing.SupportsFloat | typing.SupportsIndex) -> CircularOrbits:
+    """
+    Algorithm 1 (lines 2-18): lower radii so that |dR/dt| <= v - v_g (Lemma 5), each limited radius built from its neighbour's, then check R_k >= r_min (1 + v_g/v)^2 (Lemma 6). VistrackError when the UAV is not faster than the POI.
+    """
+def constant_radius_plan(poi: PoiPath, radius: typing.SupportsFloat | typing.SupportsIndex, uav: Uav) -> OrbitPlan:
+    """
+    Baseline plan: orbits of one radius along the whole POI path.
+    """
+def epsilon_max() -> float:
+    """
+    Maximum of atan^2(x) / (1 + x^2), about 0.31483 (98).
+    """
+def grid_xor_volume(a: VisibilityVolume, b: VisibilityVolume) -> float:
+    """
+    The exact per-direction XOR volume of two VVs on one direction grid, each about its own POI.
+    """
+def lambda_max() -> float:
+    """
+    Maximum of atan(x) / (1 + x^2), about 0.41195 (106).
+    """
+def lemma6_curvature_bound(radius: typing.SupportsFloat | typing.SupportsIndex, speed: typing.SupportsFloat | typing.SupportsIndex, poi_speed: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    (v_g + v)^2 / (R v^2), the maximum curvature on an orbit (Lemma 6).
+    """
+def lemma7_min_gain(speed: typing.SupportsFloat | typing.SupportsIndex, beta: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    The lower bound (87) on k_psi: v beta 4 / pi^2 eps_max.
+    """
+def lyapunov_term(field: VectorField, orbit: OrbitState, beta: typing.SupportsFloat | typing.SupportsIndex, heading_error: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    u_lyap of (86) for the field at the UAV and heading error psi - psi_d.
+    """
+def max_inscribed_radius(polygons: collections.abc.Sequence[Polygon], center: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> float:
+    """
+    Radius of the largest circle centred at `center` inside the visibility polygon: the distance to the nearest boundary (holes included) of the polygon containing the centre, 0 when none contains it.
+    """
+def max_orbit_curvature(radius: typing.SupportsFloat | typing.SupportsIndex, uav_speed: typing.SupportsFloat | typing.SupportsIndex, poi_speed: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    Lemma 6: (1 + v_g/v)^2 / R, the largest curvature (31) over angles and admissible dR/dt.
+    """
+def mesh_volume(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"]) -> float:
+    """
+    Volume of a closed, consistently oriented triangle mesh.
+    """
+def mesh_xor_volume(vertices_a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces_a: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"], vertices_b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces_b: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"], time_limit: typing.SupportsFloat | typing.SupportsIndex = 120.0, perturbation: typing.SupportsFloat | typing.SupportsIndex = 0.0, check_self_intersection: bool = True) -> float:
+    """
+    vol(A) + vol(B) - 2 vol(A n B) of two closed triangle meshes ((n, 3) float vertices, (m, 3) int
+    faces) by CGAL corefinement with exact predicates on copies. VistrackError when a mesh is not
+    closed, self-intersects, does not bound a volume, or time_limit (s) is exceeded.
+    """
+def min_feasible_radius(uav: Uav, poi_speed: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    r_min (1 + v_g/v)^2: the smallest orbit radius Lemma 6 allows (at most 4 r_min, Corollary 1).
+    """
+def one_minus_cos_over_x(x: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    (1 - cos x) / x, 0 at x = 0, accurate near 0.
+    """
+def orbit_configuration(theta0: typing.SupportsFloat | typing.SupportsIndex, orbit: OrbitState, speed: typing.SupportsFloat | typing.SupportsIndex, direction: typing.SupportsInt | typing.SupportsIndex = 1) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[3, 1]"]:
+    """
+    Initial configuration (x, y, psi) on the orbit, (38)-(40).
+    """
+def orbit_curvature(radius: typing.SupportsFloat | typing.SupportsIndex, radius_rate: typing.SupportsFloat | typing.SupportsIndex, relative_angle: typing.SupportsFloat | typing.SupportsIndex, uav_speed: typing.SupportsFloat | typing.SupportsIndex, poi_speed: typing.SupportsFloat | typing.SupportsIndex, counter_clockwise: bool = True) -> float:
+    """
+    Curvature (31) of the path that stays on the orbit at a = theta - gamma, with theta' from (13); inf when (g'.e_r + R')^2 >= v^2 (Lemma 5).
+    """
+def orbit_polar_rate(theta: typing.SupportsFloat | typing.SupportsIndex, orbit: OrbitState, speed: typing.SupportsFloat | typing.SupportsIndex, direction: typing.SupportsInt | typing.SupportsIndex = 1) -> float:
+    """
+    theta_dot of (13) for a vehicle remaining on the orbit.
+    """
+def orbit_signed_curvature(theta: typing.SupportsFloat | typing.SupportsIndex, orbit: OrbitState, speed: typing.SupportsFloat | typing.SupportsIndex, direction: typing.SupportsInt | typing.SupportsIndex = 1) -> float:
+    """
+    Signed path curvature (31) of a vehicle remaining on the orbit at polar angle theta (Theorem 1: steering with v * this keeps it there).
+    """
+def plan_orbits(env: Environment, poi: PoiPath, uav: Uav, sensor: Sensor, planning: Planning, progress: typing.Any = None, cache_dir: typing.Any = None) -> VisibilityOrbitPlan:
+    """
+    Section IV end to end: adaptive VVs along the POI path (IV.B), VPs at h_UAV, MaxRadius, then Algorithm 1 (IV.C). cache_dir: as for OrbitPlanner. Returns a VisibilityOrbitPlan (an OrbitPlan); infeasible plans say which sample fails and why. VistrackError when the UAV is not faster than the POI.
+    """
+def plane_visibility_polygon(vv: VisibilityVolume, altitude: typing.SupportsFloat | typing.SupportsIndex) -> list[Polygon]:
+    """
+    VP of a VV at world altitude z by walking the mesh edges that cross the plane (what the orbit planner uses); the same polygons as vv.slice(z), which uses CGAL's slicer.
+    """
+def radial_error_rate(field: VectorField, orbit: OrbitState, heading_error: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    d(r - R)/dt of (93) for the Dubins vehicle with the given heading error.
+    """
+def sample_vector_field(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], orbit: OrbitState, gains: GuidanceGains) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]]:
+    """
+    The field at many points (n, 2): returns (u (n, 2), psi_d (n,), dpsi_d/dt (n,)).
+    """
+def segment_boundaries(plan: OrbitPlan) -> list[float]:
+    """
+    Times where dR/dt or the POI velocity may jump: plan samples and path nodes.
+    """
+def shares_direction_grid(a: VisibilityVolume, b: VisibilityVolume) -> bool:
+    """
+    True when both VVs carry intervals on the same direction grid (the grid path applies).
+    """
+def simulate(plan: OrbitPlan, uav: Uav, x0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], control: Control, env: typing.Any = None, options: SimulationOptions = ..., *, line_of_sight: collections.abc.Callable | None = None, fixed_step: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> SimulationResult:
+    """
+    Closed loop of section VI: the Dubins vehicle (1) from x0 = (x, y, psi) steered by (86) around the plan's time-varying orbit, Dormand-Prince 5(4) restarted at each segment boundary (options.rtol/atol/max_step; fixed_step > 0 for fixed steps), sampled every options.output_step. With env (an Environment or a VisibilityScene: Embree occlusion rays from the UAV at world z = uav.altitude to the POI, lifted onto the surface where its path z is underground) or a line_of_sight(from (n, 3), to (n, 3)) -> bool array callable (UAV at z = uav.altitude, POI at its path z), also the line of sight at every sample and the visibility fraction. Releases the GIL.
+    """
+def sinc(x: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    sin(x) / x, 1 at x = 0, accurate near 0.
+    """
+def slice_mesh(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"], altitude: typing.SupportsFloat | typing.SupportsIndex) -> list[Polygon]:
+    """
+    Polygons (with holes) where the plane z = altitude cuts a closed mesh (CGAL Polygon_mesh_slicer).
+    """
+def solve_ode(fun: collections.abc.Callable[[float, typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]], typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]], t_span: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], y0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], *, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-06, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-08, max_step: typing.SupportsFloat | typing.SupportsIndex = ..., first_step: typing.SupportsFloat | typing.SupportsIndex = 0.0, fixed_step: typing.SupportsFloat | typing.SupportsIndex = 0.0, t_eval: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex] = [], events: collections.abc.Sequence[typing.Any] = []) -> OdeResult:
+    """
+    Dormand-Prince 5(4) for dy/dt = fun(t, y) over t_span = (t0, t1), like scipy.integrate.solve_ivp(method='RK45'): adaptive steps (rtol, atol, max_step, first_step; 0 = automatic), or fixed_step > 0 for fixed steps. Output at t_eval (dense output) or at every step. events: callables event(t, y) with optional attributes direction (+1, -1, 0) and terminal (bool or count), located on the dense output.
+    """
+def steering(q: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], orbit: OrbitState, gains: GuidanceGains) -> Steering:
+    """
+    The steering law (86) at configuration q = (x, y, psi), clamped to +-max_turn_rate (2).
+    """
+def tune_turn_rate(radius: typing.SupportsFloat | typing.SupportsIndex, radius_rate: typing.SupportsFloat | typing.SupportsIndex, speed: typing.SupportsFloat | typing.SupportsIndex, poi_speed: typing.SupportsFloat | typing.SupportsIndex, beta: typing.SupportsFloat | typing.SupportsIndex, *, direction: str = 'ccw', tau: typing.SupportsFloat | typing.SupportsIndex = 1.0, r_max_factor: typing.SupportsFloat | typing.SupportsIndex = 4.0, num_radii: typing.SupportsInt | typing.SupportsIndex = 200, num_angles: typing.SupportsInt | typing.SupportsIndex = 360, num_heading_errors: typing.SupportsInt | typing.SupportsIndex = 73) -> TuningResult:
+    """
+    Largest |dpsi_d/dt + u_lyap| (85), (106) over r in [tau R, r_max_factor R], all polar angles and heading errors, for orbit radius R, dR/dt, UAV speed v, POI speed v_g and beta (Fig. 9). Compare with v / r_min.
+    """
+def vector_field(xi: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], orbit: OrbitState, gains: GuidanceGains, heading_hint: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> VectorField:
+    """
+    The constant-speed guidance vector field (74) at position xi (2,): desired heading (77) and its rate along the field (85). heading_hint orients the frame at the exact centre.
+    """
+def visibility_volume(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> VisibilityVolume:
+    """
+    Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when given, on a grid of about resolution_deg degrees.
+    """
+def visibility_volumes(scene: VisibilityScene, pois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> list[VisibilityVolume]:
+    """
+    VVs for every row of pois (n, 3), in parallel over the points.
+    """
+def wrap_to_pi(angle: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    Angle wrapped to (-pi, pi].
+    """
+def xor_volume(a: VisibilityVolume, b: VisibilityVolume, frame: str = 'poi', method: str = 'auto', time_limit: typing.SupportsFloat | typing.SupportsIndex = 120.0, perturbation: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
+    """
+    Volume (m^3) of the symmetric difference of two VVs, the metric d of eq. (56).
+    
+    frame: "poi" translates each VV by minus its POI first (open terrain gives 0), "world" compares
+    them in place. method: "grid" is the exact per-direction integral sum(solid_angle * |A xor B|
+    measured in r^2 dr) over a shared direction grid (needs frame "poi" or equal POIs); "mesh" is
+    CGAL corefinement of the closed meshes; "auto" takes the grid path when it applies.
+    time_limit (s) aborts the mesh path with VistrackError. perturbation (rad): rotation of b's mesh
+    about the axis (1,2,3) before the Boolean; default 1e-6 in the POI frame (identical sphere faces
+    make CGAL pathologically slow), 0 in the world frame.
+    """
+__version__: str = '0.1.0'
