@@ -75,7 +75,8 @@ def metric_along_path(
     return ordered
 
 
-def figure_metric(results: dict[str, "_core.Discretization"], cutoff: float, path: str | Path, title: str = "") -> None:
+def figure_metric(results: dict[str, "_core.Discretization"], cutoff: float, path: str | Path, title: str = "",
+                  credit: str | None = OSM_CREDIT) -> None:
     """Figure 4: the XOR metric (56) between neighbouring VVs against distance along the path."""
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(8, 4.5))
@@ -92,7 +93,8 @@ def figure_metric(results: dict[str, "_core.Discretization"], cutoff: float, pat
     ax.set_title(title or "VV difference metric (eq. 56) along the path")
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
-    fig.text(0.99, 0.01, OSM_CREDIT, ha="right", va="bottom", fontsize=6, color="gray")
+    if credit:
+        fig.text(0.99, 0.01, credit, ha="right", va="bottom", fontsize=6, color="gray")
     fig.tight_layout()
     fig.savefig(path, dpi=130)
     plt.close(fig)

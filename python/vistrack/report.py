@@ -32,14 +32,14 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
     figures.append(("city.png", "City and POI path", f"{s.environment.describe()}; POI at "
                     f"{result.poi.speed:g} m/s over {result.poi.length:.0f} m."))
 
+    credit = None if s.environment.kind == "demo" else OSM_CREDIT
     planning.figure_metric(result.metric_runs, s.planning.cutoff, out / "metric.png",
-                           title=f"{s.name}: XOR metric between neighbouring VVs (Fig. 4)")
+                           title=f"{s.name}: XOR metric between neighbouring VVs (Fig. 4)", credit=credit)
     files.append(out / "metric.png")
     figures.append(("metric.png", "Figure 4: VV difference metric along the path",
                     "Eq. (56) between neighbouring VVs for fixed spacings and the adaptive method, "
                     f"cutoff {s.planning.cutoff:.3g} m³."))
 
-    credit = None if s.environment.kind == "demo" else OSM_CREDIT
     planning.figure_orbits(result.plan, result.env, out / "orbits.png", credit=credit)
     files.append(out / "orbits.png")
     figures.append(("orbits.png", "Figure 5: orbits inside their visibility polygons",
