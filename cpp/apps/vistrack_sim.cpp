@@ -19,6 +19,8 @@
 #include "vistrack/simulate.hpp"
 #include "vistrack/visibility.hpp"
 
+#include "app_arguments.hpp"
+
 namespace {
 
 const char* kUsage =
@@ -30,16 +32,6 @@ const char* kUsage =
     "the trajectory CSV (stdout without --out). Defaults: the Uav, Control, SimulationOptions\n"
     "defaults of vistrack; x0 starts on the first orbit, heading north. With --map, the line of\n"
     "sight UAV -> POI (Embree) is added as a column `visible` and its fraction is printed.\n";
-
-double number(const std::string& flag, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(text, &used);
-    if (used == text.size()) return value;
-  } catch (const std::exception&) {
-  }
-  vistrack::detail::fail_field(flag, text, "not a number");
-}
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path);
@@ -82,7 +74,7 @@ int main(int argc, char** argv) {
     vistrack::SimulationOptions options;
     double fixed_step = 0.0;
     auto set = [&](const char* flag, double& target) {
-      if (flags.count(flag)) target = number(flag, flags[flag]);
+      if (flags.count(flag)) target = vistrack::apps::number(flag, flags[flag]);
     };
     set("--speed", uav.speed);
     set("--min-turn-radius", uav.min_turn_radius);
@@ -105,7 +97,7 @@ int main(int argc, char** argv) {
       std::string a, b, c, extra;
       if (!(in >> a >> b >> c) || (in >> extra))
         vistrack::detail::fail_field("--x0", flags["--x0"], "expected X,Y,PSI");
-      x0 = vistrack::Vec3(number("--x0", a), number("--x0", b), number("--x0", c));
+      x0 = vistrack::Vec3(vistrack::apps::number("--x0", a), vistrack::apps::number("--x0", b), vistrack::apps::number("--x0", c));
     } else {
       const vistrack::Vec3 g = plan.poi.position(plan.times.front());
       x0 = vistrack::Vec3(g.x() + plan.radii.front(), g.y(), vistrack::kPi / 2);

@@ -25,6 +25,8 @@
 #include "vistrack/visibility.hpp"
 #include "vistrack/volume.hpp"
 
+#include "app_arguments.hpp"
+
 namespace fs = std::filesystem;
 using namespace vistrack;
 
@@ -51,16 +53,6 @@ void usage() {
                "                   [--no-meshes] [--check]\n";
 }
 
-double number(const std::string& flag, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(text, &used);
-    if (used == text.size()) return value;
-  } catch (const std::exception&) {
-  }
-  detail::fail_field(flag, text, "expected a number");
-}
-
 Options parse(int argc, char** argv) {
   Options o;
   for (int i = 1; i < argc; ++i) {
@@ -73,13 +65,13 @@ Options parse(int argc, char** argv) {
     else if (flag == "--up") o.up = next();
     else if (flag == "--path") o.path = next();
     else if (flag == "--points") o.points = next();
-    else if (flag == "--spacing") o.spacing = number(flag, next());
-    else if (flag == "--d-max") o.d_max = number(flag, next());
-    else if (flag == "--altitude") o.altitude = number(flag, next());
+    else if (flag == "--spacing") o.spacing = vistrack::apps::number(flag, next());
+    else if (flag == "--d-max") o.d_max = vistrack::apps::number(flag, next());
+    else if (flag == "--altitude") o.altitude = vistrack::apps::number(flag, next());
     else if (flag == "--band") {
-      const double lo = number(flag, next());
-      o.band = std::make_pair(lo, number(flag, next()));
-    } else if (flag == "--resolution") o.resolution = number(flag, next());
+      const double lo = vistrack::apps::number(flag, next());
+      o.band = std::make_pair(lo, vistrack::apps::number(flag, next()));
+    } else if (flag == "--resolution") o.resolution = vistrack::apps::number(flag, next());
     else if (flag == "--out") o.out = next();
     else if (flag == "--no-meshes") o.meshes = false;
     else if (flag == "--check") o.check = true;
@@ -120,7 +112,7 @@ Points3 poi_positions(const Options& o, const VisibilityScene& scene) {
       std::vector<double> values;
       std::stringstream fields(item);
       std::string field;
-      while (std::getline(fields, field, ',')) values.push_back(number("--points[" + std::to_string(index) + "]", field));
+      while (std::getline(fields, field, ',')) values.push_back(vistrack::apps::number("--points[" + std::to_string(index) + "]", field));
       if (values.size() < 2 || values.size() > 3)
         detail::fail_field("--points[" + std::to_string(index) + "]", item, "expected x,y or x,y,z");
       points.emplace_back(values[0], values[1], values.size() == 3 ? values[2] : std::nan(""));
