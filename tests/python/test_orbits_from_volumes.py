@@ -172,3 +172,23 @@ def test_from_volumes_errors(city, tmp_path: Path, capsys) -> None:
     assert main(["orbits", "--from-volumes", str(good), "--out", str(tmp_path / "out")]) == 2
     assert "--path" in _error_line(capsys)
     assert not (tmp_path / "out").exists()
+
+
+def test_charlotte_volumes_save_then_orbits_from_volumes(charlotte: Path, tmp_path: Path) -> None:
+    """`vistrack volumes --save-volumes` on the real city, then planning from those files alone: the
+    MaxRadius values match the ones `volumes` measured with CGAL's slicer (vv.slice)."""
+    path = charlotte / "paths" / "paper_small.csv"
+    common = ["--path", str(path), "--altitude", "50"]
+    assert main(["volumes", "--map", str(charlotte / "buildings.geojson"), "--spacing", "50", "--d-max", "100",
+                 "--resolution", "3", "--save-volumes", str(tmp_path / "vv"), "--no-meshes", "--quiet",
+                 "--out", str(tmp_path / "volumes"), *common]) == 0
+    assert main(["orbits", "--from-volumes", str(tmp_path / "vv"), "--poi-speed", "5", "--speed", "20",
+                 "--min-turn-radius", "5", "--out", str(tmp_path / "orbits"), *common]) == 0
+    measured = [p["max_radius"] for p in json.loads((tmp_path / "volumes" / "volumes.json").read_text())["points"]]
+    plan = vt.VisibilityOrbitPlan.from_json((tmp_path / "orbits" / "plan.json").read_text())
+    assert len(measured) == len(plan.times) > 3
+    np.testing.assert_allclose(plan.max_radii, measured, rtol=1e-6, atol=1e-6)
+    # `volumes` spaces its points evenly (at most 50 m) from one end of the path to the other.
+    length = vt.PoiPath.from_csv(path, 5.0).length
+    np.testing.assert_allclose(plan.arc_lengths, np.linspace(0.0, length, len(measured)), atol=1e-6)
+    assert all(r <= m + 1e-9 for r, m in zip(plan.radii, plan.max_radii))  # Algorithm 1 only lowers radii
