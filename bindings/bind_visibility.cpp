@@ -27,6 +27,9 @@ py::array_t<bool> to_bool_array(const std::vector<bool>& values) {
   return out;
 }
 
+// str or os.PathLike (pathlib.Path) to a file name.
+std::string fspath(const py::object& path) { return py::module_::import("os").attr("fspath")(path).cast<std::string>(); }
+
 Vec3 as_point(const Eigen::VectorXd& g, const char* field) {
   if (g.size() != 3) throw Error(std::string(field) + " must have 3 coordinates (x, y, z), got " + std::to_string(g.size()));
   return g;
@@ -67,6 +70,23 @@ void bind_visibility(py::module_& m) {
       .def("grid_volume", &VisibilityVolume::grid_volume,
            "Volume represented by the grid intervals: sum of solid_angle * (far^3 - near^3) / 3.")
       .def("save", &VisibilityVolume::save, py::arg("path"), "Write the mesh to .obj or .ply.")
+      .def(
+          "save_binary",
+          [](const VisibilityVolume& vv, const py::object& path) { write_volume_file(vv, fspath(path)); },
+          py::arg("path"),
+          "Write the whole VV (grid intervals, mesh, volume) to a binary VV file, the format of the on-disk "
+          "VV cache (vv-<hex>.bin, written by OrbitPlanner(cache_dir=...)); atomic (temporary file renamed).")
+      .def_static(
+          "load",
+          [](const py::object& path) {
+            const std::string name = fspath(path);
+            std::optional<VisibilityVolume> vv = read_volume_file(name);
+            if (!vv) throw Error("VV file '" + name + "': does not exist");
+            return std::move(*vv);
+          },
+          py::arg("path"),
+          "The VV stored in a binary VV file (save_binary or the VV cache). VistrackError naming the file when "
+          "it is missing, unreadable, truncated, corrupt (checksum) or of another format version.")
       .def("__repr__", [](const VisibilityVolume& vv) {
         return "VisibilityVolume(poi=(" + std::to_string(vv.poi.x()) + ", " + std::to_string(vv.poi.y()) + ", " +
                std::to_string(vv.poi.z()) + "), volume=" + std::to_string(vv.volume) + ", faces=" +

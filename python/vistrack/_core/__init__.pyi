@@ -469,6 +469,11 @@ class VisibilityVolume:
     """
     Visibility volume alpha(g) (eq. 4): per-direction visible intervals on a grid and a closed, outward-oriented triangle mesh.
     """
+    @staticmethod
+    def load(path: typing.Any) -> VisibilityVolume:
+        """
+        The VV stored in a binary VV file (save_binary or the VV cache). VistrackError naming the file when it is missing, unreadable, truncated, corrupt (checksum) or of another format version.
+        """
     def __repr__(self) -> str:
         ...
     def check(self) -> MeshCheck:
@@ -482,6 +487,10 @@ class VisibilityVolume:
     def save(self, path: str) -> None:
         """
         Write the mesh to .obj or .ply.
+        """
+    def save_binary(self, path: typing.Any) -> None:
+        """
+        Write the whole VV (grid intervals, mesh, volume) to a binary VV file, the format of the on-disk VV cache (vv-<hex>.bin, written by OrbitPlanner(cache_dir=...)); atomic (temporary file renamed).
         """
     def slice(self, altitude: typing.SupportsFloat | typing.SupportsIndex, all_parts: bool = False) -> list[Polygon]:
         """

@@ -9,6 +9,7 @@ from pathlib import Path
 
 from .. import _core
 from .. import planning as pl
+from .. import saved_volumes
 
 
 def _spacings(text: str) -> list[float]:
@@ -27,13 +28,19 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         help="plan the orbit locus (adaptive VVs + Algorithm 1) for a POI path",
         description="Adaptive visibility volumes along a POI path (sec. IV.B), visibility polygons at "
         "h_UAV, MaxRadius and Algorithm 1 (sec. IV.C). Writes plan.json, summary.json, orbits.png, "
-        "radius.png and, with --figure-metric, metric.png (Figure 4).",
+        "radius.png and, with --figure-metric, metric.png (Figure 4). With --from-volumes DIR --path CSV, plans "
+        "from saved VVs (vv-*.bin from `vistrack run --cache DIR`, OrbitPlanner(cache_dir=DIR) or "
+        "`vistrack volumes --save-volumes DIR`) without the map: the samples are the saved VVs placed on the "
+        "path, with no adaptive insertion (new VVs need the map); writes plan.json, summary.json, radius.png.",
     )
     p.add_argument("--map", help="city: .geojson footprints or a triangle mesh (.obj ...)")
     p.add_argument("--up", default="y", choices=["y", "z"], help="up axis of a mesh file (default y)")
     p.add_argument("--path", help="POI path CSV, one x,y[,z] waypoint per line")
     p.add_argument("--from-plan", default=None,
                    help="redraw the figures of a saved plan.json (VPs are stored in it; no VVs recomputed)")
+    p.add_argument("--from-volumes", default=None, metavar="DIR",
+                   help="plan from the saved VV files in DIR along --path, without the map "
+                   "(no adaptive insertion; --d-max, --resolution and --cutoff come from the files / do not apply)")
     p.add_argument("--out", default="orbits_out", help="output folder (created)")
     p.add_argument("--poi-speed", type=float, default=5.0, help="v_g, m/s")
     p.add_argument("--speed", type=float, default=_core.Uav().speed, help="UAV speed v, m/s")
@@ -66,8 +73,30 @@ def redraw(args: argparse.Namespace, out: Path) -> int:
     return 0
 
 
+def from_volumes(args: argparse.Namespace, out: Path) -> int:
+    if not args.path:
+        raise _core.VistrackError("orbits: --from-volumes needs --path (the POI path CSV the VVs were made along)")
+    poi = _core.PoiPath.from_csv(args.path, args.poi_speed)
+    uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude)
+    start = time.perf_counter()
+    plan = saved_volumes.plan_from_volumes(args.from_volumes, poi, uav)
+    summary = pl.plan_summary(plan)
+    summary["seconds"] = time.perf_counter() - start
+    summary["from_volumes"] = str(args.from_volumes)
+    out.mkdir(parents=True, exist_ok=True)
+    pl.write_plan(plan, out / "plan.json")
+    pl.figure_radius(plan, out / "radius.png")
+    (out / "summary.json").write_text(json.dumps(summary, indent=1))
+    print(f"{len(plan.times)} saved VVs from {args.from_volumes}; R {plan.radii[0]:.1f} m -> {plan.radii[-1]:.1f} m; "
+          + ("feasible" if plan.feasible else f"INFEASIBLE: {plan.infeasibility}"))
+    print(f"wrote {out}/plan.json, summary.json, radius.png")
+    return 0
+
+
 def run(args: argparse.Namespace) -> int:
     out = Path(args.out)
+    if args.from_volumes:
+        return from_volumes(args, out)
     out.mkdir(parents=True, exist_ok=True)
     if args.from_plan:
         return redraw(args, out)

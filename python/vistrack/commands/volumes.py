@@ -43,6 +43,9 @@ def register(subparsers: Any) -> None:
     p.add_argument("--band", type=float, nargs=2, metavar=("H_LO", "H_HI"), help="feasible altitude band (world z)")
     p.add_argument("--resolution", type=float, default=planning.resolution_deg, help="angular step of the ray grid (deg)")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, help="output folder")
+    p.add_argument("--save-volumes", type=Path, metavar="DIR",
+                   help="also write each whole VV as DIR/vv-NNNN.bin (binary VV files, read back by "
+                   "`vistrack orbits --from-volumes DIR`)")
     p.add_argument("--no-meshes", action="store_true", help="do not write the VV meshes")
     p.add_argument("--check", action="store_true", help="validate every mesh with CGAL (closed, manifold, ...)")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -105,6 +108,8 @@ def run(args: argparse.Namespace) -> int:
     pois = poi_positions(args, scene)
     out: Path = args.out
     out.mkdir(parents=True, exist_ok=True)
+    if args.save_volumes:
+        args.save_volumes.mkdir(parents=True, exist_ok=True)
 
     from tqdm import tqdm
 
@@ -129,6 +134,8 @@ def run(args: argparse.Namespace) -> int:
                     name = f"vv_{k:03d}.ply"
                     vv.save(str(out / name))
                     record["mesh"] = name
+                if args.save_volumes:
+                    vv.save_binary(args.save_volumes / f"vv-{k:04d}.bin")
                 if args.check:
                     check = vv.check()
                     record["mesh_valid"] = check.valid
