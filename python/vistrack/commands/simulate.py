@@ -20,15 +20,8 @@ import numpy as np
 
 from .. import _core
 
+from ..planning import load_environment
 from ..plotting import OSM_CREDIT, evenly_spaced_indices, plot_buildings, pyplot
-
-
-def load_environment(path: str | Path, up: str = "y") -> Any:
-    """A GeoJSON city (2.5D footprints) or any triangle mesh (``up`` = "y" for Y-up files)."""
-    path = Path(path)
-    if path.suffix.lower() in (".geojson", ".json"):
-        return _core.Environment.from_geojson(str(path))
-    return _core.Environment.from_mesh(str(path), up)
 
 
 def read_plan(path: str | Path) -> Any:

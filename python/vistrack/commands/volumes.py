@@ -18,6 +18,7 @@ from typing import Any, Optional
 import numpy as np
 
 import vistrack as vt
+from vistrack.planning import load_environment
 from vistrack.plotting import figure_volume_3d
 
 DEFAULT_OUT = Path("vistrack-out") / "volumes"
@@ -50,14 +51,6 @@ def register(subparsers: Any) -> None:
     p.add_argument("--check", action="store_true", help="validate every mesh with CGAL (closed, manifold, ...)")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(func=run)
-
-
-def load_map(path: Path, up: str) -> vt.Environment:
-    if not path.is_file():
-        raise vt.VistrackError(f"--map = {path}: no such file")
-    if path.suffix.lower() in (".geojson", ".json"):
-        return vt.Environment.from_geojson(str(path))
-    return vt.Environment.from_mesh(str(path), up=up)
 
 
 def parse_points(text: str) -> list[list[float]]:
@@ -102,7 +95,7 @@ def polygon_json(polygon: vt.Polygon) -> dict[str, Any]:
 
 def run(args: argparse.Namespace) -> int:
     started = time.perf_counter()
-    env = load_map(args.map, args.up)
+    env = load_environment(args.map, args.up)
     scene = vt.VisibilityScene(env)
     band: Optional[tuple[float, float]] = tuple(args.band) if args.band else None
     pois = poi_positions(args, scene)
