@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
@@ -20,17 +19,9 @@ sys.path.insert(0, str(REPO / "tests" / "python"))
 import conftest  # noqa: E402,F401  (imports vistrack from the build tree when VISTRACK_BUILD_DIR is set)
 
 import vistrack as vt  # noqa: E402
+from timing import best_of  # noqa: E402
 
 DATA = conftest.SHARED_DATA / "charlotte"
-
-
-def best_of(repeat: int, f) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        f()
-        times.append(time.perf_counter() - start)
-    return min(times)
 
 
 def peer_geojson(path: Path):

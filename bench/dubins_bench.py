@@ -29,6 +29,7 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
 from vistrack import dubins  # noqa: E402
+from timing import best_of  # noqa: E402
 
 try:
     from ompl import base as ob
@@ -114,15 +115,6 @@ def degenerate_cases(rho: float) -> list[dict]:
         theirs = ompl.length(q0, q1)
         rows.append({"case": name, "vistrack": ours, "ompl": theirs, "difference": ours - theirs})
     return rows
-
-
-def best_of(repeat: int, call) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        call()
-        times.append(time.perf_counter() - start)
-    return min(times)
 
 
 def throughput(rho: float, per_path: int, batch: int, repeat: int, seed: int) -> dict:

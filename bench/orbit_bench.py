@@ -14,7 +14,6 @@ import argparse
 import os
 import statistics
 import sys
-import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
@@ -26,17 +25,9 @@ import numpy as np
 
 import vistrack as vt
 from vistrack import planning as pl
+from timing import timed  # noqa: E402
 
 DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
-
-
-def timed(fn, repeat: int):
-    best, value = float("inf"), None
-    for _ in range(repeat):
-        start = time.perf_counter()
-        value = fn()
-        best = min(best, time.perf_counter() - start)
-    return best, value
 
 
 def manifold_xor(a, b):

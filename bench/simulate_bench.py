@@ -15,7 +15,6 @@ import json
 import math
 import os
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
@@ -28,6 +27,7 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 
 import vistrack as vt  # noqa: E402
 from closed_loop_reference import simulate_reference  # noqa: E402
+from timing import timed as best_time  # noqa: E402
 
 DATA = Path(os.environ.get("VISTRACK_DATA", HERE.parent.parent / "shared" / "data"))
 
@@ -58,15 +58,6 @@ def cases():
     yield ("example 2 (v 20, r_min 5, beta 0.5, k 40), R 21.5 -> 19.7 m",
            morphing_plan(poi2, uav2, 21.5, 19.7, 1.5), uav2, vt.Control(beta=0.5, k_psi=40.0),
            np.array([-45.0, 450.0, 0.0]))
-
-
-def best_time(fn, repeat):
-    best = math.inf
-    for _ in range(repeat):
-        start = time.perf_counter()
-        value = fn()
-        best = min(best, time.perf_counter() - start)
-    return best, value
 
 
 def main() -> int:

@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 
 import vistrack as vt
+from timing import best_of  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -40,15 +41,6 @@ def directions(resolution_deg: float) -> np.ndarray:
 
     poles = np.array([[0.0, 0.0, -1.0], [0.0, 0.0, 1.0]])
     return np.vstack([sphere(el_c, az_c), sphere(el_v, az_v), poles])
-
-
-def best_of(repeat: int, call) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        call()
-        times.append(time.perf_counter() - start)
-    return min(times)
 
 
 def main() -> int:
