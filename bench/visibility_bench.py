@@ -15,12 +15,17 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
-import vistrack as vt
+if os.environ.get("VISTRACK_BUILD_DIR"):
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "python"))
+    import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
+
+import vistrack as vt  # noqa: E402
 from timing import best_of  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
