@@ -50,3 +50,20 @@ def test_constant_radius_plan_and_json_round_trip() -> None:
         vt.constant_radius_plan(poi, -1.0, vt.Uav())
     with pytest.raises(vt.VistrackError, match="orbit plan JSON"):
         vt.OrbitPlan.from_json("{")
+
+
+def test_visibility_plan_json_derives_rates_and_validates_parameters() -> None:
+    import json
+
+    env = vt.Environment.demo()
+    poi = vt.PoiPath(np.array([[-290.0, -210.0], [95.0, -210.0]]), speed=5.0)
+    uav = vt.Uav(speed=20.0, min_turn_radius=15.0, altitude=200.0)
+    plan = vt.plan_orbits(env, poi, uav, vt.Sensor(d_max=300.0), vt.Planning(resolution_deg=3.0, cutoff=1e12))
+    data = json.loads(plan.to_json())
+    data["radius_rates"] = [123.0] * len(data["radius_rates"])  # tampered: must not be trusted
+    again = vt.VisibilityOrbitPlan.from_json(json.dumps(data))
+    expected = np.diff(plan.radii) / np.diff(plan.times)
+    assert np.allclose(again.radius_rates, expected) and np.allclose(plan.radius_rates, expected)
+    data["uav"]["speed"] = -3.0
+    with pytest.raises(vt.VistrackError, match="uav.speed = -3"):
+        vt.VisibilityOrbitPlan.from_json(json.dumps(data))

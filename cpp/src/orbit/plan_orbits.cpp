@@ -121,6 +121,8 @@ VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
         plan.sensor.altitude_band = std::make_pair(in["sensor"]["altitude_band"].at(0).get<double>(),
                                                    in["sensor"]["altitude_band"].at(1).get<double>());
     }
+    if (in.contains("uav")) plan.uav.validate();
+    if (in.contains("sensor")) plan.sensor.validate();
     if (in.contains("planning")) {
       const auto& p = in["planning"];
       plan.planning.spacing = p.at("spacing").get<double>();
@@ -128,10 +130,14 @@ VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
       plan.planning.resolution_deg = p.at("resolution_deg").get<double>();
       plan.planning.min_spacing = p.at("min_spacing").get<double>();
       plan.planning.max_depth = p.at("max_depth").get<int>();
+      plan.planning.validate();
     }
     plan.arc_lengths = in.value("arc_lengths", std::vector<double>{});
     plan.depths = in.value("depths", std::vector<int>{});
-    plan.radius_rates = in.value("radius_rates", std::vector<double>{});
+    // dR/dt is derived from the samples, never trusted from the file.
+    plan.radius_rates.clear();
+    for (std::size_t k = 0; k + 1 < plan.times.size(); ++k)
+      plan.radius_rates.push_back((plan.radii[k + 1] - plan.radii[k]) / (plan.times[k + 1] - plan.times[k]));
     plan.min_feasible_radius = in.value("min_feasible_radius", 0.0);
     plan.failing_samples = in.value("failing_samples", std::vector<std::size_t>{});
     plan.volumes_computed = in.value("volumes_computed", std::size_t{0});
