@@ -10,16 +10,7 @@ from pathlib import Path
 from .. import _core
 from .. import planning as pl
 from .. import saved_volumes
-
-
-def _spacings(text: str) -> list[float]:
-    try:
-        values = [float(v) for v in text.split(",") if v.strip()]
-    except ValueError as error:
-        raise argparse.ArgumentTypeError(f"--spacings: {error}") from None
-    if not values or any(not (v > 0) for v in values):
-        raise argparse.ArgumentTypeError(f"--spacings = {text}: need positive numbers like 50,25,10,1")
-    return values
+from . import positive_numbers
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -56,7 +47,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--footprints", default=None,
                    help="GeoJSON footprints drawn under the orbits (default: buildings.geojson beside --map)")
     p.add_argument("--figure-metric", action="store_true", help="also draw Figure 4 (metric along the path)")
-    p.add_argument("--spacings", type=_spacings, default=[50.0, 25.0, 10.0, 1.0],
+    p.add_argument("--spacings", type=positive_numbers("--spacings", "50,25,10,1"), default=[50.0, 25.0, 10.0, 1.0],
                    help="fixed spacings for --figure-metric (default 50,25,10,1)")
     p.add_argument("--quiet", action="store_true", help="no progress bars")
     p.set_defaults(func=run)

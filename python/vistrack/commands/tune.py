@@ -17,16 +17,7 @@ import numpy as np
 
 from .. import _core
 from ..plotting import pyplot
-
-
-def _betas(text: str) -> list[float]:
-    try:
-        values = [float(v) for v in text.split(",") if v.strip()]
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"--sweep = {text}: expected numbers like 0.01,0.025,0.05") from None
-    if not values or any(not (v > 0) for v in values):
-        raise argparse.ArgumentTypeError(f"--sweep = {text}: betas must be positive")
-    return values
+from . import positive_numbers
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -42,7 +33,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--poi-speed", type=float, default=5.0, help="POI speed v_g, m/s")
     p.add_argument("--min-turn-radius", type=float, default=50.0, help="r_min, m")
     p.add_argument("--beta", type=float, default=0.025, help="beta for the map")
-    p.add_argument("--sweep", type=_betas, default=None,
+    p.add_argument("--sweep", type=positive_numbers("--sweep", "0.01,0.025,0.05"), default=None,
                    help="betas for the max-vs-beta curve (default: 30 values, log-spaced around --beta)")
     p.add_argument("--tau", type=float, default=1.0, help="search r >= tau R (Remark 6), 0 < tau <= 1")
     p.add_argument("--r-max-factor", type=float, default=4.0, help="search r <= factor R")
