@@ -36,6 +36,33 @@ def _use_build_tree() -> None:
 _use_build_tree()
 
 
+def ticks_during(call) -> tuple[int, float]:
+    """Run ``call()`` while another Python thread ticks every millisecond; return the ticks that
+    fell inside the call and its duration. Zero ticks over a long call means it held the GIL."""
+    import threading
+    import time
+
+    ticks: list[float] = []
+    stop = threading.Event()
+
+    def ticker() -> None:
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.001)
+
+    thread = threading.Thread(target=ticker)
+    thread.start()
+    time.sleep(0.01)  # the ticker is running before the call starts
+    try:
+        start = time.perf_counter()
+        call()
+        end = time.perf_counter()
+    finally:
+        stop.set()
+        thread.join()
+    return sum(start < t < end for t in ticks), end - start
+
+
 def standalone_executable(name: str) -> Path | None:
     """A standalone executable (vistrack_vv, vistrack_sim, vistrack_dubins): from the CMake build
     tree given by VISTRACK_BUILD_DIR, else installed beside the ``vistrack`` command."""

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
-from conftest import standalone_executable
+from conftest import standalone_executable, ticks_during
 from vistrack import VistrackError, dubins
 
 
@@ -96,6 +96,11 @@ def test_batch_runs_concurrently_with_the_gil_released() -> None:
     for t in threads:
         t.join()
     assert len(results) == 3 and all(np.array_equal(r, expected) for r in results)
+    # Another Python thread runs while a long batch is computed: the GIL is released.
+    big0 = np.tile(q0, (10, 1))
+    big1 = np.tile(q1, (10, 1))
+    ticks, seconds = ticks_during(lambda: dubins.shortest_lengths(big0, big1, 1.0, threads=1))
+    assert seconds > 0.02 and ticks >= 3, (ticks, seconds)
 
 
 @pytest.mark.parametrize(

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import threading
-import time
 from pathlib import Path
 
 import numpy as np
@@ -155,24 +153,12 @@ def test_save_round_trip(open_field, tmp_path: Path):
 
 
 def test_long_calls_release_the_gil(open_field):
+    from conftest import ticks_during
+
     scene = vt.visibility_scene(open_field)
     pois = np.zeros((24, 3))
-    ticks = []
-    stop = threading.Event()
-
-    def ticker() -> None:
-        while not stop.is_set():
-            ticks.append(time.perf_counter())
-            time.sleep(0.001)
-
-    thread = threading.Thread(target=ticker)
-    thread.start()
-    try:
-        vt.visibility_volumes(scene, pois, 300.0, None, 1.0)
-    finally:
-        stop.set()
-        thread.join()
-    assert len(ticks) >= 3
+    ticks, seconds = ticks_during(lambda: vt.visibility_volumes(scene, pois, 300.0, None, 1.0))
+    assert seconds > 0.02 and ticks >= 3, (ticks, seconds)
 
 
 def test_charlotte_volumes_are_valid_and_converge(charlotte):
