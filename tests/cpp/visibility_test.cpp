@@ -137,7 +137,7 @@ TEST(VisibilityVolume, NearIsPositiveWhenTheBandStartsAboveThePoi) {
   const VisibilityVolume vv = visibility_volume(open_field(), Vec3(0, 0, 0), 300.0, std::make_pair(50.0, 100.0), 2.0);
   const int row = vv.grid.num_elevation - 1;  // looking straight up: visible from z = 50 to 100
   const std::size_t k = static_cast<std::size_t>(row) * vv.grid.num_azimuth;
-  const double s = std::sin(vv.grid.elevation(row));
+  const double s = vv.grid.direction(row, 0).z();  // the cell's sample ray
   EXPECT_NEAR(vv.near[k], 50.0 / s, 1e-9);
   EXPECT_NEAR(vv.far[k], 100.0 / s, 1e-9);
   // Looking down or along the ground: nothing.

@@ -183,8 +183,9 @@ TEST(VolumeCacheKey, ChangesWithEveryInputAndOnlyThen) {
   distinct.insert(base);
   EXPECT_EQ(distinct.size(), variants.size() + 1);
   // A fixed value: the key must stay stable across runs, builds and hosts (files on disk).
-  // Independently computed as FNV-1a-64 over struct.pack('<QQddddQd', 1, 0, 0, 0, 0, 400, 0, 1).
-  EXPECT_EQ(vt::volume_cache_file_name(key(0, vt::Vec3(0, 0, 0), 400.0, none, 1.0)), "vv-44fc4162cf740878.bin");
+  // Independently computed as FNV-1a-64 over struct.pack('<QQddddQd', 2, 0, 0, 0, 0, 400, 0, 1)
+  // (2 = kVolumeFileVersion).
+  EXPECT_EQ(vt::volume_cache_file_name(key(0, vt::Vec3(0, 0, 0), 400.0, none, 1.0)), "vv-3ad1a83601923357.bin");
   EXPECT_TRUE(std::regex_match(vt::volume_cache_file_name(base), std::regex("vv-[0-9a-f]{16}\\.bin")));
   EXPECT_EQ(vt::volume_cache_file_name(0x1fULL), "vv-000000000000001f.bin");
   // Randomized: different positions never collide in a few thousand draws.

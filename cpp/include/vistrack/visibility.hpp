@@ -21,14 +21,23 @@ namespace vistrack {
 // The angular grid of a VV: cells of equal size in elevation and azimuth over the whole sphere.
 // Row i covers elevations [-pi/2 + i*d_el, -pi/2 + (i+1)*d_el] with d_el = pi / num_elevation;
 // column j covers azimuths [j*d_az, (j+1)*d_az] with d_az = 2 pi / num_azimuth (from +x,
-// counter-clockwise). The ray of cell (i, j) goes through the cell's centre.
+// counter-clockwise). The ray of cell (i, j) goes through its sample point, not its centre: at
+// the fractions sample_offset(i, j) of the cell's azimuth span and of its sin(elevation) span
+// (area-uniform), which are equidistributed down every column and along every row. Centre rays
+// would put the same quantization error in every row a vertical building edge (a line of constant
+// azimuth) crosses; staggered rays average it out (the XOR volume of 20 m pairs on Charlotte at
+// 1 degree: 0.2 % median error instead of 0.6 %).
 struct DirectionGrid {
   int num_elevation = 0;
   int num_azimuth = 0;
   double elevation(int row) const;       // centre elevation of row i, rad
   double azimuth(int column) const;      // centre azimuth of column j, rad
   double solid_angle(int row) const;     // steradians of each cell in row i (exact)
-  Vec3 direction(int row, int column) const;  // unit vector through the cell centre
+  // (x, y) in [0, 1)^2: the sample point's fraction of the cell's azimuth span (x, by row) and of
+  // its sin(elevation) span (y, by column): Weyl sequences, equidistributed down each column and
+  // along each row.
+  Vec2 sample_offset(int row, int column) const;
+  Vec3 direction(int row, int column) const;  // unit vector through the cell's sample point
   std::size_t size() const { return static_cast<std::size_t>(num_elevation) * num_azimuth; }
   // A grid whose steps are about resolution_deg in both angles.
   static DirectionGrid from_resolution(double resolution_deg);
@@ -98,8 +107,9 @@ class VisibilityScene {
 
 // alpha(g) of eq. (4): the points within d_max of g, inside the altitude band (h_lo, h_hi) of
 // world z when given, with an unobstructed line of sight to g (obstacles and ground). One ray per
-// grid cell centre gives near/far; one ray per grid corner gives the mesh (a piecewise-linear
-// radial surface, band caps with exact z). Throws Error naming the field for g below the ground
+// grid cell (through its sample point) gives near/far; one ray per grid corner gives the mesh (a
+// piecewise-linear radial surface, band caps with exact z), with radial walls where the visible
+// distance jumps (silhouettes, located by bisection with more rays). Throws Error naming the field for g below the ground
 // or inside an obstacle, d_max <= 0, NaN, or a band with h_lo >= h_hi.
 VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, double d_max,
                                    std::optional<std::pair<double, double>> altitude_band = std::nullopt,
@@ -124,7 +134,7 @@ double mesh_volume(const TriangleMesh& mesh);
 // int32 / uint64 / IEEE doubles (poi, d_max, band, grid, near, far, mesh, volume) and a 64-bit
 // checksum of everything before it. Bump the version whenever the layout or the output of
 // visibility_volume changes, so stale cache files miss instead of being reused.
-inline constexpr std::uint32_t kVolumeFileVersion = 1;
+inline constexpr std::uint32_t kVolumeFileVersion = 2;
 
 // Writes `vv` to `path` through a temporary file in the same folder renamed over `path`, so
 // readers see the old file or the whole new one, never half a file. Error naming the path when

@@ -1,6 +1,7 @@
 // The angular grid of a VV and the volumes it represents.
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -20,10 +21,27 @@ double DirectionGrid::solid_angle(int row) const {
   return (kTwoPi / num_azimuth) * (std::sin(bottom + d_el) - std::sin(bottom));
 }
 
+Vec2 DirectionGrid::sample_offset(int row, int column) const {
+  // Weyl sequences with the R2 sequence's constants (1/rho and 1/rho^2, rho the plastic number):
+  // x steps by an irrational fraction from row to row and y from column to column, so x is
+  // equidistributed down every column and y along every row. x depending on the row only keeps
+  // the azimuths separable (trig tables per row and per column).
+  constexpr double kA = 0.7548776662466927;
+  constexpr double kB = 0.5698402909980532;
+  const double x = 0.5 + kA * row;
+  const double y = 0.5 + kB * column;
+  return {x - std::floor(x), y - std::floor(y)};
+}
+
 Vec3 DirectionGrid::direction(int row, int column) const {
-  const double el = elevation(row);
-  const double az = azimuth(column);
-  return {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+  const Vec2 offset = sample_offset(row, column);
+  const double d_el = kPi / num_elevation;
+  const double bottom = std::sin(-kPi / 2.0 + row * d_el);
+  const double top = std::sin(-kPi / 2.0 + (row + 1) * d_el);
+  const double sin_el = bottom + offset.y() * (top - bottom);
+  const double cos_el = std::sqrt(std::max(0.0, 1.0 - sin_el * sin_el));
+  const double az = (column + offset.x()) * kTwoPi / num_azimuth;
+  return {cos_el * std::cos(az), cos_el * std::sin(az), sin_el};
 }
 
 DirectionGrid DirectionGrid::from_resolution(double resolution_deg) {

@@ -1,0 +1,149 @@
+// Pieces shared by the VV mesh builders (private to the library): the visible interval along one
+// ray, the triangulated sphere of grid corners, and a mesh writer that sums the volume.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "vistrack/visibility.hpp"
+
+namespace vistrack::detail {
+
+// Which surface ends a visible interval: the position of a mesh vertex on a band cap or on the
+// ground gets that surface's exact z.
+enum class Surface : unsigned char { radial, band_low, band_high, ground };
+
+struct Setup {
+  Vec3 g;
+  double d_max = 0.0;
+  bool has_band = false;
+  double low = 0.0;
+  double high = 0.0;
+  double ground = 0.0;
+  bool poi_in_band = true;  // near = 0 along every ray (the VV is star-shaped about g)
+};
+
+struct Interval {
+  double near = 0.0;
+  double far = 0.0;
+  Surface near_surface = Surface::radial;
+  Surface far_surface = Surface::radial;
+  // 1/near and 1/far without clamping (<= 0: the band is never entered). For a plane z = c the
+  // inverse distance along g + t d is d.z / (c - g.z), linear in d: the shell mesh interpolates
+  // these to find where the visible interval closes between two directions.
+  double inv_near = 0.0;
+  double inv_far = 0.0;
+};
+
+// The visible part of the ray g + t d (|d| = 1, d.z = sin_el) given the first obstacle hit.
+Interval visible_interval(const Setup& s, double sin_el, double obstacle_hit);
+
+// The point at distance t along unit direction d from g; on a band cap or the ground its z is
+// that plane's exactly.
+Vec3 point_on(const Setup& s, const Vec3& d, double t, Surface surface);
+
+// Traces one ray per direction (unit vectors) and returns their visible intervals.
+using IntervalTracer = std::function<std::vector<Interval>(const std::vector<Vec3>& directions)>;
+
+// The triangulated sphere of grid corners. Vertex rows i = 0..ne at elevations
+// -pi/2 + i pi/ne (rows 0 and ne are the poles), columns j at azimuths j d_az. Quad (i, j) splits
+// into Ta = [(i,j), (i,j+1), (i+1,j+1)] (absent at the south pole row) and
+// Tb = [(i,j), (i+1,j+1), (i+1,j)] (absent at the north pole row), both outward oriented.
+struct SphereGrid {
+  int ne = 0;
+  int na = 0;
+  int num_vertices() const { return 2 + (ne - 1) * na; }
+  int vertex(int i, int j) const {
+    if (i <= 0) return 0;
+    if (i >= ne) return num_vertices() - 1;
+    return 1 + (i - 1) * na + wrap(j);
+  }
+  // Column index modulo na for j in [-1, na] (no division in the hot loops).
+  int wrap(int j) const { return j < 0 ? j + na : (j >= na ? j - na : j); }
+  int ta(int i, int j) const { return 2 * (i * na + wrap(j)); }
+  int tb(int i, int j) const { return 2 * (i * na + wrap(j)) + 1; }
+  int num_triangle_slots() const { return 2 * ne * na; }
+  bool exists(int t) const {
+    const int i = (t / 2) / na;
+    return (t % 2 == 0) ? i >= 1 : i <= ne - 2;
+  }
+  std::array<int, 3> corners(int t) const;
+  // The triangle across edge e (corner e to corner e+1) of triangle t.
+  int neighbour(int t, int e) const;
+  // Existing triangles around vertex v in cyclic order: their number, written to `out`; for a
+  // pole, -1 and the ring in `pole_ring`.
+  int ring(int v, std::array<int, 6>& out, std::vector<int>& pole_ring) const;
+};
+
+// Unit directions of the grid's cells (through their sample points) and of the sphere grid's
+// corners, from trig tables.
+struct Directions {
+  const DirectionGrid& grid;
+  const SphereGrid& sphere;
+  // Cell rays: per row the sines of the cell's lower and upper elevation and the cos/sin of the
+  // sample's azimuth offset; per column the sample's sin(elevation) fraction.
+  std::vector<double> sin_bottom_cell, sin_span_cell, cos_offset_cell, sin_offset_cell, y_cell;
+  std::vector<double> cos_el_corner, sin_el_corner, cos_az_corner, sin_az_corner;
+
+  // sin_el_rows: sines of the mesh's vertex-row elevations, from -1 (south pole) to 1.
+  Directions(const DirectionGrid& g, const SphereGrid& s, const std::vector<double>& sin_el_rows);
+  std::size_t num_cells() const { return grid.size(); }
+  // Ray k: the cells first (k = i * na + j), then the corners (k - num_cells).
+  Vec3 ray(std::size_t k) const {
+    const auto na = static_cast<std::size_t>(grid.num_azimuth);
+    if (k < num_cells()) {
+      // DirectionGrid::direction by angle addition: azimuth (j + x_i) d_az.
+      const std::size_t i = k / na, j = k % na;
+      const double sin_el = sin_bottom_cell[i] + y_cell[j] * sin_span_cell[i];
+      const double cos_el = std::sqrt(std::max(0.0, 1.0 - sin_el * sin_el));
+      const double cos_az = cos_az_corner[j] * cos_offset_cell[i] - sin_az_corner[j] * sin_offset_cell[i];
+      const double sin_az = sin_az_corner[j] * cos_offset_cell[i] + cos_az_corner[j] * sin_offset_cell[i];
+      return {cos_el * cos_az, cos_el * sin_az, sin_el};
+    }
+    return corner(static_cast<int>(k - num_cells()));
+  }
+  Vec3 corner(int v) const {
+    if (v == 0) return {0.0, 0.0, -1.0};
+    if (v == sphere.num_vertices() - 1) return {0.0, 0.0, 1.0};
+    const int i = 1 + (v - 1) / sphere.na;
+    const int j = (v - 1) % sphere.na;
+    return {cos_el_corner[i] * cos_az_corner[j], cos_el_corner[i] * sin_az_corner[j], sin_el_corner[i]};
+  }
+};
+
+// Writes vertices and faces straight into the mesh's arrays (grown geometrically, trimmed at the
+// end) and sums the volume on the way: signed tetrahedra against g (divergence theorem).
+class MeshBuilder {
+ public:
+  MeshBuilder(const Vec3& g, Eigen::Index expected_points, Eigen::Index expected_faces);
+  int add(const Vec3& p) {
+    if (num_points_ == mesh_.vertices.rows()) mesh_.vertices.conservativeResize(2 * num_points_ + 16, 3);
+    mesh_.vertices.row(num_points_) = p.transpose();
+    return static_cast<int>(num_points_++);
+  }
+  Vec3 point(int v) const { return mesh_.vertices.row(v).transpose(); }
+  void face(int a, int b, int c);
+  TriangleMesh finish(double& volume);
+
+ private:
+  Vec3 g_;
+  TriangleMesh mesh_;
+  Eigen::Index num_points_ = 0;
+  Eigen::Index num_faces_ = 0;
+  double six_volume_ = 0.0;
+};
+
+// The closed mesh of a VV whose POI lies in the band (near = 0 along every ray): the radial
+// surface r = far over the live corners, with radial walls at the jumps of r found by bisection
+// with `trace` (see star_mesh.cpp).
+TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
+                             const std::vector<Interval>& corner, const IntervalTracer& trace, double& volume);
+// The closed mesh of a VV whose POI lies outside the band (near > 0): outer and inner surfaces
+// joined on the contour where the visible interval closes (see shell_mesh.cpp).
+TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
+                              const std::vector<Interval>& corner, double& volume);
+
+}  // namespace vistrack::detail
