@@ -98,6 +98,57 @@ TEST(DirectionGrid, CellsTileTheSphere) {
   EXPECT_THROW(DirectionGrid::from_resolution(90.0), Error);
 }
 
+// Cell rays pass through staggered sample points inside their cells: down any column the azimuth
+// offsets, and along any row the elevation offsets, are equidistributed (centre rays would put
+// every offset at 0.5).
+TEST(DirectionGrid, SampleRaysAreStaggeredInsideTheirCells) {
+  const DirectionGrid grid = DirectionGrid::from_resolution(1.0);
+  const double d_el = kPi / grid.num_elevation, d_az = kTwoPi / grid.num_azimuth;
+  for (int i : {0, 7, 90, 179}) {
+    for (int j : {0, 13, 359}) {
+      const Vec3 d = grid.direction(i, j);
+      EXPECT_NEAR(d.norm(), 1.0, 1e-12);
+      const double el = std::asin(d.z());
+      double az = std::atan2(d.y(), d.x());
+      if (az < 0.0) az += kTwoPi;
+      EXPECT_GE(el, -kPi / 2 + i * d_el - 1e-12);
+      EXPECT_LE(el, -kPi / 2 + (i + 1) * d_el + 1e-12);
+      EXPECT_GE(az, j * d_az - 1e-12);
+      EXPECT_LE(az, (j + 1) * d_az + 1e-12);
+    }
+  }
+  for (int start : {0, 50, 140}) {
+    constexpr int kRun = 30;
+    for (double f : {0.25, 0.5, 0.75}) {
+      int below_x = 0, below_y = 0;
+      for (int k = start; k < start + kRun; ++k) {
+        below_x += grid.sample_offset(k, 17).x() < f;  // down column 17
+        below_y += grid.sample_offset(42, k).y() < f;  // along row 42
+      }
+      EXPECT_NEAR(below_x / double(kRun), f, 0.1) << "column run from row " << start;
+      EXPECT_NEAR(below_y / double(kRun), f, 0.1) << "row run from column " << start;
+    }
+  }
+}
+
+// At a silhouette the corner mesh gets a radial wall where bisection puts the jump, and the crease
+// where the ground meets the d_max sphere just below the horizon gets its own vertex row: the mesh
+// then holds the same volume as a fine grid (without walls it held 0.5-1.4 % less here, and a
+// Charlotte VV 1-3 % less; without the crease row 0.2 % less).
+TEST(VisibilityVolume, WallsAndCreasesKeepTheMeshVolume) {
+  const VisibilityScene scene(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)},
+                                         {Vec3(-50, 30, 0), Vec3(-10, 80, 70)},
+                                         {Vec3(-80, -90, 0), Vec3(-20, -40, 15)}}));
+  for (const Vec3& g : {Vec3(0, 0, 0.5), Vec3(10, -30, 2.0), Vec3(-30, 0, 0.5)}) {
+    const double reference = visibility_volume(scene, g, 200.0, std::nullopt, 0.2).grid_volume();
+    for (double res : {2.0, 1.0}) {
+      const VisibilityVolume vv = visibility_volume(scene, g, 200.0, std::nullopt, res);
+      expect_valid(vv, "walls");
+      EXPECT_NEAR(vv.volume / reference, 1.0, 1e-3) << "g " << g.transpose() << " res " << res;
+    }
+  }
+}
+
 // Open field: the VV is the ball of radius d_max cut by the ground and the band (analytic).
 TEST(VisibilityVolume, OpenFieldMatchesAnalyticVolume) {
   const VisibilityScene scene(open_field());

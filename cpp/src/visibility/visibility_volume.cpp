@@ -45,7 +45,7 @@ void validate(const VisibilityScene& scene, const Vec3& g, double d_max,
 // horizon), plus the creases of the open-field VV, which are latitude circles about g: where the
 // sphere r = d_max meets the band planes and the ground (sin el = (z - g.z) / d_max). A vertex
 // row on each crease keeps the caps' rims exact instead of cutting the corner across a cell;
-// grid rows closer than a quarter step to a crease are dropped (no slivers).
+// grid rows closer than a quarter step to a crease are dropped (no slivers), except the horizon.
 std::vector<double> vertex_row_sines(const DirectionGrid& grid, const Setup& s) {
   const int ne = grid.num_elevation;
   const double step = kPi / ne;
@@ -66,8 +66,11 @@ std::vector<double> vertex_row_sines(const DirectionGrid& grid, const Setup& s) 
     for (double e : creases) near_crease = near_crease || std::abs(e - el) < 0.25 * step;
     if (i == 0 || i == ne || 2 * i == ne || !near_crease) elevations.push_back(el);
   }
+  // The horizon row always stays, so a crease just below it (the ground seen from a POI a little
+  // above it: asin(-h / d_max)) gets its own thin row rather than none: the linear surface from
+  // the sphere at the horizon to the ground a row below would lose 0.2 % of a Charlotte VV.
   for (double e : creases)
-    if (std::abs(e) > 0.25 * step && std::abs(std::abs(e) - kPi / 2.0) > 0.25 * step) elevations.push_back(e);
+    if (std::abs(e) > 1e-9 && std::abs(std::abs(e) - kPi / 2.0) > 0.25 * step) elevations.push_back(e);
   std::sort(elevations.begin(), elevations.end());
   elevations.erase(std::unique(elevations.begin(), elevations.end(), [](double a, double b) { return std::abs(a - b) < 1e-12; }),
                    elevations.end());
