@@ -9,8 +9,7 @@
 // sides share a radial wall there.
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-
+#include <vector>
 
 #include "visibility/radial_mesh.hpp"
 
