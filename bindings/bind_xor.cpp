@@ -29,9 +29,11 @@ void bind_xor(py::module_& m) {
       py::arg("perturbation") = py::none(),
       "Volume (m^3) of the symmetric difference of two VVs, the metric d of eq. (56).\n\n"
       "frame: \"poi\" translates each VV by minus its POI first (open terrain gives 0), \"world\" compares\n"
-      "them in place. method: \"grid\" is the exact per-direction integral sum(solid_angle * |A xor B|\n"
-      "measured in r^2 dr) over a shared direction grid (needs frame \"poi\" or equal POIs); \"mesh\" is\n"
-      "CGAL corefinement of the closed meshes; \"auto\" takes the grid path when it applies.\n"
+      "them in place. method: \"radial\" is the exact XOR of the two meshes computed per direction\n"
+      "(star VVs built over one sphere of grid corners: what \"mesh\" gives, without CGAL); \"grid\" is\n"
+      "the per-direction integral sum(solid_angle * |A xor B| measured in r^2 dr) over the cell intervals\n"
+      "of a shared direction grid; both need frame \"poi\" or equal POIs. \"mesh\" is CGAL corefinement\n"
+      "of the closed meshes; \"auto\" takes radial, else grid, else mesh, as they apply.\n"
       "time_limit (s) aborts the mesh path with VistrackError. perturbation (rad): rotation of b's mesh\n"
       "about the axis (1,2,3) before the Boolean; default 1e-6 in the POI frame (identical sphere faces\n"
       "make CGAL pathologically slow), 0 in the world frame.");
@@ -62,6 +64,19 @@ void bind_xor(py::module_& m) {
       "The exact per-direction XOR volume of two VVs on one direction grid, each about its own POI.");
   m.def("shares_direction_grid", &shares_direction_grid, py::arg("a"), py::arg("b"),
         "True when both VVs carry intervals on the same direction grid (the grid path applies).");
+  m.def(
+      "radial_xor_volume",
+      [](const VisibilityVolume& a, const VisibilityVolume& b) {
+        py::gil_scoped_release release;
+        return radial_xor_volume(a, b);
+      },
+      py::arg("a"), py::arg("b"),
+      "The XOR volume of two star VVs' meshes, each about its own POI, exact per direction (faces\n"
+      "overlapped over each triangle of their common sphere, |r_a^3 - r_b^3| / 3 integrated in closed\n"
+      "form). VistrackError unless shares_radial_mesh(a, b).");
+  m.def("shares_radial_mesh", &shares_radial_mesh, py::arg("a"), py::arg("b"),
+        "True when both VVs are star VVs (POI in the band) whose meshes cover the same triangulated\n"
+        "sphere: same grid and the same vertex rows (the radial path applies).");
 }
 
 }  // namespace vistrack::bindings

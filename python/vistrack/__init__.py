@@ -30,7 +30,9 @@ from ._core import (  # visibility and volumes
     mesh_volume,
     mesh_xor_volume,
     plane_visibility_polygon,
+    radial_xor_volume,
     shares_direction_grid,
+    shares_radial_mesh,
     slice_mesh,
     xor_volume,
 )
@@ -96,7 +98,8 @@ __all__ = [
     "max_inscribed_radius", "max_orbit_curvature", "mesh_volume", "mesh_xor_volume",
     "min_feasible_radius", "one_minus_cos_over_x", "orbit_configuration", "orbit_curvature",
     "orbit_polar_rate", "orbit_signed_curvature", "plan_orbits", "plane_visibility_polygon",
-    "radial_error_rate", "run", "sample_vector_field", "segment_boundaries", "shares_direction_grid",
+    "radial_error_rate", "radial_xor_volume", "run", "sample_vector_field", "segment_boundaries",
+    "shares_direction_grid", "shares_radial_mesh",
     "simulate", "sinc", "slice_mesh", "solve_ode", "steering", "tune_turn_rate", "vector_field",
     "visibility_scene", "visibility_volume", "visibility_volumes", "wrap_to_pi", "xor_volume",
 ]

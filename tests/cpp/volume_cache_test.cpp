@@ -81,6 +81,8 @@ void expect_bit_identical(const vt::VisibilityVolume& a, const vt::VisibilityVol
   EXPECT_TRUE(same_bytes(a.mesh.vertices.data(), b.mesh.vertices.data(), std::size_t(a.mesh.vertices.size())));
   EXPECT_TRUE(same_bytes(a.mesh.faces.data(), b.mesh.faces.data(), std::size_t(a.mesh.faces.size())));
   EXPECT_TRUE(same_bytes(&a.volume, &b.volume, 1));
+  EXPECT_EQ(a.mesh_row_sines, b.mesh_row_sines);  // what the radial XOR path needs
+  EXPECT_EQ(a.mesh_triangle_faces, b.mesh_triangle_faces);
 }
 
 std::vector<char> file_bytes(const std::string& path) {
@@ -183,9 +185,9 @@ TEST(VolumeCacheKey, ChangesWithEveryInputAndOnlyThen) {
   distinct.insert(base);
   EXPECT_EQ(distinct.size(), variants.size() + 1);
   // A fixed value: the key must stay stable across runs, builds and hosts (files on disk).
-  // Independently computed as FNV-1a-64 over struct.pack('<QQddddQd', 2, 0, 0, 0, 0, 400, 0, 1)
-  // (2 = kVolumeFileVersion).
-  EXPECT_EQ(vt::volume_cache_file_name(key(0, vt::Vec3(0, 0, 0), 400.0, none, 1.0)), "vv-3ad1a83601923357.bin");
+  // Independently computed as FNV-1a-64 over struct.pack('<QQddddQd', 3, 0, 0, 0, 0, 400, 0, 1)
+  // (3 = kVolumeFileVersion).
+  EXPECT_EQ(vt::volume_cache_file_name(key(0, vt::Vec3(0, 0, 0), 400.0, none, 1.0)), "vv-cc1b89dc8c68e4f6.bin");
   EXPECT_TRUE(std::regex_match(vt::volume_cache_file_name(base), std::regex("vv-[0-9a-f]{16}\\.bin")));
   EXPECT_EQ(vt::volume_cache_file_name(0x1fULL), "vv-000000000000001f.bin");
   // Randomized: different positions never collide in a few thousand draws.

@@ -2,6 +2,8 @@
 // per-direction grid path on hand-built VVs, the two against each other, and bad input.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <chrono>
 #include <cmath>
 #include <random>
@@ -242,4 +244,104 @@ TEST(GridXor, RejectsDifferentGridsAndBadNames) {
   EXPECT_THROW(vt::parse_xor_frame("body"), vt::Error);
   EXPECT_THROW(vt::parse_xor_method("fast"), vt::Error);
   EXPECT_EQ(vt::parse_xor_frame("world"), vt::XorFrame::world);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The radial path: the exact XOR of two star VV meshes per direction, against CGAL on the same
+// meshes.
+
+vt::Environment box_city() {
+  const std::vector<std::pair<vt::Vec3, vt::Vec3>> boxes = {{{40, -20, 0}, {60, 20, 30}},
+                                                            {{-50, 30, 0}, {-10, 80, 70}},
+                                                            {{-80, -90, 0}, {-20, -40, 15}}};
+  vt::Points3 vertices(8 * static_cast<Eigen::Index>(boxes.size()), 3);
+  vt::Faces faces(12 * static_cast<Eigen::Index>(boxes.size()), 3);
+  for (std::size_t k = 0; k < boxes.size(); ++k) {
+    const vt::TriangleMesh m = box(boxes[k].first, boxes[k].second);
+    vertices.block(8 * static_cast<Eigen::Index>(k), 0, 8, 3) = m.vertices;
+    faces.block(12 * static_cast<Eigen::Index>(k), 0, 12, 3) = m.faces.array() + 8 * static_cast<int>(k);
+  }
+  return vt::Environment::from_triangles(vertices, faces);
+}
+
+double area(const vt::TriangleMesh& m) {
+  double total = 0.0;
+  for (Eigen::Index f = 0; f < m.faces.rows(); ++f) {
+    const vt::Vec3 a = m.vertices.row(m.faces(f, 0)), b = m.vertices.row(m.faces(f, 1)), c = m.vertices.row(m.faces(f, 2));
+    total += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return total;
+}
+
+vt::TriangleMesh about_poi(const vt::VisibilityVolume& v) {
+  vt::TriangleMesh m = v.mesh;
+  m.vertices.rowwise() -= v.poi.transpose();
+  return m;
+}
+
+TEST(RadialXor, EqualsCgalOnTheSameMeshes) {
+  const vt::VisibilityScene scene(box_city());
+  // Pairs 2-30 m apart, with walls at the boxes' silhouettes; the same resolution in a pair.
+  const std::vector<std::pair<vt::Vec3, vt::Vec3>> pairs = {
+      {{0, 0, 0.5}, {5, 3, 0.5}}, {{0, 0, 0.5}, {-20, -20, 0.5}}, {{10, -30, 0.5}, {12, -30, 0.5}}};
+  for (double res : {4.0, 3.0}) {
+    for (const auto& [ga, gb] : pairs) {
+      const vt::VisibilityVolume a = vt::visibility_volume(scene, ga, 150.0, std::nullopt, res);
+      const vt::VisibilityVolume b = vt::visibility_volume(scene, gb, 150.0, std::nullopt, res);
+      ASSERT_TRUE(vt::shares_radial_mesh(a, b));
+      const double radial = vt::radial_xor_volume(a, b);
+      // CGAL needs the documented nudge here (identical sphere faces about the POIs are its slow
+      // branch: minutes); it moves the XOR by less than 1e-6 rad x r x area, about 1e-6 of it.
+      vt::MeshXorOptions nudge;
+      nudge.perturbation = 1e-6;
+      const double cgal = vt::mesh_xor_volume(about_poi(a), about_poi(b), nudge);
+      const double nudge_bound = nudge.perturbation * 150.0 * (area(a.mesh) + area(b.mesh));
+      EXPECT_NEAR(radial, cgal, nudge_bound) << ga.transpose() << " / " << gb.transpose() << " res " << res;
+      EXPECT_LT(nudge_bound, 1e-3 * cgal);  // so the comparison is sharp
+      EXPECT_GT(radial, 0.0);
+      EXPECT_NEAR(vt::radial_xor_volume(b, a), radial, 1e-9 * radial);
+      EXPECT_EQ(vt::xor_volume(a, b), radial);  // auto takes the radial path
+      EXPECT_NEAR(vt::radial_xor_volume(a, a), 0.0, 1e-12 * a.volume);
+    }
+  }
+}
+
+TEST(RadialXor, IsAMetricAndZeroOnOpenTerrain) {
+  const vt::VisibilityScene scene(box_city());
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coordinate(-100.0, 100.0);
+  std::vector<vt::VisibilityVolume> vvs;
+  while (vvs.size() < 6) {
+    const vt::Vec3 g(coordinate(rng), coordinate(rng), 0.5);
+    if (!scene.inside_obstacle(g)) vvs.push_back(vt::visibility_volume(scene, g, 120.0, std::nullopt, 3.0));
+  }
+  for (std::size_t i = 0; i + 2 < vvs.size(); ++i) {
+    const double ab = vt::radial_xor_volume(vvs[i], vvs[i + 1]);
+    const double bc = vt::radial_xor_volume(vvs[i + 1], vvs[i + 2]);
+    const double ac = vt::radial_xor_volume(vvs[i], vvs[i + 2]);
+    EXPECT_LE(ac, ab + bc + 1e-9 * (ab + bc));
+  }
+  // Far from the boxes both VVs are the same half ball about their POIs.
+  const vt::VisibilityVolume a = vt::visibility_volume(scene, {3000, 0, 0.5}, 100.0, std::nullopt, 3.0);
+  const vt::VisibilityVolume b = vt::visibility_volume(scene, {3040, 10, 0.5}, 100.0, std::nullopt, 3.0);
+  EXPECT_NEAR(vt::radial_xor_volume(a, b), 0.0, 1e-9 * a.volume);
+}
+
+TEST(RadialXor, FallsBackWhenTheMeshesDoNotShareASphere) {
+  const vt::VisibilityScene scene(box_city());
+  const vt::VisibilityVolume low = vt::visibility_volume(scene, {0, 0, 0.5}, 150.0, std::nullopt, 3.0);
+  // Another height above the ground puts the ground crease on another vertex row.
+  const vt::VisibilityVolume high = vt::visibility_volume(scene, {0, 0, 8.0}, 150.0, std::nullopt, 3.0);
+  // A POI below the band: a shell mesh (near > 0), not a radial surface about the POI.
+  const vt::VisibilityVolume shell = vt::visibility_volume(scene, {0, 0, 0.5}, 150.0, std::make_pair(20.0, 60.0), 3.0);
+  const vt::VisibilityVolume coarse = vt::visibility_volume(scene, {0, 0, 0.5}, 150.0, std::nullopt, 4.0);
+  EXPECT_TRUE(shell.mesh_triangle_faces.empty());
+  for (const vt::VisibilityVolume* other : {&high, &shell, &coarse}) {
+    EXPECT_FALSE(vt::shares_radial_mesh(low, *other));
+    EXPECT_THROW(vt::radial_xor_volume(low, *other), vt::Error);
+  }
+  // auto: the grid path where the grids agree, CGAL where they do not.
+  EXPECT_EQ(vt::xor_volume(low, high), vt::grid_xor_volume(low, high));
+  EXPECT_THROW(vt::xor_volume(low, high, vt::XorFrame::world, vt::XorMethod::radial), vt::Error);
+  EXPECT_EQ(vt::parse_xor_method("radial"), vt::XorMethod::radial);
 }

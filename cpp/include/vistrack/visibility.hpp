@@ -55,6 +55,14 @@ struct VisibilityVolume {
   std::vector<double> far;
   TriangleMesh mesh;        // closed, outward oriented, 2-manifold, no self-intersections
   double volume = 0.0;      // of the mesh (divergence theorem)
+  // When g lies in the band (near = 0: the mesh is a radial surface about g, walls and fans
+  // aside), how the mesh covers the triangulated sphere of grid corners, for the exact XOR of two
+  // meshes per direction: the sines of its vertex rows' elevations (the grid's row boundaries
+  // plus the creases where d_max meets the ground or a band plane), and for each of its triangle
+  // slots t (two per quad, row-major) the faces built over it, [triangle_faces[t],
+  // triangle_faces[t + 1]). Empty otherwise.
+  std::vector<double> mesh_row_sines;
+  std::vector<std::int32_t> mesh_triangle_faces;
   // Sum over cells of solid_angle * (far^3 - near^3) / 3: the volume the grid represents.
   double grid_volume() const;
 
@@ -131,10 +139,11 @@ double mesh_volume(const TriangleMesh& mesh);
 
 // ---------------------------------------------------------------------------------------------
 // VV files for the on-disk cache: magic "VISTRKVV", uint32 format version, then little-endian
-// int32 / uint64 / IEEE doubles (poi, d_max, band, grid, near, far, mesh, volume) and a 64-bit
+// int32 / uint64 / IEEE doubles (poi, d_max, band, grid, near, far, mesh, volume, mesh rows and
+// triangle faces) and a 64-bit
 // checksum of everything before it. Bump the version whenever the layout or the output of
 // visibility_volume changes, so stale cache files miss instead of being reused.
-inline constexpr std::uint32_t kVolumeFileVersion = 2;
+inline constexpr std::uint32_t kVolumeFileVersion = 3;
 
 // Writes `vv` to `path` through a temporary file in the same folder renamed over `path`, so
 // readers see the old file or the whole new one, never half a file. Error naming the path when

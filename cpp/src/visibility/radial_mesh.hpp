@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -125,6 +126,7 @@ class MeshBuilder {
     return static_cast<int>(num_points_++);
   }
   Vec3 point(int v) const { return mesh_.vertices.row(v).transpose(); }
+  int num_faces() const { return static_cast<int>(num_faces_); }
   void face(int a, int b, int c);
   TriangleMesh finish(double& volume);
 
@@ -138,9 +140,11 @@ class MeshBuilder {
 
 // The closed mesh of a VV whose POI lies in the band (near = 0 along every ray): the radial
 // surface r = far over the live corners, with radial walls at the jumps of r found by bisection
-// with `trace` (see star_mesh.cpp).
+// with `trace` (see star_mesh.cpp). triangle_faces receives the faces built over each triangle
+// slot of `sphere` (VisibilityVolume::mesh_triangle_faces).
 TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
-                             const std::vector<Interval>& corner, const IntervalTracer& trace, double& volume);
+                             const std::vector<Interval>& corner, const IntervalTracer& trace, double& volume,
+                             std::vector<std::int32_t>& triangle_faces);
 // The closed mesh of a VV whose POI lies outside the band (near > 0): outer and inner surfaces
 // joined on the contour where the visible interval closes (see shell_mesh.cpp).
 TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,

@@ -129,7 +129,8 @@ std::vector<Jump> find_jumps(const Setup& s, const SphereGrid& sphere, const Dir
 }  // namespace
 
 TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
-                             const std::vector<Interval>& corner, const IntervalTracer& trace, double& volume) {
+                             const std::vector<Interval>& corner, const IntervalTracer& trace, double& volume,
+                             std::vector<std::int32_t>& triangle_faces) {
   const int nv = sphere.num_vertices();
   const int ne = sphere.ne;
   const int na = sphere.na;
@@ -243,6 +244,7 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Dir
   std::vector<char> has_jump(static_cast<std::size_t>(nt), 0);
   for (int t : jump_triangles) has_jump[t] = 1;
 
+  triangle_faces.assign(static_cast<std::size_t>(nt) + 1, 0);
   // Corners, apex, two vertices per jump and a centre per triangle with a jump ending in it.
   const auto expected_points = static_cast<Eigen::Index>(nv + 1 + 2 * jumps.size() + jump_triangles.size());
   MeshBuilder out(s.g, expected_points, 5 * static_cast<Eigen::Index>(nv) + 8);
@@ -317,10 +319,13 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Dir
       const int v00 = sphere.vertex(i, j), v01 = sphere.vertex(i, jn);
       const int v10 = sphere.vertex(i + 1, j), v11 = sphere.vertex(i + 1, jn);
       const int t = 2 * (i * na + j);
+      triangle_faces[static_cast<std::size_t>(t)] = out.num_faces();
       if (tri_alive[t]) emit(t, v00, v01, v11);
+      triangle_faces[static_cast<std::size_t>(t) + 1] = out.num_faces();
       if (tri_alive[t + 1]) emit(t + 1, v00, v11, v10);
     }
   }
+  triangle_faces[static_cast<std::size_t>(nt)] = out.num_faces();
   return out.finish(volume);
 }
 

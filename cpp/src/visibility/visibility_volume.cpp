@@ -177,7 +177,8 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
                       [&](std::size_t k, const Interval& iv) { out[k] = iv; });
       return out;
     };
-    vv.mesh = detail::build_star_mesh(s, sphere, dirs, corner, tracer, vv.volume);
+    vv.mesh = detail::build_star_mesh(s, sphere, dirs, corner, tracer, vv.volume, vv.mesh_triangle_faces);
+    vv.mesh_row_sines = row_sines;
   } else {
     vv.mesh = detail::build_shell_mesh(s, sphere, dirs, corner, vv.volume);
   }

@@ -148,6 +148,10 @@ void write_volume_file(const VisibilityVolume& vv, const std::string& path) {
   out.put(std::uint64_t(vv.mesh.faces.rows()));
   out.put_array(vv.mesh.faces.data(), std::size_t(vv.mesh.faces.size()));
   out.put(vv.volume);
+  out.put(std::uint64_t(vv.mesh_row_sines.size()));
+  out.put_array(vv.mesh_row_sines.data(), vv.mesh_row_sines.size());
+  out.put(std::uint64_t(vv.mesh_triangle_faces.size()));
+  out.put_array(vv.mesh_triangle_faces.data(), vv.mesh_triangle_faces.size());
   out.put(checksum(out.bytes().data(), out.bytes().size()));
 
   const std::string temporary = temporary_path(path);
@@ -224,10 +228,22 @@ std::optional<VisibilityVolume> read_volume_file(const std::string& path) {
   vv.mesh.faces.resize(Eigen::Index(num_faces), 3);
   payload.get_array(vv.mesh.faces.data(), std::size_t(num_faces) * 3);
   vv.volume = payload.get<double>();
-  if (payload.position() != body) payload.fail("unexpected bytes after the volume");
+  const auto num_rows = payload.get<std::uint64_t>();
+  payload.require_bytes(num_rows, sizeof(double));
+  vv.mesh_row_sines.resize(std::size_t(num_rows));
+  payload.get_array(vv.mesh_row_sines.data(), vv.mesh_row_sines.size());
+  const auto num_slots = payload.get<std::uint64_t>();
+  payload.require_bytes(num_slots, sizeof(std::int32_t));
+  vv.mesh_triangle_faces.resize(std::size_t(num_slots));
+  payload.get_array(vv.mesh_triangle_faces.data(), vv.mesh_triangle_faces.size());
+  if (payload.position() != body) payload.fail("unexpected bytes after the triangle faces");
   if (vv.mesh.faces.size() > 0 &&
       (vv.mesh.faces.minCoeff() < 0 || std::uint64_t(vv.mesh.faces.maxCoeff()) >= num_vertices))
     payload.fail("a face index is out of range");
+  if (!std::is_sorted(vv.mesh_triangle_faces.begin(), vv.mesh_triangle_faces.end()) ||
+      (!vv.mesh_triangle_faces.empty() &&
+       (vv.mesh_triangle_faces.front() != 0 || std::uint64_t(vv.mesh_triangle_faces.back()) != num_faces)))
+    payload.fail("the triangle face ranges do not cover the faces in order");
   return vv;
 }
 

@@ -49,9 +49,10 @@ XorFrame parse_xor_frame(const std::string& name) {
 
 XorMethod parse_xor_method(const std::string& name) {
   if (name == "auto") return XorMethod::automatic;
+  if (name == "radial") return XorMethod::radial;
   if (name == "grid") return XorMethod::grid;
   if (name == "mesh") return XorMethod::mesh;
-  detail::fail_field("method", name, "must be \"auto\", \"grid\" or \"mesh\"");
+  detail::fail_field("method", name, "must be \"auto\", \"radial\", \"grid\" or \"mesh\"");
 }
 
 bool shares_direction_grid(const VisibilityVolume& a, const VisibilityVolume& b) {
@@ -90,11 +91,13 @@ double xor_volume(const VisibilityVolume& a, const VisibilityVolume& b, XorFrame
                   const MeshXorOptions& options) {
   // Star-shaped about one common point: both in the POI frame, or the same POI in the world.
   const bool common_centre = frame == XorFrame::poi || (a.poi - b.poi).norm() == 0.0;
-  if (method == XorMethod::grid || (method == XorMethod::automatic && common_centre && shares_direction_grid(a, b))) {
+  if (method == XorMethod::automatic && common_centre)
+    method = shares_radial_mesh(a, b) ? XorMethod::radial : (shares_direction_grid(a, b) ? XorMethod::grid : method);
+  if (method == XorMethod::radial || method == XorMethod::grid) {
     if (!common_centre)
-      detail::fail_field("method", "grid",
+      detail::fail_field("method", method == XorMethod::radial ? "radial" : "grid",
                          "the per-direction XOR needs both VVs about one point: frame \"poi\" or equal POIs");
-    return grid_xor_volume(a, b);
+    return method == XorMethod::radial ? radial_xor_volume(a, b) : grid_xor_volume(a, b);
   }
   if (frame == XorFrame::world) return mesh_xor_volume(a.mesh, b.mesh, options);
   const TriangleMesh a_local{translated(a.mesh.vertices, a.poi), a.mesh.faces};

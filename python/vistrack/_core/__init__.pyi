@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 from . import dubins
-__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'wrap_to_pi', 'xor_volume']
+__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'wrap_to_pi', 'xor_volume']
 class VistrackError(ValueError):
     pass
 class Polygon:
@@ -1333,6 +1333,12 @@ def radial_error_rate(field: VectorField, orbit: OrbitState, heading_error: typi
     """
     d(r - R)/dt of (93) for the Dubins vehicle with the given heading error.
     """
+def radial_xor_volume(a: VisibilityVolume, b: VisibilityVolume) -> float:
+    """
+    The XOR volume of two star VVs' meshes, each about its own POI, exact per direction (faces
+    overlapped over each triangle of their common sphere, |r_a^3 - r_b^3| / 3 integrated in closed
+    form). VistrackError unless shares_radial_mesh(a, b).
+    """
 def sample_vector_field(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], orbit: OrbitState, gains: GuidanceGains) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]]:
     """
     The field at many points (n, 2): returns (u (n, 2), psi_d (n,), dpsi_d/dt (n,)).
@@ -1344,6 +1350,11 @@ def segment_boundaries(plan: OrbitPlan) -> list[float]:
 def shares_direction_grid(a: VisibilityVolume, b: VisibilityVolume) -> bool:
     """
     True when both VVs carry intervals on the same direction grid (the grid path applies).
+    """
+def shares_radial_mesh(a: VisibilityVolume, b: VisibilityVolume) -> bool:
+    """
+    True when both VVs are star VVs (POI in the band) whose meshes cover the same triangulated
+    sphere: same grid and the same vertex rows (the radial path applies).
     """
 def simulate(plan: OrbitPlan, uav: Uav, x0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], control: Control, env: typing.Any = None, options: SimulationOptions = ..., *, line_of_sight: collections.abc.Callable | None = None, fixed_step: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> SimulationResult:
     """
@@ -1390,9 +1401,11 @@ def xor_volume(a: VisibilityVolume, b: VisibilityVolume, frame: str = 'poi', met
     Volume (m^3) of the symmetric difference of two VVs, the metric d of eq. (56).
     
     frame: "poi" translates each VV by minus its POI first (open terrain gives 0), "world" compares
-    them in place. method: "grid" is the exact per-direction integral sum(solid_angle * |A xor B|
-    measured in r^2 dr) over a shared direction grid (needs frame "poi" or equal POIs); "mesh" is
-    CGAL corefinement of the closed meshes; "auto" takes the grid path when it applies.
+    them in place. method: "radial" is the exact XOR of the two meshes computed per direction
+    (star VVs built over one sphere of grid corners: what "mesh" gives, without CGAL); "grid" is
+    the per-direction integral sum(solid_angle * |A xor B| measured in r^2 dr) over the cell intervals
+    of a shared direction grid; both need frame "poi" or equal POIs. "mesh" is CGAL corefinement
+    of the closed meshes; "auto" takes radial, else grid, else mesh, as they apply.
     time_limit (s) aborts the mesh path with VistrackError. perturbation (rad): rotation of b's mesh
     about the axis (1,2,3) before the Boolean; default 1e-6 in the POI frame (identical sphere faces
     make CGAL pathologically slow), 0 in the world frame.
