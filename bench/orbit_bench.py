@@ -1,10 +1,11 @@
 """Benchmark: the whole paper_slow plan (adaptive VVs + Algorithm 1), and the XOR metric (56) per
-pair of neighbouring 1-degree VVs: our grid fast path vs our CGAL corefinement path vs the same
-Boolean volume through manifold3d (PyPI), side by side in one run.
+pair of neighbouring 1-degree VVs: our fast paths (radial: exact per direction on the meshes;
+grid: the cell intervals) vs our CGAL corefinement path vs the same Boolean volume through
+manifold3d (PyPI), side by side in one run.
 
     VISTRACK_BUILD_DIR=build/dev python3 bench/orbit_bench.py [--pairs 6] [--repeat 3]
 
-Goals (issue 5): <= 50 ms per pair on the fast path; the whole paper_slow plan <= 3 s on 2 cores.
+Goals (issue 5): <= 50 ms per pair on the fast path (radial, the planner's metric); the whole paper_slow plan <= 3 s on 2 cores.
 Charlotte geometry © OpenStreetMap contributors (ODbL).
 """
 
@@ -77,6 +78,7 @@ def main() -> int:
     rows = []
     for k in picks:
         a, b = plan.volume(k), plan.volume(k + 1)
+        t_radial, d_radial = timed(lambda: vt.xor_volume(a, b, frame="poi", method="radial"), args.repeat)
         t_grid, d_grid = timed(lambda: vt.xor_volume(a, b, frame="poi", method="grid"), args.repeat)
         try:
             t_cgal, d_cgal = timed(lambda: vt.xor_volume(a, b, frame="poi", method="mesh",
@@ -88,19 +90,19 @@ def main() -> int:
             t_m3d, d_m3d = timed(lambda: manifold_xor(a, b), args.repeat)
         except ImportError:
             t_m3d, d_m3d = float("nan"), float("nan")
-        rows.append((k, len(a.faces) + len(b.faces), d_grid, d_cgal, d_m3d, t_grid, t_cgal, t_m3d))
+        rows.append((k, len(a.faces) + len(b.faces), d_radial, d_grid, d_cgal, d_m3d, t_radial, t_grid, t_cgal, t_m3d))
 
-    print("\nXOR metric per pair (frame poi, 1-degree VVs):")
-    print(f"{'pair':>4} {'faces':>7} {'grid m^3':>12} {'CGAL m^3':>12} {'manifold m^3':>12}"
-          f" {'grid ms':>8} {'CGAL ms':>9} {'m3d ms':>8}")
-    for k, faces, dg, dc, dm, tg, tc, tm in rows:
-        print(f"{k:>4} {faces:>7} {dg:12.4g} {dc:12.4g} {dm:12.4g} {1e3 * tg:8.2f} {1e3 * tc:9.1f} {1e3 * tm:8.1f}")
-    tg = statistics.median(r[5] for r in rows)
-    tc = statistics.median(r[6] for r in rows)
-    tm = statistics.median(r[7] for r in rows)
-    print(f"median per pair: grid {1e3 * tg:.2f} ms (goal <= 50 ms: {'met' if tg <= 0.05 else 'NOT met'}), "
-          f"CGAL {1e3 * tc:.0f} ms, manifold3d {1e3 * tm:.1f} ms")
-    print(f"ratios: CGAL / grid = {tc / tg:.0f}x, manifold3d / grid = {tm / tg:.0f}x, CGAL / manifold3d = {tc / tm:.1f}x")
+    print("\nXOR metric per pair (frame poi, 1-degree VVs); relative differences from CGAL:")
+    print(f"{'pair':>4} {'faces':>7} {'radial m^3':>12} {'radial':>9} {'grid':>9} {'manifold':>9}"
+          f" {'radial ms':>9} {'grid ms':>8} {'CGAL ms':>9} {'m3d ms':>8}")
+    for k, faces, dr, dg, dc, dm, tr, tg, tc, tm in rows:
+        print(f"{k:>4} {faces:>7} {dr:12.5g} {dr / dc - 1:+9.1e} {dg / dc - 1:+9.1e} {dm / dc - 1:+9.1e}"
+              f" {1e3 * tr:9.2f} {1e3 * tg:8.2f} {1e3 * tc:9.1f} {1e3 * tm:8.1f}")
+    tr, tg, tc, tm = (statistics.median(r[i] for r in rows) for i in (6, 7, 8, 9))
+    print(f"median per pair: radial {1e3 * tr:.2f} ms (goal <= 50 ms: {'met' if tr <= 0.05 else 'NOT met'}), "
+          f"grid {1e3 * tg:.2f} ms, CGAL {1e3 * tc:.0f} ms, manifold3d {1e3 * tm:.1f} ms")
+    print(f"ratios: CGAL / radial = {tc / tr:.0f}x, manifold3d / radial = {tm / tr:.0f}x, "
+          f"radial / grid = {tr / tg:.0f}x, CGAL / manifold3d = {tc / tm:.1f}x")
     return 0
 
 

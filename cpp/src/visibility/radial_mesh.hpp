@@ -71,6 +71,16 @@ struct SphereGrid {
     const int i = (t / 2) / na;
     return (t % 2 == 0) ? i >= 1 : i <= ne - 2;
   }
+  // Calls visit(i, t, v00, v01, v10, v11) for every quad in row-major order: row i, its Ta slot t
+  // (Tb is t + 1) and its corner vertices (i, j), (i, j+1), (i+1, j), (i+1, j+1).
+  template <class Visit>
+  void for_each_quad(Visit visit) const {
+    for (int i = 0; i < ne; ++i)
+      for (int j = 0; j < na; ++j) {
+        const int jn = j + 1 == na ? 0 : j + 1;
+        visit(i, 2 * (i * na + j), vertex(i, j), vertex(i, jn), vertex(i + 1, j), vertex(i + 1, jn));
+      }
+  }
   std::array<int, 3> corners(int t) const;
   // The triangle across edge e (corner e to corner e+1) of triangle t.
   int neighbour(int t, int e) const;

@@ -80,16 +80,10 @@ std::vector<Jump> find_jumps(const Setup& s, const SphereGrid& sphere, const Dir
     jump.edge = e;
     jumps.push_back(jump);
   };
-  for (int i = 0; i < sphere.ne; ++i) {
-    for (int j = 0; j < sphere.na; ++j) {
-      const int jn = j + 1 == sphere.na ? 0 : j + 1;
-      const int v00 = sphere.vertex(i, j), v01 = sphere.vertex(i, jn);
-      const int v10 = sphere.vertex(i + 1, j), v11 = sphere.vertex(i + 1, jn);
-      const int t = 2 * (i * sphere.na + j);
-      if (tri_alive[t]) consider(t, 0, v00, v01), consider(t, 1, v01, v11), consider(t, 2, v11, v00);
-      if (tri_alive[t + 1]) consider(t + 1, 0, v00, v11), consider(t + 1, 1, v11, v10), consider(t + 1, 2, v10, v00);
-    }
-  }
+  sphere.for_each_quad([&](int, int t, int v00, int v01, int v10, int v11) {
+    if (tri_alive[t]) consider(t, 0, v00, v01), consider(t, 1, v01, v11), consider(t, 2, v11, v00);
+    if (tri_alive[t + 1]) consider(t + 1, 0, v00, v11), consider(t + 1, 1, v11, v10), consider(t + 1, 2, v10, v00);
+  });
   // A bracket whose gap falls to the confirmation level is smooth: it leaves the rounds early.
   const double alive_gap = 1e-6 * std::max(1.0, s.d_max);
   // Both ends on one plane is no jump: the ground seen at grazing angles changes fast but stays
@@ -133,7 +127,6 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Dir
                              std::vector<std::int32_t>& triangle_faces) {
   const int nv = sphere.num_vertices();
   const int ne = sphere.ne;
-  const int na = sphere.na;
   const double alive_gap = 1e-6 * std::max(1.0, s.d_max);
   std::vector<char> alive(static_cast<std::size_t>(nv));
   for (int v = 0; v < nv; ++v) alive[v] = corner[v].far - corner[v].near > alive_gap ? 1 : 0;
@@ -145,19 +138,13 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Dir
   std::vector<char> candidate(static_cast<std::size_t>(nv));
   auto update_triangles = [&]() {
     std::fill(candidate.begin(), candidate.end(), 0);
-    for (int i = 0; i < ne; ++i) {
-      for (int j = 0; j < na; ++j) {
-        const int jn = j + 1 == na ? 0 : j + 1;
-        const int v00 = sphere.vertex(i, j), v01 = sphere.vertex(i, jn);
-        const int v10 = sphere.vertex(i + 1, j), v11 = sphere.vertex(i + 1, jn);
-        const int t = 2 * (i * na + j);
-        tri_alive[t] = i >= 1 && alive[v00] && alive[v01] && alive[v11];
-        tri_alive[t + 1] = i <= ne - 2 && alive[v00] && alive[v11] && alive[v10];
-        if (i >= 1 && !tri_alive[t]) candidate[v00] |= alive[v00], candidate[v01] |= alive[v01], candidate[v11] |= alive[v11];
-        if (i <= ne - 2 && !tri_alive[t + 1])
-          candidate[v00] |= alive[v00], candidate[v11] |= alive[v11], candidate[v10] |= alive[v10];
-      }
-    }
+    sphere.for_each_quad([&](int i, int t, int v00, int v01, int v10, int v11) {
+      tri_alive[t] = i >= 1 && alive[v00] && alive[v01] && alive[v11];
+      tri_alive[t + 1] = i <= ne - 2 && alive[v00] && alive[v11] && alive[v10];
+      if (i >= 1 && !tri_alive[t]) candidate[v00] |= alive[v00], candidate[v01] |= alive[v01], candidate[v11] |= alive[v11];
+      if (i <= ne - 2 && !tri_alive[t + 1])
+        candidate[v00] |= alive[v00], candidate[v11] |= alive[v11], candidate[v10] |= alive[v10];
+    });
   };
   update_triangles();
   // A corner where the visible region touches itself (two separate fans of live triangles) would
@@ -313,18 +300,12 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Dir
       out.face(outer_of(q), outer_of(p), apex);
     }
   };
-  for (int i = 0; i < ne; ++i) {
-    for (int j = 0; j < na; ++j) {
-      const int jn = j + 1 == na ? 0 : j + 1;
-      const int v00 = sphere.vertex(i, j), v01 = sphere.vertex(i, jn);
-      const int v10 = sphere.vertex(i + 1, j), v11 = sphere.vertex(i + 1, jn);
-      const int t = 2 * (i * na + j);
-      triangle_faces[static_cast<std::size_t>(t)] = out.num_faces();
-      if (tri_alive[t]) emit(t, v00, v01, v11);
-      triangle_faces[static_cast<std::size_t>(t) + 1] = out.num_faces();
-      if (tri_alive[t + 1]) emit(t + 1, v00, v11, v10);
-    }
-  }
+  sphere.for_each_quad([&](int, int t, int v00, int v01, int v10, int v11) {
+    triangle_faces[static_cast<std::size_t>(t)] = out.num_faces();
+    if (tri_alive[t]) emit(t, v00, v01, v11);
+    triangle_faces[static_cast<std::size_t>(t) + 1] = out.num_faces();
+    if (tri_alive[t + 1]) emit(t + 1, v00, v11, v10);
+  });
   triangle_faces[static_cast<std::size_t>(nt)] = out.num_faces();
   return out.finish(volume);
 }
