@@ -32,7 +32,8 @@ REPO = Path(__file__).resolve().parents[1]
 
 
 def directions(resolution_deg: float) -> np.ndarray:
-    """The rays of one VV: every grid cell centre and every corner of the sphere grid."""
+    """As many rays as one VV traces for its intervals and mesh: one per grid cell (here through the
+    centre; vistrack's are staggered inside the cells) and one per corner of the sphere grid."""
     grid = vt.DirectionGrid.from_resolution(resolution_deg)
     ne, na = grid.num_elevation, grid.num_azimuth
     el_c = -np.pi / 2 + (np.arange(ne) + 0.5) * np.pi / ne

@@ -40,13 +40,19 @@ Vec3 as_point(const Eigen::VectorXd& g, const char* field) {
 void bind_visibility(py::module_& m) {
   py::class_<DirectionGrid>(m, "DirectionGrid",
                             "Angular grid of a VV: num_elevation rows x num_azimuth columns of equal angular "
-                            "size over the sphere; the ray of cell (i, j) goes through the cell centre.")
+                            "size over the sphere; the ray of cell (i, j) goes through its sample point\n"
+                            "(sample_offset: staggered inside the cell, not its centre).")
       .def_readonly("num_elevation", &DirectionGrid::num_elevation)
       .def_readonly("num_azimuth", &DirectionGrid::num_azimuth)
       .def("elevation", &DirectionGrid::elevation, py::arg("row"), "Centre elevation of row i (rad).")
       .def("azimuth", &DirectionGrid::azimuth, py::arg("column"), "Centre azimuth of column j (rad, from +x).")
       .def("solid_angle", &DirectionGrid::solid_angle, py::arg("row"), "Solid angle of each cell of row i (sr).")
-      .def("direction", &DirectionGrid::direction, py::arg("row"), py::arg("column"), "Unit vector of cell (i, j).")
+      .def("sample_offset", &DirectionGrid::sample_offset, py::arg("row"), py::arg("column"),
+           "(x, y) in [0, 1)^2: where the ray of cell (i, j) crosses it, as fractions of its azimuth span (x,\n"
+           "by row) and of its sin(elevation) span (y, by column); Weyl sequences, equidistributed down\n"
+           "every column and along every row.")
+      .def("direction", &DirectionGrid::direction, py::arg("row"), py::arg("column"),
+           "Unit vector of the ray of cell (i, j), through its sample point.")
       .def_property_readonly("size", &DirectionGrid::size, "Number of cells.")
       .def_static("from_resolution", &DirectionGrid::from_resolution, py::arg("resolution_deg"),
                   "Grid with steps of about resolution_deg degrees (an even number of rows).");

@@ -172,7 +172,7 @@ TEST(VisibilityVolume, OpenFieldMatchesAnalyticVolume) {
     const double hi = c.band ? c.band->second : 1e9;
     const double exact = ball_slab_volume(r, c.g.z(), std::max(lo, 0.0), hi);
     const std::string what = "g.z " + std::to_string(c.g.z()) + (c.band ? " band " + std::to_string(c.band->first) : "");
-    // The issue asks for 0.5%; the mesh (vertex rows on the caps' rims) does 0.1%. The cell-centre
+    // The issue asks for 0.5%; the mesh (vertex rows on the caps' rims) does 0.1%. The cell
     // grid cuts rims across a cell: 1% on thin bands.
     EXPECT_NEAR(vv.volume / exact, 1.0, 0.001) << what;
     EXPECT_NEAR(vv.grid_volume() / exact, 1.0, 0.01) << what;

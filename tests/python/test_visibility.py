@@ -274,3 +274,19 @@ def test_low_altitude_vp_matches_line_of_sight(charlotte, charlotte_scene):
             ours = shapely.contains_xy(region, points[:, 0], points[:, 1])
             iou = np.sum(truth & ours) / np.sum(truth | ours)
             assert iou >= 0.99, (g, h, iou)
+
+
+def test_cell_rays_go_through_their_sample_points():
+    """direction(i, j) is the cell's sample point: azimuth (j + x) d_az and sin(elevation) at the
+    fraction y of the cell's span, with (x, y) = sample_offset(i, j) spread over [0, 1)."""
+    grid = vt.DirectionGrid.from_resolution(2.0)
+    ne, na = grid.num_elevation, grid.num_azimuth
+    xs = []
+    for i, j in [(0, 0), (7, 100), (45, 3), (89, 179)]:
+        x, y = np.ravel(grid.sample_offset(i, j))
+        d = np.ravel(grid.direction(i, j))
+        lo, hi = np.sin(-np.pi / 2 + i * np.pi / ne), np.sin(-np.pi / 2 + (i + 1) * np.pi / ne)
+        assert d[2] == pytest.approx(lo + y * (hi - lo), abs=1e-12)
+        assert np.mod(np.arctan2(d[1], d[0]), 2 * np.pi) == pytest.approx((j + x) * 2 * np.pi / na, abs=1e-12)
+    xs = [float(np.ravel(grid.sample_offset(i, 0))[0]) for i in range(ne)]
+    assert np.histogram(xs, bins=4, range=(0, 1))[0].min() >= ne // 4 - 3  # spread, not all at 0.5

@@ -105,8 +105,8 @@ bool shares_radial_mesh(const VisibilityVolume& a, const VisibilityVolume& b);
 // The XOR volume of the two meshes, each about its own POI (frame "poi"), exact per direction:
 // over each triangle slot of the common sphere the faces of a and b are overlapped (clipping
 // cones by planes through the POI) and |r_a^3 - r_b^3| / 3 is integrated in closed form where both
-// are planes. The same number as mesh_xor_volume on the translated meshes, without CGAL (1e4
-// times faster). Error unless shares_radial_mesh(a, b).
+// are planes. The same number as mesh_xor_volume on the translated meshes, without CGAL (5 ms
+// instead of 16 s for a 1-degree Charlotte pair). Error unless shares_radial_mesh(a, b).
 double radial_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b);
 
 // d(a, b) of eq. (56) for two VVs, in the given frame, by the chosen method. The mesh path in

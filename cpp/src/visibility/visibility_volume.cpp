@@ -150,7 +150,7 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
     s.poi_in_band = g.z() >= s.low - kBandTolerance && g.z() <= s.high + kBandTolerance;
   }
 
-  // Rays: every cell centre (the grid's intervals), then every corner of the sphere grid (the
+  // Rays: every cell's sample ray (the grid's intervals), then every corner of the sphere grid (the
   // mesh); the star mesh traces more rays where it locates jumps.
   const std::vector<double> row_sines = vertex_row_sines(vv.grid, s);
   const detail::SphereGrid sphere{static_cast<int>(row_sines.size()) - 1, na};

@@ -431,7 +431,8 @@ class PoiPath:
         """
 class DirectionGrid:
     """
-    Angular grid of a VV: num_elevation rows x num_azimuth columns of equal angular size over the sphere; the ray of cell (i, j) goes through the cell centre.
+    Angular grid of a VV: num_elevation rows x num_azimuth columns of equal angular size over the sphere; the ray of cell (i, j) goes through its sample point
+    (sample_offset: staggered inside the cell, not its centre).
     """
     @staticmethod
     def from_resolution(resolution_deg: typing.SupportsFloat | typing.SupportsIndex) -> DirectionGrid:
@@ -444,11 +445,17 @@ class DirectionGrid:
         """
     def direction(self, row: typing.SupportsInt | typing.SupportsIndex, column: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[3, 1]"]:
         """
-        Unit vector of cell (i, j).
+        Unit vector of the ray of cell (i, j), through its sample point.
         """
     def elevation(self, row: typing.SupportsInt | typing.SupportsIndex) -> float:
         """
         Centre elevation of row i (rad).
+        """
+    def sample_offset(self, row: typing.SupportsInt | typing.SupportsIndex, column: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        (x, y) in [0, 1)^2: where the ray of cell (i, j) crosses it, as fractions of its azimuth span (x,
+        by row) and of its sin(elevation) span (y, by column); Weyl sequences, equidistributed down
+        every column and along every row.
         """
     def solid_angle(self, row: typing.SupportsInt | typing.SupportsIndex) -> float:
         """
