@@ -83,6 +83,7 @@ def test_from_volumes_reproduces_fixed_spacing_plan(city, tmp_path: Path) -> Non
     assert summary["samples"] == len(plan.times) and summary["inserted"] == 0
     assert summary["volumes_computed"] == 0
     assert (out / "radius.png").stat().st_size > 0
+    assert (out / "orbits.png").stat().st_size > 0  # Figure 5 without the map
     assert saved.uav.altitude == uav.altitude and saved.sensor.d_max == sensor.d_max
     assert saved.planning.resolution_deg == RESOLUTION and saved.planning.spacing == pytest.approx(30.0)
 

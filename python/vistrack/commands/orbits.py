@@ -6,6 +6,7 @@ import argparse
 import json
 import time
 from pathlib import Path
+from typing import Optional
 
 from .. import _core
 from .. import planning as pl
@@ -22,7 +23,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "radius.png and, with --figure-metric, metric.png (Figure 4). With --from-volumes DIR --path CSV, plans "
         "from saved VVs (vv-*.bin from `vistrack run --cache DIR`, OrbitPlanner(cache_dir=DIR) or "
         "`vistrack volumes --save-volumes DIR`) without the map: the samples are the saved VVs placed on the "
-        "path, with no adaptive insertion (new VVs need the map); writes plan.json, summary.json, radius.png.",
+        "path, with no adaptive insertion (new VVs need the map); writes plan.json, summary.json, orbits.png "
+        "(over --footprints when given) and radius.png.",
     )
     p.add_argument("--map", help="city: .geojson footprints or a triangle mesh (.obj ...)")
     p.add_argument("--up", default="y", choices=["y", "z"], help="up axis of a mesh file (default y)")
@@ -45,7 +47,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--min-spacing", type=float, default=d.min_spacing, help="smallest VV spacing, m")
     p.add_argument("--max-depth", type=int, default=d.max_depth, help="most halvings of one interval")
     p.add_argument("--footprints", default=None,
-                   help="GeoJSON footprints drawn under the orbits (default: buildings.geojson beside --map)")
+                   help="GeoJSON footprints drawn under the orbits (default: buildings.geojson beside --map; "
+                   "with --from-volumes, none unless given)")
     p.add_argument("--figure-metric", action="store_true", help="also draw Figure 4 (metric along the path)")
     p.add_argument("--spacings", type=positive_numbers("--spacings", "50,25,10,1"), default=[50.0, 25.0, 10.0, 1.0],
                    help="fixed spacings for --figure-metric (default 50,25,10,1)")
@@ -53,12 +56,18 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
-def redraw(args: argparse.Namespace, out: Path) -> int:
-    plan = pl.read_plan(args.from_plan)
+def footprints(args: argparse.Namespace) -> Optional[_core.Environment]:
+    """What to draw under the orbits without loading the map for planning: --footprints, else
+    buildings.geojson beside --map, else a GeoJSON --map itself, else nothing."""
     background = pl.footprint_environment(args.map or "", args.footprints) if (args.map or args.footprints) else None
     if background is None and args.map and str(args.map).lower().endswith((".geojson", ".json")):
         background = _core.Environment.from_geojson(str(args.map))
-    pl.figure_orbits(plan, background, out / "orbits.png")
+    return background
+
+
+def redraw(args: argparse.Namespace, out: Path) -> int:
+    plan = pl.read_plan(args.from_plan)
+    pl.figure_orbits(plan, footprints(args), out / "orbits.png")
     pl.figure_radius(plan, out / "radius.png")
     print(f"redrew {out}/orbits.png, radius.png from {args.from_plan}")
     return 0
@@ -76,11 +85,12 @@ def from_volumes(args: argparse.Namespace, out: Path) -> int:
     summary["from_volumes"] = str(args.from_volumes)
     out.mkdir(parents=True, exist_ok=True)
     pl.write_plan(plan, out / "plan.json")
+    pl.figure_orbits(plan, footprints(args), out / "orbits.png")
     pl.figure_radius(plan, out / "radius.png")
     (out / "summary.json").write_text(json.dumps(summary, indent=1))
     print(f"{len(plan.times)} saved VVs from {args.from_volumes}; R {plan.radii[0]:.1f} m -> {plan.radii[-1]:.1f} m; "
           + ("feasible" if plan.feasible else f"INFEASIBLE: {plan.infeasibility}"))
-    print(f"wrote {out}/plan.json, summary.json, radius.png")
+    print(f"wrote {out}/plan.json, summary.json, orbits.png, radius.png")
     return 0
 
 
