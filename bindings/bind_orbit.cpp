@@ -71,10 +71,10 @@ void bind_orbit(py::module_& m) {
       .def_readonly("failing_samples", &CircularOrbits::failing_samples, "Samples that break Lemma 6.")
       .def_readonly("infeasibility", &CircularOrbits::infeasibility, "The first failing sample and why.");
   m.def("circular_orbits", &circular_orbits, py::arg("times"), py::arg("max_radii"), py::arg("uav"),
-        py::arg("poi_speed"),
-        "Algorithm 1 (lines 2-18): lower radii so that |dR/dt| <= v - v_g (Lemma 5), each limited radius "
-        "built from its neighbour's, then check R_k >= r_min (1 + v_g/v)^2 (Lemma 6). VistrackError when "
-        "the UAV is not faster than the POI.");
+        py::arg("poi_speed"), py::arg("rate_margin") = 0.0,
+        "Algorithm 1 (lines 2-18): lower radii so that |dR/dt| <= (1 - rate_margin)(v - v_g) (Lemma 5 "
+        "for rate_margin = 0), each limited radius built from its neighbour's, then check "
+        "R_k >= r_min (1 + v_g/v)^2 (Lemma 6). VistrackError when the UAV is not faster than the POI.");
 
   py::class_<Discretization>(m, "Discretization", "VV samples along the POI path (section IV.B).")
       .def_readonly("arc_lengths", &Discretization::arc_lengths, "s_k along the path (m).")

@@ -51,20 +51,23 @@ void bind_parameters(py::module_& m) {
   const Planning planning_defaults;
   py::class_<Planning>(m, "Planning", "Adaptive placement of visibility volumes (section IV.B).")
       .def(py::init([](double spacing, double cutoff, double resolution_deg, double min_spacing,
-                       int max_depth) {
-             return make_validated(Planning{spacing, cutoff, resolution_deg, min_spacing, max_depth});
+                       int max_depth, double rate_margin) {
+             return make_validated(Planning{spacing, cutoff, resolution_deg, min_spacing, max_depth, rate_margin});
            }),
            py::kw_only(), py::arg("spacing") = planning_defaults.spacing,
            py::arg("cutoff") = planning_defaults.cutoff,
            py::arg("resolution_deg") = planning_defaults.resolution_deg,
            py::arg("min_spacing") = planning_defaults.min_spacing,
            py::arg("max_depth") = planning_defaults.max_depth,
-           "spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth.")
+           py::arg("rate_margin") = planning_defaults.rate_margin,
+           "spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin.")
       .def_readwrite("spacing", &Planning::spacing, "initial spacing of VVs along the path, m")
       .def_readwrite("cutoff", &Planning::cutoff, "d_cutoff, m^3")
       .def_readwrite("resolution_deg", &Planning::resolution_deg, "VV ray grid step, degrees")
       .def_readwrite("min_spacing", &Planning::min_spacing, "smallest spacing inserted, m")
       .def_readwrite("max_depth", &Planning::max_depth, "most halvings of one initial interval")
+      .def_readwrite("rate_margin", &Planning::rate_margin,
+                     "Algorithm 1 keeps |dR/dt| <= (1 - rate_margin)(v - v_g); 0 = Lemma 5's limit (the paper)")
       .def("validate", &Planning::validate, "Raise VistrackError naming the first invalid field.");
 
   const Control control_defaults;

@@ -81,23 +81,25 @@ def _ring(points: np.ndarray) -> list[list[float]]:
     return [[float(x), float(y)] for x, y in np.asarray(points)]
 
 
-def plan_from_volumes(folder: str | Path, poi: "_core.PoiPath", uav: "_core.Uav") -> "_core.VisibilityOrbitPlan":
-    """The orbit plan (Algorithm 1) over the saved VVs in `folder` along `poi`, as OrbitPlanner.plan
-    would make it from the same samples with nothing inserted."""
+def plan_from_volumes(folder: str | Path, poi: "_core.PoiPath", uav: "_core.Uav",
+                      rate_margin: float = 0.0) -> "_core.VisibilityOrbitPlan":
+    """The orbit plan (Algorithm 1, |dR/dt| <= (1 - rate_margin)(v - v_g)) over the saved VVs in
+    `folder` along `poi`, as OrbitPlanner.plan would make it from the same samples with nothing
+    inserted."""
     uav.validate()
+    planning = _core.Planning(rate_margin=rate_margin)
     arc_lengths, volumes = load_samples(folder, poi)
     times = [s / poi.speed for s in arc_lengths]
     polygons = [_core.plane_visibility_polygon(vv, uav.altitude) for vv in volumes]
     centres = [np.asarray(vv.poi, dtype=float)[:2] for vv in volumes]
     max_radii = [_core.max_inscribed_radius(vp, c) for vp, c in zip(polygons, centres)]
     metric = [_core.xor_volume(a, b, frame="poi") for a, b in zip(volumes[:-1], volumes[1:])]
-    orbits = _core.circular_orbits(times, max_radii, uav, poi.speed)
+    orbits = _core.circular_orbits(times, max_radii, uav, poi.speed, planning.rate_margin)
     first = volumes[0]
     sensor: dict = {"d_max": first.d_max}
     if first.altitude_band is not None:
         sensor["altitude_band"] = list(first.altitude_band)
     gaps = np.diff(arc_lengths)
-    planning = _core.Planning()
     text = json.dumps({
         "format": "vistrack.visibility_orbit_plan/1",
         "poi": {"waypoints": np.asarray(poi.waypoints).tolist(), "speed": poi.speed},
@@ -113,7 +115,8 @@ def plan_from_volumes(folder: str | Path, poi: "_core.PoiPath", uav: "_core.Uav"
         # the saved azimuth step; cutoff and depth stay at the defaults (nothing was inserted here).
         "planning": {"spacing": float(np.median(gaps)) if len(gaps) else planning.spacing,
                      "cutoff": planning.cutoff, "resolution_deg": 360.0 / first.grid.num_azimuth,
-                     "min_spacing": planning.min_spacing, "max_depth": planning.max_depth},
+                     "min_spacing": planning.min_spacing, "max_depth": planning.max_depth,
+                     "rate_margin": planning.rate_margin},
         "centers": [c.tolist() for c in centres],
         "arc_lengths": arc_lengths,
         "depths": [0] * len(times),

@@ -198,7 +198,7 @@ class Scenario:
         scenario.uav, scenario.start = _uav(_section(data, "uav", {"speed", "min_turn_radius", "altitude", "start"}))
         scenario.sensor = _sensor(_section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(_section(
-            data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth"}))
+            data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin"}))
         scenario.control = _control(_section(data, "control", {"beta", "k_psi", "direction"}))
         scenario.simulation = _simulation(_section(
             data, "simulation", {"rtol", "atol", "max_step", "output_step"}))
@@ -234,7 +234,8 @@ class Scenario:
             "sensor": {"d_max": self.sensor.d_max, "altitude_band": list(band) if band else None},
             "planning": {"spacing": self.planning.spacing, "cutoff": self.planning.cutoff,
                          "resolution_deg": self.planning.resolution_deg,
-                         "min_spacing": self.planning.min_spacing, "max_depth": self.planning.max_depth},
+                         "min_spacing": self.planning.min_spacing, "max_depth": self.planning.max_depth,
+                         "rate_margin": self.planning.rate_margin},
             "control": {"beta": self.control.beta, "k_psi": self.control.k_psi,
                         "direction": self.control.direction},
             "simulation": {"rtol": self.simulation.rtol, "atol": self.simulation.atol,
@@ -339,7 +340,8 @@ def _planning(section: dict[str, Any]) -> Planning:
         "spacing": _positive, "cutoff": _positive,
         "resolution_deg": lambda k, v: _number(k, v, low=0.1, high=30.0),
         "min_spacing": _positive,
-        "max_depth": lambda k, v: _integer(k, v, 0, 30)})
+        "max_depth": lambda k, v: _integer(k, v, 0, 30),
+        "rate_margin": lambda k, v: _number(k, v, low=0.0)})  # < 1: checked by Planning.validate
 
 
 def _control(section: dict[str, Any]) -> Control:

@@ -114,8 +114,10 @@ TEST(CircularOrbits, IsTheLargestRateLimitedRadiusBelowMaxRadius) {
     std::vector<double> t{0.0}, m;
     for (int k = 1; k < n; ++k) t.push_back(t.back() + 0.05 + 3 * u(rng));
     for (int k = 0; k < n; ++k) m.push_back(u(rng) < 0.1 ? 0.0 : 300 * u(rng));
-    const double v = 15 + 10 * u(rng), vg = 1 + 10 * u(rng), c = v - vg;
-    const auto out = vt::circular_orbits(t, m, uav(v, 20.0), vg);
+    // Every other trial with a rate margin: the bound becomes (1 - margin)(v - v_g).
+    const double margin = trial % 2 ? 0.0 : 0.5 * u(rng);
+    const double v = 15 + 10 * u(rng), vg = 1 + 10 * u(rng), c = (1 - margin) * (v - vg);
+    const auto out = vt::circular_orbits(t, m, uav(v, 20.0), vg, margin);
     for (int k = 0; k < n; ++k) {
       double envelope = m[k];
       for (int j = 0; j < n; ++j) envelope = std::min(envelope, m[j] + c * std::abs(t[k] - t[j]));
@@ -162,6 +164,11 @@ TEST(CircularOrbits, RejectsBadInput) {
   EXPECT_THROW(vt::circular_orbits({0, 1}, {100, std::nan("")}, uav(20, 10), 5.0), vt::Error);
   EXPECT_THROW(vt::circular_orbits({0, 1}, {100, -1}, uav(20, 10), 5.0), vt::Error);
   EXPECT_THROW(vt::circular_orbits({}, {}, uav(20, 10), 5.0), vt::Error);
+  for (double margin : {-0.1, 1.0, std::nan("")})
+    EXPECT_THROW(vt::circular_orbits({0.0, 1.0}, {100.0, 100.0}, uav(20.0, 10.0), 5.0, margin), vt::Error);
+  vt::Planning planning;
+  planning.rate_margin = 1.0;
+  EXPECT_THROW(planning.validate(), vt::Error);
 }
 
 namespace {

@@ -67,3 +67,20 @@ def test_visibility_plan_json_derives_rates_and_validates_parameters() -> None:
     data["uav"]["speed"] = -3.0
     with pytest.raises(vt.VistrackError, match="uav.speed = -3"):
         vt.VisibilityOrbitPlan.from_json(json.dumps(data))
+
+
+def test_rate_margin_tightens_algorithm_1_and_survives_json() -> None:
+    env = vt.Environment.demo()
+    poi = vt.PoiPath(np.array([[-290.0, -210.0], [95.0, -210.0]]), speed=5.0)
+    uav = vt.Uav(speed=20.0, min_turn_radius=15.0, altitude=200.0)
+    sensor = vt.Sensor(d_max=300.0)
+    paper = vt.plan_orbits(env, poi, uav, sensor, vt.Planning(resolution_deg=3.0, spacing=10.0, cutoff=1e12))
+    tight = vt.plan_orbits(env, poi, uav, sensor,
+                           vt.Planning(resolution_deg=3.0, spacing=10.0, cutoff=1e12, rate_margin=0.5))
+    assert np.max(np.abs(paper.radius_rates)) == pytest.approx(15.0)  # the city makes it reach v - v_g
+    assert np.max(np.abs(tight.radius_rates)) <= 7.5 * (1 + 1e-12)
+    assert np.all(np.asarray(tight.radii) <= np.asarray(paper.radii) + 1e-9)
+    again = vt.VisibilityOrbitPlan.from_json(tight.to_json())
+    assert again.planning.rate_margin == 0.5
+    with pytest.raises(vt.VistrackError, match="planning.rate_margin = 1"):
+        vt.Planning(rate_margin=1.0)

@@ -77,12 +77,13 @@ struct CircularOrbits {
   std::string infeasibility;              // the first failing sample, and why
 };
 
-// Enforces Lemma 5 (|dR/dt| <= v - v_g) by lowering radii only (each limited radius is built
-// from its neighbour's), so the result is the largest piecewise-linear R(t) <= max_radii that
-// obeys the rate bound; then checks Lemma 6 at every sample. Error when v <= v_g, when sizes
-// differ, times do not increase, or a radius is negative or not finite.
+// Enforces Lemma 5 (|dR/dt| <= v - v_g, tightened to (1 - rate_margin)(v - v_g)) by lowering radii
+// only (each limited radius is built from its neighbour's), so the result is the largest
+// piecewise-linear R(t) <= max_radii that obeys the rate bound; then checks Lemma 6 at every
+// sample. Error when v <= v_g, rate_margin is outside [0, 1), sizes differ, times do not increase,
+// or a radius is negative or not finite.
 CircularOrbits circular_orbits(const std::vector<double>& times, const std::vector<double>& max_radii,
-                               const Uav& uav, double poi_speed);
+                               const Uav& uav, double poi_speed, double rate_margin = 0.0);
 
 // ---------------------------------------------------------------------------------------------
 // Adaptive discretization of the POI path (section IV.B).

@@ -30,6 +30,9 @@ struct Planning {
   double resolution_deg = 1.0;   // angular step of the VV ray grid, degrees
   double min_spacing = 1.0;      // never insert VVs closer than this, m
   int max_depth = 8;             // maximum number of halvings of one initial interval
+  // Algorithm 1 keeps |dR/dt| <= (1 - rate_margin)(v - v_g). 0 is Lemma 5's limit, as in the paper;
+  // there the attraction gain (68) of the guidance vanishes and the radial error is not corrected.
+  double rate_margin = 0.0;
   void validate() const;
 };
 

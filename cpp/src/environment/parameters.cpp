@@ -30,6 +30,8 @@ void Planning::validate() const {
   require_positive(min_spacing, "planning.min_spacing");
   if (max_depth < 0 || max_depth > 30)
     detail::fail_field("planning.max_depth", max_depth, "must be in [0, 30]");
+  if (!(rate_margin >= 0.0 && rate_margin < 1.0))
+    detail::fail_field("planning.rate_margin", rate_margin, "must be in [0, 1) (a fraction of v - v_g)");
 }
 
 void Control::validate() const {

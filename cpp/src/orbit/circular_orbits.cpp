@@ -54,9 +54,11 @@ double min_feasible_radius(const Uav& uav, double poi_speed) {
 }
 
 CircularOrbits circular_orbits(const std::vector<double>& times, const std::vector<double>& max_radii,
-                               const Uav& uav, double poi_speed) {
+                               const Uav& uav, double poi_speed, double rate_margin) {
   uav.validate();
   require_faster_than_poi(uav, poi_speed);
+  if (!(rate_margin >= 0.0 && rate_margin < 1.0))
+    detail::fail_field("rate_margin", rate_margin, "must be in [0, 1) (a fraction of v - v_g)");
   if (times.empty()) detail::fail_field("times", "[]", "need at least one sample");
   if (max_radii.size() != times.size())
     detail::fail_field("max_radii", max_radii.size(),
@@ -71,7 +73,8 @@ CircularOrbits circular_orbits(const std::vector<double>& times, const std::vect
   CircularOrbits out;
   std::vector<double>& radius = out.radii;
   radius = max_radii;  // line 1: R_k = MaxRadius(VP_k at h_UAV)
-  const double max_rate = uav.speed - poi_speed;  // Lemma 5, (52): |R'| <= v - v_g
+  // Lemma 5, (52): |R'| <= v - v_g; a margin keeps the attraction of (68) away from zero.
+  const double max_rate = (1.0 - rate_margin) * (uav.speed - poi_speed);
   const std::size_t n = radius.size();
   // Lines 2-7, forward: R_{k+1} - R_k <= (v - v_g)(t_{k+1} - t_k). The printed line 5 sets
   // R_{k+1} = (v - v_g) dt, which forgets R_k; (50) solved for R_{k+1} gives R_k + (v - v_g) dt.
@@ -104,7 +107,9 @@ CircularOrbits circular_orbits(const std::vector<double>& times, const std::vect
           << " m (not visible from that altitude), so no orbit can be centred on it";
     else
       why << "R = " << radius[k] << " m (MaxRadius " << max_radii[k] << " m"
-          << (radius[k] < max_radii[k] ? ", lowered by the rate limit |dR/dt| <= v - v_g of Lemma 5" : "")
+          << (radius[k] < max_radii[k] ? (rate_margin > 0.0 ? ", lowered by the rate limit |dR/dt| <= (1 - rate_margin)(v - v_g)"
+                                                            : ", lowered by the rate limit |dR/dt| <= v - v_g of Lemma 5")
+                                       : "")
           << ") < r_min (1 + v_g/v)^2 = " << out.min_feasible_radius
           << " m: the orbit's curvature (1 + v_g/v)^2 / R = "
           << max_orbit_curvature(std::max(radius[k], 1e-300), uav.speed, poi_speed)

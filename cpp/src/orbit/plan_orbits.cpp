@@ -42,7 +42,7 @@ VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor
     plan.max_radii[k] = max_inscribed_radius(plan.polygons[k], centre);
   });
 
-  CircularOrbits orbits = circular_orbits(plan.times, plan.max_radii, uav, poi.speed());
+  CircularOrbits orbits = circular_orbits(plan.times, plan.max_radii, uav, poi.speed(), planning.rate_margin);
   plan.radii = std::move(orbits.radii);
   plan.radius_rates = std::move(orbits.radius_rates);
   plan.min_feasible_radius = orbits.min_feasible_radius;
@@ -77,7 +77,7 @@ std::string to_json(const VisibilityOrbitPlan& plan) {
     out["sensor"]["altitude_band"] = {plan.sensor.altitude_band->first, plan.sensor.altitude_band->second};
   out["planning"] = {{"spacing", plan.planning.spacing},         {"cutoff", plan.planning.cutoff},
                      {"resolution_deg", plan.planning.resolution_deg}, {"min_spacing", plan.planning.min_spacing},
-                     {"max_depth", plan.planning.max_depth}};
+                     {"max_depth", plan.planning.max_depth}, {"rate_margin", plan.planning.rate_margin}};
   nlohmann::json centers = nlohmann::json::array();
   for (double t : plan.times) {
     const Vec3 g = plan.poi.position(t);
@@ -130,6 +130,7 @@ VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
       plan.planning.resolution_deg = p.at("resolution_deg").get<double>();
       plan.planning.min_spacing = p.at("min_spacing").get<double>();
       plan.planning.max_depth = p.at("max_depth").get<int>();
+      plan.planning.rate_margin = p.value("rate_margin", 0.0);  // absent in files before it existed
       plan.planning.validate();
     }
     plan.arc_lengths = in.value("arc_lengths", std::vector<double>{});

@@ -113,9 +113,9 @@ class Planning:
     """
     Adaptive placement of visibility volumes (section IV.B).
     """
-    def __init__(self, *, spacing: typing.SupportsFloat | typing.SupportsIndex = 20.0, cutoff: typing.SupportsFloat | typing.SupportsIndex = 20000000.0, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_depth: typing.SupportsInt | typing.SupportsIndex = 8) -> None:
+    def __init__(self, *, spacing: typing.SupportsFloat | typing.SupportsIndex = 20.0, cutoff: typing.SupportsFloat | typing.SupportsIndex = 20000000.0, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_depth: typing.SupportsInt | typing.SupportsIndex = 8, rate_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         """
-        spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth.
+        spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin.
         """
     def validate(self) -> None:
         """
@@ -144,6 +144,14 @@ class Planning:
         """
     @min_spacing.setter
     def min_spacing(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def rate_margin(self) -> float:
+        """
+        Algorithm 1 keeps |dR/dt| <= (1 - rate_margin)(v - v_g); 0 = Lemma 5's limit (the paper)
+        """
+    @rate_margin.setter
+    def rate_margin(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def resolution_deg(self) -> float:
@@ -1254,9 +1262,9 @@ def check_closed_mesh(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.f
     """
     Check with CGAL that a triangle mesh is closed, 2-manifold, free of self-intersections, bounds a volume and is outward oriented.
     """
-def circular_orbits(times: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], max_radii: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], uav: Uav, poi_speed: typing.SupportsFloat | typing.SupportsIndex) -> CircularOrbits:
+def circular_orbits(times: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], max_radii: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], uav: Uav, poi_speed: typing.SupportsFloat | typing.SupportsIndex, rate_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> CircularOrbits:
     """
-    Algorithm 1 (lines 2-18): lower radii so that |dR/dt| <= v - v_g (Lemma 5), each limited radius built from its neighbour's, then check R_k >= r_min (1 + v_g/v)^2 (Lemma 6). VistrackError when the UAV is not faster than the POI.
+    Algorithm 1 (lines 2-18): lower radii so that |dR/dt| <= (1 - rate_margin)(v - v_g) (Lemma 5 for rate_margin = 0), each limited radius built from its neighbour's, then check R_k >= r_min (1 + v_g/v)^2 (Lemma 6). VistrackError when the UAV is not faster than the POI.
     """
 def constant_radius_plan(poi: PoiPath, radius: typing.SupportsFloat | typing.SupportsIndex, uav: Uav) -> OrbitPlan:
     """

@@ -46,6 +46,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--resolution", type=float, default=d.resolution_deg, help="VV ray grid step, degrees")
     p.add_argument("--min-spacing", type=float, default=d.min_spacing, help="smallest VV spacing, m")
     p.add_argument("--max-depth", type=int, default=d.max_depth, help="most halvings of one interval")
+    p.add_argument("--rate-margin", type=float, default=d.rate_margin,
+                   help="keep |dR/dt| <= (1 - margin)(v - v_g) in Algorithm 1 (default 0: Lemma 5's limit)")
     p.add_argument("--footprints", default=None,
                    help="GeoJSON footprints drawn under the orbits (default: buildings.geojson beside --map; "
                    "with --from-volumes, none unless given)")
@@ -79,7 +81,7 @@ def from_volumes(args: argparse.Namespace, out: Path) -> int:
     poi = _core.PoiPath.from_csv(args.path, args.poi_speed)
     uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude)
     start = time.perf_counter()
-    plan = saved_volumes.plan_from_volumes(args.from_volumes, poi, uav)
+    plan = saved_volumes.plan_from_volumes(args.from_volumes, poi, uav, args.rate_margin)
     summary = pl.plan_summary(plan)
     summary["seconds"] = time.perf_counter() - start
     summary["from_volumes"] = str(args.from_volumes)
@@ -108,7 +110,8 @@ def run(args: argparse.Namespace) -> int:
     uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude)
     sensor = _core.Sensor(d_max=args.d_max)
     planning = _core.Planning(spacing=args.spacing, cutoff=args.cutoff, resolution_deg=args.resolution,
-                              min_spacing=args.min_spacing, max_depth=args.max_depth)
+                              min_spacing=args.min_spacing, max_depth=args.max_depth,
+                              rate_margin=args.rate_margin)
     start = time.perf_counter()
     planner = _core.OrbitPlanner(env, sensor, args.resolution)
     bar = pl.Progress("adaptive VVs", not args.quiet)
