@@ -73,6 +73,13 @@ void bind_visibility(py::module_& m) {
       .def_property_readonly("faces", [](const VisibilityVolume& vv) { return vv.mesh.faces; },
                              "Mesh triangles (m, 3) int32, outward oriented.")
       .def_readonly("volume", &VisibilityVolume::volume, "Volume of the mesh (m^3).")
+      .def_readonly("mesh_row_sines", &VisibilityVolume::mesh_row_sines,
+                    "Star VVs (POI in the band): sines of the elevations of the mesh's vertex rows (grid row\n"
+                    "boundaries plus the creases where d_max meets the ground or a band plane); empty otherwise.")
+      .def_readonly("mesh_triangle_faces", &VisibilityVolume::mesh_triangle_faces,
+                    "Star VVs: faces[mesh_triangle_faces[t]:mesh_triangle_faces[t + 1]] are built over triangle slot\n"
+                    "t of the sphere of grid corners (two per quad, row-major); what the radial XOR reads. Empty\n"
+                    "otherwise.")
       .def("grid_volume", &VisibilityVolume::grid_volume,
            "Volume represented by the grid intervals: sum of solid_angle * (far^3 - near^3) / 3.")
       .def("save", &VisibilityVolume::save, py::arg("path"), "Write the mesh to .obj or .ply.")

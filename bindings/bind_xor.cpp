@@ -30,7 +30,7 @@ void bind_xor(py::module_& m) {
       "Volume (m^3) of the symmetric difference of two VVs, the metric d of eq. (56).\n\n"
       "frame: \"poi\" translates each VV by minus its POI first (open terrain gives 0), \"world\" compares\n"
       "them in place. method: \"radial\" is the exact XOR of the two meshes computed per direction\n"
-      "(star VVs built over one sphere of grid corners: what \"mesh\" gives, without CGAL); \"grid\" is\n"
+      "(star VVs on one direction grid: what \"mesh\" gives, without CGAL); \"grid\" is\n"
       "the per-direction integral sum(solid_angle * |A xor B| measured in r^2 dr) over the cell intervals\n"
       "of a shared direction grid; both need frame \"poi\" or equal POIs. \"mesh\" is CGAL corefinement\n"
       "of the closed meshes; \"auto\" takes radial, else grid, else mesh, as they apply.\n"
@@ -72,11 +72,11 @@ void bind_xor(py::module_& m) {
       },
       py::arg("a"), py::arg("b"),
       "The XOR volume of two star VVs' meshes, each about its own POI, exact per direction (faces\n"
-      "overlapped over each triangle of their common sphere, |r_a^3 - r_b^3| / 3 integrated in closed\n"
-      "form). VistrackError unless shares_radial_mesh(a, b).");
+      "overlapped, |r_a^3 - r_b^3| / 3 integrated in closed form between planes). VistrackError unless\n"
+      "shares_radial_mesh(a, b).");
   m.def("shares_radial_mesh", &shares_radial_mesh, py::arg("a"), py::arg("b"),
-        "True when both VVs are star VVs (POI in the band) whose meshes cover the same triangulated\n"
-        "sphere: same grid and the same vertex rows (the radial path applies).");
+        "True when both VVs are star VVs (POI in the band) on the same direction grid, with the record of\n"
+        "how their meshes cover the sphere of grid corners (the radial path applies; rows may differ).");
 }
 
 }  // namespace vistrack::bindings

@@ -327,21 +327,39 @@ TEST(RadialXor, IsAMetricAndZeroOnOpenTerrain) {
   EXPECT_NEAR(vt::radial_xor_volume(a, b), 0.0, 1e-9 * a.volume);
 }
 
+TEST(RadialXor, MeshesOnDifferentVertexRowsAreOverlappedToo) {
+  // POIs at different heights above the ground put the ground crease on different vertex rows
+  // (the campus's terrain does this): faces are then overlapped across rows, still exactly.
+  const vt::VisibilityScene scene(box_city());
+  const vt::VisibilityVolume low = vt::visibility_volume(scene, {0, 0, 0.5}, 150.0, std::nullopt, 3.0);
+  const vt::VisibilityVolume high = vt::visibility_volume(scene, {4, -3, 8.0}, 150.0, std::nullopt, 3.0);
+  ASSERT_NE(low.mesh_row_sines, high.mesh_row_sines);
+  ASSERT_TRUE(vt::shares_radial_mesh(low, high));
+  const double radial = vt::radial_xor_volume(low, high);
+  vt::MeshXorOptions nudge;
+  nudge.perturbation = 1e-6;
+  const double cgal = vt::mesh_xor_volume(about_poi(low), about_poi(high), nudge);
+  EXPECT_NEAR(radial, cgal, nudge.perturbation * 150.0 * (area(low.mesh) + area(high.mesh)));
+  EXPECT_NEAR(vt::radial_xor_volume(high, low), radial, 1e-9 * radial);
+  EXPECT_EQ(vt::xor_volume(low, high), radial);  // auto
+}
+
 TEST(RadialXor, FallsBackWhenTheMeshesDoNotShareASphere) {
   const vt::VisibilityScene scene(box_city());
   const vt::VisibilityVolume low = vt::visibility_volume(scene, {0, 0, 0.5}, 150.0, std::nullopt, 3.0);
-  // Another height above the ground puts the ground crease on another vertex row.
-  const vt::VisibilityVolume high = vt::visibility_volume(scene, {0, 0, 8.0}, 150.0, std::nullopt, 3.0);
   // A POI below the band: a shell mesh (near > 0), not a radial surface about the POI.
   const vt::VisibilityVolume shell = vt::visibility_volume(scene, {0, 0, 0.5}, 150.0, std::make_pair(20.0, 60.0), 3.0);
   const vt::VisibilityVolume coarse = vt::visibility_volume(scene, {0, 0, 0.5}, 150.0, std::nullopt, 4.0);
   EXPECT_TRUE(shell.mesh_triangle_faces.empty());
-  for (const vt::VisibilityVolume* other : {&high, &shell, &coarse}) {
+  for (const vt::VisibilityVolume* other : {&shell, &coarse}) {
     EXPECT_FALSE(vt::shares_radial_mesh(low, *other));
     EXPECT_THROW(vt::radial_xor_volume(low, *other), vt::Error);
   }
   // auto: the grid path where the grids agree, CGAL where they do not.
-  EXPECT_EQ(vt::xor_volume(low, high), vt::grid_xor_volume(low, high));
-  EXPECT_THROW(vt::xor_volume(low, high, vt::XorFrame::world, vt::XorMethod::radial), vt::Error);
+  EXPECT_EQ(vt::xor_volume(low, shell), vt::grid_xor_volume(low, shell));
+  // In the world frame two VVs about different POIs are not star-shaped about one point.
+  const vt::VisibilityVolume moved = vt::visibility_volume(scene, {5, 0, 0.5}, 150.0, std::nullopt, 3.0);
+  ASSERT_TRUE(vt::shares_radial_mesh(low, moved));
+  EXPECT_THROW(vt::xor_volume(low, moved, vt::XorFrame::world, vt::XorMethod::radial), vt::Error);
   EXPECT_EQ(vt::parse_xor_method("radial"), vt::XorMethod::radial);
 }

@@ -146,3 +146,20 @@ def test_open_terrain_is_zero_in_the_poi_frame_only(city):
     assert 0.3 * a.volume < world < 2 * a.volume
     with pytest.raises(vt.VistrackError, match="frame"):
         vt.xor_volume(a, b, frame="body")
+
+
+def test_radial_path_on_uneven_terrain_equals_cgal(campus):
+    """On the campus the POI's height above the ground plane changes along the path, so two VVs put
+    the ground crease on different vertex rows: the radial path then overlaps faces across rows,
+    and still equals CGAL on the same meshes (allowance: the nudge's bound, 1e-6 rad x d_max x the
+    meshes' area, about 1e-4 of the XOR here)."""
+    env = vt.Environment.from_mesh(str(campus / "campus.obj"), "y")
+    scene = vt._core.VisibilityScene(env)
+    path = vt.PoiPath.from_csv(str(campus / "poi_path.csv"), 0.35)
+    ga, gb = (np.ravel(scene.poi_on_surface(np.ravel(path.position(t)))) for t in (0.0, 30.0))
+    a = vt._core.visibility_volume(scene, ga, 100.0, None, 1.0)
+    b = vt._core.visibility_volume(scene, gb, 100.0, None, 1.0)
+    assert list(a.mesh_row_sines) != list(b.mesh_row_sines) and vt.shares_radial_mesh(a, b)
+    radial = vt.xor_volume(a, b)
+    assert radial == vt.radial_xor_volume(a, b)
+    assert radial == pytest.approx(vt.xor_volume(a, b, method="mesh", time_limit=300.0), rel=2e-4)

@@ -98,14 +98,15 @@ bool shares_direction_grid(const VisibilityVolume& a, const VisibilityVolume& b)
 // Error unless shares_direction_grid(a, b).
 double grid_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b);
 
-// True when both VVs are star VVs whose meshes cover one triangulated sphere (same grid, same
-// vertex rows: VisibilityVolume::mesh_row_sines and mesh_triangle_faces).
+// True when both VVs are star VVs on the same direction grid whose meshes say how they cover the
+// sphere of grid corners (VisibilityVolume::mesh_row_sines and mesh_triangle_faces); their vertex
+// rows may differ.
 bool shares_radial_mesh(const VisibilityVolume& a, const VisibilityVolume& b);
 
 // The XOR volume of the two meshes, each about its own POI (frame "poi"), exact per direction:
-// over each triangle slot of the common sphere the faces of a and b are overlapped (clipping
-// cones by planes through the POI) and |r_a^3 - r_b^3| / 3 is integrated in closed form where both
-// are planes. The same number as mesh_xor_volume on the translated meshes, without CGAL (5 ms
+// the faces of a and b are overlapped (clipping cones by planes through the POI; slot against slot
+// when the vertex rows agree, across the rows of each column when not) and |r_a^3 - r_b^3| / 3 is
+// integrated in closed form where both are planes. The same number as mesh_xor_volume on the translated meshes, without CGAL (5 ms
 // instead of 16 s for a 1-degree Charlotte pair). Error unless shares_radial_mesh(a, b).
 double radial_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b);
 

@@ -537,6 +537,19 @@ class VisibilityVolume:
         The direction grid.
         """
     @property
+    def mesh_row_sines(self) -> list[float]:
+        """
+        Star VVs (POI in the band): sines of the elevations of the mesh's vertex rows (grid row
+        boundaries plus the creases where d_max meets the ground or a band plane); empty otherwise.
+        """
+    @property
+    def mesh_triangle_faces(self) -> list[int]:
+        """
+        Star VVs: faces[mesh_triangle_faces[t]:mesh_triangle_faces[t + 1]] are built over triangle slot
+        t of the sphere of grid corners (two per quad, row-major); what the radial XOR reads. Empty
+        otherwise.
+        """
+    @property
     def near(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         Start of the visible interval per cell, (num_elevation, num_azimuth) metres.
@@ -1351,8 +1364,8 @@ def radial_error_rate(field: VectorField, orbit: OrbitState, heading_error: typi
 def radial_xor_volume(a: VisibilityVolume, b: VisibilityVolume) -> float:
     """
     The XOR volume of two star VVs' meshes, each about its own POI, exact per direction (faces
-    overlapped over each triangle of their common sphere, |r_a^3 - r_b^3| / 3 integrated in closed
-    form). VistrackError unless shares_radial_mesh(a, b).
+    overlapped, |r_a^3 - r_b^3| / 3 integrated in closed form between planes). VistrackError unless
+    shares_radial_mesh(a, b).
     """
 def sample_vector_field(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], orbit: OrbitState, gains: GuidanceGains) -> tuple[typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"], typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]]:
     """
@@ -1368,8 +1381,8 @@ def shares_direction_grid(a: VisibilityVolume, b: VisibilityVolume) -> bool:
     """
 def shares_radial_mesh(a: VisibilityVolume, b: VisibilityVolume) -> bool:
     """
-    True when both VVs are star VVs (POI in the band) whose meshes cover the same triangulated
-    sphere: same grid and the same vertex rows (the radial path applies).
+    True when both VVs are star VVs (POI in the band) on the same direction grid, with the record of
+    how their meshes cover the sphere of grid corners (the radial path applies; rows may differ).
     """
 def simulate(plan: OrbitPlan, uav: Uav, x0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], control: Control, env: typing.Any = None, options: SimulationOptions = ..., *, line_of_sight: collections.abc.Callable | None = None, fixed_step: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> SimulationResult:
     """
@@ -1417,7 +1430,7 @@ def xor_volume(a: VisibilityVolume, b: VisibilityVolume, frame: str = 'poi', met
     
     frame: "poi" translates each VV by minus its POI first (open terrain gives 0), "world" compares
     them in place. method: "radial" is the exact XOR of the two meshes computed per direction
-    (star VVs built over one sphere of grid corners: what "mesh" gives, without CGAL); "grid" is
+    (star VVs on one direction grid: what "mesh" gives, without CGAL); "grid" is
     the per-direction integral sum(solid_angle * |A xor B| measured in r^2 dr) over the cell intervals
     of a shared direction grid; both need frame "poi" or equal POIs. "mesh" is CGAL corefinement
     of the closed meshes; "auto" takes radial, else grid, else mesh, as they apply.
