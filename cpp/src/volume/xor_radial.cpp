@@ -210,8 +210,8 @@ bool shares_radial_mesh(const VisibilityVolume& a, const VisibilityVolume& b) {
 double radial_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b) {
   if (!shares_radial_mesh(a, b))
     detail::fail_field("b.mesh_row_sines", std::to_string(b.mesh_row_sines.size()) + " rows",
-                       "the meshes are not built over one triangulated sphere (radial XOR needs two star VVs on "
-                       "the same grid with the same vertex rows)");
+                       "the radial XOR needs two star VVs (POI inside the band) on the same direction grid, "
+                       "with the record of how their meshes cover it (mesh_row_sines, mesh_triangle_faces)");
   bool same_rows = a.mesh_row_sines.size() == b.mesh_row_sines.size();
   for (std::size_t k = 0; same_rows && k < a.mesh_row_sines.size(); ++k)
     same_rows = std::abs(a.mesh_row_sines[k] - b.mesh_row_sines[k]) <= 1e-12;
