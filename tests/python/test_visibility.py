@@ -247,7 +247,7 @@ def path_pois(scene, csv, times):
 def test_charlotte_mesh_holds_the_volume_of_a_fine_grid(charlotte, charlotte_scene):
     """The 1-degree mesh (corner rays, walls at the silhouettes) against the per-direction
     volume of a 0.2-degree grid: within 0.2 % (measured <= 0.05 %; the corner mesh without walls
-    held 1-3 % less)."""
+    held 0.2-2.4 % less)."""
     pois, _ = path_pois(charlotte_scene, charlotte / "paths" / "paper_slow.csv", [0.0, 20.0, 45.0])
     for g in pois:
         reference = vt.visibility_volume(charlotte_scene, g, 400.0, None, 0.2).grid_volume()

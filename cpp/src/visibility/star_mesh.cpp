@@ -4,7 +4,7 @@
 // Why walls: at a silhouette (an occluder in front of what lies behind it) r(w) jumps from r1 to
 // r2. A mesh edge that crosses the jump and interpolates r linearly holds
 // (r1 + r2)(r1 - r2)^2 / 4 less of r^3 than the step does, so a plain corner mesh of a Charlotte
-// VV holds 1-3 % less volume than the per-direction intervals. Each such edge is bisected with
+// VV holds 0.2-2.4 % less volume than the per-direction intervals. Each such edge is bisected with
 // more rays until the jump is pinned to 1/2^kBisections of the edge, and the triangles on both
 // sides share a radial wall there.
 #include <algorithm>
