@@ -80,7 +80,7 @@ from ._core import (  # guidance, integrator and closed loop (sections V-VI)
 )
 from .pipeline import RunResult, run
 from .scenario import Scenario
-from .visibility import visibility_scene, visibility_volume, visibility_volumes
+from .visibility import polygon_agreement, visibility_scene, visibility_volume, visibility_volumes
 
 try:
     __version__ = _version("vistrack")
@@ -101,5 +101,6 @@ __all__ = [
     "radial_error_rate", "radial_xor_volume", "run", "sample_vector_field", "segment_boundaries",
     "shares_direction_grid", "shares_radial_mesh",
     "simulate", "sinc", "slice_mesh", "solve_ode", "steering", "tune_turn_rate", "vector_field",
-    "visibility_scene", "visibility_volume", "visibility_volumes", "wrap_to_pi", "xor_volume",
+    "polygon_agreement", "visibility_scene", "visibility_volume", "visibility_volumes", "wrap_to_pi",
+    "xor_volume",
 ]

@@ -59,3 +59,25 @@ def visibility_volumes(
     return _core.visibility_volumes(
         visibility_scene(env), points, float(d_max), altitude_band, float(resolution_deg)
     )
+
+
+def polygon_agreement(scene: VisibilityScene, vv: VisibilityVolume, altitude: float, step: float = 1.0) -> float:
+    """How well the VP of ``vv`` at world z = ``altitude`` matches eq. (4) itself: the IoU of the
+    polygon's area and the lattice points (spacing ``step`` m, offset from the POI's vertical,
+    within d_max of g) that ``scene.line_of_sight`` finds visible from g. 1 is perfect; points on
+    the lattice are the sample, so values near 1 are resolved to about step / d_max."""
+    import shapely  # a dependency of the package; imported here to keep `import vistrack` light
+
+    if not (step > 0.0):
+        raise _core.VistrackError(f"step = {step}: must be > 0")
+    g = np.asarray(vv.poi, dtype=float)
+    region = shapely.union_all([shapely.Polygon(np.asarray(p.outer), [np.asarray(r) for r in p.holes])
+                                for p in _core.plane_visibility_polygon(vv, altitude)])
+    offsets = np.arange(-vv.d_max, vv.d_max, step) + 0.37 * step
+    x, y = np.meshgrid(g[0] + offsets, g[1] + offsets)
+    points = np.stack([x.ravel(), y.ravel(), np.full(x.size, float(altitude))], axis=1)
+    points = points[np.linalg.norm(points - g, axis=1) <= vv.d_max]
+    truth = np.asarray(scene.line_of_sight(np.repeat(g[None], len(points), 0), points)).ravel()
+    ours = shapely.contains_xy(region, points[:, 0], points[:, 1])
+    either = np.sum(truth | ours)
+    return float(np.sum(truth & ours) / either) if either else 1.0

@@ -131,6 +131,25 @@ TEST(DirectionGrid, SampleRaysAreStaggeredInsideTheirCells) {
   }
 }
 
+// vv.far[k] is the distance along grid.direction(i, j): the VV computes its rays with trig tables
+// (angle addition), DirectionGrid::direction directly; a wall x = 40 facing g checks both angles.
+TEST(VisibilityVolume, CellIntervalsLieAlongTheGridsDirections) {
+  const VisibilityScene scene(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)}}));
+  const VisibilityVolume vv = visibility_volume(scene, Vec3(0, 0, 0.5), 200.0, std::nullopt, 1.0);
+  int checked = 0;
+  for (int i = 0; i < vv.grid.num_elevation; ++i)
+    for (int j = 0; j < vv.grid.num_azimuth; ++j) {
+      const Vec3 d = vv.grid.direction(i, j);
+      if (!(d.x() > 0.0)) continue;
+      const double t = 40.0 / d.x();
+      const Vec3 hit = Vec3(0, 0, 0.5) + t * d;
+      if (std::abs(hit.y()) > 19.0 || hit.z() < 1.0 || hit.z() > 29.0) continue;  // well inside the face
+      EXPECT_NEAR(vv.far[static_cast<std::size_t>(i) * vv.grid.num_azimuth + j], t, 1e-3) << i << ", " << j;
+      ++checked;
+    }
+  EXPECT_GT(checked, 500);
+}
+
 // At a silhouette the corner mesh gets a radial wall where bisection puts the jump, and the crease
 // where the ground meets the d_max sphere just below the horizon gets its own vertex row: the mesh
 // then holds the same volume as a fine grid (without walls it held 0.5-1.4 % less here, and a

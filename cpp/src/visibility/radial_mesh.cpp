@@ -73,25 +73,26 @@ Vec3 point_on(const Setup& s, const Vec3& d, double t, Surface surface) {
 }
 
 std::array<int, 3> SphereGrid::corners(int t) const {
-    const int q = t / 2;
-    const int i = q / na;
-    const int j = q % na;
-    if (t % 2 == 0) return {vertex(i, j), vertex(i, j + 1), vertex(i + 1, j + 1)};
-    return {vertex(i, j), vertex(i + 1, j + 1), vertex(i + 1, j)};
+  const int q = t / 2;
+  const int i = q / na;
+  const int j = q % na;
+  if (t % 2 == 0) return {vertex(i, j), vertex(i, j + 1), vertex(i + 1, j + 1)};
+  return {vertex(i, j), vertex(i + 1, j + 1), vertex(i + 1, j)};
+}
+
+int SphereGrid::neighbour(int t, int e) const {
+  const int q = t / 2;
+  const int i = q / na;
+  const int j = q % na;
+  if (t % 2 == 0) {
+    if (e == 0) return tb(i - 1, j);
+    if (e == 1) return i <= ne - 2 ? tb(i, j + 1) : ta(ne - 1, j + 1);
+    return i <= ne - 2 ? tb(i, j) : ta(ne - 1, j - 1);
   }
-    int SphereGrid::neighbour(int t, int e) const {
-    const int q = t / 2;
-    const int i = q / na;
-    const int j = q % na;
-    if (t % 2 == 0) {
-      if (e == 0) return tb(i - 1, j);
-      if (e == 1) return i <= ne - 2 ? tb(i, j + 1) : ta(ne - 1, j + 1);
-      return i <= ne - 2 ? tb(i, j) : ta(ne - 1, j - 1);
-    }
-    if (e == 0) return i >= 1 ? ta(i, j) : tb(0, j + 1);
-    if (e == 1) return ta(i + 1, j);
-    return i >= 1 ? ta(i, j - 1) : tb(0, j - 1);
-  }
+  if (e == 0) return i >= 1 ? ta(i, j) : tb(0, j + 1);
+  if (e == 1) return ta(i + 1, j);
+  return i >= 1 ? ta(i, j - 1) : tb(0, j - 1);
+}
 
 int SphereGrid::ring(int v, std::array<int, 6>& out, std::vector<int>& pole_ring) const {
   if (v == 0 || v == num_vertices() - 1) {

@@ -228,9 +228,6 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Dir
     }
   }
 
-  std::vector<char> has_jump(static_cast<std::size_t>(nt), 0);
-  for (int t : jump_triangles) has_jump[t] = 1;
-
   triangle_faces.assign(static_cast<std::size_t>(nt) + 1, 0);
   // Corners, apex, two vertices per jump and a centre per triangle with a jump ending in it.
   const auto expected_points = static_cast<Eigen::Index>(nv + 1 + 2 * jumps.size() + jump_triangles.size());
@@ -256,7 +253,7 @@ TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Dir
   // g: the fan is then exact).
   auto emit = [&](int t, int a, int b, int c) {
     const std::array<int, 3> corners{a, b, c};
-    const std::array<Jump*, 3> edge = has_jump[t] ? jumps_of(t) : std::array<Jump*, 3>{};
+    const std::array<Jump*, 3> edge = jumps_of(t);
     const int count = (edge[0] != nullptr) + (edge[1] != nullptr) + (edge[2] != nullptr);
     if (count == 0) {
       out.face(outer_of(a), outer_of(b), outer_of(c));

@@ -1,0 +1,97 @@
+"""The accuracy numbers the README quotes, reproduced on Charlotte (and the campus):
+
+1. XOR paths: the grid path (cell intervals) against the radial path (the exact XOR of the two
+   meshes, equal to CGAL on them: tests/python/test_xor.py) on every pair of VVs 20, 10 and 5 m
+   apart along paper_slow and paper_small, 1-degree grids.
+2. VVs: the 1-degree mesh volume against the per-direction volume of a 0.125-degree grid, and
+   VPs at 20 and 50 m (paper_small, d_max 100 m) against line-of-sight queries on a 1 m lattice.
+3. Example 1's tracking against Algorithm 1's rate margin (planning.rate_margin).
+
+    VISTRACK_BUILD_DIR=build/dev python3 bench/accuracy.py [--skip-tracking]
+
+Charlotte geometry © OpenStreetMap contributors (ODbL).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+if os.environ.get("VISTRACK_BUILD_DIR"):
+    sys.path.insert(0, str(REPO / "tests" / "python"))
+    import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
+
+import numpy as np
+
+import vistrack as vt
+from vistrack.visibility import polygon_agreement
+
+DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
+PATHS = (("paper_slow", 400.0), ("paper_small", 100.0))
+
+
+def path_pois(scene, name: str, step: float) -> np.ndarray:
+    path = vt.PoiPath.from_csv(str(DATA / "charlotte" / "paths" / f"{name}.csv"), 5.0)
+    arc = np.arange(0.0, path.length + 1e-9, step)
+    return np.array([np.ravel(scene.poi_on_surface(np.ravel(path.position(s / 5.0)))) for s in arc])
+
+
+def xor_paths(scene) -> None:
+    print("1. grid XOR path against the radial (exact mesh) path, 1-degree VVs, POI frame")
+    for step in (20.0, 10.0, 5.0):
+        for name, d_max in PATHS:
+            volumes = vt.visibility_volumes(scene, path_pois(scene, name, step), d_max, None, 1.0)
+            errors = np.abs([vt.xor_volume(a, b, method="grid") / vt.xor_volume(a, b, method="radial") - 1
+                             for a, b in zip(volumes[:-1], volumes[1:])])
+            print(f"   {name:11s} pairs {step:4.0f} m apart: {len(errors):3d} pairs, "
+                  f"|grid / radial - 1| median {100 * np.median(errors):.2f} %, max {100 * errors.max():.2f} %")
+
+
+def volumes_and_polygons(scene) -> None:
+    print("2. 1-degree VV mesh volume against a 0.125-degree grid (paper_slow, d_max 400 m)")
+    for g in path_pois(scene, "paper_slow", 80.0)[:3]:
+        reference = vt.visibility_volume(scene, g, 400.0, None, 0.125).grid_volume()
+        vv = vt.visibility_volume(scene, g, 400.0, None, 1.0)
+        print(f"   g ({g[0]:7.1f}, {g[1]:7.1f}): mesh {100 * (vv.volume / reference - 1):+.3f} %, "
+              f"grid {100 * (vv.grid_volume() / reference - 1):+.3f} %")
+    path = vt.PoiPath.from_csv(str(DATA / "charlotte" / "paths" / "paper_small.csv"), 5.0)
+    ious = []
+    for t in np.linspace(0.0, path.duration, 8):
+        vv = vt.visibility_volume(scene, np.ravel(scene.poi_on_surface(np.ravel(path.position(t)))), 100.0, None, 1.0)
+        ious += [polygon_agreement(scene, vv, h) for h in (20.0, 50.0)]
+    print(f"   VPs at 20/50 m of 8 paper_small VVs against line of sight: IoU {min(ious):.4f}-{max(ious):.4f}")
+
+
+def tracking() -> None:
+    print("3. Example 1 (examples/charlotte_paper_slow.yaml) against planning.rate_margin")
+    for margin in (0.0, 0.05, 0.1, 0.2):
+        scenario = vt.Scenario.load(REPO / "examples" / "charlotte_paper_slow.yaml")
+        scenario.planning.rate_margin = margin
+        result = vt.run(scenario)
+        simulation = result.metrics["simulation"]
+        print(f"   margin {margin:4.2f}: R {result.plan.radii[0]:.1f} -> {result.plan.radii[-1]:.1f} m, "
+              f"radial error after settling <= {simulation['radial_error_after_max_abs_m']:.1f} m, "
+              f"POI visible {100 * simulation['visibility_fraction']:.1f} %")
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--skip-tracking", action="store_true", help="leave out section 3 (four closed-loop runs)")
+    args = parser.parse_args()
+    mesh = DATA / "charlotte" / "uptown_charlotte.obj"
+    if not mesh.exists():
+        print(f"real data not found under {DATA}: skipping")
+        return 0
+    scene = vt.VisibilityScene(vt.Environment.from_mesh(str(mesh), up="y"))
+    xor_paths(scene)
+    volumes_and_polygons(scene)
+    if not args.skip_tracking:
+        tracking()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
