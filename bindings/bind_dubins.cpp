@@ -72,7 +72,7 @@ TargetCircle make_circle(const Vec2& center, double radius, const std::string& d
   TargetCircle circle;
   circle.center = center;
   circle.radius = radius;
-  circle.direction = circle_direction_from_string(direction);
+  circle.direction = circulation_from_string(direction);
   circle.validate();
   return circle;
 }

@@ -8,14 +8,14 @@ closed-loop simulation with line-of-sight evaluation (sections V-VI) -> constant
 from __future__ import annotations
 
 import math
-import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable, Optional
+from typing import Any, Optional
 
 import numpy as np
 
 from . import _core
+from .progress import Stages
 from .scenario import Scenario
 
 __all__ = ["RunResult", "run", "start_on_orbit"]
@@ -44,38 +44,6 @@ class RunResult:
     timings: dict[str, float] = field(default_factory=dict)
 
 
-class _Stages:
-    """Times each stage and shows one progress line (or bar) per stage unless quiet."""
-
-    def __init__(self, quiet: bool) -> None:
-        self.quiet = quiet
-        self.timings: dict[str, float] = {}
-
-    def run(self, name: str, work: Callable[..., Any], *args: Any, bar_unit: str | None = None) -> Any:
-        start = time.perf_counter()
-        bar = None
-        if bar_unit is not None and not self.quiet:
-            from tqdm import tqdm
-
-            bar = tqdm(total=0, desc=name, unit=bar_unit, leave=True, dynamic_ncols=True)
-        elif not self.quiet:
-            print(f"{name} ...", flush=True)
-
-        def progress(done: int, total: int) -> None:
-            if bar is not None:
-                bar.total = total
-                bar.n = done
-                bar.refresh()
-
-        try:
-            result = work(*args, progress) if bar_unit is not None else work(*args)
-        finally:
-            if bar is not None:
-                bar.close()
-        self.timings[name] = time.perf_counter() - start
-        return result
-
-
 def start_on_orbit(plan: Any, control: Any) -> np.ndarray:
     """A start on the first orbit, east of the POI, heading along the circulation."""
     g = np.asarray(plan.poi.position(0.0))[:2]
@@ -87,7 +55,7 @@ def start_on_orbit(plan: Any, control: Any) -> np.ndarray:
 def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True,
         cache_dir: str | Path | None = None) -> RunResult:
     """Run a scenario end to end; with ``out``, also write the report folder there."""
-    stages = _Stages(quiet)
+    stages = Stages(quiet)
     env = stages.run("environment", scenario.environment.load)
     poi = stages.run("POI path", scenario.poi.build, env)
     planner = stages.run("visibility scene", _planner, env, scenario, cache_dir)

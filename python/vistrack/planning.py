@@ -16,6 +16,7 @@ from typing import Sequence
 import numpy as np
 
 from . import _core
+from .progress import Progress
 from .plotting import OSM_CREDIT, evenly_spaced_indices, plot_buildings, pyplot
 
 
@@ -26,28 +27,6 @@ def load_environment(path: str | Path, up: str = "y") -> "_core.Environment":
     if path.suffix.lower() in (".geojson", ".json"):
         return _core.Environment.from_geojson(str(path))
     return _core.Environment.from_mesh(str(path), up)
-
-
-class Progress:
-    """A tqdm bar fed by the core's progress(done, total) callback (silent when disabled)."""
-
-    def __init__(self, description: str, enabled: bool = True) -> None:
-        self.bar = None
-        if enabled:
-            from tqdm import tqdm
-
-            self.bar = tqdm(total=0, desc=description, unit="VV", leave=False)
-
-    def __call__(self, done: int, total: int) -> None:
-        if self.bar is None:
-            return
-        self.bar.total = total
-        self.bar.n = done
-        self.bar.refresh()
-
-    def close(self) -> None:
-        if self.bar is not None:
-            self.bar.close()
 
 
 def metric_along_path(

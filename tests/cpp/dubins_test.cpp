@@ -367,7 +367,7 @@ TEST(DubinsErrors, NamesTheField) {
   EXPECT_NE(message([&] { dubins_shortest_path({0, nan, 0}, {1, 1, 0}, 1.0); }).find("q0.y"), std::string::npos);
   EXPECT_NE(message([&] { dubins_shortest_path({0, 0, 0}, {1, 1, nan}, 1.0); }).find("q1.psi"), std::string::npos);
   EXPECT_NE(message([&] { dubins_word_from_string("LLL"); }).find("word"), std::string::npos);
-  EXPECT_NE(message([&] { circle_direction_from_string("up"); }).find("direction"), std::string::npos);
+  EXPECT_NE(message([&] { circulation_from_string("up"); }).find("direction"), std::string::npos);
   EXPECT_NE(message([&] { dubins_path({0, 0, 0}, {100, 0, 0}, 1.0, DubinsWord::LRL); }).find("word"),
             std::string::npos);
   const DubinsPath p = dubins_shortest_path({0, 0, 0}, {3, 0, 0}, 1.0);

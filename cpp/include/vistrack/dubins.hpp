@@ -50,16 +50,12 @@ constexpr int kDubinsWordCount = 6;
 
 enum class DubinsSegment : std::uint8_t { Left = 0, Straight = 1, Right = 2 };
 
-// Travel direction on a circle.
-enum class CircleDirection : std::uint8_t { CounterClockwise = 0, Clockwise = 1 };
+// Travel direction on a circle (the one Circulation of geometry.hpp).
+using CircleDirection = Circulation;
 
 std::string to_string(DubinsWord word);
-std::string to_string(CircleDirection direction);
 // "LSL", ... (case-insensitive); vistrack::Error naming `field` otherwise.
 DubinsWord dubins_word_from_string(const std::string& text, const std::string& field = "word");
-// "ccw"/"counterclockwise"/"cw"/"clockwise" (case-insensitive); vistrack::Error otherwise.
-CircleDirection circle_direction_from_string(const std::string& text,
-                                             const std::string& field = "direction");
 std::array<DubinsSegment, 3> segment_types(DubinsWord word);
 
 // One Dubins path: start, goal, turn radius, word and the three segment lengths (m).

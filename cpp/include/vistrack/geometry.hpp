@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace vistrack {
@@ -17,6 +18,15 @@ using Faces = Eigen::Matrix<std::int32_t, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
+
+// Direction of travel around a circle: orbits, loiters, turns, a target on a circle.
+enum class Circulation : std::uint8_t { CounterClockwise = 0, Clockwise = 1 };
+// +1 counter-clockwise, -1 clockwise: the sign of the turn rate along the circle.
+constexpr int sign(Circulation circulation) { return circulation == Circulation::Clockwise ? -1 : +1; }
+// "ccw" or "cw", the spelling at the Python boundary and in files.
+std::string to_string(Circulation circulation);
+// "ccw"/"counterclockwise"/"cw"/"clockwise" (case-insensitive); vistrack::Error naming `field`.
+Circulation circulation_from_string(const std::string& text, const std::string& field = "direction");
 
 // Angle in (-pi, pi].
 double wrap_to_pi(double angle);

@@ -56,23 +56,11 @@ void advance(Configuration& q, DubinsSegment type, double distance, double rho) 
 
 std::string to_string(DubinsWord word) { return kWordNames[static_cast<std::size_t>(word)]; }
 
-std::string to_string(CircleDirection direction) {
-  return direction == CircleDirection::Clockwise ? "cw" : "ccw";
-}
-
 DubinsWord dubins_word_from_string(const std::string& text, const std::string& field) {
   const std::string key = upper(text);
   for (std::size_t k = 0; k < kWordNames.size(); ++k)
     if (key == kWordNames[k]) return static_cast<DubinsWord>(k);
   detail::fail_field(field, "'" + text + "'", "unknown Dubins word (LSL, LSR, RSL, RSR, RLR, LRL)");
-}
-
-CircleDirection circle_direction_from_string(const std::string& text, const std::string& field) {
-  const std::string key = upper(text);
-  if (key == "CW" || key == "CLOCKWISE") return CircleDirection::Clockwise;
-  if (key == "CCW" || key == "COUNTERCLOCKWISE" || key == "COUNTER-CLOCKWISE" || key == "ANTICLOCKWISE")
-    return CircleDirection::CounterClockwise;
-  detail::fail_field(field, "'" + text + "'", "unknown direction (use 'cw' or 'ccw')");
 }
 
 std::array<DubinsSegment, 3> segment_types(DubinsWord word) {

@@ -170,7 +170,7 @@ def plot_plan(env: vt.Environment, shown: list, args: argparse.Namespace, path: 
     """Figure 5 style: VPs at h_UAV, inscribed circles and POIs over the building footprints."""
     from matplotlib.patches import Circle, PathPatch
 
-    from ..plotting import _footprint_path, new_figure, plot_buildings, save_figure
+    from ..plotting import footprint_path, new_figure, plot_buildings, save_figure
 
     fig, ax = new_figure((9.0, 8.0))
     plot_buildings(ax, env, cmap="Blues", edgecolor="tab:blue")
@@ -180,7 +180,7 @@ def plot_plan(env: vt.Environment, shown: list, args: argparse.Namespace, path: 
     for color, k in zip(colors, picks):
         poi, polygons, radius = shown[k]
         for polygon in polygons:
-            ax.add_patch(PathPatch(_footprint_path(polygon.outer, polygon.holes), facecolor=color, alpha=0.18,
+            ax.add_patch(PathPatch(footprint_path(polygon.outer, polygon.holes), facecolor=color, alpha=0.18,
                                    edgecolor=color, linewidth=1.2, zorder=3))
     for k, (poi, polygons, radius) in enumerate(shown):
         color = colors[0] if k == 0 else colors[1] if k == len(shown) - 1 else "0.35"

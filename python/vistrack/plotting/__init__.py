@@ -1,0 +1,17 @@
+"""Figures, one module per figure family. Everything draws on the Agg backend (no display).
+
+- ``common``: pyplot, figure creation and saving, the OpenStreetMap credit
+- ``city``: buildings, roads and the POI path from above
+- ``volumes``: visibility volumes in 3D
+"""
+
+from __future__ import annotations
+
+from .city import footprint_path, plot_buildings, plot_city, plot_poi_path, plot_roads
+from .common import OSM_CREDIT, add_credit, evenly_spaced_indices, new_figure, pyplot, save_figure
+from .volumes import figure_volume_3d
+
+__all__ = [
+    "OSM_CREDIT", "add_credit", "evenly_spaced_indices", "figure_volume_3d", "footprint_path", "new_figure",
+    "plot_buildings", "plot_city", "plot_poi_path", "plot_roads", "pyplot", "save_figure",
+]
