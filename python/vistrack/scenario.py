@@ -10,15 +10,15 @@ Relative paths inside a scenario file are resolved against the file's own folder
 
 from __future__ import annotations
 
-import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable, Mapping, Sequence
+from typing import Any, Mapping, Sequence
 
 import yaml
 
-from ._core import Control, Planning, Sensor, SimulationOptions, Uav, VistrackError
+from ._core import Control, Planning, Sensor, SimulationOptions, Uav
+from .schema import apply_checks, fail, integer, number, positive, resolve_path, section
 
 __all__ = ["Scenario", "EnvironmentSpec", "PoiSpec", "default_scenario_text", "road_route"]
 
@@ -35,55 +35,6 @@ def road_route(roads: Any, via_points: Sequence[Sequence[float]]) -> list[int]:
     for a, b in zip(via, via[1:]):
         nodes += roads.shortest_route(a, b)[1:]
     return nodes
-
-
-def _fail(key: str, value: Any, allowed: str) -> VistrackError:
-    return VistrackError(f"{key} = {value!r}: {allowed}")
-
-
-def _number(key: str, value: Any, *, low: float | None = None, high: float | None = None,
-            low_open: bool = False) -> float:
-    # YAML 1.1 reads 20e6 (no dot) as a string: accept any text float() accepts.
-    if isinstance(value, bool):
-        raise _fail(key, value, "must be a number")
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        raise _fail(key, value, "must be a number") from None
-    if not math.isfinite(number):
-        raise _fail(key, value, "must be a finite number")
-    if low is not None and (number < low or (low_open and number == low)):
-        bound = f"> {low}" if low_open else f">= {low}"
-        raise _fail(key, value, f"must be {bound}" + (f" and <= {high}" if high is not None else ""))
-    if high is not None and number > high:
-        raise _fail(key, value, f"must be <= {high}")
-    return number
-
-
-def _integer(key: str, value: Any, low: int, high: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, int):
-        raise _fail(key, value, f"must be an integer in [{low}, {high}]")
-    if not low <= value <= high:
-        raise _fail(key, value, f"must be an integer in [{low}, {high}]")
-    return value
-
-
-def _section(data: Mapping[str, Any], name: str, allowed: set[str]) -> dict[str, Any]:
-    section = data.get(name) or {}
-    if not isinstance(section, Mapping):
-        raise _fail(name, section, "must be a mapping of keys to values")
-    unknown = sorted(set(section) - allowed)
-    if unknown:
-        raise _fail(f"{name}.{unknown[0]}", section[unknown[0]],
-                    f"unknown key; allowed keys in {name}: {', '.join(sorted(allowed))}")
-    return dict(section)
-
-
-def _resolve(base: Path, value: Any, key: str) -> Path:
-    if not isinstance(value, (str, Path)) or not str(value):
-        raise _fail(key, value, "must be a file path")
-    path = Path(value).expanduser()
-    return (path if path.is_absolute() else base / path).resolve()
 
 
 @dataclass
@@ -160,11 +111,11 @@ class Scenario:
         try:
             text = path.read_text(encoding="utf-8")
         except OSError as error:
-            raise _fail("scenario", str(path), f"cannot read the file ({error.strerror})") from None
+            raise fail("scenario", str(path), f"cannot read the file ({error.strerror})") from None
         try:
             data = yaml.safe_load(text)
         except yaml.YAMLError as error:
-            raise _fail("scenario", str(path), f"not valid YAML ({error})") from None
+            raise fail("scenario", str(path), f"not valid YAML ({error})") from None
         scenario = cls.from_dict(data if data is not None else {}, base=path.parent)
         scenario.source = path
         if scenario.name == "scenario":
@@ -181,30 +132,30 @@ class Scenario:
         """Validate a scenario given as a mapping (the parsed YAML)."""
         base = Path(base)
         if not isinstance(data, Mapping):
-            raise _fail("scenario", data, "must be a mapping with sections " + ", ".join(cls.SECTIONS))
+            raise fail("scenario", data, "must be a mapping with sections " + ", ".join(cls.SECTIONS))
         unknown = sorted(set(data) - set(cls.SECTIONS))
         if unknown:
-            raise _fail(unknown[0], data[unknown[0]],
+            raise fail(unknown[0], data[unknown[0]],
                         "unknown section; allowed sections: " + ", ".join(cls.SECTIONS))
         scenario = cls()
         if "name" in data:
             name = data["name"]
             if not isinstance(name, str) or not re.fullmatch(r"[\w.-]+", name) or set(name) == {"."}:
-                raise _fail("name", name, "must be a non-empty name of letters, digits, '_', '-' or '.' "
+                raise fail("name", name, "must be a non-empty name of letters, digits, '_', '-' or '.' "
                                           "(it names the output folder)")
             scenario.name = data["name"]
-        scenario.environment = _environment(_section(data, "environment", {"demo", "geojson", "mesh", "up"}), base)
-        scenario.poi = _poi(_section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
-        scenario.uav, scenario.start = _uav(_section(data, "uav", {"speed", "min_turn_radius", "altitude", "start"}))
-        scenario.sensor = _sensor(_section(data, "sensor", {"d_max", "altitude_band"}))
-        scenario.planning = _planning(_section(
+        scenario.environment = _environment(section(data, "environment", {"demo", "geojson", "mesh", "up"}), base)
+        scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
+        scenario.uav, scenario.start = _uav(section(data, "uav", {"speed", "min_turn_radius", "altitude", "start"}))
+        scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
+        scenario.planning = _planning(section(
             data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin"}))
-        scenario.control = _control(_section(data, "control", {"beta", "k_psi", "direction"}))
-        scenario.simulation = _simulation(_section(
+        scenario.control = _control(section(data, "control", {"beta", "k_psi", "direction"}))
+        scenario.simulation = _simulation(section(
             data, "simulation", {"rtol", "atol", "max_step", "output_step"}))
         scenario.baselines = _baselines(data.get("baselines", []))
         if not scenario.uav.speed > scenario.poi.speed:
-            raise _fail("uav.speed", scenario.uav.speed,
+            raise fail("uav.speed", scenario.uav.speed,
                         f"must exceed poi.speed = {scenario.poi.speed} (the UAV must outrun the POI)")
         return scenario
 
@@ -250,122 +201,109 @@ def _environment(section: dict[str, Any], base: Path) -> EnvironmentSpec:
     if not section:
         return EnvironmentSpec()
     if len(sources) != 1:
-        raise _fail("environment", section, "give exactly one of demo: true, geojson: FILE, mesh: FILE")
+        raise fail("environment", section, "give exactly one of demo: true, geojson: FILE, mesh: FILE")
     kind = sources[0]
     if kind == "demo":
         if section["demo"] is not True:
-            raise _fail("environment.demo", section["demo"], "must be true")
+            raise fail("environment.demo", section["demo"], "must be true")
         if "up" in section:
-            raise _fail("environment.up", section["up"], "only applies to environment.mesh")
+            raise fail("environment.up", section["up"], "only applies to environment.mesh")
         return EnvironmentSpec()
     up = section.get("up", "z")
     if up not in ("y", "z"):
-        raise _fail("environment.up", up, 'must be "z" or "y"')
+        raise fail("environment.up", up, 'must be "z" or "y"')
     if kind == "geojson" and "up" in section:
-        raise _fail("environment.up", up, "only applies to environment.mesh")
-    return EnvironmentSpec(kind, _resolve(base, section[kind], f"environment.{kind}"), up)
+        raise fail("environment.up", up, "only applies to environment.mesh")
+    return EnvironmentSpec(kind, resolve_path(base, section[kind], f"environment.{kind}"), up)
 
 
 def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     spec = PoiSpec()
     if "speed" in section:
-        spec.speed = _number("poi.speed", section["speed"], low=0.0, low_open=True)
+        spec.speed = number("poi.speed", section["speed"], low=0.0, low_open=True)
     sources = [key for key in ("path", "waypoints", "nodes", "route") if key in section]
     if len(sources) > 1:
-        raise _fail("poi", section, "give one of path: CSV, waypoints: [[x, y], ...], nodes: [...], "
+        raise fail("poi", section, "give one of path: CSV, waypoints: [[x, y], ...], nodes: [...], "
                                     "route: [[x, y], ...]")
     if not sources:
         return spec  # PoiSpec.build says what is missing when the scenario is run
     key = sources[0]
     value = section[key]
     if key == "path":
-        spec.path = _resolve(base, value, "poi.path")
+        spec.path = resolve_path(base, value, "poi.path")
     elif key in ("waypoints", "route"):
         if not isinstance(value, list) or len(value) < 2:
-            raise _fail(f"poi.{key}", value, "must be a list of at least two points")
+            raise fail(f"poi.{key}", value, "must be a list of at least two points")
         points = []
         for i, point in enumerate(value):
             sizes = (2, 3) if key == "waypoints" else (2,)
             if not isinstance(point, list) or len(point) not in sizes:
-                raise _fail(f"poi.{key}[{i}]", point, "must be [x, y] or [x, y, z]" if key == "waypoints" else "must be [x, y]")
-            points.append([_number(f"poi.{key}[{i}][{k}]", c) for k, c in enumerate(point)])
+                raise fail(f"poi.{key}[{i}]", point, "must be [x, y] or [x, y, z]" if key == "waypoints" else "must be [x, y]")
+            points.append([number(f"poi.{key}[{i}][{k}]", c) for k, c in enumerate(point)])
         setattr(spec, key, points)
     else:
         if not isinstance(value, list) or len(value) < 2:
-            raise _fail("poi.nodes", value, "must be a list of at least two road-node indices")
-        spec.nodes = [_integer(f"poi.nodes[{i}]", n, 0, 10**9) for i, n in enumerate(value)]
+            raise fail("poi.nodes", value, "must be a list of at least two road-node indices")
+        spec.nodes = [integer(f"poi.nodes[{i}]", n, 0, 10**9) for i, n in enumerate(value)]
     return spec
 
 
-def _apply(target: Any, section: dict[str, Any], prefix: str,
-           checks: dict[str, Callable[[str, Any], Any]]) -> Any:
-    for key, check in checks.items():
-        if key in section:
-            setattr(target, key, check(f"{prefix}.{key}", section[key]))
-    target.validate()
-    return target
-
-
-def _positive(key: str, value: Any) -> float:
-    return _number(key, value, low=0.0, low_open=True)
-
-
 def _uav(section: dict[str, Any]) -> tuple[Uav, tuple[float, float, float] | None]:
-    uav = _apply(Uav(), section, "uav", {"speed": _positive, "min_turn_radius": _positive,
-                                         "altitude": lambda k, v: _number(k, v)})
+    uav = apply_checks(Uav(), section, "uav", {"speed": positive, "min_turn_radius": positive,
+                                         "altitude": lambda k, v: number(k, v)})
     start = section.get("start")
     if start is not None:
         if not isinstance(start, list) or len(start) != 3:
-            raise _fail("uav.start", start, "must be [x, y, psi] (metres, metres, radians)")
-        start = tuple(_number(f"uav.start[{i}]", c) for i, c in enumerate(start))
+            raise fail("uav.start", start, "must be [x, y, psi] (metres, metres, radians)")
+        start = tuple(number(f"uav.start[{i}]", c) for i, c in enumerate(start))
     return uav, start
 
 
 def _sensor(section: dict[str, Any]) -> Sensor:
     sensor = Sensor()
     if "d_max" in section:
-        sensor.d_max = _positive("sensor.d_max", section["d_max"])
+        sensor.d_max = positive("sensor.d_max", section["d_max"])
     band = section.get("altitude_band")
     if band is not None:
         if not isinstance(band, list) or len(band) != 2:
-            raise _fail("sensor.altitude_band", band, "must be [h_lo, h_hi] in metres, or null")
-        sensor.altitude_band = (_number("sensor.altitude_band[0]", band[0]),
-                                _number("sensor.altitude_band[1]", band[1]))
+            raise fail("sensor.altitude_band", band, "must be [h_lo, h_hi] in metres, or null")
+        sensor.altitude_band = (number("sensor.altitude_band[0]", band[0]),
+                                number("sensor.altitude_band[1]", band[1]))
     sensor.validate()
     return sensor
 
 
 def _planning(section: dict[str, Any]) -> Planning:
-    return _apply(Planning(), section, "planning", {
-        "spacing": _positive, "cutoff": _positive,
-        "resolution_deg": lambda k, v: _number(k, v, low=0.1, high=30.0),
-        "min_spacing": _positive,
-        "max_depth": lambda k, v: _integer(k, v, 0, 30),
-        "rate_margin": lambda k, v: _number(k, v, low=0.0)})  # < 1: checked by Planning.validate
+    return apply_checks(Planning(), section, "planning", {
+        "spacing": positive, "cutoff": positive,
+        "resolution_deg": lambda k, v: number(k, v, low=0.1, high=30.0),
+        "min_spacing": positive,
+        "max_depth": lambda k, v: integer(k, v, 0, 30),
+        "rate_margin": lambda k, v: number(k, v, low=0.0)})  # < 1: checked by Planning.validate
 
 
 def _control(section: dict[str, Any]) -> Control:
     def direction(key: str, value: Any) -> str:
         if value not in ("ccw", "cw"):
-            raise _fail(key, value, 'must be "ccw" or "cw"')
+            raise fail(key, value, 'must be "ccw" or "cw"')
         return value
 
-    return _apply(Control(), section, "control", {"beta": _positive, "k_psi": _positive,
+    return apply_checks(Control(), section, "control", {"beta": positive, "k_psi": positive,
                                                   "direction": direction})
 
 
 def _simulation(section: dict[str, Any]) -> SimulationOptions:
-    return _apply(SimulationOptions(), section, "simulation", {
-        "rtol": lambda k, v: _number(k, v, low=0.0, high=1.0, low_open=True),
-        "atol": _positive, "max_step": _positive, "output_step": _positive})
+    return apply_checks(SimulationOptions(), section, "simulation", {
+        "rtol": lambda k, v: number(k, v, low=0.0, high=1.0, low_open=True),
+        "atol": positive, "max_step": positive, "output_step": positive})
 
 
 def _baselines(value: Any) -> list[float]:
     if value is None:
         return []
     if not isinstance(value, list):
-        raise _fail("baselines", value, "must be a list of orbit radii in metres")
-    return [_positive(f"baselines[{i}]", r) for i, r in enumerate(value)]
+        raise fail("baselines", value, "must be a list of orbit radii in metres")
+    return [positive(f"baselines[{i}]", r) for i, r in enumerate(value)]
 
 
 def default_scenario_text() -> str:

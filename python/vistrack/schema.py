@@ -1,0 +1,84 @@
+"""Validation of input read from files (scenario, sweep and planner YAML): every error is a
+VistrackError of the form "key = value: what is allowed", naming the key as the user wrote it
+(``poi.speed``, ``aois[2].radius``)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any, Callable, Mapping, TypeVar
+
+from ._core import VistrackError
+
+__all__ = ["apply_checks", "fail", "integer", "number", "positive", "resolve_path", "section"]
+
+T = TypeVar("T")
+
+
+def fail(key: str, value: Any, allowed: str) -> VistrackError:
+    """The error for one bad value (raise it)."""
+    return VistrackError(f"{key} = {value!r}: {allowed}")
+
+
+def number(key: str, value: Any, *, low: float | None = None, high: float | None = None,
+           low_open: bool = False) -> float:
+    """A finite number within [low, high] (low excluded when ``low_open``)."""
+    # YAML 1.1 reads 20e6 (no dot) as a string: accept any text float() accepts.
+    if isinstance(value, bool):
+        raise fail(key, value, "must be a number")
+    try:
+        result = float(value)
+    except (TypeError, ValueError):
+        raise fail(key, value, "must be a number") from None
+    if not math.isfinite(result):
+        raise fail(key, value, "must be a finite number")
+    if low is not None and (result < low or (low_open and result == low)):
+        bound = f"> {low}" if low_open else f">= {low}"
+        raise fail(key, value, f"must be {bound}" + (f" and <= {high}" if high is not None else ""))
+    if high is not None and result > high:
+        raise fail(key, value, f"must be <= {high}")
+    return result
+
+
+def integer(key: str, value: Any, low: int, high: int) -> int:
+    """An integer (not a bool) within [low, high]."""
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise fail(key, value, f"must be an integer in [{low}, {high}]")
+    if not low <= value <= high:
+        raise fail(key, value, f"must be an integer in [{low}, {high}]")
+    return value
+
+
+def section(data: Mapping[str, Any], name: str, allowed: set[str]) -> dict[str, Any]:
+    """The mapping ``data[name]`` (empty when absent), with no key outside ``allowed``."""
+    found = data.get(name) or {}
+    if not isinstance(found, Mapping):
+        raise fail(name, found, "must be a mapping of keys to values")
+    unknown = sorted(set(found) - allowed)
+    if unknown:
+        raise fail(f"{name}.{unknown[0]}", found[unknown[0]],
+                   f"unknown key; allowed keys in {name}: {', '.join(sorted(allowed))}")
+    return dict(found)
+
+
+def resolve_path(base: Path, value: Any, key: str) -> Path:
+    """A file path from a file, relative paths taken from the file's folder ``base``."""
+    if not isinstance(value, (str, Path)) or not str(value):
+        raise fail(key, value, "must be a file path")
+    path = Path(value).expanduser()
+    return (path if path.is_absolute() else base / path).resolve()
+
+
+def apply_checks(target: T, section: Mapping[str, Any], prefix: str,
+                 checks: dict[str, Callable[[str, Any], Any]]) -> T:
+    """Set each present key of ``section`` on ``target`` through its check, then ``target.validate()``."""
+    for key, check in checks.items():
+        if key in section:
+            setattr(target, key, check(f"{prefix}.{key}", section[key]))
+    target.validate()  # type: ignore[attr-defined]
+    return target
+
+
+def positive(key: str, value: Any) -> float:
+    """A finite number > 0."""
+    return number(key, value, low=0.0, low_open=True)
