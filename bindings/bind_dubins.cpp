@@ -68,18 +68,18 @@ InputArray require_rows3(const InputArray& a, const char* field) {
   return a;
 }
 
-TargetCircle make_circle(const Vec2& center, double radius, const std::string& direction) {
+TargetCircle make_circle(const Vec2& center, double radius, Circulation direction) {
   TargetCircle circle;
   circle.center = center;
   circle.radius = radius;
-  circle.direction = circulation_from_string(direction);
+  circle.direction = direction;
   circle.validate();
   return circle;
 }
 
 InterceptProblem make_problem(const Triple& pursuer, double rho, double pursuer_speed, const Vec2& center,
                               double radius, double target_angle0, double target_speed,
-                              const std::string& direction, double angle_tolerance, int scan_samples) {
+                              Circulation direction, double angle_tolerance, int scan_samples) {
   InterceptProblem p;
   p.pursuer = to_configuration(pursuer);
   p.rho = rho;
@@ -200,16 +200,16 @@ void bind_dubins(py::module_& parent) {
 
   m.def(
       "path_to_circle",
-      [](const Triple& q0, double rho, const Vec2& center, double radius, double angle, const std::string& direction) {
+      [](const Triple& q0, double rho, const Vec2& center, double radius, double angle, Circulation direction) {
         return dubins_path_to_circle(to_configuration(q0), rho, make_circle(center, radius, direction), angle);
       },
-      py::arg("q0"), py::arg("rho"), py::arg("center"), py::arg("radius"), py::arg("angle"), py::arg("direction") = "cw",
+      py::arg("q0"), py::arg("rho"), py::arg("center"), py::arg("radius"), py::arg("angle"), py::arg("direction") = TargetCircle{}.direction,
       "Shortest Dubins path from q0 to the point at `angle` (rad, about the centre) on the circle, arriving "
       "tangent to it in the travel direction ('cw': heading angle - pi/2, 'ccw': angle + pi/2).");
   m.def(
       "length_to_circle",
       [](const Triple& q0, double rho, const Vec2& center, double radius, const std::vector<double>& angles,
-         const std::string& direction, bool csc_only) {
+         Circulation direction, bool csc_only) {
         const TargetCircle circle = make_circle(center, radius, direction);
         const Configuration start = to_configuration(q0);
         std::vector<double> out(angles.size());
@@ -221,7 +221,7 @@ void bind_dubins(py::module_& parent) {
         }
         return py::array_t<double>(static_cast<py::ssize_t>(out.size()), out.data());
       },
-      py::arg("q0"), py::arg("rho"), py::arg("center"), py::arg("radius"), py::arg("angles"), py::arg("direction") = "cw",
+      py::arg("q0"), py::arg("rho"), py::arg("center"), py::arg("radius"), py::arg("angles"), py::arg("direction") = TargetCircle{}.direction,
       py::arg("csc_only") = false,
       "D(alpha) for each angle: the length of the shortest path to the circle point (all six words), or with "
       "csc_only=True the paper's D_CSC(alpha) (min of LSL, LSR, RSL, RSR). Both agree and are continuous "
@@ -230,7 +230,7 @@ void bind_dubins(py::module_& parent) {
       "four_rho_condition",
       [](const Vec2& p, double rho, const Vec2& center, double radius) {
         require_positive(rho, "rho");
-        return four_rho_condition(p, rho, make_circle(center, radius, "cw"));
+        return four_rho_condition(p, rho, make_circle(center, radius, Circulation::Clockwise));
       },
       py::arg("p"), py::arg("rho"), py::arg("center"), py::arg("radius"),
       "Whether every point of the circle is farther than 4 rho from p (the paper's assumption).");
@@ -253,7 +253,7 @@ void bind_dubins(py::module_& parent) {
   m.def(
       "intercept_circle",
       [](const Triple& pursuer, double rho, double pursuer_speed, const Vec2& center, double radius,
-         double target_angle0, double target_speed, const std::string& direction, double angle_tolerance,
+         double target_angle0, double target_speed, Circulation direction, double angle_tolerance,
          int scan_samples) {
         const InterceptProblem p = make_problem(pursuer, rho, pursuer_speed, center, radius, target_angle0,
                                                 target_speed, direction, angle_tolerance, scan_samples);
@@ -261,7 +261,7 @@ void bind_dubins(py::module_& parent) {
         return intercept_circle(p);
       },
       py::arg("pursuer"), py::arg("rho"), py::arg("pursuer_speed"), py::arg("center"), py::arg("radius"),
-      py::arg("target_angle0"), py::arg("target_speed"), py::arg("direction") = "cw",
+      py::arg("target_angle0"), py::arg("target_speed"), py::arg("direction") = TargetCircle{}.direction,
       py::arg("angle_tolerance") = 1e-12, py::arg("scan_samples") = 2048,
       "Earliest interception of a target starting at angle target_angle0 on the circle and moving at "
       "target_speed in `direction`, by a Dubins pursuer (Algorithm 1: brackets one period of D(alpha) "
@@ -269,7 +269,7 @@ void bind_dubins(py::module_& parent) {
   m.def(
       "intercept_travel_times",
       [](const Triple& pursuer, double rho, double pursuer_speed, const Vec2& center, double radius,
-         double target_angle0, double target_speed, const std::string& direction, const std::vector<double>& swept) {
+         double target_angle0, double target_speed, Circulation direction, const std::vector<double>& swept) {
         const InterceptProblem p =
             make_problem(pursuer, rho, pursuer_speed, center, radius, target_angle0, target_speed, direction, 1e-12, 2048);
         InterceptTimes t;

@@ -57,11 +57,6 @@ std::vector<Building> buildings_from_python(const py::iterable& items) {
   return buildings;
 }
 
-// str or os.PathLike (pathlib.Path) to a file name.
-std::string file_name(const py::object& path) {
-  return py::module_::import("os").attr("fspath")(path).cast<std::string>();
-}
-
 }  // namespace
 
 void bind_environment(py::module_& m) {
@@ -94,7 +89,7 @@ void bind_environment(py::module_& m) {
       .def_static(
           "from_geojson",
           [](const py::object& path) {
-            const std::string name = file_name(path);
+            const std::string name = path_string(path);
             py::gil_scoped_release release;
             return Environment::from_geojson(name);
           },
@@ -108,7 +103,7 @@ void bind_environment(py::module_& m) {
       .def_static(
           "from_mesh",
           [](const py::object& path, const std::string& up) {
-            const std::string name = file_name(path);
+            const std::string name = path_string(path);
             py::gil_scoped_release release;
             return Environment::from_mesh(name, up);
           },
@@ -187,7 +182,7 @@ void bind_environment(py::module_& m) {
       .def(py::init<const Eigen::MatrixXd&, double>(), py::arg("waypoints"), py::arg("speed"),
            "Waypoints (n, 2) or (n, 3) in metres; speed in m/s (> 0).")
       .def_static(
-          "from_csv", [](const py::object& path, double speed) { return PoiPath::from_csv(file_name(path), speed); },
+          "from_csv", [](const py::object& path, double speed) { return PoiPath::from_csv(path_string(path), speed); },
           py::arg("path"), py::arg("speed"),
                   "Read waypoints from a CSV file with lines x,y[,z].")
       .def_static("from_nodes", &PoiPath::from_nodes, py::arg("roads"), py::arg("nodes"), py::arg("speed"),

@@ -26,11 +26,9 @@ void bind_guidance(py::module_& m) {
   const GuidanceGains defaults;
   py::class_<GuidanceGains>(m, "GuidanceGains",
                             "Gains of the vector field and steering law: speed v, beta, k_psi, direction "
-                            "(+1 ccw, -1 cw), max_turn_rate = v / r_min.")
-      .def(py::init([](double speed, double beta, double k_psi, int direction, double max_turn_rate) {
-             GuidanceGains g{speed, beta, k_psi, direction, max_turn_rate};
-             g.validate();
-             return g;
+                            "('ccw' or 'cw'), max_turn_rate = v / r_min.")
+      .def(py::init([](double speed, double beta, double k_psi, Circulation direction, double max_turn_rate) {
+             return make_validated(GuidanceGains{speed, beta, k_psi, direction, max_turn_rate});
            }),
            py::kw_only(), py::arg("speed") = defaults.speed, py::arg("beta") = defaults.beta,
            py::arg("k_psi") = defaults.k_psi, py::arg("direction") = defaults.direction,
@@ -40,7 +38,7 @@ void bind_guidance(py::module_& m) {
       .def_readwrite("speed", &GuidanceGains::speed, "v, m/s")
       .def_readwrite("beta", &GuidanceGains::beta, "beta of a_1 (59)")
       .def_readwrite("k_psi", &GuidanceGains::k_psi, "heading gain of (86)")
-      .def_readwrite("direction", &GuidanceGains::direction, "+1 counter-clockwise, -1 clockwise")
+      .def_readwrite("direction", &GuidanceGains::direction, "'ccw' or 'cw'")
       .def_readwrite("max_turn_rate", &GuidanceGains::max_turn_rate, "u_psi,max = v / r_min, rad/s");
 
   py::class_<VectorField>(m, "VectorField", "The guidance vector field (74) at one point.")
@@ -101,13 +99,13 @@ void bind_guidance(py::module_& m) {
   m.def("one_minus_cos_over_x", &one_minus_cos_over_x, py::arg("x"), "(1 - cos x) / x, 0 at x = 0, accurate near 0.");
   m.def("sinc", &sinc, py::arg("x"), "sin(x) / x, 1 at x = 0, accurate near 0.");
   m.def("orbit_polar_rate", &orbit_polar_rate, py::arg("theta"), py::arg("orbit"), py::arg("speed"),
-        py::arg("direction") = 1, "theta_dot of (13) for a vehicle remaining on the orbit.");
+        py::arg("direction") = Circulation::CounterClockwise, "theta_dot of (13) for a vehicle remaining on the orbit.");
   m.def("orbit_signed_curvature", &orbit_signed_curvature, py::arg("theta"), py::arg("orbit"), py::arg("speed"),
-        py::arg("direction") = 1,
+        py::arg("direction") = Circulation::CounterClockwise,
         "Signed path curvature (31) of a vehicle remaining on the orbit at polar angle theta "
         "(Theorem 1: steering with v * this keeps it there).");
   m.def("orbit_configuration", &orbit_configuration, py::arg("theta0"), py::arg("orbit"), py::arg("speed"),
-        py::arg("direction") = 1, "Initial configuration (x, y, psi) on the orbit, (38)-(40).");
+        py::arg("direction") = Circulation::CounterClockwise, "Initial configuration (x, y, psi) on the orbit, (38)-(40).");
   m.def("lemma6_curvature_bound", &lemma6_curvature_bound, py::arg("radius"), py::arg("speed"),
         py::arg("poi_speed"), "(v_g + v)^2 / (R v^2), the maximum curvature on an orbit (Lemma 6).");
   m.def("lemma7_min_gain", &lemma7_min_gain, py::arg("speed"), py::arg("beta"),

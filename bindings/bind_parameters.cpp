@@ -1,22 +1,12 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "vistrack/error.hpp"
 #include "vistrack/parameters.hpp"
 
 namespace py = pybind11;
 
 namespace vistrack::bindings {
-
-namespace {
-
-// Keyword constructor: every argument defaults to the C++ default, then the struct validates.
-template <class T>
-T make_validated(T value) {
-  value.validate();
-  return value;
-}
-
-}  // namespace
 
 void bind_parameters(py::module_& m) {
   const Uav uav_defaults;
@@ -36,6 +26,19 @@ void bind_parameters(py::module_& m) {
         return "Uav(speed=" + std::to_string(u.speed) + ", min_turn_radius=" +
                std::to_string(u.min_turn_radius) + ", altitude=" + std::to_string(u.altitude) + ")";
       });
+
+  const PoiMotion poi_defaults;
+  py::class_<PoiMotion>(m, "PoiMotion", "The POI's defaults: its speed along the road path and its height above "
+                                        "the surface where a point is given without z.")
+      .def(py::init([](double speed, double height) {
+             require_positive(speed, "poi.speed");
+             require_non_negative(height, "poi.height");
+             return PoiMotion{speed, height};
+           }),
+           py::kw_only(), py::arg("speed") = poi_defaults.speed, py::arg("height") = poi_defaults.height,
+           "speed v_g (m/s), height (m above the surface).")
+      .def_readonly("speed", &PoiMotion::speed, "v_g, m/s")
+      .def_readonly("height", &PoiMotion::height, "m above the surface");
 
   const Sensor sensor_defaults;
   py::class_<Sensor>(m, "Sensor", "Line-of-sight sensor: range d_max and optional altitude band.")
@@ -72,8 +75,8 @@ void bind_parameters(py::module_& m) {
 
   const Control control_defaults;
   py::class_<Control>(m, "Control", "Guidance gains (section V): beta, k_psi, direction.")
-      .def(py::init([](double beta, double k_psi, std::string direction) {
-             return make_validated(Control{beta, k_psi, std::move(direction)});
+      .def(py::init([](double beta, double k_psi, Circulation direction) {
+             return make_validated(Control{beta, k_psi, direction});
            }),
            py::kw_only(), py::arg("beta") = control_defaults.beta,
            py::arg("k_psi") = control_defaults.k_psi, py::arg("direction") = control_defaults.direction,

@@ -126,16 +126,16 @@ void bind_simulate(py::module_& m) {
 
   m.def(
       "tune_turn_rate",
-      [](double radius, double radius_rate, double speed, double poi_speed, double beta, const std::string& direction,
+      [](double radius, double radius_rate, double speed, double poi_speed, double beta, Circulation direction,
          double tau, double r_max_factor, int num_radii, int num_angles, int num_heading_errors) {
-        const int sign = circulation_sign(direction);
         TuningGrid grid{tau, r_max_factor, num_radii, num_angles, num_heading_errors};
         py::gil_scoped_release release;
-        return tune_turn_rate(radius, radius_rate, speed, poi_speed, beta, sign, grid);
+        return tune_turn_rate(radius, radius_rate, speed, poi_speed, beta, direction, grid);
       },
       py::arg("radius"), py::arg("radius_rate"), py::arg("speed"), py::arg("poi_speed"), py::arg("beta"),
-      py::kw_only(), py::arg("direction") = "ccw", py::arg("tau") = 1.0, py::arg("r_max_factor") = 4.0,
-      py::arg("num_radii") = 200, py::arg("num_angles") = 360, py::arg("num_heading_errors") = 73,
+      py::kw_only(), py::arg("direction") = Circulation::CounterClockwise, py::arg("tau") = TuningGrid{}.tau,
+      py::arg("r_max_factor") = TuningGrid{}.r_max_factor, py::arg("num_radii") = TuningGrid{}.num_radii,
+      py::arg("num_angles") = TuningGrid{}.num_angles, py::arg("num_heading_errors") = TuningGrid{}.num_heading_errors,
       "Largest |dpsi_d/dt + u_lyap| (85), (106) over r in [tau R, r_max_factor R], all polar angles and "
       "heading errors, for orbit radius R, dR/dt, UAV speed v, POI speed v_g and beta (Fig. 9). "
       "Compare with v / r_min.");

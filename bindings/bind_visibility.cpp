@@ -184,7 +184,7 @@ void bind_visibility(py::module_& m) {
         return visibility_volume(scene, p, d_max, band, resolution_deg);
       },
       py::arg("scene"), py::arg("g"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
-      py::arg("resolution_deg") = 1.0,
+      py::arg("resolution_deg") = Planning{}.resolution_deg,
       "Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when "
       "given, on a grid of about resolution_deg degrees.");
   m.def(
@@ -194,7 +194,7 @@ void bind_visibility(py::module_& m) {
         return visibility_volumes(scene, pois, d_max, band, resolution_deg);
       },
       py::arg("scene"), py::arg("pois"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
-      py::arg("resolution_deg") = 1.0, "VVs for every row of pois (n, 3), in parallel over the points.");
+      py::arg("resolution_deg") = Planning{}.resolution_deg, "VVs for every row of pois (n, 3), in parallel over the points.");
   m.def("mesh_volume",
         [](const Points3& v, const Faces& f) {
           validate_triangle_mesh(v, f);

@@ -1,3 +1,4 @@
+// Closed-mesh checks, VP slicing (CGAL and edge-walking).
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
@@ -42,6 +43,11 @@ void bind_volume(py::module_& m) {
       },
       py::arg("vertices"), py::arg("faces"), py::arg("altitude"), py::call_guard<py::gil_scoped_release>(),
       "Polygons (with holes) where the plane z = altitude cuts a closed mesh (CGAL Polygon_mesh_slicer).");
+
+  m.def("plane_visibility_polygon", &plane_visibility_polygon, py::arg("vv"), py::arg("altitude"),
+        py::call_guard<py::gil_scoped_release>(),
+        "VP of a VV at world altitude z by walking the mesh edges that cross the plane (what the orbit "
+        "planner uses); the same polygons as vv.slice(z), which uses CGAL's slicer.");
 
   auto vv = py::reinterpret_borrow<py::class_<VisibilityVolume>>(m.attr("VisibilityVolume"));
   vv.def("slice", &visibility_polygon, py::arg("altitude"), py::arg("all_parts") = false,

@@ -20,12 +20,12 @@ void bind_xor(py::module_& m) {
         const XorMethod how = parse_xor_method(method);
         MeshXorOptions options;
         options.time_limit = time_limit;
-        // The mesh path in the POI frame meets identical sphere faces: nudge by default.
-        options.perturbation = perturbation ? *perturbation : (f == XorFrame::poi ? 1e-6 : 0.0);
+        options.perturbation = perturbation;
         py::gil_scoped_release release;
         return xor_volume(a, b, f, how, options);
       },
-      py::arg("a"), py::arg("b"), py::arg("frame") = "poi", py::arg("method") = "auto", py::arg("time_limit") = 120.0,
+      py::arg("a"), py::arg("b"), py::arg("frame") = "poi", py::arg("method") = "auto",
+      py::arg("time_limit") = MeshXorOptions{}.time_limit,
       py::arg("perturbation") = py::none(),
       "Volume (m^3) of the symmetric difference of two VVs, the metric d of eq. (56).\n\n"
       "frame: \"poi\" translates each VV by minus its POI first (open terrain gives 0), \"world\" compares\n"
@@ -40,7 +40,7 @@ void bind_xor(py::module_& m) {
   m.def(
       "mesh_xor_volume",
       [](const Points3& va, const Faces& fa, const Points3& vb, const Faces& fb, double time_limit,
-         double perturbation, bool check_self_intersection) {
+         std::optional<double> perturbation, bool check_self_intersection) {
         MeshXorOptions options;
         options.time_limit = time_limit;
         options.perturbation = perturbation;
@@ -50,9 +50,11 @@ void bind_xor(py::module_& m) {
         return mesh_xor_volume(a, b, options);
       },
       py::arg("vertices_a"), py::arg("faces_a"), py::arg("vertices_b"), py::arg("faces_b"),
-      py::arg("time_limit") = 120.0, py::arg("perturbation") = 0.0, py::arg("check_self_intersection") = true,
+      py::arg("time_limit") = MeshXorOptions{}.time_limit, py::arg("perturbation") = py::none(),
+      py::arg("check_self_intersection") = MeshXorOptions{}.check_self_intersection,
       "vol(A) + vol(B) - 2 vol(A n B) of two closed triangle meshes ((n, 3) float vertices, (m, 3) int\n"
-      "faces) by CGAL corefinement with exact predicates on copies. VistrackError when a mesh is not\n"
+      "faces) by CGAL corefinement with exact predicates on copies; perturbation (rad, None: 0) rotates b\n"
+      "as in xor_volume. VistrackError when a mesh is not\n"
       "closed, self-intersects, does not bound a volume, or time_limit (s) is exceeded.");
   m.def(
       "grid_xor_volume",

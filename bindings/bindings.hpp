@@ -1,11 +1,31 @@
-// One bind_<area> function per area, each in bindings/bind_<area>.cpp.
+// One bind_<area> function per area, each in bindings/bind_<area>.cpp, and the helpers they
+// share (bindings/helpers.cpp): the Circulation <-> "ccw"/"cw" conversion, progress callbacks,
+// file paths, validated keyword construction.
 #pragma once
 
 #include <pybind11/pybind11.h>
 
+#include <cstddef>
+#include <functional>
 #include <string>
 
 #include "vistrack/geometry.hpp"
+
+// Circulation crosses the boundary as the strings "ccw" and "cw" (DESIGN.md, Conventions).
+namespace pybind11::detail {
+template <>
+struct type_caster<vistrack::Circulation> {
+  PYBIND11_TYPE_CASTER(vistrack::Circulation, const_name("str"));
+  bool load(handle source, bool) {
+    if (!isinstance<str>(source)) return false;
+    value = vistrack::circulation_from_string(source.cast<std::string>());  // Error names "direction"
+    return true;
+  }
+  static handle cast(vistrack::Circulation circulation, return_value_policy, handle) {
+    return str(vistrack::to_string(circulation)).release();
+  }
+};
+}  // namespace pybind11::detail
 
 namespace vistrack::bindings {
 
@@ -13,14 +33,27 @@ namespace vistrack::bindings {
 Ring ring_from_array(const Points2& points, const std::string& field);
 Points2 ring_to_array(const Ring& ring);
 
+// A Python progress(done, total) callable, or None, as a C++ callback that takes the GIL to call
+// it (long calls run with the GIL released and report from their own thread).
+std::function<void(std::size_t, std::size_t)> progress_callback(const pybind11::object& callback);
+// A str or os.PathLike as a path ("" for None).
+std::string path_string(const pybind11::object& path);
+
+// Keyword constructors: every argument defaults to the C++ default, then the struct validates.
+template <class T>
+T make_validated(T value) {
+  value.validate();
+  return value;
+}
+
 void bind_geometry(pybind11::module_& m);
 void bind_parameters(pybind11::module_& m);
 void bind_environment(pybind11::module_& m);
 void bind_dubins(pybind11::module_& m);
 void bind_visibility(pybind11::module_& m);
 void bind_volume(pybind11::module_& m);
+void bind_xor(pybind11::module_& m);
 void bind_orbit(pybind11::module_& m);
-void bind_xor(pybind11::module_& m);  // XOR volume (eq. 56), bindings/bind_xor.cpp
 void bind_guidance(pybind11::module_& m);
 void bind_ode(pybind11::module_& m);
 void bind_simulate(pybind11::module_& m);

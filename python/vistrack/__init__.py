@@ -1,7 +1,9 @@
 """vistrack: occlusion-aware tracking of a moving ground target by a Dubins UAV.
 
 The C++ core lives in ``vistrack._core``; this package re-exports it by area and adds scenario
-files, the pipeline from map to report, plotting and the command line.
+files (``scenario``), file formats (``io``), the pipeline from map to report (``pipeline``,
+``report``), metrics, plotting and the command line (``cli``, ``commands``; the library never
+imports them).
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ from . import _core, dubins
 from ._core import (  # geometry and parameters
     Control,
     Planning,
+    PoiMotion,
     Polygon,
     Sensor,
     SimulationOptions,
@@ -48,6 +51,7 @@ from ._core import (  # orbits (section IV)
     max_orbit_curvature,
     min_feasible_radius,
     orbit_curvature,
+    plan_on_volumes,
     plan_orbits,
 )
 from ._core import (  # guidance, integrator and closed loop (sections V-VI)
@@ -90,14 +94,14 @@ except PackageNotFoundError:  # running from a build tree
 __all__ = [
     "CircularOrbits", "Control", "DirectionGrid", "Discretization", "Environment", "GuidanceGains",
     "MeshCheck", "OdeResult", "OdeStatistics", "OrbitPlan", "OrbitPlanner", "OrbitState", "Planning",
-    "PoiPath", "Polygon", "RoadNetwork", "RunResult", "Scenario", "Sensor", "SimulationOptions",
+    "PoiMotion", "PoiPath", "Polygon", "RoadNetwork", "RunResult", "Scenario", "Sensor", "SimulationOptions",
     "SimulationResult", "Steering", "TuningResult", "Uav", "VectorField", "VisibilityOrbitPlan",
     "VisibilityScene", "VisibilityVolume", "VistrackError", "__version__", "check_closed_mesh",
     "circular_orbits", "constant_radius_plan", "dubins", "epsilon_max", "grid_xor_volume",
     "lambda_max", "lemma6_curvature_bound", "lemma7_min_gain", "lyapunov_term",
     "max_inscribed_radius", "max_orbit_curvature", "mesh_volume", "mesh_xor_volume",
     "min_feasible_radius", "one_minus_cos_over_x", "orbit_configuration", "orbit_curvature",
-    "orbit_polar_rate", "orbit_signed_curvature", "plan_orbits", "plane_visibility_polygon",
+    "orbit_polar_rate", "orbit_signed_curvature", "plan_on_volumes", "plan_orbits", "plane_visibility_polygon",
     "radial_error_rate", "radial_xor_volume", "run", "sample_vector_field", "segment_boundaries",
     "shares_direction_grid", "shares_radial_mesh",
     "simulate", "sinc", "slice_mesh", "solve_ode", "steering", "tune_turn_rate", "vector_field",

@@ -8,48 +8,34 @@ closed-loop simulation with line-of-sight evaluation (sections V-VI) -> constant
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+import time
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any, Optional, Sequence, Union
 
 import numpy as np
 
-from . import _core
+from ._core import (
+    Control, OrbitPlan, OrbitPlanner, SimulationOptions, SimulationResult, Uav, VisibilityOrbitPlan,
+    VisibilityScene, VistrackError, constant_radius_plan, simulate,
+)
+from .metrics import finite_or_none, simulation_metrics
 from .progress import Stages
+from .report.run import RunResult, write_report
 from .scenario import Scenario
 
-__all__ = ["RunResult", "run", "start_on_orbit"]
+__all__ = ["METRIC_SPACINGS", "RunResult", "closed_loop", "run", "simulate_with_baselines", "start_on_orbit"]
 
 # Fixed spacings drawn beside the adaptive method in the Figure 4 plot of a run (m).
 METRIC_SPACINGS = (50.0, 25.0, 10.0)
-# Most VV meshes written into a report (evenly picked along the path).
-MAX_SAVED_VOLUMES = 12
+
+AnyPlan = Union[OrbitPlan, VisibilityOrbitPlan]
 
 
-@dataclass
-class RunResult:
-    """Everything a run computed; ``metrics`` is what metrics.json holds."""
-
-    scenario: Scenario
-    env: Any
-    poi: Any
-    plan: Any
-    simulation: Any
-    planner: Any = None
-    baselines: dict[float, Any] = field(default_factory=dict)
-    metric_runs: dict[str, Any] = field(default_factory=dict)
-    metrics: dict[str, Any] = field(default_factory=dict)
-    out: Optional[Path] = None
-    files: list[Path] = field(default_factory=list)
-    timings: dict[str, float] = field(default_factory=dict)
-
-
-def start_on_orbit(plan: Any, control: Any) -> np.ndarray:
-    """A start on the first orbit, east of the POI, heading along the circulation."""
-    g = np.asarray(plan.poi.position(0.0))[:2]
-    radius = plan.radii[0]
-    heading = math.pi / 2 if control.direction == "ccw" else -math.pi / 2
-    return np.array([g[0] + radius, g[1], heading])
+def start_on_orbit(plan: AnyPlan, direction: str) -> np.ndarray:
+    """A start on the first orbit, east of the POI, heading along the circulation ("ccw"/"cw")."""
+    g = np.asarray(plan.poi.position(plan.times[0]))[:2]
+    heading = math.pi / 2 if direction == "ccw" else -math.pi / 2
+    return np.array([g[0] + plan.radii[0], g[1], heading])
 
 
 def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True,
@@ -58,26 +44,27 @@ def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True
     stages = Stages(quiet)
     env = stages.run("environment", scenario.environment.load)
     poi = stages.run("POI path", scenario.poi.build, env)
-    planner = stages.run("visibility scene", _planner, env, scenario, cache_dir)
-    plan = stages.run("visibility volumes and orbits", planner.plan, poi, scenario.uav, scenario.planning,
-                      bar_unit="VV")
+    planner: OrbitPlanner = stages.run(
+        "visibility scene", OrbitPlanner, env, scenario.sensor, "" if cache_dir is None else str(cache_dir))
+    plan: VisibilityOrbitPlan = stages.run("visibility volumes and orbits", planner.plan, poi, scenario.uav,
+                                           scenario.planning, bar_unit="VV")
     metric_runs: dict[str, Any] = {}
     for spacing in METRIC_SPACINGS:
-        metric_runs[f"{spacing:g} m"] = stages.run(f"metric at {spacing:g} m spacing", planner.fixed, poi,
-                                                   spacing, bar_unit="VV")
-    metric_runs["adaptive"] = plan_discretization(plan)
+        metric_runs[f"{spacing:g} m"] = stages.run(f"metric at {spacing:g} m spacing", planner.fixed, poi, spacing,
+                                                   scenario.planning.resolution_deg, bar_unit="VV")
+    metric_runs["adaptive"] = plan.discretization
     if min(plan.radii) <= 0.0:
-        raise _core.VistrackError(
+        raise VistrackError(
             f"plan: the POI is not visible from the flight plane at some samples ({plan.infeasibility}); "
             f"raise sensor.d_max = {scenario.sensor.d_max:g} m or change uav.altitude = {scenario.uav.altitude:g} m")
-    x0 = np.asarray(scenario.start) if scenario.start is not None else start_on_orbit(plan, scenario.control)
-    scene = planner.scene
-    simulation = stages.run("closed-loop simulation", _simulate, plan, scenario, x0, scene)
+    x0 = np.asarray(scenario.start) if scenario.start is not None else start_on_orbit(plan, scenario.control.direction)
+    loop = (scenario.uav, scenario.control, scenario.simulation, planner.scene)
+    simulation = stages.run("closed-loop simulation", closed_loop, plan, x0, *loop)
     baselines = {}
     for radius in scenario.baselines:
-        baseline_plan = _core.constant_radius_plan(poi, radius, scenario.uav)
-        baselines[radius] = stages.run(f"baseline R = {radius:g} m", _simulate, baseline_plan, scenario,
-                                       start_on_orbit(baseline_plan, scenario.control), scene)
+        baseline = constant_radius_plan(poi, radius, scenario.uav)
+        baselines[radius] = stages.run(f"baseline R = {radius:g} m", closed_loop, baseline,
+                                       start_on_orbit(baseline, scenario.control.direction), *loop)
     result = RunResult(scenario, env, poi, plan, simulation, planner, baselines, metric_runs)
     result.timings = stages.timings
     result.metrics = _metrics(result)
@@ -85,43 +72,37 @@ def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True
         result.metrics["volume_cache"] = {"folder": str(cache_dir), "hits": planner.disk_hits,
                                           "misses": planner.disk_misses}
     if out is not None:
-        from .report import write_report
-
         stages.run("report", write_report, result, Path(out))
         result.timings = stages.timings
     return result
 
 
-@dataclass
-class PathSamples:
-    """Samples along the POI path in the shape Figure 4 draws."""
-
-    arc_lengths: list[float]
-    metric: list[float]
-
-
-def plan_discretization(plan: Any) -> PathSamples:
-    """The adaptive samples of a plan (arc lengths and the metric between neighbours)."""
-    return PathSamples(list(plan.arc_lengths), list(plan.metric))
+def closed_loop(plan: AnyPlan, x0: np.ndarray, uav: Uav, control: Control, options: SimulationOptions,
+                scene: Optional[VisibilityScene], fixed_step: float = 0.0) -> SimulationResult:
+    """The closed loop of section VI around ``plan`` from ``x0`` = (x, y, psi), with the line of
+    sight at every output sample when a scene is given (GIL released)."""
+    return simulate(plan, uav, x0, control, scene, options, fixed_step=fixed_step)
 
 
-def _planner(env: Any, scenario: Scenario, cache_dir: str | Path | None) -> Any:
-    return _core.OrbitPlanner(env, scenario.sensor, scenario.planning.resolution_deg, None if cache_dir is None else str(cache_dir))
-
-
-def _simulate(plan: Any, scenario: Scenario, x0: np.ndarray, scene: Any) -> Any:
-    return _core.simulate(plan, scenario.uav, x0, scenario.control, scene, scenario.simulation)
-
-
-def _finite(value: float) -> float | None:
-    return float(value) if math.isfinite(value) else None
+def simulate_with_baselines(plan: AnyPlan, x0: np.ndarray, uav: Uav, control: Control,
+                            options: SimulationOptions, scene: Optional[VisibilityScene],
+                            baseline_radii: Sequence[float] = (), fixed_step: float = 0.0,
+                            ) -> list[tuple[str, AnyPlan, SimulationResult, float]]:
+    """The closed loop around ``plan`` and around constant-radius orbits of each baseline radius,
+    all from ``x0``. Returns (label, plan, result, seconds) per run."""
+    plans: list[tuple[str, AnyPlan]] = [("visibility orbit", plan)]
+    plans += [(f"constant R = {r:g} m", constant_radius_plan(plan.poi, r, uav)) for r in baseline_radii]
+    runs = []
+    for label, p in plans:
+        began = time.perf_counter()
+        result = closed_loop(p, x0, uav, control, options, scene, fixed_step)
+        runs.append((label, p, result, time.perf_counter() - began))
+    return runs
 
 
 def _metrics(result: RunResult) -> dict[str, Any]:
-    from .commands.simulate import metrics as simulation_metrics
-
-    plan, sim, s = result.plan, result.simulation, result.scenario
-    metrics: dict[str, Any] = {
+    plan, s = result.plan, result.scenario
+    return {
         "scenario": s.name,
         "environment": s.environment.describe(),
         "environment_triangles": int(result.env.num_triangles),
@@ -140,9 +121,8 @@ def _metrics(result: RunResult) -> dict[str, Any]:
             "max_metric_m3": max(plan.metric) if len(plan.metric) else 0.0,
             "cutoff_m3": s.planning.cutoff,
         },
-        "simulation": simulation_metrics(sim),
-        "baselines": {f"{r:g}": {"radius_m": r, "visibility_fraction": _finite(b.visibility_fraction)}
+        "simulation": simulation_metrics(result.simulation),
+        "baselines": {f"{r:g}": {"radius_m": r, "visibility_fraction": finite_or_none(b.visibility_fraction)}
                       for r, b in result.baselines.items()},
         "timings_s": {k: round(v, 4) for k, v in result.timings.items()},
     }
-    return metrics

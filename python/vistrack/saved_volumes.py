@@ -10,25 +10,14 @@ adaptive insertion: new VVs would need the map.
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import numpy as np
 
 from . import _core
+from .io import volume_files
 
 MAX_OFF_PATH = 1.0  # m: a VV's POI farther than this from the POI path is not a sample of it
-
-
-def volume_files(folder: str | Path) -> list[Path]:
-    """The VV files (``*.bin``) in a folder, sorted by name; VistrackError when none."""
-    root = Path(folder)
-    if not root.is_dir():
-        raise _core.VistrackError(f"--from-volumes = {folder}: is not a folder")
-    files = sorted(p for p in root.iterdir() if p.is_file() and p.suffix == ".bin")
-    if not files:
-        raise _core.VistrackError(f"--from-volumes = {folder}: no VV files (*.bin) in the folder")
-    return files
 
 
 def arc_length_on_path(waypoints: np.ndarray, xy: np.ndarray) -> tuple[float, float]:
@@ -77,54 +66,14 @@ def load_samples(folder: str | Path, poi: "_core.PoiPath") -> tuple[list[float],
     return [s for s, _, _ in placed], [vv for _, _, vv in placed]
 
 
-def _ring(points: np.ndarray) -> list[list[float]]:
-    return [[float(x), float(y)] for x, y in np.asarray(points)]
-
-
-def plan_from_volumes(folder: str | Path, poi: "_core.PoiPath", uav: "_core.Uav",
-                      rate_margin: float = 0.0) -> "_core.VisibilityOrbitPlan":
+def plan_from_volumes(folder: str | Path, poi: _core.PoiPath, uav: _core.Uav,
+                      rate_margin: float = 0.0) -> _core.VisibilityOrbitPlan:
     """The orbit plan (Algorithm 1, |dR/dt| <= (1 - rate_margin)(v - v_g)) over the saved VVs in
-    `folder` along `poi`, as OrbitPlanner.plan would make it from the same samples with nothing
-    inserted."""
-    uav.validate()
-    planning = _core.Planning(rate_margin=rate_margin)
+    ``folder`` along ``poi``, as OrbitPlanner.plan would make it from the same samples with nothing
+    inserted. The plan records the samples' median gap as its spacing and the VVs' grid step as
+    its resolution (cutoff and depth stay at the defaults: nothing was inserted)."""
     arc_lengths, volumes = load_samples(folder, poi)
-    times = [s / poi.speed for s in arc_lengths]
-    polygons = [_core.plane_visibility_polygon(vv, uav.altitude) for vv in volumes]
-    centres = [np.asarray(vv.poi, dtype=float)[:2] for vv in volumes]
-    max_radii = [_core.max_inscribed_radius(vp, c) for vp, c in zip(polygons, centres)]
-    metric = [_core.xor_volume(a, b, frame="poi") for a, b in zip(volumes[:-1], volumes[1:])]
-    orbits = _core.circular_orbits(times, max_radii, uav, poi.speed, planning.rate_margin)
-    first = volumes[0]
-    sensor: dict = {"d_max": first.d_max}
-    if first.altitude_band is not None:
-        sensor["altitude_band"] = list(first.altitude_band)
     gaps = np.diff(arc_lengths)
-    text = json.dumps({
-        "format": "vistrack.visibility_orbit_plan/1",
-        "poi": {"waypoints": np.asarray(poi.waypoints).tolist(), "speed": poi.speed},
-        "times": times,
-        "radii": list(orbits.radii),
-        "max_radii": max_radii,
-        "metric": metric,
-        "feasible": orbits.feasible,
-        "infeasibility": orbits.infeasibility,
-        "uav": {"speed": uav.speed, "min_turn_radius": uav.min_turn_radius, "altitude": uav.altitude},
-        "sensor": sensor,
-        # The samples were chosen by whoever saved the VVs: spacing is their median gap, grid step
-        # the saved azimuth step; cutoff and depth stay at the defaults (nothing was inserted here).
-        "planning": {"spacing": float(np.median(gaps)) if len(gaps) else planning.spacing,
-                     "cutoff": planning.cutoff, "resolution_deg": 360.0 / first.grid.num_azimuth,
-                     "min_spacing": planning.min_spacing, "max_depth": planning.max_depth,
-                     "rate_margin": planning.rate_margin},
-        "centers": [c.tolist() for c in centres],
-        "arc_lengths": arc_lengths,
-        "depths": [0] * len(times),
-        "radius_rates": list(orbits.radius_rates),
-        "min_feasible_radius": orbits.min_feasible_radius,
-        "failing_samples": list(orbits.failing_samples),
-        "volumes_computed": 0,
-        "polygons": [[{"outer": _ring(p.outer), "holes": [_ring(h) for h in p.holes]} for p in vp] for vp in polygons],
-        "vv_volumes": [vv.volume for vv in volumes],
-    })
-    return _core.VisibilityOrbitPlan.from_json(text)
+    planning = _core.Planning(spacing=float(np.median(gaps)) if len(gaps) else _core.Planning().spacing,
+                              resolution_deg=360.0 / volumes[0].grid.num_azimuth, rate_margin=rate_margin)
+    return _core.plan_on_volumes(poi, uav, planning, arc_lengths, volumes)

@@ -17,7 +17,12 @@ from typing import Any, Mapping, Sequence
 
 import yaml
 
-from ._core import Control, Planning, Sensor, SimulationOptions, Uav
+import numpy as np
+
+from ._core import (
+    Control, Environment, Planning, PoiMotion, PoiPath, RoadNetwork, Sensor, SimulationOptions, Uav, VistrackError,
+)
+from .io import load_environment, read_text
 from .schema import apply_checks, fail, integer, number, positive, resolve_path, section
 
 __all__ = ["Scenario", "EnvironmentSpec", "PoiSpec", "default_scenario_text", "road_route"]
@@ -25,11 +30,9 @@ __all__ = ["Scenario", "EnvironmentSpec", "PoiSpec", "default_scenario_text", "r
 DEMO_SCENARIO = Path(__file__).with_name("scenarios") / "demo.yaml"
 
 
-def road_route(roads: Any, via_points: Sequence[Sequence[float]]) -> list[int]:
+def road_route(roads: RoadNetwork, via_points: Sequence[Sequence[float]]) -> list[int]:
     """Road nodes from the node nearest the first point, through the nodes nearest the others,
     joined by shortest routes along the road edges."""
-    import numpy as np
-
     via = [roads.nearest_node(np.asarray(p, dtype=float)) for p in via_points]
     nodes = [via[0]]
     for a, b in zip(via, via[1:]):
@@ -45,14 +48,10 @@ class EnvironmentSpec:
     path: Path | None = None
     up: str = "z"
 
-    def load(self):
-        from ._core import Environment
-
-        if self.kind == "demo":
+    def load(self) -> Environment:
+        if self.kind == "demo" or self.path is None:
             return Environment.demo()
-        if self.kind == "geojson":
-            return Environment.from_geojson(str(self.path))
-        return Environment.from_mesh(str(self.path), up=self.up)
+        return load_environment(self.path, self.up, self.kind)
 
     def describe(self) -> str:
         return "demo city" if self.kind == "demo" else f"{self.kind} {self.path}"
@@ -63,17 +62,13 @@ class PoiSpec:
     """The POI's path: a CSV file, explicit waypoints, road-network nodes, or a route along the
     roads through the nodes nearest to given points; and its speed."""
 
-    speed: float = 5.0
+    speed: float = PoiMotion().speed
     path: Path | None = None
     waypoints: list[list[float]] | None = None
     nodes: list[int] | None = None
     route: list[list[float]] | None = None
 
-    def build(self, env):
-        import numpy as np
-
-        from ._core import PoiPath
-
+    def build(self, env: Environment) -> PoiPath:
         if self.path is not None:
             return PoiPath.from_csv(str(self.path), self.speed)
         if self.waypoints is not None:
@@ -108,10 +103,7 @@ class Scenario:
     def load(cls, path: str | Path) -> "Scenario":
         """Read and validate a scenario YAML file; errors name the key, the value and the range."""
         path = Path(path)
-        try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as error:
-            raise fail("scenario", str(path), f"cannot read the file ({error.strerror})") from None
+        text = read_text(path, "scenario")
         try:
             data = yaml.safe_load(text)
         except yaml.YAMLError as error:

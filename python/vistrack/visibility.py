@@ -11,7 +11,7 @@ from typing import Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _core
-from ._core import Environment, VisibilityScene, VisibilityVolume
+from ._core import Environment, Planning, PoiMotion, PoiPath, VisibilityScene, VisibilityVolume
 
 Band = Optional[Tuple[float, float]]
 
@@ -31,7 +31,7 @@ def visibility_volume(
     g: Sequence[float],
     d_max: float,
     altitude_band: Band = None,
-    resolution_deg: float = 1.0,
+    resolution_deg: float = Planning().resolution_deg,
 ) -> VisibilityVolume:
     """Visibility volume alpha(g) of eq. (4): the points within ``d_max`` of the POI ``g`` (x, y, z),
     inside ``altitude_band`` = (h_lo, h_hi) of world z when given, with a clear line of sight.
@@ -50,7 +50,7 @@ def visibility_volumes(
     pois: np.ndarray,
     d_max: float,
     altitude_band: Band = None,
-    resolution_deg: float = 1.0,
+    resolution_deg: float = Planning().resolution_deg,
 ) -> list[VisibilityVolume]:
     """VVs for every row of ``pois`` (n, 3), computed in parallel over the points (GIL released)."""
     points = np.asarray(pois, dtype=float)
@@ -59,6 +59,28 @@ def visibility_volumes(
     return _core.visibility_volumes(
         visibility_scene(env), points, float(d_max), altitude_band, float(resolution_deg)
     )
+
+
+def poi_positions(scene: VisibilityScene, points: Optional[np.ndarray] = None, path: Optional[PoiPath] = None,
+                  spacing: Optional[float] = None, height: float = PoiMotion().height) -> np.ndarray:
+    """POI positions (n, 3) on the scene's surface: the given ``points`` (n, 2 or 3; a missing or
+    NaN z is ``height`` above the surface), or every ``spacing`` metres along ``path`` (ends
+    included), whose z is the height above the surface."""
+    if path is not None:
+        if spacing is None or not (spacing > 0 and np.isfinite(spacing)):
+            raise _core.VistrackError(f"spacing = {spacing}: must be a finite number > 0")
+        count = max(2, int(np.ceil(path.length / spacing)) + 1)
+        # Arc length s is reached at time s / v_g.
+        chosen = np.array([path.position(s / path.speed) for s in np.linspace(0.0, path.length, count)])
+    elif points is not None:
+        given = np.asarray(points, dtype=float)
+        if given.ndim != 2 or given.shape[1] not in (2, 3) or len(given) == 0:
+            raise _core.VistrackError(f"points: shape = {given.shape}: must be (n, 2) or (n, 3) with n > 0")
+        chosen = np.column_stack([given[:, :2], given[:, 2] if given.shape[1] == 3 else np.full(len(given), np.nan)])
+    else:
+        raise _core.VistrackError("poi_positions: give points or a path")
+    chosen[:, 2] = np.where(np.isfinite(chosen[:, 2]), chosen[:, 2], height)
+    return np.asarray(scene.poi_on_surface(chosen))
 
 
 def polygon_agreement(scene: VisibilityScene, vv: VisibilityVolume, altitude: float, step: float = 1.0) -> float:

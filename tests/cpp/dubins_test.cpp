@@ -7,6 +7,7 @@
 #include <limits>
 #include <random>
 
+#include "dubins/path_integration.hpp"
 #include "vistrack/dubins.hpp"
 #include "vistrack/error.hpp"
 
@@ -172,7 +173,7 @@ TEST(DubinsRobust, TinyDistancesAheadAndBehind) {
     // Behind by more than the length snap: a full loop plus d (LSL: t = pi, p = d, q = pi).
     const DubinsPath back = dubins_shortest_path({0, 0, 0}, {-d, 0, 0}, 1.0);
     EXPECT_NEAR(back.length, 2.0 * kPiTest + d, 1e-9) << d;
-    EXPECT_LT(position_error(back.integrate(back.length), back.goal), 1e-9);
+    EXPECT_LT(position_error(detail::integrate(back, back.length), back.goal), 1e-9);
   }
   // Below the documented snap (1e-11 rho here), a goal behind is the start itself.
   EXPECT_LT(dubins_shortest_path({0, 0, 0}, {-1e-13, 0, 0}, 1.0).length, 1e-12);
@@ -189,8 +190,8 @@ TEST(DubinsRobust, NeverNaNOnDegenerateGrid) {
           const Configuration b{ix * 1.0, iy * 1.0, ib * kPiTest / 4};
           const DubinsPath p = dubins_shortest_path(a, b, 1.0);
           ASSERT_TRUE(std::isfinite(p.length));
-          EXPECT_LT(position_error(p.integrate(p.length), b), 1e-9);
-          EXPECT_LT(heading_error(p.integrate(p.length), b), 1e-9);
+          EXPECT_LT(position_error(detail::integrate(p, p.length), b), 1e-9);
+          EXPECT_LT(heading_error(detail::integrate(p, p.length), b), 1e-9);
         }
 }
 
@@ -234,7 +235,7 @@ TEST(DubinsProperty, RandomizedInvariants) {
     const DubinsPath p = dubins_shortest_path(a, b, rho);
     ASSERT_TRUE(std::isfinite(p.length));
     // Endpoint reached by integrating the segments.
-    const Configuration end = p.integrate(p.length);
+    const Configuration end = detail::integrate(p, p.length);
     ASSERT_LT(position_error(end, b), 1e-9 * scale) << n;
     ASSERT_LT(heading_error(end, b), 1e-9) << n;
     // Length equals the sum of segments; all segments non-negative.
@@ -247,8 +248,8 @@ TEST(DubinsProperty, RandomizedInvariants) {
       ASSERT_GE(lengths[static_cast<std::size_t>(k)], p.length - 1e-12 * scale);
       if (n % 10 == 0) {
         const DubinsPath w = dubins_path(a, b, rho, static_cast<DubinsWord>(k));
-        ASSERT_LT(position_error(w.integrate(w.length), b), 1e-9 * scale) << to_string(w.word);
-        ASSERT_LT(heading_error(w.integrate(w.length), b), 1e-9) << to_string(w.word);
+        ASSERT_LT(position_error(detail::integrate(w, w.length), b), 1e-9 * scale) << to_string(w.word);
+        ASSERT_LT(heading_error(detail::integrate(w, w.length), b), 1e-9) << to_string(w.word);
       }
     }
     // Batch kernel agrees.
@@ -444,8 +445,8 @@ TEST(DubinsCircle, GoalIsTangentAndLengthIsContinuousUnderFourRho) {
         ASSERT_NEAR(d, dubins_csc_length_to_circle(q0, rho, circle, angle), 1e-12 * (1.0 + d));
         const DubinsPath p = dubins_path_to_circle(q0, rho, circle, angle);
         const Configuration goal = circle.configuration(angle);
-        ASSERT_LT(position_error(p.integrate(p.length), goal), 1e-9 * (1.0 + circle.center.norm()));
-        ASSERT_LT(heading_error(p.integrate(p.length), goal), 1e-9);
+        ASSERT_LT(position_error(detail::integrate(p, p.length), goal), 1e-9 * (1.0 + circle.center.norm()));
+        ASSERT_LT(heading_error(detail::integrate(p, p.length), goal), 1e-9);
         // Tangent heading in the travel direction.
         const double tangent = circle.direction == CircleDirection::Clockwise ? angle - kPiTest / 2 : angle + kPiTest / 2;
         ASSERT_NEAR(wrap_to_pi(goal.psi - tangent), 0.0, 1e-12);
@@ -539,8 +540,8 @@ TEST(DubinsIntercept, MatchesBruteForceScan) {
     // The target is at the path's goal at that time, with the path's final heading.
     const double sign = p.circle.direction == CircleDirection::Clockwise ? -1.0 : 1.0;
     const Configuration target = p.circle.configuration(p.target_angle0 + sign * p.target_speed * r.time / p.circle.radius);
-    EXPECT_LT(position_error(r.path.integrate(r.path.length), target), 1e-8);
-    EXPECT_LT(heading_error(r.path.integrate(r.path.length), target), 1e-8);
+    EXPECT_LT(position_error(detail::integrate(r.path, r.path.length), target), 1e-8);
+    EXPECT_LT(heading_error(detail::integrate(r.path, r.path.length), target), 1e-8);
     EXPECT_DOUBLE_EQ(r.period, kTwoPi);
     // alpha_min is the minimum of D over a dense scan.
     double dense_min = std::numeric_limits<double>::infinity();

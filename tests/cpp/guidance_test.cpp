@@ -30,7 +30,7 @@ struct RandomCase {
   Vec2 xi;
 };
 
-RandomCase random_case(std::mt19937& rng, int direction) {
+RandomCase random_case(std::mt19937& rng, Circulation direction) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   RandomCase c;
   c.gains.speed = 5.0 + 25.0 * unit(rng);
@@ -68,11 +68,11 @@ TEST(SafeFunctions, LimitsAndAccuracyNearZero) {
 TEST(VectorField, ConstantMagnitudeAndCirculationSign) {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 2000; ++trial) {
-    const int direction = trial % 2 == 0 ? 1 : -1;
+    const Circulation direction = trial % 2 == 0 ? Circulation::CounterClockwise : Circulation::Clockwise;
     const RandomCase c = random_case(rng, direction);
     const VectorField f = vector_field(c.xi, c.orbit, c.gains);
     EXPECT_NEAR(f.u.norm(), c.gains.speed, 1e-12 * c.gains.speed);  // ||u|| = v (72)
-    EXPECT_GT(direction * f.u_theta, 0.0);
+    EXPECT_GT(sign(direction) * f.u_theta, 0.0);
     EXPECT_NEAR(f.u.dot(f.e_r), f.u_r, 1e-9);
     EXPECT_NEAR(f.heading, std::atan2(f.u.y(), f.u.x()), 1e-15);
     // Attraction: the relative radial velocity u_r - g_dot.e_r - R_dot = -Phi' points to the orbit.
@@ -104,7 +104,7 @@ TEST(VectorField, HeadingRateMatchesFiniteDifferencesAlongTheFlow) {
   std::mt19937 rng(11);
   int checked = 0;
   for (int trial = 0; trial < 500; ++trial) {
-    const int direction = trial % 2 == 0 ? 1 : -1;
+    const Circulation direction = trial % 2 == 0 ? Circulation::CounterClockwise : Circulation::Clockwise;
     const RandomCase c = random_case(rng, direction);
     const VectorField f = vector_field(c.xi, c.orbit, c.gains);
     if (std::abs(f.u_theta) < 0.05 * c.gains.speed || f.r < 0.5 * c.orbit.radius) continue;
@@ -127,7 +127,7 @@ TEST(Steering, RadialErrorRateMatchesFiniteDifferences) {
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> angle(-kPiValue, kPiValue);
   for (int trial = 0; trial < 500; ++trial) {
-    const RandomCase c = random_case(rng, trial % 2 == 0 ? 1 : -1);
+    const RandomCase c = random_case(rng, trial % 2 == 0 ? Circulation::CounterClockwise : Circulation::Clockwise);
     const double psi = angle(rng);
     const VectorField f = vector_field(c.xi, c.orbit, c.gains);
     const double error = wrap_to_pi(psi - f.heading);
@@ -148,7 +148,7 @@ TEST(Steering, LyapunovIdentityOfLemma7) {
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> angle(-kPiValue, kPiValue);
   for (int trial = 0; trial < 2000; ++trial) {
-    const RandomCase c = random_case(rng, trial % 2 == 0 ? 1 : -1);
+    const RandomCase c = random_case(rng, trial % 2 == 0 ? Circulation::CounterClockwise : Circulation::Clockwise);
     const Vec3 q(c.xi.x(), c.xi.y(), angle(rng));
     const Steering s = steering(q, c.orbit, c.gains);
     ASSERT_FALSE(s.saturated);
@@ -168,7 +168,7 @@ TEST(Steering, LeanCommandEqualsTheFullLaw) {
   std::uniform_real_distribution<double> angle(-kPiValue, kPiValue);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int trial = 0; trial < 20000; ++trial) {
-    RandomCase c = random_case(rng, trial % 2 == 0 ? 1 : -1);
+    RandomCase c = random_case(rng, trial % 2 == 0 ? Circulation::CounterClockwise : Circulation::Clockwise);
     c.gains.max_turn_rate = trial % 3 == 0 ? 0.3 : 1e9;
     const double psi_d = vector_field(c.xi, c.orbit, c.gains).heading;
     double psi = angle(rng);
@@ -202,12 +202,13 @@ TEST(Steering, ShortWayRoundAndSaturation) {
 // Theorem 1: started on the orbit with (38)-(40) and steered by u = v kappa_s of (31), the
 // vehicle stays on the translating, morphing orbit.
 TEST(OrbitTheory, Theorem1VehicleStaysOnTheOrbit) {
-  struct Case { double v, vg, gamma, radius, rate; int direction; double theta0; };
-  const Case cases[] = {{20.0, 5.0, 0.7, 158.0, 1.3, 1, -3.14159265358979 / 2},
-                        {20.0, 5.0, -2.0, 120.0, -2.0, 1, 0.3},
-                        {20.0, 5.0, 2.5, 85.9, 0.0, -1, 1.0},
-                        {3.0, 0.35, 0.2, 20.0, 0.1, -1, 2.0},
-                        {10.0, 5.0, -3.0 * 3.14159265358979 / 4, 40.0, -1.5, 1, 4.0}};
+  struct Case { double v, vg, gamma, radius, rate; Circulation direction; double theta0; };
+  constexpr Circulation ccw = Circulation::CounterClockwise, cw = Circulation::Clockwise;
+  const Case cases[] = {{20.0, 5.0, 0.7, 158.0, 1.3, ccw, -3.14159265358979 / 2},
+                        {20.0, 5.0, -2.0, 120.0, -2.0, ccw, 0.3},
+                        {20.0, 5.0, 2.5, 85.9, 0.0, cw, 1.0},
+                        {3.0, 0.35, 0.2, 20.0, 0.1, cw, 2.0},
+                        {10.0, 5.0, -3.0 * 3.14159265358979 / 4, 40.0, -1.5, ccw, 4.0}};
   for (const Case& c : cases) {
     OrbitState orbit0;
     orbit0.center = Vec2(-150.0, -45.0);
@@ -250,7 +251,7 @@ TEST(OrbitTheory, Lemma6MaximumCurvature) {
     const double v = 1.0 + 30.0 * unit(rng);
     const double vg = v * 0.99 * unit(rng);
     const double gamma = 2 * kPiValue * unit(rng);
-    const int direction = trial % 2 == 0 ? 1 : -1;
+    const Circulation direction = trial % 2 == 0 ? Circulation::CounterClockwise : Circulation::Clockwise;
     OrbitState orbit;
     orbit.center_velocity = vg * Vec2(std::cos(gamma), std::sin(gamma));
     orbit.radius = 5.0 + 200.0 * unit(rng);
@@ -262,7 +263,7 @@ TEST(OrbitTheory, Lemma6MaximumCurvature) {
     }
     const double bound = lemma6_curvature_bound(orbit.radius, v, vg);
     EXPECT_NEAR(best, bound, 1e-6 * bound) << trial;
-    EXPECT_NEAR(wrap_to_pi(at - (gamma + direction * kPiValue / 2)), 0.0, 2e-3) << trial;
+    EXPECT_NEAR(wrap_to_pi(at - (gamma + sign(direction) * kPiValue / 2)), 0.0, 2e-3) << trial;
     // The curvature on the orbit is (13) squared over the tangential speed: never above the bound.
     EXPECT_LE(best, bound * (1 + 1e-12));
   }
@@ -282,9 +283,9 @@ TEST(OrbitTheory, CurvatureAgreesWithTheOrbitArea) {
     orbit.radius = 5.0 + 200.0 * unit(rng);
     orbit.radius_rate = (2 * unit(rng) - 1) * (v - vg);
     const double theta = 2 * kPiValue * unit(rng);
-    const int direction = trial % 2 == 0 ? 1 : -1;
-    const double theirs = orbit_curvature(orbit.radius, orbit.radius_rate, theta - gamma, v, vg, direction > 0);
-    const double ours = direction * orbit_signed_curvature(theta, orbit, v, direction);
+    const Circulation direction = trial % 2 == 0 ? Circulation::CounterClockwise : Circulation::Clockwise;
+    const double theirs = orbit_curvature(orbit.radius, orbit.radius_rate, theta - gamma, v, vg, direction);
+    const double ours = sign(direction) * orbit_signed_curvature(theta, orbit, v, direction);
     EXPECT_NEAR(ours, theirs, 1e-9 * theirs) << trial;
     EXPECT_NEAR(lemma6_curvature_bound(orbit.radius, v, vg), max_orbit_curvature(orbit.radius, v, vg), 1e-15);
   }
@@ -295,10 +296,10 @@ TEST(OrbitTheory, Lemma5ViolationIsAnError) {
   orbit.center_velocity = Vec2(5.0, 0.0);
   orbit.radius = 100.0;
   orbit.radius_rate = 16.0;  // v - v_g = 15 at v = 20
-  EXPECT_THROW(orbit_signed_curvature(0.0, orbit, 20.0, 1), Error);
-  EXPECT_NO_THROW(orbit_signed_curvature(kPiValue, orbit, 20.0, 1));  // g_dot . e_r = -5 there
+  EXPECT_THROW(orbit_signed_curvature(0.0, orbit, 20.0, Circulation::CounterClockwise), Error);
+  EXPECT_NO_THROW(orbit_signed_curvature(kPiValue, orbit, 20.0, Circulation::CounterClockwise));  // g_dot . e_r = -5 there
   try {
-    orbit_polar_rate(0.0, orbit, 20.0, 1);
+    orbit_polar_rate(0.0, orbit, 20.0, Circulation::CounterClockwise);
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("orbit.radius_rate"), std::string::npos);
   }
@@ -328,17 +329,23 @@ TEST(Guidance, InvalidInputsNameTheField) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("gains.beta"), std::string::npos);
   }
-  gains = GuidanceGains{};
-  gains.direction = 0;
-  EXPECT_THROW(gains.validate(), Error);
-  EXPECT_THROW(circulation_sign("up"), Error);
-  EXPECT_EQ(circulation_sign("cw"), -1);
+  EXPECT_THROW(circulation_from_string("up"), Error);
+  EXPECT_EQ(circulation_from_string("cw"), Circulation::Clockwise);
+  EXPECT_EQ(to_string(circulation_from_string("CCW")), "ccw");
   Uav uav;
   uav.min_turn_radius = 5.0;
   Control control;
-  control.direction = "cw";
+  control.direction = Circulation::Clockwise;
   const GuidanceGains from = GuidanceGains::from(uav, control);
-  EXPECT_EQ(from.direction, -1);
+  EXPECT_EQ(from.direction, Circulation::Clockwise);
+  // The gains' defaults are the Uav's and the Control's (parameters.hpp holds each once).
+  const GuidanceGains defaults;
+  const GuidanceGains derived = GuidanceGains::from(Uav{}, Control{});
+  EXPECT_EQ(defaults.speed, derived.speed);
+  EXPECT_EQ(defaults.beta, derived.beta);
+  EXPECT_EQ(defaults.k_psi, derived.k_psi);
+  EXPECT_EQ(defaults.direction, derived.direction);
+  EXPECT_EQ(defaults.max_turn_rate, derived.max_turn_rate);
   EXPECT_DOUBLE_EQ(from.max_turn_rate, 4.0);
   EXPECT_THROW(lemma6_curvature_bound(-1.0, 1.0, 0.5), Error);
 }

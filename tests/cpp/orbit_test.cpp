@@ -55,7 +55,7 @@ double flown_curvature(double R0, double Rdot, double a0, double v, double vg, b
 
 TEST(OrbitCurvature, StillPoiAndConstantRadiusIsACircle) {
   EXPECT_NEAR(vt::orbit_curvature(80.0, 0.0, 0.3, 20.0, 0.0), 1.0 / 80.0, 1e-15);
-  EXPECT_NEAR(vt::orbit_curvature(80.0, 0.0, 0.3, 20.0, 0.0, false), 1.0 / 80.0, 1e-15);
+  EXPECT_NEAR(vt::orbit_curvature(80.0, 0.0, 0.3, 20.0, 0.0, vt::Circulation::Clockwise), 1.0 / 80.0, 1e-15);
 }
 
 TEST(OrbitCurvature, ClosedForm31MatchesTheFlownPath) {
@@ -65,7 +65,7 @@ TEST(OrbitCurvature, ClosedForm31MatchesTheFlownPath) {
     const double v = 20.0, vg = 1.0 + 8.0 * u(rng), R = 40.0 + 150.0 * u(rng);
     const double Rdot = (2 * u(rng) - 1) * 0.8 * (v - vg), a = vt::kTwoPi * u(rng);
     const bool ccw = trial % 2 == 0;
-    const double closed = vt::orbit_curvature(R, Rdot, a, v, vg, ccw);
+    const double closed = vt::orbit_curvature(R, Rdot, a, v, vg, ccw ? vt::Circulation::CounterClockwise : vt::Circulation::Clockwise);
     EXPECT_NEAR(flown_curvature(R, Rdot, a, v, vg, ccw), closed, 1e-4 * closed + 1e-7)
         << "R=" << R << " Rdot=" << Rdot << " a=" << a << " vg=" << vg;
   }
@@ -78,12 +78,12 @@ TEST(OrbitCurvature, Lemma6BoundIsTheMaximumOverAnglesAndAdmissibleRates) {
     for (int i = 0; i <= 720; ++i)
       for (int j = 1; j < 200; ++j) {  // open interval: on Lemma 5's boundary (31) is 0/0
         const double a = -vt::kPi + vt::kTwoPi * i / 720, Rdot = (v - vg) * (-1.0 + 2.0 * j / 200);
-        best = std::max(best, vt::orbit_curvature(R, Rdot, a, v, vg, true));
+        best = std::max(best, vt::orbit_curvature(R, Rdot, a, v, vg, vt::Circulation::CounterClockwise));
       }
     const double bound = vt::max_orbit_curvature(R, v, vg);
     EXPECT_NEAR(best, bound, 1e-9 * bound) << "b = " << b;
-    EXPECT_NEAR(vt::orbit_curvature(R, 0.0, vt::kPi / 2, v, vg, true), bound, 1e-12);   // CCW at +pi/2
-    EXPECT_NEAR(vt::orbit_curvature(R, 0.0, -vt::kPi / 2, v, vg, false), bound, 1e-12); // CW at -pi/2
+    EXPECT_NEAR(vt::orbit_curvature(R, 0.0, vt::kPi / 2, v, vg, vt::Circulation::CounterClockwise), bound, 1e-12);   // CCW at +pi/2
+    EXPECT_NEAR(vt::orbit_curvature(R, 0.0, -vt::kPi / 2, v, vg, vt::Circulation::Clockwise), bound, 1e-12); // CW at -pi/2
     EXPECT_LE(bound, 4.0 / R);  // Corollary 1
   }
   // Beyond Lemma 5's rate no constant-speed motion stays on the orbit.
@@ -266,15 +266,15 @@ TEST(PlanOrbits, SyntheticWorldEndToEndAndJsonRoundTrip) {
   const auto plan = vt::plan_orbits(poi, uav(20.0, 10.0), sensor, planning, cache, grid_metric, slice);
   ASSERT_EQ(plan.radii.size(), plan.times.size());
   for (std::size_t k = 0; k < plan.times.size(); ++k)
-    EXPECT_DOUBLE_EQ(plan.max_radii[k], plan.arc_lengths[k] < 37.0 ? 50.0 : 60.0);
+    EXPECT_DOUBLE_EQ(plan.max_radii[k], plan.samples.arc_lengths[k] < 37.0 ? 50.0 : 60.0);
   EXPECT_TRUE(plan.feasible);
-  EXPECT_EQ(plan.radius_rates.size() + 1, plan.times.size());
-  for (double rate : plan.radius_rates) EXPECT_LE(std::abs(rate), 15.0 + 1e-12);
+  EXPECT_EQ(plan.orbits.radius_rates.size() + 1, plan.times.size());
+  for (double rate : plan.orbits.radius_rates) EXPECT_LE(std::abs(rate), 15.0 + 1e-12);
   const auto again = vt::visibility_orbit_plan_from_json(vt::to_json(plan));
   EXPECT_EQ(again.times, plan.times);
   EXPECT_EQ(again.radii, plan.radii);
-  EXPECT_EQ(again.radius_rates, plan.radius_rates);
-  EXPECT_EQ(again.depths, plan.depths);
+  EXPECT_EQ(again.orbits.radius_rates, plan.orbits.radius_rates);
+  EXPECT_EQ(again.samples.depths, plan.samples.depths);
   ASSERT_EQ(again.polygons.size(), plan.polygons.size());
   EXPECT_EQ(again.polygons[3][0].outer, plan.polygons[3][0].outer);
   EXPECT_DOUBLE_EQ(again.uav.speed, 20.0);
@@ -328,19 +328,19 @@ TEST(PlanOrbits, PaperSlowExampleOnCharlotte) {
   });
   EXPECT_TRUE(plan.feasible) << plan.infeasibility;
   EXPECT_EQ(last_done, last_total);
-  EXPECT_EQ(plan.volumes_computed, plan.times.size());
+  EXPECT_EQ(plan.samples.volumes_computed, plan.times.size());
   EXPECT_NEAR(plan.times.back(), poi.duration(), 1e-9);
   for (std::size_t k = 0; k < plan.times.size(); ++k) {
     EXPECT_LE(plan.radii[k], plan.max_radii[k] + 1e-9);
-    EXPECT_GE(plan.radii[k], plan.min_feasible_radius);
+    EXPECT_GE(plan.radii[k], plan.orbits.min_feasible_radius);
     // MaxRadius is at most the sensor's reach at h_UAV: sqrt(d_max^2 - (h - g_z)^2).
     EXPECT_LE(plan.max_radii[k], std::sqrt(400.0 * 400.0 - 299.5 * 299.5) + 1e-6);
     EXPECT_EQ(plan.max_radii[k], vt::max_inscribed_radius(plan.polygons[k], poi.position(plan.times[k]).head<2>()));
   }
   for (std::size_t k = 0; k + 1 < plan.times.size(); ++k) {
-    EXPECT_LE(std::abs(plan.radius_rates[k]), 15.0 + 1e-9);
+    EXPECT_LE(std::abs(plan.orbits.radius_rates[k]), 15.0 + 1e-9);
     // The planner's metric is the radial (exact per-direction mesh) XOR of neighbouring VVs.
-    EXPECT_EQ(plan.metric[k], vt::radial_xor_volume(*plan.volumes[k], *plan.volumes[k + 1]));
+    EXPECT_EQ(plan.samples.metric[k], vt::radial_xor_volume(*plan.samples.volumes[k], *plan.samples.volumes[k + 1]));
   }
   // The paper reports 158 m -> 127 m (see README for why ours differs by ~4 %).
   EXPECT_NEAR(plan.radii.front(), 158.0, 0.1 * 158.0);

@@ -29,7 +29,6 @@ OrbitPlan morphing_plan(const PoiPath& poi, const Uav& uav) {
   }
   plan.times.push_back(poi.duration());
   plan.radii.push_back(130.0);
-  plan.max_radii = plan.radii;
   return plan;
 }
 
@@ -52,7 +51,7 @@ TEST(Simulate, StartingOnTheOrbitStaysOnIt) {
   const PoiPath poi = two_leg_path(5.0);
   const OrbitPlan plan = constant_radius_plan(poi, 150.0, uav);
   OrbitState orbit = orbit_state(plan, 0.0, 0.0);
-  const Vec3 x0 = orbit_configuration(1.0, orbit, uav.speed, +1);
+  const Vec3 x0 = orbit_configuration(1.0, orbit, uav.speed, Circulation::CounterClockwise);
   SimulationOptions options;
   options.rtol = 1e-10;
   options.atol = 1e-10;
@@ -79,7 +78,7 @@ TEST(Simulate, Lemma7ConvergenceFromOutsideTheOrbit) {
   w << 0.0, 0.0, 600.0, 300.0;
   const PoiPath poi(w, 5.0);
   const OrbitPlan plan = constant_radius_plan(poi, 100.0, uav);
-  for (const char* direction : {"ccw", "cw"}) {
+  for (const Circulation direction : {Circulation::CounterClockwise, Circulation::Clockwise}) {
     control.direction = direction;
     for (const Vec3& x0 : {Vec3(0.0, 300.0, -M_PI), Vec3(-250.0, -10.0, 0.3), Vec3(150.0, 150.0, 2.0),
                            Vec3(0.0, -400.0, M_PI / 2)}) {
@@ -93,8 +92,8 @@ TEST(Simulate, Lemma7ConvergenceFromOutsideTheOrbit) {
         }
       }
       EXPECT_GT(std::abs(r.radial_error[0]), 50.0);
-      EXPECT_LT(late_radial, 1e-3) << direction << " " << x0.transpose();
-      EXPECT_LT(late_heading, 1e-4) << direction << " " << x0.transpose();
+      EXPECT_LT(late_radial, 1e-3) << to_string(direction) << " " << x0.transpose();
+      EXPECT_LT(late_heading, 1e-4) << to_string(direction) << " " << x0.transpose();
     }
   }
 }
@@ -146,7 +145,7 @@ TEST(Simulate, InvariantUnderRotationTranslationAndMirror) {
     Control control;
     control.beta = 0.02 + 0.3 * unit(rng);
     control.k_psi = 5.0 + 30.0 * unit(rng);
-    control.direction = trial % 2 == 0 ? "ccw" : "cw";
+    control.direction = trial % 2 == 0 ? Circulation::CounterClockwise : Circulation::Clockwise;
     Eigen::MatrixXd w(3, 2);
     for (int i = 0; i < 3; ++i) w.row(i) << 300.0 * unit(rng) - 150.0, 300.0 * unit(rng) - 150.0;
     const double poi_speed = 0.5 * uav.speed * unit(rng);
@@ -167,7 +166,7 @@ TEST(Simulate, InvariantUnderRotationTranslationAndMirror) {
     Eigen::MatrixXd w_mirror = w;
     w_mirror.col(1) *= -1.0;
     Control flipped = control;
-    flipped.direction = control.direction == "ccw" ? "cw" : "ccw";
+    flipped.direction = control.direction == Circulation::CounterClockwise ? Circulation::Clockwise : Circulation::CounterClockwise;
     const SimulationResult mirror = simulate(constant_radius_plan(PoiPath(w_mirror, poi_speed), radius, uav), uav,
                                              Vec3(x0.x(), -x0.y(), -x0.z()), flipped, options);
 
@@ -280,9 +279,9 @@ TEST(Simulate, BadInputNamesTheField) {
   };
   EXPECT_NE(message([&] { simulate(plan, uav, Vec3(std::nan(""), 0.0, 0.0), Control{}); }).find("x0[0]"),
             std::string::npos);
-  Control bad;
-  bad.direction = "sideways";
-  EXPECT_NE(message([&] { simulate(plan, uav, Vec3::Zero(), bad); }).find("control.direction"), std::string::npos);
+  // A direction is a Circulation: a bad one can only come from text, which names its field.
+  EXPECT_NE(message([&] { circulation_from_string("sideways", "control.direction"); }).find("control.direction"),
+            std::string::npos);
   Uav slow = uav;
   slow.speed = 4.0;
   EXPECT_NE(message([&] { simulate(plan, slow, Vec3::Zero(), Control{}); }).find("uav.speed"), std::string::npos);
@@ -303,7 +302,7 @@ TEST(Tuning, PaperFigure9Parameters) {
   grid.num_radii = 120;
   grid.num_angles = 240;
   grid.num_heading_errors = 61;
-  const TuningResult t = tune_turn_rate(85.9, 1.30, 20.0, 5.0, 0.025, +1, grid);
+  const TuningResult t = tune_turn_rate(85.9, 1.30, 20.0, 5.0, 0.025, Circulation::CounterClockwise, grid);
   EXPECT_GT(t.max_turn_rate, 0.3);
   EXPECT_LT(t.max_turn_rate, 0.4);
   // The maximum is attained somewhere on the grid and is the map's maximum.
@@ -319,10 +318,10 @@ TEST(Tuning, PaperFigure9Parameters) {
   const VectorField f = vector_field(t.at_r * Vec2(std::cos(t.at_theta), std::sin(t.at_theta)), orbit, gains);
   EXPECT_NEAR(std::abs(f.heading_rate + lyapunov_term(f, orbit, 0.025, t.at_heading_error)), t.max_turn_rate, 1e-12);
   // Larger beta attracts harder and turns harder.
-  EXPECT_GT(tune_turn_rate(85.9, 1.30, 20.0, 5.0, 0.1, +1, grid).max_turn_rate, t.max_turn_rate);
+  EXPECT_GT(tune_turn_rate(85.9, 1.30, 20.0, 5.0, 0.1, Circulation::CounterClockwise, grid).max_turn_rate, t.max_turn_rate);
   EXPECT_THROW(tune_turn_rate(85.9, 16.0, 20.0, 5.0, 0.025), Error);
   grid.tau = 0.0;
-  EXPECT_THROW(tune_turn_rate(85.9, 1.3, 20.0, 5.0, 0.025, +1, grid), Error);
+  EXPECT_THROW(tune_turn_rate(85.9, 1.3, 20.0, 5.0, 0.025, Circulation::CounterClockwise, grid), Error);
 }
 
 }  // namespace

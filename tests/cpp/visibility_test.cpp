@@ -15,6 +15,7 @@
 #include "vistrack/error.hpp"
 #include "vistrack/orbit.hpp"
 #include "vistrack/volume.hpp"
+#include "volume/points_inside.hpp"
 
 namespace vistrack {
 namespace {
@@ -366,7 +367,7 @@ void cross_check_with_line_of_sight(const VisibilityScene& scene, const Visibili
   const std::size_t kNeighbours = offsets.size();
   Points3 query(static_cast<Eigen::Index>(points.size()), 3);
   for (std::size_t k = 0; k < points.size(); ++k) query.row(static_cast<Eigen::Index>(k)) = points[k].transpose();
-  const std::vector<bool> inside = points_inside(vv.mesh, query);
+  const std::vector<bool> inside = detail::points_inside(vv.mesh, query);
   int clear = 0, agree = 0, visible = 0;
   for (std::size_t k = 0; k < points.size(); ++k) {
     bool same = true;

@@ -245,14 +245,14 @@ TEST(DiskVolumeCache, FolderIsCreatedAndAnUnusableOneIsAnErrorNamingCacheDir) {
   const std::string nested = (folder.path / "a" / "b").string();
   vt::Sensor sensor;
   sensor.d_max = 80.0;
-  const vt::OrbitPlanner planner(city(), sensor, kResolution, nested);
+  const vt::OrbitPlanner planner(city(), sensor, nested);
   EXPECT_TRUE(fs::is_directory(nested));
   EXPECT_EQ(planner.disk_hits() + planner.disk_misses(), 0u);
 
   const std::string file = folder.file("plain-file");
   write_bytes(file, {'x'});
-  expect_error_naming([&] { vt::OrbitPlanner(city(), sensor, kResolution, file); }, {"cache_dir", file});
-  expect_error_naming([&] { vt::OrbitPlanner(city(), sensor, kResolution, file + "/sub"); }, {"cache_dir"});
+  expect_error_naming([&] { vt::OrbitPlanner(city(), sensor, file); }, {"cache_dir", file});
+  expect_error_naming([&] { vt::OrbitPlanner(city(), sensor, file + "/sub"); }, {"cache_dir"});
   EXPECT_EQ(file_bytes(file), std::vector<char>{'x'});
 }
 
@@ -271,27 +271,27 @@ TEST(DiskVolumeCache, SecondPlannerOnTheSameFolderComputesNothing) {
   planning.cutoff = 2e5;
   planning.resolution_deg = kResolution;
 
-  vt::OrbitPlanner cold(city(), sensor, kResolution, folder.path.string());
+  vt::OrbitPlanner cold(city(), sensor, folder.path.string());
   const vt::VisibilityOrbitPlan a = cold.plan(poi, uav, planning);
   EXPECT_GT(a.times.size(), 7u);  // refined beyond the 7 initial samples
   EXPECT_EQ(cold.disk_hits(), 0u);
-  EXPECT_EQ(cold.disk_misses(), a.volumes.size());
-  EXPECT_EQ(folder.count(), a.volumes.size());
+  EXPECT_EQ(cold.disk_misses(), a.samples.volumes.size());
+  EXPECT_EQ(folder.count(), a.samples.volumes.size());
 
-  vt::OrbitPlanner warm(city(), sensor, kResolution, folder.path.string());
+  vt::OrbitPlanner warm(city(), sensor, folder.path.string());
   const vt::VisibilityOrbitPlan b = warm.plan(poi, uav, planning);
   EXPECT_EQ(warm.disk_misses(), 0u);
-  EXPECT_EQ(warm.disk_hits(), a.volumes.size());
+  EXPECT_EQ(warm.disk_hits(), a.samples.volumes.size());
   EXPECT_EQ(a.times, b.times);
   EXPECT_EQ(a.radii, b.radii);
   EXPECT_EQ(a.max_radii, b.max_radii);
-  EXPECT_EQ(a.metric, b.metric);
-  for (std::size_t k = 0; k < a.volumes.size(); ++k) expect_bit_identical(*a.volumes[k], *b.volumes[k]);
+  EXPECT_EQ(a.samples.metric, b.samples.metric);
+  for (std::size_t k = 0; k < a.samples.volumes.size(); ++k) expect_bit_identical(*a.samples.volumes[k], *b.samples.volumes[k]);
 
   // Another d_max misses every file and adds its own.
   vt::Sensor wider = sensor;
   wider.d_max = 110.0;
-  vt::OrbitPlanner other(city(), wider, kResolution, folder.path.string());
+  vt::OrbitPlanner other(city(), wider, folder.path.string());
   other.plan(poi, uav, planning);
   EXPECT_EQ(other.disk_hits(), 0u);
   EXPECT_GT(other.disk_misses(), 0u);
@@ -299,7 +299,7 @@ TEST(DiskVolumeCache, SecondPlannerOnTheSameFolderComputesNothing) {
   // The same plan through plan_orbits(..., cache_dir) hits every file too.
   const vt::VisibilityOrbitPlan c = vt::plan_orbits(city(), poi, uav, sensor, planning, {}, folder.path.string());
   EXPECT_EQ(c.radii, a.radii);
-  EXPECT_EQ(c.volumes_computed, a.volumes_computed);  // computed by the memo, read from disk
+  EXPECT_EQ(c.samples.volumes_computed, a.samples.volumes_computed);  // computed by the memo, read from disk
 }
 
 TEST(DiskVolumeCache, ConcurrentUseFromTbbThreads) {

@@ -1,5 +1,6 @@
 // Closed-mesh checks and plane slicing (section IV: VPs from VVs).
 #include "vistrack/volume.hpp"
+#include "volume/points_inside.hpp"
 
 #include <gtest/gtest.h>
 
@@ -157,14 +158,14 @@ TEST(Slice, ShellSliceHasAHoleAndPointsInsideAgree) {
   std::uniform_real_distribution<double> u(-12.0, 12.0);
   Points3 points(2000, 3);
   for (Eigen::Index k = 0; k < points.rows(); ++k) points.row(k) << u(rng), u(rng), u(rng);
-  const std::vector<bool> inside = points_inside(shell, points);
+  const std::vector<bool> inside = detail::points_inside(shell, points);
   for (Eigen::Index k = 0; k < points.rows(); ++k) {
     const Vec3 p = points.row(k).transpose();
     const bool in_outer = (p.array().abs().head<2>() < 10).all() && p.z() > 0 && p.z() < 10;
     const bool in_inner = (p.array().abs().head<2>() < 3).all() && p.z() > 2 && p.z() < 8;
     EXPECT_EQ(inside[static_cast<std::size_t>(k)], in_outer && !in_inner) << p.transpose();
   }
-  EXPECT_THROW(points_inside(TriangleMesh{}, points), Error);
+  EXPECT_THROW(detail::points_inside(TriangleMesh{}, points), Error);
 }
 
 TEST(VisibilityPolygon, KeepsThePartOverThePoiAndRespectsTheBand) {

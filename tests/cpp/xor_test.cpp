@@ -293,9 +293,9 @@ TEST(RadialXor, EqualsCgalOnTheSameMeshes) {
       // CGAL needs the documented nudge here (identical sphere faces about the POIs are its slow
       // branch: minutes); it moves the XOR by less than 1e-6 rad x r x area, about 1e-6 of it.
       vt::MeshXorOptions nudge;
-      nudge.perturbation = 1e-6;
+      nudge.perturbation = vt::kPoiFramePerturbation;
       const double cgal = vt::mesh_xor_volume(about_poi(a), about_poi(b), nudge);
-      const double nudge_bound = nudge.perturbation * 150.0 * (area(a.mesh) + area(b.mesh));
+      const double nudge_bound = *nudge.perturbation * 150.0 * (area(a.mesh) + area(b.mesh));
       EXPECT_NEAR(radial, cgal, nudge_bound) << ga.transpose() << " / " << gb.transpose() << " res " << res;
       EXPECT_LT(nudge_bound, 1e-3 * cgal);  // so the comparison is sharp
       EXPECT_GT(radial, 0.0);
@@ -337,9 +337,9 @@ TEST(RadialXor, MeshesOnDifferentVertexRowsAreOverlappedToo) {
   ASSERT_TRUE(vt::shares_radial_mesh(low, high));
   const double radial = vt::radial_xor_volume(low, high);
   vt::MeshXorOptions nudge;
-  nudge.perturbation = 1e-6;
+  nudge.perturbation = vt::kPoiFramePerturbation;
   const double cgal = vt::mesh_xor_volume(about_poi(low), about_poi(high), nudge);
-  EXPECT_NEAR(radial, cgal, nudge.perturbation * 150.0 * (area(low.mesh) + area(high.mesh)));
+  EXPECT_NEAR(radial, cgal, *nudge.perturbation * 150.0 * (area(low.mesh) + area(high.mesh)));
   EXPECT_NEAR(vt::radial_xor_volume(high, low), radial, 1e-9 * radial);
   EXPECT_EQ(vt::xor_volume(low, high), radial);  // auto
 }

@@ -63,7 +63,7 @@ def small_example(charlotte):
     uav = vt.Uav(speed=20.0, min_turn_radius=5.0, altitude=50.0)
     sensor = vt.Sensor(d_max=100.0)
     planning = vt.Planning(spacing=20.0, cutoff=500e3, resolution_deg=1.0)
-    planner = vt.OrbitPlanner(env, sensor, 1.0)
+    planner = vt.OrbitPlanner(env, sensor)
     calls = []
     plan = planner.plan(poi, uav, planning, lambda done, total: calls.append((done, total)))
     return env, poi, uav, sensor, planning, planner, plan, calls
@@ -147,15 +147,21 @@ def test_infeasible_and_invisible_plans_say_why(small_example):
     assert max(high.max_radii) == 0.0
     with pytest.raises(vt.VistrackError, match="uav.speed"):
         planner.plan(poi, vt.Uav(speed=4.0, min_turn_radius=5.0, altitude=50.0), planning)
+    # Another grid resolution gets its own VV cache in the same planner (one source for the grid:
+    # the Planning), never a mix of grids.
+    before = planner.cached_volumes
+    coarse = planner.plan(poi, uav, vt.Planning(resolution_deg=4.0, cutoff=1e12))
+    assert coarse.volume(0).grid.num_azimuth == 90 and coarse.planning.resolution_deg == 4.0
+    assert planner.cached_volumes == before + coarse.num_volumes
     with pytest.raises(vt.VistrackError, match="resolution_deg"):
-        planner.plan(poi, uav, vt.Planning(resolution_deg=2.0))
+        vt.Planning(resolution_deg=0.01)
 
 
 def test_cli_orbits_writes_plan_and_figures(charlotte, tmp_path):
     from vistrack.cli import main
 
     out = tmp_path / "run"
-    code = main(["orbits", "--map", str(charlotte / "uptown_charlotte.obj"),
+    code = main(["orbits", "--map", str(charlotte / "uptown_charlotte.obj"), "--up", "y",
                  "--path", str(charlotte / "paths" / "paper_small.csv"), "--out", str(out),
                  "--altitude", "50", "--d-max", "100", "--cutoff", "500e3", "--min-turn-radius", "5",
                  "--figure-metric", "--spacings", "40,20", "--quiet"])

@@ -60,11 +60,11 @@ def _assert_reproduces(saved: vt.VisibilityOrbitPlan, plan: vt.VisibilityOrbitPl
 def test_from_volumes_reproduces_fixed_spacing_plan(city, tmp_path: Path) -> None:
     env, poi, uav, sensor, csv = city
     cache = tmp_path / "vv"
-    planner = _core.OrbitPlanner(env, sensor, RESOLUTION, cache_dir=cache)
+    planner = _core.OrbitPlanner(env, sensor, cache_dir=cache)
     # A cutoff nothing exceeds: the planner's samples are the fixed 30 m ones.
     plan = planner.plan(poi, uav, vt.Planning(spacing=30.0, cutoff=1e12, resolution_deg=RESOLUTION))
     assert set(plan.depths) == {0} and plan.num_volumes == len(list(cache.glob("vv-*.bin"))) > 5
-    fixed = planner.fixed(poi, 30.0)
+    fixed = planner.fixed(poi, 30.0, RESOLUTION)
     assert list(fixed.times) == list(plan.times)
 
     out = tmp_path / "out"
@@ -91,7 +91,7 @@ def test_from_volumes_reproduces_fixed_spacing_plan(city, tmp_path: Path) -> Non
 def test_from_volumes_keeps_the_adaptively_inserted_samples(city, tmp_path: Path) -> None:
     env, poi, uav, sensor, csv = city
     cache = tmp_path / "vv"
-    planner = _core.OrbitPlanner(env, sensor, RESOLUTION, cache_dir=cache)
+    planner = _core.OrbitPlanner(env, sensor, cache_dir=cache)
     plan = planner.plan(poi, uav, vt.Planning(spacing=30.0, cutoff=2e5, resolution_deg=RESOLUTION))
     assert max(plan.depths) > 0  # some samples were inserted; their VVs are in the folder too
     out = tmp_path / "out"

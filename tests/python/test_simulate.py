@@ -180,7 +180,7 @@ def test_campus_flight_test_visibility_matches_the_paper(campus):
     def visibility(plan):
         orbit = vt.OrbitState(center=np.asarray(plan.centers)[0], center_velocity=np.asarray(poi.velocity(0.0)),
                               radius=plan.radii[0], radius_rate=plan.radius_rate(0.0))
-        return vt.simulate(plan, uav, vt.orbit_configuration(0.0, orbit, uav.speed, 1), control, scene).visibility_fraction
+        return vt.simulate(plan, uav, vt.orbit_configuration(0.0, orbit, uav.speed, "ccw"), control, scene).visibility_fraction
 
     for radius, paper in [(11.2, 1.00), (23.4, 0.840), (35.0, 0.640)]:
         assert visibility(vt.constant_radius_plan(poi, radius, uav)) == pytest.approx(paper, abs=0.03), radius

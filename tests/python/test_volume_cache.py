@@ -38,7 +38,7 @@ def _assert_same_plan(a, b) -> None:
 def test_second_planner_reads_every_vv_from_disk(small_city, tmp_path: Path) -> None:
     env, poi, uav, sensor, planning = small_city
     folder = tmp_path / "vv-cache" / "nested"  # created on demand; a Path is accepted
-    cold = _core.OrbitPlanner(env, sensor, 4.0, cache_dir=folder)
+    cold = _core.OrbitPlanner(env, sensor, cache_dir=folder)
     a = cold.plan(poi, uav, planning)
     n = a.num_volumes
     assert n > 7  # refined beyond the initial samples
@@ -46,13 +46,13 @@ def test_second_planner_reads_every_vv_from_disk(small_city, tmp_path: Path) -> 
     assert sorted(p.name for p in folder.iterdir()) == sorted(p.name for p in folder.glob("vv-*.bin"))
     assert len(list(folder.iterdir())) == n
 
-    warm = _core.OrbitPlanner(env, sensor, resolution_deg=4.0, cache_dir=str(folder))
+    warm = _core.OrbitPlanner(env, sensor, cache_dir=str(folder))
     b = warm.plan(poi, uav, planning)
     assert (warm.disk_hits, warm.disk_misses) == (n, 0)
     _assert_same_plan(a, b)
 
     # Without a cache folder nothing is counted, and the plan is the same.
-    plain = _core.OrbitPlanner(env, sensor, 4.0)
+    plain = _core.OrbitPlanner(env, sensor)
     _assert_same_plan(a, plain.plan(poi, uav, planning))
     assert (plain.disk_hits, plain.disk_misses) == (0, 0)
 
@@ -63,13 +63,13 @@ def test_second_planner_reads_every_vv_from_disk(small_city, tmp_path: Path) -> 
 
 def test_changed_inputs_miss_and_bad_files_are_recomputed(small_city, tmp_path: Path) -> None:
     env, poi, uav, sensor, planning = small_city
-    first = _core.OrbitPlanner(env, sensor, 4.0, cache_dir=tmp_path)
+    first = _core.OrbitPlanner(env, sensor, cache_dir=tmp_path)
     a = first.plan(poi, uav, planning)
     n = a.num_volumes
     first_files = sorted(tmp_path.glob("vv-*.bin"))
     sizes = {f: f.stat().st_size for f in first_files}
     # Another altitude band is another VV: every file misses and is added beside the first ones.
-    banded = _core.OrbitPlanner(env, vt.Sensor(d_max=100.0, altitude_band=(20.0, 120.0)), 4.0, cache_dir=tmp_path)
+    banded = _core.OrbitPlanner(env, vt.Sensor(d_max=100.0, altitude_band=(20.0, 120.0)), cache_dir=tmp_path)
     banded.plan(poi, uav, planning)
     assert banded.disk_hits == 0 and banded.disk_misses > 0
     assert len(list(tmp_path.glob("vv-*.bin"))) == n + banded.disk_misses
@@ -77,7 +77,7 @@ def test_changed_inputs_miss_and_bad_files_are_recomputed(small_city, tmp_path: 
     victims = first_files[:2]
     victims[0].write_bytes(victims[0].read_bytes()[:100])
     victims[1].write_bytes(b"not a VV file")
-    again = _core.OrbitPlanner(env, sensor, 4.0, cache_dir=tmp_path)
+    again = _core.OrbitPlanner(env, sensor, cache_dir=tmp_path)
     b = again.plan(poi, uav, planning)
     _assert_same_plan(a, b)
     assert all(v.stat().st_size == sizes[v] for v in victims)  # rewritten whole
@@ -89,12 +89,12 @@ def test_unusable_cache_dir_is_an_error_naming_it(small_city, tmp_path: Path) ->
     blocker = tmp_path / "a-file"
     blocker.write_text("x")
     with pytest.raises(vt.VistrackError, match="cache_dir"):
-        _core.OrbitPlanner(env, sensor, 4.0, cache_dir=blocker)
+        _core.OrbitPlanner(env, sensor, cache_dir=blocker)
     with pytest.raises(vt.VistrackError, match="cache_dir"):
-        _core.OrbitPlanner(env, sensor, 4.0, cache_dir=blocker / "sub")
+        _core.OrbitPlanner(env, sensor, cache_dir=blocker / "sub")
     assert blocker.read_text() == "x"
     with pytest.raises(TypeError):
-        _core.OrbitPlanner(env, sensor, 4.0, cache_dir=12)
+        _core.OrbitPlanner(env, sensor, cache_dir=12)
 
 
 def test_charlotte_second_plan_is_identical_and_all_hits(charlotte: Path, tmp_path: Path) -> None:
@@ -103,10 +103,10 @@ def test_charlotte_second_plan_is_identical_and_all_hits(charlotte: Path, tmp_pa
     uav = vt.Uav(speed=20.0, min_turn_radius=5.0, altitude=50.0)
     sensor = vt.Sensor(d_max=100.0)
     planning = vt.Planning(spacing=20.0, cutoff=500e3, resolution_deg=2.0)
-    cold = vt.OrbitPlanner(env, sensor, 2.0, cache_dir=tmp_path)
+    cold = vt.OrbitPlanner(env, sensor, cache_dir=tmp_path)
     a = cold.plan(poi, uav, planning)
     assert cold.disk_misses == a.num_volumes > 0 and cold.disk_hits == 0
-    warm = vt.OrbitPlanner(env, sensor, 2.0, cache_dir=tmp_path)
+    warm = vt.OrbitPlanner(env, sensor, cache_dir=tmp_path)
     b = warm.plan(poi, uav, planning)
     assert warm.disk_misses == 0 and warm.disk_hits == a.num_volumes
     _assert_same_plan(a, b)

@@ -71,9 +71,6 @@ struct DubinsPath {
   // Configuration after arc length s in [0, length] (s outside is an Error). Headings are not
   // wrapped: they continue from start.psi. At s == length the goal is returned exactly.
   Configuration at(double s) const;
-  // Configuration reached by integrating the segments to s (no snapping to the goal); tests
-  // use it to check that the segments really end at the goal.
-  Configuration integrate(double s) const;
   // Rows (x, y, psi) at s = 0, step, 2 step, ... and the goal exactly as the last row (only
   // the goal when length == 0).
   Points3 sample(double step) const;

@@ -4,11 +4,9 @@
 // orbit-following quantities of section IV.A (polar rate (13), curvature (31)) that Theorem 1 and
 // Lemma 6 are about.
 //
-// Conventions: angles in radians counter-clockwise from +x; direction +1 is counter-clockwise
-// circulation (the "+" root of (72)), -1 clockwise. All functions are pure and allocation free.
+// Conventions: angles in radians counter-clockwise from +x; counter-clockwise circulation takes
+// the "+" root of (72), clockwise the "-" root. All functions are pure and allocation free.
 #pragma once
-
-#include <string>
 
 #include "vistrack/geometry.hpp"
 #include "vistrack/parameters.hpp"
@@ -24,19 +22,17 @@ struct OrbitState {
   double radius_rate = 0.0;          // R_dot
 };
 
-// Parameters of the vector field and of the steering law.
+// Parameters of the vector field and of the steering law: a Uav and a Control seen by the
+// guidance (the defaults are theirs, from parameters.hpp).
 struct GuidanceGains {
-  double speed = 20.0;        // v, UAV speed (m/s)
-  double beta = 0.025;        // circulation / attraction parameter of a_1 (59)
-  double k_psi = 20.0;        // heading gain of (86)
-  int direction = +1;         // +1 counter-clockwise, -1 clockwise
-  double max_turn_rate = 0.4; // v / r_min; the steering output is clamped to +-max_turn_rate
+  double speed = Uav{}.speed;                      // v, UAV speed (m/s)
+  double beta = Control{}.beta;                    // circulation / attraction parameter of a_1 (59)
+  double k_psi = Control{}.k_psi;                  // heading gain of (86)
+  Circulation direction = Control{}.direction;
+  double max_turn_rate = Uav{}.speed / Uav{}.min_turn_radius;  // v / r_min; the command is clamped to it
   void validate() const;
   static GuidanceGains from(const Uav& uav, const Control& control);
 };
-
-// Direction of a Control as +1 (ccw) or -1 (cw); throws Error for any other text.
-int circulation_sign(const std::string& direction);
 
 // Everything the vector field (74) gives at one point xi and time.
 struct VectorField {
@@ -47,7 +43,7 @@ struct VectorField {
   double radial_error = 0.0; // r - R
   double attraction = 0.0;   // Phi' of (70)
   double u_r = 0.0;          // radial component of u (74)
-  double u_theta = 0.0;      // circulation component of u (74), sign = direction
+  double u_theta = 0.0;      // circulation component of u (74), sign = sign(direction)
   Vec2 u = Vec2::Zero();     // the field in x, y (75); |u| = v
   double heading = 0.0;      // psi_d of (77), in (-pi, pi]
   double attraction_rate = 0.0;  // dPhi'/dt along the field (83)
@@ -92,13 +88,13 @@ double one_minus_cos_over_x(double x);
 double sinc(double x);
 
 // Exact orbit following (section IV.A). At polar angle theta on the orbit:
-// theta_dot of (13) and the signed curvature of the path, +-(31) (+ for direction +1).
+// theta_dot of (13) and the signed curvature of the path, +-(31) (+ counter-clockwise).
 // Throws Error when v^2 < (g_dot . e_r + R_dot)^2, i.e. Lemma 5 is violated at theta.
-double orbit_polar_rate(double theta, const OrbitState& orbit, double speed, int direction);
-double orbit_signed_curvature(double theta, const OrbitState& orbit, double speed, int direction);
+double orbit_polar_rate(double theta, const OrbitState& orbit, double speed, Circulation direction);
+double orbit_signed_curvature(double theta, const OrbitState& orbit, double speed, Circulation direction);
 
 // Initial configuration (38)-(40) on the orbit at polar angle theta_0.
-Vec3 orbit_configuration(double theta0, const OrbitState& orbit, double speed, int direction);
+Vec3 orbit_configuration(double theta0, const OrbitState& orbit, double speed, Circulation direction);
 
 // The curvature bound of Lemma 6, (v_g + v)^2 / (R v^2), and the gain bound of (87),
 // v beta 4 / pi^2 eps_max, with eps_max the maximum of atan^2(x) / (1 + x^2).

@@ -1,10 +1,12 @@
 // Orbits about the moving POI (section IV): the largest inscribed radius in a visibility
-// polygon, Algorithm 1 (rate and curvature feasibility) and the orbit plan.
+// polygon, Algorithm 1 (rate and curvature feasibility), the adaptive placement of VVs along the
+// POI path, the orbit plan and its JSON form, and the planner on a real environment.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,17 +17,17 @@
 #include "vistrack/geometry.hpp"
 #include "vistrack/parameters.hpp"
 #include "vistrack/visibility.hpp"
+#include "vistrack/volume.hpp"
 
 namespace vistrack {
 
-// The time-varying reference orbit O(theta, t) = g(t) + R(t) [cos theta, sin theta] of eq. (5):
-// R is piecewise linear between the samples (times[k], radii[k]); g(t) is the POI path.
+// The time-varying reference orbit O(theta, t) = g(t) + R(t) [cos theta, sin theta] of eq. (5)
+// that the guidance follows: R is piecewise linear between the knots (times[k], radii[k]); g(t)
+// is the POI path.
 struct OrbitPlan {
   PoiPath poi;
   std::vector<double> times;         // t_k, increasing, times.front() = 0
-  std::vector<double> radii;         // R(t_k) after Algorithm 1
-  std::vector<double> max_radii;     // MaxRadius from the visibility polygons, before Algorithm 1
-  std::vector<double> metric;        // XOR volume between neighbouring VVs (size n - 1), may be empty
+  std::vector<double> radii;         // R(t_k)
   bool feasible = true;
   std::string infeasibility;         // which sample fails and why, when !feasible
 
@@ -35,16 +37,14 @@ struct OrbitPlan {
   double radius_rate(double t) const;
   // Segment index k with times[k] <= t < times[k+1] (the last segment at the end).
   std::size_t segment(double t) const;
+  // The orbit centres g(t_k), (n, 2).
+  Points2 centers() const;
 };
 
 // Radius of the largest circle centred at `center` inside the visibility polygon (the union of
 // `polygons`, holes included): the distance to the nearest boundary of the polygon containing the
 // centre, or 0 when no polygon contains it. Exact, not a sampled bisection (MaxRadius, sec. IV).
 double max_inscribed_radius(const std::vector<Polygon>& polygons, const Vec2& center);
-
-// JSON round trip of a plan (the POI path is stored as waypoints and speed).
-std::string to_json(const OrbitPlan& plan);
-OrbitPlan orbit_plan_from_json(const std::string& text);
 
 // Orbits of one radius along the whole POI path (the paper's constant-radius baselines).
 OrbitPlan constant_radius_plan(const PoiPath& poi, double radius, const Uav& uav);
@@ -54,10 +54,10 @@ OrbitPlan constant_radius_plan(const PoiPath& poi, double radius, const Uav& uav
 
 // Curvature (31) of the path flown while remaining on the orbit (Lemma 3), at the relative polar
 // angle a = theta - gamma, radius R, radial rate dR/dt, UAV speed v and POI speed v_g, with
-// theta' from (13) for CCW (+) or CW (-) circulation. +infinity when v^2 < (g'.e_r + R')^2 (no
+// theta' from (13) for the given circulation. +infinity when v^2 < (g'.e_r + R')^2 (no
 // constant-speed motion stays on the orbit there, Lemma 5).
 double orbit_curvature(double radius, double radius_rate, double relative_angle, double uav_speed,
-                       double poi_speed, bool counter_clockwise = true);
+                       double poi_speed, Circulation circulation = Circulation::CounterClockwise);
 
 // Lemma 6: the largest curvature over every a and every rate allowed by Lemma 5,
 // (1 + v_g/v)^2 / R, reached at a = +-pi/2 and R' = 0.
@@ -88,9 +88,6 @@ CircularOrbits circular_orbits(const std::vector<double>& times, const std::vect
 // ---------------------------------------------------------------------------------------------
 // Adaptive discretization of the POI path (section IV.B).
 
-using VolumePtr = std::shared_ptr<const VisibilityVolume>;
-// The VV at a POI position. Called from several threads at once: must be thread-safe.
-using VolumeFunction = std::function<VolumePtr(const Vec3& poi)>;
 // The difference metric (56) between two VVs. Called from several threads at once.
 using MetricFunction = std::function<double(const VisibilityVolume&, const VisibilityVolume&)>;
 // (VVs computed so far, VVs known to be needed so far); called on the calling thread.
@@ -106,39 +103,6 @@ struct Discretization {
   std::size_t volumes_computed = 0;  // VVs this call computed (the rest came from the cache)
 };
 
-// Thread-safe memo of VVs by POI position, to reuse VVs across calls (e.g. several spacings).
-class VolumeCache {
- public:
-  explicit VolumeCache(VolumeFunction compute);
-  // The VV at arc length s of `poi` (computed once). `computed` is set when it was new.
-  VolumePtr at(const PoiPath& poi, double arc_length, bool* computed = nullptr);
-  std::size_t size() const;
-
- private:
-  struct State;
-  std::shared_ptr<State> state_;
-};
-
-// VVs on disk, one file per input (volume_cache_key) in `folder`, so a second run with the same
-// environment, POI positions and parameters computes nothing. A missing, corrupt or stale file
-// is a miss: the VV is computed and the file (re)written atomically. Copies share the counters.
-class DiskVolumeCache {
- public:
-  // Creates the folder when missing; Error naming cache_dir when it cannot be created or written.
-  DiskVolumeCache(std::string folder, std::uint64_t environment_fingerprint, double d_max,
-                  std::optional<std::pair<double, double>> altitude_band, double resolution_deg);
-  // `compute` behind the disk: thread-safe when `compute` is.
-  VolumeFunction wrap(VolumeFunction compute) const;
-  std::string path(const Vec3& poi) const;   // the file of the VV at g
-  const std::string& folder() const;
-  std::size_t hits() const;    // VVs read from disk
-  std::size_t misses() const;  // VVs computed (and written)
-
- private:
-  struct State;
-  std::shared_ptr<State> state_;
-};
-
 // Initial samples every planning.spacing metres from the start of each path edge, plus every
 // node; then, recursively, a VV halfway between neighbours whose metric exceeds planning.cutoff,
 // while the halves stay >= planning.min_spacing and the depth < planning.max_depth (so it always
@@ -152,20 +116,17 @@ Discretization fixed_discretization(const PoiPath& poi, double spacing, VolumeCa
 // ---------------------------------------------------------------------------------------------
 // The whole planner: adaptive VVs, VPs at h_UAV, MaxRadius, Algorithm 1.
 
-// A plan with everything it was made from. Derives from OrbitPlan so it runs wherever a plan does.
+// A plan with everything it was made from. Its OrbitPlan part is the reference the guidance
+// follows (Algorithm 1's radii at the samples); it runs wherever a plan does.
 struct VisibilityOrbitPlan : OrbitPlan {
-  explicit VisibilityOrbitPlan(OrbitPlan base) : OrbitPlan(std::move(base)) {}
+  explicit VisibilityOrbitPlan(OrbitPlan reference) : OrbitPlan(std::move(reference)) {}
   Uav uav;
   Sensor sensor;
   Planning planning;
-  std::vector<double> arc_lengths;            // s_k of the samples
-  std::vector<int> depths;                    // refinement depth of each sample
-  std::vector<double> radius_rates;           // dR/dt per segment, size n - 1
-  double min_feasible_radius = 0.0;           // r_min (1 + v_g/v)^2 (Lemma 6)
-  std::vector<std::size_t> failing_samples;   // samples that break Lemma 6
-  std::vector<VolumePtr> volumes;             // the VVs (not stored in JSON)
-  std::vector<std::vector<Polygon>> polygons; // the VPs at h_UAV
-  std::size_t volumes_computed = 0;
+  Discretization samples;                      // the VV samples along the path, their VVs and metric (56)
+  std::vector<std::vector<Polygon>> polygons;  // the VPs at h_UAV, one list per sample
+  std::vector<double> max_radii;               // MaxRadius per sample (line 1 of Algorithm 1)
+  CircularOrbits orbits;                       // Algorithm 1 (lines 2-18) on max_radii
 };
 
 // VP(s) of a VV at an altitude above the ground.
@@ -175,46 +136,54 @@ using SliceFunction = std::function<std::vector<Polygon>(const VisibilityVolume&
 VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
                                 VolumeCache& cache, const MetricFunction& metric, const SliceFunction& slice,
                                 const ProgressFunction& progress = {});
+// The plan on given samples (no refinement): VPs by `slice`, MaxRadius, Algorithm 1.
+VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Sensor& sensor,
+                                    const Planning& planning, Discretization samples, const SliceFunction& slice);
+// The plan on VVs computed elsewhere (saved VV files), placed at the given increasing arc lengths
+// of `poi`: the metric (56) in the POI frame between neighbours, VPs by the edge-walking slicer,
+// MaxRadius and Algorithm 1, with nothing inserted. The VVs must share d_max, band and grid.
+VisibilityOrbitPlan plan_on_volumes(const PoiPath& poi, const Uav& uav, const Planning& planning,
+                                    const std::vector<double>& arc_lengths, const std::vector<VolumePtr>& volumes);
 
+// JSON round trips, the POI path stored as waypoints and speed ("vistrack.orbit_plan/1", and
+// "vistrack.visibility_orbit_plan/1" with samples, VPs and Algorithm 1's numbers but no VVs).
+std::string to_json(const OrbitPlan& plan);
+OrbitPlan orbit_plan_from_json(const std::string& text);
 std::string to_json(const VisibilityOrbitPlan& plan);
 VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text);
 
-// Rings where the plane z = altitude cuts a closed 2-manifold triangle mesh, by walking the
-// crossing edges (O(faces), no spatial tree; vertices on the plane count as below). Error when
-// the mesh is not closed or not 2-manifold along the cut.
-std::vector<Ring> plane_slice_rings(const TriangleMesh& mesh, double altitude);
-// The VP of a VV at world altitude z from plane_slice_rings: the same polygons as
-// visibility_polygon (CGAL slicer) at a fraction of the cost; the planner uses it.
-std::vector<Polygon> plane_visibility_polygon(const VisibilityVolume& vv, double altitude);
-
-// Section IV on a real environment: one Embree scene built once, VVs through a shared cache (so
-// several spacings or plans reuse them), the grid XOR metric (56) in the POI frame, and VPs
-// sliced at world z = ground level + h_UAV.
+// Section IV on a real environment: one Embree scene built once, VVs through caches shared by
+// every call (so several spacings or plans reuse them; one per grid resolution), the XOR metric
+// (56) in the POI frame, and VPs sliced at world z = h_UAV by the edge-walking slicer.
 class OrbitPlanner {
  public:
   // cache_dir: folder of the on-disk VV cache (created when missing); empty for none.
-  OrbitPlanner(const Environment& env, const Sensor& sensor, double resolution_deg = 1.0,
-               std::string cache_dir = "");
+  OrbitPlanner(const Environment& env, const Sensor& sensor, std::string cache_dir = "");
   Discretization adaptive(const PoiPath& poi, const Planning& planning, const ProgressFunction& progress = {});
-  Discretization fixed(const PoiPath& poi, double spacing, const ProgressFunction& progress = {});
-  // Error when planning.resolution_deg differs from the planner's.
+  Discretization fixed(const PoiPath& poi, double spacing, double resolution_deg = Planning{}.resolution_deg,
+                       const ProgressFunction& progress = {});
   VisibilityOrbitPlan plan(const PoiPath& poi, const Uav& uav, const Planning& planning,
                            const ProgressFunction& progress = {});
-  std::size_t cached_volumes() const { return cache_.size(); }
+  std::size_t cached_volumes() const;
   const VisibilityScene& scene() const { return scene_; }
   // VVs read from / computed into the disk cache so far (0 without one).
-  std::size_t disk_hits() const { return disk_ ? disk_->hits() : 0; }
-  std::size_t disk_misses() const { return disk_ ? disk_->misses() : 0; }
+  std::size_t disk_hits() const;
+  std::size_t disk_misses() const;
 
  private:
+  struct Caches {
+    std::optional<DiskVolumeCache> disk;
+    VolumeCache memory;
+  };
+  Caches& caches(double resolution_deg);
+
   VisibilityScene scene_;
   Sensor sensor_;
-  double resolution_deg_;
-  std::optional<DiskVolumeCache> disk_;
-  VolumeCache cache_;
+  std::string cache_dir_;
+  std::map<double, Caches> caches_;  // by resolution_deg; calls come from one thread at a time
 };
 
-// vt.plan_orbits: OrbitPlanner(env, sensor, planning.resolution_deg, cache_dir).plan(poi, uav, planning).
+// vt.plan_orbits: OrbitPlanner(env, sensor, cache_dir).plan(poi, uav, planning).
 VisibilityOrbitPlan plan_orbits(const Environment& env, const PoiPath& poi, const Uav& uav, const Sensor& sensor,
                                 const Planning& planning, const ProgressFunction& progress = {},
                                 const std::string& cache_dir = "");

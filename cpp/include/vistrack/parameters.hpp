@@ -1,10 +1,12 @@
 // Parameter structs shared by planning, guidance and simulation. Every default lives here, and
-// nowhere else (the Python side reads them from the bindings).
+// nowhere else (the Python side reads them from the bindings). Each validate() throws Error
+// naming the field; input is validated once, where it enters the API.
 #pragma once
 
 #include <optional>
-#include <string>
 #include <utility>
+
+#include "vistrack/geometry.hpp"
 
 namespace vistrack {
 
@@ -14,6 +16,13 @@ struct Uav {
   double min_turn_radius = 50.0;   // r_min, m
   double altitude = 300.0;         // h_UAV: world z of the flight plane, m (height above a ground at z = 0)
   void validate() const;           // throws Error naming the field
+};
+
+// The point of interest (section III): its speed along its road path, and for points given
+// without z (the CLI's --points) its height above the surface under it, as in the data's paths.
+struct PoiMotion {
+  double speed = 5.0;    // v_g, m/s
+  double height = 0.5;   // m above the surface
 };
 
 // The line-of-sight sensor (section III.D).
@@ -40,7 +49,7 @@ struct Planning {
 struct Control {
   double beta = 0.025;
   double k_psi = 20.0;
-  std::string direction = "ccw";  // "ccw" or "cw"
+  Circulation direction = Circulation::CounterClockwise;
   void validate() const;
 };
 

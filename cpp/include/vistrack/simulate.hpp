@@ -67,12 +67,6 @@ std::string trajectory_csv(const SimulationResult& result);
 SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
                           const SimulationOptions& options, const VisibilityScene& scene, double fixed_step = 0.0);
 
-// The scene's occlusion-ray line of sight as a LineOfSight.
-LineOfSight scene_line_of_sight(const VisibilityScene& scene);
-
-// Fills result.visible / visibility_fraction: UAV at (x, y, uav_z), POI at g(t).
-void evaluate_visibility(SimulationResult& result, double uav_z, const LineOfSight& line_of_sight);
-
 // Controller tuning (section V.D, Fig. 9): the largest |dpsi_d/dt + u_lyap| over positions
 // r in [tau R, r_max] (all polar angles) and all heading errors, for an orbit of radius R and
 // rate R_dot about a POI of speed v_g. Compare with the turn-rate limit v / r_min.
@@ -97,6 +91,7 @@ struct TuningResult {
 };
 
 TuningResult tune_turn_rate(double radius, double radius_rate, double speed, double poi_speed, double beta,
-                            int direction = +1, const TuningGrid& grid = {});
+                            Circulation direction = Circulation::CounterClockwise,
+                            const TuningGrid& grid = {});
 
 }  // namespace vistrack

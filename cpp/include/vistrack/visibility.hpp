@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -15,6 +16,7 @@
 
 #include "vistrack/environment.hpp"
 #include "vistrack/geometry.hpp"
+#include "vistrack/parameters.hpp"
 
 namespace vistrack {
 
@@ -121,16 +123,16 @@ class VisibilityScene {
 // or inside an obstacle, d_max <= 0, NaN, or a band with h_lo >= h_hi.
 VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, double d_max,
                                    std::optional<std::pair<double, double>> altitude_band = std::nullopt,
-                                   double resolution_deg = 1.0);
+                                   double resolution_deg = Planning{}.resolution_deg);
 // Same, building a scene for this one call (prefer a shared VisibilityScene for many VVs).
 VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double d_max,
                                    std::optional<std::pair<double, double>> altitude_band = std::nullopt,
-                                   double resolution_deg = 1.0);
+                                   double resolution_deg = Planning{}.resolution_deg);
 // VVs for many POI positions (rows of `pois`), in parallel over the points (TBB).
 std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, const Points3& pois,
                                                  double d_max,
                                                  std::optional<std::pair<double, double>> altitude_band = std::nullopt,
-                                                 double resolution_deg = 1.0);
+                                                 double resolution_deg = Planning{}.resolution_deg);
 // Line of sight for segment pairs, building a scene for this call.
 std::vector<bool> line_of_sight(const Environment& env, const Points3& a, const Points3& b);
 
@@ -160,5 +162,44 @@ std::uint64_t volume_cache_key(std::uint64_t environment_fingerprint, const Vec3
                                double resolution_deg);
 // "vv-<16 lower-case hex digits>.bin".
 std::string volume_cache_file_name(std::uint64_t key);
+
+// ---------------------------------------------------------------------------------------------
+// VV caches: in memory (by POI position) and on disk (one VV file per input key).
+
+using VolumePtr = std::shared_ptr<const VisibilityVolume>;
+// The VV at a POI position. Called from several threads at once: must be thread-safe.
+using VolumeFunction = std::function<VolumePtr(const Vec3& poi)>;
+// Thread-safe memo of VVs by POI position, to reuse VVs across calls (e.g. several spacings).
+class VolumeCache {
+ public:
+  explicit VolumeCache(VolumeFunction compute);
+  // The VV at g (computed once per position, to the micrometre). `computed` is set when it was new.
+  VolumePtr at(const Vec3& g, bool* computed = nullptr);
+  std::size_t size() const;
+
+ private:
+  struct State;
+  std::shared_ptr<State> state_;
+};
+
+// VVs on disk, one file per input (volume_cache_key) in `folder`, so a second run with the same
+// environment, POI positions and parameters computes nothing. A missing, corrupt or stale file
+// is a miss: the VV is computed and the file (re)written atomically. Copies share the counters.
+class DiskVolumeCache {
+ public:
+  // Creates the folder when missing; Error naming cache_dir when it cannot be created or written.
+  DiskVolumeCache(std::string folder, std::uint64_t environment_fingerprint, double d_max,
+                  std::optional<std::pair<double, double>> altitude_band, double resolution_deg);
+  // `compute` behind the disk: thread-safe when `compute` is.
+  VolumeFunction wrap(VolumeFunction compute) const;
+  std::string path(const Vec3& poi) const;   // the file of the VV at g
+  const std::string& folder() const;
+  std::size_t hits() const;    // VVs read from disk
+  std::size_t misses() const;  // VVs computed (and written)
+
+ private:
+  struct State;
+  std::shared_ptr<State> state_;
+};
 
 }  // namespace vistrack

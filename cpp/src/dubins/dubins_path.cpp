@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "dubins/kernel.hpp"
+#include "dubins/path_integration.hpp"
 #include "vistrack/dubins.hpp"
 #include "vistrack/error.hpp"
 
@@ -76,13 +77,13 @@ std::array<DubinsSegment, 3> segment_types(DubinsWord word) {
   detail::fail_field("word", static_cast<int>(word), "unknown Dubins word");
 }
 
-Configuration DubinsPath::integrate(double s) const {
-  Configuration q = start;
-  const auto types = segment_types();
+Configuration detail::integrate(const DubinsPath& path, double s) {
+  Configuration q = path.start;
+  const auto types = path.segment_types();
   double remaining = s;
   for (int k = 0; k < 3 && remaining > 0.0; ++k) {
-    const double d = std::min(remaining, segment_lengths[static_cast<std::size_t>(k)]);
-    advance(q, types[static_cast<std::size_t>(k)], d, rho);
+    const double d = std::min(remaining, path.segment_lengths[static_cast<std::size_t>(k)]);
+    advance(q, types[static_cast<std::size_t>(k)], d, path.rho);
     remaining -= d;
   }
   return q;
@@ -92,7 +93,7 @@ Configuration DubinsPath::at(double s) const {
   if (!(s >= 0.0) || !(s <= length))
     detail::fail_field("s", s, "arc length must lie in [0, length = " + detail::to_text(length) + "]");
   if (s == length) return goal;
-  return integrate(s);
+  return detail::integrate(*this, s);
 }
 
 Points3 DubinsPath::sample(double step) const {
@@ -109,7 +110,7 @@ Points3 DubinsPath::sample(double step) const {
   if (count > 0 && static_cast<double>(count) * step >= length) --count;
   Points3 rows(count + 2, 3);
   for (Eigen::Index k = 0; k <= count; ++k) {
-    const Configuration q = integrate(static_cast<double>(k) * step);
+    const Configuration q = detail::integrate(*this, static_cast<double>(k) * step);
     rows.row(k) << q.x, q.y, q.psi;
   }
   rows.row(count + 1) << goal.x, goal.y, goal.psi;

@@ -37,8 +37,6 @@ void Planning::validate() const {
 void Control::validate() const {
   require_positive(beta, "control.beta");
   require_positive(k_psi, "control.k_psi");
-  if (direction != "ccw" && direction != "cw")
-    detail::fail_field("control.direction", direction, "must be \"ccw\" or \"cw\"");
 }
 
 void SimulationOptions::validate() const {

@@ -24,8 +24,6 @@ void GuidanceGains::validate() const {
   require_positive(beta, "gains.beta");
   require_positive(k_psi, "gains.k_psi");
   require_positive(max_turn_rate, "gains.max_turn_rate");
-  if (direction != 1 && direction != -1)
-    detail::fail_field("gains.direction", direction, "must be +1 (counter-clockwise) or -1 (clockwise)");
 }
 
 GuidanceGains GuidanceGains::from(const Uav& uav, const Control& control) {
@@ -35,15 +33,9 @@ GuidanceGains GuidanceGains::from(const Uav& uav, const Control& control) {
   gains.speed = uav.speed;
   gains.beta = control.beta;
   gains.k_psi = control.k_psi;
-  gains.direction = circulation_sign(control.direction);
+  gains.direction = control.direction;
   gains.max_turn_rate = uav.speed / uav.min_turn_radius;  // u_psi,max = v / r_min (2)
   return gains;
-}
-
-int circulation_sign(const std::string& direction) {
-  if (direction == "ccw") return +1;
-  if (direction == "cw") return -1;
-  detail::fail_field("control.direction", direction, "must be \"ccw\" or \"cw\"");
 }
 
 double one_minus_cos_over_x(double x) {
@@ -88,7 +80,7 @@ VectorField vector_field(const Vec2& xi, const OrbitState& orbit, const Guidance
   const double atan_bt = std::atan(bt);
   f.attraction = margin * kTwoOverPi * atan_bt;  // Phi' (70)
   f.u_r = -f.attraction + r_dot + g_r;            // (73), (74)
-  f.u_theta = gains.direction * std::sqrt(std::max(0.0, v * v - f.u_r * f.u_r));
+  f.u_theta = sign(gains.direction) * std::sqrt(std::max(0.0, v * v - f.u_r * f.u_r));
   f.u = f.u_r * f.e_r + f.u_theta * f.e_theta;    // (75)
   f.heading = std::atan2(f.u.y(), f.u.x());       // (77)
 
@@ -100,7 +92,7 @@ VectorField vector_field(const Vec2& xi, const OrbitState& orbit, const Guidance
   // (85): dpsi_d/dt = (dPhi'/dt + r theta_dot^2) / u_theta. u_theta vanishes only when the field
   // is purely radial (margin = 0 at the worst angle); keep the result finite and signed there.
   double u_theta_safe = f.u_theta;
-  if (std::abs(u_theta_safe) < 1e-12 * v) u_theta_safe = gains.direction * 1e-12 * v;
+  if (std::abs(u_theta_safe) < 1e-12 * v) u_theta_safe = sign(gains.direction) * 1e-12 * v;
   f.heading_rate = (f.attraction_rate + r_safe * f.polar_rate * f.polar_rate) / u_theta_safe;
   return f;
 }
@@ -155,11 +147,11 @@ double steering_command(const Vec3& q, double cos_psi, double sin_psi, const Orb
   const double atan_bt = std::atan(bt);
   const double shape = 1.0 / (1.0 + bt * bt);
   const double u_r = -margin * kTwoOverPi * atan_bt + r_dot + g_r;                       // (74)
-  const double u_theta = gains.direction * std::sqrt(std::max(0.0, v * v - u_r * u_r));
+  const double u_theta = sign(gains.direction) * std::sqrt(std::max(0.0, v * v - u_r * u_r));
   const double r_safe = std::max(r, tiny);
   const double theta_dot = (u_theta - g_theta) / r_safe;                                // (84)
   double u_theta_safe = u_theta;
-  if (std::abs(u_theta_safe) < 1e-12 * v) u_theta_safe = gains.direction * 1e-12 * v;
+  if (std::abs(u_theta_safe) < 1e-12 * v) u_theta_safe = sign(gains.direction) * 1e-12 * v;
   const double heading_rate =
       (-(4.0 / (kPi * kPi)) * atan_bt * beta * margin * margin * shape + r_safe * theta_dot * theta_dot) /
       u_theta_safe;                                                                       // (83), (85)
@@ -205,32 +197,25 @@ double tangential_speed(double theta, const OrbitState& orbit, double speed) {
   return std::sqrt(squared);
 }
 
-void require_direction(int direction) {
-  if (direction != 1 && direction != -1)
-    detail::fail_field("direction", direction, "must be +1 (counter-clockwise) or -1 (clockwise)");
-}
-
 }  // namespace
 
-double orbit_polar_rate(double theta, const OrbitState& orbit, double speed, int direction) {
-  require_direction(direction);
+double orbit_polar_rate(double theta, const OrbitState& orbit, double speed, Circulation direction) {
   const Vec2 e_theta(-std::sin(theta), std::cos(theta));
   // (13)
-  return (-orbit.center_velocity.dot(e_theta) + direction * tangential_speed(theta, orbit, speed)) /
+  return (-orbit.center_velocity.dot(e_theta) + sign(direction) * tangential_speed(theta, orbit, speed)) /
          orbit.radius;
 }
 
-double orbit_signed_curvature(double theta, const OrbitState& orbit, double speed, int direction) {
+double orbit_signed_curvature(double theta, const OrbitState& orbit, double speed, Circulation direction) {
   // (31) with the sign of the circulation. Re-derived from Lemma 2: a = g_dot . e_r + R_dot,
   // b = +-sqrt(v^2 - a^2), a_dot = theta_dot g_dot . e_theta, so kappa_s = R theta_dot^2 / (v b).
   // (The printed (45) has g_dot . e_theta inside the root; (13) and (31) have g_dot . e_r.)
-  require_direction(direction);
   const double theta_dot = orbit_polar_rate(theta, orbit, speed, direction);
-  return direction * orbit.radius * theta_dot * theta_dot /
+  return sign(direction) * orbit.radius * theta_dot * theta_dot /
          (speed * tangential_speed(theta, orbit, speed));
 }
 
-Vec3 orbit_configuration(double theta0, const OrbitState& orbit, double speed, int direction) {
+Vec3 orbit_configuration(double theta0, const OrbitState& orbit, double speed, Circulation direction) {
   const Vec2 e_r(std::cos(theta0), std::sin(theta0));
   const Vec2 e_theta(-e_r.y(), e_r.x());
   const double theta_dot = orbit_polar_rate(theta0, orbit, speed, direction);

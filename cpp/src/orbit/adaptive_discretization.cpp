@@ -3,8 +3,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <mutex>
 
 #include <tbb/parallel_for.h>
 
@@ -12,43 +10,6 @@
 #include "vistrack/orbit.hpp"
 
 namespace vistrack {
-
-struct VolumeCache::State {
-  VolumeFunction compute;
-  std::mutex mutex;
-  std::map<std::array<long long, 3>, VolumePtr> volumes;  // key: POI position in micrometres
-};
-
-VolumeCache::VolumeCache(VolumeFunction compute) : state_(std::make_shared<State>()) {
-  if (!compute) throw Error("VolumeCache: compute function is empty");
-  state_->compute = std::move(compute);
-}
-
-VolumePtr VolumeCache::at(const PoiPath& poi, double arc_length, bool* computed) {
-  require_finite(arc_length, "arc_length");
-  const Vec3 g = poi.position(arc_length / poi.speed());
-  const std::array<long long, 3> key{std::llround(g.x() * 1e6), std::llround(g.y() * 1e6), std::llround(g.z() * 1e6)};
-  {
-    std::lock_guard<std::mutex> lock(state_->mutex);
-    auto it = state_->volumes.find(key);
-    if (it != state_->volumes.end()) {
-      if (computed) *computed = false;
-      return it->second;
-    }
-  }
-  // Computed outside the lock so that several threads trace at once; a rare duplicate is harmless.
-  VolumePtr volume = state_->compute(g);
-  if (!volume) throw Error("VolumeCache: the volume function returned no volume at s = " + detail::to_text(arc_length));
-  std::lock_guard<std::mutex> lock(state_->mutex);
-  auto inserted = state_->volumes.emplace(key, std::move(volume));
-  if (computed) *computed = inserted.second;
-  return inserted.first->second;
-}
-
-std::size_t VolumeCache::size() const {
-  std::lock_guard<std::mutex> lock(state_->mutex);
-  return state_->volumes.size();
-}
 
 namespace {
 
@@ -100,7 +61,7 @@ class Refiner {
       const std::size_t last = std::min(missing.size(), first + chunk);
       tbb::parallel_for(first, last, [&](std::size_t i) {
         bool computed = false;
-        made[i] = cache_.at(poi_, missing[i], &computed);
+        made[i] = cache_.at(poi_.position(missing[i] / poi_.speed()), &computed);
         fresh[i] = computed ? 1 : 0;
       });
       done_ += last - first;

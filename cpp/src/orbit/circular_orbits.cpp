@@ -21,7 +21,7 @@ void require_faster_than_poi(const Uav& uav, double poi_speed) {
 }  // namespace
 
 double orbit_curvature(double radius, double radius_rate, double relative_angle, double uav_speed,
-                       double poi_speed, bool counter_clockwise) {
+                       double poi_speed, Circulation circulation) {
   require_positive(radius, "radius");
   require_finite(radius_rate, "radius_rate");
   require_finite(relative_angle, "relative_angle");
@@ -33,7 +33,7 @@ double orbit_curvature(double radius, double radius_rate, double relative_angle,
   if (!(under_root > 0.0)) return std::numeric_limits<double>::infinity();
   const double root = std::sqrt(under_root);
   // (13): theta' = (-g'.e_theta +- sqrt(v^2 - (g'.e_r + R')^2)) / R.
-  const double theta_rate = (poi_speed * std::sin(relative_angle) + (counter_clockwise ? root : -root)) / radius;
+  const double theta_rate = (poi_speed * std::sin(relative_angle) + sign(circulation) * root) / radius;
   // (31): kappa = R theta'^2 / (v sqrt(v^2 - (g'.e_r + R')^2)).
   return radius * theta_rate * theta_rate / (uav_speed * root);
 }

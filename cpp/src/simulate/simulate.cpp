@@ -178,21 +178,9 @@ OrbitState orbit_state(const OrbitPlan& plan, double segment_start, double t) {
   return orbit;
 }
 
-SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
-                          const SimulationOptions& options, const LineOfSight& line_of_sight,
-                          double fixed_step) {
-  SimulationResult result = closed_loop(plan, uav, x0, control, options, fixed_step);
-  if (line_of_sight) evaluate_visibility(result, uav.altitude, line_of_sight);
-  return result;
-}
+namespace {
 
-SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
-                          const SimulationOptions& options, const VisibilityScene& scene, double fixed_step) {
-  SimulationResult result = closed_loop(plan, uav, x0, control, options, fixed_step);
-  evaluate_visibility(result, uav.altitude, scene_line_of_sight(scene));
-  return result;
-}
-
+// The scene's occlusion-ray line of sight as a LineOfSight.
 LineOfSight scene_line_of_sight(const VisibilityScene& scene) {
   return [scene](const Points3& from, const Points3& to) {
     // The POI stands where the planner put it: on the surface where its path z is underground.
@@ -203,6 +191,7 @@ LineOfSight scene_line_of_sight(const VisibilityScene& scene) {
   };
 }
 
+// Fills result.visible / visibility_fraction: UAV at (x, y, uav_z), POI at g(t).
 void evaluate_visibility(SimulationResult& result, double uav_z, const LineOfSight& line_of_sight) {
   require_finite(uav_z, "uav_z");
   if (!line_of_sight) throw Error("line_of_sight: no line-of-sight function given");
@@ -217,6 +206,23 @@ void evaluate_visibility(SimulationResult& result, double uav_z, const LineOfSig
   std::size_t count = 0;
   for (std::uint8_t v : result.visible) count += v != 0;
   result.visibility_fraction = n > 0 ? static_cast<double>(count) / static_cast<double>(n) : 0.0;
+}
+
+}  // namespace
+
+SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
+                          const SimulationOptions& options, const LineOfSight& line_of_sight,
+                          double fixed_step) {
+  SimulationResult result = closed_loop(plan, uav, x0, control, options, fixed_step);
+  if (line_of_sight) evaluate_visibility(result, uav.altitude, line_of_sight);
+  return result;
+}
+
+SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
+                          const SimulationOptions& options, const VisibilityScene& scene, double fixed_step) {
+  SimulationResult result = closed_loop(plan, uav, x0, control, options, fixed_step);
+  evaluate_visibility(result, uav.altitude, scene_line_of_sight(scene));
+  return result;
 }
 
 }  // namespace vistrack

@@ -18,7 +18,7 @@ void TuningGrid::validate() const {
 }
 
 TuningResult tune_turn_rate(double radius, double radius_rate, double speed, double poi_speed, double beta,
-                            int direction, const TuningGrid& grid) {
+                            Circulation direction, const TuningGrid& grid) {
   require_positive(radius, "radius");
   require_finite(radius_rate, "radius_rate");
   require_positive(speed, "speed");

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "volume/cgal_mesh.hpp"
+#include "volume/points_inside.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/volume.hpp"
 
@@ -83,7 +84,7 @@ MeshCheck check_closed_mesh(const TriangleMesh& mesh) {
   return check;
 }
 
-std::vector<bool> points_inside(const TriangleMesh& mesh, const Points3& points) {
+std::vector<bool> detail::points_inside(const TriangleMesh& mesh, const Points3& points) {
   detail::CgalMesh sm;
   if (mesh.faces.rows() == 0 || !detail::to_surface_mesh(mesh, sm) || !CGAL::is_closed(sm))
     throw Error("points_inside: the mesh is not a closed 2-manifold; check it with check_closed_mesh");

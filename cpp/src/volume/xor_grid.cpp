@@ -102,7 +102,9 @@ double xor_volume(const VisibilityVolume& a, const VisibilityVolume& b, XorFrame
   if (frame == XorFrame::world) return mesh_xor_volume(a.mesh, b.mesh, options);
   const TriangleMesh a_local{translated(a.mesh.vertices, a.poi), a.mesh.faces};
   const TriangleMesh b_local{translated(b.mesh.vertices, b.poi), b.mesh.faces};
-  return mesh_xor_volume(a_local, b_local, options);
+  MeshXorOptions nudged = options;
+  nudged.perturbation = options.perturbation.value_or(kPoiFramePerturbation);
+  return mesh_xor_volume(a_local, b_local, nudged);
 }
 
 }  // namespace vistrack

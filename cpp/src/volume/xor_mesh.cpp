@@ -85,11 +85,12 @@ Mesh to_cgal(const TriangleMesh& input, const std::string& name, const Eigen::Ma
 
 double mesh_xor_volume(const TriangleMesh& a, const TriangleMesh& b, const MeshXorOptions& options) {
   require_positive(options.time_limit, "options.time_limit");
-  require_non_negative(options.perturbation, "options.perturbation");
+  const double perturbation = options.perturbation.value_or(0.0);
+  require_non_negative(perturbation, "options.perturbation");
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   const bool a_empty = a.faces.rows() == 0, b_empty = b.faces.rows() == 0;
   Mesh ma = a_empty ? Mesh() : to_cgal(a, "a", identity, options.check_self_intersection);
-  Mesh mb = b_empty ? Mesh() : to_cgal(b, "b", nudge_rotation(options.perturbation), options.check_self_intersection);
+  Mesh mb = b_empty ? Mesh() : to_cgal(b, "b", nudge_rotation(perturbation), options.check_self_intersection);
   const double va = a_empty ? 0.0 : PMP::volume(ma);
   const double vb = b_empty ? 0.0 : PMP::volume(mb);
   if (a_empty || b_empty) return va + vb;

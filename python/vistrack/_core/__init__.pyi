@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 from . import dubins
-__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'wrap_to_pi', 'xor_volume']
+__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'wrap_to_pi', 'xor_volume']
 class VistrackError(ValueError):
     pass
 class Polygon:
@@ -81,6 +81,24 @@ class Uav:
     @speed.setter
     def speed(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
+class PoiMotion:
+    """
+    The POI's defaults: its speed along the road path and its height above the surface where a point is given without z.
+    """
+    def __init__(self, *, speed: typing.SupportsFloat | typing.SupportsIndex = 5.0, height: typing.SupportsFloat | typing.SupportsIndex = 0.5) -> None:
+        """
+        speed v_g (m/s), height (m above the surface).
+        """
+    @property
+    def height(self) -> float:
+        """
+        m above the surface
+        """
+    @property
+    def speed(self) -> float:
+        """
+        v_g, m/s
+        """
 class Sensor:
     """
     Line-of-sight sensor: range d_max and optional altitude band.
@@ -653,7 +671,7 @@ class MeshCheck:
         """
 class OrbitPlan:
     """
-    Time-varying reference orbit about the POI: R(t) piecewise linear between samples (times, radii), centred on the POI path g(t) (eq. 5).
+    Time-varying reference orbit about the POI that the guidance follows: R(t) piecewise linear between the knots (times, radii), centred on the POI path g(t) (eq. 5).
     """
     @staticmethod
     def from_json(text: str) -> OrbitPlan:
@@ -680,22 +698,12 @@ class OrbitPlan:
     @property
     def feasible(self) -> bool:
         """
-        Whether Algorithm 1 found the plan feasible.
+        Whether the plan is flyable (Lemmas 5 and 6).
         """
     @property
     def infeasibility(self) -> str:
         """
         Which sample fails and why.
-        """
-    @property
-    def max_radii(self) -> list[float]:
-        """
-        MaxRadius from the visibility polygons (m).
-        """
-    @property
-    def metric(self) -> list[float]:
-        """
-        XOR volume between neighbouring VVs (m^3).
         """
     @property
     def poi(self) -> PoiPath:
@@ -705,12 +713,12 @@ class OrbitPlan:
     @property
     def radii(self) -> list[float]:
         """
-        Orbit radii R(t_k) after Algorithm 1 (m).
+        Orbit radii R(t_k) (m).
         """
     @property
     def times(self) -> list[float]:
         """
-        Sample times t_k (s).
+        Knot times t_k (s).
         """
 class CircularOrbits:
     """
@@ -770,6 +778,11 @@ class Discretization:
         d(alpha_k, alpha_k+1) of eq. (56) (m^3), size n - 1.
         """
     @property
+    def num_volumes(self) -> int:
+        """
+        VVs held (none for a plan read from JSON).
+        """
+    @property
     def points(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 3]"]:
         """
         g(t_k), (n, 3).
@@ -786,7 +799,7 @@ class Discretization:
         """
 class VisibilityOrbitPlan(OrbitPlan):
     """
-    An orbit plan with what it was made from: samples, VPs, VVs, dR/dt, Lemma 6 threshold.
+    An orbit plan with what it was made from: samples and VVs, VPs, MaxRadius, Algorithm 1's result.
     """
     @staticmethod
     def from_json(text: str) -> VisibilityOrbitPlan:
@@ -812,18 +825,40 @@ class VisibilityOrbitPlan(OrbitPlan):
         Refinement depth of each sample.
         """
     @property
+    def discretization(self) -> Discretization:
+        """
+        The VV samples (a Discretization).
+        """
+    @property
     def failing_samples(self) -> list[int]:
         """
         Samples that break Lemma 6.
         """
     @property
+    def max_radii(self) -> list[float]:
+        """
+        MaxRadius of each VP (m), line 1 of Algorithm 1.
+        """
+    @property
+    def metric(self) -> list[float]:
+        """
+        XOR volume (56) between neighbouring VVs (m^3).
+        """
+    @property
     def min_feasible_radius(self) -> float:
         """
-        r_min (1 + v_g/v)^2 (m).
+        r_min (1 + v_g/v)^2 (m), Lemma 6.
         """
     @property
     def num_volumes(self) -> int:
-        ...
+        """
+        VVs held (none for a plan read from JSON).
+        """
+    @property
+    def orbits(self) -> CircularOrbits:
+        """
+        Algorithm 1's result (a CircularOrbits).
+        """
     @property
     def planning(self) -> Planning:
         ...
@@ -850,9 +885,9 @@ class VisibilityOrbitPlan(OrbitPlan):
         """
 class OrbitPlanner:
     """
-    Section IV on one environment: an Embree scene built once, a VV cache shared by every call (spacings and plans reuse VVs), the grid XOR metric (56) in the POI frame, VPs at world z = h_UAV.
+    Section IV on one environment: an Embree scene built once, VV caches shared by every call (spacings and plans reuse VVs; one per grid resolution), the XOR metric (56) in the POI frame, VPs at world z = h_UAV.
     """
-    def __init__(self, env: Environment, sensor: Sensor, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, cache_dir: typing.Any = None) -> None:
+    def __init__(self, env: Environment, sensor: Sensor, cache_dir: typing.Any = None) -> None:
         """
         cache_dir (str or os.PathLike, created when missing): keep every VV on disk there, keyed by the environment fingerprint, the POI position, d_max, the altitude band and the resolution, so a later planner with the same inputs reads them instead of ray casting. None: no disk cache.
         """
@@ -860,7 +895,7 @@ class OrbitPlanner:
         """
         Adaptive discretization (IV.B): initial spacing, halving while the metric exceeds the cutoff. progress(done, total) is called as VVs are computed.
         """
-    def fixed(self, poi: PoiPath, spacing: typing.SupportsFloat | typing.SupportsIndex, progress: typing.Any = None) -> Discretization:
+    def fixed(self, poi: PoiPath, spacing: typing.SupportsFloat | typing.SupportsIndex, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, progress: typing.Any = None) -> Discretization:
         """
         VVs every `spacing` m from each edge start plus every node, and the metric between neighbours.
         """
@@ -871,7 +906,7 @@ class OrbitPlanner:
     @property
     def cached_volumes(self) -> int:
         """
-        VVs held in the cache.
+        VVs held in the caches.
         """
     @property
     def disk_hits(self) -> int:
@@ -930,14 +965,14 @@ class OrbitState:
         ...
 class GuidanceGains:
     """
-    Gains of the vector field and steering law: speed v, beta, k_psi, direction (+1 ccw, -1 cw), max_turn_rate = v / r_min.
+    Gains of the vector field and steering law: speed v, beta, k_psi, direction ('ccw' or 'cw'), max_turn_rate = v / r_min.
     """
     @staticmethod
     def from_parameters(uav: Uav, control: Control) -> GuidanceGains:
         """
         Gains from a Uav and a Control (max_turn_rate = speed / min_turn_radius).
         """
-    def __init__(self, *, speed: typing.SupportsFloat | typing.SupportsIndex = 20.0, beta: typing.SupportsFloat | typing.SupportsIndex = 0.025, k_psi: typing.SupportsFloat | typing.SupportsIndex = 20.0, direction: typing.SupportsInt | typing.SupportsIndex = 1, max_turn_rate: typing.SupportsFloat | typing.SupportsIndex = 0.4) -> None:
+    def __init__(self, *, speed: typing.SupportsFloat | typing.SupportsIndex = 20.0, beta: typing.SupportsFloat | typing.SupportsIndex = 0.025, k_psi: typing.SupportsFloat | typing.SupportsIndex = 20.0, direction: str = 'ccw', max_turn_rate: typing.SupportsFloat | typing.SupportsIndex = 0.4) -> None:
         """
         Validated gains.
         """
@@ -950,12 +985,12 @@ class GuidanceGains:
     def beta(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
-    def direction(self) -> int:
+    def direction(self) -> str:
         """
-        +1 counter-clockwise, -1 clockwise
+        'ccw' or 'cw'
         """
     @direction.setter
-    def direction(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+    def direction(self, arg0: str) -> None:
         ...
     @property
     def k_psi(self) -> float:
@@ -1319,10 +1354,11 @@ def mesh_volume(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64
     """
     Volume of a closed, consistently oriented triangle mesh.
     """
-def mesh_xor_volume(vertices_a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces_a: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"], vertices_b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces_b: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"], time_limit: typing.SupportsFloat | typing.SupportsIndex = 120.0, perturbation: typing.SupportsFloat | typing.SupportsIndex = 0.0, check_self_intersection: bool = True) -> float:
+def mesh_xor_volume(vertices_a: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces_a: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"], vertices_b: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces_b: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"], time_limit: typing.SupportsFloat | typing.SupportsIndex = 120.0, perturbation: typing.SupportsFloat | typing.SupportsIndex | None = None, check_self_intersection: bool = True) -> float:
     """
     vol(A) + vol(B) - 2 vol(A n B) of two closed triangle meshes ((n, 3) float vertices, (m, 3) int
-    faces) by CGAL corefinement with exact predicates on copies. VistrackError when a mesh is not
+    faces) by CGAL corefinement with exact predicates on copies; perturbation (rad, None: 0) rotates b
+    as in xor_volume. VistrackError when a mesh is not
     closed, self-intersects, does not bound a volume, or time_limit (s) is exceeded.
     """
 def min_feasible_radius(uav: Uav, poi_speed: typing.SupportsFloat | typing.SupportsIndex) -> float:
@@ -1333,21 +1369,25 @@ def one_minus_cos_over_x(x: typing.SupportsFloat | typing.SupportsIndex) -> floa
     """
     (1 - cos x) / x, 0 at x = 0, accurate near 0.
     """
-def orbit_configuration(theta0: typing.SupportsFloat | typing.SupportsIndex, orbit: OrbitState, speed: typing.SupportsFloat | typing.SupportsIndex, direction: typing.SupportsInt | typing.SupportsIndex = 1) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[3, 1]"]:
+def orbit_configuration(theta0: typing.SupportsFloat | typing.SupportsIndex, orbit: OrbitState, speed: typing.SupportsFloat | typing.SupportsIndex, direction: str = 'ccw') -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[3, 1]"]:
     """
     Initial configuration (x, y, psi) on the orbit, (38)-(40).
     """
-def orbit_curvature(radius: typing.SupportsFloat | typing.SupportsIndex, radius_rate: typing.SupportsFloat | typing.SupportsIndex, relative_angle: typing.SupportsFloat | typing.SupportsIndex, uav_speed: typing.SupportsFloat | typing.SupportsIndex, poi_speed: typing.SupportsFloat | typing.SupportsIndex, counter_clockwise: bool = True) -> float:
+def orbit_curvature(radius: typing.SupportsFloat | typing.SupportsIndex, radius_rate: typing.SupportsFloat | typing.SupportsIndex, relative_angle: typing.SupportsFloat | typing.SupportsIndex, uav_speed: typing.SupportsFloat | typing.SupportsIndex, poi_speed: typing.SupportsFloat | typing.SupportsIndex, direction: str = 'ccw') -> float:
     """
-    Curvature (31) of the path that stays on the orbit at a = theta - gamma, with theta' from (13); inf when (g'.e_r + R')^2 >= v^2 (Lemma 5).
+    Curvature (31) of the path that stays on the orbit at a = theta - gamma, with theta' from (13) for the circulation 'ccw' or 'cw'; inf when (g'.e_r + R')^2 >= v^2 (Lemma 5).
     """
-def orbit_polar_rate(theta: typing.SupportsFloat | typing.SupportsIndex, orbit: OrbitState, speed: typing.SupportsFloat | typing.SupportsIndex, direction: typing.SupportsInt | typing.SupportsIndex = 1) -> float:
+def orbit_polar_rate(theta: typing.SupportsFloat | typing.SupportsIndex, orbit: OrbitState, speed: typing.SupportsFloat | typing.SupportsIndex, direction: str = 'ccw') -> float:
     """
     theta_dot of (13) for a vehicle remaining on the orbit.
     """
-def orbit_signed_curvature(theta: typing.SupportsFloat | typing.SupportsIndex, orbit: OrbitState, speed: typing.SupportsFloat | typing.SupportsIndex, direction: typing.SupportsInt | typing.SupportsIndex = 1) -> float:
+def orbit_signed_curvature(theta: typing.SupportsFloat | typing.SupportsIndex, orbit: OrbitState, speed: typing.SupportsFloat | typing.SupportsIndex, direction: str = 'ccw') -> float:
     """
     Signed path curvature (31) of a vehicle remaining on the orbit at polar angle theta (Theorem 1: steering with v * this keeps it there).
+    """
+def plan_on_volumes(poi: PoiPath, uav: Uav, planning: Planning, arc_lengths: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], volumes: collections.abc.Sequence[VisibilityVolume]) -> VisibilityOrbitPlan:
+    """
+    The plan on VVs computed elsewhere (e.g. saved VV files), placed at the given increasing arc lengths of the POI path: metric (56) in the POI frame, VPs at h_UAV, MaxRadius and Algorithm 1, nothing inserted.
     """
 def plan_orbits(env: Environment, poi: PoiPath, uav: Uav, sensor: Sensor, planning: Planning, progress: typing.Any = None, cache_dir: typing.Any = None) -> VisibilityOrbitPlan:
     """

@@ -2,16 +2,21 @@
 
 - ``common``: pyplot, figure creation and saving, the OpenStreetMap credit
 - ``city``: buildings, roads and the POI path from above
-- ``volumes``: visibility volumes in 3D
+- ``volumes``: visibility volumes in 3D and their visibility polygons from above
+- ``orbits``: Figure 4 (XOR metric along the path), Figure 5 (orbits in their VPs), R(t)
+- ``simulation``: Figure 10 (trajectory) and Figure 11 (errors and control)
+- ``tune``: Figure 9 (turn rate needed against beta)
+- ``intercept``: Figure 7 of the intercept paper
 """
 
 from __future__ import annotations
 
 from .city import footprint_path, plot_buildings, plot_city, plot_poi_path, plot_roads
-from .common import OSM_CREDIT, add_credit, evenly_spaced_indices, new_figure, pyplot, save_figure
+from .common import OSM_CREDIT, add_credit, evenly_spaced_indices, map_credit, new_figure, pyplot, save_figure
 from .volumes import figure_volume_3d
 
 __all__ = [
-    "OSM_CREDIT", "add_credit", "evenly_spaced_indices", "figure_volume_3d", "footprint_path", "new_figure",
+    "OSM_CREDIT", "add_credit", "evenly_spaced_indices", "figure_volume_3d", "footprint_path", "map_credit",
+    "new_figure",
     "plot_buildings", "plot_city", "plot_poi_path", "plot_roads", "pyplot", "save_figure",
 ]

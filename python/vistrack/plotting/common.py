@@ -50,3 +50,11 @@ def add_credit(fig: Any, credit: str | None) -> None:
     """The data credit in small grey type at the bottom right of a figure (nothing when None)."""
     if credit:
         fig.text(0.99, 0.01, credit, ha="right", va="bottom", fontsize=6, color="gray")
+
+
+def map_credit(map_path: str | Path) -> str:
+    """The caption naming a map file, with the OpenStreetMap credit for the Charlotte data."""
+    text = f"map: {Path(map_path).name}"
+    if "charlotte" in str(map_path).lower():
+        text += " (buildings © OpenStreetMap contributors, ODbL)"
+    return text

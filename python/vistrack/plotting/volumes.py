@@ -1,16 +1,17 @@
-"""Visibility volumes in 3D."""
+"""Visibility volumes: in 3D, and their visibility polygons from above."""
 
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import Sequence
 
 import numpy as np
 
+from .._core import Environment, Polygon, VisibilityScene, VisibilityVolume
 from .common import pyplot, save_figure
 
 
-def figure_volume_3d(scene: Any, vv: Any, path: Path | str, caption: str = "",
+def figure_volume_3d(scene: VisibilityScene, vv: VisibilityVolume, path: Path | str, caption: str = "",
                      display_resolution_deg: float = 3.0) -> Path:
     """3D view of a VV, shaded, with its POI. Finer VVs are recomputed at display_resolution_deg
     for the picture (matplotlib draws every face); the title gives the true volume."""
@@ -48,3 +49,43 @@ def figure_volume_3d(scene: Any, vv: Any, path: Path | str, caption: str = "",
     if caption:
         fig.text(0.01, 0.01, caption, fontsize=7, color="0.3")
     return save_figure(fig, path, dpi=130)
+
+
+def figure_visibility_polygons(env: Environment, shown: Sequence[tuple[np.ndarray, Sequence[Polygon], float]],
+                               altitude: float, d_max: float, resolution_deg: float, path: str | Path,
+                               caption: str = "") -> Path:
+    """Figure 5 style: VPs at the flight altitude (the first and last filled), the largest
+    inscribed circle about each POI and the POIs, over the building footprints. ``shown`` holds
+    (POI, VP, MaxRadius) per point."""
+    from matplotlib.patches import Circle, PathPatch
+
+    from .city import footprint_path, plot_buildings
+    from .common import new_figure
+
+    fig, ax = new_figure((9.0, 8.0))
+    plot_buildings(ax, env, cmap="Blues", edgecolor="tab:blue")
+    # At most two VPs drawn filled (first and last, as the paper's i-th and j-th), all circles.
+    colors = ["magenta", "c"]
+    picks = [0, len(shown) - 1] if len(shown) > 1 else [0]
+    for color, k in zip(colors, picks):
+        poi, polygons, radius = shown[k]
+        for polygon in polygons:
+            ax.add_patch(PathPatch(footprint_path(polygon.outer, polygon.holes), facecolor=color, alpha=0.18,
+                                   edgecolor=color, linewidth=1.2, zorder=3))
+    for k, (poi, polygons, radius) in enumerate(shown):
+        color = colors[0] if k == 0 else colors[1] if k == len(shown) - 1 else "0.35"
+        if radius > 0:
+            ax.add_patch(Circle(poi[:2], radius, fill=False, linestyle="--", edgecolor=color, linewidth=1.0, zorder=4))
+        ax.plot(poi[0], poi[1], "x", color=color, markersize=7, zorder=5)
+    pois = np.array([s[0] for s in shown])
+    pad = d_max
+    ax.set_xlim(pois[:, 0].min() - pad, pois[:, 0].max() + pad)
+    ax.set_ylim(pois[:, 1].min() - pad, pois[:, 1].max() + pad)
+    ax.set_aspect("equal")
+    ax.set_xlabel("east (m)")
+    ax.set_ylabel("north (m)")
+    ax.set_title(f"Visibility polygons at z = {altitude:g} m, inscribed orbits (d_max = {d_max:g} m, "
+                 f"{resolution_deg:g}°)")
+    if caption:
+        ax.text(0.01, 0.01, caption, transform=ax.transAxes, fontsize=7, color="0.3")
+    return save_figure(fig, path)

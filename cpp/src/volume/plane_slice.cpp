@@ -7,7 +7,6 @@
 #include <unordered_map>
 
 #include "vistrack/error.hpp"
-#include "vistrack/orbit.hpp"
 #include "vistrack/volume.hpp"
 
 namespace vistrack {

@@ -1,25 +1,48 @@
-"""The report folder of a run: figures, report.md, metrics.json, plan.json, trajectory.csv and
-the VV meshes (see pipeline.run)."""
+"""The report folder of a tracking run (``vistrack run`` / ``demo``): figures, report.md,
+metrics.json, plan.json, trajectory.csv and the VV meshes."""
 
 from __future__ import annotations
 
-import json
+from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any, Optional, Union
 
+from .._core import (
+    Discretization, Environment, OrbitPlan, OrbitPlanner, PoiPath, SimulationResult, VisibilityOrbitPlan,
+)
+from ..io import write_json, write_plan, write_trajectory
+from ..plotting import OSM_CREDIT, evenly_spaced_indices, figure_volume_3d, new_figure, plot_city, save_figure
+from ..plotting.orbits import figure_metric, figure_orbits, figure_radius
+from ..plotting.simulation import figure_errors, figure_trajectory
+from ..scenario import Scenario
 
-if TYPE_CHECKING:
-    from .pipeline import RunResult
+# Most VV meshes written into a report (evenly picked along the path).
+MAX_SAVED_VOLUMES = 12
 
 OSM_NOTE = ("Building geometry from OpenStreetMap (© OpenStreetMap contributors, ODbL 1.0) via the "
             "public DubinsVisibilityTracking repository, where the map comes from ../shared/data.")
 
 
-def write_report(result: "RunResult", out: Path) -> list[Path]:
+@dataclass
+class RunResult:
+    """Everything a run computed; ``metrics`` is what metrics.json holds."""
+
+    scenario: Scenario
+    env: Environment
+    poi: PoiPath
+    plan: VisibilityOrbitPlan
+    simulation: SimulationResult
+    planner: OrbitPlanner
+    baselines: dict[float, SimulationResult] = field(default_factory=dict)
+    metric_runs: dict[str, Union[Discretization, VisibilityOrbitPlan]] = field(default_factory=dict)
+    metrics: dict[str, Any] = field(default_factory=dict)
+    out: Optional[Path] = None
+    files: list[Path] = field(default_factory=list)
+    timings: dict[str, float] = field(default_factory=dict)
+
+
+def write_report(result: RunResult, out: Path) -> list[Path]:
     """Write every file of the report into ``out`` (created) and return their paths."""
-    from . import planning
-    from .commands import simulate as sim_cmd
-    from .plotting import OSM_CREDIT, figure_volume_3d, new_figure, plot_city, save_figure
 
     out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []
@@ -33,26 +56,28 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
                     f"{result.poi.speed:g} m/s over {result.poi.length:.0f} m."))
 
     credit = None if s.environment.kind == "demo" else OSM_CREDIT
-    planning.figure_metric(result.metric_runs, s.planning.cutoff, out / "metric.png",
+    figure_metric(result.metric_runs, s.planning.cutoff, out / "metric.png",
                            title=f"{s.name}: XOR metric between neighbouring VVs (Fig. 4)", credit=credit)
     files.append(out / "metric.png")
     figures.append(("metric.png", "Figure 4: VV difference metric along the path",
                     "Eq. (56) between neighbouring VVs for fixed spacings and the adaptive method, "
                     f"cutoff {s.planning.cutoff:.3g} m³."))
 
-    planning.figure_orbits(result.plan, result.env, out / "orbits.png", credit=credit)
+    figure_orbits(result.plan, result.env, out / "orbits.png", credit=credit)
     files.append(out / "orbits.png")
     figures.append(("orbits.png", "Figure 5: orbits inside their visibility polygons",
                     f"Circles of radius R(t_k) centred on the POI inside the VP at h_UAV = {s.uav.altitude:g} m."))
 
-    planning.figure_radius(result.plan, out / "radius.png")
+    figure_radius(result.plan, out / "radius.png")
     files.append(out / "radius.png")
     figures.append(("radius.png", "Orbit radius and its rate limits",
                     "MaxRadius per sample, R(t) after Algorithm 1, Lemma 6's threshold and Lemma 5's rate bound."))
 
-    runs = [("visibility orbit", result.plan, result.simulation)]
-    runs += [(f"R = {r:g} m", None, b) for r, b in result.baselines.items()]
-    sim_cmd.figure_trajectory([(label, plan if plan is not None else result.plan, sim) for label, plan, sim in runs],
+    # Baselines are drawn with the visibility plan's orbits.
+    runs: list[tuple[str, Union[OrbitPlan, VisibilityOrbitPlan], SimulationResult]] = [
+        ("visibility orbit", result.plan, result.simulation)]
+    runs += [(f"R = {r:g} m", result.plan, b) for r, b in result.baselines.items()]
+    figure_trajectory(runs,
                               result.env, out / "trajectory.png", title=f"{s.name}: UAV tracking the POI (Fig. 10)",
                               credit=credit)
     files.append(out / "trajectory.png")
@@ -60,7 +85,7 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
                     "UAV path (red) with the reference orbits and the POI path" +
                     (", and the constant-radius baselines." if result.baselines else ".")))
 
-    sim_cmd.figure_errors(result.simulation, out / "errors.png", window=None,
+    figure_errors(result.simulation, out / "errors.png", window=None,
                           title=f"{s.name}: errors and control (Fig. 11)",
                           max_turn_rate=s.uav.speed / s.uav.min_turn_radius)
     files.append(out / "errors.png")
@@ -74,13 +99,11 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
                     f"The VV of the first sample (eq. 4), d_max = {s.sensor.d_max:g} m; the orbit lies "
                     "in its slice at h_UAV."))
 
-    (out / "plan.json").write_text(result.plan.to_json())
-    (out / "trajectory.csv").write_text(result.simulation.to_csv())
-    files += [out / "plan.json", out / "trajectory.csv"]
+    files.append(write_plan(result.plan, out / "plan.json"))
+    files.append(write_trajectory(result.simulation, out / "trajectory.csv"))
     files += _save_volumes(result, out / "volumes")
 
-    (out / "metrics.json").write_text(json.dumps(result.metrics, indent=1))
-    files.append(out / "metrics.json")
+    files.append(write_json(result.metrics, out / "metrics.json"))
     report = out / "report.md"
     report.write_text(_markdown(result, figures))
     files.append(report)
@@ -89,10 +112,7 @@ def write_report(result: "RunResult", out: Path) -> list[Path]:
     return files
 
 
-def _save_volumes(result: "RunResult", folder: Path) -> list[Path]:
-    from .pipeline import MAX_SAVED_VOLUMES
-    from .plotting import evenly_spaced_indices
-
+def _save_volumes(result: RunResult, folder: Path) -> list[Path]:
     folder.mkdir(parents=True, exist_ok=True)
     n = result.plan.num_volumes
     picked = evenly_spaced_indices(n, MAX_SAVED_VOLUMES)
@@ -104,7 +124,7 @@ def _save_volumes(result: "RunResult", folder: Path) -> list[Path]:
     return files
 
 
-def _markdown(result: "RunResult", figures: list[tuple[str, str, str]]) -> str:
+def _markdown(result: RunResult, figures: list[tuple[str, str, str]]) -> str:
     m = result.metrics
     plan, sim = m["plan"], m["simulation"]
     lines = [f"# vistrack report: {m['scenario']}", "",

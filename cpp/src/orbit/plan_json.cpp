@@ -1,0 +1,174 @@
+// Orbit plans as JSON: the reference R(t) ("vistrack.orbit_plan/1") and the plan with what it
+// was made from ("vistrack.visibility_orbit_plan/1"; VVs are not stored).
+#include <nlohmann/json.hpp>
+
+#include "vistrack/error.hpp"
+#include "vistrack/orbit.hpp"
+
+namespace vistrack {
+
+std::string to_json(const OrbitPlan& plan) {
+  nlohmann::json out;
+  out["format"] = "vistrack.orbit_plan/1";
+  const Points3& w = plan.poi.waypoints();
+  nlohmann::json waypoints = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < w.rows(); ++i) waypoints.push_back({w(i, 0), w(i, 1), w(i, 2)});
+  out["poi"] = {{"waypoints", waypoints}, {"speed", plan.poi.speed()}};
+  out["times"] = plan.times;
+  out["radii"] = plan.radii;
+  out["feasible"] = plan.feasible;
+  out["infeasibility"] = plan.infeasibility;
+  return out.dump(1);
+}
+
+OrbitPlan orbit_plan_from_json(const std::string& text) {
+  nlohmann::json in;
+  try {
+    in = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& error) {
+    throw Error(std::string("orbit plan JSON: cannot parse: ") + error.what());
+  }
+  try {
+    const auto& waypoints = in.at("poi").at("waypoints");
+    Eigen::MatrixXd points(static_cast<Eigen::Index>(waypoints.size()), 3);
+    for (std::size_t i = 0; i < waypoints.size(); ++i)
+      for (std::size_t k = 0; k < 3; ++k)
+        points(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = waypoints.at(i).at(k).get<double>();
+    OrbitPlan plan{PoiPath(points, in.at("poi").at("speed").get<double>()),
+                   in.at("times").get<std::vector<double>>(),
+                   in.at("radii").get<std::vector<double>>(),
+                   in.value("feasible", true),
+                   in.value("infeasibility", std::string())};
+    if (plan.times.size() != plan.radii.size() || plan.times.empty())
+      detail::fail_field("radii", plan.radii.size(),
+                         "must have one entry per time (" + std::to_string(plan.times.size()) + ")");
+    for (std::size_t k = 0; k < plan.times.size(); ++k) {
+      require_finite(plan.times[k], "times[" + std::to_string(k) + "]");
+      require_non_negative(plan.radii[k], "radii[" + std::to_string(k) + "]");  // 0: POI not visible (infeasible plan)
+      if (k > 0 && !(plan.times[k] > plan.times[k - 1]))
+        detail::fail_field("times[" + std::to_string(k) + "]", plan.times[k], "times must increase");
+    }
+    return plan;
+  } catch (const nlohmann::json::exception& error) {
+    throw Error(std::string("orbit plan JSON: missing or wrong field: ") + error.what());
+  }
+}
+
+namespace {
+
+nlohmann::json ring_json(const Ring& ring) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const Vec2& p : ring) out.push_back({p.x(), p.y()});
+  return out;
+}
+
+Ring ring_from(const nlohmann::json& in) {
+  Ring ring;
+  for (const auto& p : in) ring.emplace_back(p.at(0).get<double>(), p.at(1).get<double>());
+  return ring;
+}
+
+}  // namespace
+
+std::string to_json(const VisibilityOrbitPlan& plan) {
+  nlohmann::json out = nlohmann::json::parse(to_json(static_cast<const OrbitPlan&>(plan)));
+  out["format"] = "vistrack.visibility_orbit_plan/1";
+  out["uav"] = {{"speed", plan.uav.speed}, {"min_turn_radius", plan.uav.min_turn_radius}, {"altitude", plan.uav.altitude}};
+  out["sensor"] = {{"d_max", plan.sensor.d_max}};
+  if (plan.sensor.altitude_band)
+    out["sensor"]["altitude_band"] = {plan.sensor.altitude_band->first, plan.sensor.altitude_band->second};
+  out["planning"] = {{"spacing", plan.planning.spacing},         {"cutoff", plan.planning.cutoff},
+                     {"resolution_deg", plan.planning.resolution_deg}, {"min_spacing", plan.planning.min_spacing},
+                     {"max_depth", plan.planning.max_depth}, {"rate_margin", plan.planning.rate_margin}};
+  const Discretization& samples = plan.samples;
+  nlohmann::json centers = nlohmann::json::array();
+  for (Eigen::Index k = 0; k < samples.points.rows(); ++k) centers.push_back({samples.points(k, 0), samples.points(k, 1)});
+  out["centers"] = centers;
+  out["arc_lengths"] = samples.arc_lengths;
+  out["depths"] = samples.depths;
+  out["metric"] = samples.metric;
+  out["volumes_computed"] = samples.volumes_computed;
+  out["max_radii"] = plan.max_radii;
+  out["radius_rates"] = plan.orbits.radius_rates;
+  out["min_feasible_radius"] = plan.orbits.min_feasible_radius;
+  out["failing_samples"] = plan.orbits.failing_samples;
+  nlohmann::json polygons = nlohmann::json::array();
+  for (const auto& vp : plan.polygons) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const Polygon& polygon : vp) {
+      nlohmann::json holes = nlohmann::json::array();
+      for (const Ring& hole : polygon.holes) holes.push_back(ring_json(hole));
+      list.push_back({{"outer", ring_json(polygon.outer)}, {"holes", holes}});
+    }
+    polygons.push_back(list);
+  }
+  out["polygons"] = polygons;
+  out["vv_volumes"] = nlohmann::json::array();
+  for (const VolumePtr& v : samples.volumes) out["vv_volumes"].push_back(v ? v->volume : 0.0);
+  return out.dump(1);
+}
+
+VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
+  VisibilityOrbitPlan plan(orbit_plan_from_json(text));
+  const nlohmann::json in = nlohmann::json::parse(text);  // parsed fine above
+  try {
+    if (in.contains("uav")) {
+      plan.uav.speed = in["uav"].at("speed").get<double>();
+      plan.uav.min_turn_radius = in["uav"].at("min_turn_radius").get<double>();
+      plan.uav.altitude = in["uav"].at("altitude").get<double>();
+      plan.uav.validate();
+    }
+    if (in.contains("sensor")) {
+      plan.sensor.d_max = in["sensor"].at("d_max").get<double>();
+      if (in["sensor"].contains("altitude_band"))
+        plan.sensor.altitude_band = std::make_pair(in["sensor"]["altitude_band"].at(0).get<double>(),
+                                                   in["sensor"]["altitude_band"].at(1).get<double>());
+      plan.sensor.validate();
+    }
+    if (in.contains("planning")) {
+      const auto& p = in["planning"];
+      plan.planning.spacing = p.at("spacing").get<double>();
+      plan.planning.cutoff = p.at("cutoff").get<double>();
+      plan.planning.resolution_deg = p.at("resolution_deg").get<double>();
+      plan.planning.min_spacing = p.at("min_spacing").get<double>();
+      plan.planning.max_depth = p.at("max_depth").get<int>();
+      plan.planning.rate_margin = p.value("rate_margin", 0.0);  // absent in files before it existed
+      plan.planning.validate();
+    }
+    Discretization& samples = plan.samples;
+    samples.times = plan.times;
+    samples.arc_lengths = in.value("arc_lengths", std::vector<double>{});
+    samples.depths = in.value("depths", std::vector<int>{});
+    samples.metric = in.value("metric", std::vector<double>{});
+    samples.volumes_computed = in.value("volumes_computed", std::size_t{0});
+    const std::size_t n = plan.times.size();
+    samples.points.resize(static_cast<Eigen::Index>(n), 3);
+    for (std::size_t k = 0; k < n; ++k)
+      samples.points.row(static_cast<Eigen::Index>(k)) = plan.poi.position(plan.times[k]).transpose();
+    plan.max_radii = in.value("max_radii", std::vector<double>{});
+    plan.orbits.radii = plan.radii;
+    plan.orbits.feasible = plan.feasible;
+    plan.orbits.infeasibility = plan.infeasibility;
+    // dR/dt is derived from the samples, never trusted from the file.
+    for (std::size_t k = 0; k + 1 < n; ++k)
+      plan.orbits.radius_rates.push_back((plan.radii[k + 1] - plan.radii[k]) / (plan.times[k + 1] - plan.times[k]));
+    plan.orbits.min_feasible_radius = in.value("min_feasible_radius", 0.0);
+    plan.orbits.failing_samples = in.value("failing_samples", std::vector<std::size_t>{});
+    if (in.contains("polygons"))
+      for (const auto& vp : in["polygons"]) {
+        std::vector<Polygon> list;
+        for (const auto& polygon : vp) {
+          Polygon p;
+          p.outer = ring_from(polygon.at("outer"));
+          for (const auto& hole : polygon.at("holes")) p.holes.push_back(ring_from(hole));
+          list.push_back(std::move(p));
+        }
+        plan.polygons.push_back(std::move(list));
+      }
+  } catch (const nlohmann::json::exception& error) {
+    throw Error(std::string("visibility orbit plan JSON: missing or wrong field: ") + error.what());
+  }
+  return plan;
+}
+
+}  // namespace vistrack

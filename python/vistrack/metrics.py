@@ -1,0 +1,88 @@
+"""The numbers a run is judged by: the closed loop's errors and visibility (section VI), the
+orbit plan's summary (section IV), and Figure 4's XOR metric along the path (section IV.B)."""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Sequence, Union
+
+import numpy as np
+
+from ._core import Discretization, OrbitPlanner, Planning, PoiPath, SimulationResult, VisibilityOrbitPlan
+from .progress import Progress
+
+__all__ = ["CONVERGE_AFTER", "finite_or_none", "metric_along_path", "plan_summary", "simulation_metrics"]
+
+# Errors are summarised after the initial capture: from this time on (s).
+CONVERGE_AFTER = 20.0
+
+PathMetric = Union[Discretization, VisibilityOrbitPlan]  # both carry arc_lengths and metric
+
+
+def finite_or_none(value: float) -> float | None:
+    """A float for JSON, None for NaN or infinity."""
+    return float(value) if math.isfinite(value) else None
+
+
+def simulation_metrics(result: SimulationResult, converge_after: float = CONVERGE_AFTER) -> dict[str, Any]:
+    """Summary numbers of one closed-loop run (errors after ``converge_after`` seconds)."""
+    t = np.asarray(result.t)
+    radial = np.asarray(result.radial_error)
+    heading = np.asarray(result.heading_error)
+    control = np.asarray(result.control)
+    late = t >= min(converge_after, t[-1])
+    stats = result.statistics
+    return {
+        "duration_s": float(t[-1] - t[0]),
+        "samples": int(len(t)),
+        "rhs_evaluations": int(stats.rhs_evaluations),
+        "accepted_steps": int(stats.accepted_steps),
+        "rejected_steps": int(stats.rejected_steps),
+        "restarts": int(len(result.restart_times) - 1),
+        "initial_radial_error_m": float(radial[0]),
+        "converge_after_s": float(converge_after),
+        "radial_error_after_mean_m": float(np.mean(radial[late])),
+        "radial_error_after_max_abs_m": float(np.max(np.abs(radial[late]))),
+        "heading_error_after_max_abs_rad": float(np.max(np.abs(heading[late]))),
+        "control_max_abs": float(np.max(np.abs(control))),
+        "saturated_fraction": float(np.mean(np.asarray(result.control_unsaturated) != control)),
+        "orbit_radius_first_m": float(result.orbit_radius[0]),
+        "orbit_radius_last_m": float(result.orbit_radius[-1]),
+        "visibility_fraction": None if result.visibility_fraction is None else float(result.visibility_fraction),
+    }
+
+
+def plan_summary(plan: VisibilityOrbitPlan) -> dict[str, Any]:
+    """The numbers of an orbit plan worth printing and comparing with the paper."""
+    return {
+        "samples": len(plan.times),
+        "volumes_computed": int(plan.volumes_computed),
+        "inserted": sum(1 for d in plan.depths if d > 0),
+        "initial_radius": plan.radii[0],
+        "final_radius": plan.radii[-1],
+        "initial_max_radius": plan.max_radii[0],
+        "final_max_radius": plan.max_radii[-1],
+        "min_radius": min(plan.radii),
+        "min_feasible_radius": plan.min_feasible_radius,
+        "max_metric": max(plan.metric) if len(plan.metric) else 0.0,
+        "feasible": plan.feasible,
+        "infeasibility": plan.infeasibility,
+        "duration": plan.times[-1],
+    }
+
+
+def metric_along_path(planner: OrbitPlanner, poi: PoiPath, planning: Planning,
+                      spacings: Sequence[float] = (50.0, 25.0, 10.0, 1.0),
+                      progress: bool = True) -> dict[str, PathMetric]:
+    """Figure 4's data: the XOR metric (56) between neighbouring VVs at fixed spacings and for the
+    adaptive method, keyed "50 m", ..., "adaptive". The finest spacing is computed first so that
+    coarser ones come from the planner's VV cache."""
+    results: dict[str, PathMetric] = {}
+    for spacing in sorted(spacings):
+        with Progress(f"VVs every {spacing:g} m", progress) as bar:
+            results[f"{spacing:g} m"] = planner.fixed(poi, spacing, planning.resolution_deg, bar)
+    with Progress("adaptive VVs", progress) as bar:
+        results["adaptive"] = planner.adaptive(poi, planning, bar)
+    ordered = {f"{s:g} m": results[f"{s:g} m"] for s in spacings}
+    ordered["adaptive"] = results["adaptive"]
+    return ordered
