@@ -25,7 +25,7 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 import numpy as np
 
 import vistrack as vt
-from vistrack import planning as pl
+from vistrack.io import load_environment
 from timing import timed  # noqa: E402
 
 DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
@@ -59,7 +59,7 @@ def main() -> int:
         print(f"real data not found under {DATA}: skipping")
         return 0
 
-    env = pl.load_environment(args.map, "y")
+    env = load_environment(args.map, "y")
     poi = vt.PoiPath.from_csv(str(path), 5.0)
     uav = vt.Uav(speed=20.0, min_turn_radius=50.0, altitude=300.0)
     sensor = vt.Sensor(d_max=400.0)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Quick start, second command: install what is needed, then run every test (GoogleTest through
-# ctest, then pytest). Exits non-zero when any test fails.
+# ctest, ruff and mypy on the package, then pytest). Exits non-zero when any check fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=build/test
@@ -8,4 +8,6 @@ bash scripts/install.sh -Cbuild-dir="$build_dir" -Ccmake.define.VISTRACK_BUILD_T
   -Ccmake.define.VISTRACK_WERROR=ON
 ctest_bin=$(command -v ctest || echo .venv/bin/ctest)
 "$ctest_bin" --test-dir "$build_dir" --output-on-failure -j2
+.venv/bin/ruff check python
+.venv/bin/mypy python/vistrack
 .venv/bin/python -m pytest tests/python "$@"

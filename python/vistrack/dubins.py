@@ -24,10 +24,10 @@ intercept_circle = _dubins.intercept_circle
 intercept_travel_times = _dubins.intercept_travel_times
 
 __all__ = [
-    "DubinsPath",
-    "InterceptResult",
     "SNAP",
     "WORDS",
+    "DubinsPath",
+    "InterceptResult",
     "four_rho_condition",
     "intercept_circle",
     "intercept_travel_times",

@@ -76,7 +76,8 @@ class InterceptProblem:
     def travel_times(self, swept: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """(angles, pursuer times, target times) over the target's swept angles."""
         return dubins.intercept_travel_times(self.pursuer, self.rho, self.pursuer_speed, self.center, self.radius,
-                                             self.target_angle0, self.target_speed, self.direction, swept)
+                                             self.target_angle0, self.target_speed, self.direction,
+                                             [float(a) for a in swept])
 
     def record(self, result: dubins.InterceptResult) -> dict[str, Any]:
         """The problem, the interception and its path as plain data (intercept.json)."""

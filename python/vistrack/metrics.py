@@ -3,7 +3,6 @@ orbit plan's summary (section IV), and Figure 4's XOR metric along the path (sec
 
 from __future__ import annotations
 
-import math
 from typing import Any, Sequence, Union
 
 import numpy as np
@@ -11,17 +10,12 @@ import numpy as np
 from ._core import Discretization, OrbitPlanner, Planning, PoiPath, SimulationResult, VisibilityOrbitPlan
 from .progress import Progress
 
-__all__ = ["CONVERGE_AFTER", "finite_or_none", "metric_along_path", "plan_summary", "simulation_metrics"]
+__all__ = ["CONVERGE_AFTER", "metric_along_path", "plan_summary", "simulation_metrics"]
 
 # Errors are summarised after the initial capture: from this time on (s).
 CONVERGE_AFTER = 20.0
 
 PathMetric = Union[Discretization, VisibilityOrbitPlan]  # both carry arc_lengths and metric
-
-
-def finite_or_none(value: float) -> float | None:
-    """A float for JSON, None for NaN or infinity."""
-    return float(value) if math.isfinite(value) else None
 
 
 def simulation_metrics(result: SimulationResult, converge_after: float = CONVERGE_AFTER) -> dict[str, Any]:
@@ -34,7 +28,7 @@ def simulation_metrics(result: SimulationResult, converge_after: float = CONVERG
     stats = result.statistics
     return {
         "duration_s": float(t[-1] - t[0]),
-        "samples": int(len(t)),
+        "samples": len(t),
         "rhs_evaluations": int(stats.rhs_evaluations),
         "accepted_steps": int(stats.accepted_steps),
         "rejected_steps": int(stats.rejected_steps),

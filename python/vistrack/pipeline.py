@@ -15,10 +15,19 @@ from typing import Any, Optional, Sequence, Union
 import numpy as np
 
 from ._core import (
-    Control, OrbitPlan, OrbitPlanner, SimulationOptions, SimulationResult, Uav, VisibilityOrbitPlan,
-    VisibilityScene, VistrackError, constant_radius_plan, simulate,
+    Control,
+    OrbitPlan,
+    OrbitPlanner,
+    SimulationOptions,
+    SimulationResult,
+    Uav,
+    VisibilityOrbitPlan,
+    VisibilityScene,
+    VistrackError,
+    constant_radius_plan,
+    simulate,
 )
-from .metrics import finite_or_none, simulation_metrics
+from .metrics import simulation_metrics
 from .progress import Stages
 from .report.run import RunResult, write_report
 from .scenario import Scenario
@@ -122,7 +131,7 @@ def _metrics(result: RunResult) -> dict[str, Any]:
             "cutoff_m3": s.planning.cutoff,
         },
         "simulation": simulation_metrics(result.simulation),
-        "baselines": {f"{r:g}": {"radius_m": r, "visibility_fraction": finite_or_none(b.visibility_fraction)}
+        "baselines": {f"{r:g}": {"radius_m": r, "visibility_fraction": b.visibility_fraction}
                       for r, b in result.baselines.items()},
         "timings_s": {k: round(v, 4) for k, v in result.timings.items()},
     }

@@ -15,17 +15,25 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping, Sequence
 
+import numpy as np
 import yaml
 
-import numpy as np
-
 from ._core import (
-    Control, Environment, Planning, PoiMotion, PoiPath, RoadNetwork, Sensor, SimulationOptions, Uav, VistrackError,
+    Control,
+    Environment,
+    Planning,
+    PoiMotion,
+    PoiPath,
+    RoadNetwork,
+    Sensor,
+    SimulationOptions,
+    Uav,
+    VistrackError,
 )
 from .io import load_environment, read_text
 from .schema import apply_checks, fail, integer, number, positive, resolve_path, section
 
-__all__ = ["Scenario", "EnvironmentSpec", "PoiSpec", "default_scenario_text", "road_route"]
+__all__ = ["EnvironmentSpec", "PoiSpec", "Scenario", "default_scenario_text", "road_route"]
 
 DEMO_SCENARIO = Path(__file__).with_name("scenarios") / "demo.yaml"
 
@@ -230,7 +238,8 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
         for i, point in enumerate(value):
             sizes = (2, 3) if key == "waypoints" else (2,)
             if not isinstance(point, list) or len(point) not in sizes:
-                raise fail(f"poi.{key}[{i}]", point, "must be [x, y] or [x, y, z]" if key == "waypoints" else "must be [x, y]")
+                allowed = "must be [x, y] or [x, y, z]" if key == "waypoints" else "must be [x, y]"
+                raise fail(f"poi.{key}[{i}]", point, allowed)
             points.append([number(f"poi.{key}[{i}][{k}]", c) for k, c in enumerate(point)])
         setattr(spec, key, points)
     else:

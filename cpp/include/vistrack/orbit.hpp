@@ -129,7 +129,7 @@ struct VisibilityOrbitPlan : OrbitPlan {
   CircularOrbits orbits;                       // Algorithm 1 (lines 2-18) on max_radii
 };
 
-// VP(s) of a VV at an altitude above the ground.
+// VP(s) of a VV at world altitude z (h_UAV: the flight plane).
 using SliceFunction = std::function<std::vector<Polygon>(const VisibilityVolume&, double altitude)>;
 
 // Section IV end to end with the given VV, metric and slice functions.

@@ -62,8 +62,8 @@ SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0,
 std::string trajectory_csv(const SimulationResult& result);
 
 // The same closed loop with the line of sight of an Embree scene at every sample: the UAV at
-// world z = scene ground level + h_UAV (the altitude the orbit planner slices its VPs at), the
-// POI at g(t) with the path's z.
+// world z = uav.altitude (the altitude the orbit planner slices its VPs at), the POI at g(t)
+// lifted onto the surface under it (VisibilityScene::poi_on_surface, as the planner places it).
 SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
                           const SimulationOptions& options, const VisibilityScene& scene, double fixed_step = 0.0);
 

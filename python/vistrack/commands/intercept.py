@@ -29,7 +29,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--target-angle", dest="target_angle0", type=float, help="alpha_i, initial target angle (rad)")
     parser.add_argument("--target-speed", dest="target_speed", type=float, help="v_t (m/s)")
     parser.add_argument("--direction", choices=["cw", "ccw"], help="target travel direction on the circle")
-    parser.add_argument("--tolerance", dest="angle_tolerance", type=float, help="bisection tolerance on the angle (rad)")
+    parser.add_argument("--tolerance", dest="angle_tolerance", type=float,
+                        help="bisection tolerance on the angle (rad)")
     parser.add_argument("--out", type=Path, default=Path("intercept_out"), help="output folder (default intercept_out)")
     parser.set_defaults(func=run)
 

@@ -39,7 +39,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--d-max", type=float, default=sensor.d_max, help="maximum viewing distance d_max (m)")
     p.add_argument("--altitude", type=float, default=uav.altitude, help="UAV altitude h_UAV for the VPs (world z, m)")
     p.add_argument("--band", type=float, nargs=2, metavar=("H_LO", "H_HI"), help="feasible altitude band (world z)")
-    p.add_argument("--resolution", type=float, default=planning.resolution_deg, help="angular step of the ray grid (deg)")
+    p.add_argument("--resolution", type=float, default=planning.resolution_deg,
+                   help="angular step of the ray grid (deg)")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, help="output folder")
     p.add_argument("--save-volumes", type=Path, metavar="DIR", help="also write each whole VV as DIR/vv-NNNN.bin "
                    "(binary VV files, read back by `vistrack orbits --from-volumes DIR`)")

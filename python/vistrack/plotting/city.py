@@ -6,7 +6,7 @@ may want to reuse (e.g. the ``ScalarMappable`` for a colourbar).
 
 from __future__ import annotations
 
-from typing import Any, Optional, Sequence
+from typing import Any, Optional, Sequence, Union
 
 import numpy as np
 
@@ -34,6 +34,7 @@ def plot_buildings(ax: Any, env: Environment, *, cmap: str = "viridis", vmax: Op
     from matplotlib.collections import PatchCollection, PolyCollection
     from matplotlib.patches import PathPatch
 
+    collection: Union[PatchCollection, PolyCollection]
     if env.num_buildings > 0:
         patches = [PathPatch(footprint_path(f.outer, f.holes)) for f in env.footprints]
         collection = PatchCollection(patches, cmap=cmap, edgecolor=edgecolor, linewidth=linewidth)
@@ -46,10 +47,10 @@ def plot_buildings(ax: Any, env: Environment, *, cmap: str = "viridis", vmax: Op
         height = top[:, :, 2].max(axis=1) - env.ground_level
         # Flat ground pieces (terrain planes in the file) in light grey, under the buildings.
         ground = height < ground_tolerance
-        ax.add_collection(PolyCollection(top[ground, :, :2], facecolor="0.92", edgecolor="0.92",
+        ax.add_collection(PolyCollection(list(top[ground, :, :2]), facecolor="0.92", edgecolor="0.92",
                                          linewidth=0.3, zorder=0))
         order = np.argsort(height[~ground], kind="stable")
-        collection = PolyCollection(top[~ground][order, :, :2], cmap=cmap, edgecolor="face",
+        collection = PolyCollection(list(top[~ground][order, :, :2]), cmap=cmap, edgecolor="face",
                                     linewidth=0.2)
         collection.set_array(height[~ground][order])
     collection.set_clim(0.0, vmax if vmax is not None else max(env.max_height, 1.0))
@@ -63,7 +64,7 @@ def plot_roads(ax: Any, roads: RoadNetwork, *, color: str = "0.55", linewidth: f
     from matplotlib.collections import LineCollection
 
     nodes, edges = roads.nodes, roads.edges
-    lines = LineCollection(nodes[edges], colors=color, linewidths=linewidth, zorder=1, label=label)
+    lines = LineCollection(list(nodes[edges]), colors=color, linewidths=linewidth, zorder=1, label=label)
     ax.add_collection(lines)
     return lines
 

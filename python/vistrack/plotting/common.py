@@ -28,7 +28,7 @@ def evenly_spaced_indices(n: int, count: int) -> list[int]:
     """At most ``count`` indices of ``range(n)`` spread evenly, first and last included."""
     if n <= count:
         return list(range(n))
-    return sorted({int(round(i)) for i in np.linspace(0, n - 1, count)})
+    return sorted({round(i) for i in np.linspace(0, n - 1, count)})
 
 
 def new_figure(size: tuple[float, float] = (8.0, 8.0)) -> tuple[Any, Any]:

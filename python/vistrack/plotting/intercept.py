@@ -47,7 +47,8 @@ def figure_intercept(problem: InterceptProblem, result: InterceptResult, out: Pa
     ax.plot(cx + r * np.cos(circle), cy + r * np.sin(circle), color="0.6", lw=1, label="target circle")
     ax.plot(cx + r * np.cos(travelled), cy + r * np.sin(travelled), color="tab:orange", lw=2.5,
             label=f"target travel ({result.swept_angle / (2.0 * math.pi):.2f} laps)")
-    ax.plot(samples[:, 0], samples[:, 1], color="tab:blue", lw=2, label=f"pursuer path ({path.word}, {path.length:.3f} m)")
+    ax.plot(samples[:, 0], samples[:, 1], color="tab:blue", lw=2,
+            label=f"pursuer path ({path.word}, {path.length:.3f} m)")
     x0, y0, psi0 = problem.pursuer
     ax.annotate("", xy=(x0 + 0.6 * math.cos(psi0), y0 + 0.6 * math.sin(psi0)), xytext=(x0, y0),
                 arrowprops={"arrowstyle": "->", "color": "tab:blue", "lw": 1.5})

@@ -24,7 +24,7 @@ def figure_metric(results: Mapping[str, Union[Discretization, VisibilityOrbitPla
         if len(s) < 2:
             continue
         mid = 0.5 * (s[1:] + s[:-1])
-        style = dict(lw=2.2, color="purple") if label == "adaptive" else dict(lw=1.2)
+        style = {"lw": 2.2, "color": "purple"} if label == "adaptive" else {"lw": 1.2}
         ax.plot(mid, np.asarray(d.metric), marker=".", ms=3, label=f"{label} ({len(s)} VVs)", **style)
     ax.axhline(cutoff, color="k", ls="--", lw=1, label=f"cutoff {cutoff:.3g} m$^3$")
     ax.set_xlabel("distance along the POI path (m)")
@@ -83,7 +83,7 @@ def figure_radius(plan: VisibilityOrbitPlan, path: str | Path) -> Path:
     plt = pyplot()
     t = np.asarray(plan.times)
     rate_limit = plan.uav.speed - plan.poi.speed
-    fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 6), sharex=True, gridspec_kw=dict(height_ratios=[2, 1]))
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 6), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
     ax.plot(t, plan.max_radii, "o", ms=3, color="tab:gray", label="MaxRadius in the VP")
     ax.plot(t, plan.radii, "-", lw=2, color="tab:blue", label="R(t) after Algorithm 1")
     ax.axhline(plan.min_feasible_radius, color="tab:red", ls="--",

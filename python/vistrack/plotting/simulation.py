@@ -22,7 +22,7 @@ def figure_trajectory(runs: Sequence[Run], env: Optional[Environment], path: str
     """Figure 10 style: each run's UAV path (label, plan, result) with its orbits and the POI path."""
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(8, 8))
-    label0, plan0, result0 = runs[0]
+    _label0, plan0, result0 = runs[0]
     everything = np.vstack([np.asarray(r.state)[:, :2] for _, _, r in runs] + [np.asarray(result0.poi)[:, :2]])
     lo = everything.min(axis=0) - 30
     hi = everything.max(axis=0) + 30

@@ -28,7 +28,7 @@ def figure_tuning(tuning: BetaTuning, path: str | Path) -> Path:
     fig.colorbar(mesh, ax=ax0, label="max over heading error of |dpsi_d/dt + u_lyap| (rad/s)")
     t = np.linspace(0, 2 * math.pi, 200)
     ax0.plot(tuning.radius * np.cos(t), tuning.radius * np.sin(t), "c--", lw=1, label="orbit R")
-    ax0.annotate("", xy=(0.6 * tuning.radius, 0), xytext=(0, 0), arrowprops=dict(arrowstyle="->", color="w"))
+    ax0.annotate("", xy=(0.6 * tuning.radius, 0), xytext=(0, 0), arrowprops={"arrowstyle": "->", "color": "w"})
     ax0.plot(chosen.at_r * math.cos(chosen.at_theta), chosen.at_r * math.sin(chosen.at_theta), "wx", ms=9,
              label=f"max {chosen.max_turn_rate:.3f} rad/s")
     ax0.set_aspect("equal")

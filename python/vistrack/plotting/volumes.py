@@ -72,10 +72,11 @@ def figure_visibility_polygons(env: Environment, shown: Sequence[tuple[np.ndarra
         for polygon in polygons:
             ax.add_patch(PathPatch(footprint_path(polygon.outer, polygon.holes), facecolor=color, alpha=0.18,
                                    edgecolor=color, linewidth=1.2, zorder=3))
-    for k, (poi, polygons, radius) in enumerate(shown):
+    for k, (poi, _, radius) in enumerate(shown):
         color = colors[0] if k == 0 else colors[1] if k == len(shown) - 1 else "0.35"
         if radius > 0:
-            ax.add_patch(Circle(poi[:2], radius, fill=False, linestyle="--", edgecolor=color, linewidth=1.0, zorder=4))
+            ax.add_patch(Circle((float(poi[0]), float(poi[1])), radius, fill=False, linestyle="--", edgecolor=color,
+                                linewidth=1.0, zorder=4))
         ax.plot(poi[0], poi[1], "x", color=color, markersize=7, zorder=5)
     pois = np.array([s[0] for s in shown])
     pad = d_max

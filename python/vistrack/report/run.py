@@ -8,7 +8,13 @@ from pathlib import Path
 from typing import Any, Optional, Union
 
 from .._core import (
-    Discretization, Environment, OrbitPlan, OrbitPlanner, PoiPath, SimulationResult, VisibilityOrbitPlan,
+    Discretization,
+    Environment,
+    OrbitPlan,
+    OrbitPlanner,
+    PoiPath,
+    SimulationResult,
+    VisibilityOrbitPlan,
 )
 from ..io import write_json, write_plan, write_trajectory
 from ..plotting import OSM_CREDIT, evenly_spaced_indices, figure_volume_3d, new_figure, plot_city, save_figure

@@ -36,7 +36,8 @@ def write_volumes(out: Path, env: Environment, scene: VisibilityScene, pois: np.
     shown: list[tuple[np.ndarray, list[Polygon], float]] = []
     first: Optional[VisibilityVolume] = None
     for start in range(0, len(pois), BATCH):
-        for k, vv in enumerate(visibility_volumes(scene, pois[start:start + BATCH], d_max, band, resolution_deg), start):
+        batch = visibility_volumes(scene, pois[start:start + BATCH], d_max, band, resolution_deg)
+        for k, vv in enumerate(batch, start):
             polygons = vv.slice(altitude)
             radius = max_inscribed_radius(polygons, vv.poi[:2])
             record: dict[str, Any] = {"poi": vv.poi.tolist(), "volume": vv.volume, "grid_volume": vv.grid_volume(),
