@@ -2,15 +2,11 @@
 vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation.
 """
 from __future__ import annotations
-
 import collections.abc
-import typing
-
 import numpy
 import numpy.typing
-
+import typing
 from . import dubins
-
 __all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'wrap_to_pi', 'xor_volume']
 class VistrackError(ValueError):
     pass
@@ -1471,7 +1467,7 @@ def wrap_to_pi(angle: typing.SupportsFloat | typing.SupportsIndex) -> float:
 def xor_volume(a: VisibilityVolume, b: VisibilityVolume, frame: str = 'poi', method: str = 'auto', time_limit: typing.SupportsFloat | typing.SupportsIndex = 120.0, perturbation: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
     """
     Volume (m^3) of the symmetric difference of two VVs, the metric d of eq. (56).
-
+    
     frame: "poi" translates each VV by minus its POI first (open terrain gives 0), "world" compares
     them in place. method: "radial" is the exact XOR of the two meshes computed per direction
     (star VVs on one direction grid: what "mesh" gives, without CGAL); "grid" is

@@ -2,14 +2,11 @@
 Dubins paths (shortest of LSL, LSR, RSL, RSR, RLR, LRL), batch lengths, shortest path to a point on a circle and the optimal intercept of a target moving on a circle (Manyam et al., Algorithm 1). Configurations are (x, y, psi), psi in rad counter-clockwise from +x; rho is the minimum turn radius. Snapping tolerance: eps = 1e-11 * (1 + max|coordinate| / rho) (see dubins.hpp).
 """
 from __future__ import annotations
-
 import collections.abc
-import typing
-
 import numpy
 import numpy.typing
-
-__all__: list[str] = ['SNAP', 'WORDS', 'DubinsPath', 'InterceptResult', 'four_rho_condition', 'intercept_circle', 'intercept_travel_times', 'length_to_circle', 'path', 'path_to_circle', 'shortest_length', 'shortest_lengths', 'shortest_path', 'word_lengths']
+import typing
+__all__: list[str] = ['DubinsPath', 'InterceptResult', 'SNAP', 'WORDS', 'four_rho_condition', 'intercept_circle', 'intercept_travel_times', 'length_to_circle', 'path', 'path_to_circle', 'shortest_length', 'shortest_lengths', 'shortest_path', 'word_lengths']
 class DubinsPath:
     """
     One Dubins path: start, goal, turn radius, word and segment lengths.
