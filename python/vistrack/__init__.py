@@ -11,7 +11,7 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError
 from importlib.metadata import version as _version
 
-from . import _core, dubins
+from . import _core, dubins, mission
 
 # By area: geometry and parameters; environment; visibility and volumes; orbits (section IV);
 # guidance, integrator and closed loop (sections V-VI).
@@ -82,6 +82,7 @@ from ._core import (
     wrap_to_pi,
     xor_volume,
 )
+from .mission import Georeference
 from .pipeline import RunResult, run
 from .scenario import Scenario
 from .visibility import polygon_agreement, visibility_scene, visibility_volume, visibility_volumes
@@ -97,6 +98,7 @@ __all__ = [
     "DirectionGrid",
     "Discretization",
     "Environment",
+    "Georeference",
     "GuidanceGains",
     "MeshCheck",
     "OdeResult",
@@ -137,6 +139,7 @@ __all__ = [
     "max_orbit_curvature",
     "mesh_volume",
     "mesh_xor_volume",
+    "mission",
     "min_feasible_radius",
     "one_minus_cos_over_x",
     "orbit_configuration",

@@ -6,6 +6,8 @@
 - VV files: the binary ``vv-*.bin`` of the VV cache (:func:`volume_files`)
 - closed-loop trajectories: CSV (:func:`write_trajectory`)
 - JSON results (:func:`write_json`) and YAML mappings (:func:`read_yaml_mapping`)
+- GeoJSON in WGS84 of trajectories, orbit plans and missions (:func:`trajectory_geojson`,
+  :func:`orbit_plan_geojson`, :func:`mission_geojson`, :func:`write_geojson`)
 
 Every error names the option or key and the file: a missing or unreadable file, a file that is
 not text, or text that is not the expected format raises VistrackError.
@@ -14,14 +16,22 @@ not text, or text that is not the expected format raises VistrackError.
 from __future__ import annotations
 
 import json
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Any, Optional, Union
+from typing import TYPE_CHECKING, Any, Optional, Union
+
+import numpy as np
 
 from ._core import Environment, OrbitPlan, SimulationResult, VisibilityOrbitPlan, VistrackError
 
+if TYPE_CHECKING:
+    from .mission import Georeference, Mission
+
 __all__ = [
-    "GEOJSON_SUFFIXES", "footprint_environment", "load_environment", "read_plan", "read_text",
-    "read_yaml_mapping", "volume_files", "write_json", "write_plan", "write_trajectory",
+    "GEOJSON_SUFFIXES", "feature_collection", "footprint_environment", "line_feature", "load_environment",
+    "lon_lat", "mission_geojson", "orbit_plan_geojson", "point_feature", "read_plan", "read_text",
+    "read_yaml_mapping", "trajectory_geojson", "volume_files", "write_geojson", "write_json", "write_plan",
+    "write_trajectory",
 ]
 
 GEOJSON_SUFFIXES = (".geojson", ".json")
@@ -42,32 +52,38 @@ def read_text(path: str | Path, key: str) -> str:
         raise VistrackError(f"{key} = {path}: not UTF-8 text (byte {error.start})") from None
 
 
-def load_environment(path: str | Path, up: str = "z", kind: Optional[str] = None) -> Environment:
+def load_environment(path: str | Path, up: str = "z", kind: Optional[str] = None,
+                     origin: Georeference | None = None) -> Environment:
     """A city from a file: GeoJSON 2.5D footprints or any triangle mesh (OBJ, PLY, STL, OFF), whose
     up axis is ``up`` ("z", or "y" for Y-up files such as the Charlotte and campus OBJ exports,
     where north is -Z). ``kind`` "geojson" or "mesh"; by default from the suffix
-    (``.geojson``/``.json`` are GeoJSON)."""
+    (``.geojson``/``.json`` are GeoJSON). ``origin`` becomes ``env.origin``; a longitude/latitude
+    GeoJSON is projected about it (without it: about the data's centre)."""
     text = str(path)
     if kind is None:
         kind = "geojson" if Path(text).suffix.lower() in GEOJSON_SUFFIXES else "mesh"
     if kind == "geojson":
-        return Environment.from_geojson(text)
-    return Environment.from_mesh(text, up)
+        return Environment.from_geojson(text, origin=origin)
+    env = Environment.from_mesh(text, up)
+    env.origin = origin
+    return env
 
 
-def footprint_environment(map_path: str | Path | None, footprints: str | Path | None = None) -> Environment | None:
+def footprint_environment(map_path: str | Path | None, footprints: str | Path | None = None,
+                          origin: Georeference | None = None) -> Environment | None:
     """Building footprints to draw under a figure without loading the map for planning: the
     given GeoJSON, else a GeoJSON map itself, else ``buildings.geojson`` beside a mesh map
-    (Charlotte ships both), else None."""
+    (Charlotte ships both), else None. Longitude/latitude files are projected about ``origin``
+    (else their centre), as the map is."""
     if footprints:
-        return Environment.from_geojson(str(footprints))
+        return Environment.from_geojson(str(footprints), origin=origin)
     if not map_path:
         return None
     map_file = Path(map_path)
     if map_file.suffix.lower() in GEOJSON_SUFFIXES:
-        return Environment.from_geojson(str(map_file))
+        return Environment.from_geojson(str(map_file), origin=origin)
     beside = map_file.with_name("buildings.geojson")
-    return Environment.from_geojson(str(beside)) if beside.exists() else None
+    return Environment.from_geojson(str(beside), origin=origin) if beside.exists() else None
 
 
 def read_plan(path: str | Path, key: str = "plan") -> AnyPlan:
@@ -130,3 +146,94 @@ def volume_files(folder: str | Path, key: str = "--from-volumes") -> list[Path]:
     if not files:
         raise VistrackError(f"{key} = {folder}: no VV files (*.bin) in the folder")
     return files
+
+
+# ---------------------------------------------------------------------------------------------
+# GeoJSON in WGS84 (RFC 7946: [longitude, latitude]) of trajectories, orbit plans and missions,
+# for any GIS tool to show over a map. Local points go through the georeference's map plane
+# (Georeference.to_latlon), the same one maps come in through.
+# ---------------------------------------------------------------------------------------------
+
+
+def lon_lat(points: Any, georeference: Georeference) -> list[list[float]]:
+    """[[lon, lat], ...] of local points, rows (x, y[, ...])."""
+    array = np.asarray(points, dtype=float)
+    if array.ndim != 2 or array.shape[1] < 2 or len(array) == 0:
+        raise VistrackError(f"points = array of shape {array.shape}: must be rows (x, y) in local metres")
+    lat, lon = georeference.to_latlon(array[:, 0], array[:, 1])
+    return [[float(a), float(b)] for a, b in zip(np.atleast_1d(lon), np.atleast_1d(lat))]
+
+
+def line_feature(points: Any, georeference: Georeference, properties: dict[str, Any] | None = None) -> dict[str, Any]:
+    """A LineString Feature through local points."""
+    return {"type": "Feature", "properties": dict(properties or {}),
+            "geometry": {"type": "LineString", "coordinates": lon_lat(points, georeference)}}
+
+
+def point_feature(point: Sequence[float], georeference: Georeference,
+                  properties: dict[str, Any] | None = None) -> dict[str, Any]:
+    """A Point Feature at a local point (x, y)."""
+    return {"type": "Feature", "properties": dict(properties or {}),
+            "geometry": {"type": "Point", "coordinates": lon_lat([point[:2]], georeference)[0]}}
+
+
+def feature_collection(features: list[dict[str, Any]], **members: Any) -> dict[str, Any]:
+    """A FeatureCollection (extra top-level members, e.g. the origin, kept as given)."""
+    return {"type": "FeatureCollection", **members, "features": features}
+
+
+def trajectory_geojson(result: SimulationResult, georeference: Georeference,
+                       properties: dict[str, Any] | None = None) -> dict[str, Any]:
+    """The flown path of a simulation (``result.state`` rows x, y, psi) as a LineString, with
+    its duration and visibility fraction."""
+    state = np.asarray(result.state, dtype=float)
+    fraction = result.visibility_fraction  # None when simulated without a scene
+    props = {"kind": "trajectory", "duration_s": float(result.t[-1] - result.t[0]),
+             "visibility_fraction": None if fraction is None else float(fraction), **(properties or {})}
+    return line_feature(state[:, :2], georeference, props)
+
+
+def orbit_plan_geojson(plan: OrbitPlan, georeference: Georeference) -> list[dict[str, Any]]:
+    """An orbit plan's features: the POI path (LineString) and one Point per sample at the orbit
+    centre g(t_k) with its time and radius."""
+    features = [line_feature(np.asarray(plan.poi.waypoints)[:, :2], georeference,
+                             {"kind": "poi_path", "speed_mps": float(plan.poi.speed)})]
+    for k, (t, center, radius) in enumerate(zip(plan.times, np.asarray(plan.centers), plan.radii)):
+        features.append(point_feature(center, georeference, {"kind": "orbit_center", "sample": k,
+                                                             "time_s": float(t), "radius_m": float(radius)}))
+    return features
+
+
+def mission_geojson(mission: Mission) -> dict[str, Any]:
+    """A mission over a map: the home Point, the route (LineString from home through every item
+    with a coordinate) and one Point per such item (command, its parameters, altitude)."""
+    from .mission import Frame
+
+    lat, lon, alt = mission.home
+    features: list[dict[str, Any]] = [{"type": "Feature",
+                                       "properties": {"kind": "home", "altitude_amsl_m": alt},
+                                       "geometry": {"type": "Point", "coordinates": [lon, lat]}}]
+    route = [[lon, lat]]
+    mode = {int(Frame.GLOBAL): "amsl", int(Frame.GLOBAL_RELATIVE_ALT): "relative"}
+    for seq, item in enumerate(mission.items, start=1):
+        if not item.has_coordinate:
+            continue
+        route.append([item.lon, item.lat])
+        features.append({"type": "Feature",
+                         "properties": {"kind": "mission_item", "seq": seq, "command": item.command,
+                                        "name": item.name, "params": list(item.params), "altitude_m": item.alt,
+                                        "altitude_mode": mode[item.frame]},
+                         "geometry": {"type": "Point", "coordinates": [item.lon, item.lat]}})
+    features.insert(1, {"type": "Feature", "properties": {"kind": "route"},
+                        "geometry": {"type": "LineString", "coordinates": route}})
+    return feature_collection(features)
+
+
+def write_geojson(collection: dict[str, Any], path: str | Path) -> Path:
+    """Write a FeatureCollection (full double precision)."""
+    path = Path(path)
+    try:
+        path.write_text(json.dumps(collection, indent=1, allow_nan=False) + "\n", encoding="utf-8")
+    except OSError as error:
+        raise VistrackError(f"path = {path}: cannot write the file ({error.strerror})") from None
+    return path

@@ -51,7 +51,7 @@ def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True
         cache_dir: str | Path | None = None) -> RunResult:
     """Run a scenario end to end; with ``out``, also write the report folder there."""
     stages = Stages(quiet)
-    env = stages.run("environment", scenario.environment.load)
+    env = stages.run("environment", scenario.environment.load, scenario.origin)
     poi = stages.run("POI path", scenario.poi.build, env)
     planner: OrbitPlanner = stages.run(
         "visibility scene", OrbitPlanner, env, scenario.sensor, "" if cache_dir is None else str(cache_dir))
@@ -116,6 +116,7 @@ def _metrics(result: RunResult) -> dict[str, Any]:
         "environment": s.environment.describe(),
         "environment_triangles": int(result.env.num_triangles),
         "environment_max_height_m": float(result.env.max_height),
+        "origin": None if result.env.origin is None else list(result.env.origin),
         "poi": {"length_m": result.poi.length, "duration_s": result.poi.duration, "speed_mps": result.poi.speed},
         "plan": {
             "samples": len(plan.times),

@@ -31,6 +31,7 @@ from ._core import (
     VistrackError,
 )
 from .io import load_environment, read_text
+from .mission import Georeference
 from .schema import apply_checks, fail, integer, number, positive, resolve_path, section
 
 __all__ = ["EnvironmentSpec", "PoiSpec", "Scenario", "default_scenario_text", "road_route"]
@@ -56,10 +57,14 @@ class EnvironmentSpec:
     path: Path | None = None
     up: str = "z"
 
-    def load(self) -> Environment:
+    def load(self, origin: Georeference | None = None) -> Environment:
+        """The environment; ``origin`` (the scenario's) becomes ``env.origin`` and is what a
+        longitude/latitude GeoJSON is projected about (without it: the data's centre)."""
         if self.kind == "demo" or self.path is None:
-            return Environment.demo()
-        return load_environment(self.path, self.up, self.kind)
+            env = Environment.demo()
+            env.origin = origin
+            return env
+        return load_environment(self.path, self.up, self.kind, origin)
 
     def describe(self) -> str:
         return "demo city" if self.kind == "demo" else f"{self.kind} {self.path}"
@@ -101,10 +106,11 @@ class Scenario:
     control: Control = field(default_factory=Control)
     simulation: SimulationOptions = field(default_factory=SimulationOptions)
     baselines: list[float] = field(default_factory=list)  # constant orbit radii to compare, m
+    origin: Georeference | None = None  # where local (0, 0, 0) lies on the Earth (maps in, routes out)
     name: str = "scenario"
     source: Path | None = None
 
-    SECTIONS = ("name", "environment", "poi", "uav", "sensor", "planning", "control",
+    SECTIONS = ("name", "origin", "environment", "poi", "uav", "sensor", "planning", "control",
                 "simulation", "baselines")
 
     @classmethod
@@ -144,6 +150,8 @@ class Scenario:
                 raise fail("name", name, "must be a non-empty name of letters, digits, '_', '-' or '.' "
                                           "(it names the output folder)")
             scenario.name = data["name"]
+        if data.get("origin") is not None:
+            scenario.origin = Georeference.from_value(data["origin"], "origin")
         scenario.environment = _environment(section(data, "environment", {"demo", "geojson", "mesh", "up"}), base)
         scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
         scenario.uav, scenario.start = _uav(section(data, "uav", {"speed", "min_turn_radius", "altitude", "start"}))
@@ -175,8 +183,10 @@ class Scenario:
         if self.poi.route is not None:
             poi["route"] = self.poi.route
         band = self.sensor.altitude_band
+        origin = self.origin
         return {
             "name": self.name,
+            "origin": None if origin is None else [origin.lat, origin.lon, origin.alt],
             "environment": env,
             "poi": poi,
             "uav": {"speed": self.uav.speed, "min_turn_radius": self.uav.min_turn_radius,

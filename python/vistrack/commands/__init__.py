@@ -58,3 +58,42 @@ def configuration(flag: str) -> Callable[[str], np.ndarray]:
         return np.array(values)
 
     return parse
+
+
+def add_export_arguments(parser: argparse.ArgumentParser, direction: bool = False) -> None:
+    """--export FILE (repeatable) and --origin LAT,LON[,ALT] for commands that plan a route (and
+    --direction, the circulation written, where no scenario gives it)."""
+    from ..mission import Georeference
+
+    def origin(text: str) -> Georeference:
+        try:
+            return Georeference.from_value([float(v) for v in text.split(",")], "--origin")
+        except ValueError as error:  # VistrackError is a ValueError; float() raises one too
+            raise argparse.ArgumentTypeError(str(error) if "--origin" in str(error) else
+                                             f"--origin = {text}: need LAT,LON or LAT,LON,ALT in degrees and metres")
+
+    parser.add_argument("--export", action="append", default=[], metavar="FILE",
+                        help="also write the route for an autopilot or a map, by suffix: .plan (QGroundControl), "
+                             ".waypoints/.txt (QGC WPL 110), .geojson (WGS84); repeatable. Needs --origin, the "
+                             "scenario's origin or a longitude/latitude map")
+    parser.add_argument("--origin", type=origin, default=None, metavar="LAT,LON[,ALT]",
+                        help="where local (0, 0, 0) lies: WGS84 degrees and metres above sea level (projects a "
+                             "longitude/latitude GeoJSON map and georeferences --export)")
+    if direction:
+        parser.add_argument("--direction", default="ccw", choices=["ccw", "cw"], help="orbit direction for --export")
+
+
+def export_plan(paths, plan, georeference, env, **options) -> None:
+    """Write each --export file (vistrack.mission.export_orbit_plan) and print what was written;
+    the georeference is --origin / the scenario's, else the map's (env.origin)."""
+    from .. import VistrackError
+    from ..mission import Georeference, export_orbit_plan
+
+    if not paths:
+        return
+    reference: Georeference | None = georeference or Georeference.of(env)
+    if reference is None:
+        raise VistrackError(f"--export = {paths[0]}: needs a georeference; give --origin LAT,LON (or origin: "
+                            "[lat, lon] in the scenario, or a map in longitude/latitude)")
+    for path in paths:
+        print(export_orbit_plan(path, plan, reference, **options))

@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import argparse
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 from ..scenario import Scenario, default_scenario_text
+from . import add_export_arguments, export_plan
 
 
 def register(subparsers: Any) -> None:
@@ -21,14 +23,16 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--cache", default=None,
                         help="folder caching visibility volumes between runs (about 4 MB per 1-degree VV); "
                              "a second run with the same inputs reads them instead of ray casting")
+    add_export_arguments(parser)
     parser.add_argument("--quiet", action="store_true", help="no progress output")
     parser.add_argument("--print-defaults", action="store_true",
                         help="print a complete scenario with every default and exit")
     parser.set_defaults(func=main)
 
 
-def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool) -> int:
-    """Shared by ``run`` and ``demo``: run, then print the headline numbers and the report path."""
+def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool, export: Sequence[str] = ()) -> int:
+    """Shared by ``run`` and ``demo``: run, then print the headline numbers and the report path
+    (and write the --export files)."""
     from ..pipeline import run
     from ..report import percent
 
@@ -43,7 +47,12 @@ def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool) 
     cache = m.get("volume_cache")
     if cache:
         print(f"visibility-volume cache {cache['folder']}: {cache['hits']} read, {cache['misses']} computed")
+    if result.env.origin is not None and scenario.origin is None:
+        lat, lon, _ = result.env.origin
+        print(f"map in longitude/latitude, projected about its centre: origin = [{lat:.7f}, {lon:.7f}]")
     print(f"report: {out / 'report.md'}")
+    export_plan(export, result.plan, scenario.origin, result.env, direction=scenario.control.direction,
+                simulation=result.simulation)
     return 0
 
 
@@ -54,5 +63,7 @@ def main(args: argparse.Namespace) -> int:
     if not args.scenario:
         raise SystemExit("vistrack run: error: a scenario file is required (or --print-defaults)")
     scenario = Scenario.load(args.scenario)
+    if args.origin is not None:
+        scenario.origin = args.origin
     out = Path(args.out) if args.out else Path("vistrack-out") / scenario.name
-    return run_scenario(scenario, out, args.cache, args.quiet)
+    return run_scenario(scenario, out, args.cache, args.quiet, args.export)
