@@ -159,7 +159,8 @@ class Mission:
 
             text = json.dumps(mission_geojson(self), indent=1, allow_nan=False) + "\n"
         else:
-            raise fail("path", str(path), "unknown mission format; the suffix must be one of " + ", ".join(MISSION_SUFFIXES))
+            raise fail("path", str(path),
+                       "unknown mission format; the suffix must be one of " + ", ".join(MISSION_SUFFIXES))
         try:
             path.write_text(text, encoding="utf-8")
         except OSError as error:
@@ -263,7 +264,8 @@ def load(path: str | Path) -> Mission:
     try:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as error:
-        raise fail("path", str(path), f"cannot read the mission file ({getattr(error, 'strerror', None) or error})") from None
+        reason = getattr(error, "strerror", None) or error
+        raise fail("path", str(path), f"cannot read the mission file ({reason})") from None
     return _plan_from_json(text, str(path)) if suffix == ".plan" else _mission_from_waypoints(text, str(path))
 
 
@@ -515,7 +517,8 @@ class MissionBuilder:
         else:
             self._located(Command.NAV_LOITER_UNLIM, c, altitude, (0.0, 0.0, signed, 0.0), "center")
         if exit is not None:
-            start = _point("entry", entry) if entry is not None else tangent_entry(_point("exit", exit), c, radius, direction)
+            start = (_point("entry", entry) if entry is not None
+                     else tangent_entry(_point("exit", exit), c, radius, direction))
             self.arc(c, radius, start, exit, direction, altitude, max_step_deg)
         return self
 

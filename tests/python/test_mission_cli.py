@@ -20,7 +20,8 @@ CHARLOTTE = Georeference(35.2249, -80.8403)
 def test_orbits_export_plan_waypoints_geojson(charlotte, tmp_path, capsys) -> None:
     mavwp = pytest.importorskip("pymavlink.mavwp")
     files = [tmp_path / "route.plan", tmp_path / "route.waypoints", tmp_path / "route.geojson"]
-    args = ["orbits", "--map", str(charlotte / "buildings.geojson"), "--path", str(charlotte / "paths" / "paper_slow.csv"),
+    args = ["orbits", "--map", str(charlotte / "buildings.geojson"),
+            "--path", str(charlotte / "paths" / "paper_slow.csv"),
             "--out", str(tmp_path / "out"), "--quiet", "--origin", "35.2249,-80.8403", "--direction", "cw"]
     for file in files:
         args += ["--export", str(file)]
@@ -69,7 +70,7 @@ def test_export_errors_are_one_line(tmp_path, capsys) -> None:
             "--quiet", "--export", str(tmp_path / "r.plan")]
     assert main(args) == 2
     assert "--export = " in capsys.readouterr().err and not (tmp_path / "r.plan").exists()
-    assert main(args[:-1] + [str(tmp_path / "r.kml"), "--origin", "35,-80"]) == 2
+    assert main([*args[:-1], str(tmp_path / "r.kml"), "--origin", "35,-80"]) == 2
     assert "--export = " in capsys.readouterr().err
     assert main(["run", "x.yaml", "--origin", "95,0"]) == 2  # argparse's usage error
     assert "--origin[0] = 95.0: must be in [-90, 90] degrees" in capsys.readouterr().err

@@ -5,9 +5,16 @@ from __future__ import annotations
 
 import argparse
 import math
-from typing import Callable
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any, Callable
 
 import numpy as np
+
+from .._core import VistrackError
+from ..mission import Georeference, export_orbit_plan
+
+if TYPE_CHECKING:
+    from .._core import Environment, OrbitPlan
 
 
 def positive_numbers(flag: str, example: str) -> Callable[[str], list[float]]:
@@ -63,14 +70,14 @@ def configuration(flag: str) -> Callable[[str], np.ndarray]:
 def add_export_arguments(parser: argparse.ArgumentParser, direction: bool = False) -> None:
     """--export FILE (repeatable) and --origin LAT,LON[,ALT] for commands that plan a route (and
     --direction, the circulation written, where no scenario gives it)."""
-    from ..mission import Georeference
 
     def origin(text: str) -> Georeference:
         try:
             return Georeference.from_value([float(v) for v in text.split(",")], "--origin")
         except ValueError as error:  # VistrackError is a ValueError; float() raises one too
             raise argparse.ArgumentTypeError(str(error) if "--origin" in str(error) else
-                                             f"--origin = {text}: need LAT,LON or LAT,LON,ALT in degrees and metres")
+                                             f"--origin = {text}: need LAT,LON or LAT,LON,ALT in degrees and metres"
+                                             ) from None
 
     parser.add_argument("--export", action="append", default=[], metavar="FILE",
                         help="also write the route for an autopilot or a map, by suffix: .plan (QGroundControl), "
@@ -83,15 +90,13 @@ def add_export_arguments(parser: argparse.ArgumentParser, direction: bool = Fals
         parser.add_argument("--direction", default="ccw", choices=["ccw", "cw"], help="orbit direction for --export")
 
 
-def export_plan(paths, plan, georeference, env, **options) -> None:
+def export_plan(paths: Sequence[str], plan: OrbitPlan, georeference: Georeference | None, env: Environment | None,
+                **options: Any) -> None:
     """Write each --export file (vistrack.mission.export_orbit_plan) and print what was written;
     the georeference is --origin / the scenario's, else the map's (env.origin)."""
-    from .. import VistrackError
-    from ..mission import Georeference, export_orbit_plan
-
     if not paths:
         return
-    reference: Georeference | None = georeference or Georeference.of(env)
+    reference = georeference or Georeference.of(env)
     if reference is None:
         raise VistrackError(f"--export = {paths[0]}: needs a georeference; give --origin LAT,LON (or origin: "
                             "[lat, lon] in the scenario, or a map in longitude/latitude)")
