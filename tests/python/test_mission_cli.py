@@ -83,3 +83,19 @@ def test_lonlat_map_example(charlotte, tmp_path, capsys) -> None:
     printed = capsys.readouterr().out
     assert "167 buildings" in printed and "origin = (35.22" in printed
     assert vt.mission.load(tmp_path / "route.waypoints").items == vt.mission.load(tmp_path / "route.plan").items
+
+
+def test_export_mission_helper_for_planners(tmp_path, capsys) -> None:
+    """What `vistrack loiter|waypoints|follow --export` call: a to_mission built with --origin."""
+    from vistrack.commands import export_mission
+    from vistrack.mission import MissionBuilder
+
+    def build(ref: Georeference) -> vt.mission.Mission:
+        return MissionBuilder(ref, 60.0, speed=12.0).waypoints([[0, 0], [100, 50]]).return_to_launch().build()
+
+    export_mission([str(tmp_path / "r.plan"), str(tmp_path / "r.waypoints")], build, CHARLOTTE)
+    assert capsys.readouterr().out.count("4 mission items") == 2
+    assert vt.mission.load(tmp_path / "r.plan").items == vt.mission.load(tmp_path / "r.waypoints").items
+    export_mission([], build, None)  # nothing asked, nothing needed
+    with pytest.raises(vt.VistrackError, match=r"--export = .*needs a georeference"):
+        export_mission([str(tmp_path / "x.plan")], build, None)

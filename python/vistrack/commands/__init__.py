@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any, Callable
 import numpy as np
 
 from .._core import VistrackError
-from ..mission import Georeference, export_orbit_plan
+from ..mission import Georeference, Mission, export_orbit_plan
 
 if TYPE_CHECKING:
     from .._core import Environment, OrbitPlan
@@ -90,15 +90,31 @@ def add_export_arguments(parser: argparse.ArgumentParser, direction: bool = Fals
         parser.add_argument("--direction", default="ccw", choices=["ccw", "cw"], help="orbit direction for --export")
 
 
-def export_plan(paths: Sequence[str], plan: OrbitPlan, georeference: Georeference | None, env: Environment | None,
-                **options: Any) -> None:
-    """Write each --export file (vistrack.mission.export_orbit_plan) and print what was written;
-    the georeference is --origin / the scenario's, else the map's (env.origin)."""
-    if not paths:
-        return
+def export_georeference(paths: Sequence[str], georeference: Georeference | None,
+                        env: Environment | None = None) -> Georeference:
+    """The georeference for --export: --origin / the scenario's, else the map's (env.origin)."""
     reference = georeference or Georeference.of(env)
     if reference is None:
         raise VistrackError(f"--export = {paths[0]}: needs a georeference; give --origin LAT,LON (or origin: "
                             "[lat, lon] in the scenario, or a map in longitude/latitude)")
-    for path in paths:
-        print(export_orbit_plan(path, plan, reference, **options))
+    return reference
+
+
+def export_plan(paths: Sequence[str], plan: OrbitPlan, georeference: Georeference | None, env: Environment | None,
+                **options: Any) -> None:
+    """Write each --export file of an orbit plan (vistrack.mission.export_orbit_plan) and print
+    what was written."""
+    if paths:
+        reference = export_georeference(paths, georeference, env)
+        for path in paths:
+            print(export_orbit_plan(path, plan, reference, **options))
+
+
+def export_mission(paths: Sequence[str], build: Callable[[Georeference], Mission], georeference: Georeference | None,
+                   env: Environment | None = None) -> None:
+    """--export for any planner: ``build(georeference)`` (its ``to_mission``) saved to each file
+    by suffix (.plan, .waypoints, .txt, .geojson); prints what was written."""
+    if paths:
+        mission = build(export_georeference(paths, georeference, env))
+        for path in paths:
+            print(f"wrote {mission.save(path)}: {len(mission)} mission items")
