@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 import math
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any, Callable
+from typing import TYPE_CHECKING, Any, Callable, Optional
 
 import numpy as np
 
@@ -15,6 +15,7 @@ from ..mission import Georeference, Mission, export_orbit_plan
 
 if TYPE_CHECKING:
     from .._core import Environment, OrbitPlan
+    from ..scenario import ReportOptions
 
 
 def positive_numbers(flag: str, example: str) -> Callable[[str], list[float]]:
@@ -118,3 +119,33 @@ def export_mission(paths: Sequence[str], build: Callable[[Georeference], Mission
         mission = build(export_georeference(paths, georeference, env))
         for path in paths:
             print(f"wrote {mission.save(path)}: {len(mission)} mission items")
+
+
+def add_report_arguments(parser: Any) -> None:
+    """The options of a report folder's animation and interactive page (``run``, ``demo`` and any
+    command writing trajectory.gif / report.html); read them back with :func:`report_options`."""
+    parser.add_argument("--no-animation", action="store_true", help="do not write trajectory.gif")
+    parser.add_argument("--no-html", action="store_true", help="do not write the interactive report.html")
+    parser.add_argument("--frames", type=int, default=None,
+                        help="frames of trajectory.gif (default: the scenario's report.frames, else 60)")
+    parser.add_argument("--duration", type=float, default=None,
+                        help="seconds trajectory.gif lasts (default: the scenario's report.duration, else 8)")
+
+
+def report_options(args: argparse.Namespace, base: Optional[ReportOptions] = None) -> ReportOptions:
+    """``base`` (a scenario's report section, or the defaults) overridden by the command line,
+    validated; errors name the option (``--frames = 1: ...``)."""
+    from ..scenario import ReportOptions
+
+    options = base if base is not None else ReportOptions()
+    options.animation = options.animation and not args.no_animation
+    options.html = options.html and not args.no_html
+    if args.frames is not None:
+        options.frames = args.frames
+    if args.duration is not None:
+        options.duration = args.duration
+    try:
+        options.validate()
+    except VistrackError as error:
+        raise VistrackError(str(error).replace("report.", "--", 1)) from None
+    return options

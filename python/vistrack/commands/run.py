@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from ..scenario import Scenario, default_scenario_text
-from . import add_export_arguments, export_plan
+from . import add_export_arguments, add_report_arguments, export_plan, report_options
 
 
 def register(subparsers: Any) -> None:
@@ -16,8 +16,8 @@ def register(subparsers: Any) -> None:
         "run", help="run a scenario file end to end and write a report folder",
         description="Environment, POI path, adaptive visibility volumes, orbit plan (Algorithm 1), "
                     "closed-loop simulation with line-of-sight evaluation and constant-radius "
-                    "baselines; writes report.md with figures, metrics.json, plan.json, "
-                    "trajectory.csv and VV meshes into --out.")
+                    "baselines; writes report.md with figures, the interactive report.html (3D), "
+                    "trajectory.gif, metrics.json, plan.json, trajectory.csv and VV meshes into --out.")
     parser.add_argument("scenario", nargs="?", help="scenario YAML file (see --print-defaults)")
     parser.add_argument("--out", default=None, help="report folder (default: ./vistrack-out/<scenario name>)")
     parser.add_argument("--cache", default=None,
@@ -27,6 +27,7 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--quiet", action="store_true", help="no progress output")
     parser.add_argument("--print-defaults", action="store_true",
                         help="print a complete scenario with every default and exit")
+    add_report_arguments(parser)
     parser.set_defaults(func=main)
 
 
@@ -51,6 +52,8 @@ def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool, 
         lat, lon, _ = result.env.origin
         print(f"map in longitude/latitude, projected about its centre: origin = [{lat:.7f}, {lon:.7f}]")
     print(f"report: {out / 'report.md'}")
+    for name, made in m.get("report_files", {}).items():
+        print(f"  {name}: {made['bytes'] / 1e6:.1f} MB")
     export_plan(export, result.plan, scenario.origin, result.env, direction=scenario.control.direction,
                 simulation=result.simulation)
     return 0
@@ -65,5 +68,6 @@ def main(args: argparse.Namespace) -> int:
     scenario = Scenario.load(args.scenario)
     if args.origin is not None:
         scenario.origin = args.origin
+    scenario.report = report_options(args, scenario.report)
     out = Path(args.out) if args.out else Path("vistrack-out") / scenario.name
     return run_scenario(scenario, out, args.cache, args.quiet, args.export)
