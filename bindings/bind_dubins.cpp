@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "vistrack/dubins.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace py = pybind11;
 
@@ -148,12 +149,7 @@ void bind_dubins(py::module_& parent) {
       "shortest_length",
       [](const Triple& q0, const Triple& q1, double rho) {
         const Configuration a = to_configuration(q0), b = to_configuration(q1);
-        for (const auto& [q, name] : {std::pair<const Configuration&, const char*>{q0, "q0"}, {q1, "q1"}}) {
-          require_finite(q.x, std::string(name) + ".x");
-          require_finite(q.y, std::string(name) + ".y");
-          require_finite(q.psi, std::string(name) + ".psi");
-        }
-        require_positive(rho, "rho");
+        validate_dubins_problem(a, b, rho);
         return dubins_shortest_length(a, b, rho);
       },
       py::arg("q0"), py::arg("q1"), py::arg("rho"),
@@ -212,6 +208,7 @@ void bind_dubins(py::module_& parent) {
          Circulation direction, bool csc_only) {
         const TargetCircle circle = make_circle(center, radius, direction);
         const Configuration start = to_configuration(q0);
+        for (std::size_t k = 0; k < angles.size(); ++k) require_angle(angles[k], "angles[" + std::to_string(k) + "]");
         std::vector<double> out(angles.size());
         {
           py::gil_scoped_release release;
@@ -229,7 +226,9 @@ void bind_dubins(py::module_& parent) {
   m.def(
       "four_rho_condition",
       [](const Vec2& p, double rho, const Vec2& center, double radius) {
-        require_positive(rho, "rho");
+        require_length(rho, "rho");
+        require_coordinate(p.x(), "p[0]");
+        require_coordinate(p.y(), "p[1]");
         return four_rho_condition(p, rho, make_circle(center, radius, Circulation::Clockwise));
       },
       py::arg("p"), py::arg("rho"), py::arg("center"), py::arg("radius"),

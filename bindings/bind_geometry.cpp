@@ -4,6 +4,7 @@
 #include "bindings.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/geometry.hpp"
+#include "vistrack/limits.hpp"
 
 namespace py = pybind11;
 
@@ -14,14 +15,22 @@ Ring ring_from_array(const Points2& points, const std::string& field) {
   ring.reserve(static_cast<std::size_t>(points.rows()));
   for (Eigen::Index i = 0; i < points.rows(); ++i) {
     const Vec2 p = points.row(i).transpose();
-    require_finite(p.x(), field + "[" + std::to_string(i) + "][0]");
-    require_finite(p.y(), field + "[" + std::to_string(i) + "][1]");
+    require_coordinate(p.x(), field + "[" + std::to_string(i) + "][0]");
+    require_coordinate(p.y(), field + "[" + std::to_string(i) + "][1]");
     ring.push_back(p);
   }
   // A closing repeat of the first point is common in files; the ring stores it once.
   if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
   return ring;
 }
+
+namespace {
+const Vec2& checked_point(const Vec2& point) {
+  require_coordinate(point.x(), "point[0]");
+  require_coordinate(point.y(), "point[1]");
+  return point;
+}
+}  // namespace
 
 Points2 ring_to_array(const Ring& ring) {
   Points2 points(static_cast<Eigen::Index>(ring.size()), 2);
@@ -50,17 +59,31 @@ void bind_geometry(py::module_& m) {
           },
           "Holes, each (m, 2).")
       .def_property_readonly("area", [](const Polygon& p) { return area(p); }, "Area minus holes, m^2.")
-      .def("contains", [](const Polygon& p, const Vec2& point) { return contains(p, point); },
+      .def("contains", [](const Polygon& p, const Vec2& point) { return contains(p, checked_point(point)); },
            py::arg("point"), "Even-odd containment; boundary points count as inside.")
       .def("distance_to_boundary",
-           [](const Polygon& p, const Vec2& point) { return distance_to_boundary(p, point); },
+           [](const Polygon& p, const Vec2& point) { return distance_to_boundary(p, checked_point(point)); },
            py::arg("point"), "Distance from a point to the nearest edge of any ring.")
       .def("__repr__", [](const Polygon& p) {
         return "Polygon(" + std::to_string(p.outer.size()) + " vertices, " +
                std::to_string(p.holes.size()) + " holes)";
       });
 
-  m.def("wrap_to_pi", &wrap_to_pi, py::arg("angle"), "Angle wrapped to (-pi, pi].");
+  m.def("wrap_to_pi", &wrap_to_pi, py::arg("angle"), "Angle wrapped to (-pi, pi]; VistrackError when not finite.");
+
+  py::module_ ranges = m.def_submodule(
+      "limits",
+      "The valid range of every numeric input (vistrack/limits.hpp; README, Hardening): coordinates "
+      "|v| <= MAX_COORDINATE m, lengths in [MIN_LENGTH, MAX_LENGTH] m, speeds in [MIN_SPEED, MAX_SPEED] m/s, "
+      "angles |a| <= MAX_ANGLE rad, volumes in (0, MAX_VOLUME] m^3, threads in [0, MAX_THREADS].");
+  ranges.attr("MAX_COORDINATE") = limits::kMaxCoordinate;
+  ranges.attr("MIN_LENGTH") = limits::kMinLength;
+  ranges.attr("MAX_LENGTH") = limits::kMaxLength;
+  ranges.attr("MIN_SPEED") = limits::kMinSpeed;
+  ranges.attr("MAX_SPEED") = limits::kMaxSpeed;
+  ranges.attr("MAX_ANGLE") = limits::kMaxAngle;
+  ranges.attr("MAX_VOLUME") = limits::kMaxVolume;
+  ranges.attr("MAX_THREADS") = limits::kMaxThreads;
 }
 
 }  // namespace vistrack::bindings

@@ -3,17 +3,41 @@
 
 #include "bindings.hpp"
 #include "vistrack/guidance.hpp"
+#include "vistrack/limits.hpp"
 
 namespace py = pybind11;
 
 namespace vistrack::bindings {
+
+namespace {
+
+// The guidance functions trust their arguments (they run inside the integrator): check here.
+const OrbitState& checked(const OrbitState& orbit) {
+  orbit.validate();
+  return orbit;
+}
+const GuidanceGains& checked(const GuidanceGains& gains) {
+  gains.validate();
+  return gains;
+}
+Vec2 checked_xy(const Vec2& xy, const std::string& field) {
+  require_coordinate(xy.x(), field + "[0]");
+  require_coordinate(xy.y(), field + "[1]");
+  return xy;
+}
+double checked_angle(double angle, const std::string& field) {
+  require_angle(angle, field);
+  return angle;
+}
+
+}  // namespace
 
 void bind_guidance(py::module_& m) {
   py::class_<OrbitState>(m, "OrbitState",
                          "The reference orbit at one instant (Definitions 1-2): centre g, its velocity "
                          "g_dot, radius R and dR/dt.")
       .def(py::init([](const Vec2& center, const Vec2& center_velocity, double radius, double radius_rate) {
-             return OrbitState{center, center_velocity, radius, radius_rate};
+             return make_validated(OrbitState{center, center_velocity, radius, radius_rate});
            }),
            py::kw_only(), py::arg("center") = Vec2(0.0, 0.0), py::arg("center_velocity") = Vec2(0.0, 0.0),
            py::arg("radius") = 1.0, py::arg("radius_rate") = 0.0,
@@ -21,7 +45,8 @@ void bind_guidance(py::module_& m) {
       .def_readwrite("center", &OrbitState::center, "g, (2,)")
       .def_readwrite("center_velocity", &OrbitState::center_velocity, "g_dot, (2,)")
       .def_readwrite("radius", &OrbitState::radius, "R, m")
-      .def_readwrite("radius_rate", &OrbitState::radius_rate, "dR/dt, m/s");
+      .def_readwrite("radius_rate", &OrbitState::radius_rate, "dR/dt, m/s")
+      .def("validate", &OrbitState::validate, "Raise VistrackError naming the first field out of range.");
 
   const GuidanceGains defaults;
   py::class_<GuidanceGains>(m, "GuidanceGains",
@@ -66,17 +91,31 @@ void bind_guidance(py::module_& m) {
       .def_readonly("command", &Steering::command, "u_psi clamped to +-max_turn_rate, rad/s")
       .def_readonly("saturated", &Steering::saturated, "whether the clamp was active");
 
-  m.def("vector_field", &vector_field, py::arg("xi"), py::arg("orbit"), py::arg("gains"),
-        py::arg("heading_hint") = 0.0,
+  m.def(
+      "vector_field",
+      [](const Vec2& xi, const OrbitState& orbit, const GuidanceGains& gains, double heading_hint) {
+        return vector_field(checked_xy(xi, "xi"), checked(orbit), checked(gains),
+                            checked_angle(heading_hint, "heading_hint"));
+      },
+      py::arg("xi"), py::arg("orbit"), py::arg("gains"), py::arg("heading_hint") = 0.0,
         "The constant-speed guidance vector field (74) at position xi (2,): desired heading (77) "
         "and its rate along the field (85). heading_hint orients the frame at the exact centre.");
-  m.def("steering", &steering, py::arg("q"), py::arg("orbit"), py::arg("gains"),
+  m.def(
+      "steering",
+      [](const Vec3& q, const OrbitState& orbit, const GuidanceGains& gains) {
+        checked_xy(q.head<2>(), "q");
+        checked_angle(q.z(), "q[2]");
+        return steering(q, checked(orbit), checked(gains));
+      },
+      py::arg("q"), py::arg("orbit"), py::arg("gains"),
         "The steering law (86) at configuration q = (x, y, psi), clamped to +-max_turn_rate (2).");
   m.def(
       "sample_vector_field",
       [](const Points2& points, const OrbitState& orbit, const GuidanceGains& gains) {
         gains.validate();
+        orbit.validate();
         const Eigen::Index n = points.rows();
+        for (Eigen::Index i = 0; i < n; ++i) checked_xy(points.row(i).transpose(), "points[" + std::to_string(i) + "]");
         Points2 u(n, 2);
         Eigen::VectorXd heading(n), rate(n);
         {
@@ -92,19 +131,47 @@ void bind_guidance(py::module_& m) {
       },
       py::arg("points"), py::arg("orbit"), py::arg("gains"),
       "The field at many points (n, 2): returns (u (n, 2), psi_d (n,), dpsi_d/dt (n,)).");
-  m.def("lyapunov_term", &lyapunov_term, py::arg("field"), py::arg("orbit"), py::arg("beta"),
-        py::arg("heading_error"), "u_lyap of (86) for the field at the UAV and heading error psi - psi_d.");
-  m.def("radial_error_rate", &radial_error_rate, py::arg("field"), py::arg("orbit"), py::arg("heading_error"),
+  m.def(
+      "lyapunov_term",
+      [](const VectorField& field, const OrbitState& orbit, double beta, double heading_error) {
+        require_in_range(beta, 1e-9, 1e3, "1/m", "beta");
+        return lyapunov_term(field, checked(orbit), beta, checked_angle(heading_error, "heading_error"));
+      },
+      py::arg("field"), py::arg("orbit"), py::arg("beta"), py::arg("heading_error"), "u_lyap of (86) for the field at the UAV and heading error psi - psi_d.");
+  m.def(
+      "radial_error_rate",
+      [](const VectorField& field, const OrbitState& orbit, double heading_error) {
+        return radial_error_rate(field, checked(orbit), checked_angle(heading_error, "heading_error"));
+      },
+      py::arg("field"), py::arg("orbit"), py::arg("heading_error"),
         "d(r - R)/dt of (93) for the Dubins vehicle with the given heading error.");
-  m.def("one_minus_cos_over_x", &one_minus_cos_over_x, py::arg("x"), "(1 - cos x) / x, 0 at x = 0, accurate near 0.");
-  m.def("sinc", &sinc, py::arg("x"), "sin(x) / x, 1 at x = 0, accurate near 0.");
-  m.def("orbit_polar_rate", &orbit_polar_rate, py::arg("theta"), py::arg("orbit"), py::arg("speed"),
+  m.def("one_minus_cos_over_x", [](double x) { return one_minus_cos_over_x(checked_angle(x, "x")); }, py::arg("x"), "(1 - cos x) / x, 0 at x = 0, accurate near 0.");
+  m.def("sinc", [](double x) { return sinc(checked_angle(x, "x")); }, py::arg("x"), "sin(x) / x, 1 at x = 0, accurate near 0.");
+  m.def(
+      "orbit_polar_rate",
+      [](double theta, const OrbitState& orbit, double speed, Circulation direction) {
+        require_speed(speed, "speed");
+        return orbit_polar_rate(checked_angle(theta, "theta"), checked(orbit), speed, direction);
+      },
+      py::arg("theta"), py::arg("orbit"), py::arg("speed"),
         py::arg("direction") = Circulation::CounterClockwise, "theta_dot of (13) for a vehicle remaining on the orbit.");
-  m.def("orbit_signed_curvature", &orbit_signed_curvature, py::arg("theta"), py::arg("orbit"), py::arg("speed"),
+  m.def(
+      "orbit_signed_curvature",
+      [](double theta, const OrbitState& orbit, double speed, Circulation direction) {
+        require_speed(speed, "speed");
+        return orbit_signed_curvature(checked_angle(theta, "theta"), checked(orbit), speed, direction);
+      },
+      py::arg("theta"), py::arg("orbit"), py::arg("speed"),
         py::arg("direction") = Circulation::CounterClockwise,
         "Signed path curvature (31) of a vehicle remaining on the orbit at polar angle theta "
         "(Theorem 1: steering with v * this keeps it there).");
-  m.def("orbit_configuration", &orbit_configuration, py::arg("theta0"), py::arg("orbit"), py::arg("speed"),
+  m.def(
+      "orbit_configuration",
+      [](double theta0, const OrbitState& orbit, double speed, Circulation direction) {
+        require_speed(speed, "speed");
+        return orbit_configuration(checked_angle(theta0, "theta0"), checked(orbit), speed, direction);
+      },
+      py::arg("theta0"), py::arg("orbit"), py::arg("speed"),
         py::arg("direction") = Circulation::CounterClockwise, "Initial configuration (x, y, psi) on the orbit, (38)-(40).");
   m.def("lemma6_curvature_bound", &lemma6_curvature_bound, py::arg("radius"), py::arg("speed"),
         py::arg("poi_speed"), "(v_g + v)^2 / (R v^2), the maximum curvature on an orbit (Lemma 6).");

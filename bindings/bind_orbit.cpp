@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "vistrack/error.hpp"
 #include "vistrack/orbit.hpp"
 #include "vistrack/visibility.hpp"
 #include "vistrack/volume.hpp"
@@ -61,6 +62,30 @@ void bind_orbit(py::module_& m) {
         "Lemma 6: (1 + v_g/v)^2 / R, the largest curvature (31) over angles and admissible dR/dt.");
   m.def("min_feasible_radius", &min_feasible_radius, py::arg("uav"), py::arg("poi_speed"),
         "r_min (1 + v_g/v)^2: the smallest orbit radius Lemma 6 allows (at most 4 r_min, Corollary 1).");
+
+  py::class_<WorkEstimate>(m, "WorkEstimate", "The work a plan may ask for, known before any VV is computed.")
+      .def_readonly("volumes", &WorkEstimate::volumes, "Worst-case number of VVs (every interval halved).")
+      .def_readonly("bytes_per_volume", &WorkEstimate::bytes_per_volume, "Memory of one VV (bytes).")
+      .def_property_readonly("bytes", &WorkEstimate::bytes, "Memory of all of them (bytes).")
+      .def("__repr__", [](const WorkEstimate& w) {
+        return "WorkEstimate(volumes=" + detail::to_text(w.volumes) + ", bytes=" + detail::to_text(w.bytes()) + ")";
+      });
+  m.def("volume_bytes", &volume_bytes, py::arg("resolution_deg"),
+        "Memory of one VV on a grid of resolution_deg degrees (bytes; ~4.7 MB at 1 degree).");
+  m.def(
+      "check_work",
+      [](const PoiPath& poi, const Planning& planning) {
+        const WorkEstimate work = estimate_work(poi, planning);
+        check_work(work, planning.max_volumes);
+        return work;
+      },
+      py::arg("poi"), py::arg("planning"),
+      "estimate_work, and VistrackError naming planning.max_volumes when the worst case exceeds it (what "
+      "the planner does before computing any VV); returns the estimate.");
+  m.def("estimate_work", &estimate_work, py::arg("poi"), py::arg("planning"),
+        "Worst case of plan_orbits / OrbitPlanner.plan on this path: VVs (every initial interval halved down "
+        "to min_spacing or max_depth) and their memory; the planner refuses a worst case beyond "
+        "planning.max_volumes before computing any VV.");
 
   py::class_<CircularOrbits>(m, "CircularOrbits", "Result of Algorithm 1 on given MaxRadius values.")
       .def_readonly("radii", &CircularOrbits::radii, "R_k after the forward and backward rate passes (m).")
@@ -159,14 +184,16 @@ void bind_orbit(py::module_& m) {
           "progress(done, total) is called as VVs are computed.")
       .def(
           "fixed",
-          [](OrbitPlanner& p, const PoiPath& poi, double spacing, double resolution_deg, const py::object& progress) {
+          [](OrbitPlanner& p, const PoiPath& poi, double spacing, double resolution_deg, const py::object& progress,
+             std::size_t max_volumes) {
             const ProgressFunction report = progress_callback(progress);
             py::gil_scoped_release release;
-            return p.fixed(poi, spacing, resolution_deg, report);
+            return p.fixed(poi, spacing, resolution_deg, report, max_volumes);
           },
           py::arg("poi"), py::arg("spacing"), py::arg("resolution_deg") = Planning{}.resolution_deg,
-          py::arg("progress") = py::none(),
-          "VVs every `spacing` m from each edge start plus every node, and the metric between neighbours.")
+          py::arg("progress") = py::none(), py::arg("max_volumes") = Planning{}.max_volumes,
+          "VVs every `spacing` m from each edge start plus every node, and the metric between neighbours; "
+          "VistrackError before any work when that is more than max_volumes VVs.")
       .def(
           "plan",
           [](OrbitPlanner& p, const PoiPath& poi, const Uav& uav, const Planning& planning, const py::object& progress) {

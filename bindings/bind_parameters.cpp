@@ -54,8 +54,9 @@ void bind_parameters(py::module_& m) {
   const Planning planning_defaults;
   py::class_<Planning>(m, "Planning", "Adaptive placement of visibility volumes (section IV.B).")
       .def(py::init([](double spacing, double cutoff, double resolution_deg, double min_spacing,
-                       int max_depth, double rate_margin) {
-             return make_validated(Planning{spacing, cutoff, resolution_deg, min_spacing, max_depth, rate_margin});
+                       int max_depth, double rate_margin, std::size_t max_volumes) {
+             return make_validated(
+                 Planning{spacing, cutoff, resolution_deg, min_spacing, max_depth, rate_margin, max_volumes});
            }),
            py::kw_only(), py::arg("spacing") = planning_defaults.spacing,
            py::arg("cutoff") = planning_defaults.cutoff,
@@ -63,7 +64,9 @@ void bind_parameters(py::module_& m) {
            py::arg("min_spacing") = planning_defaults.min_spacing,
            py::arg("max_depth") = planning_defaults.max_depth,
            py::arg("rate_margin") = planning_defaults.rate_margin,
-           "spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin.")
+           py::arg("max_volumes") = planning_defaults.max_volumes,
+           "spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin, "
+           "max_volumes (the largest worst-case VV count a plan may ask for).")
       .def_readwrite("spacing", &Planning::spacing, "initial spacing of VVs along the path, m")
       .def_readwrite("cutoff", &Planning::cutoff, "d_cutoff, m^3")
       .def_readwrite("resolution_deg", &Planning::resolution_deg, "VV ray grid step, degrees")
@@ -71,6 +74,9 @@ void bind_parameters(py::module_& m) {
       .def_readwrite("max_depth", &Planning::max_depth, "most halvings of one initial interval")
       .def_readwrite("rate_margin", &Planning::rate_margin,
                      "Algorithm 1 keeps |dR/dt| <= (1 - rate_margin)(v - v_g); 0 = Lemma 5's limit (the paper)")
+      .def_readwrite("max_volumes", &Planning::max_volumes,
+                     "refuse, before computing any VV, a plan that may need more VVs than this (worst case: "
+                     "about path length / min_spacing, ~4.7 MB each at 1 degree)")
       .def("validate", &Planning::validate, "Raise VistrackError naming the first invalid field.");
 
   const Control control_defaults;

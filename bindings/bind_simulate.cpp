@@ -19,13 +19,25 @@ py::array_t<double> to_numpy(const std::vector<double>& values) {
   return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
 }
 
-// A Python callable line_of_sight(from (n, 3), to (n, 3)) -> bool array (n,), called with the GIL.
+// A Python callable line_of_sight(from (n, 3), to (n, 3)) -> array (n,) of bools (or 0/1), called
+// with the GIL. Anything else (NaN, 0.5, a string) is an Error naming the sample: a cast to bool
+// would count NaN as visible.
 LineOfSight python_line_of_sight(py::function function) {
   return [function](const Points3& from, const Points3& to) {
     py::gil_scoped_acquire acquire;
-    const auto answer = function(from, to).cast<py::array_t<bool, py::array::c_style | py::array::forcecast>>();
+    py::array_t<double, py::array::c_style | py::array::forcecast> answer;
+    try {
+      answer = function(from, to).cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
+    } catch (const py::cast_error&) {
+      throw Error("line_of_sight: must return an array of bools (one per sample)");
+    }
     std::vector<std::uint8_t> out(static_cast<std::size_t>(answer.size()));
-    for (py::ssize_t i = 0; i < answer.size(); ++i) out[static_cast<std::size_t>(i)] = answer.data()[i] ? 1 : 0;
+    for (py::ssize_t i = 0; i < answer.size(); ++i) {
+      const double value = answer.data()[i];
+      if (value != 0.0 && value != 1.0)
+        detail::fail_field("line_of_sight(...)[" + std::to_string(i) + "]", value, "must be True/False (or 1/0)");
+      out[static_cast<std::size_t>(i)] = value == 1.0 ? 1 : 0;
+    }
     return out;
   };
 }

@@ -30,6 +30,18 @@ py::array_t<bool> to_bool_array(const std::vector<bool>& values) {
 // str or os.PathLike (pathlib.Path) to a file name.
 std::string fspath(const py::object& path) { return py::module_::import("os").attr("fspath")(path).cast<std::string>(); }
 
+int checked_row(const DirectionGrid& grid, int row) {
+  if (row < 0 || row >= grid.num_elevation)
+    detail::fail_field("row", row, "must be a row index in [0, " + std::to_string(grid.num_elevation) + ")");
+  return row;
+}
+
+int checked_column(const DirectionGrid& grid, int column) {
+  if (column < 0 || column >= grid.num_azimuth)
+    detail::fail_field("column", column, "must be a column index in [0, " + std::to_string(grid.num_azimuth) + ")");
+  return column;
+}
+
 Vec3 as_point(const Eigen::VectorXd& g, const char* field) {
   if (g.size() != 3) throw Error(std::string(field) + " must have 3 coordinates (x, y, z), got " + std::to_string(g.size()));
   return g;
@@ -44,14 +56,25 @@ void bind_visibility(py::module_& m) {
                             "(sample_offset: staggered inside the cell, not its centre).")
       .def_readonly("num_elevation", &DirectionGrid::num_elevation)
       .def_readonly("num_azimuth", &DirectionGrid::num_azimuth)
-      .def("elevation", &DirectionGrid::elevation, py::arg("row"), "Centre elevation of row i (rad).")
-      .def("azimuth", &DirectionGrid::azimuth, py::arg("column"), "Centre azimuth of column j (rad, from +x).")
-      .def("solid_angle", &DirectionGrid::solid_angle, py::arg("row"), "Solid angle of each cell of row i (sr).")
-      .def("sample_offset", &DirectionGrid::sample_offset, py::arg("row"), py::arg("column"),
+      .def("elevation", [](const DirectionGrid& g, int row) { return g.elevation(checked_row(g, row)); },
+           py::arg("row"), "Centre elevation of row i (rad).")
+      .def("azimuth", [](const DirectionGrid& g, int column) { return g.azimuth(checked_column(g, column)); },
+           py::arg("column"), "Centre azimuth of column j (rad, from +x).")
+      .def("solid_angle", [](const DirectionGrid& g, int row) { return g.solid_angle(checked_row(g, row)); },
+           py::arg("row"), "Solid angle of each cell of row i (sr).")
+      .def("sample_offset",
+           [](const DirectionGrid& g, int row, int column) {
+             return g.sample_offset(checked_row(g, row), checked_column(g, column));
+           },
+           py::arg("row"), py::arg("column"),
            "(x, y) in [0, 1)^2: where the ray of cell (i, j) crosses it, as fractions of its azimuth span (x,\n"
            "by row) and of its sin(elevation) span (y, by column); Weyl sequences, equidistributed down\n"
            "every column and along every row.")
-      .def("direction", &DirectionGrid::direction, py::arg("row"), py::arg("column"),
+      .def("direction",
+           [](const DirectionGrid& g, int row, int column) {
+             return g.direction(checked_row(g, row), checked_column(g, column));
+           },
+           py::arg("row"), py::arg("column"),
            "Unit vector of the ray of cell (i, j), through its sample point.")
       .def_property_readonly("size", &DirectionGrid::size, "Number of cells.")
       .def_static("from_resolution", &DirectionGrid::from_resolution, py::arg("resolution_deg"),
@@ -152,11 +175,7 @@ void bind_visibility(py::module_& m) {
           py::arg("points"),
           "Where ground POIs stand: rows (x, y, h) of a POI path, h the height above the surface, "
           "become (x, y, surface_height(x, y) + h).")
-      .def("inside_obstacle",
-           [](const VisibilityScene& s, const Vec3& p) {
-             for (int k = 0; k < 3; ++k) require_finite(p[k], "point[" + std::to_string(k) + "]");
-             return s.inside_obstacle(p);
-           },
+      .def("inside_obstacle", [](const VisibilityScene& s, const Vec3& p) { return s.inside_obstacle(p); },
            py::arg("point"),
            "Whether a point lies inside an obstacle.");
 

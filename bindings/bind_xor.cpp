@@ -45,6 +45,8 @@ void bind_xor(py::module_& m) {
         options.time_limit = time_limit;
         options.perturbation = perturbation;
         options.check_self_intersection = check_self_intersection;
+        if (fa.rows() > 0) validate_triangle_mesh(va, fa, "a");  // no faces: the empty set
+        if (fb.rows() > 0) validate_triangle_mesh(vb, fb, "b");
         const TriangleMesh a{va, fa}, b{vb, fb};
         py::gil_scoped_release release;
         return mesh_xor_volume(a, b, options);

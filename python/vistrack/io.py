@@ -5,7 +5,8 @@
   (``vistrack.visibility_orbit_plan/1``) (:func:`read_plan`, :func:`write_plan`)
 - VV files: the binary ``vv-*.bin`` of the VV cache (:func:`volume_files`)
 - closed-loop trajectories: CSV (:func:`write_trajectory`)
-- JSON results (:func:`write_json`) and YAML mappings (:func:`read_yaml_mapping`)
+- JSON results (:func:`write_json`) and YAML (:func:`parse_yaml`, :func:`read_yaml_mapping`: a key given
+  twice in one mapping is an error, not the last one silently kept)
 - GeoJSON in WGS84 of trajectories, orbit plans and missions (:func:`trajectory_geojson`,
   :func:`orbit_plan_geojson`, :func:`mission_geojson`, :func:`write_geojson`)
 
@@ -29,7 +30,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "GEOJSON_SUFFIXES", "feature_collection", "footprint_environment", "line_feature", "load_environment",
-    "lon_lat", "mission_geojson", "orbit_plan_geojson", "point_feature", "read_plan", "read_text",
+    "lon_lat", "mission_geojson", "orbit_plan_geojson", "parse_yaml", "point_feature", "read_plan", "read_text",
     "read_yaml_mapping", "trajectory_geojson", "volume_files", "write_geojson", "write_json", "write_plan",
     "write_trajectory",
 ]
@@ -94,6 +95,8 @@ def read_plan(path: str | Path, key: str = "plan") -> AnyPlan:
         data = json.loads(text)
     except json.JSONDecodeError as error:
         raise VistrackError(f"{key} = {path}: not JSON ({error.msg} at line {error.lineno})") from None
+    except RecursionError:
+        raise VistrackError(f"{key} = {path}: not JSON (nested too deeply)") from None
     if isinstance(data, dict) and data.get("format") == "vistrack.visibility_orbit_plan/1":
         return VisibilityOrbitPlan.from_json(text)
     return OrbitPlan.from_json(text)
@@ -121,15 +124,42 @@ def write_json(data: Any, path: str | Path) -> Path:
     return file
 
 
-def read_yaml_mapping(path: str | Path, key: str) -> dict[str, Any]:
-    """A YAML file holding one mapping (empty file: empty mapping)."""
+def parse_yaml(text: str, key: str, path: str | Path) -> Any:
+    """The YAML document in ``text`` (read from ``path``) as plain data, through a safe loader that
+    refuses a key given twice in one mapping (PyYAML would keep the last one without a word);
+    VistrackError naming ``key``, the file and the line for anything that is not valid YAML."""
     import yaml
 
-    text = read_text(path, key)
+    class UniqueKeyLoader(yaml.SafeLoader):
+        def construct_mapping(self, node: yaml.MappingNode, deep: bool = False) -> dict[Any, Any]:
+            seen: set[Any] = set()
+            for key_node, _ in node.value:
+                if key_node.tag == "tag:yaml.org,2002:merge":
+                    continue  # "<<: *base" merges keys that the mapping may override
+                name = self.construct_object(key_node, deep=deep)
+                try:
+                    duplicated = name in seen
+                except TypeError:  # an unhashable key: SafeLoader reports it
+                    continue
+                if duplicated:
+                    raise yaml.constructor.ConstructorError(
+                        "while constructing a mapping", node.start_mark,
+                        f"found the key {name!r} twice (a YAML key is given once)", key_node.start_mark)
+                seen.add(name)
+            return super().construct_mapping(node, deep)
+
     try:
-        data = yaml.safe_load(text)
+        return yaml.load(text, Loader=UniqueKeyLoader)  # noqa: S506 (a SafeLoader)
     except yaml.YAMLError as error:
-        raise VistrackError(f"{key} = {path}: not valid YAML ({error})") from None
+        reason = " ".join(str(error).split())
+        raise VistrackError(f"{key} = {path}: not valid YAML ({reason})") from None
+    except RecursionError:
+        raise VistrackError(f"{key} = {path}: not valid YAML (nested too deeply)") from None
+
+
+def read_yaml_mapping(path: str | Path, key: str) -> dict[str, Any]:
+    """A YAML file holding one mapping (empty file: empty mapping)."""
+    data = parse_yaml(read_text(path, key), key, path)
     if data is None:
         return {}
     if not isinstance(data, dict):

@@ -74,7 +74,8 @@ def metric_along_path(planner: OrbitPlanner, poi: PoiPath, planning: Planning,
     results: dict[str, PathMetric] = {}
     for spacing in sorted(spacings):
         with Progress(f"VVs every {spacing:g} m", progress) as bar:
-            results[f"{spacing:g} m"] = planner.fixed(poi, spacing, planning.resolution_deg, bar)
+            results[f"{spacing:g} m"] = planner.fixed(poi, spacing, planning.resolution_deg, bar,
+                                                      max_volumes=planning.max_volumes)
     with Progress("adaptive VVs", progress) as bar:
         results["adaptive"] = planner.adaptive(poi, planning, bar)
     ordered = {f"{s:g} m": results[f"{s:g} m"] for s in spacings}

@@ -35,6 +35,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .georeference import Georeference, degrees, project_lon_lat
+from .io import read_text
 from .schema import fail, number
 
 if TYPE_CHECKING:
@@ -261,11 +262,7 @@ def load(path: str | Path) -> Mission:
     suffix = path.suffix.lower()
     if suffix not in (".plan", ".waypoints", ".txt"):
         raise fail("path", str(path), "unknown mission format; load reads .plan, .waypoints and .txt")
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as error:
-        reason = getattr(error, "strerror", None) or error
-        raise fail("path", str(path), f"cannot read the mission file ({reason})") from None
+    text = read_text(path, "path")
     return _plan_from_json(text, str(path)) if suffix == ".plan" else _mission_from_waypoints(text, str(path))
 
 
@@ -308,6 +305,8 @@ def _plan_from_json(text: str, source: str) -> Mission:
         document = json.loads(text)
     except json.JSONDecodeError as error:
         raise fail(source, f"line {error.lineno}", f"not valid JSON ({error.msg})") from None
+    except RecursionError:
+        raise fail(source, "JSON", "nested too deeply") from None
     if not isinstance(document, dict) or document.get("fileType") != "Plan":
         raise fail(f"{source}: fileType", document.get("fileType") if isinstance(document, dict) else document,
                    'must be "Plan" (a QGroundControl plan)')

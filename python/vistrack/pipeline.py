@@ -7,6 +7,7 @@ closed-loop simulation with line-of-sight evaluation (sections V-VI) -> constant
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 from pathlib import Path
@@ -24,6 +25,7 @@ from ._core import (
     VisibilityOrbitPlan,
     VisibilityScene,
     VistrackError,
+    check_work,
     constant_radius_plan,
     simulate,
 )
@@ -53,13 +55,15 @@ def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True
     stages = Stages(quiet)
     env = stages.run("environment", scenario.environment.load, scenario.origin)
     poi = stages.run("POI path", scenario.poi.build, env)
+    check_work(poi, scenario.planning)  # refuses a plan past planning.max_volumes before any VV
     planner: OrbitPlanner = stages.run(
         "visibility scene", OrbitPlanner, env, scenario.sensor, "" if cache_dir is None else str(cache_dir))
     plan: VisibilityOrbitPlan = stages.run("visibility volumes and orbits", planner.plan, poi, scenario.uav,
                                            scenario.planning, bar_unit="VV")
     metric_runs: dict[str, Any] = {}
     for spacing in METRIC_SPACINGS:
-        metric_runs[f"{spacing:g} m"] = stages.run(f"metric at {spacing:g} m spacing", planner.fixed, poi, spacing,
+        fixed = functools.partial(planner.fixed, max_volumes=scenario.planning.max_volumes)
+        metric_runs[f"{spacing:g} m"] = stages.run(f"metric at {spacing:g} m spacing", fixed, poi, spacing,
                                                    scenario.planning.resolution_deg, bar_unit="VV")
     metric_runs["adaptive"] = plan.discretization
     if min(plan.radii) <= 0.0:

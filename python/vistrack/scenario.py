@@ -30,12 +30,12 @@ from ._core import (
     Uav,
     VistrackError,
 )
-from .io import load_environment, read_text
+from .io import load_environment, parse_yaml, read_text
 from .mission import Georeference
 from .plotting.animation import DEFAULT_DURATION_S, DEFAULT_FRAMES
 from .plotting.interactive import DEFAULT_VOLUMES
 from .plotting.volumes import DEFAULT_VIEW
-from .schema import apply_checks, fail, integer, number, positive, resolve_path, section
+from .schema import apply_checks, coordinate, fail, integer, length, number, positive, resolve_path, section, speed
 
 __all__ = ["EnvironmentSpec", "PoiSpec", "ReportOptions", "Scenario", "default_scenario_text", "road_route"]
 
@@ -112,7 +112,7 @@ class ReportOptions:
 
     def validate(self) -> None:
         integer("report.frames", self.frames, 2, self.MAX_FRAMES)
-        positive("report.duration", self.duration)
+        number("report.duration", self.duration, low=0.0, high=3600.0, low_open=True)
         integer("report.volumes", self.volumes, 1, 100)
 
 
@@ -141,11 +141,7 @@ class Scenario:
     def load(cls, path: str | Path) -> "Scenario":
         """Read and validate a scenario YAML file; errors name the key, the value and the range."""
         path = Path(path)
-        text = read_text(path, "scenario")
-        try:
-            data = yaml.safe_load(text)
-        except yaml.YAMLError as error:
-            raise fail("scenario", str(path), f"not valid YAML ({error})") from None
+        data = parse_yaml(read_text(path, "scenario"), "scenario", path)
         scenario = cls.from_dict(data if data is not None else {}, base=path.parent)
         scenario.source = path
         if scenario.name == "scenario":
@@ -181,7 +177,8 @@ class Scenario:
         scenario.uav, scenario.start = _uav(section(data, "uav", {"speed", "min_turn_radius", "altitude", "start"}))
         scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(section(
-            data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin"}))
+            data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin",
+                               "max_volumes"}))
         scenario.control = _control(section(data, "control", {"beta", "k_psi", "direction"}))
         scenario.simulation = _simulation(section(
             data, "simulation", {"rtol", "atol", "max_step", "output_step"}))
@@ -222,7 +219,7 @@ class Scenario:
             "planning": {"spacing": self.planning.spacing, "cutoff": self.planning.cutoff,
                          "resolution_deg": self.planning.resolution_deg,
                          "min_spacing": self.planning.min_spacing, "max_depth": self.planning.max_depth,
-                         "rate_margin": self.planning.rate_margin},
+                         "rate_margin": self.planning.rate_margin, "max_volumes": self.planning.max_volumes},
             "control": {"beta": self.control.beta, "k_psi": self.control.k_psi,
                         "direction": self.control.direction},
             "simulation": {"rtol": self.simulation.rtol, "atol": self.simulation.atol,
@@ -259,7 +256,7 @@ def _environment(section: dict[str, Any], base: Path) -> EnvironmentSpec:
 def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     spec = PoiSpec()
     if "speed" in section:
-        spec.speed = number("poi.speed", section["speed"], low=0.0, low_open=True)
+        spec.speed = speed("poi.speed", section["speed"])
     sources = [key for key in ("path", "waypoints", "nodes", "route") if key in section]
     if len(sources) > 1:
         raise fail("poi", section, "give one of path: CSV, waypoints: [[x, y], ...], nodes: [...], "
@@ -279,7 +276,7 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
             if not isinstance(point, list) or len(point) not in sizes:
                 allowed = "must be [x, y] or [x, y, z]" if key == "waypoints" else "must be [x, y]"
                 raise fail(f"poi.{key}[{i}]", point, allowed)
-            points.append([number(f"poi.{key}[{i}][{k}]", c) for k, c in enumerate(point)])
+            points.append([coordinate(f"poi.{key}[{i}][{k}]", c) for k, c in enumerate(point)])
         setattr(spec, key, points)
     else:
         if not isinstance(value, list) or len(value) < 2:
@@ -289,37 +286,38 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
 
 
 def _uav(section: dict[str, Any]) -> tuple[Uav, tuple[float, float, float] | None]:
-    uav = apply_checks(Uav(), section, "uav", {"speed": positive, "min_turn_radius": positive,
-                                         "altitude": lambda k, v: number(k, v)})
+    uav = apply_checks(Uav(), section, "uav", {"speed": speed, "min_turn_radius": length, "altitude": coordinate})
     start = section.get("start")
     if start is not None:
         if not isinstance(start, list) or len(start) != 3:
             raise fail("uav.start", start, "must be [x, y, psi] (metres, metres, radians)")
-        start = tuple(number(f"uav.start[{i}]", c) for i, c in enumerate(start))
+        start = (coordinate("uav.start[0]", start[0]), coordinate("uav.start[1]", start[1]),
+                 number("uav.start[2]", start[2], low=-1e9, high=1e9))
     return uav, start
 
 
 def _sensor(section: dict[str, Any]) -> Sensor:
     sensor = Sensor()
     if "d_max" in section:
-        sensor.d_max = positive("sensor.d_max", section["d_max"])
+        sensor.d_max = length("sensor.d_max", section["d_max"])
     band = section.get("altitude_band")
     if band is not None:
         if not isinstance(band, list) or len(band) != 2:
             raise fail("sensor.altitude_band", band, "must be [h_lo, h_hi] in metres, or null")
-        sensor.altitude_band = (number("sensor.altitude_band[0]", band[0]),
-                                number("sensor.altitude_band[1]", band[1]))
+        sensor.altitude_band = (coordinate("sensor.altitude_band[0]", band[0]),
+                                coordinate("sensor.altitude_band[1]", band[1]))
     sensor.validate()
     return sensor
 
 
 def _planning(section: dict[str, Any]) -> Planning:
     return apply_checks(Planning(), section, "planning", {
-        "spacing": positive, "cutoff": positive,
+        "spacing": length, "cutoff": lambda k, v: number(k, v, low=0.0, high=1e21, low_open=True),
         "resolution_deg": lambda k, v: number(k, v, low=0.1, high=30.0),
-        "min_spacing": positive,
+        "min_spacing": length,
         "max_depth": lambda k, v: integer(k, v, 0, 30),
-        "rate_margin": lambda k, v: number(k, v, low=0.0)})  # < 1: checked by Planning.validate
+        "rate_margin": lambda k, v: number(k, v, low=0.0),  # < 1: checked by Planning.validate
+        "max_volumes": lambda k, v: integer(k, v, 1, 10**12)})
 
 
 def _control(section: dict[str, Any]) -> Control:
@@ -343,7 +341,7 @@ def _baselines(value: Any) -> list[float]:
         return []
     if not isinstance(value, list):
         raise fail("baselines", value, "must be a list of orbit radii in metres")
-    return [positive(f"baselines[{i}]", r) for i, r in enumerate(value)]
+    return [length(f"baselines[{i}]", r) for i, r in enumerate(value)]
 
 
 def _report(section: dict[str, Any]) -> ReportOptions:
@@ -359,7 +357,7 @@ def _report(section: dict[str, Any]) -> ReportOptions:
 
     return apply_checks(ReportOptions(), section, "report", {
         "html": flag, "animation": flag, "frames": lambda k, v: integer(k, v, 2, ReportOptions.MAX_FRAMES),
-        "duration": positive, "volumes": lambda k, v: integer(k, v, 1, 100), "view": view})
+        "duration": lambda k, v: number(k, v, low=0.0, high=3600.0, low_open=True), "volumes": lambda k, v: integer(k, v, 1, 100), "view": view})
 
 
 def default_scenario_text() -> str:

@@ -1,6 +1,7 @@
 """Validation of input read from files (scenario, sweep and planner YAML): every error is a
 VistrackError of the form "key = value: what is allowed", naming the key as the user wrote it
-(``poi.speed``, ``aois[2].radius``)."""
+(``poi.speed``, ``aois[2].radius``). The physical ranges (:func:`coordinate`, :func:`length`,
+:func:`speed`) are the C++ core's (``vistrack._core.limits``; README, Hardening)."""
 
 from __future__ import annotations
 
@@ -9,15 +10,20 @@ from pathlib import Path
 from typing import Any, Callable, Mapping, TypeVar
 
 from ._core import VistrackError
+from ._core import limits as _limits
 
-__all__ = ["apply_checks", "fail", "integer", "number", "positive", "resolve_path", "section"]
+__all__ = ["apply_checks", "coordinate", "fail", "integer", "length", "number", "positive", "resolve_path", "section",
+           "speed"]
 
 T = TypeVar("T")
 
 
 def fail(key: str, value: Any, allowed: str) -> VistrackError:
-    """The error for one bad value (raise it)."""
-    return VistrackError(f"{key} = {value!r}: {allowed}")
+    """The error for one bad value (raise it); a long value is cut to 80 characters."""
+    text = repr(value)
+    if len(text) > 80:
+        text = text[:77] + "..."
+    return VistrackError(f"{key} = {text}: {allowed}")
 
 
 def number(key: str, value: Any, *, low: float | None = None, high: float | None = None,
@@ -33,11 +39,26 @@ def number(key: str, value: Any, *, low: float | None = None, high: float | None
     if not math.isfinite(result):
         raise fail(key, value, "must be a finite number")
     if low is not None and (result < low or (low_open and result == low)):
-        bound = f"> {low}" if low_open else f">= {low}"
-        raise fail(key, value, f"must be {bound}" + (f" and <= {high}" if high is not None else ""))
+        bound = f"> {low:g}" if low_open else f">= {low:g}"
+        raise fail(key, value, f"must be {bound}" + (f" and <= {high:g}" if high is not None else ""))
     if high is not None and result > high:
-        raise fail(key, value, f"must be <= {high}")
+        raise fail(key, value, f"must be <= {high:g}" + (f" and >= {low:g}" if low is not None else ""))
     return result
+
+
+def coordinate(key: str, value: Any) -> float:
+    """A coordinate (x, y, z or an altitude) in metres: |value| <= 1e7."""
+    return number(key, value, low=-_limits.MAX_COORDINATE, high=_limits.MAX_COORDINATE)
+
+
+def length(key: str, value: Any) -> float:
+    """A length (a radius, a distance, a spacing) in metres: [1e-6, 1e7]."""
+    return number(key, value, low=_limits.MIN_LENGTH, high=_limits.MAX_LENGTH)
+
+
+def speed(key: str, value: Any) -> float:
+    """A speed in m/s: [1e-6, 1e4]."""
+    return number(key, value, low=_limits.MIN_SPEED, high=_limits.MAX_SPEED)
 
 
 def integer(key: str, value: Any, low: int, high: int) -> int:
@@ -54,7 +75,7 @@ def section(data: Mapping[str, Any], name: str, allowed: set[str]) -> dict[str, 
     found = data.get(name) or {}
     if not isinstance(found, Mapping):
         raise fail(name, found, "must be a mapping of keys to values")
-    unknown = sorted(set(found) - allowed)
+    unknown = sorted(set(found) - allowed, key=str)  # keys of any YAML type (1, true, ...)
     if unknown:
         raise fail(f"{name}.{unknown[0]}", found[unknown[0]],
                    f"unknown key; allowed keys in {name}: {', '.join(sorted(allowed))}")

@@ -6,6 +6,7 @@ is built for the call) or a :class:`VisibilityScene` (built once: the fast path 
 
 from __future__ import annotations
 
+import math
 from typing import Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -61,15 +62,30 @@ def visibility_volumes(
     )
 
 
+def check_count(path: PoiPath, spacing: float, max_volumes: int = Planning().max_volumes) -> int:
+    """The number of POI positions every ``spacing`` metres along ``path`` (ends included);
+    VistrackError naming --max-volumes when it exceeds ``max_volumes`` (checked before any VV)."""
+    if not (_core.limits.MIN_LENGTH <= spacing <= _core.limits.MAX_LENGTH):
+        raise _core.VistrackError(f"spacing = {spacing}: must be a finite number in [1e-06, 1e+07] m")
+    count = max(2, math.ceil(path.length / spacing) + 1)
+    if count > max_volumes:
+        raise _core.VistrackError(
+            f"--max-volumes = {max_volumes}: {count} VVs every {spacing:g} m along the {path.length:.6g} m path "
+            f"(about {count * _core.volume_bytes(Planning().resolution_deg) / 1e9:.3g} GB at 1 degree); raise "
+            "--max-volumes explicitly to allow it, or raise --spacing")
+    return count
+
+
 def poi_positions(scene: VisibilityScene, points: Optional[np.ndarray] = None, path: Optional[PoiPath] = None,
-                  spacing: Optional[float] = None, height: float = PoiMotion().height) -> np.ndarray:
+                  spacing: Optional[float] = None, height: float = PoiMotion().height,
+                  max_volumes: int = Planning().max_volumes) -> np.ndarray:
     """POI positions (n, 3) on the scene's surface: the given ``points`` (n, 2 or 3; a missing or
     NaN z is ``height`` above the surface), or every ``spacing`` metres along ``path`` (ends
-    included), whose z is the height above the surface."""
+    included, at most ``max_volumes`` of them), whose z is the height above the surface."""
     if path is not None:
-        if spacing is None or not (spacing > 0 and np.isfinite(spacing)):
-            raise _core.VistrackError(f"spacing = {spacing}: must be a finite number > 0")
-        count = max(2, int(np.ceil(path.length / spacing)) + 1)
+        if spacing is None:
+            raise _core.VistrackError("spacing = None: a path needs a spacing in metres")
+        count = check_count(path, spacing, max_volumes)
         # Arc length s is reached at time s / v_g.
         chosen = np.array([path.position(s / path.speed) for s in np.linspace(0.0, path.length, count)])
     elif points is not None:

@@ -78,6 +78,11 @@ struct DubinsPath {
   Points3 sample_at(const std::vector<double>& arc_lengths) const;
 };
 
+// Error naming the field for a configuration outside the ranges of vistrack/limits.hpp (x, y
+// within 1e7 m, psi within 1e9 rad) or rho outside [1e-6, 1e7] m. Every function below checks
+// its input with it, except the unchecked kernel dubins_shortest_length.
+void validate_dubins_problem(const Configuration& q0, const Configuration& q1, double rho);
+
 // Shortest of the six words from q0 to q1 with turn radius rho.
 DubinsPath dubins_shortest_path(const Configuration& q0, const Configuration& q1, double rho);
 // The path of one given word; Error when that word has no path between q0 and q1 (CCC words
@@ -97,7 +102,8 @@ struct DubinsBatch {
 void dubins_shortest_lengths(const double* q0s, const double* q1s, std::size_t n, double rho,
                              double* lengths, std::uint8_t* words, int threads = 0);
 DubinsBatch dubins_shortest_lengths(const Points3& q0s, const Points3& q1s, double rho, int threads = 0);
-// Single-threaded length of the shortest path (the kernel of the batch).
+// Single-threaded length of the shortest path (the kernel of the batch). Unchecked: the caller
+// has validated q0, q1 and rho (validate_dubins_problem).
 double dubins_shortest_length(const Configuration& q0, const Configuration& q1, double rho,
                               DubinsWord* word = nullptr);
 

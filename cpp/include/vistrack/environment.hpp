@@ -27,6 +27,10 @@ struct RoadNetwork {
   std::vector<std::pair<int, int>> edges;
 };
 
+// Error naming the node or edge for a node outside the coordinate range (|v| <= 1e7 m), an edge
+// index out of range, an edge joining a node to itself or two nodes at one place.
+void validate_road_network(const RoadNetwork& roads, const std::string& field = "roads");
+
 // Nodes of a shortest route along road edges (Dijkstra, edge length = Euclidean distance),
 // from `from` to `to` inclusive. Error when a node does not exist or `to` is unreachable.
 std::vector<int> shortest_route(const RoadNetwork& roads, int from, int to);
@@ -37,8 +41,8 @@ struct TriangleMesh {
   Faces faces;
 };
 
-// Throws Error naming `field` for a mesh with no faces, a non-finite vertex or a face index out
-// of range; every function taking triangles from outside checks them with this.
+// Throws Error naming `field` for a mesh with no faces, a vertex outside the coordinate range
+// (|v| <= 1e7 m, vistrack/limits.hpp) or a face index out of range; every function taking triangles from outside checks them with this.
 void validate_triangle_mesh(const Points3& vertices, const Faces& faces, const std::string& field = "mesh");
 
 // Where the local east-north-up frame is anchored on the Earth: WGS84 latitude and longitude in
@@ -128,10 +132,12 @@ class Environment {
 // g(t) = p_i + v_g (t - t_i) (p_j - p_i) / |p_j - p_i|.
 class PoiPath {
  public:
-  // Waypoints (n, 2) or (n, 3); consecutive repeated points are dropped; at least two distinct
-  // points; speed finite and > 0.
+  // Waypoints (n, 2) or (n, 3) within the coordinate range (|v| <= 1e7 m); consecutive repeated
+  // points are dropped; at least two distinct points; speed in [1e-6, 1e4] m/s.
   PoiPath(const Eigen::MatrixXd& waypoints, double speed);
-  // CSV with one waypoint per line "x,y[,z]".
+  // CSV with one waypoint per line "x,y[,z]"; blank lines and lines starting with '#' are skipped,
+  // and so is a first line whose first field is not a number (a header such as "x,y,z"). Any other
+  // field that is not a number is an Error naming the line.
   static PoiPath from_csv(const std::string& path, double speed);
   // Through a sequence of road-network nodes, each consecutive pair joined by an edge.
   static PoiPath from_nodes(const RoadNetwork& roads, const std::vector<int>& nodes, double speed);

@@ -28,9 +28,9 @@ std::string to_string(Circulation circulation);
 // "ccw"/"counterclockwise"/"cw"/"clockwise" (case-insensitive); vistrack::Error naming `field`.
 Circulation circulation_from_string(const std::string& text, const std::string& field = "direction");
 
-// Angle in (-pi, pi].
+// Angle in (-pi, pi]. Error for a non-finite angle (it has no direction).
 double wrap_to_pi(double angle);
-// Angle in [0, 2 pi).
+// Angle in [0, 2 pi); Error for a non-finite angle.
 double wrap_to_two_pi(double angle);
 
 // A closed ring of points; the last point is not a repeat of the first.

@@ -5,7 +5,9 @@
 // Lemma 6 are about.
 //
 // Conventions: angles in radians counter-clockwise from +x; counter-clockwise circulation takes
-// the "+" root of (72), clockwise the "-" root. All functions are pure and allocation free.
+// the "+" root of (72), clockwise the "-" root. All functions are pure and allocation free, and
+// trust their arguments (they run inside the integrator): OrbitState::validate and
+// GuidanceGains::validate check them where they enter (the Python bindings, the planners).
 #pragma once
 
 #include "vistrack/geometry.hpp"
@@ -20,6 +22,9 @@ struct OrbitState {
   Vec2 center_velocity = Vec2::Zero();  // g_dot, |g_dot| = v_g
   double radius = 1.0;               // R > 0
   double radius_rate = 0.0;          // R_dot
+  // Error naming the field outside the ranges of vistrack/limits.hpp: centre a coordinate, its
+  // velocity and R_dot within the speed range, R a length.
+  void validate() const;
 };
 
 // Parameters of the vector field and of the steering law: a Uav and a Control seen by the

@@ -33,9 +33,11 @@ struct OdeOptions {
   double first_step = 0.0;   // 0: chosen automatically (Hairer-Wanner starting step)
   double fixed_step = 0.0;   // > 0: steps of exactly this size (last one shortened), no error control
   std::size_t max_steps = 10'000'000;
+  // rtol in [1e-13, 1] (below, a double-precision step's error estimate is rounding noise) and
+  // atol in [1e-15, 1e15] (below, the scaled error norm overflows near a zero state).
   void validate() const {
-    require_positive(rtol, "ode.rtol");
-    require_positive(atol, "ode.atol");
+    if (!(rtol >= 1e-13 && rtol <= 1.0)) detail::fail_field("ode.rtol", rtol, "must be a finite number in [1e-13, 1]");
+    if (!(atol >= 1e-15 && atol <= 1e15)) detail::fail_field("ode.atol", atol, "must be a finite number in [1e-15, 1e15]");
     if (!(max_step > 0.0)) detail::fail_field("ode.max_step", max_step, "must be greater than 0");
     require_non_negative(first_step, "ode.first_step");
     require_non_negative(fixed_step, "ode.fixed_step");
@@ -200,6 +202,11 @@ class DormandPrince {
     require_finite(t0, "t0");
     require_finite(t_bound, "t_bound");
     if (!(t_bound > t0)) detail::fail_field("t_bound", t_bound, "must be greater than t0 = " + detail::to_text(t0));
+    // Known before the first step: a fixed step that cannot reach t_bound within max_steps.
+    if (options_.fixed_step > 0.0 && (t_bound - t0) / options_.fixed_step > static_cast<double>(options_.max_steps))
+      detail::fail_field("ode.fixed_step", options_.fixed_step,
+                         "needs more than ode.max_steps = " + std::to_string(options_.max_steps) + " steps to reach " +
+                             detail::to_text(t_bound));
     for (Eigen::Index i = 0; i < y0.size(); ++i)
       require_finite(y0[i], "y0[" + std::to_string(i) + "]");
     const Eigen::Index n = y0.size();
@@ -249,8 +256,13 @@ class DormandPrince {
       h_abs = std::abs(h);
       trial(h);
       const double error = error_norm(h);
-      if (!std::isfinite(error))
+      if (!std::isfinite(error)) {
+        if (y_new_.allFinite() && k_[6].allFinite())
+          detail::fail_field("ode.atol", options_.atol,
+                             "the scaled error estimate overflows near t = " + detail::to_text(t_) +
+                                 ": atol/rtol are too small for the state's scale");
         detail::fail_field("ode.rhs", error, "the right-hand side is not finite near t = " + detail::to_text(t_));
+      }
       if (error < 1.0) {
         double factor = error == 0.0 ? kMaxFactor : std::min(kMaxFactor, kSafety * std::pow(error, -0.2));
         if (rejected) factor = std::min(1.0, factor);

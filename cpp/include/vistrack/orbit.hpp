@@ -103,15 +103,34 @@ struct Discretization {
   std::size_t volumes_computed = 0;  // VVs this call computed (the rest came from the cache)
 };
 
+// The work a discretization may ask for, known before any VV is computed: the worst case has every
+// initial interval halved until the halves reach min_spacing or max_depth (about path length /
+// min_spacing VVs), and the VV cache holds every VV until the plan is done.
+struct WorkEstimate {
+  double volumes = 0.0;           // worst-case number of VVs (a double: it can exceed any integer type)
+  double bytes_per_volume = 0.0;  // memory of one VV on the planning grid (~4.7 MB at 1 degree)
+  double bytes() const { return volumes * bytes_per_volume; }
+};
+// Memory of one VV on a grid of resolution_deg degrees: its intervals and its mesh (72 bytes per cell).
+double volume_bytes(double resolution_deg);
+WorkEstimate estimate_work(const PoiPath& poi, const Planning& planning);
+// The VVs of fixed_discretization: one every `spacing` metres plus every node.
+WorkEstimate estimate_fixed_work(const PoiPath& poi, double spacing, double resolution_deg);
+// Error naming `field` (the limit the user may raise) when work.volumes exceeds max_volumes.
+void check_work(const WorkEstimate& work, std::size_t max_volumes, const std::string& field = "planning.max_volumes");
+
 // Initial samples every planning.spacing metres from the start of each path edge, plus every
 // node; then, recursively, a VV halfway between neighbours whose metric exceeds planning.cutoff,
 // while the halves stay >= planning.min_spacing and the depth < planning.max_depth (so it always
-// ends). VVs are computed in parallel (TBB), through `cache`.
+// ends). VVs are computed in parallel (TBB), through `cache`. Refuses (check_work) a worst case
+// beyond planning.max_volumes before computing any VV.
 Discretization adaptive_discretization(const PoiPath& poi, const Planning& planning, VolumeCache& cache,
                                        const MetricFunction& metric, const ProgressFunction& progress = {});
-// The same samples at a fixed spacing, without refinement (Figure 4's baselines).
+// The same samples at a fixed spacing, without refinement (Figure 4's baselines); refuses more
+// than max_volumes VVs before computing any.
 Discretization fixed_discretization(const PoiPath& poi, double spacing, VolumeCache& cache,
-                                    const MetricFunction& metric, const ProgressFunction& progress = {});
+                                    const MetricFunction& metric, const ProgressFunction& progress = {},
+                                    std::size_t max_volumes = Planning{}.max_volumes);
 
 // ---------------------------------------------------------------------------------------------
 // The whole planner: adaptive VVs, VPs at h_UAV, MaxRadius, Algorithm 1.
@@ -161,7 +180,7 @@ class OrbitPlanner {
   OrbitPlanner(const Environment& env, const Sensor& sensor, std::string cache_dir = "");
   Discretization adaptive(const PoiPath& poi, const Planning& planning, const ProgressFunction& progress = {});
   Discretization fixed(const PoiPath& poi, double spacing, double resolution_deg = Planning{}.resolution_deg,
-                       const ProgressFunction& progress = {});
+                       const ProgressFunction& progress = {}, std::size_t max_volumes = Planning{}.max_volumes);
   VisibilityOrbitPlan plan(const PoiPath& poi, const Uav& uav, const Planning& planning,
                            const ProgressFunction& progress = {});
   std::size_t cached_volumes() const;

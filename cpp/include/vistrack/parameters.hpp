@@ -1,8 +1,10 @@
 // Parameter structs shared by planning, guidance and simulation. Every default lives here, and
 // nowhere else (the Python side reads them from the bindings). Each validate() throws Error
-// naming the field; input is validated once, where it enters the API.
+// naming the field and the allowed range (vistrack/limits.hpp: coordinates |v| <= 1e7 m, lengths
+// [1e-6, 1e7] m, speeds [1e-6, 1e4] m/s); input is validated once, where it enters the API.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <utility>
 
@@ -42,6 +44,10 @@ struct Planning {
   // Algorithm 1 keeps |dR/dt| <= (1 - rate_margin)(v - v_g). 0 is Lemma 5's limit, as in the paper;
   // there the attraction gain (68) of the guidance vanishes and the radial error is not corrected.
   double rate_margin = 0.0;
+  // The planner refuses, before computing any VV, a plan whose worst case (every interval halved
+  // to min_spacing or max_depth) needs more VVs than this: about path length / min_spacing VVs,
+  // ~4 MB each on a 1-degree grid (estimate_work in orbit.hpp). Raise it explicitly for long paths.
+  std::size_t max_volumes = 20000;
   void validate() const;
 };
 

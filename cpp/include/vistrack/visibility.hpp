@@ -155,6 +155,13 @@ void write_volume_file(const VisibilityVolume& vv, const std::string& path);
 // is unreadable, truncated, corrupt (checksum) or of another format version.
 std::optional<VisibilityVolume> read_volume_file(const std::string& path);
 
+// Error naming `where` and the field when a VV (from a file, or built by hand) is not one
+// visibility_volume could have made: coordinates and d_max within range, a grid from
+// DirectionGrid::from_resolution, intervals within [0, d_max], mesh indices in range, a volume
+// within the ball of radius d_max, and a consistent record of the mesh rows. read_volume_file
+// applies it to every file.
+void validate_volume(const VisibilityVolume& vv, const std::string& where = "vv");
+
 // Stable 64-bit key (FNV-1a over the exact bits, independent of the host) of a VV's inputs:
 // environment fingerprint, g, d_max, band, resolution and kVolumeFileVersion.
 std::uint64_t volume_cache_key(std::uint64_t environment_fingerprint, const Vec3& g, double d_max,

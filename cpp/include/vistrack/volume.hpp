@@ -73,6 +73,8 @@ XorMethod parse_xor_method(const std::string& name);  // "auto", "radial", "grid
 
 // The rotation xor_volume's mesh path applies in frame "poi" unless told otherwise (rad).
 inline constexpr double kPoiFramePerturbation = 1e-6;
+// The largest perturbation accepted (rad).
+inline constexpr double kMaxPerturbation = 1e-3;
 
 struct MeshXorOptions {
   // CGAL corefinement cannot be bounded in advance (coplanar overlaps make it pathologically
@@ -83,7 +85,7 @@ struct MeshXorOptions {
   // the same POI) out of CGAL's slow coincident-face branch; it moves a point at distance r by at
   // most angle * r, so it changes the XOR by at most about angle * r_max * (surface area of both
   // meshes). None: kPoiFramePerturbation for xor_volume in frame "poi" (where two VVs always
-  // share identical sphere faces), 0 otherwise.
+  // share identical sphere faces), 0 otherwise. In [0, kMaxPerturbation].
   std::optional<double> perturbation;
   // Check both meshes for self-intersections first (O(n log n); CGAL's Boolean requires none).
   bool check_self_intersection = true;

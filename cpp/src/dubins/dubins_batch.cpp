@@ -12,19 +12,22 @@
 
 #include "dubins/batch_avx2.hpp"
 #include "dubins/kernel.hpp"
+#include "dubins/validate.hpp"
 #include "vistrack/dubins.hpp"
 #include "vistrack/error.hpp"
 
 namespace vistrack {
 namespace {
 
-constexpr std::array<const char*, 3> kComponent{"x", "y", "psi"};
-
-void require_finite_rows(const double* rows, std::size_t n, const char* name) {
-  for (std::size_t i = 0; i < 3 * n; ++i)
-    if (!std::isfinite(rows[i]))
-      detail::fail_field(std::string(name) + "[" + std::to_string(i / 3) + "]." + kComponent[i % 3],
-                         rows[i], "must be a finite number");
+// Rows (x, y, psi): a fast pass over the whole batch, the message only for the first bad row.
+void require_configuration_rows(const double* rows, std::size_t n, const char* name) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* q = rows + 3 * i;
+    if (std::abs(q[0]) <= limits::kMaxCoordinate && std::abs(q[1]) <= limits::kMaxCoordinate &&
+        std::abs(q[2]) <= limits::kMaxAngle)
+      continue;
+    detail::require_configuration({q[0], q[1], q[2]}, std::string(name) + "[" + std::to_string(i) + "]");
+  }
 }
 
 constexpr std::size_t kBlock = 256;
@@ -95,17 +98,19 @@ double dubins_shortest_length(const Configuration& q0, const Configuration& q1, 
 
 void dubins_shortest_lengths(const double* q0s, const double* q1s, std::size_t n, double rho,
                              double* lengths, std::uint8_t* words, int threads) {
-  require_positive(rho, "rho");
-  if (threads < 0) detail::fail_field("threads", threads, "must be 0 (all cores) or positive");
-  require_finite_rows(q0s, n, "q0s");
-  require_finite_rows(q1s, n, "q1s");
+  require_length(rho, "rho");
+  require_threads(threads, "threads");
+  require_configuration_rows(q0s, n, "q0s");
+  require_configuration_rows(q1s, n, "q1s");
   const bool avx2 = detail::avx2_kernel_available();
   const auto run = [&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4 * kBlock), [&](const tbb::blocked_range<std::size_t>& range) {
       lengths_range(q0s, q1s, range.begin(), range.end(), rho, lengths, words, avx2);
     });
   };
-  if (threads == 0) {
+  // No more threads than TBB would use anyway: an arena of 1e5 threads crashes TBB.
+  const int cores = tbb::this_task_arena::max_concurrency();
+  if (threads == 0 || threads >= cores) {
     run();
   } else {
     tbb::task_arena arena(threads);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "dubins/kernel.hpp"
+#include "dubins/validate.hpp"
 #include "vistrack/dubins.hpp"
 #include "vistrack/error.hpp"
 
@@ -18,9 +19,9 @@ Configuration TargetCircle::configuration(double angle) const {
 }
 
 void TargetCircle::validate() const {
-  require_finite(center.x(), "center.x");
-  require_finite(center.y(), "center.y");
-  require_positive(radius, "radius");
+  require_coordinate(center.x(), "center.x");
+  require_coordinate(center.y(), "center.y");
+  require_length(radius, "radius");
   if (direction != CircleDirection::Clockwise && direction != CircleDirection::CounterClockwise)
     detail::fail_field("direction", static_cast<int>(direction), "unknown direction");
 }
@@ -28,7 +29,7 @@ void TargetCircle::validate() const {
 DubinsPath dubins_path_to_circle(const Configuration& q0, double rho, const TargetCircle& circle,
                                  double angle) {
   circle.validate();
-  require_finite(angle, "angle");
+  require_angle(angle, "angle");
   return dubins_shortest_path(q0, circle.configuration(angle), rho);
 }
 
@@ -40,7 +41,7 @@ double dubins_length_to_circle(const Configuration& q0, double rho, const Target
 double dubins_csc_length_to_circle(const Configuration& q0, double rho, const TargetCircle& circle,
                                    double angle) {
   circle.validate();
-  require_finite(angle, "angle");
+  require_angle(angle, "angle");
   const auto lengths = dubins_word_lengths(q0, circle.configuration(angle), rho);
   return std::min(std::min(lengths[0], lengths[1]), std::min(lengths[2], lengths[3]));
 }
@@ -52,15 +53,13 @@ bool four_rho_condition(const Vec2& p, double rho, const TargetCircle& circle) {
 }
 
 void InterceptProblem::validate() const {
-  require_finite(pursuer.x, "pursuer.x");
-  require_finite(pursuer.y, "pursuer.y");
-  require_finite(pursuer.psi, "pursuer.psi");
-  require_positive(rho, "rho");
-  require_positive(pursuer_speed, "pursuer_speed");
-  require_positive(target_speed, "target_speed");
+  detail::require_configuration(pursuer, "pursuer");
+  require_length(rho, "rho");
+  require_speed(pursuer_speed, "pursuer_speed");
+  require_speed(target_speed, "target_speed");
   circle.validate();
-  require_finite(target_angle0, "target_angle0");
-  require_positive(angle_tolerance, "angle_tolerance");
+  require_angle(target_angle0, "target_angle0");
+  require_in_range(angle_tolerance, 1e-15, kPi, "rad", "angle_tolerance");
   if (scan_samples < 16 || scan_samples > 10000000)
     detail::fail_field("scan_samples", scan_samples, "must lie in [16, 1e7]");
 }
@@ -202,7 +201,7 @@ InterceptTimes intercept_travel_times(const InterceptProblem& problem, const std
   InterceptTimes times;
   for (std::size_t k = 0; k < swept_angles.size(); ++k) {
     const double swept = swept_angles[k];
-    require_finite(swept, "swept_angles[" + std::to_string(k) + "]");
+    require_angle(swept, "swept_angles[" + std::to_string(k) + "]");
     times.angles.push_back(gap.angle(swept));
     times.pursuer.push_back(gap.pursuer_time(swept));
     times.target.push_back(gap.target_time(swept));

@@ -6,6 +6,7 @@
 
 #include "dubins/kernel.hpp"
 #include "dubins/path_integration.hpp"
+#include "dubins/validate.hpp"
 #include "vistrack/dubins.hpp"
 #include "vistrack/error.hpp"
 
@@ -17,12 +18,6 @@ constexpr std::array<const char*, kDubinsWordCount> kWordNames{"LSL", "LSR", "RS
 std::string upper(std::string text) {
   for (char& ch : text) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   return text;
-}
-
-void require_configuration(const Configuration& q, const std::string& name) {
-  require_finite(q.x, name + ".x");
-  require_finite(q.y, name + ".y");
-  require_finite(q.psi, name + ".psi");
 }
 
 DubinsPath make_path(const Configuration& q0, const Configuration& q1, double rho, DubinsWord word,
@@ -54,6 +49,10 @@ void advance(Configuration& q, DubinsSegment type, double distance, double rho) 
 }
 
 }  // namespace
+
+void validate_dubins_problem(const Configuration& q0, const Configuration& q1, double rho) {
+  detail::require_dubins_problem(q0, q1, rho);
+}
 
 std::string to_string(DubinsWord word) { return kWordNames[static_cast<std::size_t>(word)]; }
 
@@ -97,7 +96,7 @@ Configuration DubinsPath::at(double s) const {
 }
 
 Points3 DubinsPath::sample(double step) const {
-  require_positive(step, "step");
+  require_length(step, "step");
   const double count_real = std::floor(length / step);
   if (count_real > 1e8) detail::fail_field("step", step, "gives more than 1e8 samples");
   if (length == 0.0) {  // start and goal coincide: one row, the goal
@@ -132,9 +131,7 @@ Points3 DubinsPath::sample_at(const std::vector<double>& arc_lengths) const {
 
 std::array<double, kDubinsWordCount> dubins_word_lengths(const Configuration& q0,
                                                          const Configuration& q1, double rho) {
-  require_configuration(q0, "q0");
-  require_configuration(q1, "q1");
-  require_positive(rho, "rho");
+  detail::require_dubins_problem(q0, q1, rho);
   const detail::DubinsFrame f = detail::make_frame(q0, q1, rho);
   std::array<double, kDubinsWordCount> lengths{};
   for (int k = 0; k < kDubinsWordCount; ++k) {
@@ -146,9 +143,7 @@ std::array<double, kDubinsWordCount> dubins_word_lengths(const Configuration& q0
 }
 
 DubinsPath dubins_path(const Configuration& q0, const Configuration& q1, double rho, DubinsWord word) {
-  require_configuration(q0, "q0");
-  require_configuration(q1, "q1");
-  require_positive(rho, "rho");
+  detail::require_dubins_problem(q0, q1, rho);
   if (static_cast<int>(word) >= kDubinsWordCount)
     detail::fail_field("word", static_cast<int>(word), "unknown Dubins word");
   const detail::DubinsFrame f = detail::make_frame(q0, q1, rho);
@@ -161,9 +156,7 @@ DubinsPath dubins_path(const Configuration& q0, const Configuration& q1, double 
 }
 
 DubinsPath dubins_shortest_path(const Configuration& q0, const Configuration& q1, double rho) {
-  require_configuration(q0, "q0");
-  require_configuration(q1, "q1");
-  require_positive(rho, "rho");
+  detail::require_dubins_problem(q0, q1, rho);
   // The length-only kernel chooses the word (so the batch and this function always agree);
   // the word formulas then give its segments.
   const detail::DubinsFrame f = detail::make_frame(q0, q1, rho);

@@ -6,6 +6,7 @@
 
 #include "environment/detail.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack::detail {
 
@@ -15,8 +16,9 @@ std::string point_text(const Vec2& p) { return "(" + to_text(p.x()) + ", " + to_
 
 void validate_ring(const Ring& ring, const std::string& field) {
   for (std::size_t i = 0; i < ring.size(); ++i)
-    if (!std::isfinite(ring[i].x()) || !std::isfinite(ring[i].y()))
-      fail_field(field + "[" + std::to_string(i) + "]", point_text(ring[i]), "coordinates must be finite");
+    if (!(std::abs(ring[i].x()) <= limits::kMaxCoordinate && std::abs(ring[i].y()) <= limits::kMaxCoordinate))
+      fail_field(field + "[" + std::to_string(i) + "]", point_text(ring[i]),
+                 "coordinates must be finite numbers in [-1e7, 1e7] m");
   if (ring.size() < 3)
     fail_field(field, std::to_string(ring.size()) + " distinct points",
                "a footprint ring needs at least 3 distinct points");
@@ -111,7 +113,7 @@ void validate_buildings(std::vector<Building>& buildings, const std::vector<Buil
   for (std::size_t b = 0; b < buildings.size(); ++b) {
     Building& building = buildings[b];
     const BuildingSource& source = sources[b];
-    require_positive(building.height, source.height_field);
+    require_length(building.height, source.height_field);
     Polygon& footprint = building.footprint;
     footprint.outer = clean_ring(footprint.outer);
     validate_ring(footprint.outer, source.outer_field);

@@ -6,6 +6,7 @@
 
 #include "environment/detail.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
@@ -34,9 +35,7 @@ void validate_triangle_mesh(const Points3& vertices, const Faces& faces, const s
   if (faces.rows() == 0) throw Error(field + ".faces: the mesh has no triangles");
   for (Eigen::Index i = 0; i < vertices.rows(); ++i)
     for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(vertices(i, k)))
-        detail::fail_field(field + ".vertices[" + std::to_string(i) + "]", vertices(i, k),
-                           "vertex coordinates must be finite");
+      require_coordinate(vertices(i, k), field + ".vertices[" + std::to_string(i) + "][" + std::to_string(k) + "]");
   for (Eigen::Index i = 0; i < faces.rows(); ++i)
     for (int k = 0; k < 3; ++k)
       if (faces(i, k) < 0 || faces(i, k) >= vertices.rows())

@@ -8,12 +8,16 @@
 
 #include "environment/detail.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
 namespace {
 
 using nlohmann::json;
+
+// A JSON value quoted in a message: compact, at most 40 characters.
+std::string text_of(const json& value) { return detail::printable(value.dump()); }
 
 // A number, or a numeric string such as "12" or "12.5 m" as OSM tags often are; nothing when
 // the property is absent or null.
@@ -34,16 +38,16 @@ std::optional<double> number_property(const json& properties, const std::string&
     }
     detail::fail_field(field, "\"" + text + "\"", "expected a number of metres");
   }
-  detail::fail_field(field, it->dump(), "expected a number");
+  detail::fail_field(field, text_of(*it), "expected a number");
 }
 
 Ring ring_from_json(const json& coordinates, const std::string& field) {
-  if (!coordinates.is_array()) detail::fail_field(field, coordinates.dump(), "a ring must be an array of [x, y] points");
+  if (!coordinates.is_array()) detail::fail_field(field, text_of(coordinates), "a ring must be an array of [x, y] points");
   Ring ring;
   for (std::size_t i = 0; i < coordinates.size(); ++i) {
     const json& point = coordinates[i];
     if (!point.is_array() || point.size() < 2 || !point[0].is_number() || !point[1].is_number())
-      detail::fail_field(field + "[" + std::to_string(i) + "]", point.dump(), "a point must be [x, y] numbers");
+      detail::fail_field(field + "[" + std::to_string(i) + "]", text_of(point), "a point must be [x, y] numbers");
     ring.emplace_back(point[0].get<double>(), point[1].get<double>());
   }
   return ring;  // cleaned once in metres (after any projection)
@@ -51,7 +55,7 @@ Ring ring_from_json(const json& coordinates, const std::string& field) {
 
 Polygon polygon_from_json(const json& rings, const std::string& field, detail::BuildingSource& source) {
   if (!rings.is_array() || rings.empty())
-    detail::fail_field(field, rings.dump(), "a Polygon needs at least its outer ring");
+    detail::fail_field(field, text_of(rings), "a Polygon needs at least its outer ring");
   Polygon polygon;
   source.outer_field = field + "[0]";
   polygon.outer = ring_from_json(rings[0], source.outer_field);
@@ -148,33 +152,17 @@ std::optional<GeodeticPoint> to_local_metres(std::vector<Building>& buildings, c
   return origin;
 }
 
-}  // namespace
-
-Environment Environment::from_geojson(const std::string& path, const GeoJsonOptions& options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) detail::fail_field("path", path, "cannot open the GeoJSON file for reading");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
-    detail::fail_field("path", path, "the GeoJSON file is empty");
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& error) {
-    detail::fail_field("path", path, std::string("not valid JSON: ") + error.what());
-  }
+// The buildings of a parsed FeatureCollection, each with the fields it came from.
+void read_features(const json& root, std::vector<Building>& buildings, std::vector<detail::BuildingSource>& sources) {
   if (!root.is_object() || root.value("type", std::string()) != "FeatureCollection")
-    detail::fail_field("type", root.is_object() && root.contains("type") ? root["type"].dump() : std::string("missing"),
+    detail::fail_field("type", root.is_object() && root.contains("type") ? text_of(root["type"]) : std::string("missing"),
                        "expected a GeoJSON FeatureCollection");
   const auto features = root.find("features");
   if (features == root.end() || !features->is_array())
-    detail::fail_field("features", features == root.end() ? std::string("missing") : features->dump(),
+    detail::fail_field("features", features == root.end() ? std::string("missing") : text_of(*features),
                        "expected an array of features");
   if (features->empty()) detail::fail_field("features", "[]", "the collection has no buildings");
 
-  std::vector<Building> buildings;
-  std::vector<detail::BuildingSource> sources;
   for (std::size_t f = 0; f < features->size(); ++f) {
     const json& feature = (*features)[f];
     const std::string name = "features[" + std::to_string(f) + "]";
@@ -209,7 +197,7 @@ Environment Environment::from_geojson(const std::string& path, const GeoJsonOpti
       sources.push_back(std::move(source));
     } else if (type == "MultiPolygon") {
       if (!coordinates.is_array() || coordinates.empty())
-        detail::fail_field(coordinates_field, coordinates.dump(), "a MultiPolygon needs at least one polygon");
+        detail::fail_field(coordinates_field, text_of(coordinates), "a MultiPolygon needs at least one polygon");
       // Each part becomes its own building with the feature's id and height.
       for (std::size_t p = 0; p < coordinates.size(); ++p) {
         detail::BuildingSource source{name + ".geometry.coordinates[" + std::to_string(p) + "]", height_field, {}, {}};
@@ -221,6 +209,32 @@ Environment Environment::from_geojson(const std::string& path, const GeoJsonOpti
     } else {
       detail::fail_field(name + ".geometry.type", "\"" + type + "\"", "expected Polygon or MultiPolygon");
     }
+  }
+}
+
+}  // namespace
+
+Environment Environment::from_geojson(const std::string& path, const GeoJsonOptions& options) {
+  require_regular_file(path, "path", "GeoJSON");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) detail::fail_field("path", path, "cannot open the GeoJSON file for reading");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    detail::fail_field("path", path, "the GeoJSON file is empty");
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::exception& error) {  // parse errors, and numbers out of range (1e999)
+    detail::fail_field("path", path, std::string("not valid JSON: ") + error.what());
+  }
+  std::vector<Building> buildings;
+  std::vector<detail::BuildingSource> sources;
+  try {
+    read_features(root, buildings, sources);
+  } catch (const json::exception& error) {  // a member of an unexpected JSON type
+    detail::fail_field("path", path, std::string("unexpected GeoJSON structure: ") + error.what());
   }
   const std::optional<GeodeticPoint> origin = to_local_metres(buildings, options);
   for (Building& building : buildings) {

@@ -3,11 +3,15 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 
+#include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "environment/detail.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
@@ -15,10 +19,66 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 namespace PMP = CGAL::Polygon_mesh_processing;
+
+std::string lower_extension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+// Why CGAL refused a Wavefront OBJ file, when a line says so: "path:line: reason" naming the first
+// vertex that is not three finite numbers or the first face corner that names no vertex (OBJ
+// counts from 1; negative indices count back from the last vertex read). Empty when no line is
+// to blame (the caller then gives the general message).
+std::string diagnose_obj(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  long long vertices = 0;
+  for (long long number = 1; std::getline(in, line); ++number) {
+    std::istringstream fields(line);
+    std::string tag;
+    fields >> tag;
+    const std::string where = path + ":" + std::to_string(number);
+    if (tag == "v") {
+      double xyz[3];
+      std::string token;
+      for (double& c : xyz) {
+        if (!(fields >> token)) return where + ": a vertex needs three coordinates x y z";
+        try {
+          std::size_t used = 0;
+          c = std::stod(token, &used);
+          if (used != token.size()) throw std::invalid_argument(token);
+        } catch (const std::exception&) {
+          return where + ": vertex coordinate " + detail::printable(token) + " is not a number";
+        }
+        if (!std::isfinite(c)) return where + ": vertex coordinate " + detail::printable(token) + " is not finite";
+      }
+      ++vertices;
+    } else if (tag == "f") {
+      std::string corner;
+      while (fields >> corner) {
+        const std::string index_text = corner.substr(0, corner.find('/'));
+        long long index = 0;
+        try {
+          std::size_t used = 0;
+          index = std::stoll(index_text, &used);
+          if (used != index_text.size()) throw std::invalid_argument(index_text);
+        } catch (const std::exception&) {
+          return where + ": face corner " + detail::printable(corner) + " is not a vertex index";
+        }
+        if (index == 0 || index > vertices || index < -vertices)
+          return where + ": face corner " + detail::printable(corner) + " names no vertex (" + std::to_string(vertices) +
+                 " read so far; OBJ counts from 1)";
+      }
+    }
+  }
+  return {};
+}
 }  // namespace
 
 Environment Environment::from_mesh(const std::string& path, const std::string& up) {
   if (up != "z" && up != "y") detail::fail_field("up", "\"" + up + "\"", "must be \"z\" or \"y\"");
+  require_regular_file(path, "path", "mesh");
   {
     std::ifstream probe(path, std::ios::binary);
     if (!probe) detail::fail_field("path", path, "cannot open the mesh file for reading");
@@ -32,13 +92,22 @@ Environment Environment::from_mesh(const std::string& path, const std::string& u
   } catch (const std::exception& error) {
     detail::fail_field("path", path, std::string("cannot parse the mesh file: ") + error.what());
   }
-  if (!read)
+  if (!read) {
+    const std::string why = lower_extension(path) == ".obj" ? diagnose_obj(path) : std::string();
+    if (!why.empty()) detail::fail_field("path", path, "cannot read the mesh: " + why);
     detail::fail_field("path", path,
-                       "cannot read a mesh from this file (formats: .obj .ply .stl .off, chosen by extension)");
+                       "cannot read a mesh from this file (formats: .obj .ply .stl .off, chosen by extension; "
+                       "CGAL's reader refused it: a vertex that is not a finite number, a face naming no vertex "
+                       "or a malformed header)");
+  }
   for (std::size_t i = 0; i < points.size(); ++i)
     for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(points[i][k]))
-        detail::fail_field("vertices[" + std::to_string(i) + "]", points[i][k], "vertex coordinates must be finite");
+      require_coordinate(points[i][k], "vertices[" + std::to_string(i) + "][" + std::to_string(k) + "]");
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    for (std::size_t index : polygons[f])
+      if (index >= points.size())
+        detail::fail_field("faces[" + std::to_string(f) + "]", index,
+                           "vertex index out of range [0, " + std::to_string(points.size()) + ")");
   // Merge exactly repeated points, drop polygons with repeated or too few corners, duplicate
   // polygons and unused points, so that neighbouring faces share their vertices.
   PMP::repair_polygon_soup(points, polygons);

@@ -1,20 +1,21 @@
 #include "vistrack/parameters.hpp"
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
 void Uav::validate() const {
-  require_positive(speed, "uav.speed");
-  require_positive(min_turn_radius, "uav.min_turn_radius");
-  require_finite(altitude, "uav.altitude");
+  require_speed(speed, "uav.speed");
+  require_length(min_turn_radius, "uav.min_turn_radius");
+  require_coordinate(altitude, "uav.altitude");
 }
 
 void Sensor::validate() const {
-  require_positive(d_max, "sensor.d_max");
+  require_length(d_max, "sensor.d_max");
   if (altitude_band) {
-    require_finite(altitude_band->first, "sensor.altitude_band[0]");
-    require_finite(altitude_band->second, "sensor.altitude_band[1]");
+    require_coordinate(altitude_band->first, "sensor.altitude_band[0]");
+    require_coordinate(altitude_band->second, "sensor.altitude_band[1]");
     if (!(altitude_band->first < altitude_band->second))
       detail::fail_field("sensor.altitude_band", detail::to_text(altitude_band->first) + ", " +
                                                      detail::to_text(altitude_band->second),
@@ -23,27 +24,31 @@ void Sensor::validate() const {
 }
 
 void Planning::validate() const {
-  require_positive(spacing, "planning.spacing");
-  require_positive(cutoff, "planning.cutoff");
+  require_length(spacing, "planning.spacing");
+  if (!(cutoff > 0.0 && cutoff <= limits::kMaxVolume))
+    detail::fail_field("planning.cutoff", cutoff, "must be a finite number in (0, 1e21] m^3");
   if (!(resolution_deg >= 0.1 && resolution_deg <= 30.0))
     detail::fail_field("planning.resolution_deg", resolution_deg, "must be in [0.1, 30] degrees (the VV grid's range)");
-  require_positive(min_spacing, "planning.min_spacing");
+  require_length(min_spacing, "planning.min_spacing");
   if (max_depth < 0 || max_depth > 30)
     detail::fail_field("planning.max_depth", max_depth, "must be in [0, 30]");
   if (!(rate_margin >= 0.0 && rate_margin < 1.0))
     detail::fail_field("planning.rate_margin", rate_margin, "must be in [0, 1) (a fraction of v - v_g)");
+  if (max_volumes < 1) detail::fail_field("planning.max_volumes", max_volumes, "must be at least 1");
 }
 
 void Control::validate() const {
-  require_positive(beta, "control.beta");
-  require_positive(k_psi, "control.k_psi");
+  require_in_range(beta, 1e-9, 1e3, "1/m", "control.beta");
+  require_in_range(k_psi, 1e-9, 1e6, "1/s", "control.k_psi");
 }
 
 void SimulationOptions::validate() const {
-  require_positive(rtol, "simulation.rtol");
-  require_positive(atol, "simulation.atol");
-  require_positive(max_step, "simulation.max_step");
-  require_positive(output_step, "simulation.output_step");
+  // Below 1e-13 the error estimate of a double-precision step is rounding noise (scipy's floor is
+  // 100 eps); an atol below 1e-15 m overflows the scaled error norm near a zero state.
+  require_in_range(rtol, 1e-13, 1.0, "", "simulation.rtol");
+  require_in_range(atol, 1e-15, 1e6, "", "simulation.atol");
+  require_in_range(max_step, 1e-9, 1e9, "s", "simulation.max_step");
+  require_in_range(output_step, 1e-6, 1e9, "s", "simulation.output_step");
 }
 
 }  // namespace vistrack

@@ -6,18 +6,19 @@
 
 #include "vistrack/environment.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
 PoiPath::PoiPath(const Eigen::MatrixXd& waypoints, double speed) : speed_(speed) {
-  require_positive(speed, "speed");
+  require_speed(speed, "speed");
   if (waypoints.cols() != 2 && waypoints.cols() != 3)
     detail::fail_field("waypoints.shape[1]", waypoints.cols(), "waypoints must be (n, 2) or (n, 3)");
   std::vector<Vec3> kept;
   for (Eigen::Index i = 0; i < waypoints.rows(); ++i) {
     Vec3 p(waypoints(i, 0), waypoints(i, 1), waypoints.cols() == 3 ? waypoints(i, 2) : 0.0);
     for (int k = 0; k < 3; ++k)
-      require_finite(p[k], "waypoints[" + std::to_string(i) + "][" + std::to_string(k) + "]");
+      require_coordinate(p[k], "waypoints[" + std::to_string(i) + "][" + std::to_string(k) + "]");
     // Consecutive repeats add no motion and would make a zero-length segment.
     if (!kept.empty() && (p.head<2>() - kept.back().head<2>()).norm() == 0.0) continue;
     kept.push_back(p);
@@ -34,7 +35,8 @@ PoiPath::PoiPath(const Eigen::MatrixXd& waypoints, double speed) : speed_(speed)
 }
 
 PoiPath PoiPath::from_csv(const std::string& path, double speed) {
-  std::ifstream in(path);
+  require_regular_file(path, "path", "CSV");
+  std::ifstream in(path, std::ios::binary);
   if (!in) detail::fail_field("path", path, "cannot open the CSV file for reading");
   std::vector<std::array<double, 3>> rows;
   int columns = 0;
@@ -50,21 +52,23 @@ PoiPath PoiPath::from_csv(const std::string& path, double speed) {
     std::string token;
     while (fields >> token) {
       if (count == 3)
-        detail::fail_field(path + ":" + std::to_string(line_number), token,
+        detail::fail_field(path + ":" + std::to_string(line_number), detail::printable(token),
                            "expected 2 or 3 columns x,y[,z]");
       try {
         std::size_t used = 0;
         row[count] = std::stod(token, &used);
         if (used != token.size()) throw std::invalid_argument(token);
       } catch (const std::exception&) {
-        if (rows.empty() && line_number == 1) { count = -1; break; }  // a header line
-        detail::fail_field(path + ":" + std::to_string(line_number), token, "not a number");
+        // A header ("x,y,z") is a first line whose first field is not a number; a number in the
+        // first field makes the line data, so "0,0,0.5abc" is an error, not a header.
+        if (rows.empty() && line_number == 1 && count == 0) { count = -1; break; }
+        detail::fail_field(path + ":" + std::to_string(line_number), detail::printable(token), "not a number");
       }
       ++count;
     }
     if (count == -1) continue;
     if (count < 2)
-      detail::fail_field(path + ":" + std::to_string(line_number), line, "expected columns x,y[,z]");
+      detail::fail_field(path + ":" + std::to_string(line_number), detail::printable(line), "expected columns x,y[,z]");
     columns = std::max(columns, count);
     rows.push_back(row);
   }

@@ -6,6 +6,7 @@
 
 #include "environment/detail.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
@@ -53,23 +54,35 @@ bool crosses_interior(const Polygon& footprint, const Vec2& a, const Vec2& b) {
 
 }  // namespace
 
-void Environment::set_roads(RoadNetwork roads) {
+void validate_road_network(const RoadNetwork& roads, const std::string& field_prefix) {
+  const std::string prefix = field_prefix.empty() ? "" : field_prefix + ".";
   const auto node_count = static_cast<int>(roads.nodes.size());
   for (std::size_t i = 0; i < roads.nodes.size(); ++i)
     for (int k = 0; k < 2; ++k)
-      require_finite(roads.nodes[i][k], "roads.nodes[" + std::to_string(i) + "][" + std::to_string(k) + "]");
+      require_coordinate(roads.nodes[i][k], prefix + "nodes[" + std::to_string(i) + "][" + std::to_string(k) + "]");
+  for (std::size_t e = 0; e < roads.edges.size(); ++e) {
+    const auto [from, to] = roads.edges[e];
+    const std::string field = prefix + "edges[" + std::to_string(e) + "]";
+    const std::string value = "(" + std::to_string(from) + ", " + std::to_string(to) + ")";
+    if (from < 0 || from >= node_count || to < 0 || to >= node_count)
+      detail::fail_field(field, value, "node index out of range [0, " + std::to_string(node_count) + ")");
+    if (from == to) detail::fail_field(field, value, "an edge must join two different nodes");
+    const Vec2& a = roads.nodes[static_cast<std::size_t>(from)];
+    if (a == roads.nodes[static_cast<std::size_t>(to)])
+      detail::fail_field(field, value, "the edge has zero length (both nodes at " + point_text(a) + ")");
+  }
+}
+
+void Environment::set_roads(RoadNetwork roads) {
+  validate_road_network(roads);
   std::vector<Bounds2> boxes;
   for (const Building& building : buildings_) boxes.push_back(vistrack::bounds(building.footprint.outer));
   for (std::size_t e = 0; e < roads.edges.size(); ++e) {
     const auto [from, to] = roads.edges[e];
     const std::string field = "roads.edges[" + std::to_string(e) + "]";
     const std::string value = "(" + std::to_string(from) + ", " + std::to_string(to) + ")";
-    if (from < 0 || from >= node_count || to < 0 || to >= node_count)
-      detail::fail_field(field, value, "node index out of range [0, " + std::to_string(node_count) + ")");
-    if (from == to) detail::fail_field(field, value, "an edge must join two different nodes");
     const Vec2& a = roads.nodes[static_cast<std::size_t>(from)];
     const Vec2& b = roads.nodes[static_cast<std::size_t>(to)];
-    if (a == b) detail::fail_field(field, value, "the edge has zero length (both nodes at " + point_text(a) + ")");
     const Vec2 low = a.cwiseMin(b), high = a.cwiseMax(b);
     for (std::size_t i = 0; i < buildings_.size(); ++i) {
       const Bounds2& box = boxes[i];

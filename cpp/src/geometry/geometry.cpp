@@ -26,12 +26,14 @@ Circulation circulation_from_string(const std::string& text, const std::string& 
 }
 
 double wrap_to_pi(double angle) {
+  if (!std::isfinite(angle)) detail::fail_field("angle", angle, "must be a finite number of radians");
   double wrapped = std::remainder(angle, kTwoPi);  // in [-pi, pi]
   if (wrapped <= -kPi) wrapped += kTwoPi;
   return wrapped;
 }
 
 double wrap_to_two_pi(double angle) {
+  if (!std::isfinite(angle)) detail::fail_field("angle", angle, "must be a finite number of radians");
   double wrapped = std::fmod(angle, kTwoPi);
   if (wrapped < 0.0) wrapped += kTwoPi;
   if (wrapped >= kTwoPi) wrapped = 0.0;

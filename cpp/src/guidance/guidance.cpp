@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
@@ -20,10 +21,22 @@ constexpr double kCentreTolerance = 1e-12;
 }  // namespace
 
 void GuidanceGains::validate() const {
-  require_positive(speed, "gains.speed");
-  require_positive(beta, "gains.beta");
-  require_positive(k_psi, "gains.k_psi");
-  require_positive(max_turn_rate, "gains.max_turn_rate");
+  require_speed(speed, "gains.speed");
+  require_in_range(beta, 1e-9, 1e3, "1/m", "gains.beta");  // as Control::validate
+  require_in_range(k_psi, 1e-9, 1e6, "1/s", "gains.k_psi");
+  // v / r_min over the speed and length ranges.
+  require_in_range(max_turn_rate, limits::kMinSpeed / limits::kMaxLength, limits::kMaxSpeed / limits::kMinLength,
+                   "rad/s", "gains.max_turn_rate");
+}
+
+void OrbitState::validate() const {
+  require_coordinate(center.x(), "orbit.center[0]");
+  require_coordinate(center.y(), "orbit.center[1]");
+  for (int k = 0; k < 2; ++k)
+    require_in_range(center_velocity[k], -limits::kMaxSpeed, limits::kMaxSpeed, "m/s",
+                     "orbit.center_velocity[" + std::to_string(k) + "]");
+  require_length(radius, "orbit.radius");
+  require_in_range(radius_rate, -limits::kMaxSpeed, limits::kMaxSpeed, "m/s", "orbit.radius_rate");
 }
 
 GuidanceGains GuidanceGains::from(const Uav& uav, const Control& control) {
@@ -226,9 +239,9 @@ Vec3 orbit_configuration(double theta0, const OrbitState& orbit, double speed, C
 }
 
 double lemma6_curvature_bound(double radius, double speed, double poi_speed) {
-  require_positive(radius, "radius");
-  require_positive(speed, "speed");
-  require_non_negative(poi_speed, "poi_speed");
+  require_length(radius, "radius");
+  require_speed(speed, "speed");
+  require_in_range(poi_speed, 0.0, limits::kMaxSpeed, "m/s", "poi_speed");
   // (53), the value (55) of the extremum at a = theta - gamma = +-pi/2 (ccw / cw: where the POI moves against
   // the circulation).
   return (poi_speed + speed) * (poi_speed + speed) / (radius * speed * speed);
@@ -261,8 +274,8 @@ double lambda_max() {
 }
 
 double lemma7_min_gain(double speed, double beta) {
-  require_positive(speed, "speed");
-  require_positive(beta, "beta");
+  require_speed(speed, "speed");
+  require_in_range(beta, 1e-9, 1e3, "1/m", "beta");
   return speed * beta * 4.0 / (kPi * kPi) * epsilon_max();  // (87)
 }
 

@@ -3,10 +3,13 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 
 #include <tbb/parallel_for.h>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/orbit.hpp"
 
 namespace vistrack {
@@ -160,18 +163,79 @@ Discretization discretize(const PoiPath& poi, double spacing, double cutoff, dou
   return out;
 }
 
+// Samples a halving of an interval of `length` m may add in the worst case: 2^k - 1 for the k
+// halvings allowed (depth < max_depth, halves >= min_spacing).
+double worst_insertions(double length, double min_spacing, int max_depth) {
+  int halvings = 0;
+  while (halvings < max_depth && length / std::ldexp(1.0, halvings + 1) >= min_spacing) ++halvings;
+  return std::ldexp(1.0, halvings) - 1.0;
+}
+
+// Initial samples (as initial_samples places them, counted without building them) and, when
+// min_spacing is given, the worst-case insertions into every interval.
+double count_samples(const PoiPath& poi, double spacing, double min_spacing, int max_depth) {
+  const std::vector<double> nodes = node_arc_lengths(poi);
+  double count = 1.0;  // the last node
+  for (std::size_t e = 0; e + 1 < nodes.size(); ++e) {
+    const double length = nodes[e + 1] - nodes[e];
+    const double steps = std::ceil(length / spacing - 1e-9);
+    count += steps;
+    if (max_depth > 0 && steps >= 1.0) {
+      const double last = length - (steps - 1.0) * spacing;  // the edge's last, shorter interval
+      count += (steps - 1.0) * worst_insertions(spacing, min_spacing, max_depth) +
+               worst_insertions(last, min_spacing, max_depth);
+    }
+  }
+  return count;
+}
+
+std::string count_text(double value) {
+  std::ostringstream out;
+  out.precision(value < 1e15 ? 15 : 3);
+  out << value;
+  return out.str();
+}
+
 }  // namespace
+
+double volume_bytes(double resolution_deg) {
+  const DirectionGrid grid = DirectionGrid::from_resolution(resolution_deg);
+  // Per cell: near and far (16 bytes), about one mesh vertex (24), two faces (24) and their slots (8).
+  return 72.0 * static_cast<double>(grid.size());
+}
+
+WorkEstimate estimate_work(const PoiPath& poi, const Planning& planning) {
+  planning.validate();
+  return {count_samples(poi, planning.spacing, planning.min_spacing, planning.max_depth),
+          volume_bytes(planning.resolution_deg)};
+}
+
+WorkEstimate estimate_fixed_work(const PoiPath& poi, double spacing, double resolution_deg) {
+  require_length(spacing, "spacing");
+  return {count_samples(poi, spacing, spacing, 0), volume_bytes(resolution_deg)};
+}
+
+void check_work(const WorkEstimate& work, std::size_t max_volumes, const std::string& field) {
+  if (work.volumes <= static_cast<double>(max_volumes)) return;
+  detail::fail_field(field, max_volumes,
+                     "this plan may need up to " + count_text(std::ceil(work.volumes)) + " VVs, holding about " +
+                         count_text(std::ceil(work.bytes() / 1e9)) +
+                         " GB (a path length / min_spacing of VVs at most, ~4.7 MB each at 1 degree); raise " +
+                         field + " explicitly to allow it, or raise the spacing or min_spacing");
+}
 
 Discretization adaptive_discretization(const PoiPath& poi, const Planning& planning, VolumeCache& cache,
                                        const MetricFunction& metric, const ProgressFunction& progress) {
-  planning.validate();
+  check_work(estimate_work(poi, planning), planning.max_volumes);
   return discretize(poi, planning.spacing, planning.cutoff, planning.min_spacing, planning.max_depth, cache, metric,
                     progress);
 }
 
 Discretization fixed_discretization(const PoiPath& poi, double spacing, VolumeCache& cache,
-                                    const MetricFunction& metric, const ProgressFunction& progress) {
-  require_positive(spacing, "spacing");
+                                    const MetricFunction& metric, const ProgressFunction& progress,
+                                    std::size_t max_volumes) {
+  // The grid of the cache is not known here: the estimate counts 1-degree VVs.
+  check_work(estimate_fixed_work(poi, spacing, Planning{}.resolution_deg), max_volumes, "max_volumes");
   return discretize(poi, spacing, std::numeric_limits<double>::infinity(), spacing, 0, cache, metric, progress);
 }
 

@@ -3,15 +3,21 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/orbit.hpp"
 
 namespace vistrack {
 namespace {
 
+void require_poi_speed(double poi_speed, const std::string& field) {
+  require_in_range(poi_speed, 0.0, limits::kMaxSpeed, "m/s", field);  // 0: a POI standing still
+}
+
 void require_faster_than_poi(const Uav& uav, double poi_speed) {
-  require_positive(poi_speed, "poi.speed");
+  require_speed(poi_speed, "poi.speed");
   if (!(uav.speed > poi_speed))
     detail::fail_field("uav.speed", uav.speed,
                        "must exceed the POI speed " + detail::to_text(poi_speed) +
@@ -22,11 +28,11 @@ void require_faster_than_poi(const Uav& uav, double poi_speed) {
 
 double orbit_curvature(double radius, double radius_rate, double relative_angle, double uav_speed,
                        double poi_speed, Circulation circulation) {
-  require_positive(radius, "radius");
-  require_finite(radius_rate, "radius_rate");
-  require_finite(relative_angle, "relative_angle");
-  require_positive(uav_speed, "uav_speed");
-  require_non_negative(poi_speed, "poi_speed");
+  require_length(radius, "radius");
+  require_in_range(radius_rate, -limits::kMaxSpeed, limits::kMaxSpeed, "m/s", "radius_rate");
+  require_angle(relative_angle, "relative_angle");
+  require_speed(uav_speed, "uav_speed");
+  require_poi_speed(poi_speed, "poi_speed");
   // g'.e_r = v_g cos a and g'.e_theta = -v_g sin a for a = theta - gamma (Definitions 1, 3).
   const double radial = poi_speed * std::cos(relative_angle) + radius_rate;
   const double under_root = uav_speed * uav_speed - radial * radial;
@@ -39,16 +45,16 @@ double orbit_curvature(double radius, double radius_rate, double relative_angle,
 }
 
 double max_orbit_curvature(double radius, double uav_speed, double poi_speed) {
-  require_positive(radius, "radius");
-  require_positive(uav_speed, "uav_speed");
-  require_non_negative(poi_speed, "poi_speed");
+  require_length(radius, "radius");
+  require_speed(uav_speed, "uav_speed");
+  require_poi_speed(poi_speed, "poi_speed");
   const double ratio = 1.0 + poi_speed / uav_speed;
   return ratio * ratio / radius;  // (53), (55)
 }
 
 double min_feasible_radius(const Uav& uav, double poi_speed) {
   uav.validate();
-  require_non_negative(poi_speed, "poi_speed");
+  require_poi_speed(poi_speed, "poi_speed");
   const double ratio = 1.0 + poi_speed / uav.speed;
   return uav.min_turn_radius * ratio * ratio;
 }
@@ -65,7 +71,7 @@ CircularOrbits circular_orbits(const std::vector<double>& times, const std::vect
                        "must have one entry per time (" + std::to_string(times.size()) + ")");
   for (std::size_t k = 0; k < times.size(); ++k) {
     require_finite(times[k], "times[" + std::to_string(k) + "]");
-    require_non_negative(max_radii[k], "max_radii[" + std::to_string(k) + "]");
+    require_in_range(max_radii[k], 0.0, limits::kMaxLength, "m", "max_radii[" + std::to_string(k) + "]");
     if (k > 0 && !(times[k] > times[k - 1]))
       detail::fail_field("times[" + std::to_string(k) + "]", times[k], "times must increase");
   }

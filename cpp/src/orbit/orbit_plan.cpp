@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/orbit.hpp"
 
 namespace vistrack {
@@ -40,7 +41,7 @@ double OrbitPlan::radius_rate(double t) const {
 
 OrbitPlan constant_radius_plan(const PoiPath& poi, double radius, const Uav& uav) {
   uav.validate();
-  require_positive(radius, "radius");
+  require_length(radius, "radius");
   if (!(uav.speed > poi.speed()))
     detail::fail_field("uav.speed", uav.speed,
                        "must exceed the POI speed " + detail::to_text(poi.speed()) + " to orbit it");
@@ -57,8 +58,8 @@ OrbitPlan constant_radius_plan(const PoiPath& poi, double radius, const Uav& uav
 }
 
 double max_inscribed_radius(const std::vector<Polygon>& polygons, const Vec2& center) {
-  require_finite(center.x(), "center[0]");
-  require_finite(center.y(), "center[1]");
+  require_coordinate(center.x(), "center[0]");
+  require_coordinate(center.y(), "center[1]");
   for (const Polygon& polygon : polygons)
     if (contains(polygon, center)) return distance_to_boundary(polygon, center);
   return 0.0;

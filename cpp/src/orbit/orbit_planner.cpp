@@ -43,14 +43,16 @@ Discretization OrbitPlanner::adaptive(const PoiPath& poi, const Planning& planni
 }
 
 Discretization OrbitPlanner::fixed(const PoiPath& poi, double spacing, double resolution_deg,
-                                   const ProgressFunction& progress) {
-  return fixed_discretization(poi, spacing, caches(resolution_deg).memory, poi_frame_metric, progress);
+                                   const ProgressFunction& progress, std::size_t max_volumes) {
+  check_work(estimate_fixed_work(poi, spacing, resolution_deg), max_volumes, "max_volumes");
+  return fixed_discretization(poi, spacing, caches(resolution_deg).memory, poi_frame_metric, progress, max_volumes);
 }
 
 VisibilityOrbitPlan OrbitPlanner::plan(const PoiPath& poi, const Uav& uav, const Planning& planning,
                                        const ProgressFunction& progress) {
   uav.validate();
   planning.validate();
+  check_work(estimate_work(poi, planning), planning.max_volumes);  // before the scene does any work
   // h_UAV is the world z of the flight plane (the height above ground where the ground is at 0).
   if (!(uav.altitude > scene_.ground_level()))
     detail::fail_field("uav.altitude", uav.altitude,

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/orbit.hpp"
 
 namespace vistrack {
@@ -30,6 +31,7 @@ OrbitPlan orbit_plan_from_json(const std::string& text) {
   }
   try {
     const auto& waypoints = in.at("poi").at("waypoints");
+    if (!waypoints.is_array()) detail::fail_field("poi.waypoints", detail::printable(waypoints.dump()), "must be a list");
     Eigen::MatrixXd points(static_cast<Eigen::Index>(waypoints.size()), 3);
     for (std::size_t i = 0; i < waypoints.size(); ++i)
       for (std::size_t k = 0; k < 3; ++k)
@@ -44,7 +46,8 @@ OrbitPlan orbit_plan_from_json(const std::string& text) {
                          "must have one entry per time (" + std::to_string(plan.times.size()) + ")");
     for (std::size_t k = 0; k < plan.times.size(); ++k) {
       require_finite(plan.times[k], "times[" + std::to_string(k) + "]");
-      require_non_negative(plan.radii[k], "radii[" + std::to_string(k) + "]");  // 0: POI not visible (infeasible plan)
+      // 0: the POI is not visible there (an infeasible plan).
+      require_in_range(plan.radii[k], 0.0, limits::kMaxLength, "m", "radii[" + std::to_string(k) + "]");
       if (k > 0 && !(plan.times[k] > plan.times[k - 1]))
         detail::fail_field("times[" + std::to_string(k) + "]", plan.times[k], "times must increase");
     }
@@ -62,10 +65,23 @@ nlohmann::json ring_json(const Ring& ring) {
   return out;
 }
 
-Ring ring_from(const nlohmann::json& in) {
+Ring ring_from(const nlohmann::json& in, const std::string& field) {
+  if (!in.is_array()) detail::fail_field(field, detail::printable(in.dump()), "a ring must be a list of [x, y]");
   Ring ring;
-  for (const auto& p : in) ring.emplace_back(p.at(0).get<double>(), p.at(1).get<double>());
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const Vec2 p(in[i].at(0).get<double>(), in[i].at(1).get<double>());
+    require_coordinate(p.x(), field + "[" + std::to_string(i) + "][0]");
+    require_coordinate(p.y(), field + "[" + std::to_string(i) + "][1]");
+    ring.push_back(p);
+  }
   return ring;
+}
+
+// A per-sample list of the file: absent (empty) or `expected` entries.
+template <class T>
+void require_size(const std::vector<T>& values, std::size_t expected, const std::string& field) {
+  if (!values.empty() && values.size() != expected)
+    detail::fail_field(field, std::to_string(values.size()) + " entries", "must have " + std::to_string(expected));
 }
 
 }  // namespace
@@ -133,6 +149,7 @@ VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
       plan.planning.min_spacing = p.at("min_spacing").get<double>();
       plan.planning.max_depth = p.at("max_depth").get<int>();
       plan.planning.rate_margin = p.value("rate_margin", 0.0);  // absent in files before it existed
+      plan.planning.max_volumes = p.value("max_volumes", Planning{}.max_volumes);
       plan.planning.validate();
     }
     Discretization& samples = plan.samples;
@@ -154,17 +171,47 @@ VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
       plan.orbits.radius_rates.push_back((plan.radii[k + 1] - plan.radii[k]) / (plan.times[k + 1] - plan.times[k]));
     plan.orbits.min_feasible_radius = in.value("min_feasible_radius", 0.0);
     plan.orbits.failing_samples = in.value("failing_samples", std::vector<std::size_t>{});
-    if (in.contains("polygons"))
-      for (const auto& vp : in["polygons"]) {
+    if (in.contains("polygons")) {
+      const auto& polygons = in["polygons"];
+      for (std::size_t k = 0; k < polygons.size(); ++k) {
+        const std::string field = "polygons[" + std::to_string(k) + "]";
         std::vector<Polygon> list;
-        for (const auto& polygon : vp) {
+        for (std::size_t j = 0; j < polygons[k].size(); ++j) {
+          const auto& polygon = polygons[k][j];
+          const std::string name = field + "[" + std::to_string(j) + "]";
           Polygon p;
-          p.outer = ring_from(polygon.at("outer"));
-          for (const auto& hole : polygon.at("holes")) p.holes.push_back(ring_from(hole));
+          p.outer = ring_from(polygon.at("outer"), name + ".outer");
+          const auto& holes = polygon.at("holes");
+          for (std::size_t h = 0; h < holes.size(); ++h)
+            p.holes.push_back(ring_from(holes[h], name + ".holes[" + std::to_string(h) + "]"));
           list.push_back(std::move(p));
         }
         plan.polygons.push_back(std::move(list));
       }
+    }
+    // Every per-sample list has one entry per sample (or is absent), and holds numbers in range:
+    // figures and reports index them by sample.
+    require_size(samples.arc_lengths, n, "arc_lengths");
+    require_size(samples.depths, n, "depths");
+    require_size(plan.max_radii, n, "max_radii");
+    require_size(plan.polygons, n, "polygons");
+    if (!samples.metric.empty() && samples.metric.size() + 1 != n)
+      detail::fail_field("metric", std::to_string(samples.metric.size()) + " entries",
+                         "must have one per pair of neighbouring samples (" + std::to_string(n - 1) + ")");
+    for (std::size_t k = 0; k < samples.arc_lengths.size(); ++k)
+      require_in_range(samples.arc_lengths[k], 0.0, 1e15, "m", "arc_lengths[" + std::to_string(k) + "]");
+    for (std::size_t k = 0; k < samples.depths.size(); ++k)
+      if (samples.depths[k] < 0 || samples.depths[k] > 30)
+        detail::fail_field("depths[" + std::to_string(k) + "]", samples.depths[k], "must be in [0, 30]");
+    for (std::size_t k = 0; k < plan.max_radii.size(); ++k)
+      require_in_range(plan.max_radii[k], 0.0, limits::kMaxLength, "m", "max_radii[" + std::to_string(k) + "]");
+    for (std::size_t k = 0; k < samples.metric.size(); ++k)
+      require_in_range(samples.metric[k], 0.0, 1e30, "m^3", "metric[" + std::to_string(k) + "]");
+    require_in_range(plan.orbits.min_feasible_radius, 0.0, limits::kMaxLength, "m", "min_feasible_radius");
+    for (std::size_t k = 0; k < plan.orbits.failing_samples.size(); ++k)
+      if (plan.orbits.failing_samples[k] >= n)
+        detail::fail_field("failing_samples[" + std::to_string(k) + "]", plan.orbits.failing_samples[k],
+                           "must be a sample index in [0, " + std::to_string(n) + ")");
   } catch (const nlohmann::json::exception& error) {
     throw Error(std::string("visibility orbit plan JSON: missing or wrong field: ") + error.what());
   }

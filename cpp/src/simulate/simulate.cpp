@@ -6,6 +6,7 @@
 #include <string>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
@@ -21,7 +22,7 @@ void validate_plan(const OrbitPlan& plan, const Uav& uav) {
                        "must have one radius per time (" + std::to_string(plan.times.size()) + ")");
   for (std::size_t k = 0; k < plan.times.size(); ++k) {
     require_finite(plan.times[k], "plan.times[" + std::to_string(k) + "]");
-    require_positive(plan.radii[k], "plan.radii[" + std::to_string(k) + "]");
+    require_length(plan.radii[k], "plan.radii[" + std::to_string(k) + "]");
     if (k > 0 && !(plan.times[k] > plan.times[k - 1]))
       detail::fail_field("plan.times[" + std::to_string(k) + "]", plan.times[k], "times must increase");
   }
@@ -59,9 +60,17 @@ SimulationResult closed_loop(const OrbitPlan& plan, const Uav& uav, const Vec3& 
   uav.validate();
   control.validate();
   options.validate();
-  require_non_negative(fixed_step, "fixed_step");
-  for (int i = 0; i < 3; ++i) require_finite(x0[i], "x0[" + std::to_string(i) + "]");
+  if (fixed_step != 0.0) require_in_range(fixed_step, 1e-9, 1e9, "s (or 0: adaptive steps)", "fixed_step");
+  require_coordinate(x0[0], "x0[0]");
+  require_coordinate(x0[1], "x0[1]");
+  require_angle(x0[2], "x0[2]");
   validate_plan(plan, uav);
+  // The step count is known before the work starts: refuse what would hit the integrator's limit.
+  const double span = plan_end(plan) - plan.times.front();
+  const double smallest_step = fixed_step > 0.0 ? fixed_step : options.max_step;
+  if (span / smallest_step > 1e8)
+    detail::fail_field(fixed_step > 0.0 ? "fixed_step" : "simulation.max_step", smallest_step,
+                       "takes more than 1e8 steps over the plan's " + detail::to_text(span) + " s");
   const GuidanceGains gains = GuidanceGains::from(uav, control);
 
   const std::vector<double> boundaries = segment_boundaries(plan);
@@ -220,6 +229,11 @@ SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0,
 
 SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
                           const SimulationOptions& options, const VisibilityScene& scene, double fixed_step) {
+  uav.validate();
+  // As the planner requires (OrbitPlanner::plan): a flight plane under the ground sees nothing.
+  if (!(uav.altitude > scene.ground_level()))
+    detail::fail_field("uav.altitude", uav.altitude,
+                       "the flight plane must lie above the ground level " + detail::to_text(scene.ground_level()));
   SimulationResult result = closed_loop(plan, uav, x0, control, options, fixed_step);
   evaluate_visibility(result, uav.altitude, scene_line_of_sight(scene));
   return result;

@@ -4,26 +4,34 @@
 #include <string>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/simulate.hpp"
 
 namespace vistrack {
 
 void TuningGrid::validate() const {
   if (!(tau > 0.0 && tau <= 1.0)) detail::fail_field("grid.tau", tau, "must be in (0, 1] (Remark 6)");
-  if (!(r_max_factor > tau) || !std::isfinite(r_max_factor))
-    detail::fail_field("grid.r_max_factor", r_max_factor, "must be a finite number greater than tau");
+  if (!(r_max_factor > tau && r_max_factor <= 1e6))
+    detail::fail_field("grid.r_max_factor", r_max_factor, "must be greater than tau and at most 1e6");
   if (num_radii < 2) detail::fail_field("grid.num_radii", num_radii, "must be at least 2");
   if (num_angles < 4) detail::fail_field("grid.num_angles", num_angles, "must be at least 4");
   if (num_heading_errors < 3) detail::fail_field("grid.num_heading_errors", num_heading_errors, "must be at least 3");
+  // The map holds num_radii x num_angles doubles; each point tries every heading error.
+  const double points = static_cast<double>(num_radii) * num_angles;
+  if (points > 1e8)
+    detail::fail_field("grid.num_radii x grid.num_angles", points, "must be at most 1e8 (800 MB of map)");
+  if (points * num_heading_errors > 1e9)
+    detail::fail_field("grid.num_radii x num_angles x num_heading_errors", points * num_heading_errors,
+                       "must be at most 1e9 evaluations (about a minute)");
 }
 
 TuningResult tune_turn_rate(double radius, double radius_rate, double speed, double poi_speed, double beta,
                             Circulation direction, const TuningGrid& grid) {
-  require_positive(radius, "radius");
-  require_finite(radius_rate, "radius_rate");
-  require_positive(speed, "speed");
-  require_non_negative(poi_speed, "poi_speed");
-  require_positive(beta, "beta");
+  require_length(radius, "radius");
+  require_in_range(radius_rate, -limits::kMaxSpeed, limits::kMaxSpeed, "m/s", "radius_rate");
+  require_speed(speed, "speed");
+  require_in_range(poi_speed, 0.0, limits::kMaxSpeed, "m/s", "poi_speed");
+  require_in_range(beta, 1e-9, 1e3, "1/m", "beta");
   grid.validate();
   if (!(std::abs(radius_rate) <= speed - poi_speed))
     detail::fail_field("radius_rate", radius_rate,

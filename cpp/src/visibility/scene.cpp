@@ -12,6 +12,7 @@
 
 #include "visibility/embree_scene.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 namespace detail {
@@ -195,8 +196,8 @@ std::size_t VisibilityScene::num_triangles() const { return impl_->num_triangles
 std::uint64_t VisibilityScene::fingerprint() const { return impl_->fingerprint; }
 
 std::vector<double> VisibilityScene::first_hits(const Vec3& origin, const Points3& directions, double t_max) const {
-  for (int k = 0; k < 3; ++k) require_finite(origin[k], "origin[" + std::to_string(k) + "]");
-  if (!(t_max > 0.0)) detail::fail_field("t_max", t_max, "must be greater than 0");
+  for (int k = 0; k < 3; ++k) require_coordinate(origin[k], "origin[" + std::to_string(k) + "]");
+  if (!(t_max > 0.0)) detail::fail_field("t_max", t_max, "must be greater than 0 (+inf: no limit)");
   const auto n = static_cast<std::size_t>(directions.rows());
   std::vector<float> dirs(3 * n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -222,8 +223,8 @@ std::vector<bool> VisibilityScene::line_of_sight(const Points3& a, const Points3
   for (std::size_t k = 0; k < n; ++k)
     for (int c = 0; c < 3; ++c) {
       const auto row = static_cast<Eigen::Index>(k);
-      require_finite(a(row, c), "a[" + std::to_string(k) + "][" + std::to_string(c) + "]");
-      require_finite(b(row, c), "b[" + std::to_string(k) + "][" + std::to_string(c) + "]");
+      require_coordinate(a(row, c), "a[" + std::to_string(k) + "][" + std::to_string(c) + "]");
+      require_coordinate(b(row, c), "b[" + std::to_string(k) + "][" + std::to_string(c) + "]");
     }
   constexpr double kEndGap = 1e-3;  // m: endpoints may sit on a wall or on the ground
   std::vector<char> visible(n, 0);
@@ -267,8 +268,8 @@ std::vector<bool> VisibilityScene::line_of_sight(const Points3& a, const Points3
 }
 
 double VisibilityScene::surface_height(const Vec2& xy) const {
-  require_finite(xy.x(), "xy[0]");
-  require_finite(xy.y(), "xy[1]");
+  require_coordinate(xy.x(), "xy[0]");
+  require_coordinate(xy.y(), "xy[1]");
   const detail::EmbreeScene& s = *impl_;
   const double top = std::max(s.bounds.max.z(), s.ground_level) + 1.0;
   const float down[3] = {0.0f, 0.0f, -1.0f};
@@ -281,12 +282,13 @@ double VisibilityScene::surface_height(const Vec2& xy) const {
 }
 
 Vec3 VisibilityScene::poi_on_surface(const Vec3& g) const {
-  for (int k = 0; k < 2; ++k) require_finite(g[k], "g[" + std::to_string(k) + "]");
-  require_non_negative(g.z(), "g[2] (height of the POI above the surface)");
+  for (int k = 0; k < 2; ++k) require_coordinate(g[k], "g[" + std::to_string(k) + "]");
+  require_in_range(g.z(), 0.0, limits::kMaxLength, "m", "g[2] (height of the POI above the surface)");
   return Vec3(g.x(), g.y(), surface_height(g.head<2>()) + g.z());
 }
 
 bool VisibilityScene::inside_obstacle(const Vec3& p) const {
+  for (int k = 0; k < 3; ++k) require_coordinate(p[k], "point[" + std::to_string(k) + "]");
   const detail::EmbreeScene& s = *impl_;
   if (!s.buildings.empty()) {
     for (const Building& building : s.buildings)

@@ -11,6 +11,7 @@
 #include "visibility/embree_scene.hpp"
 #include "visibility/radial_mesh.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/visibility.hpp"
 
 namespace vistrack {
@@ -25,11 +26,11 @@ constexpr double kBandTolerance = 1e-3;  // m: a POI this close to a band face c
 
 void validate(const VisibilityScene& scene, const Vec3& g, double d_max,
               const std::optional<std::pair<double, double>>& band, const std::string& g_field) {
-  for (int k = 0; k < 3; ++k) require_finite(g[k], g_field + "[" + std::to_string(k) + "]");
-  require_positive(d_max, "d_max");
+  for (int k = 0; k < 3; ++k) require_coordinate(g[k], g_field + "[" + std::to_string(k) + "]");
+  require_length(d_max, "d_max");
   if (band) {
-    require_finite(band->first, "altitude_band[0]");
-    require_finite(band->second, "altitude_band[1]");
+    require_coordinate(band->first, "altitude_band[0]");
+    require_coordinate(band->second, "altitude_band[1]");
     if (!(band->first < band->second))
       detail::fail_field("altitude_band", "(" + detail::to_text(band->first) + ", " + detail::to_text(band->second) + ")",
                          "h_lo must be below h_hi");

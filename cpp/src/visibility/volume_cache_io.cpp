@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/visibility.hpp"
 
 namespace vistrack {
@@ -173,14 +174,15 @@ void write_volume_file(const VisibilityVolume& vv, const std::string& path) {
 }
 
 std::optional<VisibilityVolume> read_volume_file(const std::string& path) {
+  std::error_code missing;
+  if (!std::filesystem::exists(path, missing)) return std::nullopt;
+  require_regular_file(path, "VV file", "VV");
   std::ifstream file(path, std::ios::binary | std::ios::ate);
-  if (!file) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) return std::nullopt;
-    throw Error("VV cache file '" + path + "': cannot be opened for reading");
-  }
+  if (!file) throw Error("VV cache file '" + path + "': cannot be opened for reading");
   const std::streamoff size = file.tellg();
   if (size < 0) throw Error("VV cache file '" + path + "': cannot be read");
+  // A 0.1-degree VV (the finest grid) takes about 400 MB.
+  if (size > (std::streamoff(1) << 32)) throw Error("VV cache file '" + path + "': larger than 4 GiB, not a VV file");
   std::vector<char> bytes(static_cast<std::size_t>(size));
   file.seekg(0);
   file.read(bytes.data(), size);
@@ -244,7 +246,64 @@ std::optional<VisibilityVolume> read_volume_file(const std::string& path) {
       (!vv.mesh_triangle_faces.empty() &&
        (vv.mesh_triangle_faces.front() != 0 || std::uint64_t(vv.mesh_triangle_faces.back()) != num_faces)))
     payload.fail("the triangle face ranges do not cover the faces in order");
+  validate_volume(vv, "VV cache file '" + path + "'");
   return vv;
+}
+
+void validate_volume(const VisibilityVolume& vv, const std::string& where) {
+  const auto fail = [&](const std::string& field, const std::string& value, const std::string& reason) {
+    throw Error(where + ": " + field + " = " + value + ": " + reason);
+  };
+  const auto check = [&](const auto& require, double value, const std::string& field) {
+    try {
+      require(value, field);
+    } catch (const Error& error) {
+      throw Error(where + ": " + error.what());
+    }
+  };
+  for (int k = 0; k < 3; ++k) check(require_coordinate, vv.poi[k], "poi[" + std::to_string(k) + "]");
+  check(require_length, vv.d_max, "d_max");
+  if (vv.altitude_band) {
+    check(require_coordinate, vv.altitude_band->first, "altitude_band[0]");
+    check(require_coordinate, vv.altitude_band->second, "altitude_band[1]");
+    if (!(vv.altitude_band->first < vv.altitude_band->second))
+      fail("altitude_band", detail::to_text(vv.altitude_band->first) + ", " + detail::to_text(vv.altitude_band->second),
+           "h_lo must be below h_hi");
+  }
+  // The grid must be one DirectionGrid::from_resolution makes (resolution in [0.1, 30] degrees).
+  const DirectionGrid& grid = vv.grid;
+  const std::string grid_text = std::to_string(grid.num_elevation) + "x" + std::to_string(grid.num_azimuth);
+  if (grid.num_azimuth < 12 || grid.num_azimuth > 3600) fail("grid", grid_text, "not a grid of 0.1 to 30 degrees");
+  const DirectionGrid expected = DirectionGrid::from_resolution(360.0 / grid.num_azimuth);
+  if (expected.num_elevation != grid.num_elevation || expected.num_azimuth != grid.num_azimuth)
+    fail("grid", grid_text, "not a grid DirectionGrid.from_resolution makes");
+  if (vv.near.size() != grid.size() || vv.far.size() != grid.size())
+    fail("near", std::to_string(vv.near.size()) + " cells", "must have one interval per grid cell");
+  const double reach = vv.d_max * (1.0 + 1e-9);
+  for (std::size_t k = 0; k < grid.size(); ++k)
+    if (!(vv.near[k] >= 0.0 && vv.near[k] <= reach && vv.far[k] >= 0.0 && vv.far[k] <= reach))
+      fail("near/far[" + std::to_string(k) + "]", detail::to_text(vv.near[k]) + ", " + detail::to_text(vv.far[k]),
+           "a visible interval lies in [0, d_max]");
+  const Points3& v = vv.mesh.vertices;
+  for (Eigen::Index i = 0; i < v.rows(); ++i)
+    for (int k = 0; k < 3; ++k)
+      check(require_coordinate, v(i, k), "vertices[" + std::to_string(i) + "][" + std::to_string(k) + "]");
+  const Faces& f = vv.mesh.faces;
+  if (f.size() > 0 && (f.minCoeff() < 0 || f.maxCoeff() >= v.rows()))
+    fail("faces", "index " + std::to_string(f.minCoeff() < 0 ? f.minCoeff() : f.maxCoeff()),
+         "vertex index out of range [0, " + std::to_string(v.rows()) + ")");
+  // The volume a mesh of radius d_max can hold (the ball), with room for rounding.
+  const double ball = 4.2 * vv.d_max * vv.d_max * vv.d_max;
+  if (!(vv.volume >= -1e-9 * ball && vv.volume <= ball)) fail("volume", detail::to_text(vv.volume), "not in [0, 4/3 pi d_max^3]");
+  for (std::size_t k = 0; k < vv.mesh_row_sines.size(); ++k)
+    if (!(vv.mesh_row_sines[k] >= -1.0 && vv.mesh_row_sines[k] <= 1.0) ||
+        (k > 0 && !(vv.mesh_row_sines[k] > vv.mesh_row_sines[k - 1])))
+      fail("mesh_row_sines[" + std::to_string(k) + "]", detail::to_text(vv.mesh_row_sines[k]),
+           "row sines increase within [-1, 1]");
+  if (!vv.mesh_triangle_faces.empty() &&
+      vv.mesh_triangle_faces.size() != 2 * (vv.mesh_row_sines.size() - 1) * std::size_t(grid.num_azimuth) + 1)
+    fail("mesh_triangle_faces", std::to_string(vv.mesh_triangle_faces.size()) + " entries",
+         "one per triangle slot of the mesh rows, plus one");
 }
 
 std::uint64_t volume_cache_key(std::uint64_t environment_fingerprint, const Vec3& g, double d_max,

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/volume.hpp"
 
 namespace vistrack {
@@ -20,7 +21,7 @@ std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
 }  // namespace
 
 std::vector<Ring> plane_slice_rings(const TriangleMesh& mesh, double altitude) {
-  require_finite(altitude, "altitude");
+  require_coordinate(altitude, "altitude");
   const Eigen::Index n = mesh.vertices.rows();
   auto above = [&](std::int32_t v) { return mesh.vertices(v, 2) > altitude; };
   // Crossing edges -> the (up to two) crossing faces that share them.

@@ -18,6 +18,7 @@
 
 #include "volume/cgal_mesh.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/volume.hpp"
 
 namespace vistrack {
@@ -58,7 +59,7 @@ Ring to_ring(const Polyline& line, double tolerance) {
 }  // namespace
 
 std::vector<Ring> slice_rings(const TriangleMesh& mesh, double altitude) {
-  require_finite(altitude, "altitude");
+  require_coordinate(altitude, "altitude");
   std::vector<Ring> rings;
   if (mesh.faces.rows() == 0) return rings;
   const double scale = std::max(1.0, (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).norm());
@@ -182,7 +183,7 @@ std::vector<Polygon> nest_rings(const std::vector<Ring>& rings) {
 }
 
 std::optional<double> visibility_slice_height(const VisibilityVolume& vv, double altitude) {
-  require_finite(altitude, "altitude");
+  require_coordinate(altitude, "altitude");
   if (!vv.altitude_band) return altitude;
   const double gap = 1e-6 * std::max(1.0, vv.d_max);
   const auto [low, high] = *vv.altitude_band;

@@ -15,6 +15,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/volume.hpp"
 
 namespace vistrack {
@@ -84,9 +85,11 @@ Mesh to_cgal(const TriangleMesh& input, const std::string& name, const Eigen::Ma
 }  // namespace
 
 double mesh_xor_volume(const TriangleMesh& a, const TriangleMesh& b, const MeshXorOptions& options) {
-  require_positive(options.time_limit, "options.time_limit");
+  // A deadline past 1e6 s overflows the clock's duration; a rotation past 1e-3 rad is no longer a
+  // nudge (it moves a point 1 km away by a metre) and the XOR would measure the rotation.
+  require_in_range(options.time_limit, 1e-3, 1e6, "s", "options.time_limit");
   const double perturbation = options.perturbation.value_or(0.0);
-  require_non_negative(perturbation, "options.perturbation");
+  require_in_range(perturbation, 0.0, kMaxPerturbation, "rad", "options.perturbation");
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   const bool a_empty = a.faces.rows() == 0, b_empty = b.faces.rows() == 0;
   Mesh ma = a_empty ? Mesh() : to_cgal(a, "a", identity, options.check_self_intersection);

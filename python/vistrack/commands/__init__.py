@@ -6,16 +6,92 @@ from __future__ import annotations
 import argparse
 import math
 from collections.abc import Sequence
+from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, Optional
 
 import numpy as np
 
+from .. import schema
 from .._core import VistrackError
-from ..mission import Georeference, Mission, export_orbit_plan
+from ..mission import MISSION_SUFFIXES, Georeference, Mission, export_orbit_plan
 
 if TYPE_CHECKING:
     from .._core import Environment, OrbitPlan
     from ..scenario import ReportOptions
+
+
+class UsageError(VistrackError):
+    """A command line that cannot be run as given (a missing or conflicting option): exit status 2
+    (a failure while running is 1)."""
+
+
+def checked(flag: str, check: Callable[[str, Any], Any], numeric: bool = True) -> Callable[[str], Any]:
+    """An argparse type from a schema check (``schema.length``, ``schema.speed``, ...): the value's
+    range is checked while the command line is parsed (a usage error, exit 2), before any work.
+    ``numeric``: the text goes to the check as a float when it reads as one (the message then shows
+    the number), else as it is."""
+
+    def parse(text: str) -> Any:
+        value: Any = text
+        if numeric:
+            try:
+                value = float(text)
+            except ValueError:
+                pass
+        try:
+            return check(flag, value)
+        except VistrackError as error:
+            raise argparse.ArgumentTypeError(str(error)) from None
+
+    parse.__name__ = getattr(check, "__name__", "value")  # argparse names the type in some messages
+    return parse
+
+
+def length(flag: str) -> Callable[[str], float]:
+    """A length in metres, [1e-6, 1e7]."""
+    return checked(flag, schema.length)
+
+
+def speed(flag: str) -> Callable[[str], float]:
+    """A speed in m/s, [1e-6, 1e4]."""
+    return checked(flag, schema.speed)
+
+
+def coordinate(flag: str) -> Callable[[str], float]:
+    """A coordinate or an altitude in metres, |value| <= 1e7."""
+    return checked(flag, schema.coordinate)
+
+
+def number(flag: str, low: float | None = None, high: float | None = None, low_open: bool = False
+           ) -> Callable[[str], float]:
+    """A finite number within [low, high] (low excluded when ``low_open``)."""
+    return checked(flag, lambda key, value: schema.number(key, value, low=low, high=high, low_open=low_open))
+
+
+def count(flag: str, low: int, high: int) -> Callable[[str], int]:
+    """An integer within [low, high]."""
+
+    def parse(key: str, text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise schema.fail(key, text, f"must be an integer in [{low}, {high}]") from None
+        return schema.integer(key, value, low, high)
+
+    return checked(flag, parse, numeric=False)
+
+
+def output_folder(path: str | Path, flag: str = "--out") -> Path:
+    """The folder a command writes into, created now: a path that is a file, or a folder that
+    cannot be created, is an error before the work starts rather than after it."""
+    folder = Path(path)
+    if folder.exists() and not folder.is_dir():
+        raise VistrackError(f"{flag} = {path}: is a file, not a folder")
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise VistrackError(f"{flag} = {path}: cannot create the folder ({error.strerror})") from None
+    return folder
 
 
 def positive_numbers(flag: str, example: str) -> Callable[[str], list[float]]:
@@ -96,9 +172,21 @@ def export_georeference(paths: Sequence[str], georeference: Georeference | None,
     """The georeference for --export: --origin / the scenario's, else the map's (env.origin)."""
     reference = georeference or Georeference.of(env)
     if reference is None:
-        raise VistrackError(f"--export = {paths[0]}: needs a georeference; give --origin LAT,LON (or origin: "
-                            "[lat, lon] in the scenario, or a map in longitude/latitude)")
+        raise UsageError(f"--export = {paths[0]}: needs a georeference; give --origin LAT,LON (or origin: "
+                         "[lat, lon] in the scenario, or a map in longitude/latitude)")
     return reference
+
+
+def check_exports(paths: Sequence[str], georeference: Georeference | None, map_path: str | Path | None) -> None:
+    """--export checked before the work: known suffixes, and a georeference unless the map may
+    bring one (a GeoJSON map in longitude/latitude; the rest is checked once it is read)."""
+    for path in paths:
+        if Path(path).suffix.lower() not in MISSION_SUFFIXES:
+            raise UsageError(f"--export = {path}: unknown format; the suffix must be one of "
+                             + ", ".join(MISSION_SUFFIXES))
+    may_bring_origin = map_path is not None and Path(map_path).suffix.lower() in (".geojson", ".json")
+    if paths and georeference is None and not may_bring_origin:
+        export_georeference(paths, None)
 
 
 def export_plan(paths: Sequence[str], plan: OrbitPlan, georeference: Georeference | None, env: Environment | None,
@@ -126,9 +214,9 @@ def add_report_arguments(parser: Any) -> None:
     command writing trajectory.gif / report.html); read them back with :func:`report_options`."""
     parser.add_argument("--no-animation", action="store_true", help="do not write trajectory.gif")
     parser.add_argument("--no-html", action="store_true", help="do not write the interactive report.html")
-    parser.add_argument("--frames", type=int, default=None,
+    parser.add_argument("--frames", type=count("--frames", 2, 1000), default=None,
                         help="frames of trajectory.gif (default: the scenario's report.frames, else 60)")
-    parser.add_argument("--duration", type=float, default=None,
+    parser.add_argument("--duration", type=number("--duration", 0.0, 3600.0, low_open=True), default=None,
                         help="seconds trajectory.gif lasts (default: the scenario's report.duration, else 8)")
 
 
@@ -147,5 +235,5 @@ def report_options(args: argparse.Namespace, base: Optional[ReportOptions] = Non
     try:
         options.validate()
     except VistrackError as error:
-        raise VistrackError(str(error).replace("report.", "--", 1)) from None
+        raise UsageError(str(error).replace("report.", "--", 1)) from None
     return options

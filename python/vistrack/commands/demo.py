@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from ..scenario import Scenario
-from . import add_report_arguments, report_options
+from . import add_report_arguments, output_folder, report_options
 from .run import run_scenario
 
 DEFAULT_OUT = Path("vistrack-out") / "demo"
@@ -16,7 +16,7 @@ DEFAULT_OUT = Path("vistrack-out") / "demo"
 def main(args: argparse.Namespace) -> int:
     scenario = Scenario.demo()
     scenario.report = report_options(args, scenario.report)
-    return run_scenario(scenario, Path(args.out), args.cache, args.quiet)
+    return run_scenario(scenario, output_folder(args.out), args.cache, args.quiet)
 
 
 def register(subparsers: Any) -> None:

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from ..intercept import InterceptProblem
 from ..report.intercept import write_intercept
+from . import coordinate, length, number, output_folder, speed
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -21,21 +22,25 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "intercept", help="optimal Dubins interception of a target moving on a circle (Figure 7)",
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--config", type=Path, help="YAML file with any of the keys below (flags override it)")
-    parser.add_argument("--pursuer", type=float, nargs=3, metavar=("X", "Y", "PSI"), help="pursuer x y psi (m, m, rad)")
-    parser.add_argument("--rho", type=float, help="pursuer minimum turn radius (m)")
-    parser.add_argument("--pursuer-speed", dest="pursuer_speed", type=float, help="v_p (m/s)")
-    parser.add_argument("--center", type=float, nargs=2, metavar=("CX", "CY"), help="target circle centre (m)")
-    parser.add_argument("--radius", type=float, help="target circle radius (m)")
-    parser.add_argument("--target-angle", dest="target_angle0", type=float, help="alpha_i, initial target angle (rad)")
-    parser.add_argument("--target-speed", dest="target_speed", type=float, help="v_t (m/s)")
+    parser.add_argument("--pursuer", type=number("--pursuer", -1e7, 1e7), nargs=3, metavar=("X", "Y", "PSI"),
+                        help="pursuer x y psi (m, m, rad)")
+    parser.add_argument("--rho", type=length("--rho"), help="pursuer minimum turn radius (m)")
+    parser.add_argument("--pursuer-speed", dest="pursuer_speed", type=speed("--pursuer-speed"), help="v_p (m/s)")
+    parser.add_argument("--center", type=coordinate("--center"), nargs=2, metavar=("CX", "CY"),
+                        help="target circle centre (m)")
+    parser.add_argument("--radius", type=length("--radius"), help="target circle radius (m)")
+    parser.add_argument("--target-angle", dest="target_angle0", type=number("--target-angle", -1e9, 1e9),
+                        help="alpha_i, initial target angle (rad)")
+    parser.add_argument("--target-speed", dest="target_speed", type=speed("--target-speed"), help="v_t (m/s)")
     parser.add_argument("--direction", choices=["cw", "ccw"], help="target travel direction on the circle")
-    parser.add_argument("--tolerance", dest="angle_tolerance", type=float,
+    parser.add_argument("--tolerance", dest="angle_tolerance", type=number("--tolerance", 1e-15, 3.14159),
                         help="bisection tolerance on the angle (rad)")
     parser.add_argument("--out", type=Path, default=Path("intercept_out"), help="output folder (default intercept_out)")
     parser.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    output_folder(args.out)
     flags = {k: getattr(args, k) for k in ("pursuer", "rho", "pursuer_speed", "center", "radius", "target_angle0",
                                            "target_speed", "direction", "angle_tolerance")}
     problem = InterceptProblem.load(args.config, flags)

@@ -13,7 +13,19 @@ from ..plotting.orbits import figure_orbits, figure_radius
 from ..progress import Progress
 from ..report.orbits import write_orbits
 from ..saved_volumes import plan_from_volumes
-from . import add_export_arguments, export_plan, positive_numbers
+from . import (
+    UsageError,
+    add_export_arguments,
+    check_exports,
+    count,
+    export_plan,
+    length,
+    number,
+    output_folder,
+    positive_numbers,
+    speed,
+)
+from . import coordinate as coordinate_type
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -33,17 +45,25 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--from-volumes", metavar="DIR", help="plan from the saved VV files in DIR along --path, "
                    "without the map (--d-max, --resolution and --cutoff come from the files / do not apply)")
     p.add_argument("--out", default="orbits_out", help="output folder (created)")
-    p.add_argument("--poi-speed", type=float, default=poi.speed, help="v_g, m/s")
-    p.add_argument("--speed", type=float, default=uav.speed, help="UAV speed v, m/s")
-    p.add_argument("--min-turn-radius", type=float, default=uav.min_turn_radius, help="r_min, m")
-    p.add_argument("--altitude", type=float, default=uav.altitude, help="h_UAV: world z of the flight plane, m")
-    p.add_argument("--d-max", type=float, default=sensor.d_max, help="sensor range, m")
-    p.add_argument("--spacing", type=float, default=planning.spacing, help="initial VV spacing, m")
-    p.add_argument("--cutoff", type=float, default=planning.cutoff, help="d_cutoff, m^3")
-    p.add_argument("--resolution", type=float, default=planning.resolution_deg, help="VV ray grid step, degrees")
-    p.add_argument("--min-spacing", type=float, default=planning.min_spacing, help="smallest VV spacing, m")
-    p.add_argument("--max-depth", type=int, default=planning.max_depth, help="most halvings of one interval")
-    p.add_argument("--rate-margin", type=float, default=planning.rate_margin,
+    p.add_argument("--poi-speed", type=speed("--poi-speed"), default=poi.speed, help="v_g, m/s")
+    p.add_argument("--speed", type=speed("--speed"), default=uav.speed, help="UAV speed v, m/s")
+    p.add_argument("--min-turn-radius", type=length("--min-turn-radius"), default=uav.min_turn_radius, help="r_min, m")
+    p.add_argument("--altitude", type=coordinate_type("--altitude"), default=uav.altitude,
+                   help="h_UAV: world z of the flight plane, m")
+    p.add_argument("--d-max", type=length("--d-max"), default=sensor.d_max, help="sensor range, m")
+    p.add_argument("--spacing", type=length("--spacing"), default=planning.spacing, help="initial VV spacing, m")
+    p.add_argument("--cutoff", type=number("--cutoff", 0.0, 1e21, low_open=True), default=planning.cutoff,
+                   help="d_cutoff, m^3")
+    p.add_argument("--resolution", type=number("--resolution", 0.1, 30.0), default=planning.resolution_deg,
+                   help="VV ray grid step, degrees")
+    p.add_argument("--min-spacing", type=length("--min-spacing"), default=planning.min_spacing,
+                   help="smallest VV spacing, m")
+    p.add_argument("--max-depth", type=count("--max-depth", 0, 30), default=planning.max_depth,
+                   help="most halvings of one interval")
+    p.add_argument("--max-volumes", type=count("--max-volumes", 1, 10**12), default=planning.max_volumes,
+                   help="refuse plans that may need more VVs than this (worst case: about path length / "
+                        "min_spacing; ~4.7 MB each at 1 degree); default %(default)s")
+    p.add_argument("--rate-margin", type=number("--rate-margin", 0.0, 1.0), default=planning.rate_margin,
                    help="keep |dR/dt| <= (1 - margin)(v - v_g) in Algorithm 1 (default 0: Lemma 5's limit)")
     p.add_argument("--footprints", help="GeoJSON footprints drawn under the orbits (default: the GeoJSON map, or "
                    "buildings.geojson beside a mesh --map)")
@@ -56,23 +76,25 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    out = Path(args.out)
+    if not args.from_plan and (not args.path or not (args.map or args.from_volumes)):
+        raise UsageError("--path and one of --map, --from-volumes are required (or --from-plan)")
+    check_exports(args.export, args.origin, args.map)
+    out = output_folder(args.out)
     background = footprint_environment(args.map, args.footprints, args.origin)
     if args.from_plan:
         plan = read_plan(args.from_plan, "--from-plan")
         if not isinstance(plan, _core.VisibilityOrbitPlan):
             raise _core.VistrackError(f"--from-plan = {args.from_plan}: not a plan of `vistrack orbits` (no VPs)")
-        out.mkdir(parents=True, exist_ok=True)
         figure_orbits(plan, background, out / "orbits.png")
         figure_radius(plan, out / "radius.png")
         print(f"redrew {out}/orbits.png, radius.png from {args.from_plan}")
         return 0
-    if not args.path or not (args.map or args.from_volumes):
-        raise _core.VistrackError("orbits: --path and one of --map, --from-volumes are required (or --from-plan)")
     poi = _core.PoiPath.from_csv(args.path, args.poi_speed)
     uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude)
     planning = _core.Planning(spacing=args.spacing, cutoff=args.cutoff, resolution_deg=args.resolution,
-                              min_spacing=args.min_spacing, max_depth=args.max_depth, rate_margin=args.rate_margin)
+                              min_spacing=args.min_spacing, max_depth=args.max_depth, rate_margin=args.rate_margin,
+                              max_volumes=args.max_volumes)
+    _core.check_work(poi, planning)  # before the map is read
     start = time.perf_counter()
     metric = None
     if args.from_volumes:

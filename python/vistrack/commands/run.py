@@ -8,7 +8,16 @@ from pathlib import Path
 from typing import Any
 
 from ..scenario import Scenario, default_scenario_text
-from . import add_export_arguments, add_report_arguments, export_plan, report_options
+from . import (
+    UsageError,
+    add_export_arguments,
+    add_report_arguments,
+    check_exports,
+    count,
+    export_plan,
+    output_folder,
+    report_options,
+)
 
 
 def register(subparsers: Any) -> None:
@@ -23,6 +32,9 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--cache", default=None,
                         help="folder caching visibility volumes between runs (about 4 MB per 1-degree VV); "
                              "a second run with the same inputs reads them instead of ray casting")
+    parser.add_argument("--max-volumes", type=count("--max-volumes", 1, 10**12), default=None,
+                        help="allow plans that may need up to this many VVs (default: the scenario's "
+                             "planning.max_volumes, else 20000; ~4.7 MB each at 1 degree)")
     add_export_arguments(parser)
     parser.add_argument("--quiet", action="store_true", help="no progress output")
     parser.add_argument("--print-defaults", action="store_true",
@@ -64,10 +76,13 @@ def main(args: argparse.Namespace) -> int:
         print(default_scenario_text(), end="")
         return 0
     if not args.scenario:
-        raise SystemExit("vistrack run: error: a scenario file is required (or --print-defaults)")
+        raise UsageError("a scenario file is required (or --print-defaults)")
     scenario = Scenario.load(args.scenario)
     if args.origin is not None:
         scenario.origin = args.origin
+    if args.max_volumes is not None:
+        scenario.planning.max_volumes = args.max_volumes
     scenario.report = report_options(args, scenario.report)
-    out = Path(args.out) if args.out else Path("vistrack-out") / scenario.name
+    check_exports(args.export, scenario.origin, scenario.environment.path)
+    out = output_folder(args.out if args.out else Path("vistrack-out") / scenario.name)
     return run_scenario(scenario, out, args.cache, args.quiet, args.export)

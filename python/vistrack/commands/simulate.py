@@ -16,7 +16,7 @@ from ..io import load_environment, read_plan
 from ..metrics import CONVERGE_AFTER
 from ..pipeline import simulate_with_baselines, start_on_orbit
 from ..report.simulation import write_simulation
-from . import configuration
+from . import configuration, coordinate, length, number, output_folder, speed
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -29,28 +29,32 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--out", default="simulate_out", help="output folder (created)")
     p.add_argument("--map", help="city for line-of-sight evaluation: .geojson footprints or a mesh")
     p.add_argument("--up", default="z", choices=["z", "y"], help="up axis of a mesh file (y: north is -Z)")
-    p.add_argument("--speed", type=float, default=uav.speed, help="UAV speed v, m/s")
-    p.add_argument("--min-turn-radius", type=float, default=uav.min_turn_radius, help="r_min, m")
-    p.add_argument("--altitude", type=float, default=uav.altitude, help="h_UAV, m")
-    p.add_argument("--beta", type=float, default=control.beta, help="beta of the vector field")
-    p.add_argument("--k-psi", type=float, default=control.k_psi, help="heading gain k_psi")
+    p.add_argument("--speed", type=speed("--speed"), default=uav.speed, help="UAV speed v, m/s")
+    p.add_argument("--min-turn-radius", type=length("--min-turn-radius"), default=uav.min_turn_radius, help="r_min, m")
+    p.add_argument("--altitude", type=coordinate("--altitude"), default=uav.altitude, help="h_UAV, m")
+    p.add_argument("--beta", type=number("--beta", 1e-9, 1e3), default=control.beta, help="beta of the vector field, 1/m")
+    p.add_argument("--k-psi", type=number("--k-psi", 1e-9, 1e6), default=control.k_psi, help="heading gain k_psi, 1/s")
     p.add_argument("--direction", default=control.direction, choices=["ccw", "cw"], help="circulation")
     p.add_argument("--x0", type=configuration("--x0"), help="start X,Y,PSI (default: on the first orbit east of "
                    "the POI)")
-    p.add_argument("--rtol", type=float, default=options.rtol)
-    p.add_argument("--atol", type=float, default=options.atol)
-    p.add_argument("--max-step", type=float, default=options.max_step, help="s")
-    p.add_argument("--output-step", type=float, default=options.output_step, help="s")
-    p.add_argument("--fixed-step", type=float, default=0.0, help="fixed integration step, s (0: adaptive)")
-    p.add_argument("--baseline-radius", type=float, action="append", default=[],
+    p.add_argument("--rtol", type=number("--rtol", 1e-13, 1.0), default=options.rtol)
+    p.add_argument("--atol", type=number("--atol", 1e-15, 1e6), default=options.atol)
+    p.add_argument("--max-step", type=number("--max-step", 1e-9, 1e9), default=options.max_step, help="s")
+    p.add_argument("--output-step", type=number("--output-step", 1e-6, 1e9), default=options.output_step, help="s")
+    p.add_argument("--fixed-step", type=number("--fixed-step", 0.0, 1e9), default=0.0,
+                   help="fixed integration step, s (0: adaptive)")
+    p.add_argument("--baseline-radius", type=length("--baseline-radius"), action="append", default=[],
                    help="also simulate constant-radius orbits of this radius (repeatable)")
-    p.add_argument("--window", type=float, default=None, help="errors.png shows only the first WINDOW s")
-    p.add_argument("--converge-after", type=float, default=CONVERGE_AFTER, help="metrics of errors after this time, s")
+    p.add_argument("--window", type=number("--window", 0.0, 1e9, low_open=True), default=None,
+                   help="errors.png shows only the first WINDOW s")
+    p.add_argument("--converge-after", type=number("--converge-after", 0.0, 1e9), default=CONVERGE_AFTER,
+                   help="metrics of errors after this time, s")
     p.add_argument("--title", default="", help="figure title")
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    output_folder(args.out)
     plan = read_plan(args.plan, "--plan")
     uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude)
     control = _core.Control(beta=args.beta, k_psi=args.k_psi, direction=args.direction)

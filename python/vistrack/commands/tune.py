@@ -14,7 +14,7 @@ from pathlib import Path
 from ..progress import Progress
 from ..report.tune import write_tuning
 from ..tuning import tune_beta
-from . import positive_numbers
+from . import length, number, output_folder, positive_numbers, speed
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -22,22 +22,25 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "tune", help="grid search of the turn rate the guidance needs, to choose beta (Figure 9)",
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     # Figure 9 of the paper (section V.D), not the library's defaults.
-    p.add_argument("--radius", type=float, default=85.9, help="orbit radius R, m")
-    p.add_argument("--radius-rate", type=float, default=1.30, help="dR/dt, m/s")
-    p.add_argument("--speed", type=float, default=20.0, help="UAV speed v, m/s")
-    p.add_argument("--poi-speed", type=float, default=5.0, help="POI speed v_g, m/s")
-    p.add_argument("--min-turn-radius", type=float, default=50.0, help="r_min, m")
-    p.add_argument("--beta", type=float, default=0.025, help="beta for the map")
+    p.add_argument("--radius", type=length("--radius"), default=85.9, help="orbit radius R, m")
+    p.add_argument("--radius-rate", type=number("--radius-rate", -1e4, 1e4), default=1.30, help="dR/dt, m/s")
+    p.add_argument("--speed", type=speed("--speed"), default=20.0, help="UAV speed v, m/s")
+    p.add_argument("--poi-speed", type=number("--poi-speed", 0.0, 1e4), default=5.0, help="POI speed v_g, m/s")
+    p.add_argument("--min-turn-radius", type=length("--min-turn-radius"), default=50.0, help="r_min, m")
+    p.add_argument("--beta", type=number("--beta", 1e-9, 1e3), default=0.025, help="beta for the map, 1/m")
     p.add_argument("--sweep", type=positive_numbers("--sweep", "0.01,0.025,0.05"), default=None,
                    help="betas for the max-vs-beta curve (default: 30 values, log-spaced around --beta)")
-    p.add_argument("--tau", type=float, default=1.0, help="search r >= tau R (Remark 6), 0 < tau <= 1")
-    p.add_argument("--r-max-factor", type=float, default=4.0, help="search r <= factor R")
+    p.add_argument("--tau", type=number("--tau", 0.0, 1.0, low_open=True), default=1.0,
+                   help="search r >= tau R (Remark 6), 0 < tau <= 1")
+    p.add_argument("--r-max-factor", type=number("--r-max-factor", 0.0, 1e6, low_open=True), default=4.0,
+                   help="search r <= factor R")
     p.add_argument("--direction", default="ccw", choices=["ccw", "cw"])
     p.add_argument("--out", default="tune_out", help="output folder (created)")
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    output_folder(args.out)
     with Progress("beta sweep", unit="beta") as bar:
         tuning = tune_beta(args.radius, args.radius_rate, args.speed, args.poi_speed, args.min_turn_radius,
                            args.beta, args.sweep, tau=args.tau, r_max_factor=args.r_max_factor,

@@ -17,9 +17,9 @@ from vistrack.io import load_environment
 from vistrack.plotting import map_credit
 from vistrack.progress import Progress
 from vistrack.report.volumes import write_volumes
-from vistrack.visibility import poi_positions
+from vistrack.visibility import check_count, poi_positions
 
-from . import point_list
+from . import coordinate, count, length, number, output_folder, point_list
 
 DEFAULT_OUT = Path("vistrack-out") / "volumes"
 
@@ -35,11 +35,16 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     where.add_argument("--path", type=Path, help="POI path CSV (x,y[,z] per line): VVs every --spacing metres")
     where.add_argument("--points", type=point_list("--points"), help='POI positions "x,y[,z];x,y[,z];..." (z '
                        "defaults to 0.5 m above the surface); write --points=-1,2 when the first number is negative")
-    p.add_argument("--spacing", type=float, default=planning.spacing, help="metres between VVs along --path")
-    p.add_argument("--d-max", type=float, default=sensor.d_max, help="maximum viewing distance d_max (m)")
-    p.add_argument("--altitude", type=float, default=uav.altitude, help="UAV altitude h_UAV for the VPs (world z, m)")
-    p.add_argument("--band", type=float, nargs=2, metavar=("H_LO", "H_HI"), help="feasible altitude band (world z)")
-    p.add_argument("--resolution", type=float, default=planning.resolution_deg,
+    p.add_argument("--spacing", type=length("--spacing"), default=planning.spacing,
+                   help="metres between VVs along --path")
+    p.add_argument("--max-volumes", type=count("--max-volumes", 1, 10**12), default=planning.max_volumes,
+                   help="refuse more VVs than this along --path (default %(default)s; ~4.7 MB each at 1 degree)")
+    p.add_argument("--d-max", type=length("--d-max"), default=sensor.d_max, help="maximum viewing distance d_max (m)")
+    p.add_argument("--altitude", type=coordinate("--altitude"), default=uav.altitude,
+                   help="UAV altitude h_UAV for the VPs (world z, m)")
+    p.add_argument("--band", type=coordinate("--band"), nargs=2, metavar=("H_LO", "H_HI"),
+                   help="feasible altitude band (world z)")
+    p.add_argument("--resolution", type=number("--resolution", 0.1, 30.0), default=planning.resolution_deg,
                    help="angular step of the ray grid (deg)")
     p.add_argument("--out", type=Path, default=DEFAULT_OUT, help="output folder")
     p.add_argument("--save-volumes", type=Path, metavar="DIR", help="also write each whole VV as DIR/vv-NNNN.bin "
@@ -51,10 +56,15 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    output_folder(args.out)
+    if args.save_volumes is not None:
+        output_folder(args.save_volumes, "--save-volumes")
+    path = vt.PoiPath.from_csv(str(args.path), speed=1.0) if args.path is not None else None
+    if path is not None:
+        check_count(path, args.spacing, args.max_volumes)  # before the map is read
     env = load_environment(args.map, args.up)
     scene = vt.VisibilityScene(env)
-    path = vt.PoiPath.from_csv(str(args.path), speed=1.0) if args.path is not None else None
-    pois = poi_positions(scene, points=args.points, path=path, spacing=args.spacing)
+    pois = poi_positions(scene, points=args.points, path=path, spacing=args.spacing, max_volumes=args.max_volumes)
     band = tuple(args.band) if args.band else None
     with Progress("visibility volumes", not args.quiet) as bar:
         summary = write_volumes(args.out, env, scene, pois, args.d_max, args.altitude, band, args.resolution,

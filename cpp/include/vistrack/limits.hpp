@@ -1,0 +1,63 @@
+// The valid range of every numeric input, decided from the physics and from what doubles (and
+// Embree's floats) resolve, in one place. Each range is checked once, where input enters the API
+// (parameter structs' validate(), loaders, the public functions of each area), and the error says
+// the range. README.md, "Hardening", lists the same table.
+//
+//   coordinates (x, y, z of POIs, waypoints, vertices, footprints, centres, starts)  |v| <= 1e7 m
+//   lengths (rho, r_min, radii, d_max, spacings, steps, heights)                   [1e-6, 1e7] m
+//   speeds (v, v_g, pursuer, target)                                               [1e-6, 1e4] m/s
+//   angles (headings, polar angles; unwrapped headings allowed)                    |a| <= 1e9 rad
+//   times                                                                         finite
+//   volumes (d_cutoff)                                                            (0, 1e21] m^3
+//   threads                                                                        [0, 1024]
+//
+// Why: 1e7 m is a local frame of 10,000 km (any city, any flight); beyond it float32 ray tracing
+// and the orbit planner's metre-scale steps lose their meaning. A length below 1e-6 m (1 µm) or
+// a speed below 1 µm/s is below anything a vehicle or a sensor resolves, and keeps every ratio
+// (coordinate / rho, length / speed) far inside the doubles' range, so no result overflows to inf
+// or NaN. 1e4 m/s is thirty times the speed of sound. An unwrapped heading of 1e9 rad is still
+// resolved to 1e-7 rad.
+#pragma once
+
+#include <string>
+
+#include "vistrack/error.hpp"
+
+namespace vistrack::limits {
+
+inline constexpr double kMaxCoordinate = 1e7;  // m
+inline constexpr double kMinLength = 1e-6;     // m
+inline constexpr double kMaxLength = 1e7;      // m
+inline constexpr double kMinSpeed = 1e-6;      // m/s
+inline constexpr double kMaxSpeed = 1e4;       // m/s
+inline constexpr double kMaxAngle = 1e9;       // rad
+inline constexpr double kMaxVolume = 1e21;     // m^3 (kMaxLength cubed)
+inline constexpr int kMaxThreads = 1024;
+
+// "[1e-06, 1e+07] m" style text of a range, for messages.
+std::string range_text(double low, double high, const std::string& unit);
+
+}  // namespace vistrack::limits
+
+namespace vistrack {
+
+// Each throws Error "field = value: must be a finite number in [low, high] unit".
+void require_in_range(double value, double low, double high, const std::string& unit, const std::string& field);
+void require_coordinate(double value, const std::string& field);  // |v| <= 1e7 m
+void require_length(double value, const std::string& field);      // [1e-6, 1e7] m
+void require_speed(double value, const std::string& field);       // [1e-6, 1e4] m/s
+void require_angle(double value, const std::string& field);       // |a| <= 1e9 rad
+void require_threads(int value, const std::string& field);        // [0, 1024]
+
+// Every loader opens its file through this: Error "field = path: ..." for a missing path, a
+// folder or anything else that is not a regular file (a folder opens as an empty stream on
+// POSIX, which would read as "the file is empty").
+void require_regular_file(const std::string& path, const std::string& field, const std::string& kind);
+
+namespace detail {
+// Text taken from an input file, fit to quote in a message: at most 40 characters in quotes,
+// bytes outside printable ASCII as \xNN (messages stay valid UTF-8 whatever the file holds).
+std::string printable(const std::string& text);
+}  // namespace detail
+
+}  // namespace vistrack

@@ -1,0 +1,71 @@
+// The checks of vistrack/limits.hpp.
+#include "vistrack/limits.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace vistrack {
+
+std::string limits::range_text(double low, double high, const std::string& unit) {
+  std::ostringstream out;
+  out << "[" << low << ", " << high << "]" << (unit.empty() ? "" : " " + unit);
+  return out.str();
+}
+
+void require_in_range(double value, double low, double high, const std::string& unit, const std::string& field) {
+  if (!(value >= low && value <= high))  // NaN fails both
+    detail::fail_field(field, value, "must be a finite number in " + limits::range_text(low, high, unit));
+}
+
+void require_coordinate(double value, const std::string& field) {
+  require_in_range(value, -limits::kMaxCoordinate, limits::kMaxCoordinate, "m (coordinates)", field);
+}
+
+void require_length(double value, const std::string& field) {
+  require_in_range(value, limits::kMinLength, limits::kMaxLength, "m", field);
+}
+
+void require_speed(double value, const std::string& field) {
+  require_in_range(value, limits::kMinSpeed, limits::kMaxSpeed, "m/s", field);
+}
+
+void require_angle(double value, const std::string& field) {
+  require_in_range(value, -limits::kMaxAngle, limits::kMaxAngle, "rad", field);
+}
+
+void require_threads(int value, const std::string& field) {
+  if (value < 0 || value > limits::kMaxThreads)
+    detail::fail_field(field, value, "must be 0 (all cores) or a thread count in [1, " +
+                                         std::to_string(limits::kMaxThreads) + "]");
+}
+
+void require_regular_file(const std::string& path, const std::string& field, const std::string& kind) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (path.empty()) detail::fail_field(field, "''", "no " + kind + " file given");
+  if (!fs::exists(status)) detail::fail_field(field, path, "no such " + kind + " file");
+  if (fs::is_directory(status)) detail::fail_field(field, path, "is a folder, not a " + kind + " file");
+  if (!fs::is_regular_file(status)) detail::fail_field(field, path, "is not a regular " + kind + " file");
+}
+
+std::string detail::printable(const std::string& text) {
+  constexpr std::size_t kLongest = 40;
+  std::string out = "'";
+  for (std::size_t i = 0; i < text.size() && i < kLongest; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  if (text.size() > kLongest) out += "...";
+  return out + "'";
+}
+
+}  // namespace vistrack
