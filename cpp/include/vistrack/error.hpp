@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -23,6 +24,17 @@ std::string to_text(const T& value) {
   out.precision(17);
   out << value;
   return out.str();
+}
+
+// The shortest text that reads back as the same double (1e+300, not 1.0000000000000001e+300).
+inline std::string to_text(double value) {
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::ostringstream out;
+    out.precision(digits);
+    out << value;
+    if (digits == 17 || !std::isfinite(value) || std::strtod(out.str().c_str(), nullptr) == value) return out.str();
+  }
+  return {};
 }
 
 // "field = value: reason", the shape of every message about a bad input value.

@@ -102,6 +102,12 @@ void dubins_shortest_lengths(const double* q0s, const double* q1s, std::size_t n
   require_threads(threads, "threads");
   require_configuration_rows(q0s, n, "q0s");
   require_configuration_rows(q1s, n, "q1s");
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* a = q0s + 3 * i;
+    const double* b = q1s + 3 * i;
+    const double scale = std::max({std::abs(a[0]), std::abs(a[1]), std::abs(b[0]), std::abs(b[1])});
+    if (scale > limits::kMaxCoordinateOverRho * rho) detail::require_dubins_scale(scale, rho, "rho (row " + std::to_string(i) + ")");
+  }
   const bool avx2 = detail::avx2_kernel_available();
   const auto run = [&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4 * kBlock), [&](const tbb::blocked_range<std::size_t>& range) {

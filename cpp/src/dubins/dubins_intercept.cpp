@@ -30,7 +30,13 @@ DubinsPath dubins_path_to_circle(const Configuration& q0, double rho, const Targ
                                  double angle) {
   circle.validate();
   require_angle(angle, "angle");
-  return dubins_shortest_path(q0, circle.configuration(angle), rho);
+  const Configuration goal = circle.configuration(angle);
+  try {
+    detail::require_dubins_problem(q0, goal, rho);
+  } catch (const Error& error) {
+    throw Error(std::string("path to the circle's point at angle ") + detail::to_text(angle) + ": " + error.what());
+  }
+  return dubins_shortest_path(q0, goal, rho);
 }
 
 double dubins_length_to_circle(const Configuration& q0, double rho, const TargetCircle& circle,
@@ -60,6 +66,17 @@ void InterceptProblem::validate() const {
   circle.validate();
   require_angle(target_angle0, "target_angle0");
   require_in_range(angle_tolerance, 1e-15, kPi, "rad", "angle_tolerance");
+  // Every point of the circle is a goal: within the coordinate range, and the solver's scale holds
+  // for the farthest one.
+  for (int k = 0; k < 2; ++k)
+    if (!(std::abs(circle.center[k]) + circle.radius <= limits::kMaxCoordinate))
+      detail::fail_field("radius", circle.radius,
+                         "puts points of the circle outside the coordinate range [-1e7, 1e7] m (centre " +
+                             detail::to_text(circle.center[k]) + ")");
+  detail::require_dubins_scale(std::max({std::abs(pursuer.x), std::abs(pursuer.y),
+                                         std::abs(circle.center.x()) + circle.radius,
+                                         std::abs(circle.center.y()) + circle.radius}),
+                               rho);
   if (scan_samples < 16 || scan_samples > 10000000)
     detail::fail_field("scan_samples", scan_samples, "must lie in [16, 1e7]");
 }

@@ -17,7 +17,7 @@ namespace {
 using nlohmann::json;
 
 // A JSON value quoted in a message: compact, at most 40 characters.
-std::string text_of(const json& value) { return detail::printable(value.dump()); }
+std::string text_of(const json& value) { return detail::printable(value.dump(), false); }
 
 // A number, or a numeric string such as "12" or "12.5 m" as OSM tags often are; nothing when
 // the property is absent or null.
@@ -154,7 +154,7 @@ std::optional<GeodeticPoint> to_local_metres(std::vector<Building>& buildings, c
 
 // The buildings of a parsed FeatureCollection, each with the fields it came from.
 void read_features(const json& root, std::vector<Building>& buildings, std::vector<detail::BuildingSource>& sources) {
-  if (!root.is_object() || root.value("type", std::string()) != "FeatureCollection")
+  if (!root.is_object() || !root.contains("type") || root["type"] != "FeatureCollection")
     detail::fail_field("type", root.is_object() && root.contains("type") ? text_of(root["type"]) : std::string("missing"),
                        "expected a GeoJSON FeatureCollection");
   const auto features = root.find("features");

@@ -50,9 +50,9 @@ void require_regular_file(const std::string& path, const std::string& field, con
   if (!fs::is_regular_file(status)) detail::fail_field(field, path, "is not a regular " + kind + " file");
 }
 
-std::string detail::printable(const std::string& text) {
+std::string detail::printable(const std::string& text, bool quote) {
   constexpr std::size_t kLongest = 40;
-  std::string out = "'";
+  std::string out = quote ? "'" : "";
   for (std::size_t i = 0; i < text.size() && i < kLongest; ++i) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (c >= 0x20 && c < 0x7f) {
@@ -65,7 +65,7 @@ std::string detail::printable(const std::string& text) {
     }
   }
   if (text.size() > kLongest) out += "...";
-  return out + "'";
+  return quote ? out + "'" : out;
 }
 
 }  // namespace vistrack

@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
@@ -60,6 +62,18 @@ OrbitPlan constant_radius_plan(const PoiPath& poi, double radius, const Uav& uav
 double max_inscribed_radius(const std::vector<Polygon>& polygons, const Vec2& center) {
   require_coordinate(center.x(), "center[0]");
   require_coordinate(center.y(), "center[1]");
+  const auto check_ring = [](const Ring& ring, const std::string& field) {
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      if (!(std::abs(ring[i].x()) <= limits::kMaxCoordinate && std::abs(ring[i].y()) <= limits::kMaxCoordinate))
+        detail::fail_field(field + "[" + std::to_string(i) + "]",
+                           "(" + detail::to_text(ring[i].x()) + ", " + detail::to_text(ring[i].y()) + ")",
+                           "coordinates must be finite numbers in [-1e7, 1e7] m");
+  };
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    check_ring(polygons[k].outer, "polygons[" + std::to_string(k) + "].outer");
+    for (std::size_t h = 0; h < polygons[k].holes.size(); ++h)
+      check_ring(polygons[k].holes[h], "polygons[" + std::to_string(k) + "].holes[" + std::to_string(h) + "]");
+  }
   for (const Polygon& polygon : polygons)
     if (contains(polygon, center)) return distance_to_boundary(polygon, center);
   return 0.0;

@@ -31,7 +31,7 @@ OrbitPlan orbit_plan_from_json(const std::string& text) {
   }
   try {
     const auto& waypoints = in.at("poi").at("waypoints");
-    if (!waypoints.is_array()) detail::fail_field("poi.waypoints", detail::printable(waypoints.dump()), "must be a list");
+    if (!waypoints.is_array()) detail::fail_field("poi.waypoints", detail::printable(waypoints.dump(), false), "must be a list");
     Eigen::MatrixXd points(static_cast<Eigen::Index>(waypoints.size()), 3);
     for (std::size_t i = 0; i < waypoints.size(); ++i)
       for (std::size_t k = 0; k < 3; ++k)
@@ -66,7 +66,7 @@ nlohmann::json ring_json(const Ring& ring) {
 }
 
 Ring ring_from(const nlohmann::json& in, const std::string& field) {
-  if (!in.is_array()) detail::fail_field(field, detail::printable(in.dump()), "a ring must be a list of [x, y]");
+  if (!in.is_array()) detail::fail_field(field, detail::printable(in.dump(), false), "a ring must be a list of [x, y]");
   Ring ring;
   for (std::size_t i = 0; i < in.size(); ++i) {
     const Vec2 p(in[i].at(0).get<double>(), in[i].at(1).get<double>());
