@@ -57,5 +57,6 @@ void bind_orbit(pybind11::module_& m);
 void bind_guidance(pybind11::module_& m);
 void bind_ode(pybind11::module_& m);
 void bind_simulate(pybind11::module_& m);
+void bind_flight(pybind11::module_& m);  // vistrack._core.flight, bindings/bind_flight.cpp
 
 }  // namespace vistrack::bindings

@@ -11,7 +11,7 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError
 from importlib.metadata import version as _version
 
-from . import _core, dubins, mission
+from . import _core, dubins, flight, mission
 
 # By area: geometry and parameters; environment; visibility and volumes; orbits (section IV);
 # guidance, integrator and closed loop (sections V-VI).
@@ -130,6 +130,7 @@ __all__ = [
     "constant_radius_plan",
     "dubins",
     "epsilon_max",
+    "flight",
     "grid_xor_volume",
     "lambda_max",
     "lemma6_curvature_bound",

@@ -3,6 +3,7 @@
 // naming the field; input is validated once, where it enters the API.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <utility>
 
@@ -59,6 +60,48 @@ struct SimulationOptions {
   double atol = 1e-8;
   double max_step = 1.0;      // s
   double output_step = 0.1;   // s between output samples
+  void validate() const;
+};
+
+// ---- flight (issue 13): wind, the flight integrator, the paper's feedback law (5) -------------
+
+// Dryden turbulence on top of the constant wind (MIL-F-8785C, horizontal components; see
+// flight.hpp for the spectra). Units are those of the flight (SI, or the paper's nondimensional
+// units): intensity in speed units, length_scale in length units. mil_f_8785c_gusts() in
+// flight.hpp derives them from altitude and the wind speed at 20 ft.
+struct Gusts {
+  std::uint64_t seed = 0;      // the same seed gives the same gust history
+  double intensity = 1.0;      // sigma_u = sigma_v, RMS of each horizontal component (speed units)
+  double length_scale = 200.0; // L_u = L_v (length units)
+  double sample_step = 0.0;    // s between precomputed samples; 0: L / (20 V), V the airspeed
+  void validate() const;
+};
+
+// Wind the vehicle does not know: constant (east, north) plus optional Dryden gusts.
+struct Wind {
+  double east = 0.0;   // speed units
+  double north = 0.0;
+  std::optional<Gusts> gusts;
+  void validate() const;  // finite components; airspeed checks happen where the vehicle is known
+};
+
+// How fly() advances the vehicle: the paper's discrete update, or Dormand-Prince 5(4).
+enum class FlightIntegration : std::uint8_t { Discrete = 0, Continuous = 1 };
+
+struct FlightOptions {
+  FlightIntegration integration = FlightIntegration::Discrete;
+  double dt = 0.02;          // s. Discrete: the step (psi_max = v dt / R). Continuous: output
+                             // spacing and largest step.
+  double max_time = 3600.0;  // s after the start; the flight stops there unless the guidance is done
+  double rtol = 1e-9;        // continuous only
+  double atol = 1e-12;       // continuous only
+  void validate() const;
+};
+
+// Gains of the illustrative feedback law (5) of the Dubins waypoint navigation paper (section 3.1).
+struct LineFeedbackGains {
+  double g = 0.1;    // on the cross-track distance s
+  double h = 5.25;   // on its change over one law step, s_dot dt
   void validate() const;
 };
 
