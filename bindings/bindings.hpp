@@ -58,5 +58,6 @@ void bind_guidance(pybind11::module_& m);
 void bind_ode(pybind11::module_& m);
 void bind_simulate(pybind11::module_& m);
 void bind_flight(pybind11::module_& m);  // vistrack._core.flight, bindings/bind_flight.cpp
+void bind_waypoint_nav(pybind11::module_& m);  // vistrack._core.waypoint_nav
 
 }  // namespace vistrack::bindings
