@@ -3,6 +3,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -100,6 +101,42 @@ void bind_waypoint_nav(py::module_& parent) {
       py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
       "Turning point T_n over the horizon (pose C, W_n, W_{n+1}): minimises F = w_a L_a + w_s L_s over theta for "
       "the four cases; theta to 1e-12 rad.");
+  m.def(
+      "turning_points",
+      [](const Points3& poses, const Points2& w_next, const Points2& w_after, double turn_radius,
+         const Weights& weights) {
+        if (w_next.rows() != poses.rows() || w_after.rows() != poses.rows())
+          detail::fail_field("w_next.shape[0]", w_next.rows(), "poses, w_next and w_after need the same row count");
+        const auto n = static_cast<std::size_t>(poses.rows());
+        std::vector<double> theta(n), length(n);
+        std::vector<std::int32_t> cases(n);
+        Points2 point(poses.rows(), 2);
+        const FuelWeights w = fuel_weights(weights);
+        {
+          py::gil_scoped_release release;
+          for (Eigen::Index i = 0; i < poses.rows(); ++i) {
+            const TurningPoint tp = turning_point({poses(i, 0), poses(i, 1), poses(i, 2)}, w_next.row(i).transpose(),
+                                                  w_after.row(i).transpose(), turn_radius, w);
+            theta[static_cast<std::size_t>(i)] = tp.theta;
+            length[static_cast<std::size_t>(i)] = tp.length;
+            cases[static_cast<std::size_t>(i)] = static_cast<std::int32_t>(tp.turn_case);
+            point.row(i) = tp.point.transpose();
+          }
+        }
+        py::dict out;
+        out["theta"] = to_numpy(theta);
+        out["length"] = to_numpy(length);
+        out["case"] = py::array_t<std::int32_t>(static_cast<py::ssize_t>(n), cases.data());
+        out["point"] = point;
+        return out;
+      },
+      py::arg("poses"), py::arg("w_next"), py::arg("w_after"), py::arg("turn_radius"),
+      py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
+      "Batch of turning points, one thread, GIL released: poses (n, 3), w_next and w_after (n, 2) -> dict of "
+      "theta (n,), length (n,), case (n,) indexing CASES, point (n, 2).");
+  py::list case_names;
+  for (int c = 0; c < kTurnCaseCount; ++c) case_names.append(to_string(static_cast<TurnCase>(c)));
+  m.attr("CASES") = py::tuple(case_names);
   m.def(
       "horizon_path",
       [](const Pose& pose, const Vec2& w_next, const Vec2& w_after, double turn_radius, const std::string& c,

@@ -11,7 +11,7 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError
 from importlib.metadata import version as _version
 
-from . import _core, dubins, flight, mission
+from . import _core, dubins, flight, mission, waypoint_nav
 
 # By area: geometry and parameters; environment; visibility and volumes; orbits (section IV);
 # guidance, integrator and closed loop (sections V-VI).
@@ -168,6 +168,7 @@ __all__ = [
     "visibility_scene",
     "visibility_volume",
     "visibility_volumes",
+    "waypoint_nav",
     "wrap_to_pi",
     "xor_volume",
 ]

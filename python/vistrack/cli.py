@@ -14,7 +14,7 @@ from typing import Sequence
 from . import VistrackError, __version__
 
 # Order shown in --help.
-COMMANDS = ["demo", "run", "volumes", "orbits", "simulate", "tune", "intercept"]
+COMMANDS = ["demo", "run", "volumes", "orbits", "simulate", "tune", "intercept", "waypoints"]
 
 
 def build_parser() -> argparse.ArgumentParser:

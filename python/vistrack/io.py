@@ -8,6 +8,8 @@
 - JSON results (:func:`write_json`) and YAML mappings (:func:`read_yaml_mapping`)
 - GeoJSON in WGS84 of trajectories, orbit plans and missions (:func:`trajectory_geojson`,
   :func:`orbit_plan_geojson`, :func:`mission_geojson`, :func:`write_geojson`)
+- waypoint routes: CSV x,y (:func:`read_route`, :func:`write_route`); flown trajectories: CSV
+  (:func:`write_flight`)
 
 Every error names the option or key and the file: a missing or unreadable file, a file that is
 not text, or text that is not the expected format raises VistrackError.
@@ -25,13 +27,14 @@ import numpy as np
 from ._core import Environment, OrbitPlan, SimulationResult, VisibilityOrbitPlan, VistrackError
 
 if TYPE_CHECKING:
+    from ._core.flight import FlightTrajectory
     from .mission import Georeference, Mission
 
 __all__ = [
     "GEOJSON_SUFFIXES", "feature_collection", "footprint_environment", "line_feature", "load_environment",
-    "lon_lat", "mission_geojson", "orbit_plan_geojson", "point_feature", "read_plan", "read_text",
-    "read_yaml_mapping", "trajectory_geojson", "volume_files", "write_geojson", "write_json", "write_plan",
-    "write_trajectory",
+    "lon_lat", "mission_geojson", "orbit_plan_geojson", "point_feature", "read_plan", "read_route", "read_text",
+    "read_yaml_mapping", "trajectory_geojson", "volume_files", "write_flight", "write_geojson", "write_json",
+    "write_plan", "write_route", "write_trajectory",
 ]
 
 GEOJSON_SUFFIXES = (".geojson", ".json")
@@ -237,3 +240,59 @@ def write_geojson(collection: dict[str, Any], path: str | Path) -> Path:
     except OSError as error:
         raise VistrackError(f"path = {path}: cannot write the file ({error.strerror})") from None
     return path
+# ---- waypoint navigation (issue 13): routes and flown trajectories --------------------------------
+
+def read_route(path: str | Path, key: str = "route") -> np.ndarray:
+    """A route as an (n, 2) array from CSV: a header naming columns ``x`` and ``y`` (others are
+    ignored), or two numeric columns without a header; ``#`` starts a comment line. Errors name
+    ``key``, the file and the line."""
+    import csv
+
+    text = read_text(path, key)
+    lines = [(number, line) for number, line in enumerate(text.splitlines(), start=1)
+             if line.strip() and not line.lstrip().startswith("#")]
+    if not lines:
+        raise VistrackError(f"{key} = {path}: no waypoints in the file")
+    rows = list(csv.reader(line for _, line in lines))
+    header = [cell.strip().lower() for cell in rows[0]]
+    columns = (0, 1)
+    body = list(zip((n for n, _ in lines), rows))
+    if "x" in header or "y" in header:
+        if "x" not in header or "y" not in header:
+            raise VistrackError(f"{key} = {path}: the header needs both columns x and y, got {rows[0]}")
+        columns = (header.index("x"), header.index("y"))
+        body = body[1:]
+    points = []
+    for number, row in body:
+        try:
+            point = [float(row[c]) for c in columns]
+        except (IndexError, ValueError):
+            raise VistrackError(f"{key} = {path}: line {number} is not two numbers x, y: {','.join(row)!r}") from None
+        if not all(np.isfinite(point)):
+            raise VistrackError(f"{key} = {path}: line {number} has a value that is not finite: {point}")
+        points.append(point)
+    if len(points) < 2:
+        raise VistrackError(f"{key} = {path}: {len(points)} waypoint(s), at least two are needed")
+    return np.array(points, dtype=float)
+
+
+def write_route(points: np.ndarray, path: str | Path) -> Path:
+    """An (n, 2) route as CSV with the header x,y (what :func:`read_route` reads)."""
+    file = Path(path)
+    file.write_text("x,y\n" + "".join(f"{x!r},{y!r}\n" for x, y in points.tolist()), encoding="utf-8")
+    return file
+
+
+def write_flight(trajectory: "FlightTrajectory", path: str | Path) -> Path:
+    """A flown trajectory (``vistrack.flight.FlightTrajectory``) as CSV, full double precision:
+    t,x,y,psi,command,target_x,target_y,target_index,wind_east,wind_north."""
+    file = Path(path)
+    columns: list[list[Any]] = [
+        trajectory.t.tolist(), trajectory.x.tolist(), trajectory.y.tolist(), trajectory.psi.tolist(),
+        trajectory.command.tolist(), trajectory.target[:, 0].tolist(), trajectory.target[:, 1].tolist(),
+        trajectory.target_index.tolist(), trajectory.wind[:, 0].tolist(), trajectory.wind[:, 1].tolist()]
+    lines = ["t,x,y,psi,command,target_x,target_y,target_index,wind_east,wind_north\n"]
+    for row in zip(*columns):
+        lines.append(",".join(repr(v) for v in row) + "\n")
+    file.write_text("".join(lines), encoding="utf-8")
+    return file

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 import pytest
+
 import vistrack as vt
 from conftest import ticks_during
 from vistrack import flight
@@ -134,7 +135,7 @@ def test_bad_fly_arguments() -> None:
         flight.fly(square_follower(), (0.0, 0.0, 0.0), 0.8, 0.7, integration="rk4")
     with pytest.raises(vt.VistrackError, match="wind"):
         flight.fly(square_follower(), (0.0, 0.0, 0.0), 0.8, 0.7, wind=flight.Wind(east=0.9))
-    with pytest.raises(vt.VistrackError, match="start.x"):
+    with pytest.raises(vt.VistrackError, match=r"start\.x"):
         flight.fly(square_follower(), (math.nan, 0.0, 0.0), 0.8, 0.7)
     with pytest.raises(vt.VistrackError, match="turn_radius"):
         flight.fly(square_follower(), (0.0, 0.0, 0.0), 0.8, -0.7)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <utility>
 
@@ -63,8 +64,8 @@ int feasibility_edges(const HorizonProblem& P, int d1, int d2, std::array<double
   return count;
 }
 
-struct Sample {
-  double h = 0.0;
+struct Sample {  // trivially constructible, like HorizonEval
+  double h;
   HorizonEval e;
 };
 
@@ -81,6 +82,14 @@ class Solver {
   HorizonEval eval(int d1, int d2, double h) {
     ++evaluations_;
     return detail::evaluate_horizon(P_, d1, d2, h);
+  }
+  void eval_cases(double h, HorizonEval* out) {
+    evaluations_ += kTurnCaseCount;
+    detail::evaluate_horizon_cases(P_, h, out);
+  }
+  double slope(int d1, int d2, double h) {
+    ++evaluations_;
+    return detail::horizon_slope(P_, d1, d2, h);
   }
   int evaluations() const { return evaluations_; }
 
@@ -113,8 +122,8 @@ class Solver {
   // A smooth minimum of F on (a, b): dF/dh from - to +.
   void smooth_minimum(Best& best, int c, int d1, int d2, const Sample& a, const Sample& b) {
     if (!(a.e.slope < 0.0 && b.e.slope > 0.0)) return;
-    auto slope = [&](double h) { return eval(d1, d2, h).slope; };
-    const double h = detail::brent_root(slope, a.h, b.h, a.e.slope, b.e.slope, kRootTolerance);
+    auto f = [&](double h) { return slope(d1, d2, h); };
+    const double h = detail::brent_root(f, a.h, b.h, a.e.slope, b.e.slope, kRootTolerance);
     const HorizonEval e = eval(d1, d2, h);
     if (e.ok) offer(best, e.value, h, c);
   }
@@ -124,11 +133,11 @@ class Solver {
   int evaluations_ = 0;
 };
 
-struct Bracket {
-  double bound = 0.0;
-  int c = 0;
-  Sample a, b;
-  bool wraps = false;
+struct Bracket {  // samples i and i + 1 (cyclic: then b.h + 2 pi) of one case
+  double bound;
+  int c;
+  std::uint8_t i;
+  bool wraps;
 };
 
 }  // namespace
@@ -149,19 +158,19 @@ TurnCase turn_case_from_string(const std::string& text, const std::string& field
   detail::fail_field(field, text, "must be one of ccw-ccw, ccw-cw, cw-ccw, cw-cw");
 }
 
-HorizonPath horizon_path(const Configuration& pose, const Vec2& w_next, const Vec2& w_after, double R, TurnCase c,
-                         double theta, const FuelWeights& weights) {
-  validate_horizon(pose, w_next, w_after, R, weights);
-  require_finite(theta, "theta");
-  const HorizonProblem P(pose, w_next, w_after, R, weights);
+namespace {
+
+// The path of case c with heading h at W_n, in world coordinates, from a prepared problem.
+HorizonPath build_path(const HorizonProblem& P, const Configuration& pose, const Vec2& w_next, double R, TurnCase c,
+                       double h, const FuelWeights& weights) {
   const int d1 = detail::first_direction(c), d2 = detail::second_direction(c);
   HorizonPath out;
   out.turn_case = c;
-  out.theta = wrap_to_two_pi(theta);
+  out.theta = detail::theta_of_heading(h, d2);
   out.heading_at_waypoint = detail::heading_of_theta(out.theta, d2);
   out.circle_center = w_next + R * unit(out.theta);
   out.length = std::numeric_limits<double>::infinity();
-  const HorizonEval e = detail::evaluate_horizon(P, d1, d2, out.heading_at_waypoint);
+  const HorizonEval e = detail::evaluate_horizon(P, d1, d2, h);
   if (!e.ok) return out;
   out.feasible = true;
   const Vec2 start(pose.x, pose.y);
@@ -180,6 +189,17 @@ HorizonPath horizon_path(const Configuration& pose, const Vec2& w_next, const Ve
   return out;
 }
 
+}  // namespace
+
+HorizonPath horizon_path(const Configuration& pose, const Vec2& w_next, const Vec2& w_after, double R, TurnCase c,
+                         double theta, const FuelWeights& weights) {
+  validate_horizon(pose, w_next, w_after, R, weights);
+  require_finite(theta, "theta");
+  const HorizonProblem P(pose, w_next, w_after, R, weights);
+  return build_path(P, pose, w_next, R, c, detail::heading_of_theta(wrap_to_two_pi(theta), detail::second_direction(c)),
+                    weights);
+}
+
 TurningPoint turning_point(const Configuration& pose, const Vec2& w_next, const Vec2& w_after, double R,
                            const FuelWeights& weights) {
   validate_horizon(pose, w_next, w_after, R, weights);
@@ -189,34 +209,48 @@ TurningPoint turning_point(const Configuration& pose, const Vec2& w_next, const 
   const bool lipschitz = weights.arc == weights.straight;
   const double slope_bound = 2.0 * weights.straight;
 
-  // Fixed-size buffers: no allocation per solve.
+  // Fixed-size, uninitialised buffers: no allocation or clearing per solve.
   constexpr std::size_t kMaxSamples = kSamples + 8;
   std::array<Best, kTurnCaseCount> per_case{};
   std::array<Bracket, kTurnCaseCount * kMaxSamples> brackets;
   std::size_t bracket_count = 0;
-  std::array<double, kMaxSamples> hs{};
-  std::array<Sample, kMaxSamples> samples;
+  std::array<std::array<Sample, kMaxSamples>, kTurnCaseCount> samples;
+  std::array<std::size_t, kTurnCaseCount> counts{};
+  // The uniform samples, all four cases at once (they share the frame and the exit parts).
+  for (int k = 0; k < kSamples; ++k) {
+    const double h = kTwoPi * k / kSamples;
+    std::array<HorizonEval, kTurnCaseCount> e;
+    solver.eval_cases(h, e.data());
+    for (std::size_t c = 0; c < kTurnCaseCount; ++c) samples[c][counts[c]++] = {h, e[c]};
+  }
+  auto pair = [&](const Bracket& br) {  // the bracket's two samples, the second unwrapped
+    const auto& s = samples[static_cast<std::size_t>(br.c)];
+    const std::size_t n = counts[static_cast<std::size_t>(br.c)];
+    Sample a = s[br.i], b = s[(br.i + 1u) % n];
+    if (br.i + 1u == n) b.h += kTwoPi;
+    return std::make_pair(a, b);
+  };
   for (int c = 0; c < kTurnCaseCount; ++c) {
     const auto tc = static_cast<TurnCase>(c);
     const int d1 = detail::first_direction(tc), d2 = detail::second_direction(tc);
-    std::size_t count = 0;
-    for (int k = 0; k < kSamples; ++k) hs[count++] = kTwoPi * k / kSamples;
+    auto& mine = samples[static_cast<std::size_t>(c)];
+    std::size_t& count = counts[static_cast<std::size_t>(c)];
     std::array<double, 4> edges{};
     const int edge_count = feasibility_edges(P, d1, d2, edges);
-    for (int k = 0; k < edge_count; ++k) {
-      // An edge sample on each side: the feasible one carries the boundary value.
-      hs[count++] = wrap_to_two_pi(edges[static_cast<std::size_t>(k)] - 1e-12);
-      hs[count++] = wrap_to_two_pi(edges[static_cast<std::size_t>(k)] + 1e-12);
-    }
-    if (edge_count > 0) std::sort(hs.begin(), hs.begin() + static_cast<std::ptrdiff_t>(count));
+    // An edge sample on each side: the feasible one carries the boundary value.
+    for (int k = 0; k < edge_count; ++k)
+      for (double side : {-1e-12, 1e-12}) {
+        const double h = wrap_to_two_pi(edges[static_cast<std::size_t>(k)] + side);
+        mine[count++] = {h, solver.eval(d1, d2, h)};
+      }
+    if (edge_count > 0)
+      for (std::size_t i = kSamples; i < count; ++i)  // insertion into the sorted uniform samples
+        for (std::size_t j = i; j > 0 && mine[j].h < mine[j - 1].h; --j) std::swap(mine[j], mine[j - 1]);
+    for (std::size_t i = 0; i < count; ++i)
+      if (mine[i].e.ok) solver.offer(per_case[static_cast<std::size_t>(c)], mine[i].e.value, mine[i].h, c);
     for (std::size_t i = 0; i < count; ++i) {
-      const HorizonEval e = solver.eval(d1, d2, hs[i]);
-      samples[i] = {hs[i], e};
-      if (e.ok) solver.offer(per_case[static_cast<std::size_t>(c)], e.value, hs[i], c);
-    }
-    for (std::size_t i = 0; i < count; ++i) {
-      Sample a = samples[i], b = samples[(i + 1) % count];
-      if (i + 1 == count) b.h += kTwoPi;
+      const Bracket probe{0.0, c, static_cast<std::uint8_t>(i), false};
+      const auto [a, b] = pair(probe);
       if (!a.e.ok || !b.e.ok || b.h - a.h <= 0.0) continue;
       const int wrap_count = (std::abs(a.e.t - b.e.t) > kPi) + (std::abs(a.e.q - b.e.q) > kPi) +
                              (std::abs(a.e.a - b.e.a) > kPi);
@@ -230,7 +264,7 @@ TurningPoint turning_point(const Configuration& pose, const Vec2& w_next, const 
       if (lipschitz && wrap_count <= 1)
         bound = wraps ? std::min(a.e.value, b.e.value) - slope_bound * width
                       : 0.5 * (a.e.value + b.e.value) - 0.5 * slope_bound * width;
-      brackets[bracket_count++] = {bound, c, a, b, wraps};
+      brackets[bracket_count++] = {bound, c, static_cast<std::uint8_t>(i), wraps};
     }
   }
   Best best;
@@ -241,25 +275,26 @@ TurningPoint turning_point(const Configuration& pose, const Vec2& w_next, const 
   for (auto it = brackets.begin(); it != end; ++it) {
     const Bracket& br = *it;
     if (br.bound >= best.value) break;
+    const auto [a, b] = pair(br);
     const auto tc = static_cast<TurnCase>(br.c);
     const int d1 = detail::first_direction(tc), d2 = detail::second_direction(tc);
     Best& mine = per_case[static_cast<std::size_t>(br.c)];
     if (!br.wraps) {
-      solver.smooth_minimum(mine, br.c, d1, d2, br.a, br.b);
+      solver.smooth_minimum(mine, br.c, d1, d2, a, b);
     } else {
       // Wrap edges split the bracket into smooth pieces; F at an edge is the low side's limit.
       std::array<Sample, 5> cuts;
       std::size_t n_cuts = 0;
-      cuts[n_cuts++] = br.a;
+      cuts[n_cuts++] = a;
       for (int k = 0; k < 3; ++k) {
-        const double h = solver.wrap_edge(d1, d2, k, br.a, br.b);
+        const double h = solver.wrap_edge(d1, d2, k, a, b);
         if (std::isnan(h)) continue;
         const HorizonEval e = solver.eval(d1, d2, h);
         if (!e.ok) continue;
         solver.offer(mine, e.value, h, br.c);
         cuts[n_cuts++] = {h, e};
       }
-      cuts[n_cuts++] = br.b;
+      cuts[n_cuts++] = b;
       for (std::size_t i = 1; i < n_cuts; ++i)  // insertion sort of at most five
         for (std::size_t j = i; j > 0 && cuts[j].h < cuts[j - 1].h; --j) std::swap(cuts[j], cuts[j - 1]);
       for (std::size_t i = 0; i + 1 < n_cuts; ++i)
@@ -279,9 +314,7 @@ TurningPoint turning_point(const Configuration& pose, const Vec2& w_next, const 
   if (best.c < 0)
     detail::fail_field("w_after", "(" + detail::to_text(w_after.x()) + ", " + detail::to_text(w_after.y()) + ")",
                        "no horizon path exists (W_{n+1} within R of every circle through W_n)");
-  const auto tc = static_cast<TurnCase>(best.c);
-  static_cast<HorizonPath&>(out) =
-      horizon_path(pose, w_next, w_after, R, tc, detail::theta_of_heading(best.h, detail::second_direction(tc)), weights);
+  static_cast<HorizonPath&>(out) = build_path(P, pose, w_next, R, static_cast<TurnCase>(best.c), best.h, weights);
   out.evaluations = solver.evaluations();
   return out;
 }
