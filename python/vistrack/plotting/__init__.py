@@ -7,6 +7,7 @@
 - ``simulation``: Figure 10 (trajectory) and Figure 11 (errors and control)
 - ``tune``: Figure 9 (turn rate needed against beta)
 - ``intercept``: Figure 7 of the intercept paper
+- ``waypoints``: Figures 10-12 of the Dubins waypoint navigation paper, the Monte Carlo
 """
 
 from __future__ import annotations
