@@ -312,9 +312,9 @@ class Environment:
         Environment from a list of (Polygon, height) or (Polygon, height, id) (an (n, 2) array may stand for a Polygon without holes), validated as in from_geojson; optional RoadNetwork checked against every footprint.
         """
     @staticmethod
-    def from_geojson(path: typing.Any) -> Environment:
+    def from_geojson(path: typing.Any, origin: typing.Any = None) -> Environment:
         """
-        2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: height from properties.height, else building:levels x 3 m; id from properties.id, else the feature index. Coordinates in local east-north metres. Footprints are validated (simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up to 1 m^2 are taken as touching walls, and a footprint inside a building at least as tall as a building part) and normalised counter-clockwise.
+        2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: height from properties.height, else building:levels x 3 m; id from properties.id, else the feature index. Coordinates in local east-north metres, or WGS84 longitude/latitude (the GeoJSON default, as OpenStreetMap exports give; told apart by range, anything else is a VistrackError) projected to local metres by vistrack.mission.Georeference (pyproj, ellipsoidal tangent plane) about origin (lat, lon[, alt]) or a Georeference, else about the centre of the data's bounding box (rounded to 1e-7 degree); env.origin reports it. Footprints are validated (simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up to 1 m^2 are taken as touching walls, and a footprint inside a building at least as tall as a building part) and normalised counter-clockwise.
         """
     @staticmethod
     def from_mesh(path: typing.Any, up: str = 'z') -> Environment:
@@ -392,6 +392,14 @@ class Environment:
         """
         Number of obstacle triangles (the ground plane not counted).
         """
+    @property
+    def origin(self) -> tuple[float, float, float] | None:
+        """
+        Where local (0, 0, 0) lies on the Earth: (lat, lon, alt) in degrees and metres, or None when unknown. Set by from_geojson (its origin argument, or the origin a longitude/latitude file was projected about); assignable (a tuple or a vistrack.Georeference). Not part of the fingerprint.
+        """
+    @origin.setter
+    def origin(self, arg1: typing.Any) -> None:
+        ...
     @property
     def roads(self) -> RoadNetwork:
         """
@@ -691,6 +699,10 @@ class OrbitPlan:
     def to_json(self) -> str:
         """
         The plan as JSON text.
+        """
+    def to_mission(self, georeference: typing.Any, altitude: typing.Any = None, *, direction: str = 'ccw', speed: typing.Any = None, start: typing.Any = None, end: str = 'loiter', firmware: str = 'ardupilot', altitude_mode: str = 'relative') -> typing.Any:
+        """
+        The plan as an autopilot mission (vistrack.mission.Mission; save it as .plan, .waypoints or .geojson): one NAV_LOITER_TIME per segment about the POI's position at the segment's middle, with R(t) there, after a waypoint at the tangent entry of the first orbit; then a loiter over the POI's last position (end='loiter'), 'rtl' or 'none'. georeference: vistrack.Georeference or (lat, lon[, alt]); altitude (m above the ground at the origin) and speed default to the plan's UAV when it has one. A companion computer flying the vector field tracks far better: the autopilot circles fixed centres one after the other. See vistrack.mission.orbit_plan_mission.
         """
     @property
     def centers(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
