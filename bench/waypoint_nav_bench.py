@@ -158,8 +158,8 @@ def main() -> None:
         "flight_seconds": {"dwn": flight["dwn"], "wn": flight["wn"], "dwn_core_only": core},
     }
     print(f"turning points, one thread: vistrack {ours_rate:,.0f}/s wall, {ours_cpu_rate:,.0f}/s CPU; scipy "
-          f"minimize_scalar {scipy_rate:,.0f}/s wall, {scipy_cpu_rate:,.0f}/s CPU; ratio x{ours_rate / scipy_rate:,.0f} "
-          f"wall, x{ours_cpu_rate / scipy_cpu_rate:,.0f} CPU")
+          f"minimize_scalar {scipy_rate:,.0f}/s wall, {scipy_cpu_rate:,.0f}/s CPU; "
+          f"ratio x{ours_rate / scipy_rate:,.0f} wall, x{ours_cpu_rate / scipy_cpu_rate:,.0f} CPU")
     print(f"agreement on {m} horizons: same case {same_case}; "
           f"|d theta| median {report['theta_difference_median']:.1e}, p99 {report['theta_difference_p99']:.1e}, "
           f"within 1e-8: {100 * report['theta_within_1e-8']:.1f} %; "
