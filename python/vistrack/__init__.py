@@ -11,7 +11,7 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError
 from importlib.metadata import version as _version
 
-from . import _core, dubins, flight, mission, waypoint_nav
+from . import _core, dubins, flight, mission, sweep, waypoint_nav
 
 # By area: geometry and parameters; environment; visibility and volumes; orbits (section IV);
 # guidance, integrator and closed loop (sections V-VI).
@@ -163,6 +163,7 @@ __all__ = [
     "slice_mesh",
     "solve_ode",
     "steering",
+    "sweep",
     "tune_turn_rate",
     "vector_field",
     "visibility_scene",

@@ -10,6 +10,8 @@
   :func:`orbit_plan_geojson`, :func:`mission_geojson`, :func:`write_geojson`)
 - waypoint routes: CSV x,y (:func:`read_route`, :func:`write_route`); flown trajectories: CSV
   (:func:`write_flight`)
+- sweeps: road files (GeoJSON LineStrings, :func:`read_roads`) and the results table
+  (``results.csv`` + ``results.parquet``, :func:`write_results_table`, :func:`read_results_table`)
 
 Every error names the option or key and the file: a missing or unreadable file, a file that is
 not text, or text that is not the expected format raises VistrackError.
@@ -24,17 +26,18 @@ from typing import TYPE_CHECKING, Any, Optional, Union
 
 import numpy as np
 
-from ._core import Environment, OrbitPlan, SimulationResult, VisibilityOrbitPlan, VistrackError
+from ._core import Environment, OrbitPlan, RoadNetwork, SimulationResult, VisibilityOrbitPlan, VistrackError
 
 if TYPE_CHECKING:
     from ._core.flight import FlightTrajectory
     from .mission import Georeference, Mission
 
 __all__ = [
-    "GEOJSON_SUFFIXES", "feature_collection", "footprint_environment", "line_feature", "load_environment",
-    "lon_lat", "mission_geojson", "orbit_plan_geojson", "point_feature", "read_plan", "read_route", "read_text",
-    "read_yaml_mapping", "trajectory_geojson", "volume_files", "write_flight", "write_geojson", "write_json",
-    "write_plan", "write_route", "write_trajectory",
+    "GEOJSON_SUFFIXES", "append_json_line", "feature_collection", "footprint_environment", "line_feature",
+    "load_environment", "lon_lat", "mission_geojson", "orbit_plan_geojson", "point_feature", "read_plan",
+    "read_results_table", "read_roads", "read_route", "read_text", "read_yaml_mapping", "trajectory_geojson",
+    "volume_files", "write_flight", "write_geojson", "write_json", "write_plan", "write_results_table",
+    "write_route", "write_trajectory",
 ]
 
 GEOJSON_SUFFIXES = (".geojson", ".json")
@@ -296,3 +299,125 @@ def write_flight(trajectory: "FlightTrajectory", path: str | Path) -> Path:
         lines.append(",".join(repr(v) for v in row) + "\n")
     file.write_text("".join(lines), encoding="utf-8")
     return file
+
+
+# --- Sweeps (vistrack.sweep): road files, the results table ---------------------------------------
+
+ROAD_MERGE_DISTANCE = 0.5  # m: vertices of different LineStrings this close are one road node
+
+
+def read_roads(path: str | Path, key: str = "routes.roads") -> RoadNetwork:
+    """A road network from a GeoJSON file of LineString / MultiLineString features in local
+    (east, north) metres: every vertex is a node, consecutive vertices are joined by an edge, and
+    vertices closer than ``ROAD_MERGE_DISTANCE`` (lines meeting at a junction) are one node. Roads
+    meet only where they share a vertex, as in OpenStreetMap ways."""
+    import numpy as np
+    from scipy.spatial import cKDTree
+
+    text = read_text(path, key)
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as error:
+        raise VistrackError(f"{key} = {path}: not JSON ({error.msg} at line {error.lineno})") from None
+    features = data.get("features") if isinstance(data, dict) else None
+    if not isinstance(features, list):
+        raise VistrackError(f"{key} = {path}: not a GeoJSON FeatureCollection (no 'features' list)")
+    lines: list[list[tuple[float, float]]] = []
+    for i, feature in enumerate(features):
+        geometry = feature.get("geometry") if isinstance(feature, dict) else None
+        kind = geometry.get("type") if isinstance(geometry, dict) else None
+        coordinates = geometry.get("coordinates") if isinstance(geometry, dict) else None
+        if kind not in ("LineString", "MultiLineString") or not isinstance(coordinates, list):
+            raise VistrackError(f"{key} = {path}: features[{i}] is {kind!r}, not a LineString or MultiLineString")
+        for part in [coordinates] if kind == "LineString" else coordinates:
+            try:
+                line = [(float(p[0]), float(p[1])) for p in part]
+            except (TypeError, ValueError, IndexError):
+                raise VistrackError(f"{key} = {path}: features[{i}] has a position that is not [x, y]") from None
+            if len(line) < 2 or not np.isfinite(line).all():
+                raise VistrackError(f"{key} = {path}: features[{i}] needs at least two finite positions")
+            lines.append(line)
+    if not lines:
+        raise VistrackError(f"{key} = {path}: no roads in the file")
+    vertices = np.array([p for line in lines for p in line])
+    # Union-find over vertices closer than the merge distance; a node is each group's first vertex.
+    parent = list(range(len(vertices)))
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for a, b in sorted(cKDTree(vertices).query_pairs(ROAD_MERGE_DISTANCE)):
+        ra, rb = root(a), root(b)
+        parent[max(ra, rb)] = min(ra, rb)
+    node_of: dict[int, int] = {}
+    for i in range(len(vertices)):
+        node_of.setdefault(root(i), len(node_of))
+    nodes = np.array([vertices[r] for r in sorted(node_of, key=node_of.__getitem__)])
+    edges: set[tuple[int, int]] = set()
+    first = 0
+    for line in lines:
+        ids = [node_of[root(first + k)] for k in range(len(line))]
+        first += len(line)
+        edges.update((min(a, b), max(a, b)) for a, b in zip(ids, ids[1:]) if a != b)
+    return RoadNetwork(nodes, np.array(sorted(edges), dtype=np.int64).reshape(-1, 2))
+
+
+def _table_column(values: list[Any]) -> tuple[str, list[Any]]:
+    """A column's type ("bool", "int", "float" or "string") and its values, None where missing;
+    mixed or non-scalar values become text (JSON for lists and mappings)."""
+    present = [v for v in values if v is not None]
+    if present and all(isinstance(v, bool) for v in present):
+        return "bool", values
+    if all(isinstance(v, int) and not isinstance(v, bool) for v in present):
+        return ("int", values) if present else ("string", values)
+    if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in present):
+        return "float", [None if v is None else float(v) for v in values]
+    return "string", [None if v is None else v if isinstance(v, str) else json.dumps(v) for v in values]
+
+
+def write_results_table(rows: list[dict[str, Any]], columns: list[str], folder: str | Path,
+                        metadata: Optional[dict[str, Any]] = None) -> list[Path]:
+    """A sweep's table, one row per case in the given order, as ``results.csv`` (floats written
+    with every digit, missing values empty) and ``results.parquet`` (typed columns: bool, int64,
+    float64 or string; ``metadata`` kept as JSON under the schema key ``vistrack.sweep``)."""
+    import csv
+
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    root = Path(folder)
+    root.mkdir(parents=True, exist_ok=True)
+    typed = {name: _table_column([row.get(name) for row in rows]) for name in columns}
+    csv_file = root / "results.csv"
+    with csv_file.open("w", newline="", encoding="utf-8") as stream:
+        writer = csv.writer(stream)
+        writer.writerow(columns)
+        for i in range(len(rows)):
+            writer.writerow(["" if typed[c][1][i] is None else repr(typed[c][1][i]) if typed[c][0] == "float"
+                             else typed[c][1][i] for c in columns])
+    arrow_types = {"bool": pa.bool_(), "int": pa.int64(), "float": pa.float64(), "string": pa.string()}
+    table = pa.table({c: pa.array(typed[c][1], type=arrow_types[typed[c][0]]) for c in columns})
+    if metadata is not None:
+        table = table.replace_schema_metadata({"vistrack.sweep": json.dumps(metadata)})
+    parquet_file = root / "results.parquet"
+    pq.write_table(table, parquet_file)
+    return [csv_file, parquet_file]
+
+
+def read_results_table(path: str | Path) -> list[dict[str, Any]]:
+    """The rows of a ``results.parquet`` written by :func:`write_results_table`, in file order."""
+    import pyarrow.parquet as pq
+
+    if not Path(path).is_file():
+        raise VistrackError(f"results = {path}: no such file")
+    rows: list[dict[str, Any]] = pq.read_table(path).to_pylist()
+    return rows
+
+
+def append_json_line(data: Any, path: str | Path) -> None:
+    """One JSON document as one line at the end of a file (rows of a sweep as they arrive)."""
+    with Path(path).open("a", encoding="utf-8") as stream:
+        stream.write(json.dumps(data) + "\n")
