@@ -3,7 +3,8 @@ VISTRACK_BUILD_DIR names one (development without installing).
 
 conftest.py calls :func:`use_build_tree`; Dask workers started by the tests (LocalCluster
 processes, ``dask worker`` subprocesses) load this file as a preload script
-(DASK_DISTRIBUTED__WORKER__PRELOAD), so they run the same code as the test process.
+(DASK_DISTRIBUTED__WORKER__PRELOAD; --preload for `dask scheduler` and `dask worker`), so they
+run the same code as the test process.
 """
 
 from __future__ import annotations
@@ -35,6 +36,12 @@ def preload_in_dask_workers() -> None:
     """Make Dask workers started from now on (in child processes) preload this file."""
     if os.environ.get("VISTRACK_BUILD_DIR"):
         os.environ["DASK_DISTRIBUTED__WORKER__PRELOAD"] = repr([str(Path(__file__).resolve())])
+
+
+def dask_preload_arguments() -> list[str]:
+    """The `dask scheduler` / `dask worker` options that preload this file (the scheduler unpickles
+    the tasks too; the worker's --preload overrides the setting)."""
+    return ["--preload", str(Path(__file__).resolve())] if os.environ.get("VISTRACK_BUILD_DIR") else []
 
 
 use_build_tree()  # as a Dask preload script, on import

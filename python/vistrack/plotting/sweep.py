@@ -38,13 +38,15 @@ def _file_name(parameter: str) -> str:
 
 def sweep_figures(rows: Sequence[dict[str, Any]], parameters: Sequence[str], metrics: Sequence[str],
                   folder: str | Path, title: str = "sweep") -> list[Path]:
-    """Draw each parameter against each metric with numbers (or booleans) in some row; returns the
-    files written (none when no metric has a number)."""
+    """Draw each parameter that takes two values or more against each metric with numbers (or
+    booleans) in some row; returns the files written."""
     drawable = [m for m in metrics if any(_as_number(row.get(m)) is not None for row in rows)]
     files: list[Path] = []
     if not drawable:
         return files
     for parameter in parameters:
+        if len({repr(row.get(parameter)) for row in rows}) < 2:
+            continue  # a parameter that did not vary here
         for part, start in enumerate(range(0, len(drawable), MAX_PANELS)):
             chunk = drawable[start:start + MAX_PANELS]
             name = _file_name(parameter) + (f"-{part + 1}" if part else "") + ".png"
