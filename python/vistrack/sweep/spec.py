@@ -15,6 +15,7 @@ routes:                        # optional: every road route between chosen nodes
   nodes: [0, 8, 72, 80]        # or points: [[x, y], ...] (the nearest nodes), or nodes: all
   ordered: false               # true: both directions
   sample: 20                   # optional: a seeded random subset of the routes
+  height: 0.5                  # optional: the POI's height above the ground (default: none, z = 0)
 combine: grid                  # grid (every combination) or zip (i-th value of each)
 seed: 0                        # random draws and the seeds handed to cases
 metrics: [simulation.visibility_fraction, plan.*]      # columns kept (default: all)
@@ -268,10 +269,10 @@ def _metrics(data: Any, kind: CaseKind) -> tuple[str, ...]:
 def _routes(data: Any, kind: CaseKind, base: Mapping[str, Any], folder: Path, seed: int) -> dict[str, Route]:
     if not isinstance(data, Mapping):
         raise fail("routes", data, "must be a mapping (roads, nodes or points, ordered, sample)")
-    unknown = sorted(set(data) - {"roads", "nodes", "points", "ordered", "sample"})
+    unknown = sorted(set(data) - {"roads", "nodes", "points", "ordered", "sample", "height"})
     if unknown:
         raise fail(f"routes.{unknown[0]}", data[unknown[0]], "unknown key; allowed: roads, nodes, points, "
-                                                             "ordered, sample")
+                                                             "ordered, sample, height")
     if kind.route_key is None:
         raise fail("routes", dict(data), f"kind {kind.name} has no road route to vary")
     if data.get("roads") is not None:
@@ -294,6 +295,8 @@ def _routes(data: Any, kind: CaseKind, base: Mapping[str, Any], folder: Path, se
         size = integer("routes.sample", data["sample"], 1, len(pairs))
         rng = np.random.default_rng(np.random.SeedSequence(seed, spawn_key=(2,)))
         pairs = [pairs[i] for i in sorted(rng.choice(len(pairs), size, replace=False))]
+    # A mesh map's ground is geometry: a POI at z = 0 on it lies inside it; give it a height.
+    height = [] if data.get("height") is None else [number("routes.height", data["height"], low=0.0)]
     routes = {}
     xy = np.asarray(roads.nodes)
     for a, b in pairs:
@@ -301,7 +304,7 @@ def _routes(data: Any, kind: CaseKind, base: Mapping[str, Any], folder: Path, se
             path = roads.shortest_route(a, b)
         except VistrackError as error:
             raise VistrackError(f"routes: no road route from node {a} to node {b} ({error})") from None
-        routes[f"{a}-{b}"] = Route(f"{a}-{b}", [[float(xy[n, 0]), float(xy[n, 1])] for n in path])
+        routes[f"{a}-{b}"] = Route(f"{a}-{b}", [[float(xy[n, 0]), float(xy[n, 1]), *height] for n in path])
     return routes
 
 
