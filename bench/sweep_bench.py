@@ -47,7 +47,15 @@ def noop(i: int) -> int:
     return i
 
 
-def cluster_run(cases: list[vt.sweep.Case], workers: int) -> dict[str, Any]:
+def pin_to_one_core(dask_worker: Any) -> list[int]:
+    """Restrict a worker process to one core (worker i to core i): TBB inside it then runs one
+    thread, so a case is single-threaded and workers do not oversubscribe the cores."""
+    core = int(dask_worker.name) % (os.cpu_count() or 1)
+    os.sched_setaffinity(0, {core})
+    return sorted(os.sched_getaffinity(0))
+
+
+def cluster_run(cases: list[vt.sweep.Case], workers: int, pinned: bool = False) -> dict[str, Any]:
     from distributed import Client, LocalCluster
 
     began = time.perf_counter()
@@ -55,9 +63,11 @@ def cluster_run(cases: list[vt.sweep.Case], workers: int) -> dict[str, Any]:
                            dashboard_address=None, silence_logs=logging.ERROR)
     with Client(cluster) as client:
         client.wait_for_workers(workers)
+        if pinned:  # before any case: TBB reads the affinity when it starts in the worker
+            client.run(pin_to_one_core)
         client.run(lambda: __import__("vistrack.sweep"))  # the package imported in every worker
         startup = time.perf_counter() - began
-        # Per-task overhead: trivial tasks through the same scheduler, submitted as the sweep does.
+        # Per-task overhead: trivial tasks through the same scheduler.
         client.gather(client.map(noop, range(50), pure=False))  # warm up
         t0 = time.perf_counter()
         client.gather(client.map(noop, range(1000), pure=False))
@@ -67,8 +77,13 @@ def cluster_run(cases: list[vt.sweep.Case], workers: int) -> dict[str, Any]:
         wall = time.perf_counter() - t0
     cluster.close()
     busy = sum(row["run_wall_s"] for row in rows)
-    return {"rows": rows, "wall": wall, "startup": startup, "per_task": per_task,
+    return {"rows": rows, "wall": wall, "startup": startup, "per_task": per_task, "cpu": cpu_seconds(rows),
             "idle_per_case": (workers * wall - busy) / len(rows), "busy": busy}
+
+
+def cpu_seconds(rows: list[dict[str, Any]]) -> float:
+    """CPU seconds the cases used (every thread of the process running each case)."""
+    return sum(row["run_cpu_s"] for row in rows)
 
 
 def same_rows(a: list[dict[str, Any]], b: list[dict[str, Any]]) -> bool:
@@ -81,37 +96,43 @@ def same_rows(a: list[dict[str, Any]], b: list[dict[str, Any]]) -> bool:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--resolution", type=float, default=2.0, help="VV grid resolution of the cases (degrees)")
-    parser.add_argument("--no-one-worker", action="store_true", help="skip the 1-worker LocalCluster run")
+    parser.add_argument("--no-scaling", action="store_true", help="skip the one-core-per-worker runs")
     args = parser.parse_args()
     spec = bench_spec(args.resolution)
     cases = spec.cases()
-    print(f"{len(cases)} tracking cases: demo-city routes {', '.join(spec.routes)}; "
+    n = len(cases)
+    print(f"{n} tracking cases: demo-city routes {', '.join(spec.routes)}; "
           f"{args.resolution:g}-degree VVs; {os.cpu_count()} cores; load average {os.getloadavg()[0]:.1f}")
 
     t0 = time.perf_counter()
     serial = run_cases(cases, SERIAL)
     serial_wall = time.perf_counter() - t0
     failed = [row["case"] for row in serial if row["run_status"] != "ok"]
-    print(f"serial (this process):        {serial_wall:7.1f} s  {len(cases) / serial_wall:.3f} cases/s"
+    print(f"serial (this process, TBB on every core): {serial_wall:6.1f} s  {n / serial_wall:.3f} cases/s  "
+          f"{cpu_seconds(serial) / n:.2f} CPU s/case, {cpu_seconds(serial) / serial_wall:.2f} cores obtained"
           f"  (failed cases: {failed or 'none'})")
-
     two = cluster_run(cases, 2)
-    print(f"LocalCluster, 2 workers:      {two['wall']:7.1f} s  {len(cases) / two['wall']:.3f} cases/s"
+    print(f"LocalCluster, 2 workers:                  {two['wall']:6.1f} s  {n / two['wall']:.3f} cases/s  "
+          f"{two['cpu'] / n:.2f} CPU s/case, {two['cpu'] / two['wall']:.2f} cores obtained"
           f"  (+ {two['startup']:.1f} s to start the cluster)")
     print(f"speed-up, 2 workers / serial: x{serial_wall / two['wall']:.2f} "
           f"(x{serial_wall / (two['wall'] + two['startup']):.2f} counting the start-up)")
     print(f"per-task overhead: {two['per_task'] * 1e3:.2f} ms per trivial task; workers idle "
           f"{two['idle_per_case'] * 1e3:.0f} ms per case in the sweep (2 x wall - sum of case times)")
     print(f"same rows as serial: {same_rows(serial, two['rows'])}")
-
-    if not args.no_one_worker:
-        one = cluster_run(cases, 1)
-        print(f"LocalCluster, 1 worker:       {one['wall']:7.1f} s  {len(cases) / one['wall']:.3f} cases/s"
-              f"  (same rows: {same_rows(serial, one['rows'])})")
-        rate1, rate2 = len(cases) / one["wall"], len(cases) / two["wall"]
-        print(f"scaling: {rate1:.3f} -> {rate2:.3f} cases/s from 1 to 2 workers (x{rate2 / rate1:.2f}); "
-              f"mean case {one['busy'] / len(cases):.2f} s alone on a worker, "
-              f"{two['busy'] / len(cases):.2f} s with two workers on {os.cpu_count()} cores")
+    if args.no_scaling:
+        return
+    # The scaling model: one core per worker (TBB single-threaded inside), 1 and 2 workers.
+    one_core = cluster_run(cases, 1, pinned=True)
+    two_cores = cluster_run(cases, 2, pinned=True)
+    r1, r2 = n / one_core["wall"], n / two_cores["wall"]
+    print(f"one core per worker: 1 worker {one_core['wall']:.1f} s ({r1:.3f} cases/s, "
+          f"{one_core['cpu'] / one_core['wall']:.2f} cores obtained), 2 workers {two_cores['wall']:.1f} s "
+          f"({r2:.3f} cases/s, {two_cores['cpu'] / two_cores['wall']:.2f} cores obtained): x{r2 / r1:.2f} from 1 "
+          f"to 2 workers; {two_cores['cpu'] / n:.2f} CPU s/case; same rows: "
+          f"{same_rows(serial, one_core['rows']) and same_rows(serial, two_cores['rows'])}")
+    print(f"TBB inside one case: serial on every core is x{one_core['wall'] / serial_wall:.2f} faster than "
+          f"on one core (mean case {one_core['busy'] / n:.2f} s on one core, {serial_wall / n:.2f} s on all)")
 
 
 if __name__ == "__main__":

@@ -31,7 +31,7 @@ from .spec import Case, SweepSpec
 __all__ = ["SERIAL", "SweepResult", "metric_columns", "run", "run_case", "run_cases"]
 
 SERIAL = "serial"  # scheduler value: run the cases one by one in this process, without Dask
-RUN_COLUMNS = ("run_status", "run_error", "run_worker", "run_wall_s", "run_seed")
+RUN_COLUMNS = ("run_status", "run_error", "run_worker", "run_wall_s", "run_cpu_s", "run_seed")
 SUBMIT_WINDOW = 2000  # cases waiting on the scheduler at once (bounds its memory on huge sweeps)
 Row = dict[str, Any]
 
@@ -62,7 +62,7 @@ class SweepResult:
 def run_case(case: Case) -> Row:
     """Run one case and return its row: parameters, the kept metrics, ``run_`` metadata. Never
     raises for a bad case: the error goes into the row."""
-    began = time.perf_counter()
+    began, cpu = time.perf_counter(), time.process_time()  # CPU of every thread of the process
     resources = current_resources()
     row: Row = {"case": case.index, **case.parameters}
     try:
@@ -76,7 +76,8 @@ def run_case(case: Case) -> Row:
         status, error, meta = "failed", _describe(exc), {}
     resources.cases_run += 1
     row.update({"run_status": status, "run_error": error, "run_worker": _worker_name(),
-                "run_wall_s": time.perf_counter() - began, "run_seed": case.seed})
+                "run_wall_s": time.perf_counter() - began, "run_cpu_s": time.process_time() - cpu,
+                "run_seed": case.seed})
     row.update({f"run_{key}": value for key, value in meta.items()})
     return row
 
@@ -207,7 +208,8 @@ def _stream(client: Any, cases: list[Case]) -> Iterator[Row]:
         except Exception as error:  # the task itself died (its worker lost or killed...)
             case = by_key[future.key]
             row = {"case": case.index, **case.parameters, "run_status": "failed",
-                   "run_error": _describe(error), "run_worker": None, "run_wall_s": None, "run_seed": case.seed}
+                   "run_error": _describe(error), "run_worker": None, "run_wall_s": None, "run_cpu_s": None,
+                   "run_seed": case.seed}
         del by_key[future.key]
         future.release()
         for more in submit(1):

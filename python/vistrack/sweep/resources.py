@@ -2,9 +2,11 @@
 (their VV caches), kept for every case the worker runs.
 
 An environment is keyed by its map file's content hash (SHA-256; the demo city by name), so two
-paths to the same file share one environment and an edited file gets a new one. A planner is
-keyed by (map, sensor, VV cache folder): one Embree scene and one set of VV caches per
-(map, sensor) per worker thread (one thread per worker by default). On a Dask worker the
+paths to the same file share one environment and an edited file gets a new one. A planner (its
+Embree scene, 2-20 ms to build on the demo city and Charlotte, and its VV cache) is keyed by the
+map, the sensor, the VV cache folder and what places the VVs (see :meth:`Resources.planner`):
+cases that differ only in the UAV, the control or the simulation share one per worker thread (one
+thread per worker by default). On a Dask worker the
 worker plugin :class:`vistrack.sweep.plugin.SweepPlugin` holds them; a serial sweep uses one
 :class:`Resources` in the calling process.
 """
@@ -15,7 +17,7 @@ import hashlib
 import sys
 import threading
 from pathlib import Path
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Hashable, Optional
 
 from .._core import Environment, OrbitPlanner, Sensor
 
@@ -24,9 +26,10 @@ __all__ = ["PLANNER_VOLUME_LIMIT", "PLUGIN_NAME", "Resources", "current_resource
 
 PLUGIN_NAME = "vistrack-sweep"
 
-# A planner holding more VVs than this is replaced by a fresh one on the same environment, which
-# bounds a worker's memory over long route sweeps (a 1-degree VV holds a few MB).
+# A planner holding more VVs than this is replaced by a fresh one on the same environment, and a
+# worker keeps at most MAX_PLANNERS of them: this bounds its memory (a 1-degree VV holds a few MB).
 PLANNER_VOLUME_LIMIT = 600
+MAX_PLANNERS = 4
 
 
 def file_hash(path: str | Path) -> str:
@@ -75,19 +78,30 @@ class Resources:
                 self.environments_built += 1
             return env
 
-    def planner(self, key: tuple[str, ...], env: Environment, sensor: Sensor,
-                cache_dir: Optional[Path] = None) -> OrbitPlanner:
-        """The orbit planner on ``env`` (map ``key``) for this sensor and VV cache folder, one per
-        thread (a planner takes calls from one thread at a time)."""
+    def planner(self, key: tuple[str, ...], env: Environment, sensor: Sensor, cache_dir: Optional[Path] = None,
+                share: Hashable = None) -> OrbitPlanner:
+        """The orbit planner on ``env`` (map ``key``) for this sensor, VV cache folder and ``share``
+        key, one per thread (a planner takes calls from one thread at a time).
+
+        A planner's in-memory VV cache finds a VV by its POI position to the micrometre, so a VV
+        left by another case at a position a rounding error away would be used as is, and the
+        case's numbers would depend on which cases ran before it on this worker (in the last
+        digits). Cases share a planner only when ``share`` is equal: the caller makes it name
+        everything that places the VVs (the POI path, the discretization), so shared VVs sit at
+        bit-identical positions and every case gets exactly what it would get alone. At most
+        ``MAX_PLANNERS`` planners are kept (least recently used dropped).
+        """
         band = sensor.altitude_band
         planner_key = (key, sensor.d_max, None if band is None else tuple(band), str(cache_dir or ""),
-                       threading.get_ident())
+                       threading.get_ident(), share)
         with self._lock:
-            planner = self._planners.get(planner_key)
+            planner = self._planners.pop(planner_key, None)
             if planner is None or planner.cached_volumes > PLANNER_VOLUME_LIMIT:
                 planner = OrbitPlanner(env, sensor, "" if cache_dir is None else str(cache_dir))
-                self._planners[planner_key] = planner
                 self.planners_built += 1
+            self._planners[planner_key] = planner  # most recently used last
+            while len(self._planners) > MAX_PLANNERS:
+                self._planners.pop(next(iter(self._planners)))
             return planner
 
     def stats(self) -> dict[str, int]:

@@ -14,6 +14,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Mapping
 
+import numpy as np
+
 from .._core import RoadNetwork
 from ..pipeline import run as run_pipeline
 from ..scenario import Scenario
@@ -75,7 +77,12 @@ def _run(data: dict[str, Any], context: CaseContext) -> CaseOutput:
     spec = scenario.environment
     key = context.resources.map_key(spec.kind, spec.path, spec.up)
     env = context.resources.environment(key, spec.load)
-    planner = context.resources.planner(key, env, scenario.sensor, context.cache_dir)
+    # VVs are shared between cases with the same POI path and discretization (Resources.planner).
+    poi = scenario.poi.build(env)
+    p = scenario.planning
+    share = (np.asarray(poi.waypoints).tobytes(), poi.speed, p.resolution_deg, p.spacing, p.min_spacing,
+             p.max_depth, p.cutoff)
+    planner = context.resources.planner(key, env, scenario.sensor, context.cache_dir, share)
     result = run_pipeline(scenario, environment=env, planner=planner, metric_spacings=())
     metrics = dict(result.metrics)
     for volatile in ("scenario", "timings_s", "volume_cache"):
