@@ -1,7 +1,8 @@
 """Summary figures of a sweep: each varied parameter against each metric.
 
 One PNG per parameter (``figures/<parameter>.png``), one panel per metric: every successful case
-as a dot, the mean over the other parameters' values as a line, failed cases as red crosses along
+as a dot, joined by a line per value of the other varied parameter when there is one (with at most
+MAX_GROUPS values), else by the mean over the other parameters; failed cases as red crosses along
 the bottom. Numeric parameters are drawn on a numeric axis, others (routes, directions, maps) as
 categories in sweep order. Booleans count as 0/1; text metrics are not drawn.
 """
@@ -20,6 +21,7 @@ from .common import pyplot, save_figure
 __all__ = ["MAX_PANELS", "sweep_figures"]
 
 MAX_PANELS = 12  # metrics per figure; further metrics go into <parameter>-2.png, ...
+MAX_GROUPS = 8  # one line per value of the other parameter up to this many values
 
 
 def _numeric(value: Any) -> bool:
@@ -47,14 +49,18 @@ def sweep_figures(rows: Sequence[dict[str, Any]], parameters: Sequence[str], met
     for parameter in parameters:
         if len({repr(row.get(parameter)) for row in rows}) < 2:
             continue  # a parameter that did not vary here
+        others = [p for p in parameters if p != parameter and len({repr(row.get(p)) for row in rows}) > 1]
+        group = others[0] if len(others) == 1 and len({repr(row.get(others[0])) for row in rows}) <= MAX_GROUPS \
+            else None
         for part, start in enumerate(range(0, len(drawable), MAX_PANELS)):
             chunk = drawable[start:start + MAX_PANELS]
             name = _file_name(parameter) + (f"-{part + 1}" if part else "") + ".png"
-            files.append(_figure(rows, parameter, chunk, Path(folder) / name, title))
+            files.append(_figure(rows, parameter, chunk, Path(folder) / name, title, group))
     return files
 
 
-def _figure(rows: Sequence[dict[str, Any]], parameter: str, metrics: Sequence[str], path: Path, title: str) -> Path:
+def _figure(rows: Sequence[dict[str, Any]], parameter: str, metrics: Sequence[str], path: Path, title: str,
+            group: str | None) -> Path:
     plt = pyplot()
     values = [row.get(parameter) for row in rows]
     numeric_axis = all(_numeric(v) for v in values)
@@ -72,11 +78,22 @@ def _figure(rows: Sequence[dict[str, Any]], parameter: str, metrics: Sequence[st
     for ax, metric in zip(axes.flat, metrics):
         y = np.array([_as_number(row.get(metric)) if good else None for row, good in zip(rows, ok)], dtype=float)
         have = ~np.isnan(y)
-        ax.plot(x[have], y[have], "o", ms=4, alpha=0.6, color="tab:blue")
-        centres = np.unique(x[have])
-        if len(centres) > 1:
-            ax.plot(centres, [y[have][x[have] == c].mean() for c in centres], "-", color="tab:blue", lw=1.2,
-                    label="mean over the other parameters")
+        if group is not None:
+            keys = [repr(row.get(group)) for row in rows]
+            for colour, key in enumerate(dict.fromkeys(keys)):
+                mine = have & np.array([k == key for k in keys])
+                order = np.argsort(x[mine], kind="stable")
+                value = rows[keys.index(key)].get(group)
+                ax.plot(x[mine][order], y[mine][order], "o-", ms=4, lw=1.2, color=f"C{colour}",
+                        label=f"{group} = {value}")
+        else:
+            ax.plot(x[have], y[have], "o", ms=4, alpha=0.6, color="tab:blue")
+            centres = np.unique(x[have])
+            if len(centres) > 1 and len(centres) < have.sum():
+                ax.plot(centres, [y[have][x[have] == c].mean() for c in centres], "-", color="tab:blue", lw=1.2,
+                        label="mean over the other parameters")
+            elif len(centres) > 1:
+                ax.plot(centres, [y[have][x[have] == c].mean() for c in centres], "-", color="tab:blue", lw=1.2)
         if (~ok).any():
             bottom = np.nanmin(y) if have.any() else 0.0
             ax.plot(x[~ok], np.full((~ok).sum(), bottom), "x", color="red", ms=7, label=f"failed ({(~ok).sum()})")
