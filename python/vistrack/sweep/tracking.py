@@ -28,7 +28,7 @@ __all__ = ["TRACKING"]
 _SOURCES = {"environment": ("demo", "geojson", "mesh"), "poi": ("path", "waypoints", "nodes", "route")}
 
 _METRICS = (
-    "environment", "environment_triangles", "environment_max_height_m",
+    "environment", "environment_triangles", "environment_max_height_m", "origin",
     "poi.length_m", "poi.duration_s", "poi.speed_mps",
     "plan.samples", "plan.feasible", "plan.infeasibility", "plan.initial_radius_m", "plan.final_radius_m",
     "plan.min_radius_m", "plan.max_radius_m", "plan.min_feasible_radius_m", "plan.max_metric_m3", "plan.cutoff_m3",
@@ -74,9 +74,11 @@ def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
 
 def _run(data: dict[str, Any], context: CaseContext) -> CaseOutput:
     scenario = _scenario(data, context.folder)
-    spec = scenario.environment
-    key = context.resources.map_key(spec.kind, spec.path, spec.up)
-    env = context.resources.environment(key, spec.load)
+    spec, origin = scenario.environment, scenario.origin
+    # The origin places a WGS84 GeoJSON map in the local frame: part of the map's key.
+    where = "" if origin is None else repr((origin.lat, origin.lon, origin.alt))
+    key = context.resources.map_key(spec.kind, spec.path, spec.up, where)
+    env = context.resources.environment(key, lambda: spec.load(origin))
     # VVs are shared between cases with the same POI path and discretization (Resources.planner).
     poi = scenario.poi.build(env)
     p = scenario.planning
@@ -93,7 +95,8 @@ def _run(data: dict[str, Any], context: CaseContext) -> CaseOutput:
 
 
 def _roads(base: Mapping[str, Any], folder: Path) -> RoadNetwork:
-    return _scenario(base, folder).environment.load().roads
+    scenario = _scenario(base, folder)
+    return scenario.environment.load(scenario.origin).roads
 
 
 TRACKING = register_kind(CaseKind(
