@@ -97,6 +97,9 @@ def run(spec: Union[SweepSpec, str, Path, Mapping[str, Any]], scheduler: Optiona
         spec = SweepSpec.load(spec) if isinstance(spec, (str, Path)) else SweepSpec.from_dict(spec)
     if n_workers is not None and (isinstance(n_workers, bool) or not isinstance(n_workers, int) or n_workers < 1):
         raise VistrackError(f"n_workers = {n_workers!r}: must be a positive integer")
+    if n_workers is not None and scheduler is not None:
+        raise VistrackError(f"n_workers = {n_workers}: only applies to a LocalCluster (scheduler=None), "
+                            f"not to scheduler = {scheduler!r}")
     folder = Path(out) if out is not None else spec.out or Path("vistrack-out") / spec.name
     folder.mkdir(parents=True, exist_ok=True)
     stream = folder / "rows.jsonl"
