@@ -5,7 +5,9 @@ The cases are 16 road routes of the demo city drawn with a fixed seed (each need
 so no case borrows another's cache). Prints the speed-up, the cluster's start-up time, the
 per-task overhead (trivial tasks through the same scheduler, and the time workers sat idle per
 case in the sweep), that both runs give the same rows, and cases per second against the number
-of workers (1 and 2 here) for the scaling note.
+of workers (1 and 2 here) for the scaling note. The machine's other load shows in "cores
+obtained" (CPU seconds over wall seconds); the serial run's CPU per thread gives what an idle
+machine would do.
 
     VISTRACK_BUILD_DIR=build/dev python3 bench/sweep_bench.py [--resolution 2] [--no-one-worker]
 """
@@ -16,6 +18,7 @@ import argparse
 import logging
 import os
 import sys
+import threading
 import time
 from pathlib import Path
 from typing import Any
@@ -86,6 +89,16 @@ def cpu_seconds(rows: list[dict[str, Any]]) -> float:
     return sum(row["run_cpu_s"] for row in rows)
 
 
+def thread_cpu() -> dict[int, float]:
+    """CPU seconds of every thread of this process (Linux /proc), by native thread id."""
+    tick = os.sysconf("SC_CLK_TCK")
+    times = {}
+    for tid in os.listdir("/proc/self/task"):
+        fields = Path(f"/proc/self/task/{tid}/stat").read_text().rsplit(")", 1)[1].split()
+        times[int(tid)] = (int(fields[11]) + int(fields[12])) / tick  # utime + stime
+    return times
+
+
 def same_rows(a: list[dict[str, Any]], b: list[dict[str, Any]]) -> bool:
     def strip(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
         return [{k: v for k, v in row.items() if not k.startswith("run_")} for row in rows]
@@ -104,13 +117,20 @@ def main() -> None:
     print(f"{n} tracking cases: demo-city routes {', '.join(spec.routes)}; "
           f"{args.resolution:g}-degree VVs; {os.cpu_count()} cores; load average {os.getloadavg()[0]:.1f}")
 
-    t0 = time.perf_counter()
+    before, t0 = thread_cpu(), time.perf_counter()
     serial = run_cases(cases, SERIAL)
-    serial_wall = time.perf_counter() - t0
+    serial_wall, after = time.perf_counter() - t0, thread_cpu()
+    main_cpu = after[threading.get_native_id()] - before.get(threading.get_native_id(), 0.0)
+    pool_cpu = sum(v - before.get(k, 0.0) for k, v in after.items() if k != threading.get_native_id())
     failed = [row["case"] for row in serial if row["run_status"] != "ok"]
     print(f"serial (this process, TBB on every core): {serial_wall:6.1f} s  {n / serial_wall:.3f} cases/s  "
           f"{cpu_seconds(serial) / n:.2f} CPU s/case, {cpu_seconds(serial) / serial_wall:.2f} cores obtained"
           f"  (failed cases: {failed or 'none'})")
+    # On an idle machine the serial run takes about the main thread's CPU time (it is busy
+    # throughout, alone or beside TBB's threads) and 2 workers about the total CPU over 2 cores.
+    print(f"  serial CPU by thread: main {main_cpu:.2f} s, TBB pool {pool_cpu:.2f} s: on an idle {os.cpu_count()}-core "
+          f"machine serial ~{main_cpu:.1f} s, 2 workers >= {(main_cpu + pool_cpu) / 2:.1f} s "
+          f"(speed-up <= x{2 * main_cpu / (main_cpu + pool_cpu):.2f})")
     two = cluster_run(cases, 2)
     print(f"LocalCluster, 2 workers:                  {two['wall']:6.1f} s  {n / two['wall']:.3f} cases/s  "
           f"{two['cpu'] / n:.2f} CPU s/case, {two['cpu'] / two['wall']:.2f} cores obtained"
