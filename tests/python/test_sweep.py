@@ -20,7 +20,7 @@ import yaml
 import vistrack as vt
 from build_tree import dask_preload_arguments
 from vistrack.cli import main
-from vistrack.io import read_results_table, read_roads, write_results_table
+from vistrack.io import read_results_table, read_roads, read_route, write_results_table
 from vistrack.sweep import SERIAL, SweepSpec
 from vistrack.sweep.kinds import flatten
 
@@ -407,3 +407,58 @@ def test_route_sweep_equals_each_route_alone(tmp_path: Path) -> None:
         assert row["poi.length_m"] == pytest.approx(np.sum(np.hypot(*np.diff(points, axis=0).T)))
     assert result.workers["serial"]["environments_built"] <= 1
     assert result.workers["serial"]["planners_built"] == 3
+
+
+# --- the waypoints kind (vt.waypoint_nav) ---------------------------------------------------------------
+
+
+def test_waypoint_sweep_equals_fly(tmp_path: Path) -> None:
+    route_file = REPO / "examples" / "waypoints_paper.csv"
+    spec = SweepSpec.from_dict({"name": "wp", "kind": "waypoints",
+                                "base": {"route": str(route_file), "wind": {"east": 0.0, "north": 0.08}},
+                                "parameters": {"method": ["dwn", "wn"], "turn_radius": [0.7, -1.0]}})
+    result = vt.sweep.run(spec, SERIAL, out=tmp_path, figures=False)
+    assert [row["run_status"] for row in result.rows] == ["ok", "failed", "ok", "failed"]
+    assert "turn_radius = -1.0" in result.rows[1]["run_error"]
+    route = read_route(route_file)
+    for row in (result.rows[0], result.rows[2]):
+        flight = vt.waypoint_nav.fly(route, method=row["method"], wind=vt.flight.Wind(east=0.0, north=0.08))
+        expected = {k: v for k, v in flight.metrics().items() if not isinstance(v, list)}
+        assert {k: row[k] for k in expected} == expected
+        assert row["route_length"] == pytest.approx(np.sum(np.hypot(*np.diff(route, axis=0).T)))
+        assert row["path_ratio"] == pytest.approx(flight.path_length / row["route_length"])
+    assert result.rows[0]["label"] == "DWN" and result.rows[2]["label"] == "WN R_WP=1R"
+
+
+def test_waypoint_sweep_pairs_methods_on_seeded_random_routes(tmp_path: Path) -> None:
+    spec = SweepSpec.from_dict({"kind": "waypoints", "seed": 5,
+                                "base": {"random_route": {"count": 4, "legs": [4, 8]},
+                                         "wind": {"speed": 0.1, "direction_deg": 30.0, "gusts": 11}},
+                                "parameters": {"random_route.seed": [1, 2], "method": ["dwn", "wn"]}})
+    rows = vt.sweep.run(spec, SERIAL, out=tmp_path, figures=False).rows
+    assert all(row["run_status"] == "ok" for row in rows), [row["run_error"] for row in rows]
+    # The same route (and gusts) for both methods of a seed, another route for another seed.
+    assert rows[0]["route_length"] == rows[1]["route_length"] != rows[2]["route_length"] == rows[3]["route_length"]
+    route = vt.waypoint_nav.random_route(np.random.default_rng(2), 4, 0.7, (4.0, 8.0))
+    wind = vt.flight.Wind(east=0.1 * math.cos(math.radians(30.0)), north=0.1 * math.sin(math.radians(30.0)),
+                          gusts=vt.waypoint_nav.paper_gusts(11))
+    assert rows[3]["max_miss_over_R"] == vt.waypoint_nav.fly(route, method="wn", wind=wind).metrics()["max_miss_over_R"]
+    # Without a route seed, every case draws its own route from its own seed: reproducibly.
+    own = SweepSpec.from_dict({"kind": "waypoints", "seed": 5, "base": {"random_route": {"count": 4}},
+                               "parameters": {"method": ["dwn", "wn"]}})
+    first = vt.sweep.run_cases(own.cases(), SERIAL)
+    assert first[0]["route_length"] != first[1]["route_length"]
+    assert without_run_columns(first) == without_run_columns(vt.sweep.run_cases(own.cases(), SERIAL))
+
+
+@pytest.mark.parametrize(("base", "message"), [
+    ({"waypoints": [[0, 0], [1, 0]], "route": "x.csv"}, "give exactly one of route"),
+    ({"waypoints": [[0, 0], [1, 0]], "colour": 1}, "colour = 1: unknown key"),
+    ({"waypoints": [[0, 0], [1, 0]], "method": "fast"}, "method = 'fast'"),
+    ({"waypoints": [[0, 0], [1, 0]], "wind": {"gale": 3}}, "wind = {'gale': 3}"),
+    ({"route": "missing.csv"}, "route = "),
+])
+def test_bad_waypoint_bases_name_the_key(base: dict[str, Any], message: str) -> None:
+    with pytest.raises(vt.VistrackError) as error:
+        SweepSpec.from_dict({"kind": "waypoints", "base": base, "parameters": {"speed": [0.8]}})
+    assert message in str(error.value)

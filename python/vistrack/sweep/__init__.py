@@ -8,14 +8,15 @@ result = vt.sweep.run(spec, scheduler="serial")                 # one by one her
 result.rows, result.columns, result.failed, result.files        # results.csv, results.parquet, figures
 ```
 A sweep file (:mod:`vistrack.sweep.spec`) names a base case of one kind (:mod:`vistrack.sweep.kinds`:
-``tracking`` now), the parameters to vary and their combination; each case is one task, run by
+``tracking``, ``waypoints``), the parameters to vary and their combination; each case is one task, run by
 :func:`run_case` with the worker's shared environment and planner
 (:mod:`vistrack.sweep.resources`).
 """
 
 from __future__ import annotations
 
-from . import tracking as _tracking  # noqa: F401  (registers the tracking kind)
+from . import tracking as _tracking  # noqa: F401  (registers the kinds)
+from . import waypoints as _waypoints  # noqa: F401
 from .execute import SERIAL, SweepResult, metric_columns, run, run_case, run_cases, table_columns
 from .kinds import KINDS, CaseContext, CaseKind, CaseOutput, get_kind, register_kind
 from .resources import Resources
