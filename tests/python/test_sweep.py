@@ -462,3 +462,32 @@ def test_bad_waypoint_bases_name_the_key(base: dict[str, Any], message: str) -> 
     with pytest.raises(vt.VistrackError) as error:
         SweepSpec.from_dict({"kind": "waypoints", "base": base, "parameters": {"speed": [0.8]}})
     assert message in str(error.value)
+
+
+def test_a_registered_kind_runs_through_the_sweep(tmp_path: Path) -> None:
+    """What another planner does to join: register a kind; its numpy metrics become plain values."""
+    from vistrack.sweep import CaseKind, CaseOutput, register_kind
+    from vistrack.sweep.kinds import KINDS, dotted_keys
+
+    def run(data: dict[str, Any], context: vt.sweep.CaseContext) -> CaseOutput:
+        if data["x"] < 0:
+            raise ValueError(f"x = {data['x']}: must be >= 0")
+        draw = np.random.default_rng(context.seed).uniform()
+        return CaseOutput({"square": np.float64(data["x"]) ** 2, "even": np.bool_(data["x"] % 2 == 0),
+                           "draw": draw}, {"note": np.int64(3)})
+
+    register_kind(CaseKind(name="toy", description="x squared", load_base=lambda value, folder: dict(value),
+                           keys=dotted_keys, run=run, metric_names=("square", "even", "draw"),
+                           figure_metrics=("square",)))
+    try:
+        spec = SweepSpec.from_dict({"kind": "toy", "base": {"x": 0}, "parameters": {"x": [2, -1, 3]}, "seed": 9})
+        result = vt.sweep.run(spec, SERIAL, out=tmp_path)
+    finally:
+        del KINDS["toy"]
+    rows = read_results_table(tmp_path / "results.parquet")
+    assert [(r["x"], r["square"], r["even"], r["run_status"]) for r in rows] == [
+        (2, 4.0, True, "ok"), (-1, None, None, "failed"), (3, 9.0, False, "ok")]
+    assert rows[1]["run_error"].startswith("ValueError: x = -1: must be >= 0")
+    assert rows[0]["run_note"] == 3 and type(result.rows[0]["square"]) is float
+    assert rows[2]["draw"] == np.random.default_rng(spec.cases()[2].seed).uniform()
+    assert (tmp_path / "figures" / "x.png").is_file()

@@ -21,6 +21,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Iterator, Mapping, Optional, Union
 
+import numpy as np
+
 from .._core import VistrackError
 from ..io import append_json_line, write_json, write_results_table
 from ..progress import Progress
@@ -70,8 +72,8 @@ def run_case(case: Case) -> Row:
         context = CaseContext(Path(case.folder), case.seed, resources,
                               None if case.cache_dir is None else Path(case.cache_dir))
         output = kind.run(case.data, context)
-        row.update(_select(output.metrics, case.metrics))
-        status, error, meta = "ok", None, output.meta
+        row.update({k: _plain(v) for k, v in _select(output.metrics, case.metrics).items()})
+        status, error, meta = "ok", None, {k: _plain(v) for k, v in output.meta.items()}
     except Exception as exc:  # a failed case is a row, whatever it raised
         status, error, meta = "failed", _describe(exc), {}
     resources.cases_run += 1
@@ -242,6 +244,11 @@ def _select(metrics: Mapping[str, Any], patterns: tuple[str, ...]) -> dict[str, 
     if not patterns:
         return dict(metrics)
     return {k: v for k, v in metrics.items() if any(fnmatch.fnmatchcase(k, p) for p in patterns)}
+
+
+def _plain(value: Any) -> Any:
+    """Numpy scalars as Python numbers (the table and rows.jsonl take plain data)."""
+    return value.item() if isinstance(value, np.generic) else value
 
 
 def _describe(error: BaseException) -> str:
