@@ -426,6 +426,8 @@ def append_json_line(data: Any, path: str | Path) -> None:
     """One JSON document as one line at the end of a file (rows of a sweep as they arrive)."""
     with Path(path).open("a", encoding="utf-8") as stream:
         stream.write(json.dumps(data) + "\n")
+
+
 # ---------------------------------------------------------------------------------------------
 # Loiter planning (issue 14): scenario YAML, the sampled path as CSV
 # ---------------------------------------------------------------------------------------------
