@@ -11,7 +11,7 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError
 from importlib.metadata import version as _version
 
-from . import _core, dubins, flight, mission, sweep, waypoint_nav
+from . import _core, dubins, flight, loiter, mission, sweep, waypoint_nav
 
 # By area: geometry and parameters; environment; visibility and volumes; orbits (section IV);
 # guidance, integrator and closed loop (sections V-VI).
@@ -135,6 +135,7 @@ __all__ = [
     "lambda_max",
     "lemma6_curvature_bound",
     "lemma7_min_gain",
+    "loiter",
     "lyapunov_term",
     "max_inscribed_radius",
     "max_orbit_curvature",

@@ -6,6 +6,8 @@
 - VV files: the binary ``vv-*.bin`` of the VV cache (:func:`volume_files`)
 - closed-loop trajectories: CSV (:func:`write_trajectory`)
 - JSON results (:func:`write_json`) and YAML mappings (:func:`read_yaml_mapping`)
+- loiter scenarios: YAML (:func:`read_loiter_scenario`); loiter plans sampled as CSV
+  (:func:`write_loiter_samples_csv`)
 - GeoJSON in WGS84 of trajectories, orbit plans and missions (:func:`trajectory_geojson`,
   :func:`orbit_plan_geojson`, :func:`mission_geojson`, :func:`write_geojson`)
 - waypoint routes: CSV x,y (:func:`read_route`, :func:`write_route`); flown trajectories: CSV
@@ -30,14 +32,17 @@ from ._core import Environment, OrbitPlan, RoadNetwork, SimulationResult, Visibi
 
 if TYPE_CHECKING:
     from ._core.flight import FlightTrajectory
+    from .loiter import Coverage as LoiterCoverage
+    from .loiter import Plan as LoiterPlan
+    from .loiter import Scenario as LoiterScenario
     from .mission import Georeference, Mission
 
 __all__ = [
     "GEOJSON_SUFFIXES", "append_json_line", "feature_collection", "footprint_environment", "line_feature",
-    "load_environment", "lon_lat", "mission_geojson", "orbit_plan_geojson", "point_feature", "read_plan",
-    "read_results_table", "read_roads", "read_route", "read_text", "read_yaml_mapping", "trajectory_geojson",
-    "volume_files", "write_flight", "write_geojson", "write_json", "write_plan", "write_results_table",
-    "write_route", "write_trajectory",
+    "load_environment", "lon_lat", "mission_geojson", "orbit_plan_geojson", "point_feature", "read_loiter_scenario",
+    "read_plan", "read_results_table", "read_roads", "read_route", "read_text", "read_yaml_mapping",
+    "trajectory_geojson", "volume_files", "write_flight", "write_geojson", "write_json", "write_loiter_samples_csv",
+    "write_plan", "write_results_table", "write_route", "write_trajectory",
 ]
 
 GEOJSON_SUFFIXES = (".geojson", ".json")
@@ -421,3 +426,73 @@ def append_json_line(data: Any, path: str | Path) -> None:
     """One JSON document as one line at the end of a file (rows of a sweep as they arrive)."""
     with Path(path).open("a", encoding="utf-8") as stream:
         stream.write(json.dumps(data) + "\n")
+
+
+# ---------------------------------------------------------------------------------------------
+# Loiter planning (issue 14): scenario YAML, the sampled path as CSV
+# ---------------------------------------------------------------------------------------------
+
+
+def read_loiter_scenario(path: str | Path) -> LoiterScenario:
+    """A loiter scenario file (examples/loiter_*.yaml); every bad value names its key."""
+    from . import schema
+    from .loiter import Camera, Scenario
+
+    data = read_yaml_mapping(path, "scenario")
+    allowed = {"name", "aois", "start", "end", "turn_radius", "speed", "aoi_radius", "turns", "camera",
+               "threshold", "dt", "paper"}
+    unknown = sorted(set(data) - allowed)
+    if unknown:
+        raise schema.fail(unknown[0], data[unknown[0]], f"unknown key; allowed: {', '.join(sorted(allowed))}")
+
+    def pair(key: str, value: Any) -> tuple[float, float]:
+        if not isinstance(value, (list, tuple)) or len(value) != 2:
+            raise schema.fail(key, value, "must be [x, y] in metres")
+        return schema.number(f"{key}[0]", value[0]), schema.number(f"{key}[1]", value[1])
+
+    raw_aois = data.get("aois")
+    if not isinstance(raw_aois, list) or not raw_aois:
+        raise schema.fail("aois", raw_aois, "must be a non-empty list of [x, y] AOI centres")
+    aois = np.array([pair(f"aois[{i}]", a) for i, a in enumerate(raw_aois)], dtype=float)
+    camera_section = schema.section(data, "camera", {"fov_deg", "max_gimbal_deg", "altitude"})
+    camera = schema.apply_checks(Camera(), camera_section, "camera", {
+        "fov_deg": schema.positive, "max_gimbal_deg": lambda k, v: schema.number(k, v, low=0.0),
+        "altitude": schema.positive})
+    paper = data.get("paper") or {}
+    if not isinstance(paper, dict):
+        raise schema.fail("paper", paper, "must map a method to its Table 1 numbers")
+    scenario = Scenario(
+        aois=aois,
+        name=str(data.get("name", Path(path).stem)),
+        start=pair("start", data.get("start", [0.0, 0.0])),
+        end=pair("end", data.get("end", [0.0, 0.0])),
+        turn_radius=schema.positive("turn_radius", data.get("turn_radius", 46.0)),
+        speed=schema.positive("speed", data.get("speed", 12.0)),
+        aoi_radius=schema.positive("aoi_radius", data.get("aoi_radius", 46.0)),
+        turns=schema.integer("turns", data.get("turns", 1), 1, 1000),
+        camera=camera,
+        threshold=schema.number("threshold", data.get("threshold", 0.75), low=0.0, high=1.0, low_open=True),
+        dt=schema.positive("dt", data.get("dt", 1.0)),
+        paper={str(k): {str(n): float(x) for n, x in dict(v).items()} for k, v in paper.items()},
+    )
+    # The planner's own checks (overlapping circles, R < r, start inside a circle) name the key.
+    scenario.plan("tlpp")
+    return scenario
+
+
+def write_loiter_samples_csv(path: str | Path, plan: LoiterPlan, coverage: LoiterCoverage, dt: float,
+                             threshold: float = 0.75) -> Path:
+    """The plan sampled every dt (as the coverage was): t, x, y, psi, turn rate, segment role, the AOI
+    most in view, the gimbal angle and the AOIs covered at that step."""
+    samples = plan.sample_states(dt, False)
+    roles = [plan.segments[k].role for k in samples.segment]
+    covered = [";".join(str(i) for i in np.flatnonzero(row >= threshold)) for row in coverage.fraction]
+    file = Path(path)
+    file.parent.mkdir(parents=True, exist_ok=True)
+    with open(file, "w", encoding="utf-8") as out:
+        out.write("t,x,y,psi,turn_rate,role,pointed_aoi,gimbal_rad,covered_aois\n")
+        for k in range(samples.poses.shape[0]):
+            x, y, psi = samples.poses[k]
+            out.write(f"{samples.t[k]:.6f},{x:.6f},{y:.6f},{psi:.9f},{samples.turn_rate[k]:.9f},{roles[k]},"
+                      f"{coverage.pointed[k]},{coverage.gimbal[k]:.6f},{covered[k]}\n")
+    return file

@@ -131,4 +131,47 @@ struct WaypointNavOptions {
   void validate() const;
 };
 
+// ---- path following (issue 14): a guidance that flies a path of lines and arcs -------------
+
+// Gains of PathFollower (flight.hpp, Path following), scaled by the vehicle so one set fits every size:
+// the cross-track correction steers at atan(e / (lookahead_radii R)) back to the path, the heading
+// loop closes at heading_gain v / R per radian. With these the linearised cross-track error is a
+// second-order system with damping 0.5 sqrt(heading_gain * lookahead_radii) = 0.87.
+struct PathFollowingGains {
+  double lookahead_radii = 1.0;
+  double heading_gain = 3.0;
+  void validate() const;
+};
+
+// ---- loiter (issue 14): loiter planners over areas of interest, camera coverage -------------
+// Wilhelm, Clem, Eberhart, "Direct Entry Minimal Path UAV Loitering Path Planning" (2017),
+// section 4.1: Raven RQ-11B, turn radius 46 m at 12 m/s, AOI radius = turn radius, one loiter.
+
+struct LoiterParameters {
+  double turn_radius = 46.0;  // r, m: turns outside the loiter (minimum turn radius)
+  double speed = 12.0;        // v, m/s (constant airspeed)
+  double aoi_radius = 46.0;   // R, m: the loiter circle around each AOI centre (POI); R >= r
+  int turns = 1;              // full loiters flown around each AOI (at least 1)
+  void validate() const;      // throws Error naming the field
+};
+
+// The camera of section 2.2: a circular (conic) field of view, full angle fov_deg, on a one-axis
+// (roll) gimbal of +-max_gimbal_deg. altitude: height above the AOIs' ground plane. 61 m is the
+// height at which the paper's nadir footprint is 6,638 m^2 (pi (61 tan 37 deg)^2 = 6,637.9 m^2).
+struct LoiterCamera {
+  double fov_deg = 74.0;
+  double max_gimbal_deg = 25.0;
+  double altitude = 61.0;
+  void validate() const;
+};
+
+// Section 4.1's coverage rule: an AOI counts as covered at a time step when at least `threshold`
+// of its disk lies in the footprint; time steps dt apart (the paper samples at 1 s).
+struct LoiterCoverageOptions {
+  double threshold = 0.75;
+  double dt = 1.0;          // s
+  double gravity = 9.80665; // m/s^2, for the bank angle of a coordinated turn
+  void validate() const;
+};
+
 }  // namespace vistrack

@@ -8,6 +8,7 @@
 - ``tune``: Figure 9 (turn rate needed against beta)
 - ``intercept``: Figure 7 of the intercept paper
 - ``waypoints``: Figures 10-12 of the Dubins waypoint navigation paper, the Monte Carlo
+- ``loiter``: loiter plans over AOIs (Figures 6, 9, 12, 13), Figure 14, random-scenario distributions, flights in wind
 """
 
 from __future__ import annotations
