@@ -14,7 +14,7 @@ from typing import Sequence
 from . import VistrackError, __version__
 
 # Order shown in --help.
-COMMANDS = ["demo", "run", "volumes", "orbits", "simulate", "tune", "intercept", "waypoints", "sweep"]
+COMMANDS = ["demo", "run", "volumes", "orbits", "simulate", "tune", "intercept", "waypoints", "follow", "sweep"]
 
 
 def build_parser() -> argparse.ArgumentParser:
