@@ -11,7 +11,7 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError
 from importlib.metadata import version as _version
 
-from . import _core, dubins, flight, loiter, mission, sweep, waypoint_nav
+from . import _core, dubins, flight, follow, loiter, mission, sweep, waypoint_nav
 
 # By area: geometry and parameters; environment; visibility and volumes; orbits (section IV);
 # guidance, integrator and closed loop (sections V-VI).
@@ -131,6 +131,7 @@ __all__ = [
     "dubins",
     "epsilon_max",
     "flight",
+    "follow",
     "grid_xor_volume",
     "lambda_max",
     "lemma6_curvature_bound",

@@ -14,6 +14,8 @@
   (:func:`write_flight`)
 - sweeps: road files (GeoJSON LineStrings, :func:`read_roads`) and the results table
   (``results.csv`` + ``results.parquet``, :func:`write_results_table`, :func:`read_results_table`)
+- follow: vehicle tracks ``t,x,y`` (:func:`read_vehicle_track`), road paths
+  (:func:`read_road_path`), follow trajectories as CSV (:func:`write_follow_trajectory`)
 
 Every error names the option or key and the file: a missing or unreadable file, a file that is
 not text, or text that is not the expected format raises VistrackError.
@@ -38,11 +40,36 @@ if TYPE_CHECKING:
     from .mission import Georeference, Mission
 
 __all__ = [
-    "GEOJSON_SUFFIXES", "append_json_line", "feature_collection", "footprint_environment", "line_feature",
-    "load_environment", "lon_lat", "mission_geojson", "orbit_plan_geojson", "point_feature", "read_loiter_scenario",
-    "read_plan", "read_results_table", "read_roads", "read_route", "read_text", "read_yaml_mapping",
-    "trajectory_geojson", "volume_files", "write_flight", "write_geojson", "write_json", "write_loiter_samples_csv",
-    "write_plan", "write_results_table", "write_route", "write_trajectory",
+    "GEOJSON_SUFFIXES",
+    "append_json_line",
+    "feature_collection",
+    "footprint_environment",
+    "line_feature",
+    "load_environment",
+    "lon_lat",
+    "mission_geojson",
+    "orbit_plan_geojson",
+    "point_feature",
+    "read_loiter_scenario",
+    "read_plan",
+    "read_results_table",
+    "read_road_path",
+    "read_roads",
+    "read_route",
+    "read_text",
+    "read_vehicle_track",
+    "read_yaml_mapping",
+    "trajectory_geojson",
+    "volume_files",
+    "write_flight",
+    "write_follow_trajectory",
+    "write_geojson",
+    "write_json",
+    "write_loiter_samples_csv",
+    "write_plan",
+    "write_results_table",
+    "write_route",
+    "write_trajectory",
 ]
 
 GEOJSON_SUFFIXES = (".geojson", ".json")
@@ -495,4 +522,75 @@ def write_loiter_samples_csv(path: str | Path, plan: LoiterPlan, coverage: Loite
             x, y, psi = samples.poses[k]
             out.write(f"{samples.t[k]:.6f},{x:.6f},{y:.6f},{psi:.9f},{samples.turn_rate[k]:.9f},{roles[k]},"
                       f"{coverage.pointed[k]},{coverage.gimbal[k]:.6f},{covered[k]}\n")
+
+
+# ---- follow (issue 15): vehicle tracks, road paths, follow trajectories -------------------------
+
+
+def _numeric_rows(path: str | Path, key: str, columns: tuple[int, ...]) -> np.ndarray:
+    """The rows of a comma-separated numeric file (a header line is skipped), each with one of
+    ``columns`` counts; VistrackError naming the key, the line and the value otherwise."""
+    import numpy as np
+
+    rows: list[list[float]] = []
+    for number, line in enumerate(read_text(path, key).splitlines(), start=1):
+        cells = [c.strip() for c in line.split(",")]
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        try:
+            values = [float(c) for c in cells]
+        except ValueError:
+            if not rows and number == 1:
+                continue  # a header
+            raise VistrackError(f"{key} = {path}: line {number} is not numbers: {line.strip()!r}") from None
+        if len(values) not in columns:
+            raise VistrackError(f"{key} = {path}: line {number} has {len(values)} values, expected "
+                                f"{' or '.join(str(c) for c in columns)}")
+        rows.append(values[: min(columns)])
+    if len(rows) < 2:
+        raise VistrackError(f"{key} = {path}: needs at least two rows, found {len(rows)}")
+    return np.array(rows, dtype=float)
+
+
+def read_vehicle_track(path: str | Path, key: str = "vehicle.track") -> tuple[np.ndarray, np.ndarray]:
+    """A ground vehicle's track: one ``t,x,y`` per line (s, m; a header line allowed). Returns the
+    times (n,) and positions (n, 2); GroundVehicle checks that the times increase and are finite."""
+    rows = _numeric_rows(path, key, (3,))
+    return rows[:, 0].copy(), rows[:, 1:3].copy()
+
+
+def read_road_path(path: str | Path, key: str = "road") -> np.ndarray:
+    """A road polyline, one ``x,y`` or ``x,y,z`` per line (the data's POI paths): (n, 2)."""
+    return _numeric_rows(path, key, (2, 3))[:, :2].copy()
+
+
+def write_follow_trajectory(result: Any, path: str | Path) -> Path:
+    """A follow run as CSV, one sample per line, full precision: t, the UAV (x, y, psi, turn rate,
+    bank), the vehicle, the offset point, the desired position, the waypoint flown to, the mode,
+    the tracking error, the along-track lag, the camera's view (0/1) and, when evaluated, the
+    line of sight (0/1). ``result``: a vistrack.follow.FollowResult."""
+    import numpy as np
+
+    run = result.run
+    columns = {
+        "t": np.asarray(run.t), "x": result.state[:, 0], "y": result.state[:, 1], "psi": result.state[:, 2],
+        "turn_rate": np.asarray(run.turn_rate), "bank": np.asarray(run.bank),
+        "vehicle_x": result.vehicle[:, 0], "vehicle_y": result.vehicle[:, 1],
+        "offset_x": result.offset_point[:, 0], "offset_y": result.offset_point[:, 1],
+        "desired_x": result.desired[:, 0], "desired_y": result.desired[:, 1],
+        "target_x": np.asarray(run.target)[:, 0], "target_y": np.asarray(run.target)[:, 1],
+        "tracking_error": np.asarray(run.tracking_error), "along_track_lag": np.asarray(run.along_track_lag),
+        "in_view": result.in_view.astype(int),
+    }
+    if result.line_of_sight is not None:
+        columns["line_of_sight"] = result.line_of_sight.astype(int)
+    mode = result.mode
+    names = list(columns)
+    lines = [",".join([*names[:16], "mode", *names[16:]])]
+    values = list(columns.values())
+    for i in range(len(mode)):
+        cells = [repr(float(v[i])) for v in values[:16]] + [str(mode[i])] + [str(int(v[i])) for v in values[16:]]
+        lines.append(",".join(cells))
+    file = Path(path)
+    file.write_text("\n".join(lines) + "\n", encoding="utf-8")
     return file
