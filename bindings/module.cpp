@@ -25,7 +25,7 @@ void set_error(PyObject* type, const char* what) {
 }  // namespace
 
 PYBIND11_MODULE(_core, m) {
-  m.doc() = "vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation.";
+  m.doc() = "vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation, flight, waypoint navigation.";
   m.attr("__version__") = VISTRACK_VERSION;
   // One error type, a ValueError, for every invalid input (DESIGN.md, Conventions).
   vistrack_error_type = pybind11::register_exception<vistrack::Error>(m, "VistrackError", PyExc_ValueError).ptr();
@@ -49,4 +49,9 @@ PYBIND11_MODULE(_core, m) {
   vistrack::bindings::bind_guidance(m);
   vistrack::bindings::bind_ode(m);
   vistrack::bindings::bind_simulate(m);
+  vistrack::bindings::bind_flight(m);
+  vistrack::bindings::bind_waypoint_nav(m);
+  vistrack::bindings::bind_path_following(m);
+  vistrack::bindings::bind_loiter(m);
+  vistrack::bindings::bind_follow(m);
 }

@@ -21,7 +21,9 @@ from typing import NoReturn, Sequence
 from . import VistrackError, __version__
 
 # Order shown in --help.
-COMMANDS = ["demo", "run", "volumes", "orbits", "simulate", "tune", "intercept"]
+COMMANDS = [
+    "demo", "run", "volumes", "orbits", "simulate", "tune", "intercept", "waypoints", "loiter", "follow", "sweep",
+]
 
 USAGE_ERROR = 2
 FAILURE = 1

@@ -20,10 +20,8 @@ from pathlib import Path
 from typing import Any, Callable
 
 REPO = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(REPO / "tests"))
-from build_tree import use_build_tree  # noqa: E402
-
-use_build_tree()
+sys.path.insert(0, str(REPO / "tests" / "python"))
+import build_tree  # noqa: E402,F401  (imports vistrack from $VISTRACK_BUILD_DIR when set)
 
 import numpy as np  # noqa: E402
 

@@ -1,5 +1,5 @@
 """
-vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation.
+vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation, flight, waypoint navigation.
 """
 from __future__ import annotations
 import collections.abc
@@ -7,7 +7,11 @@ import numpy
 import numpy.typing
 import typing
 from . import dubins
-__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'wrap_to_pi', 'xor_volume']
+from . import flight
+from . import waypoint_nav
+from . import loiter
+from . import follow
+__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'flight', 'follow', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'loiter', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'waypoint_nav', 'wrap_to_pi', 'xor_volume']
 class VistrackError(ValueError):
     pass
 class Polygon:
