@@ -25,6 +25,7 @@ RoadNetwork roads_from_arrays(const Points2& nodes, const Edges& edges) {
                            "must be a node index");
     roads.edges.emplace_back(static_cast<int>(edges(e, 0)), static_cast<int>(edges(e, 1)));
   }
+  validate_road_network(roads, "");  // NaN nodes or edges to no node are refused here, not later
   return roads;
 }
 

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/flight.hpp"
 #include "vistrack/ode.hpp"
 
@@ -228,9 +229,9 @@ FlightTrajectory fly(const Uav& vehicle, const WindField& wind, FlightGuidance& 
                      const FlightProgress& progress) {
   vehicle.validate();
   options.validate();
-  require_finite(start.x, "start.x");
-  require_finite(start.y, "start.y");
-  require_finite(start.psi, "start.psi");
+  require_coordinate(start.x, "start.x");
+  require_coordinate(start.y, "start.y");
+  require_angle(start.psi, "start.psi");
   require_finite(t0, "t0");
   if (!(wind.max_speed() < vehicle.speed))
     detail::fail_field("wind", wind.max_speed(), "the wind speed must stay below the airspeed " +

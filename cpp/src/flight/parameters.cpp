@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/flight.hpp"
 #include "vistrack/parameters.hpp"
 
@@ -15,8 +16,8 @@ void Gusts::validate() const {
 }
 
 void Wind::validate() const {
-  require_finite(east, "wind.east");
-  require_finite(north, "wind.north");
+  require_in_range(east, -limits::kMaxSpeed, limits::kMaxSpeed, "m/s", "wind.east");
+  require_in_range(north, -limits::kMaxSpeed, limits::kMaxSpeed, "m/s", "wind.north");
   if (gusts) gusts->validate();
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/follow.hpp"
 
 namespace vistrack {
@@ -51,10 +52,13 @@ std::vector<Sample> speed_profile(const std::vector<VehicleLeg>& legs, double t0
     const VehicleLeg& leg = legs[i];
     const std::string field = indexed("legs", i);
     require_finite(leg.heading, field + ".heading");
-    require_non_negative(leg.speed, field + ".speed");
+    require_in_range(leg.speed, 0.0, limits::kMaxSpeed, "m/s", field + ".speed");
     require_positive(leg.duration, field + ".duration");
+    if (!(leg.duration / step <= 1e7))  // a ramp is sampled every step: bound the samples (and the int below)
+      detail::fail_field(field + ".duration", leg.duration,
+                         "more than 1e7 samples of step = " + detail::to_text(step) + " s");
     const double end_speed = std::isnan(leg.end_speed) ? leg.speed : leg.end_speed;
-    require_non_negative(end_speed, field + ".end_speed");
+    require_in_range(end_speed, 0.0, limits::kMaxSpeed, "m/s", field + ".end_speed");
     const int pieces = end_speed == leg.speed ? 1 : std::max(1, static_cast<int>(std::ceil(leg.duration / step)));
     const Sample start = samples.back();
     for (int k = 1; k <= pieces; ++k) {
@@ -78,8 +82,8 @@ GroundVehicle::GroundVehicle(std::vector<double> times, Points2 positions, std::
     detail::fail_field("track.x", positions_.rows(), "needs one position per time (" + std::to_string(n) + ")");
   for (std::size_t i = 0; i < n; ++i) {
     require_finite(times_[i], indexed("track.t", i));
-    require_finite(positions_(static_cast<Eigen::Index>(i), 0), indexed("track.x", i));
-    require_finite(positions_(static_cast<Eigen::Index>(i), 1), indexed("track.y", i));
+    require_coordinate(positions_(static_cast<Eigen::Index>(i), 0), indexed("track.x", i));
+    require_coordinate(positions_(static_cast<Eigen::Index>(i), 1), indexed("track.y", i));
     if (i > 0 && !(times_[i] > times_[i - 1]))
       detail::fail_field(indexed("track.t", i), times_[i],
                          "times must increase strictly (the previous sample is at " + detail::to_text(times_[i - 1]) + ")");
@@ -93,8 +97,8 @@ GroundVehicle::GroundVehicle(std::vector<double> times, Points2 positions, std::
 }
 
 GroundVehicle GroundVehicle::from_legs(const std::vector<VehicleLeg>& legs, const Vec2& start, double t0, double step) {
-  require_finite(start.x(), "start[0]");
-  require_finite(start.y(), "start[1]");
+  require_coordinate(start.x(), "start[0]");
+  require_coordinate(start.y(), "start[1]");
   std::vector<std::size_t> leg_of_segment;
   const std::vector<Sample> samples = speed_profile(legs, t0, step, leg_of_segment);
   std::vector<double> t(samples.size());
@@ -117,8 +121,8 @@ GroundVehicle GroundVehicle::along_path(const Points2& road, const std::vector<V
                                         double step) {
   if (road.rows() < 2) detail::fail_field("path", road.rows(), "a road path needs at least two points");
   for (Eigen::Index i = 0; i < road.rows(); ++i) {
-    require_finite(road(i, 0), indexed("path.x", static_cast<std::size_t>(i)));
-    require_finite(road(i, 1), indexed("path.y", static_cast<std::size_t>(i)));
+    require_coordinate(road(i, 0), indexed("path.x", static_cast<std::size_t>(i)));
+    require_coordinate(road(i, 1), indexed("path.y", static_cast<std::size_t>(i)));
   }
   double length = 0.0;
   for (Eigen::Index i = 1; i < road.rows(); ++i) length += (road.row(i) - road.row(i - 1)).norm();
@@ -141,8 +145,8 @@ GroundVehicle GroundVehicle::driven_along(const Points2& path, const std::vector
                                           double step) {
   std::vector<double> cumulative(static_cast<std::size_t>(path.rows()), 0.0);
   for (Eigen::Index i = 0; i < path.rows(); ++i) {
-    require_finite(path(i, 0), indexed("path.x", static_cast<std::size_t>(i)));
-    require_finite(path(i, 1), indexed("path.y", static_cast<std::size_t>(i)));
+    require_coordinate(path(i, 0), indexed("path.x", static_cast<std::size_t>(i)));
+    require_coordinate(path(i, 1), indexed("path.y", static_cast<std::size_t>(i)));
     if (i > 0) cumulative[static_cast<std::size_t>(i)] = cumulative[static_cast<std::size_t>(i - 1)] + (path.row(i) - path.row(i - 1)).norm();
   }
   const double length = cumulative.back();

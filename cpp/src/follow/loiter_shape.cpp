@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/follow.hpp"
 
 namespace vistrack {
@@ -50,11 +51,11 @@ OffsetReference offset_reference_from_string(const std::string& text, const std:
 }
 
 void LoiterShape::validate() const {
-  require_positive(radius, "loiter_radius");
+  require_length(radius, "loiter_radius");
   if (direction != 1 && direction != -1) detail::fail_field("loiter_direction", direction, "must be +1 or -1");
   require_finite(rotation, "rotation");
   if (pattern == LoiterPattern::Rose) {
-    require_positive(turn_radius, "turn_radius");
+    require_length(turn_radius, "turn_radius");
     if (!(radius >= 2.0 * turn_radius))
       detail::fail_field("loiter_radius", radius,
                          "a rose needs at least twice its turn radius " + detail::to_text(turn_radius) + " m");

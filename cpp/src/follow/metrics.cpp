@@ -5,6 +5,7 @@
 #include <string>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/follow.hpp"
 
 namespace vistrack {
@@ -27,14 +28,14 @@ void FollowRunOptions::validate() const {
   for (std::size_t i = 0; i < offset_schedule.size(); ++i) {
     const std::string field = "offset_schedule[" + std::to_string(i) + "]";
     require_finite(offset_schedule[i].t, field + ".t");
-    require_non_negative(offset_schedule[i].distance, field + ".distance");
+    require_in_range(offset_schedule[i].distance, 0.0, limits::kMaxLength, "m", field + ".distance");
     require_finite(offset_schedule[i].angle, field + ".angle");
     if (i > 0 && !(offset_schedule[i].t > offset_schedule[i - 1].t))
       detail::fail_field(field + ".t", offset_schedule[i].t, "times must increase strictly");
   }
   if (start) {
-    require_finite(start->x(), "start[0]");
-    require_finite(start->y(), "start[1]");
+    require_coordinate(start->x(), "start[0]");
+    require_coordinate(start->y(), "start[1]");
     require_finite(start->z(), "start[2]");
   }
 }

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/follow.hpp"
 #include "vistrack/parameters.hpp"
 
@@ -20,8 +21,8 @@ void FollowParameters::validate() const {
   if (!(threshold - 0.5 * hysteresis > 1.0))
     detail::fail_field("follow.hysteresis", hysteresis,
                        "the band's lower edge threshold - hysteresis / 2 must stay above 1 (a loiter needs v_p > v_g)");
-  require_non_negative(loiter_radius, "follow.loiter_radius");
-  require_non_negative(offset_distance, "follow.offset_distance");
+  require_in_range(loiter_radius, 0.0, limits::kMaxLength, "m", "follow.loiter_radius");
+  require_in_range(offset_distance, 0.0, limits::kMaxLength, "m", "follow.offset_distance");
   require_finite(offset_angle, "follow.offset_angle");
   require_positive(update_period, "follow.update_period");
 }

@@ -3,19 +3,23 @@
 #include <string>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/loiter.hpp"
 #include "vistrack/parameters.hpp"
 
 namespace vistrack {
 
 namespace {
+// The most AOIs one problem takes: the overlap check and the order search grow as n^2 (10^4 AOIs
+// of the smallest radius already cover a 10 km square edge to edge).
+constexpr std::size_t kMaxLoiterAois = 10000;
 std::string point_text(const Vec2& p) { return "(" + detail::to_text(p.x()) + ", " + detail::to_text(p.y()) + ")"; }
 }  // namespace
 
 void LoiterParameters::validate() const {
-  require_positive(turn_radius, "turn_radius");
-  require_positive(speed, "speed");
-  require_positive(aoi_radius, "aoi_radius");
+  require_length(turn_radius, "turn_radius");
+  require_speed(speed, "speed");
+  require_length(aoi_radius, "aoi_radius");
   if (aoi_radius < turn_radius)
     detail::fail_field("aoi_radius", aoi_radius,
                        "must be at least turn_radius = " + detail::to_text(turn_radius) +
@@ -43,15 +47,17 @@ void LoiterCoverageOptions::validate() const {
 void LoiterProblem::validate() const {
   parameters.validate();
   if (aois.empty()) throw Error("aois: at least one area of interest (AOI centre) is needed");
-  require_finite(start.x(), "start[0]");
-  require_finite(start.y(), "start[1]");
-  require_finite(end.x(), "end[0]");
-  require_finite(end.y(), "end[1]");
+  if (aois.size() > kMaxLoiterAois)  // the overlap check and the order search grow as n^2
+    detail::fail_field("aois", std::to_string(aois.size()) + " centres", "at most " + std::to_string(kMaxLoiterAois) + " AOIs");
+  require_coordinate(start.x(), "start[0]");
+  require_coordinate(start.y(), "start[1]");
+  require_coordinate(end.x(), "end[0]");
+  require_coordinate(end.y(), "end[1]");
   const double R = parameters.aoi_radius;
   for (std::size_t i = 0; i < aois.size(); ++i) {
     const std::string field = "aois[" + std::to_string(i) + "]";
-    require_finite(aois[i].x(), field + "[0]");
-    require_finite(aois[i].y(), field + "[1]");
+    require_coordinate(aois[i].x(), field + "[0]");
+    require_coordinate(aois[i].y(), field + "[1]");
     for (std::size_t j = 0; j < i; ++j) {
       const double d = (aois[i] - aois[j]).norm();
       if (d < 2.0 * R)

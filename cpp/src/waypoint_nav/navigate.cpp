@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/waypoint_nav.hpp"
 
 namespace vistrack {
@@ -13,15 +14,15 @@ void validate_route(const std::vector<Vec2>& waypoints, const Configuration& sta
   if (waypoints.empty()) detail::fail_field("waypoints", 0, "at least one waypoint to fly to is needed");
   for (std::size_t k = 0; k < waypoints.size(); ++k) {
     const std::string field = "waypoints[" + std::to_string(k) + "]";
-    require_finite(waypoints[k].x(), field + ".x");
-    require_finite(waypoints[k].y(), field + ".y");
+    require_coordinate(waypoints[k].x(), field + ".x");
+    require_coordinate(waypoints[k].y(), field + ".y");
     if (k > 0 && (waypoints[k] - waypoints[k - 1]).norm() < 1e-9 * R)
       detail::fail_field(field, "(" + detail::to_text(waypoints[k].x()) + ", " + detail::to_text(waypoints[k].y()) + ")",
                          "closer than 1e-9 R to waypoints[" + std::to_string(k - 1) + "]");
   }
-  require_finite(start.x, "start.x");
-  require_finite(start.y, "start.y");
-  require_finite(start.psi, "start.psi");
+  require_coordinate(start.x, "start.x");
+  require_coordinate(start.y, "start.y");
+  require_angle(start.psi, "start.psi");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/parameters.hpp"
 
 namespace vistrack {
@@ -12,8 +13,8 @@ void FuelWeights::validate() const {
 }
 
 void WaypointNavOptions::validate() const {
-  require_positive(turn_radius, "turn_radius");
-  require_positive(speed, "speed");
+  require_length(turn_radius, "turn_radius");
+  require_speed(speed, "speed");
   require_positive(dt, "dt");
   const double psi_max = speed * dt / turn_radius;
   if (psi_max > 0.5 * 3.14159265358979323846)
