@@ -156,8 +156,24 @@ def _wind(wind: Wind | Sequence[float] | None) -> Wind:
         return Wind()
     if isinstance(wind, Wind):
         return wind
-    east, north = (float(v) for v in wind)
-    return Wind(east=east, north=north)
+    values = _numbers(wind, 2, "wind", "(east, north) m/s")
+    return Wind(east=values[0], north=values[1])
+
+
+def _numbers(value: Sequence[float], count: int, key: str, what: str) -> list[float]:
+    """``count`` numbers, or VistrackError naming ``key`` (a wrong length or type reads as clearly
+    as a wrong value)."""
+    try:
+        numbers = [float(v) for v in value]
+    except (TypeError, ValueError):
+        numbers = []
+    if len(numbers) != count:
+        raise VistrackError(f"{key} = {value!r}: expected {what}")
+    return numbers
+
+
+def _start(start: Optional[Sequence[float]]) -> Optional[np.ndarray]:
+    return None if start is None else np.array(_numbers(start, 3, "start", "(x, y, psi)"))
 
 
 def line_of_sight(scene: VisibilityScene, run: FollowRun, uav_altitude: float,
@@ -186,10 +202,11 @@ def simulate(vehicle: GroundVehicle, uav: Uav, parameters: Optional[FollowParame
     offset_schedule: (t, distance, angle) keys, linear in between (Fig. 8 moves the loiter ahead).
     With a scene, ``line_of_sight`` is evaluated at every sample."""
     true_wind = _wind(wind)
-    estimate = None if wind_estimate is None else np.asarray(wind_estimate, dtype=float)
+    estimate = (None if wind_estimate is None
+                else np.array(_numbers(wind_estimate, 2, "wind_estimate", "(east, north) m/s")))
     run = _follow.follow(vehicle, uav, parameters or FollowParameters(), true_wind, wind_estimate=estimate,
                          flight=flight or FollowFlight(), camera=camera or DownwardCamera(),
-                         start=None if start is None else np.asarray(start, dtype=float),
+                         start=_start(start),
                          offset_schedule=[(float(t), float(d), float(a)) for t, d, a in offset_schedule])
     visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
     return FollowResult(run, "sinusoid", visible)
@@ -215,10 +232,10 @@ def baseline(vehicle: GroundVehicle, uav: Uav, radius: Optional[float] = None, *
     so its tracking error is |r - R|."""
     parameters = parameters or FollowParameters()
     r = baseline_radius(vehicle, uav, parameters) if radius is None else float(radius)
-    if not math.isfinite(r) or r <= 0.0:
-        raise VistrackError(f"baseline.radius = {radius!r}: must be a finite number > 0")
+    if not 1e-6 <= r <= 1e7:  # a length (vistrack/limits.hpp)
+        raise VistrackError(f"baseline.radius = {radius!r}: must be a finite number in [1e-06, 1e+07] m")
     run = _follow.orbit_follow(vehicle, uav, control or Control(), r, parameters, _wind(wind),
                                flight=flight or FollowFlight(), camera=camera or DownwardCamera(),
-                               start=None if start is None else np.asarray(start, dtype=float))
+                               start=_start(start))
     visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
     return FollowResult(run, "orbit", visible)

@@ -94,14 +94,20 @@ __all__ = [
 
 
 def _points(aois: Points) -> np.ndarray:
-    array = np.asarray(aois, dtype=float)
+    try:
+        array = np.asarray(aois, dtype=float)
+    except (TypeError, ValueError):
+        raise VistrackError(f"aois = {aois!r}: expected a list of (x, y) centres of numbers") from None
     if array.ndim != 2 or array.shape[1] != 2:
         raise VistrackError(f"aois = {aois!r}: expected a list of (x, y) centres, shape (n, 2)")
     return array
 
 
 def _point(value: Point, key: str) -> tuple[float, float]:
-    array = np.asarray(value, dtype=float)
+    try:
+        array = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise VistrackError(f"{key} = {value!r}: expected (x, y) numbers") from None
     if array.shape != (2,):
         raise VistrackError(f"{key} = {value!r}: expected (x, y)")
     return float(array[0]), float(array[1])
@@ -204,6 +210,7 @@ def loiter_circles(plan: Plan) -> list[dict[str, object]]:
 
 def metrics(plan: Plan, cov: Coverage | None = None, dt: float = 1.0, threshold: float = 0.75) -> dict[str, object]:
     """Plan (and coverage) numbers as a JSON-ready dictionary; times in s and min."""
+    threshold = _threshold(threshold)
     out: dict[str, object] = {
         "method": plan.method, "order": list(plan.order), "directions": list(plan.directions),
         "length_m": plan.length, "flight_time_s": plan.flight_time, "flight_time_min": plan.flight_time / 60.0,
@@ -218,9 +225,17 @@ def metrics(plan: Plan, cov: Coverage | None = None, dt: float = 1.0, threshold:
     return out
 
 
+def _threshold(threshold: float) -> float:
+    """A coverage threshold: a fraction in (0, 1] (NaN would count nothing as covered, silently)."""
+    if not (isinstance(threshold, (int, float)) and 0.0 < threshold <= 1.0):
+        raise VistrackError(f"threshold = {threshold!r}: must be a fraction in (0, 1]")
+    return float(threshold)
+
+
 def coverage_by_role(plan: Plan, cov: Coverage, dt: float = 1.0, threshold: float = 0.75) -> dict[str, dict[str, int]]:
     """For each segment role, the time steps (dt apart, as ``cov`` was computed) the plan spends on
     it and how many of them have some AOI covered."""
+    threshold = _threshold(threshold)
     segments = np.asarray(plan.sample_states(dt, False).segment)
     if segments.size != cov.steps:
         raise VistrackError(f"dt = {dt}: the coverage has {cov.steps} steps, the plan sampled at dt "
@@ -309,6 +324,7 @@ def flown_samples(trajectory: FlightTrajectory, dt: float = 1.0) -> tuple[np.nda
 def loiter_coverage_fraction(plan: Plan, segments: np.ndarray, cov: Coverage, threshold: float = 0.75) -> float:
     """Of the time steps spent on a loiter segment (by the index of the segment flown at each), the
     fraction at which that loiter's AOI counts as covered."""
+    threshold = _threshold(threshold)
     covered, total = 0, 0
     for k, index in enumerate(segments):
         segment = plan.segments[int(index)]

@@ -322,3 +322,95 @@ def test_wrong_python_types_name_the_parameter(bad: Any) -> None:
         vt.dubins.shortest_path(bad, (10.0, 5.0, 1.0), 2.0)
     message = str(raised.value)
     assert "q0" in message or "incompatible function arguments" in message, message
+
+
+# --- The new planners (waypoints, loiter, follow) get the same treatment -------------------------
+
+
+@pytest.mark.parametrize("kwargs, fragment", [
+    ({"turn_radius": 1e300}, "turn_radius = 1e+300"),
+    ({"speed": math.nan}, "speed = nan"),
+    ({"dt": 1e-12}, "more than 1e8 steps"),
+    ({"start": (0.0, 0.0, math.inf)}, "start.psi = inf"),
+    ({"start": (1e300, 0.0, 0.0)}, "start.x = 1e+300"),
+])
+def test_waypoint_navigation_refuses_out_of_range_inputs(kwargs: dict[str, Any], fragment: str) -> None:
+    refuses(lambda: vt.waypoint_nav.fly([[0.0, 0.0], [200.0, 0.0], [200.0, 200.0]], **kwargs), fragment)
+
+
+def test_waypoint_navigation_refuses_far_or_missing_waypoints() -> None:
+    refuses(lambda: vt.waypoint_nav.fly([[0.0, 0.0], [1e300, 0.0]]), "1e+300")
+    refuses(lambda: vt.waypoint_nav.fly([[math.nan, 0.0], [200.0, 0.0]]), "nan")
+    with pytest.raises(VistrackError):
+        vt.waypoint_nav.fly(np.zeros((0, 2)))
+    refuses(lambda: vt.flight.Wind(east=1e300, north=0.0), "wind.east = 1e+300", "[-10000, 10000] m/s")
+
+
+AOIS = [[200.0, 0.0], [500.0, 0.0], [500.0, 300.0]]
+
+
+@pytest.mark.parametrize("kwargs, fragment", [
+    ({"turn_radius": 1e300, "aoi_radius": 1e300}, "turn_radius = 1e+300"),
+    ({"speed": 1e300}, "speed = 1e+300"),
+    ({"start": "ab"}, "start = 'ab'"),
+    ({"start": (math.nan, 0.0)}, "start[0] = nan"),
+])
+def test_loiter_plans_refuse_out_of_range_inputs(kwargs: dict[str, Any], fragment: str) -> None:
+    refuses(lambda: vt.loiter.plan(AOIS, **kwargs), fragment)
+
+
+def test_loiter_refuses_far_aois_too_many_and_nan_thresholds() -> None:
+    refuses(lambda: vt.loiter.plan([[1e300, 0.0], [400.0, 0.0]]), "aois[0][0] = 1e+300")
+    refuses(lambda: vt.loiter.plan(None), "aois = None")  # type: ignore[arg-type]
+    many = np.column_stack([np.arange(10001) * 100.0, np.zeros(10001)])
+    refuses(lambda: vt.loiter.plan(many, turn_radius=40.0, aoi_radius=40.0), "at most 10000 AOIs")
+    plan = vt.loiter.plan(AOIS)
+    refuses(lambda: vt.loiter.metrics(plan, threshold=math.nan), "threshold = nan")
+    refuses(lambda: vt.loiter.fly(plan, wind=(1e300, 0.0)), "wind.east = 1e+300")
+
+
+def _truck() -> Any:
+    return vt.follow.GroundVehicle.from_legs([vt.follow.VehicleLeg(heading=0.0, speed=5.0, duration=60.0)], (0.0, 0.0))
+
+
+def test_follow_refuses_out_of_range_inputs_and_wrong_shapes() -> None:
+    F = vt.follow
+    uav = vt.Uav(speed=20.0, min_turn_radius=40.0, altitude=100.0)
+    truck = _truck()
+    # update_period 1e-12 meant 6e13 planner updates: it hung.
+    refuses(lambda: F.simulate(truck, uav, F.FollowParameters(update_period=1e-12)), "follow.update_period = 1e-12",
+            "more than 1e8 planner updates")
+    refuses(lambda: F.FollowParameters(offset_distance=1e300), "follow.offset_distance = 1e+300")
+    refuses(lambda: F.simulate(truck, uav, wind=(1, 2, 3)), "wind = (1, 2, 3)")
+    refuses(lambda: F.simulate(truck, uav, start=(0.0, 0.0)), "start = (0.0, 0.0)", "(x, y, psi)")
+    refuses(lambda: F.simulate(truck, uav, start=(1e300, 0.0, 0.0)), "start[0] = 1e+300")
+    refuses(lambda: F.baseline(truck, uav, 1e-300), "baseline.radius = 1e-300")
+    refuses(lambda: F.GroundVehicle.from_legs([F.VehicleLeg(heading=0.0, speed=1e300, duration=60.0)], (0.0, 0.0)),
+            "legs[0].speed = 1e+300")
+    refuses(lambda: F.GroundVehicle.from_legs([F.VehicleLeg(heading=0.0, speed=1.0, duration=1e300, end_speed=2.0)],
+                                              (0.0, 0.0)), "legs[0].duration = 1e+300", "more than 1e7 samples")
+    refuses(lambda: F.GroundVehicle(np.array([0.0, 1.0]), np.array([[0.0, 0.0], [1e300, 0.0]])), "track.x")
+
+
+@pytest.mark.parametrize("args, status, fragment", [
+    (["waypoints", "{route}", "--monte-carlo", "1000000000"], 2, "--monte-carlo = 1000000000"),
+    (["waypoints", "{route}", "--turn-radius", "1e300"], 2, "--turn-radius = 1e+300"),
+    (["waypoints", "{route}", "--out", "{file}"], 1, "--out"),
+    (["loiter", "--random", "100000000", "--out", "{out}"], 2, "--random = 100000000"),
+    (["loiter", "--random", "1", "--wind", "nan,0", "--out", "{out}"], 1, "--wind"),
+    (["loiter", "--random", "1", "--out", "{file}"], 1, "is a file, not a folder"),
+    (["follow", "{binary}"], 1, "not UTF-8"),
+    (["sweep", "{binary}"], 1, "not UTF-8"),
+])
+def test_new_commands_bad_invocations_are_one_line(args: list[str], status: int, fragment: str, tmp_path: Path,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    """A monte-carlo count of 10^9 hung; --out on a file failed after the work (a Python errno line)."""
+    route = tmp_path / "route.csv"
+    route.write_text("x,y\n0,0\n200,0\n200,200\n")
+    file = tmp_path / "afile"
+    file.write_text("keep\n")
+    binary = tmp_path / "binary.yaml"
+    binary.write_bytes(b"garbage\x00\xff\n")
+    argv = [a.format(route=route, file=file, out=tmp_path / "out", binary=binary) for a in args]
+    one_line_error(argv, capsys, status, fragment)
+    assert file.read_text() == "keep\n"

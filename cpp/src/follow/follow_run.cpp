@@ -72,6 +72,9 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   const double t0 = vehicle.start_time();
   const double duration = options.flight.max_time > 0.0 ? options.flight.max_time : vehicle.end_time() - t0;
   const double period = parameters.update_period;
+  if (!(duration / period <= 1e8))  // one tick per update: bound the work and the memory of the run
+    detail::fail_field("follow.update_period", period,
+                       "more than 1e8 planner updates over the " + detail::to_text(duration) + " s flight");
 
   const Configuration start = options.start
                                   ? Configuration{options.start->x(), options.start->y(), options.start->z()}

@@ -15,16 +15,16 @@ from pathlib import Path
 from .. import VistrackError, loiter, loiter_study
 from ..progress import Progress
 from ..report import loiter as report
-from . import positive_numbers
+from . import count, output_folder, positive_numbers
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
     p = subparsers.add_parser("loiter", help="loiter planners over areas of interest and their camera coverage",
                               description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("scenarios", nargs="*", type=Path, help="scenario YAML files (examples/loiter_*.yaml)")
-    p.add_argument("--random", type=int, metavar="N", help="N random scenarios instead of files")
+    p.add_argument("--random", type=count("--random", 1, 100000), metavar="N", help="N random scenarios instead of files")
     p.add_argument("--seed", type=int, default=0, help="seed of the random scenarios (default 0)")
-    p.add_argument("--aois", type=int, nargs="+", default=list(range(4, 10)),
+    p.add_argument("--aois", type=count("--aois", 1, 10000), nargs="+", default=list(range(4, 10)),
                    help="AOI counts the random scenarios cycle through (default 4 5 6 7 8 9)")
     p.add_argument("--method", nargs="+", choices=loiter.METHODS, default=list(loiter.METHODS),
                    help="methods (default all three)")
@@ -44,11 +44,14 @@ def parse_wind(text: str) -> tuple[float, float]:
         east, north = (float(v) for v in text.split(","))
     except ValueError:
         raise VistrackError(f"--wind = {text!r}: expected two numbers E,N in m/s") from None
+    if not (abs(east) <= 1e4 and abs(north) <= 1e4):  # NaN fails too (vistrack/limits.hpp: speeds)
+        raise VistrackError(f"--wind = {text!r}: components must be finite numbers in [-1e4, 1e4] m/s")
     return east, north
 
 
 def run(args: argparse.Namespace) -> int:
     winds = [parse_wind(w) for w in args.wind] + loiter_study.wind_directions(args.wind_sweep)
+    output_folder(args.out)  # a file there is an error now, not after the plans
     if args.random is not None:
         if args.scenarios:
             raise VistrackError(f"--random = {args.random}: give scenario files or --random, not both")
