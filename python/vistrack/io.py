@@ -188,7 +188,7 @@ def parse_yaml(text: str, key: str, path: str | Path) -> Any:
             return super().construct_mapping(node, deep)
 
     try:
-        return yaml.load(text, Loader=UniqueKeyLoader)  # noqa: S506 (a SafeLoader)
+        return yaml.load(text, Loader=UniqueKeyLoader)
     except yaml.YAMLError as error:
         reason = " ".join(str(error).split())
         raise VistrackError(f"{key} = {path}: not valid YAML ({reason})") from None

@@ -357,7 +357,8 @@ def _report(section: dict[str, Any]) -> ReportOptions:
 
     return apply_checks(ReportOptions(), section, "report", {
         "html": flag, "animation": flag, "frames": lambda k, v: integer(k, v, 2, ReportOptions.MAX_FRAMES),
-        "duration": lambda k, v: number(k, v, low=0.0, high=3600.0, low_open=True), "volumes": lambda k, v: integer(k, v, 1, 100), "view": view})
+        "duration": lambda k, v: number(k, v, low=0.0, high=3600.0, low_open=True),
+        "volumes": lambda k, v: integer(k, v, 1, 100), "view": view})
 
 
 def default_scenario_text() -> str:

@@ -42,7 +42,8 @@ LONLAT = b"""{"type": "FeatureCollection", "features": [{"type": "Feature", "pro
 """
 INTERCEPT = b"""pursuer: [0.0, 0.0, 0.0]\nrho: 1.0\npursuer_speed: 1.0\ncenter: [-4.0, 3.0]\nradius: 1.0
 target_angle0: 3.14159\ntarget_speed: 1.2\ndirection: cw\n"""
-SCENARIO = b"""name: fuzz\nenvironment: {demo: true}\npoi: {speed: 5.0, waypoints: [[-290, -210], [-100, -210], [-100, 50]]}
+SCENARIO = b"""name: fuzz\nenvironment: {demo: true}
+poi: {speed: 5.0, waypoints: [[-290, -210], [-100, -210], [-100, 50]]}
 uav: {speed: 20.0, min_turn_radius: 40.0, altitude: 200.0, start: null}\nsensor: {d_max: 300.0, altitude_band: null}
 planning: {spacing: 20.0, cutoff: 2.0e7, resolution_deg: 2.0, min_spacing: 1.0, max_depth: 8, rate_margin: 0.0}
 control: {beta: 0.025, k_psi: 20.0, direction: ccw}\nbaselines: [40.0, 120.0]
@@ -84,7 +85,8 @@ def seed_inputs(target: str) -> list[bytes]:
         if (DATA / "charlotte" / "buildings.geojson").is_file():
             inputs.append((DATA / "charlotte" / "buildings.geojson").read_bytes())
     elif target == "mesh":
-        inputs += [b"\x00" + CUBE_OBJ, b"\x04" + CUBE_OBJ, b"\x01" + CUBE_OFF, b"\x02" + CUBE_PLY, b"\x03" + TRIANGLE_STL]
+        inputs += [b"\x00" + CUBE_OBJ, b"\x04" + CUBE_OBJ, b"\x01" + CUBE_OFF, b"\x02" + CUBE_PLY,
+                   b"\x03" + TRIANGLE_STL]
     elif target == "csv":
         inputs += [b"x,y,z\n0,0,0.5\n10,0,0.5\n10,10,0.5\n", b"# comment\n0 0\n\n5 5\n"]
         for path in sorted((DATA / "charlotte" / "paths").glob("*.csv")) + sorted((DATA / "campus").glob("*.csv")):

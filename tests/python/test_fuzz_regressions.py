@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "fuzz"))
-import seeds  # noqa: E402
-import targets  # noqa: E402
+import seeds
+import targets
 
 
 @pytest.mark.parametrize("name", sorted(targets.TARGETS))

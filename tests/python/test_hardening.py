@@ -57,7 +57,7 @@ def test_huge_thread_counts_are_refused_not_a_segfault() -> None:
     """shortest_lengths(..., threads=100000) killed the interpreter with SIGSEGV."""
     q0, q1 = np.zeros((4, 3)), np.ones((4, 3))
     for threads in (100000, 2**31 - 1, -1):
-        refuses(lambda: vt.dubins.shortest_lengths(q0, q1, 2.0, threads=threads), f"threads = {threads}")
+        refuses(lambda t=threads: vt.dubins.shortest_lengths(q0, q1, 2.0, threads=t), f"threads = {threads}")
     lengths, _ = vt.dubins.shortest_lengths(q0, q1, 2.0, threads=1024)
     assert np.all(np.isfinite(lengths))
 

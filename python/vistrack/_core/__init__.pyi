@@ -6,12 +6,13 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
+from . import limits
 from . import dubins
 from . import flight
 from . import waypoint_nav
 from . import loiter
 from . import follow
-__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'flight', 'follow', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'loiter', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'waypoint_nav', 'wrap_to_pi', 'xor_volume']
+__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'WorkEstimate', 'check_closed_mesh', 'check_work', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'estimate_work', 'flight', 'follow', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'limits', 'loiter', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'volume_bytes', 'waypoint_nav', 'wrap_to_pi', 'xor_volume']
 class VistrackError(ValueError):
     pass
 class Polygon:
@@ -135,9 +136,9 @@ class Planning:
     """
     Adaptive placement of visibility volumes (section IV.B).
     """
-    def __init__(self, *, spacing: typing.SupportsFloat | typing.SupportsIndex = 20.0, cutoff: typing.SupportsFloat | typing.SupportsIndex = 20000000.0, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_depth: typing.SupportsInt | typing.SupportsIndex = 8, rate_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, *, spacing: typing.SupportsFloat | typing.SupportsIndex = 20.0, cutoff: typing.SupportsFloat | typing.SupportsIndex = 20000000.0, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_depth: typing.SupportsInt | typing.SupportsIndex = 8, rate_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0, max_volumes: typing.SupportsInt | typing.SupportsIndex = 20000) -> None:
         """
-        spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin.
+        spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin, max_volumes (the largest worst-case VV count a plan may ask for).
         """
     def validate(self) -> None:
         """
@@ -158,6 +159,14 @@ class Planning:
         """
     @max_depth.setter
     def max_depth(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_volumes(self) -> int:
+        """
+        refuse, before computing any VV, a plan that may need more VVs than this (worst case: about path length / min_spacing, ~4.7 MB each at 1 degree)
+        """
+    @max_volumes.setter
+    def max_volumes(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
         ...
     @property
     def min_spacing(self) -> float:
@@ -736,6 +745,27 @@ class OrbitPlan:
         """
         Knot times t_k (s).
         """
+class WorkEstimate:
+    """
+    The work a plan may ask for, known before any VV is computed.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def bytes(self) -> float:
+        """
+        Memory of all of them (bytes).
+        """
+    @property
+    def bytes_per_volume(self) -> float:
+        """
+        Memory of one VV (bytes).
+        """
+    @property
+    def volumes(self) -> float:
+        """
+        Worst-case number of VVs (every interval halved).
+        """
 class CircularOrbits:
     """
     Result of Algorithm 1 on given MaxRadius values.
@@ -911,9 +941,9 @@ class OrbitPlanner:
         """
         Adaptive discretization (IV.B): initial spacing, halving while the metric exceeds the cutoff. progress(done, total) is called as VVs are computed.
         """
-    def fixed(self, poi: PoiPath, spacing: typing.SupportsFloat | typing.SupportsIndex, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, progress: typing.Any = None) -> Discretization:
+    def fixed(self, poi: PoiPath, spacing: typing.SupportsFloat | typing.SupportsIndex, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, progress: typing.Any = None, max_volumes: typing.SupportsInt | typing.SupportsIndex = 20000) -> Discretization:
         """
-        VVs every `spacing` m from each edge start plus every node, and the metric between neighbours.
+        VVs every `spacing` m from each edge start plus every node, and the metric between neighbours; VistrackError before any work when that is more than max_volumes VVs.
         """
     def plan(self, poi: PoiPath, uav: Uav, planning: Planning, progress: typing.Any = None) -> VisibilityOrbitPlan:
         """
@@ -946,6 +976,10 @@ class OrbitState:
     def __init__(self, *, center: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., center_velocity: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., radius: typing.SupportsFloat | typing.SupportsIndex = 1.0, radius_rate: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         """
         center g (m), center_velocity g_dot (m/s), radius R (m), radius_rate dR/dt (m/s).
+        """
+    def validate(self) -> None:
+        """
+        Raise VistrackError naming the first field out of range.
         """
     @property
     def center(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
@@ -1326,6 +1360,10 @@ def check_closed_mesh(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.f
     """
     Check with CGAL that a triangle mesh is closed, 2-manifold, free of self-intersections, bounds a volume and is outward oriented.
     """
+def check_work(poi: PoiPath, planning: Planning) -> WorkEstimate:
+    """
+    estimate_work, and VistrackError naming planning.max_volumes when the worst case exceeds it (what the planner does before computing any VV); returns the estimate.
+    """
 def circular_orbits(times: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], max_radii: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], uav: Uav, poi_speed: typing.SupportsFloat | typing.SupportsIndex, rate_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> CircularOrbits:
     """
     Algorithm 1 (lines 2-18): lower radii so that |dR/dt| <= (1 - rate_margin)(v - v_g) (Lemma 5 for rate_margin = 0), each limited radius built from its neighbour's, then check R_k >= r_min (1 + v_g/v)^2 (Lemma 6). VistrackError when the UAV is not faster than the POI.
@@ -1337,6 +1375,10 @@ def constant_radius_plan(poi: PoiPath, radius: typing.SupportsFloat | typing.Sup
 def epsilon_max() -> float:
     """
     Maximum of atan^2(x) / (1 + x^2), about 0.31483 (98).
+    """
+def estimate_work(poi: PoiPath, planning: Planning) -> WorkEstimate:
+    """
+    Worst case of plan_orbits / OrbitPlanner.plan on this path: VVs (every initial interval halved down to min_spacing or max_depth) and their memory; the planner refuses a worst case beyond planning.max_volumes before computing any VV.
     """
 def grid_xor_volume(a: VisibilityVolume, b: VisibilityVolume) -> float:
     """
@@ -1476,9 +1518,13 @@ def visibility_volumes(scene: VisibilityScene, pois: typing.Annotated[numpy.typi
     """
     VVs for every row of pois (n, 3), in parallel over the points.
     """
+def volume_bytes(resolution_deg: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    Memory of one VV on a grid of resolution_deg degrees (bytes; ~4.7 MB at 1 degree).
+    """
 def wrap_to_pi(angle: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """
-    Angle wrapped to (-pi, pi].
+    Angle wrapped to (-pi, pi]; VistrackError when not finite.
     """
 def xor_volume(a: VisibilityVolume, b: VisibilityVolume, frame: str = 'poi', method: str = 'auto', time_limit: typing.SupportsFloat | typing.SupportsIndex = 120.0, perturbation: typing.SupportsFloat | typing.SupportsIndex | None = None) -> float:
     """

@@ -22,7 +22,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p = subparsers.add_parser("loiter", help="loiter planners over areas of interest and their camera coverage",
                               description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("scenarios", nargs="*", type=Path, help="scenario YAML files (examples/loiter_*.yaml)")
-    p.add_argument("--random", type=count("--random", 1, 100000), metavar="N", help="N random scenarios instead of files")
+    p.add_argument("--random", type=count("--random", 1, 100000), metavar="N",
+                   help="N random scenarios instead of files")
     p.add_argument("--seed", type=int, default=0, help="seed of the random scenarios (default 0)")
     p.add_argument("--aois", type=count("--aois", 1, 10000), nargs="+", default=list(range(4, 10)),
                    help="AOI counts the random scenarios cycle through (default 4 5 6 7 8 9)")

@@ -32,7 +32,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--speed", type=speed("--speed"), default=uav.speed, help="UAV speed v, m/s")
     p.add_argument("--min-turn-radius", type=length("--min-turn-radius"), default=uav.min_turn_radius, help="r_min, m")
     p.add_argument("--altitude", type=coordinate("--altitude"), default=uav.altitude, help="h_UAV, m")
-    p.add_argument("--beta", type=number("--beta", 1e-9, 1e3), default=control.beta, help="beta of the vector field, 1/m")
+    p.add_argument("--beta", type=number("--beta", 1e-9, 1e3), default=control.beta,
+                   help="beta of the vector field, 1/m")
     p.add_argument("--k-psi", type=number("--k-psi", 1e-9, 1e6), default=control.k_psi, help="heading gain k_psi, 1/s")
     p.add_argument("--direction", default=control.direction, choices=["ccw", "cw"], help="circulation")
     p.add_argument("--x0", type=configuration("--x0"), help="start X,Y,PSI (default: on the first orbit east of "

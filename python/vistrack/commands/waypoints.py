@@ -45,18 +45,22 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                         help="constant wind east,north (default 0,0)")
     parser.add_argument("--gusts", type=int, metavar="SEED",
                         help="add Dryden gusts with this seed (light turbulence, MIL-F-8785C, see vt.waypoint_nav)")
-    parser.add_argument("--turn-radius", type=length("--turn-radius"), default=d["turn_radius"], help=f"R (default {d['turn_radius']})")
+    parser.add_argument("--turn-radius", type=length("--turn-radius"), default=d["turn_radius"],
+                        help=f"R (default {d['turn_radius']})")
     parser.add_argument("--speed", type=speed("--speed"), default=d["speed"], help=f"v (default {d['speed']})")
-    parser.add_argument("--dt", type=number("--dt", 0.0, 3600.0, low_open=True), default=d["dt"], help=f"step (default {d['dt']})")
+    parser.add_argument("--dt", type=number("--dt", 0.0, 3600.0, low_open=True), default=d["dt"],
+                        help=f"step (default {d['dt']})")
     parser.add_argument("--gains", type=finite_numbers("--gains", 2, "0.1,5.25"), default=list(d["gains"]),
                         help="g,h (default the paper's 0.1,5.25)")
     parser.add_argument("--integration", choices=["discrete", "continuous"], default=d["integration"])
     parser.add_argument("--figure-weights", action="store_true", help="also Figure 10 (theta against w_a)")
-    parser.add_argument("--monte-carlo", type=count("--monte-carlo", 1, 100000), metavar="N", help="also N seeded random routes and winds")
+    parser.add_argument("--monte-carlo", type=count("--monte-carlo", 1, 100000), metavar="N",
+                        help="also N seeded random routes and winds")
     parser.add_argument("--seed", type=int, default=0, help="Monte Carlo seed (default 0)")
     parser.add_argument("--monte-carlo-wind", type=finite_numbers("--monte-carlo-wind", 2, "0,0.2"),
                         default=[0.0, 0.2], help="Monte Carlo wind speeds, fractions of v (default 0,0.2)")
-    parser.add_argument("--altitude", type=coordinate("--altitude"), default=60.0, help="mission altitude for --export, m (default 60)")
+    parser.add_argument("--altitude", type=coordinate("--altitude"), default=60.0,
+                        help="mission altitude for --export, m (default 60)")
     add_export_arguments(parser)
     add_report_arguments(parser)
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
