@@ -92,7 +92,7 @@ class FollowScenario:
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any], base: Path, path: Optional[Path] = None) -> "FollowScenario":
-        unknown = sorted(set(data) - TOP_KEYS)
+        unknown = sorted(set(data) - TOP_KEYS, key=str)  # a YAML key may be a number
         if unknown:
             raise fail(unknown[0], data[unknown[0]], f"unknown key; allowed: {', '.join(sorted(TOP_KEYS))}")
         u = section(data, "uav", {"speed", "min_turn_radius", "altitude"})
@@ -231,7 +231,7 @@ def _legs(items: Any) -> list[VehicleLeg]:
         key = f"vehicle.legs[{i}]"
         if not isinstance(leg, Mapping):
             raise fail(key, leg, "must be a mapping with heading, speed, duration")
-        unknown = sorted(set(leg) - allowed)
+        unknown = sorted(set(leg) - allowed, key=str)
         if unknown:
             raise fail(f"{key}.{unknown[0]}", leg[unknown[0]], f"unknown key; allowed: {', '.join(sorted(allowed))}")
         speed = number(f"{key}.speed", leg.get("speed", 0.0), low=0.0)

@@ -41,9 +41,10 @@ class InterceptProblem:
     def from_mapping(cls, data: Mapping[str, Any], where: str = "config") -> "InterceptProblem":
         """Defaults updated by ``data``; unknown keys and bad values name the key."""
         names = [f.name for f in fields(cls)]
-        unknown = sorted(set(data) - set(names))
+        unknown = sorted((str(key) for key in set(data) - set(names)), key=str)
         if unknown:
-            raise fail(f"{where}.{unknown[0]}", data[unknown[0]], f"unknown key (known: {', '.join(names)})")
+            first = next(key for key in data if str(key) == unknown[0])  # a YAML key may be a number (0: w)
+            raise fail(f"{where}.{unknown[0]}", data[first], f"unknown key (known: {', '.join(names)})")
         problem = cls()
         for key, value in data.items():
             if value is None:

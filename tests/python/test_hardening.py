@@ -414,3 +414,15 @@ def test_new_commands_bad_invocations_are_one_line(args: list[str], status: int,
     argv = [a.format(route=route, file=file, out=tmp_path / "out", binary=binary) for a in args]
     one_line_error(argv, capsys, status, fragment)
     assert file.read_text() == "keep\n"
+
+
+def test_yaml_keys_that_are_numbers_name_the_key(tmp_path: Path) -> None:
+    """Found by the fuzzer (tests/fuzz/regressions/intercept/fuzz-integer-key.yaml): a YAML key
+    such as ``0:`` raised TypeError while sorting the unknown keys."""
+    from vistrack.follow_scenario import FollowScenario
+    from vistrack.intercept import InterceptProblem
+
+    path = tmp_path / "keys.yaml"
+    path.write_text("0: w\nradius: 1.0\n")
+    refuses(lambda: InterceptProblem.load(path, {}), "config.0")
+    refuses(lambda: FollowScenario.load(path), "0 = 'w'", "unknown key")
