@@ -55,7 +55,7 @@ def test_yaml_file_and_flag_override(tmp_path: Path) -> None:
     ("argv", "message"),
     [
         (["--rho", "-1"], "rho = -1"),
-        (["--pursuer-speed", "0"], "pursuer_speed"),
+        (["--pursuer-speed", "0"], "--pursuer-speed = 0"),
         (["--radius", "nan"], "radius"),
     ],
 )
@@ -67,6 +67,6 @@ def test_bad_flags_exit_2_naming_the_field(tmp_path: Path, capsys, argv: list[st
 def test_bad_yaml(tmp_path: Path, capsys) -> None:
     config = tmp_path / "bad.yaml"
     config.write_text("rho: 1.0\nspeed_of_light: 3\n")
-    assert main(["intercept", "--config", str(config), "--out", str(tmp_path / "x")]) == 2
+    assert main(["intercept", "--config", str(config), "--out", str(tmp_path / "x")]) == 1  # a failure, not usage
     assert "speed_of_light" in capsys.readouterr().err
-    assert main(["intercept", "--config", str(tmp_path / "missing.yaml"), "--out", str(tmp_path / "x")]) == 2
+    assert main(["intercept", "--config", str(tmp_path / "missing.yaml"), "--out", str(tmp_path / "x")]) == 1

@@ -241,7 +241,7 @@ def test_cli_error_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str
 
     bad = tmp_path / "bad.yaml"
     bad.write_text("follow: {period: -3}\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}\n")
-    assert main(["follow", str(bad), "--out", str(tmp_path / "o")]) == 2
+    assert main(["follow", str(bad), "--out", str(tmp_path / "o")]) == 1  # input refused: a failure
     assert "follow.period = -3" in capsys.readouterr().err
 
 

@@ -397,7 +397,7 @@ def test_follow_refuses_out_of_range_inputs_and_wrong_shapes() -> None:
     (["waypoints", "{route}", "--turn-radius", "1e300"], 2, "--turn-radius = 1e+300"),
     (["waypoints", "{route}", "--out", "{file}"], 1, "--out"),
     (["loiter", "--random", "100000000", "--out", "{out}"], 2, "--random = 100000000"),
-    (["loiter", "--random", "1", "--wind", "nan,0", "--out", "{out}"], 1, "--wind"),
+    (["loiter", "--random", "1", "--wind", "nan,0", "--out", "{out}"], 2, "--wind"),
     (["loiter", "--random", "1", "--out", "{file}"], 1, "is a file, not a folder"),
     (["follow", "{binary}"], 1, "not UTF-8"),
     (["sweep", "{binary}"], 1, "not UTF-8"),

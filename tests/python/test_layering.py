@@ -11,10 +11,11 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
 
-# Bottom to top. error/geometry/parameters are the base every area may use; planners are peers of
-# one another and may not include each other.
+# Bottom to top. error/limits (the input ranges)/geometry/parameters are the base every area may
+# use; planners are peers of one another and may not include each other.
 LEVELS = {
-    "error": 0, "geometry": 1, "parameters": 2, "environment": 3, "dubins": 4, "visibility": 5, "volume": 6,
+    "error": 0, "limits": 0.5, "geometry": 1, "parameters": 2, "environment": 3, "dubins": 4, "visibility": 5,
+    "volume": 6,
     "orbit": 7, "guidance": 8, "ode": 9, "simulate": 10, "flight": 11,
     "waypoint_nav": 12, "loiter": 12, "follow": 12,
 }

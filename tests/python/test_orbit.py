@@ -176,4 +176,4 @@ def test_cli_orbits_writes_plan_and_figures(charlotte, tmp_path):
     assert (again_dir / "orbits.png").stat().st_size > 300
     assert main(["orbits", "--out", str(again_dir)]) == 2  # neither map and path nor a plan
     assert main(["orbits", "--map", str(tmp_path / "missing.obj"), "--path",
-                 str(charlotte / "paths" / "paper_small.csv"), "--out", str(out)]) == 2
+                 str(charlotte / "paths" / "paper_small.csv"), "--out", str(out)]) == 1  # a failure, not usage

@@ -133,7 +133,7 @@ def test_from_volumes_errors(city, tmp_path: Path, capsys) -> None:
     env, poi, uav, sensor, csv = city
     empty = tmp_path / "empty"
     empty.mkdir()
-    assert _orbits(empty, csv, uav, tmp_path / "out") == 2
+    assert _orbits(empty, csv, uav, tmp_path / "out") == 1
     assert "no VV files" in _error_line(capsys)
     assert not (tmp_path / "out").exists()
 
@@ -151,7 +151,7 @@ def test_from_volumes_errors(city, tmp_path: Path, capsys) -> None:
     corrupt.mkdir()
     (corrupt / "vv-0.bin").write_bytes((good / "vv-0.bin").read_bytes())
     (corrupt / "vv-1.bin").write_bytes((good / "vv-1.bin").read_bytes()[:200])
-    assert _orbits(corrupt, csv, uav, tmp_path / "out") == 2
+    assert _orbits(corrupt, csv, uav, tmp_path / "out") == 1
     assert "vv-1.bin" in _error_line(capsys)
 
     off = tmp_path / "off"
@@ -159,7 +159,7 @@ def test_from_volumes_errors(city, tmp_path: Path, capsys) -> None:
     (off / "vv-0.bin").write_bytes((good / "vv-0.bin").read_bytes())
     vt.visibility_volume(scene, np.array([-45.0, 1.5, 0.5]), sensor.d_max, None, RESOLUTION) \
         .save_binary(off / "vv-far.bin")
-    assert _orbits(off, csv, uav, tmp_path / "out") == 2
+    assert _orbits(off, csv, uav, tmp_path / "out") == 1
     line = _error_line(capsys)
     assert "vv-far.bin" in line and "1.500 m from the POI path" in line
 
@@ -167,7 +167,7 @@ def test_from_volumes_errors(city, tmp_path: Path, capsys) -> None:
     mixed.mkdir()
     (mixed / "vv-0.bin").write_bytes((good / "vv-0.bin").read_bytes())
     vt.visibility_volume(scene, np.array([-45.0, 0.0, 0.5]), sensor.d_max, None, 6.0).save_binary(mixed / "vv-1.bin")
-    assert _orbits(mixed, csv, uav, tmp_path / "out") == 2
+    assert _orbits(mixed, csv, uav, tmp_path / "out") == 1
     assert "vv-1.bin" in _error_line(capsys)
 
     assert main(["orbits", "--from-volumes", str(good), "--out", str(tmp_path / "out")]) == 2

@@ -100,7 +100,7 @@ def test_print_defaults_is_a_valid_scenario(tmp_path: Path, capsys: pytest.Captu
 @pytest.mark.parametrize(
     "text, message",
     [
-        ("uav: {speed: -1}\n", "uav.speed = -1: must be > 0"),
+        ("uav: {speed: -1}\n", "uav.speed = -1: must be >= 1e-06"),
         ("planning: {cutof: 3}\n", "planning.cutof = 3: unknown key"),
         ("environment: {mesh: missing.obj}\n", "missing.obj"),
     ],
@@ -109,7 +109,7 @@ def test_run_errors_are_one_clear_line(text: str, message: str, tmp_path: Path,
                                        capsys: pytest.CaptureFixture[str]) -> None:
     path = tmp_path / "bad.yaml"
     path.write_text(text)
-    assert main(["run", str(path), "--out", str(tmp_path / "o"), "--quiet"]) == 2
+    assert main(["run", str(path), "--out", str(tmp_path / "o"), "--quiet"]) == 1  # input refused: a failure
     err = capsys.readouterr().err.strip()
     assert err.startswith("vistrack run: error:") and message in err
     assert len(err.splitlines()) == 1

@@ -69,7 +69,7 @@ def test_origin_georeferences_the_environment(tmp_path: Path) -> None:
     [
         ("uav: {sped: 3}", r"uav.sped = 3: unknown key; allowed keys in uav: altitude, min_turn_radius"),
         ("colour: red", r"colour = 'red': unknown section"),
-        ("uav: {speed: -2}", r"uav.speed = -2: must be > 0"),
+        ("uav: {speed: -2}", r"uav.speed = -2: must be >= 1e-06"),
         ("uav: {speed: .nan}", r"uav.speed = nan: must be a finite number"),
         ("uav: {speed: fast}", r"uav.speed = 'fast': must be a number"),
         ("uav: {speed: 4}\npoi: {speed: 5}", r"uav.speed = 4.0: must exceed poi.speed"),
@@ -85,7 +85,7 @@ def test_origin_georeferences_the_environment(tmp_path: Path) -> None:
         ("environment: {demo: true, mesh: a.obj}", r"environment = .*exactly one of"),
         ("poi: {waypoints: [[0, 0]]}", r"poi.waypoints = .*at least two"),
         ("uav: {start: [0, 1]}", r"uav.start = \[0, 1\]: must be \[x, y, psi\]"),
-        ("baselines: [10, -1]", r"baselines\[1\] = -1: must be > 0"),
+        ("baselines: [10, -1]", r"baselines\[1\] = -1: must be >= 1e-06"),
         ("- 1\n- 2", r"scenario = .*must be a mapping"),
         ("origin: [95, 0]", r"origin\[0\] = 95: must be in \[-90, 90\] degrees"),
         ("origin: [35, -80, 1, 2]", r"origin = \[35, -80, 1, 2\]: must be \[lat, lon\] or \[lat, lon, alt\]"),

@@ -106,7 +106,7 @@ def test_cli_simulate_and_tune(tmp_path):
     metrics = json.loads((out / "metrics.json").read_text())
     assert metrics["visibility orbit"]["samples"] == len(direct.t)
     assert metrics["constant R = 120 m"]["orbit_radius_first_m"] == 120.0
-    assert main(["simulate", "--plan", str(tmp_path / "missing.json"), "--out", str(out)]) == 2
+    assert main(["simulate", "--plan", str(tmp_path / "missing.json"), "--out", str(out)]) == 1
 
     tune_out = tmp_path / "tune"
     assert main(["tune", "--out", str(tune_out), "--sweep", "0.01,0.025,0.1"]) == 0

@@ -202,7 +202,7 @@ def test_cli_volumes_writes_results(charlotte, tmp_path: Path):
                              [np.array(h) for h in record["visibility_polygon"][0]["holes"]])
         assert polygon.distance_to_boundary(np.array(record["poi"][:2])) == pytest.approx(record["max_radius"])
     assert (out / "plan.png").stat().st_size > 10_000 and (out / "vv3d.png").stat().st_size > 10_000
-    assert main(["volumes", "--map", str(tmp_path / "missing.geojson"), "--points", "0,0", "--out", str(out)]) == 2
+    assert main(["volumes", "--map", str(tmp_path / "missing.geojson"), "--points", "0,0", "--out", str(out)]) == 1
     assert main(["volumes", "--map", str(charlotte / "buildings.geojson"), "--points", "a,b", "--out", str(out)]) == 2
 
 

@@ -226,5 +226,5 @@ def test_cli_report_and_export(tmp_path: Path) -> None:
 def test_cli_bad_route_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     bad = tmp_path / "r.csv"
     bad.write_text("x,y\n0,0\n")
-    assert main(["waypoints", str(bad), "--out", str(tmp_path / "o")]) == 2
+    assert main(["waypoints", str(bad), "--out", str(tmp_path / "o")]) == 1
     assert "ROUTE" in capsys.readouterr().err

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, Optional
@@ -82,15 +83,19 @@ def count(flag: str, low: int, high: int) -> Callable[[str], int]:
 
 
 def output_folder(path: str | Path, flag: str = "--out") -> Path:
-    """The folder a command writes into, created now: a path that is a file, or a folder that
-    cannot be created, is an error before the work starts rather than after it."""
+    """The folder a command writes into, checked now (not created: a failed run leaves nothing): a
+    path that is a file, or under a file, or in a folder that cannot be written, is an error before
+    the work starts rather than after it."""
     folder = Path(path)
     if folder.exists() and not folder.is_dir():
         raise VistrackError(f"{flag} = {path}: is a file, not a folder")
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-    except OSError as error:
-        raise VistrackError(f"{flag} = {path}: cannot create the folder ({error.strerror})") from None
+    existing = folder
+    while not existing.exists() and existing != existing.parent:
+        existing = existing.parent
+    if not existing.is_dir():
+        raise VistrackError(f"{flag} = {path}: {existing} is a file, not a folder")
+    if not os.access(existing, os.W_OK | os.X_OK):
+        raise VistrackError(f"{flag} = {path}: cannot create the folder ({existing} is not writable)")
     return folder
 
 

@@ -12,10 +12,10 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from .. import VistrackError, loiter, loiter_study
+from .. import loiter, loiter_study
 from ..progress import Progress
 from ..report import loiter as report
-from . import count, output_folder, positive_numbers
+from . import UsageError, count, output_folder, positive_numbers
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -44,9 +44,9 @@ def parse_wind(text: str) -> tuple[float, float]:
     try:
         east, north = (float(v) for v in text.split(","))
     except ValueError:
-        raise VistrackError(f"--wind = {text!r}: expected two numbers E,N in m/s") from None
+        raise UsageError(f"--wind = {text!r}: expected two numbers E,N in m/s") from None
     if not (abs(east) <= 1e4 and abs(north) <= 1e4):  # NaN fails too (vistrack/limits.hpp: speeds)
-        raise VistrackError(f"--wind = {text!r}: components must be finite numbers in [-1e4, 1e4] m/s")
+        raise UsageError(f"--wind = {text!r}: components must be finite numbers in [-1e4, 1e4] m/s")
     return east, north
 
 
@@ -55,16 +55,16 @@ def run(args: argparse.Namespace) -> int:
     output_folder(args.out)  # a file there is an error now, not after the plans
     if args.random is not None:
         if args.scenarios:
-            raise VistrackError(f"--random = {args.random}: give scenario files or --random, not both")
+            raise UsageError(f"--random = {args.random}: give scenario files or --random, not both")
         if args.random < 1:
-            raise VistrackError(f"--random = {args.random}: must be at least 1")
+            raise UsageError(f"--random = {args.random}: must be at least 1")
         with Progress("random scenarios", not args.quiet, unit="scenario") as bar:
             records = loiter_study.random_study(args.random, args.seed, args.method, args.order, args.aois, bar)
         written = report.write_random(args.out, records)
         print((args.out / "random.md").read_text(encoding="utf-8"), end="")
     else:
         if not args.scenarios:
-            raise VistrackError("scenarios: give at least one scenario file, or --random N")
+            raise UsageError("scenarios: give at least one scenario file, or --random N")
         scenarios = [loiter.load_scenario(path) for path in args.scenarios]
         rows, written = [], []
         for scenario in scenarios:
