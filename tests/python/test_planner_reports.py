@@ -87,6 +87,8 @@ def test_loiter_report_files_and_gif(loiter_report: Path) -> None:
                  "LDLPP camera footprint"):
         assert name in names, name
     assert not any(str(n).startswith("wind") for n in names)  # no wind given: no arrow
+    low, top = figure["layout"]["scene"]["zaxis"]["range"]
+    assert low <= 0.0 and top > vt.loiter.load_scenario(LOITER).camera.altitude  # footprints on the ground in view
 
 
 def test_loiter_figure_plots_the_sampled_plans(loiter_report: Path) -> None:
