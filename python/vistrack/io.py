@@ -481,10 +481,10 @@ def read_loiter_scenario(path: str | Path) -> LoiterScenario:
     if not isinstance(raw_aois, list) or not raw_aois:
         raise schema.fail("aois", raw_aois, "must be a non-empty list of [x, y] AOI centres")
     aois = np.array([pair(f"aois[{i}]", a) for i, a in enumerate(raw_aois)], dtype=float)
-    camera_section = schema.section(data, "camera", {"fov_deg", "max_gimbal_deg", "altitude"})
+    camera_section = schema.section(data, "camera", {"fov_deg", "max_gimbal_deg", "altitude", "levelled"})
     camera = schema.apply_checks(Camera(), camera_section, "camera", {
         "fov_deg": schema.positive, "max_gimbal_deg": lambda k, v: schema.number(k, v, low=0.0),
-        "altitude": schema.positive})
+        "altitude": schema.positive, "levelled": schema.boolean})
     paper = data.get("paper") or {}
     if not isinstance(paper, dict):
         raise schema.fail("paper", paper, "must map a method to its Table 1 numbers")

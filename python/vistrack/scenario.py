@@ -35,7 +35,7 @@ from .mission import Georeference
 from .plotting.animation import DEFAULT_DURATION_S, DEFAULT_FRAMES
 from .plotting.interactive import DEFAULT_VOLUMES
 from .plotting.volumes import DEFAULT_VIEW
-from .schema import apply_checks, fail, integer, number, positive, resolve_path, section
+from .schema import apply_checks, boolean, fail, integer, number, positive, resolve_path, section
 
 __all__ = ["EnvironmentSpec", "PoiSpec", "ReportOptions", "Scenario", "default_scenario_text", "road_route"]
 
@@ -347,18 +347,13 @@ def _baselines(value: Any) -> list[float]:
 
 
 def _report(section: dict[str, Any]) -> ReportOptions:
-    def flag(key: str, value: Any) -> bool:
-        if not isinstance(value, bool):
-            raise fail(key, value, "must be true or false")
-        return value
-
     def view(key: str, value: Any) -> tuple[float, float]:
         if not isinstance(value, list) or len(value) != 2:
             raise fail(key, value, "must be [elevation, azimuth] in degrees")
         return (number(f"{key}[0]", value[0], low=-90.0, high=90.0), number(f"{key}[1]", value[1]))
 
     return apply_checks(ReportOptions(), section, "report", {
-        "html": flag, "animation": flag, "frames": lambda k, v: integer(k, v, 2, ReportOptions.MAX_FRAMES),
+        "html": boolean, "animation": boolean, "frames": lambda k, v: integer(k, v, 2, ReportOptions.MAX_FRAMES),
         "duration": positive, "volumes": lambda k, v: integer(k, v, 1, 100), "view": view})
 
 

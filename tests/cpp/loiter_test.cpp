@@ -564,16 +564,44 @@ TEST(LoiterCoverage, LoiterAtTheAoiRadiusKeepsItInView) {
   EXPECT_GT(coverage.area, 0.75 * kPiTest * 46.0 * 46.0 * loiter_steps);
 }
 
+TEST(LoiterCoverage, BodyCameraLooksOutOfTheTurnLevelledOneDoesNot) {
+  // Banking left (left wing down) turns the belly to the right: a camera under it, gimbal at 0,
+  // looks to the right of the track by the bank. The levelled camera stays at nadir. Single
+  // left-turning pose heading east, no AOI in reach (the gimbal then levels what it can).
+  Points3 poses(1, 3);
+  poses << 0.0, 0.0, 0.0;
+  const double rate = 12.0 / 46.0, bank = bank_angle(12.0, rate);
+  ASSERT_GT(bank, 0.2);
+  LoiterCamera body;
+  body.levelled = false;
+  body.max_gimbal_deg = 0.0;
+  const Footprint seen = camera_footprint(body, {0.0, 0.0, 0.0}, camera_tilt(body, bank, 0.0));
+  EXPECT_LT(seen.center.y(), -body.altitude * std::tan(bank) * 0.99);  // to the right, at least h tan(bank)
+  EXPECT_NEAR(camera_tilt(LoiterCamera{}, bank, 0.1), 0.1, 1e-15);
+  const std::vector<Vec2> far{Vec2(5000.0, 0.0)};
+  const LoiterCoverage levelled = loiter_coverage(poses, {rate}, far, 46.0, 12.0);
+  EXPECT_NEAR(levelled.tilt[0], 0.0, 1e-15);
+  const LoiterCoverage fixed = loiter_coverage(poses, {rate}, far, 46.0, 12.0, body);
+  EXPECT_NEAR(fixed.tilt[0], -bank, 1e-15);
+  body.max_gimbal_deg = 25.0;
+  const LoiterCoverage gimballed = loiter_coverage(poses, {rate}, far, 46.0, 12.0, body);
+  EXPECT_NEAR(gimballed.tilt[0], 0.0, 1e-15);  // the gimbal (25 deg > bank) levels it
+  EXPECT_NEAR(gimballed.gimbal[0], bank, 1e-15);
+}
+
 TEST(LoiterCoverage, GimbalChoiceBeatsEveryScannedAngle) {
   // No gimbal angle covers more AOIs than the chosen one; with equally many, none holds more of
   // them in view (one AOI: more of it). Scenarios with AOIs close together, where two can count.
-  const LoiterCamera camera;
   const double limit = 25.0 * kPiTest / 180.0, disk = kPiTest * 46.0 * 46.0;
+  for (const bool levelled : {true, false})
   for (const auto& aois : {std::vector<Vec2>{Vec2(250.0, 150.0), Vec2(500.0, 450.0)},
                            std::vector<Vec2>{Vec2(300.0, 300.0), Vec2(400.0, 300.0), Vec2(350.0, 390.0)}}) {
     LoiterProblem problem;
     problem.aois = aois;
     const LoiterPlan plan = plan_loiter(problem, LoiterMethod::Tlpp);
+    LoiterCamera camera;
+    camera.levelled = levelled;
+    camera.altitude = 120.0;  // a footprint wide enough for two AOIs 100 m apart
     const LoiterCoverage coverage = loiter_coverage(plan, camera);
     const LoiterSamples s = plan.sample_states(1.0, false);
     const std::size_t m = aois.size();
@@ -586,7 +614,7 @@ TEST(LoiterCoverage, GimbalChoiceBeatsEveryScannedAngle) {
         double seen = 0.0, most = 0.0;
         for (std::size_t i = 0; i < m; ++i) {
           const double f = given ? (*given)[i]
-                                 : footprint_disk_area(camera_footprint(camera, pose, coverage.bank[k] + gimbal),
+                                 : footprint_disk_area(camera_footprint(camera, pose, camera_tilt(camera, coverage.bank[k], gimbal)),
                                                        aois[i], 46.0) / disk;
           most = std::max(most, f);
           if (f >= 0.75) {
@@ -623,7 +651,9 @@ TEST(LoiterCoverage, BadInputNamesTheField) {
   poses << 0, 0, 0, 1, 0, 0;
   const std::vector<Vec2> aois{Vec2(100.0, 0.0)};
   EXPECT_THROW(loiter_coverage(poses, {0.0}, aois, 46.0, 12.0), Error);
-  EXPECT_THROW(loiter_coverage(poses, {0.0, 5.0}, aois, 46.0, 12.0), Error);  // banks past the horizon
+  LoiterCamera body;
+  body.levelled = false;
+  EXPECT_THROW(loiter_coverage(poses, {0.0, 5.0}, aois, 46.0, 12.0, body), Error);  // banks past the horizon
   LoiterCoverageOptions options;
   options.threshold = 1.5;
   EXPECT_THROW(loiter_coverage(poses, {0.0, 0.0}, aois, 46.0, 12.0, LoiterCamera{}, options), Error);

@@ -111,7 +111,7 @@ def test_coverage_fractions_agree_with_shapely() -> None:
         i = cov.pointed[k]
         if i < 0:
             continue
-        footprint = camera.footprint(tuple(states.poses[k]), cov.bank[k] + cov.gimbal[k])
+        footprint = camera.footprint(tuple(states.poses[k]), cov.tilt[k])
         disk = Point(*SQUARE[i]).buffer(46.0, 1024)
         theirs = _ellipse_polygon(footprint).intersection(disk).area / disk.area
         assert cov.fraction[k, i] == pytest.approx(theirs, abs=2e-4)

@@ -109,7 +109,7 @@ def test_loiter_figure_plots_the_sampled_plans(loiter_report: Path) -> None:
 
 
 def test_loiter_footprints_are_the_ones_scored() -> None:
-    """The drawn footprint at each step (camera tilted by bank + gimbal) holds, of each AOI, the
+    """The drawn footprint at each step (camera tilted by cov.tilt) holds, of each AOI, the
     fraction the coverage metric counted (a 72-gon against the exact ellipse: within 2 %)."""
     scenario = vt.loiter.load_scenario(LOITER)
     plan = scenario.plan("fly_through")

@@ -158,10 +158,14 @@ struct LoiterParameters {
 // The camera of section 2.2: a circular (conic) field of view, full angle fov_deg, on a one-axis
 // (roll) gimbal of +-max_gimbal_deg. altitude: height above the AOIs' ground plane. 61 m is the
 // height at which the paper's nadir footprint is 6,638 m^2 (pi (61 tan 37 deg)^2 = 6,637.9 m^2).
+// levelled: the gimbal angle is measured from the vertical, as the paper states (a gimbal that
+// also takes out the bank); false: a roll gimbal under the banked body, whose belly faces out of
+// every turn, so the axis tilts by gimbal - bank (see camera_tilt in loiter.hpp).
 struct LoiterCamera {
   double fov_deg = 74.0;
   double max_gimbal_deg = 25.0;
   double altitude = 61.0;
+  bool levelled = true;
   void validate() const;
 };
 

@@ -80,9 +80,9 @@ def flown_states(scenario: loiter.Scenario, plan: loiter.Plan, planned: loiter.C
 
 
 def footprint_rings(camera: loiter.Camera, poses: np.ndarray, cov: loiter.Coverage) -> list[list[np.ndarray]]:
-    """At each step, the footprint the coverage metric scored: the camera tilted by the bank plus the
-    gimbal angle it chose (``cov.bank + cov.gimbal``), as one elliptic ring."""
-    tilt = np.asarray(cov.bank) + np.asarray(cov.gimbal)
+    """At each step, the footprint the coverage metric scored: the camera axis at the tilt of the
+    bank and the gimbal angle it chose (``cov.tilt``), as one elliptic ring."""
+    tilt = np.asarray(cov.tilt)
     rings = []
     for pose, angle in zip(poses, tilt):
         f = camera.footprint((float(pose[0]), float(pose[1]), float(pose[2])), float(angle))
