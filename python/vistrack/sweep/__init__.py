@@ -8,8 +8,8 @@ result = vt.sweep.run(spec, scheduler="serial")                 # one by one her
 result.rows, result.columns, result.failed, result.files        # results.csv, results.parquet, figures
 ```
 A sweep file (:mod:`vistrack.sweep.spec`) names a base case of one kind (:mod:`vistrack.sweep.kinds`:
-``tracking``, ``waypoints``, ``loiter``, ``follow``), the parameters to vary and their combination; each case is one task, run by
-:func:`run_case` with the worker's shared environment and planner
+``tracking``, ``waypoints``, ``loiter``, ``follow``), the parameters to vary and their combination;
+each case is one task, run by :func:`run_case` with the worker's shared environment and planner
 (:mod:`vistrack.sweep.resources`).
 """
 

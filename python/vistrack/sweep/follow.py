@@ -120,7 +120,8 @@ def _run(data: dict[str, Any], context: CaseContext) -> CaseOutput:
 
 FOLLOW = register_kind(CaseKind(
     name="follow",
-    description="following a ground vehicle: sinusoid and loiter modes, and the vector-field baseline (vistrack follow)",
+    description="following a ground vehicle: sinusoid and loiter modes, and the vector-field baseline "
+                "(vistrack follow)",
     load_base=_base, keys=_keys, run=_run, apply=_apply, metric_names=_METRICS,
     figure_metrics=("mean_tracking_error_m", "along_track_lag_m", "camera_fraction", "mode_switches"),
 ))
