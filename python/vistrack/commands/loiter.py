@@ -10,6 +10,7 @@ distributions per method (random.md, random.json, random_distribution.png).
 from __future__ import annotations
 
 import argparse
+from functools import partial
 from pathlib import Path
 
 from .. import VistrackError, loiter, loiter_study
@@ -50,6 +51,9 @@ def parse_wind(text: str) -> tuple[float, float]:
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.export and (len(args.scenarios) > 1 or (args.random or 1) > 1):
+        raise VistrackError(f"--export = {args.export[0]}: exports one scenario's plans; give one scenario file "
+                            "or --random 1")
     winds = [parse_wind(w) for w in args.wind] + loiter_study.wind_directions(args.wind_sweep)
     if args.random is not None:
         if args.scenarios:
@@ -83,14 +87,11 @@ def run(args: argparse.Namespace) -> int:
             written += report.write_table(args.out, scenarios, rows)
             print((args.out / "table.md").read_text(encoding="utf-8"), end="")
     if args.export:  # one scenario's plans as autopilot missions (vt.mission.loiter_plan_mission)
-        if len(args.scenarios) > 1 or (args.random or 1) > 1:
-            raise VistrackError(f"--export = {args.export[0]}: exports one scenario's plans; give one scenario "
-                                "file or --random 1")
         scenario = (loiter.load_scenario(args.scenarios[0]) if args.scenarios
                     else next(loiter_study.random_scenarios(1, args.seed, args.aois)))
         altitude = scenario.camera.altitude if args.altitude is None else args.altitude
         plans = {method: scenario.plan(method, args.order) for method in args.method}
-        export_missions(args.export, {m: lambda ref, p=p: p.to_mission(ref, altitude) for m, p in plans.items()},
+        export_missions(args.export, {m: partial(p.to_mission, altitude=altitude) for m, p in plans.items()},
                         args.origin, DEFAULT_EXPORT_ORIGIN)
     print(f"{len(written)} files in {args.out}")
     return 0
