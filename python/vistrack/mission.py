@@ -13,7 +13,9 @@
 - :class:`MissionBuilder`: what a planner's ``to_mission`` needs, in local metres: waypoints,
   loiter circles joined at an entry point and left at an exit point (so the autopilot does not fly
   to the centre first), speed changes, return to launch. :func:`orbit_plan_mission` turns an orbit
-  plan into timed loiters (``OrbitPlan.to_mission`` calls it).
+  plan into timed loiters (``OrbitPlan.to_mission`` calls it), :func:`loiter_plan_mission` a loiter
+  plan into its path with NAV_LOITER_TURNS (``vt.loiter.Plan.to_mission``), :func:`follow_mission`
+  a follow run's 1 Hz waypoints, decimated (``vt.follow.FollowResult.to_mission``).
 
 Altitudes given to the builder are local heights z (the world z of vistrack's flight plane, e.g.
 ``Uav.altitude``) above the ground at the origin; a mission stores them relative to home

@@ -17,6 +17,7 @@ from vistrack import mission as vm
 from vistrack.cli import main
 from vistrack.mission import Command, Frame, Georeference
 
+REPO = Path(__file__).resolve().parents[2]
 CHARLOTTE = Georeference(35.2249, -80.8403, 230.0)
 CM = 0.01
 
@@ -196,6 +197,14 @@ def test_cli_loiter_export_as_the_issue_shows(tmp_path: Path, capsys: pytest.Cap
     ref = Georeference(40.0, -83.0, 250.0)
     best = scenario.plan("tlpp", "best")
     assert tlpp.items == best.to_mission(ref, 90.0).items
+    # A scenario file's origin places the mission (no note).
+    scenario_file = tmp_path / "four.yaml"
+    scenario_file.write_text("origin: [40.5, -83.5, 200]\n" + (REPO / "examples" / "loiter_4aoi.yaml").read_text())
+    capsys.readouterr()
+    assert main(["loiter", str(scenario_file), "--method", "tlpp", "--export", str(tmp_path / "f.plan"),
+                 "--out", str(tmp_path / "D5"), "--quiet"]) == 0
+    assert "no --origin" not in capsys.readouterr().out
+    assert vm.load(tmp_path / "f.plan").home == pytest.approx((40.5, -83.5, 200.0), abs=1e-9)
     # Errors are one line naming the option.
     capsys.readouterr()
     assert main(["loiter", "--random", "2", "--export", str(tmp_path / "x.plan"), "--out", str(tmp_path / "D3"),
@@ -208,16 +217,18 @@ def test_cli_loiter_export_as_the_issue_shows(tmp_path: Path, capsys: pytest.Cap
 
 def test_cli_follow_export(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     scenario = tmp_path / "short.yaml"
-    scenario.write_text("uav: {speed: 21.0, min_turn_radius: 50.0, altitude: 200.0}\n"
+    scenario.write_text("origin: [35.0, -80.0]\nuav: {speed: 21.0, min_turn_radius: 50.0, altitude: 200.0}\n"
                         "vehicle: {legs: [{heading: south, speed: 10.0, duration: 80.0}]}\n"
                         "baseline: false\n")
     out = tmp_path / "out"
     assert main(["follow", str(scenario), "--out", str(out), "--quiet", "--export", str(tmp_path / "f.plan"),
                  "--export", str(tmp_path / "f.geojson"), "--origin", "35.2249,-80.8403"]) == 0
-    assert capsys.readouterr().out.count("mission items") == 2
+    assert capsys.readouterr().out.count("mission items") == 2  # --origin wins over the file's
     mission = vm.load(tmp_path / "f.plan")
     assert mission.items[0].params[1] == 21.0 and all(i.alt == 200.0 for i in mission.items if i.has_coordinate)
     study = vt.follow_scenario.FollowScenario.load(scenario).run(city=False)
     assert mission.items == study.follow.to_mission(Georeference(35.2249, -80.8403), 200.0, speed=21.0).items
     features = json.loads((tmp_path / "f.geojson").read_text())["features"]
     assert {f["properties"]["kind"] for f in features} >= {"home", "route"}
+    assert main(["follow", str(scenario), "--out", str(out), "--quiet", "--export", str(tmp_path / "g.txt")]) == 0
+    assert vm.load(tmp_path / "g.txt").home == pytest.approx((35.0, -80.0, 0.0), abs=1e-9)

@@ -49,5 +49,6 @@ def run(args: argparse.Namespace) -> int:
           + f" -> {args.out}")
     uav = scenario.uav
     export_mission(args.export, lambda ref: study.follow.to_mission(
-        ref, uav.altitude, speed=uav.speed, tolerance=args.export_tolerance), args.origin, None, DEFAULT_EXPORT_ORIGIN)
+        ref, uav.altitude, speed=uav.speed, tolerance=args.export_tolerance), args.origin or scenario.origin, None,
+        DEFAULT_EXPORT_ORIGIN)
     return 0

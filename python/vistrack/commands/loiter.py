@@ -92,6 +92,6 @@ def run(args: argparse.Namespace) -> int:
         altitude = scenario.camera.altitude if args.altitude is None else args.altitude
         plans = {method: scenario.plan(method, args.order) for method in args.method}
         export_missions(args.export, {m: partial(p.to_mission, altitude=altitude) for m, p in plans.items()},
-                        args.origin, DEFAULT_EXPORT_ORIGIN)
+                        args.origin or scenario.origin, DEFAULT_EXPORT_ORIGIN)
     print(f"{len(written)} files in {args.out}")
     return 0

@@ -66,7 +66,7 @@ def _base(value: Any, folder: Path) -> dict[str, Any]:
 
 
 def _keys(base: Mapping[str, Any]) -> set[str]:
-    keys = dotted_keys(base) | (TOP_KEYS - {"city", "description"})
+    keys = dotted_keys(base) | (TOP_KEYS - {"city", "description", "origin"})
     return keys | {f"{section}.{name}" for section, names in _SECTIONS.items() for name in names}
 
 
