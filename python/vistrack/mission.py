@@ -41,6 +41,7 @@ from .schema import fail, number
 
 if TYPE_CHECKING:
     from ._core import OrbitPlan, SimulationResult
+    from ._core.loiter import Plan as LoiterPlan
 
 __all__ = [
     "ALTITUDE_MODES", "FIRMWARE_TYPES", "MISSION_SUFFIXES", "Command", "Frame", "Georeference", "Mission",
@@ -665,7 +666,14 @@ def _arc_acceptance(radius: float, max_step_deg: float) -> float:
     return float(min(255, max(1, math.floor(chord / 2.0))))
 
 
-def loiter_plan_mission(plan: Any, georeference: Georeference | Sequence[float], altitude: float, *,
+def _arc(segment: Any) -> tuple[np.ndarray, float, str]:
+    """An arc segment's centre, radius and direction (a line has none)."""
+    if segment.center is None or segment.radius is None or segment.direction is None:
+        raise fail("plan.segments", segment, "an arc needs a centre, a radius and a direction")
+    return np.asarray(segment.center, dtype=float), float(segment.radius), str(segment.direction)
+
+
+def loiter_plan_mission(plan: LoiterPlan, georeference: Georeference | Sequence[float], altitude: float, *,
                         speed: float | None = None, max_step_deg: float = 30.0,
                         acceptance_radius: float | None = None, return_to_launch: bool = False,
                         firmware: str = "ardupilot", altitude_mode: str = "relative") -> Mission:
@@ -714,13 +722,14 @@ def loiter_plan_mission(plan: Any, georeference: Georeference | Sequence[float],
             turns = math.floor(sweep / (2.0 * math.pi) + 1e-9)
             rest = sweep - 2.0 * math.pi * turns
             exit_point = group[-1].end if rest > _TINY_ANGLE else s.start
-            builder.loiter(s.center, s.radius, direction=s.direction, turns=turns, entry=s.start, exit=exit_point,
+            center, radius, direction = _arc(s)
+            builder.loiter(center, radius, direction=direction, turns=turns, entry=s.start, exit=exit_point,
                            fly_to_entry=False, max_step_deg=max_step_deg, acceptance_radius=accept)
             i += len(group)
             continue
         if s.kind == "arc":
-            builder.arc(s.center, s.radius, s.start, s.end, s.direction, max_step_deg=max_step_deg,
-                        acceptance_radius=accept)
+            center, radius, direction = _arc(s)
+            builder.arc(center, radius, s.start, s.end, direction, max_step_deg=max_step_deg, acceptance_radius=accept)
         else:
             builder.waypoint(s.end)
         i += 1
@@ -759,10 +768,8 @@ def follow_mission(waypoints: ArrayLike, georeference: Georeference | Sequence[f
     items (ArduPilot boards hold a few hundred to a few thousand). ``tolerance=0`` keeps all.
     ``home``: the launch point (local x, y; default the first waypoint)."""
     kept = simplify_route(waypoints, tolerance)
-    builder = MissionBuilder(georeference if isinstance(georeference, Georeference)
-                             else Georeference.from_value(georeference, "georeference"), altitude, speed=speed,
-                             altitude_mode=altitude_mode, firmware=firmware,
-                             home=kept[0] if home is None else home)
+    builder = MissionBuilder(Georeference.from_value(georeference, "georeference"), altitude, speed=speed,
+                             altitude_mode=altitude_mode, firmware=firmware, home=kept[0] if home is None else home)
     builder.waypoints(kept)
     if return_to_launch:
         builder.return_to_launch()

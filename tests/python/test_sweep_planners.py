@@ -168,6 +168,12 @@ def test_parameters_are_keys_of_the_kind() -> None:
         SweepSpec.from_dict({"kind": "follow", "base": FOLLOW_BASE, "parameters": {"follow.perod": [20]}})
     with pytest.raises(vt.VistrackError, match=r"parameters\.methd .*did you mean method"):
         SweepSpec.from_dict({"kind": "loiter", "base": {"random": {}}, "parameters": {"methd": ["tlpp"]}})
+    # Without a layout seed, every case draws its own layout from its own seed: reproducibly.
+    own = SweepSpec.from_dict({"kind": "loiter", "seed": 4, "base": {"random": {"count": 4}},
+                               "parameters": {"method": ["ldlpp", "ldlpp"]}})
+    first = vt.sweep.run_cases(own.cases(), SERIAL)
+    assert first[0]["length_m"] != first[1]["length_m"]
+    assert first[1]["length_m"] == vt.loiter.random_scenario(4, own.cases()[1].seed).plan("ldlpp").length
     # Setting one source of AOIs replaces the other.
     spec = SweepSpec.from_dict({"kind": "loiter", "base": {"random": {"count": 4}}, "parameters": {
         "aois": [[[300, 300], [600, 600]]], "wind.speed": [5.0]}})
