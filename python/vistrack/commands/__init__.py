@@ -83,8 +83,9 @@ def add_export_arguments(parser: argparse.ArgumentParser, direction: bool = Fals
 
     parser.add_argument("--export", action="append", default=[], metavar="FILE",
                         help="also write the route for an autopilot or a map, by suffix: .plan (QGroundControl), "
-                             ".waypoints/.txt (QGC WPL 110), .geojson (WGS84); repeatable. Needs --origin, the "
-                             "scenario's origin or a longitude/latitude map")
+                             ".waypoints/.txt (QGC WPL 110), .geojson (WGS84); repeatable. Placed by --origin, "
+                             "else the scenario's origin or a longitude/latitude map (loiter and follow: else "
+                             "Charlotte's origin, with a note)")
     parser.add_argument("--origin", type=origin, default=None, metavar="LAT,LON[,ALT]",
                         help="where local (0, 0, 0) lies: WGS84 degrees and metres above sea level (projects a "
                              "longitude/latitude GeoJSON map and georeferences --export)")
