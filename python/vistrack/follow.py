@@ -25,13 +25,17 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 import numpy as np
 
 from ._core import Control, Uav, VisibilityScene, VistrackError
 from ._core import follow as _follow
 from .flight import Wind
+
+if TYPE_CHECKING:
+    from .georeference import Georeference
+    from .mission import Mission
 
 DownwardCamera = _follow.DownwardCamera
 FollowFlight = _follow.FollowFlight
@@ -123,6 +127,18 @@ class FollowResult:
     def waypoint_times(self) -> np.ndarray:
         """(k,) when each waypoint was issued (s)."""
         return np.asarray(self.run.waypoint_times)
+
+    def to_mission(self, georeference: Georeference | Sequence[float], altitude: float, *,
+                   speed: Optional[float] = None, tolerance: float = 1.0, return_to_launch: bool = False,
+                   firmware: str = "ardupilot", altitude_mode: str = "relative") -> Mission:
+        """The generated 1 Hz waypoints as an autopilot mission, decimated by Douglas-Peucker at
+        ``tolerance`` m (0: every waypoint), home at the UAV's start; ``speed`` (the UAV's airspeed)
+        adds DO_CHANGE_SPEED. See :func:`vistrack.mission.follow_mission`."""
+        from .mission import follow_mission
+
+        return follow_mission(self.waypoints, georeference, altitude, home=self.state[0, :2], speed=speed,
+                              tolerance=tolerance, return_to_launch=return_to_launch, firmware=firmware,
+                              altitude_mode=altitude_mode)
 
     @property
     def metrics(self) -> dict[str, Any]:

@@ -463,11 +463,12 @@ def append_json_line(data: Any, path: str | Path) -> None:
 def read_loiter_scenario(path: str | Path) -> LoiterScenario:
     """A loiter scenario file (examples/loiter_*.yaml); every bad value names its key."""
     from . import schema
+    from .georeference import Georeference
     from .loiter import Camera, Scenario
 
     data = read_yaml_mapping(path, "scenario")
     allowed = {"name", "aois", "start", "end", "turn_radius", "speed", "aoi_radius", "turns", "camera",
-               "threshold", "dt", "paper"}
+               "threshold", "dt", "paper", "origin"}
     unknown = sorted(set(data) - allowed)
     if unknown:
         raise schema.fail(unknown[0], data[unknown[0]], f"unknown key; allowed: {', '.join(sorted(allowed))}")
@@ -501,6 +502,7 @@ def read_loiter_scenario(path: str | Path) -> LoiterScenario:
         threshold=schema.number("threshold", data.get("threshold", 0.75), low=0.0, high=1.0, low_open=True),
         dt=schema.positive("dt", data.get("dt", 1.0)),
         paper={str(k): {str(n): float(x) for n, x in dict(v).items()} for k, v in paper.items()},
+        origin=None if data.get("origin") is None else Georeference.from_value(data["origin"], "origin"),
     )
     # The planner's own checks (overlapping circles, R < r, start inside a circle) name the key.
     scenario.plan("tlpp")

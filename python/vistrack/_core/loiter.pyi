@@ -119,6 +119,10 @@ class Plan:
         """
         Samples (t, poses, turn_rate, segment) at t = 0, dt, ...; include_end appends the end point.
         """
+    def to_mission(self, georeference: typing.Any, altitude: typing.Any, *, speed: typing.Any = None, max_step_deg: typing.SupportsFloat | typing.SupportsIndex = 30.0, acceptance_radius: typing.Any = None, return_to_launch: bool = False, firmware: str = 'ardupilot', altitude_mode: str = 'relative') -> typing.Any:
+        """
+        The plan as an autopilot mission (vistrack.mission.Mission; save it as .plan, .waypoints or .geojson) along the planned path: waypoints at the ends of lines and along the turns, each loiter a NAV_LOITER_TURNS of its whole turns (radius signed: positive clockwise) started at the plan's entry point on the circle, then waypoints along the circle to its exit point. georeference: vistrack.Georeference or (lat, lon[, alt]); altitude: m above the ground at the origin. See vistrack.mission.loiter_plan_mission.
+        """
     @property
     def aoi_radius(self) -> float:
         """

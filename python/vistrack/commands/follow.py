@@ -17,7 +17,7 @@ from pathlib import Path
 
 from ..follow_scenario import FollowScenario
 from ..report.follow import write_follow
-from . import add_report_arguments, report_options
+from . import DEFAULT_EXPORT_ORIGIN, add_export_arguments, add_report_arguments, export_mission, report_options
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -29,6 +29,10 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--no-compensation", dest="compensation", action="store_false", default=None,
                         help="plan without the wind estimate (the paper's Fig. 6)")
     parser.add_argument("--no-city", dest="city", action="store_false", help="skip the city runs")
+    parser.add_argument("--export-tolerance", type=float, default=1.0, metavar="M",
+                        help="--export keeps the 1 Hz waypoints Douglas-Peucker needs at this tolerance "
+                             "(default 1 m; 0: every waypoint)")
+    add_export_arguments(parser)
     parser.add_argument("--quiet", action="store_true", help="no progress lines")
     add_report_arguments(parser)
     parser.set_defaults(func=run)
@@ -48,4 +52,8 @@ def run(args: argparse.Namespace) -> int:
           f"camera {100 * record['camera_fraction']:.1f} %"
           + (f" (baseline {100 * record['baseline']['camera_fraction']:.1f} %)" if "baseline" in record else "")
           + f" -> {args.out}")
+    uav = scenario.uav
+    export_mission(args.export, lambda ref: study.follow.to_mission(
+        ref, uav.altitude, speed=uav.speed, tolerance=args.export_tolerance), args.origin or scenario.origin, None,
+        DEFAULT_EXPORT_ORIGIN)
     return 0

@@ -13,12 +13,20 @@ random_distribution.png).
 from __future__ import annotations
 
 import argparse
+from functools import partial
 from pathlib import Path
 
 from .. import VistrackError, loiter, loiter_study
 from ..progress import Progress
 from ..report import loiter as report
-from . import add_report_arguments, positive_numbers, report_options
+from . import (
+    DEFAULT_EXPORT_ORIGIN,
+    add_export_arguments,
+    add_report_arguments,
+    export_missions,
+    positive_numbers,
+    report_options,
+)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -37,6 +45,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="fly every plan in this unknown constant wind (m/s east, north); repeatable")
     p.add_argument("--wind-sweep", type=positive_numbers("--wind-sweep", "5,10"), default=[], metavar="SPEEDS",
                    help="also fly every plan in winds of these speeds (m/s) from 8 directions")
+    p.add_argument("--altitude", type=float, help="mission altitude for --export, m (default: the camera's, 61 m)")
+    add_export_arguments(p)
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     add_report_arguments(p)
     p.add_argument("--out", type=Path, required=True, help="output folder (created)")
@@ -53,6 +63,9 @@ def parse_wind(text: str) -> tuple[float, float]:
 
 def run(args: argparse.Namespace) -> int:
     options = report_options(args)
+    if args.export and (len(args.scenarios) > 1 or (args.random or 1) > 1):
+        raise VistrackError(f"--export = {args.export[0]}: exports one scenario's plans; give one scenario file "
+                            "or --random 1")
     given = [parse_wind(w) for w in args.wind]
     winds = given + loiter_study.wind_directions(args.wind_sweep)
     if args.random is not None:
@@ -86,5 +99,12 @@ def run(args: argparse.Namespace) -> int:
         if len(scenarios) > 1:
             written += report.write_table(args.out, scenarios, rows)
             print((args.out / "table.md").read_text(encoding="utf-8"), end="")
+    if args.export:  # one scenario's plans as autopilot missions (vt.mission.loiter_plan_mission)
+        scenario = (loiter.load_scenario(args.scenarios[0]) if args.scenarios
+                    else next(loiter_study.random_scenarios(1, args.seed, args.aois)))
+        altitude = scenario.camera.altitude if args.altitude is None else args.altitude
+        plans = {method: scenario.plan(method, args.order) for method in args.method}
+        export_missions(args.export, {m: partial(p.to_mission, altitude=altitude) for m, p in plans.items()},
+                        args.origin or scenario.origin, DEFAULT_EXPORT_ORIGIN)
     print(f"{len(written)} files in {args.out}")
     return 0
