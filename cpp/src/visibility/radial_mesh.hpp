@@ -6,7 +6,6 @@
 #include <array>
 #include <cstdint>
 #include <cmath>
-#include <functional>
 #include <vector>
 
 #include "vistrack/visibility.hpp"
@@ -42,12 +41,16 @@ struct Interval {
 // The visible part of the ray g + t d (|d| = 1, d.z = sin_el) given the first obstacle hit.
 Interval visible_interval(const Setup& s, double sin_el, double obstacle_hit);
 
+// How far a ray with that elevation can see at most (ground, band, d_max), or 0 when the band
+// leaves it nothing to see: rays are traced no farther.
+inline double visible_far_bound(const Setup& s, double sin_el) {
+  const Interval bound = visible_interval(s, sin_el, s.d_max * 2.0 + 1.0);
+  return bound.far > bound.near ? bound.far : 0.0;
+}
+
 // The point at distance t along unit direction d from g; on a band cap or the ground its z is
 // that plane's exactly.
 Vec3 point_on(const Setup& s, const Vec3& d, double t, Surface surface);
-
-// Traces one ray per direction (unit vectors) and returns their visible intervals.
-using IntervalTracer = std::function<std::vector<Interval>(const std::vector<Vec3>& directions)>;
 
 // The triangulated sphere of grid corners. Vertex rows i = 0..ne at elevations
 // -pi/2 + i pi/ne (rows 0 and ne are the poles), columns j at azimuths j d_az. Quad (i, j) splits
@@ -148,13 +151,6 @@ class MeshBuilder {
   double six_volume_ = 0.0;
 };
 
-// The closed mesh of a VV whose POI lies in the band (near = 0 along every ray): the radial
-// surface r = far over the live corners, with radial walls at the jumps of r found by bisection
-// with `trace` (see star_mesh.cpp). triangle_faces receives the faces built over each triangle
-// slot of `sphere` (VisibilityVolume::mesh_triangle_faces).
-TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
-                             const std::vector<Interval>& corner, const IntervalTracer& trace, double& volume,
-                             std::vector<std::int32_t>& triangle_faces);
 // The closed mesh of a VV whose POI lies outside the band (near > 0): outer and inner surfaces
 // joined on the contour where the visible interval closes (see shell_mesh.cpp).
 TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
