@@ -190,11 +190,11 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   flags.resize(static_cast<std::size_t>(nt));
   candidate.assign(static_cast<std::size_t>(nv), 0);
   if (all_alive) {
-    for (int i = 0; i < ne; ++i)
-      for (int j = 0; j < na; ++j) {
-        flags[2 * (i * na + j)] = i >= 1 ? kLive : 0;
-        flags[2 * (i * na + j) + 1] = i <= ne - 2 ? kLive : 0;
-      }
+    std::fill(flags.begin(), flags.end(), kLive);
+    for (int j = 0; j < na; ++j) {
+      flags[static_cast<std::size_t>(2 * j)] = 0;                         // no Ta at the south pole
+      flags[static_cast<std::size_t>(2 * ((ne - 1) * na + j) + 1)] = 0;  // no Tb at the north pole
+    }
   } else {
     // The live corners of dead slots: only those can be pinched, and only slots with two of them
     // can border the dead region.
@@ -232,6 +232,9 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     }
   }
   auto live = [&](int t) { return (flags[static_cast<std::size_t>(t)] & kLive) != 0; };
+  // First corner of vertex row i (a pole row is one vertex): quad (i, j) has corners
+  // row_first(i) + j, + j + 1 and row_first(i + 1) + j, + j + 1 (columns modulo na).
+  auto row_first = [&](int i) { return i == 0 ? 0 : (i == ne ? nv - 1 : 1 + (i - 1) * na); };
 
   // Jump candidates on the grid's edges between live slots. Each edge is examined once per quad
   // that owns it (its bottom, left and diagonal edge) and recorded from the slot that runs along
@@ -254,15 +257,27 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     jump.hi_surface = surface[q];
     jumps.push_back(jump);
   };
-  auto corner_differ = [&](int p, int q) { return differ(far[p], surface[p], far[q], surface[q]); };
-  for (int i = 0; i < ne; ++i) {
-    for (int j = 0; j < na; ++j) {
-      const int t = 2 * (i * na + j);
-      const int v00 = sphere.vertex(i, j), v01 = sphere.vertex(i, j + 1);
-      const int v10 = sphere.vertex(i + 1, j), v11 = sphere.vertex(i + 1, j + 1);
-      if (v00 != v11 && corner_differ(v00, v11)) consider(t, 2, v11, v00), consider(t + 1, 0, v00, v11);
-      if (i >= 1 && corner_differ(v00, v01)) consider(t, 0, v00, v01), consider(sphere.tb(i - 1, j), 1, v01, v00);
-      if (v00 != v10 && corner_differ(v00, v10)) consider(t + 1, 2, v10, v00), consider(sphere.ta(i, j - 1), 1, v00, v10);
+  {
+    // A cheap test on r first (raw pointers: the compiler cannot keep vector data in registers
+    // across the byte-sized flag writes); the surfaces only when it passes.
+    const double* r = far.data();
+    const Surface* sf = surface.data();
+    auto gap = [&](int p, int q) { return std::abs(r[p] - r[q]) > kJumpCandidate * std::max(r[p], r[q]); };
+    auto plane_pair = [&](int p, int q) { return sf[p] == sf[q] && is_plane(sf[p]); };
+    for (int i = 0; i < ne; ++i) {
+      const int lo = row_first(i), hi = row_first(i + 1);
+      const bool south = i == 0, north = i + 1 == ne;
+      for (int j = 0; j < na; ++j) {
+        const int jn = j + 1 == na ? 0 : j + 1;
+        const int v00 = south ? lo : lo + j, v01 = south ? lo : lo + jn;
+        const int v10 = north ? hi : hi + j, v11 = north ? hi : hi + jn;
+        const bool diagonal = gap(v00, v11), bottom = !south && gap(v00, v01), left = gap(v00, v10);
+        if (!(diagonal || bottom || left)) continue;
+        const int t = 2 * (i * na + j);
+        if (diagonal && !plane_pair(v00, v11)) consider(t, 2, v11, v00), consider(t + 1, 0, v00, v11);
+        if (bottom && !plane_pair(v00, v01)) consider(t, 0, v00, v01), consider(sphere.tb(i - 1, j), 1, v01, v00);
+        if (left && !plane_pair(v00, v10)) consider(t + 1, 2, v10, v00), consider(sphere.ta(i, j - 1), 1, v00, v10);
+      }
     }
   }
   for (std::size_t k = 0; k < jumps.size(); ++k) {
@@ -297,15 +312,13 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       sc.mid_surface.resize(active.size());
       trace_all(
           tracer, active.size(),
-          [&](std::size_t m, Vec3& d) {
-            d = directions[m];
-            return (jumps[static_cast<std::size_t>(active[m])].slot / 2) % na;
+          [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
+            for (std::size_t m = 0; m < count; ++m) {
+              d[m] = directions[start + m];
+              column[m] = (jumps[static_cast<std::size_t>(active[start + m])].slot / 2) % na;
+            }
           },
-          [&](std::size_t m, const Vec3& d, double hit) {
-            const Interval iv = visible_interval(s, d.z(), hit);
-            sc.mid_far[m] = iv.far;
-            sc.mid_surface[m] = iv.far_surface;
-          });
+          [&](std::size_t m, const Vec3& d, double hit) { sc.mid_far[m] = star_far(s, d.z(), hit, sc.mid_surface[m]); });
       std::size_t kept = 0;
       for (std::size_t m = 0; m < active.size(); ++m) {
         Jump& jump = jumps[static_cast<std::size_t>(active[m])];
@@ -542,14 +555,15 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   row_centroid.assign(static_cast<std::size_t>(ne) + 1, 0);
   bool any_border = false;
   {
+    const std::uint8_t* f = flags.data();
+    std::int32_t* offsets = triangle_faces.data();
+    std::int32_t faces = 0;
     for (int i = 0; i < ne; ++i) {
       int centroids = 0;
       for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) {
-        int faces = 0;
-        const std::uint8_t f = flags[static_cast<std::size_t>(t)];
-        if (f == kLive) {
-          faces = 1;
-        } else if (f & kLive) {
+        if (f[t] == kLive) {
+          ++faces;
+        } else if (f[t] & kLive) {
           auto count_face = [&](int, int, int) { ++faces; };
           auto count_centroid = [&](int, int, int) {
             ++centroids;
@@ -557,12 +571,12 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
           };
           for_each_piece(t, [&](const Triangle& c) { emit(c, count_face, count_centroid); });
         }
-        if ((f & kLive) && !all_alive) {
+        if ((f[t] & kLive) && !all_alive) {
           const int before = faces;
           border(t, slot_corners(t), [&](int, int, int) { ++faces; }, 0);
           any_border = any_border || faces > before;
         }
-        triangle_faces[static_cast<std::size_t>(t) + 1] = triangle_faces[static_cast<std::size_t>(t)] + faces;
+        offsets[t + 1] = faces;
       }
       row_centroid[static_cast<std::size_t>(i) + 1] = centroids;
     }
@@ -584,11 +598,19 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   };
   // Vertices first (the centroids are made from them): corners by rows of the sphere.
   for_each_index(parallel, ne + 1, [&](int i) {
-    const int first = i == 0 ? 0 : (i == ne ? nv - 1 : 1 + (i - 1) * na);
-    const int last = i == 0 ? 1 : (i == ne ? nv : first + na);
+    const int first = row_first(i);
+    const int last = i == 0 || i == ne ? first + 1 : first + na;
+    const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)], cos_el = dirs.cos_el_corner[static_cast<std::size_t>(i)];
     for (int v = first; v < last; ++v) {
       const int id = corner_vertex[v];
-      if (id >= 0) set_vertex(id, point_on(s, dirs.corner(v), far[v], surface[v]));
+      if (id < 0) continue;
+      const std::size_t j = static_cast<std::size_t>(v - first);
+      const double r = far[v];
+      double* out = mesh.vertices.data() + 3 * static_cast<std::size_t>(id);
+      out[0] = s.g.x() + r * (cos_el * dirs.cos_az_corner[j]);
+      out[1] = s.g.y() + r * (cos_el * dirs.sin_az_corner[j]);
+      out[2] = s.g.z() + r * sin_el;
+      if (surface[v] != Surface::radial) out[2] = point_on(s, Vec3::UnitZ(), 0.0, surface[v]).z();
     }
   });
   for (std::size_t k = 0; k < extra_vertex.size(); ++k)
@@ -633,25 +655,35 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       set_vertex(id, (position(x) + position(y) + position(z)) / 3.0);
       return id;
     };
+    const std::uint8_t* f = flags.data() + 2 * i * na;
+    const double* r = far.data();
+    const std::int32_t* id = corner_vertex.data();
+    const int lo = row_first(i), hi = row_first(i + 1);
+    const bool south = i == 0, north = i + 1 == ne;
     for (int j = 0; j < na; ++j) {
-      const int t = 2 * (i * na + j);
-      const int v00 = sphere.vertex(i, j), v01 = sphere.vertex(i, j + 1);
-      const int v10 = sphere.vertex(i + 1, j), v11 = sphere.vertex(i + 1, j + 1);
-      for (int h = 0; h < 2; ++h) {
-        const std::uint8_t f = flags[static_cast<std::size_t>(t + h)];
-        if (!(f & kLive)) continue;
-        const Triangle c = h == 0 ? Triangle{v00, v01, v11} : Triangle{v00, v11, v10};
-        if (f == kLive) {
-          out[0] = corner_vertex[c[0]];
-          out[1] = corner_vertex[c[1]];
-          out[2] = corner_vertex[c[2]];
-          out += 3;
-          plain += far[c[0]] * far[c[1]] * far[c[2]] * det[h];
-        } else {
-          for_each_piece(t + h, [&](const Triangle& piece) { emit(piece, face, make_centroid); });
-        }
-        if (!all_alive) border(t + h, c, face, apex);
+      const int jn = j + 1 == na ? 0 : j + 1;
+      const int v00 = south ? lo : lo + j, v01 = south ? lo : lo + jn;
+      const int v10 = north ? hi : hi + j, v11 = north ? hi : hi + jn;
+      if (f[2 * j] == kLive) {
+        out[0] = id[v00];
+        out[1] = id[v01];
+        out[2] = id[v11];
+        out += 3;
+        plain += r[v00] * r[v01] * r[v11] * det[0];
+      } else if (f[2 * j] & kLive) {
+        for_each_piece(2 * (i * na + j), [&](const Triangle& piece) { emit(piece, face, make_centroid); });
       }
+      if ((f[2 * j] & kLive) && !all_alive) border(2 * (i * na + j), Triangle{v00, v01, v11}, face, apex);
+      if (f[2 * j + 1] == kLive) {
+        out[0] = id[v00];
+        out[1] = id[v11];
+        out[2] = id[v10];
+        out += 3;
+        plain += r[v00] * r[v11] * r[v10] * det[1];
+      } else if (f[2 * j + 1] & kLive) {
+        for_each_piece(2 * (i * na + j) + 1, [&](const Triangle& piece) { emit(piece, face, make_centroid); });
+      }
+      if ((f[2 * j + 1] & kLive) && !all_alive) border(2 * (i * na + j) + 1, Triangle{v00, v11, v10}, face, apex);
     }
     row_volume[static_cast<std::size_t>(i)] = plain + other;
   });

@@ -50,12 +50,13 @@ struct TraceContext {
   RayCounts* counts = nullptr;   // optional
 };
 
-// Rays k in [begin, end): direction_of(k, d) sets the unit direction d and returns its azimuth
-// column (any column whose closed span holds d's azimuth); store(k, d, hit) receives the first
-// obstacle hit (+inf when none, and for rays not traced). Ground hits count as none: the ground is
-// applied exactly by visible_interval, and a ray grazing the ground from a POI on it must not stop.
-template <class DirectionOf, class Store>
-void trace_range(const TraceContext& c, std::size_t begin, std::size_t end, DirectionOf direction_of, Store store) {
+// Rays k in [begin, end): fill(start, count, d, column) sets the unit directions d[m] of rays
+// start + m (m < count <= 64) and their azimuth columns (any column whose closed span holds the
+// azimuth); store(k, d, hit) receives the first obstacle hit (+inf when none, and for rays not
+// traced). Ground hits count as none: the ground is applied exactly by visible_interval, and a
+// ray grazing the ground from a POI on it must not stop.
+template <class Fill, class Store>
+void trace_range(const TraceContext& c, std::size_t begin, std::size_t end, Fill fill, Store store) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   constexpr std::size_t kChunk = 64;
   const Setup& s = c.setup;
@@ -65,16 +66,17 @@ void trace_range(const TraceContext& c, std::size_t begin, std::size_t end, Dire
   std::array<bool, kChunk> ground{};
   std::array<std::uint8_t, kChunk> slot{};
   std::array<Vec3, kChunk> d;
+  std::array<int, kChunk> column{};
   std::array<double, kChunk> hit{};
   std::size_t traced_total = 0;
   for (std::size_t start = begin; start < end; start += kChunk) {
     const std::size_t count = std::min(kChunk, end - start);
+    fill(start, count, d.data(), column.data());
     std::size_t traced = 0;
     for (std::size_t k = 0; k < count; ++k) {
-      const int column = direction_of(start + k, d[k]);
       hit[k] = kInf;
       const double sin_el = d[k].z();
-      if (c.clearance.clear(sin_el, column)) continue;
+      if (c.clearance.clear(sin_el, column[k])) continue;
       const double bound = visible_far_bound(s, sin_el);
       if (!(bound > 0.0)) continue;
       for (int a = 0; a < 3; ++a) rays[3 * traced + a] = static_cast<float>(d[k][a]);
@@ -96,18 +98,18 @@ void trace_range(const TraceContext& c, std::size_t begin, std::size_t end, Dire
 // trace_range over [0, n), in parallel when c.parallel. The chunks of 64 rays start at multiples
 // of 64 either way: Embree's result for a ray may depend in its last bits on the rays traced with
 // it, and the VV must not depend on the number of threads.
-template <class DirectionOf, class Store>
-void trace_all(const TraceContext& c, std::size_t n, DirectionOf direction_of, Store store) {
+template <class Fill, class Store>
+void trace_all(const TraceContext& c, std::size_t n, Fill fill, Store store) {
   constexpr std::size_t kChunksPerTask = 32;
   if (!c.parallel || n < 2 * 64 * kChunksPerTask) {
     FlushDenormals flush;
-    trace_range(c, 0, n, direction_of, store);
+    trace_range(c, 0, n, fill, store);
     return;
   }
   const std::size_t tasks = (n + 64 * kChunksPerTask - 1) / (64 * kChunksPerTask);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
     FlushDenormals flush;
-    trace_range(c, r.begin() * 64 * kChunksPerTask, std::min(n, r.end() * 64 * kChunksPerTask), direction_of, store);
+    trace_range(c, r.begin() * 64 * kChunksPerTask, std::min(n, r.end() * 64 * kChunksPerTask), fill, store);
   });
 }
 

@@ -185,31 +185,43 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
 
   vv.near.assign(n_cells, 0.0);
   vv.far.assign(n_cells, 0.0);
-  detail::trace_all(
-      tracer, n_cells,
-      [&](std::size_t k, Vec3& d) {
-        d = dirs.ray(k);
-        return static_cast<int>(k % static_cast<std::size_t>(na));
-      },
-      [&](std::size_t k, const Vec3& d, double hit) {
-        const Interval iv = detail::visible_interval(s, d.z(), hit);
-        if (iv.far > iv.near) {
-          vv.near[k] = iv.near;
-          vv.far[k] = iv.far;
-        }
-      });
+  // Cells row by row: one division per chunk of 64 rays.
+  auto cell_rays = [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
+    std::size_t i = start / static_cast<std::size_t>(na), j = start % static_cast<std::size_t>(na);
+    for (std::size_t m = 0; m < count; ++m) {
+      d[m] = dirs.cell(i, j);
+      column[m] = static_cast<int>(j);
+      if (++j == static_cast<std::size_t>(na)) j = 0, ++i;
+    }
+  };
+  if (s.poi_in_band) {
+    detail::trace_all(tracer, n_cells, cell_rays, [&](std::size_t k, const Vec3& d, double hit) {
+      detail::Surface surface;
+      const double far = detail::star_far(s, d.z(), hit, surface);
+      vv.far[k] = far > 0.0 ? far : 0.0;
+    });
+  } else {
+    detail::trace_all(tracer, n_cells, cell_rays, [&](std::size_t k, const Vec3& d, double hit) {
+      const Interval iv = detail::visible_interval(s, d.z(), hit);
+      if (iv.far > iv.near) {
+        vv.near[k] = iv.near;
+        vv.far[k] = iv.far;
+      }
+    });
+  }
   // A corner ray lies on its column's left edge (the poles in every column).
-  auto corner_ray = [&](std::size_t k, Vec3& d) {
-    d = dirs.corner(static_cast<int>(k));
-    return k == 0 || k + 1 == n_corners ? 0 : static_cast<int>((k - 1) % static_cast<std::size_t>(na));
+  auto corner_ray = [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
+    for (std::size_t m = 0; m < count; ++m) {
+      const std::size_t k = start + m;
+      d[m] = dirs.corner(static_cast<int>(k));
+      column[m] = k == 0 || k + 1 == n_corners ? 0 : static_cast<int>((k - 1) % static_cast<std::size_t>(na));
+    }
   };
   if (s.poi_in_band) {
     w.corner_far.resize(n_corners);
     w.corner_surface.resize(n_corners);
     detail::trace_all(tracer, n_corners, corner_ray, [&](std::size_t k, const Vec3& d, double hit) {
-      const Interval iv = detail::visible_interval(s, d.z(), hit);
-      w.corner_far[k] = iv.far;
-      w.corner_surface[k] = iv.far_surface;
+      w.corner_far[k] = detail::star_far(s, d.z(), hit, w.corner_surface[k]);
     });
     trace_timer.stop();
     detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, tracer, w.star, vv, cost);
