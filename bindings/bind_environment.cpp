@@ -1,6 +1,8 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <tuple>
+
 #include "bindings.hpp"
 #include "vistrack/environment.hpp"
 #include "vistrack/error.hpp"
@@ -57,6 +59,41 @@ std::vector<Building> buildings_from_python(const py::iterable& items) {
   return buildings;
 }
 
+// An origin from Python: None, a sequence (lat, lon[, alt]) or an object with lat, lon and
+// optional alt attributes (vistrack.Georeference); validated.
+std::optional<GeodeticPoint> origin_from_python(const py::object& origin, const std::string& field) {
+  if (origin.is_none()) return std::nullopt;
+  const std::string shape = "must be (lat, lon), (lat, lon, alt) or a vistrack.Georeference";
+  GeodeticPoint point;
+  try {
+    if (py::hasattr(origin, "lat") && py::hasattr(origin, "lon")) {
+      point = {origin.attr("lat").cast<double>(), origin.attr("lon").cast<double>(),
+               py::hasattr(origin, "alt") ? origin.attr("alt").cast<double>() : 0.0};
+    } else {
+      const auto values = origin.cast<std::vector<double>>();
+      if (values.size() != 2 && values.size() != 3) detail::fail_field(field, py::repr(origin).cast<std::string>(), shape);
+      point = {values[0], values[1], values.size() == 3 ? values[2] : 0.0};
+    }
+  } catch (const py::cast_error&) {
+    detail::fail_field(field, py::repr(origin).cast<std::string>(), shape);
+  }
+  validate_geodetic_point(point, field);
+  return point;
+}
+
+std::optional<std::tuple<double, double, double>> origin_to_python(const std::optional<GeodeticPoint>& origin) {
+  if (!origin) return std::nullopt;
+  return std::make_tuple(origin->latitude, origin->longitude, origin->altitude);
+}
+
+// Longitude/latitude files are projected by vistrack.mission (pyproj's topocentric conversion,
+// the one georeference vistrack uses for maps in and routes out); imported only when needed.
+Points2 project_lon_lat(const Points2& lon_lat, const GeodeticPoint& origin) {
+  py::gil_scoped_acquire gil;
+  const py::object project = py::module_::import("vistrack.mission").attr("project_lon_lat");
+  return project(lon_lat, py::make_tuple(origin.latitude, origin.longitude, origin.altitude)).cast<Points2>();
+}
+
 }  // namespace
 
 void bind_environment(py::module_& m) {
@@ -88,15 +125,20 @@ void bind_environment(py::module_& m) {
                           "Obstacles (2.5D buildings or a triangle mesh), ground and road network.")
       .def_static(
           "from_geojson",
-          [](const py::object& path) {
+          [](const py::object& path, const py::object& origin) {
             const std::string name = path_string(path);
+            const GeoJsonOptions options{origin_from_python(origin, "origin"), &project_lon_lat};
             py::gil_scoped_release release;
-            return Environment::from_geojson(name);
+            return Environment::from_geojson(name, options);
           },
-          py::arg("path"),
+          py::arg("path"), py::arg("origin") = py::none(),
                   "2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: "
                   "height from properties.height, else building:levels x 3 m; id from properties.id, "
-                  "else the feature index. Coordinates in local east-north metres. Footprints are validated "
+                  "else the feature index. Coordinates in local east-north metres, or WGS84 longitude/latitude "
+                  "(the GeoJSON default, as OpenStreetMap exports give; told apart by range, anything else is a "
+                  "VistrackError) projected to local metres by vistrack.mission.Georeference (pyproj, ellipsoidal "
+                  "tangent plane) about origin (lat, lon[, alt]) or a Georeference, else about the centre of the "
+                  "data's bounding box (rounded to 1e-7 degree); env.origin reports it. Footprints are validated "
                   "(simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up "
                   "to 1 m^2 are taken as touching walls, and a footprint inside a building at least as "
                   "tall as a building part) and normalised counter-clockwise.")
@@ -173,6 +215,12 @@ void bind_environment(py::module_& m) {
            py::arg("nodes"), py::arg("edges"), "Replace the road network from arrays nodes (n, 2) and edges (m, 2).")
       .def_property_readonly("fingerprint", &Environment::fingerprint,
                              "Deterministic 64-bit content hash of the geometry and roads, for caches.")
+      .def_property(
+          "origin", [](const Environment& e) { return origin_to_python(e.origin()); },
+          [](Environment& e, const py::object& origin) { e.set_origin(origin_from_python(origin, "origin")); },
+          "Where local (0, 0, 0) lies on the Earth: (lat, lon, alt) in degrees and metres, or None when "
+          "unknown. Set by from_geojson (its origin argument, or the origin a longitude/latitude file was "
+          "projected about); assignable (a tuple or a vistrack.Georeference). Not part of the fingerprint.")
       .def("__repr__", [](const Environment& e) {
         return "Environment(" + std::to_string(e.num_buildings()) + " buildings, " + std::to_string(e.num_triangles()) +
                " triangles, max height " + detail::to_text(e.max_height()) + " m)";

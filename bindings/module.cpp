@@ -5,7 +5,7 @@
 #include "vistrack/error.hpp"
 
 PYBIND11_MODULE(_core, m) {
-  m.doc() = "vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation.";
+  m.doc() = "vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation, flight, waypoint navigation.";
   m.attr("__version__") = VISTRACK_VERSION;
   // One error type, a ValueError, for every invalid input (DESIGN.md, Conventions).
   pybind11::register_exception<vistrack::Error>(m, "VistrackError", PyExc_ValueError);
@@ -21,4 +21,9 @@ PYBIND11_MODULE(_core, m) {
   vistrack::bindings::bind_guidance(m);
   vistrack::bindings::bind_ode(m);
   vistrack::bindings::bind_simulate(m);
+  vistrack::bindings::bind_flight(m);
+  vistrack::bindings::bind_waypoint_nav(m);
+  vistrack::bindings::bind_path_following(m);
+  vistrack::bindings::bind_loiter(m);
+  vistrack::bindings::bind_follow(m);
 }

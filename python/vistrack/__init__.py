@@ -11,7 +11,7 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError
 from importlib.metadata import version as _version
 
-from . import _core, dubins
+from . import _core, dubins, flight, follow, loiter, mission, sweep, waypoint_nav
 
 # By area: geometry and parameters; environment; visibility and volumes; orbits (section IV);
 # guidance, integrator and closed loop (sections V-VI).
@@ -82,6 +82,7 @@ from ._core import (
     wrap_to_pi,
     xor_volume,
 )
+from .mission import Georeference
 from .pipeline import RunResult, run
 from .scenario import Scenario
 from .visibility import polygon_agreement, visibility_scene, visibility_volume, visibility_volumes
@@ -97,6 +98,7 @@ __all__ = [
     "DirectionGrid",
     "Discretization",
     "Environment",
+    "Georeference",
     "GuidanceGains",
     "MeshCheck",
     "OdeResult",
@@ -128,16 +130,20 @@ __all__ = [
     "constant_radius_plan",
     "dubins",
     "epsilon_max",
+    "flight",
+    "follow",
     "grid_xor_volume",
     "lambda_max",
     "lemma6_curvature_bound",
     "lemma7_min_gain",
+    "loiter",
     "lyapunov_term",
     "max_inscribed_radius",
     "max_orbit_curvature",
     "mesh_volume",
     "mesh_xor_volume",
     "min_feasible_radius",
+    "mission",
     "one_minus_cos_over_x",
     "orbit_configuration",
     "orbit_curvature",
@@ -159,11 +165,13 @@ __all__ = [
     "slice_mesh",
     "solve_ode",
     "steering",
+    "sweep",
     "tune_turn_rate",
     "vector_field",
     "visibility_scene",
     "visibility_volume",
     "visibility_volumes",
+    "waypoint_nav",
     "wrap_to_pi",
     "xor_volume",
 ]

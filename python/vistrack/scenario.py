@@ -31,9 +31,13 @@ from ._core import (
     VistrackError,
 )
 from .io import load_environment, read_text
+from .mission import Georeference
+from .plotting.animation import DEFAULT_DURATION_S, DEFAULT_FRAMES
+from .plotting.interactive import DEFAULT_VOLUMES
+from .plotting.volumes import DEFAULT_VIEW
 from .schema import apply_checks, fail, integer, number, positive, resolve_path, section
 
-__all__ = ["EnvironmentSpec", "PoiSpec", "Scenario", "default_scenario_text", "road_route"]
+__all__ = ["EnvironmentSpec", "PoiSpec", "ReportOptions", "Scenario", "default_scenario_text", "road_route"]
 
 DEMO_SCENARIO = Path(__file__).with_name("scenarios") / "demo.yaml"
 
@@ -56,10 +60,14 @@ class EnvironmentSpec:
     path: Path | None = None
     up: str = "z"
 
-    def load(self) -> Environment:
+    def load(self, origin: Georeference | None = None) -> Environment:
+        """The environment; ``origin`` (the scenario's) becomes ``env.origin`` and is what a
+        longitude/latitude GeoJSON is projected about (without it: the data's centre)."""
         if self.kind == "demo" or self.path is None:
-            return Environment.demo()
-        return load_environment(self.path, self.up, self.kind)
+            env = Environment.demo()
+            env.origin = origin
+            return env
+        return load_environment(self.path, self.up, self.kind, origin)
 
     def describe(self) -> str:
         return "demo city" if self.kind == "demo" else f"{self.kind} {self.path}"
@@ -89,6 +97,26 @@ class PoiSpec:
 
 
 @dataclass
+class ReportOptions:
+    """What the report folder holds beyond report.md: the interactive report.html, the
+    trajectory.gif animation (frames, seconds) and the viewpoint of volume3d.png."""
+
+    html: bool = True
+    animation: bool = True
+    frames: int = DEFAULT_FRAMES
+    duration: float = DEFAULT_DURATION_S  # seconds the GIF lasts
+    volumes: int = DEFAULT_VOLUMES  # VVs under the slider of report.html
+    view: tuple[float, float] = DEFAULT_VIEW  # volume3d.png: elevation, azimuth in degrees
+
+    MAX_FRAMES = 1000
+
+    def validate(self) -> None:
+        integer("report.frames", self.frames, 2, self.MAX_FRAMES)
+        positive("report.duration", self.duration)
+        integer("report.volumes", self.volumes, 1, 100)
+
+
+@dataclass
 class Scenario:
     """A validated scenario. Build one with Scenario.load(path) or Scenario.from_dict(data)."""
 
@@ -101,11 +129,13 @@ class Scenario:
     control: Control = field(default_factory=Control)
     simulation: SimulationOptions = field(default_factory=SimulationOptions)
     baselines: list[float] = field(default_factory=list)  # constant orbit radii to compare, m
+    origin: Georeference | None = None  # where local (0, 0, 0) lies on the Earth (maps in, routes out)
+    report: ReportOptions = field(default_factory=ReportOptions)
     name: str = "scenario"
     source: Path | None = None
 
-    SECTIONS = ("name", "environment", "poi", "uav", "sensor", "planning", "control",
-                "simulation", "baselines")
+    SECTIONS = ("name", "origin", "environment", "poi", "uav", "sensor", "planning", "control",
+                "simulation", "baselines", "report")
 
     @classmethod
     def load(cls, path: str | Path) -> "Scenario":
@@ -144,6 +174,8 @@ class Scenario:
                 raise fail("name", name, "must be a non-empty name of letters, digits, '_', '-' or '.' "
                                           "(it names the output folder)")
             scenario.name = data["name"]
+        if data.get("origin") is not None:
+            scenario.origin = Georeference.from_value(data["origin"], "origin")
         scenario.environment = _environment(section(data, "environment", {"demo", "geojson", "mesh", "up"}), base)
         scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
         scenario.uav, scenario.start = _uav(section(data, "uav", {"speed", "min_turn_radius", "altitude", "start"}))
@@ -154,6 +186,8 @@ class Scenario:
         scenario.simulation = _simulation(section(
             data, "simulation", {"rtol", "atol", "max_step", "output_step"}))
         scenario.baselines = _baselines(data.get("baselines", []))
+        scenario.report = _report(section(data, "report", {"html", "animation", "frames", "duration", "volumes",
+                                                           "view"}))
         if not scenario.uav.speed > scenario.poi.speed:
             raise fail("uav.speed", scenario.uav.speed,
                         f"must exceed poi.speed = {scenario.poi.speed} (the UAV must outrun the POI)")
@@ -175,8 +209,10 @@ class Scenario:
         if self.poi.route is not None:
             poi["route"] = self.poi.route
         band = self.sensor.altitude_band
+        origin = self.origin
         return {
             "name": self.name,
+            "origin": None if origin is None else [origin.lat, origin.lon, origin.alt],
             "environment": env,
             "poi": poi,
             "uav": {"speed": self.uav.speed, "min_turn_radius": self.uav.min_turn_radius,
@@ -193,6 +229,9 @@ class Scenario:
                            "max_step": self.simulation.max_step,
                            "output_step": self.simulation.output_step},
             "baselines": list(self.baselines),
+            "report": {"html": self.report.html, "animation": self.report.animation, "frames": self.report.frames,
+                       "duration": self.report.duration, "volumes": self.report.volumes,
+                       "view": list(self.report.view)},
         }
 
 
@@ -305,6 +344,22 @@ def _baselines(value: Any) -> list[float]:
     if not isinstance(value, list):
         raise fail("baselines", value, "must be a list of orbit radii in metres")
     return [positive(f"baselines[{i}]", r) for i, r in enumerate(value)]
+
+
+def _report(section: dict[str, Any]) -> ReportOptions:
+    def flag(key: str, value: Any) -> bool:
+        if not isinstance(value, bool):
+            raise fail(key, value, "must be true or false")
+        return value
+
+    def view(key: str, value: Any) -> tuple[float, float]:
+        if not isinstance(value, list) or len(value) != 2:
+            raise fail(key, value, "must be [elevation, azimuth] in degrees")
+        return (number(f"{key}[0]", value[0], low=-90.0, high=90.0), number(f"{key}[1]", value[1]))
+
+    return apply_checks(ReportOptions(), section, "report", {
+        "html": flag, "animation": flag, "frames": lambda k, v: integer(k, v, 2, ReportOptions.MAX_FRAMES),
+        "duration": positive, "volumes": lambda k, v: integer(k, v, 1, 100), "view": view})
 
 
 def default_scenario_text() -> str:

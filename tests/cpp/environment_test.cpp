@@ -285,7 +285,85 @@ TEST(GeoJson, BadFilesNameTheFieldAndValue) {
                {"features[0] (id 11) and features[1] (id 1) overlap", "shared area = 25"});
   expect_error(load(dir.write("deg.geojson", collection({feature("[[[-80.8403,35.2249],[-80.8402,35.2249],[-80.8402,35.2250]]]",
                                                                 R"({"height": 5})")}))),
-               {"features[*].geometry.coordinates = extent", "longitude/latitude"});
+               {"features[*].geometry.coordinates = longitude/latitude degrees", "no projection"});
+}
+
+// A stand-in projection for the plumbing (the real one is pyproj's, tested in Python): metres per
+// degree of a sphere, east scaled by cos(latitude of the origin). Counts its calls.
+struct SphereProjection {
+  int* calls;
+  Points2 operator()(const Points2& lon_lat, const GeodeticPoint& origin) const {
+    ++*calls;
+    const double metres_per_degree = 6371000.0 * kPi / 180.0;
+    Points2 local(lon_lat.rows(), 2);
+    local.col(0) = (lon_lat.col(0).array() - origin.longitude) * metres_per_degree * std::cos(origin.latitude * kPi / 180.0);
+    local.col(1) = (lon_lat.col(1).array() - origin.latitude) * metres_per_degree;
+    return local;
+  }
+};
+
+TEST(GeoJson, LongitudeLatitudeIsProjectedAboutTheGivenOriginOrTheBoundingBoxCentre) {
+  TempDir dir;
+  // Two 0.0001-degree squares (about 9 m x 11 m in Charlotte) side by side, 0.0002 degree apart.
+  const std::string path = dir.write(
+      "lonlat.geojson",
+      collection({feature("[[[-80.8404,35.2248],[-80.8403,35.2248],[-80.8403,35.2249],[-80.8404,35.2249],[-80.8404,35.2248]]]",
+                          R"({"height": 20})"),
+                  feature("[[[-80.8401,35.2248],[-80.8400,35.2248],[-80.8400,35.2249],[-80.8401,35.2249]]]",
+                          R"({"height": 30})")}));
+  int calls = 0;
+  GeoJsonOptions options;
+  options.project = SphereProjection{&calls};
+  const Environment centred = Environment::from_geojson(path, options);
+  EXPECT_EQ(calls, 1);  // every point in one call
+  ASSERT_TRUE(centred.origin().has_value());
+  EXPECT_DOUBLE_EQ(centred.origin()->longitude, -80.8402);
+  EXPECT_DOUBLE_EQ(centred.origin()->latitude, 35.22485);
+  EXPECT_DOUBLE_EQ(centred.origin()->altitude, 0.0);
+  const double metres_per_degree = 6371000.0 * kPi / 180.0;
+  EXPECT_NEAR(centred.bounds().min.x(), -0.0002 * metres_per_degree * std::cos(35.22485 * kPi / 180.0), 1e-6);
+  EXPECT_NEAR(centred.bounds().max.y(), 0.00005 * metres_per_degree, 1e-6);
+  EXPECT_EQ(centred.buildings()[0].footprint.outer.size(), 4u);  // closing repeat dropped after projecting
+
+  options.origin = GeodeticPoint{35.2249, -80.8403, 230.0};
+  const Environment anchored = Environment::from_geojson(path, options);
+  EXPECT_DOUBLE_EQ(anchored.origin()->altitude, 230.0);
+  EXPECT_NEAR(anchored.buildings()[0].footprint.outer[0].x(), -0.0001 * metres_per_degree * std::cos(35.2249 * kPi / 180.0), 1e-6);
+  EXPECT_NEAR(anchored.bounds().max.y(), 0.0, 1e-6);
+  EXPECT_EQ(calls, 2);
+}
+
+TEST(GeoJson, MetresKeepTheGivenOriginAndImplausibleCoordinatesAreErrors) {
+  TempDir dir;
+  int calls = 0;
+  GeoJsonOptions options{GeodeticPoint{35.2249, -80.8403, 0.0}, SphereProjection{&calls}};
+  const Environment metric = Environment::from_geojson(dir.write("m.geojson", collection({feature(kSquare, R"({"height": 5})")})), options);
+  EXPECT_EQ(calls, 0);
+  ASSERT_TRUE(metric.origin().has_value());
+  EXPECT_DOUBLE_EQ(metric.origin()->latitude, 35.2249);
+  EXPECT_DOUBLE_EQ(metric.bounds().max.x(), 10.0);
+  EXPECT_FALSE(Environment::from_geojson(dir.write("n.geojson", collection({feature(kSquare, R"({"height": 5})")}))).origin());
+
+  auto load = [&](const std::string& name, const std::string& coordinates) {
+    return [&, name, coordinates] {
+      Environment::from_geojson(dir.write(name, collection({feature(coordinates, R"({"height": 5})")})), options);
+    };
+  };
+  // Under a unit wide but no longitude/latitude: neither.
+  expect_error(load("small.geojson", "[[[500.1,0.1],[500.5,0.1],[500.5,0.5]]]"),
+               {"features[*].geometry.coordinates = x in [500.1, 500.5]", "neither WGS84 longitude/latitude"});
+  // UTM zone 17 metres around Charlotte: metres, but not a local frame.
+  expect_error(load("utm.geojson", "[[[514500,3897900],[514600,3897900],[514600,3898000]]]"),
+               {"x in [514500, 514600]", "neither", "UTM"});
+  options.origin = GeodeticPoint{95.0, 0.0, 0.0};
+  expect_error(load("m.geojson", kSquare), {"origin.latitude = 95", "[-90, 90]"});
+  options.origin = GeodeticPoint{0.0, 181.0, 0.0};
+  expect_error(load("m.geojson", kSquare), {"origin.longitude = 181"});
+  // A projection that returns the wrong shape is caught.
+  options.origin.reset();
+  options.project = [](const Points2&, const GeodeticPoint&) { return Points2(1, 2); };
+  expect_error(load("deg.geojson", "[[[-80.8403,35.2249],[-80.8402,35.2249],[-80.8402,35.2250]]]"),
+               {"project = 1 rows", "one finite (east, north) row per input point (3)"});
 }
 
 TEST(GeoJson, Charlotte) {

@@ -51,6 +51,17 @@ baselines: [11.2, 35]
     assert s.start == (0.0, 100.0, -3.14159)
     assert s.baselines == [11.2, 35.0]
     assert s.control.direction == "cw"
+    assert s.origin is None
+
+
+def test_origin_georeferences_the_environment(tmp_path: Path) -> None:
+    s = Scenario.from_dict({"origin": [35.2249, -80.8403, 230]})
+    assert s.origin == vt.Georeference(35.2249, -80.8403, 230.0)
+    assert s.to_dict()["origin"] == [35.2249, -80.8403, 230.0]
+    assert Scenario.from_dict(s.to_dict()).origin == s.origin
+    env = s.environment.load(s.origin)  # the demo city, now on the Earth
+    assert env.origin == (35.2249, -80.8403, 230.0)
+    assert Scenario.from_dict({}).environment.load().origin is None
 
 
 @pytest.mark.parametrize(
@@ -76,6 +87,9 @@ baselines: [11.2, 35]
         ("uav: {start: [0, 1]}", r"uav.start = \[0, 1\]: must be \[x, y, psi\]"),
         ("baselines: [10, -1]", r"baselines\[1\] = -1: must be > 0"),
         ("- 1\n- 2", r"scenario = .*must be a mapping"),
+        ("origin: [95, 0]", r"origin\[0\] = 95: must be in \[-90, 90\] degrees"),
+        ("origin: [35, -80, 1, 2]", r"origin = \[35, -80, 1, 2\]: must be \[lat, lon\] or \[lat, lon, alt\]"),
+        ("origin: Charlotte", r"origin = 'Charlotte'"),
     ],
 )
 def test_schema_errors_name_key_value_and_range(tmp_path: Path, text: str, message: str) -> None:

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -40,12 +41,39 @@ struct TriangleMesh {
 // of range; every function taking triangles from outside checks them with this.
 void validate_triangle_mesh(const Points3& vertices, const Faces& faces, const std::string& field = "mesh");
 
+// Where the local east-north-up frame is anchored on the Earth: WGS84 latitude and longitude in
+// degrees and the altitude of local z = 0 in metres.
+struct GeodeticPoint {
+  double latitude = 0.0;
+  double longitude = 0.0;
+  double altitude = 0.0;
+};
+// Throws Error naming `field` for a latitude outside [-90, 90], a longitude outside [-180, 180]
+// or a non-finite value.
+void validate_geodetic_point(const GeodeticPoint& point, const std::string& field = "origin");
+
+// Projects WGS84 (longitude, latitude) degrees, one row per point, to local east-north metres
+// about `origin`. vistrack's is vistrack.mission.Georeference (pyproj's topocentric conversion),
+// which the Python binding passes in; the C++ library carries no geodesy of its own.
+using LonLatProjection = std::function<Points2(const Points2& lon_lat, const GeodeticPoint& origin)>;
+
+// How from_geojson reads coordinates. Local metres are read as they are; WGS84 longitude/latitude
+// (the GeoJSON default, what OpenStreetMap exports give) is projected with `project` about
+// `origin`, or about the centre of the data's bounding box when no origin is given.
+struct GeoJsonOptions {
+  std::optional<GeodeticPoint> origin;
+  LonLatProjection project;
+};
+
 class Environment {
  public:
   // 2.5D buildings from a GeoJSON FeatureCollection of Polygon / MultiPolygon features with
   // properties.height (or building:levels x 3 m). Validates every footprint (simple, at least
-  // 3 points, positive finite height, disjoint interiors).
-  static Environment from_geojson(const std::string& path);
+  // 3 points, positive finite height, disjoint interiors). Coordinates are local east-north
+  // metres or WGS84 longitude/latitude degrees (told apart by their range; anything else is an
+  // Error); degrees need options.project. The environment's origin() is options.origin, or the
+  // one a longitude/latitude file was projected about.
+  static Environment from_geojson(const std::string& path, const GeoJsonOptions& options = {});
   // Validated buildings plus optional roads (each edge checked against every footprint).
   // Footprints may overlap by at most 1 m^2 (walls drawn approximately); a footprint lying
   // inside another building that is at least as tall is accepted (a building part drawn inside
@@ -80,6 +108,9 @@ class Environment {
   void set_roads(RoadNetwork roads);
   // A deterministic content hash (geometry and roads), for caches keyed by environment.
   std::uint64_t fingerprint() const;
+  // Where local (0, 0, 0) lies on the Earth, when known; not part of the fingerprint.
+  const std::optional<GeodeticPoint>& origin() const { return origin_; }
+  void set_origin(const std::optional<GeodeticPoint>& origin);  // validated
 
  private:
   // Buildings already validated and normalised: extrudes them, ground level 0.
@@ -90,6 +121,7 @@ class Environment {
   TriangleMesh mesh_;
   Bounds3 bounds_{};
   double ground_level_ = 0.0;
+  std::optional<GeodeticPoint> origin_;
 };
 
 // A POI moving at constant speed through waypoints (section III.C): piecewise-linear

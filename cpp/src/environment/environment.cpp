@@ -44,6 +44,19 @@ void validate_triangle_mesh(const Points3& vertices, const Faces& faces, const s
                            "vertex index out of range [0, " + std::to_string(vertices.rows()) + ")");
 }
 
+void validate_geodetic_point(const GeodeticPoint& point, const std::string& field) {
+  if (!(point.latitude >= -90.0 && point.latitude <= 90.0))
+    detail::fail_field(field + ".latitude", point.latitude, "must be in [-90, 90] degrees");
+  if (!(point.longitude >= -180.0 && point.longitude <= 180.0))
+    detail::fail_field(field + ".longitude", point.longitude, "must be in [-180, 180] degrees");
+  require_finite(point.altitude, field + ".altitude");
+}
+
+void Environment::set_origin(const std::optional<GeodeticPoint>& origin) {
+  if (origin) validate_geodetic_point(*origin, "origin");
+  origin_ = origin;
+}
+
 Environment Environment::from_triangles(Points3 vertices, Faces faces) {
   validate_triangle_mesh(vertices, faces, "triangles");
   Environment env;

@@ -1,4 +1,5 @@
 // Environment::from_geojson: 2.5D buildings from a GeoJSON FeatureCollection.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -45,7 +46,7 @@ Ring ring_from_json(const json& coordinates, const std::string& field) {
       detail::fail_field(field + "[" + std::to_string(i) + "]", point.dump(), "a point must be [x, y] numbers");
     ring.emplace_back(point[0].get<double>(), point[1].get<double>());
   }
-  return detail::clean_ring(ring);
+  return ring;  // cleaned once in metres (after any projection)
 }
 
 Polygon polygon_from_json(const json& rings, const std::string& field, detail::BuildingSource& source) {
@@ -61,9 +62,95 @@ Polygon polygon_from_json(const json& rings, const std::string& field, detail::B
   return polygon;
 }
 
+
+// Every footprint point, rings in order, as one (n, 2) array and back.
+template <typename Visit>
+void for_each_ring(std::vector<Building>& buildings, Visit visit) {
+  for (Building& building : buildings) {
+    visit(building.footprint.outer);
+    for (Ring& hole : building.footprint.holes) visit(hole);
+  }
+}
+
+// GeoJSON's coordinates are WGS84 longitude/latitude (RFC 7946), but files of local metres are
+// common too: tell them apart by range. A lon/lat city spans well under a degree; a city in
+// metres spans more than a metre and, being local, lies within kMaxLocalMetres of its origin
+// (farther out is a projected CRS such as UTM, where float32 ray tracing would also lose
+// centimetres).
+constexpr double kMaxLocalMetres = 1e5;
+
+enum class Units { metres, degrees };
+
+std::string short_text(double value) {
+  std::ostringstream out;
+  out.precision(10);
+  out << value;
+  return out.str();
+}
+
+Units coordinate_units(std::vector<Building>& buildings) {
+  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for_each_ring(buildings, [&](const Ring& ring) {
+    for (const Vec2& p : ring) {
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+  });
+  const std::string field = "features[*].geometry.coordinates";
+  const std::string range = "x in [" + short_text(low.x()) + ", " + short_text(high.x()) + "], y in [" +
+                            short_text(low.y()) + ", " + short_text(high.y()) + "]";
+  const std::string neither = "neither WGS84 longitude/latitude degrees (|x| <= 180, |y| <= 90, spanning less than "
+                              "1 degree) nor local east-north metres (spanning more than 1 m, within " +
+                              short_text(kMaxLocalMetres / 1000.0) + " km of the origin)";
+  const double extent = (high - low).maxCoeff();
+  if (extent < 1.0) {
+    if (low.x() >= -180.0 && high.x() <= 180.0 && low.y() >= -90.0 && high.y() <= 90.0) return Units::degrees;
+    detail::fail_field(field, range, neither);
+  }
+  if (std::max(low.cwiseAbs().maxCoeff(), high.cwiseAbs().maxCoeff()) > kMaxLocalMetres)
+    detail::fail_field(field, range, neither + " (a projected CRS such as UTM? give WGS84 longitude/latitude)");
+  return Units::metres;
+}
+
+// Projects longitude/latitude footprints to local metres in place; returns the environment's
+// origin (the given one, or the centre of the data's bounding box rounded to 1e-7 degree).
+std::optional<GeodeticPoint> to_local_metres(std::vector<Building>& buildings, const GeoJsonOptions& options) {
+  if (options.origin) validate_geodetic_point(*options.origin, "origin");
+  if (coordinate_units(buildings) == Units::metres) return options.origin;
+  std::size_t count = 0;
+  for_each_ring(buildings, [&](const Ring& ring) { count += ring.size(); });
+  Points2 lon_lat(static_cast<Eigen::Index>(count), 2);
+  Eigen::Index row = 0;
+  for_each_ring(buildings, [&](const Ring& ring) {
+    for (const Vec2& p : ring) lon_lat.row(row++) = p.transpose();
+  });
+  if (!options.project)
+    detail::fail_field("features[*].geometry.coordinates", "longitude/latitude degrees",
+                       "this loader has no projection to local metres (vistrack.Environment.from_geojson in Python "
+                       "projects with pyproj; C++ callers pass GeoJsonOptions::project)");
+  GeodeticPoint origin;
+  if (options.origin) {
+    origin = *options.origin;
+  } else {
+    const Vec2 centre = 0.5 * (lon_lat.colwise().minCoeff() + lon_lat.colwise().maxCoeff()).transpose();
+    origin.longitude = std::round(centre.x() * 1e7) / 1e7;
+    origin.latitude = std::round(centre.y() * 1e7) / 1e7;
+  }
+  const Points2 local = options.project(lon_lat, origin);
+  if (local.rows() != lon_lat.rows() || !local.allFinite())
+    detail::fail_field("project", std::to_string(local.rows()) + " rows",
+                       "the projection must return one finite (east, north) row per input point (" +
+                           std::to_string(lon_lat.rows()) + ")");
+  row = 0;
+  for_each_ring(buildings, [&](Ring& ring) {
+    for (Vec2& p : ring) p = local.row(row++).transpose();
+  });
+  return origin;
+}
+
 }  // namespace
 
-Environment Environment::from_geojson(const std::string& path) {
+Environment Environment::from_geojson(const std::string& path, const GeoJsonOptions& options) {
   std::ifstream in(path, std::ios::binary);
   if (!in) detail::fail_field("path", path, "cannot open the GeoJSON file for reading");
   std::stringstream buffer;
@@ -135,21 +222,15 @@ Environment Environment::from_geojson(const std::string& path) {
       detail::fail_field(name + ".geometry.type", "\"" + type + "\"", "expected Polygon or MultiPolygon");
     }
   }
-  // Plain GeoJSON is longitude/latitude in degrees; a whole city then spans well under one
-  // unit, and extruding metres of height over it would be silently wrong.
-  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (const Building& building : buildings)
-    for (const Vec2& p : building.footprint.outer) {
-      low = low.cwiseMin(p);
-      high = high.cwiseMax(p);
-    }
-  const double extent = (high - low).maxCoeff();
-  if (extent < 1.0)
-    detail::fail_field("features[*].geometry.coordinates", "extent " + detail::to_text(extent),
-                       "the buildings span less than 1 unit: coordinates look like longitude/latitude "
-                       "degrees; vistrack needs local east-north metres");
+  const std::optional<GeodeticPoint> origin = to_local_metres(buildings, options);
+  for (Building& building : buildings) {
+    building.footprint.outer = detail::clean_ring(building.footprint.outer);
+    for (Ring& hole : building.footprint.holes) hole = detail::clean_ring(hole);
+  }
   detail::validate_buildings(buildings, sources);
-  return from_validated_buildings(std::move(buildings));
+  Environment env = from_validated_buildings(std::move(buildings));
+  env.set_origin(origin);
+  return env;
 }
 
 }  // namespace vistrack

@@ -1,5 +1,5 @@
 """
-vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation.
+vistrack C++ core: environment, Dubins, visibility, orbits, guidance, simulation, flight, waypoint navigation.
 """
 from __future__ import annotations
 import collections.abc
@@ -7,7 +7,11 @@ import numpy
 import numpy.typing
 import typing
 from . import dubins
-__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'wrap_to_pi', 'xor_volume']
+from . import flight
+from . import waypoint_nav
+from . import loiter
+from . import follow
+__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'check_closed_mesh', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'flight', 'follow', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'loiter', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'waypoint_nav', 'wrap_to_pi', 'xor_volume']
 class VistrackError(ValueError):
     pass
 class Polygon:
@@ -310,9 +314,9 @@ class Environment:
         Environment from a list of (Polygon, height) or (Polygon, height, id) (an (n, 2) array may stand for a Polygon without holes), validated as in from_geojson; optional RoadNetwork checked against every footprint.
         """
     @staticmethod
-    def from_geojson(path: typing.Any) -> Environment:
+    def from_geojson(path: typing.Any, origin: typing.Any = None) -> Environment:
         """
-        2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: height from properties.height, else building:levels x 3 m; id from properties.id, else the feature index. Coordinates in local east-north metres. Footprints are validated (simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up to 1 m^2 are taken as touching walls, and a footprint inside a building at least as tall as a building part) and normalised counter-clockwise.
+        2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: height from properties.height, else building:levels x 3 m; id from properties.id, else the feature index. Coordinates in local east-north metres, or WGS84 longitude/latitude (the GeoJSON default, as OpenStreetMap exports give; told apart by range, anything else is a VistrackError) projected to local metres by vistrack.mission.Georeference (pyproj, ellipsoidal tangent plane) about origin (lat, lon[, alt]) or a Georeference, else about the centre of the data's bounding box (rounded to 1e-7 degree); env.origin reports it. Footprints are validated (simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up to 1 m^2 are taken as touching walls, and a footprint inside a building at least as tall as a building part) and normalised counter-clockwise.
         """
     @staticmethod
     def from_mesh(path: typing.Any, up: str = 'z') -> Environment:
@@ -390,6 +394,14 @@ class Environment:
         """
         Number of obstacle triangles (the ground plane not counted).
         """
+    @property
+    def origin(self) -> tuple[float, float, float] | None:
+        """
+        Where local (0, 0, 0) lies on the Earth: (lat, lon, alt) in degrees and metres, or None when unknown. Set by from_geojson (its origin argument, or the origin a longitude/latitude file was projected about); assignable (a tuple or a vistrack.Georeference). Not part of the fingerprint.
+        """
+    @origin.setter
+    def origin(self, arg1: typing.Any) -> None:
+        ...
     @property
     def roads(self) -> RoadNetwork:
         """
@@ -689,6 +701,10 @@ class OrbitPlan:
     def to_json(self) -> str:
         """
         The plan as JSON text.
+        """
+    def to_mission(self, georeference: typing.Any, altitude: typing.Any = None, *, direction: str = 'ccw', speed: typing.Any = None, start: typing.Any = None, end: str = 'loiter', firmware: str = 'ardupilot', altitude_mode: str = 'relative') -> typing.Any:
+        """
+        The plan as an autopilot mission (vistrack.mission.Mission; save it as .plan, .waypoints or .geojson): one NAV_LOITER_TIME per segment about the POI's position at the segment's middle, with R(t) there, after a waypoint at the tangent entry of the first orbit; then a loiter over the POI's last position (end='loiter'), 'rtl' or 'none'. georeference: vistrack.Georeference or (lat, lon[, alt]); altitude (m above the ground at the origin) and speed default to the plan's UAV when it has one. A companion computer flying the vector field tracks far better: the autopilot circles fixed centres one after the other. See vistrack.mission.orbit_plan_mission.
         """
     @property
     def centers(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:

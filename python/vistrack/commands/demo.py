@@ -7,13 +7,16 @@ from pathlib import Path
 from typing import Any
 
 from ..scenario import Scenario
+from . import add_report_arguments, report_options
 from .run import run_scenario
 
 DEFAULT_OUT = Path("vistrack-out") / "demo"
 
 
 def main(args: argparse.Namespace) -> int:
-    return run_scenario(Scenario.demo(), Path(args.out), args.cache, args.quiet)
+    scenario = Scenario.demo()
+    scenario.report = report_options(args, scenario.report)
+    return run_scenario(scenario, Path(args.out), args.cache, args.quiet)
 
 
 def register(subparsers: Any) -> None:
@@ -21,8 +24,10 @@ def register(subparsers: Any) -> None:
         "demo", help="run the whole pipeline on the embedded synthetic downtown",
         description="The scenario of python/vistrack/scenarios/demo.yaml (embedded city, a POI "
                     "route on its streets): visibility volumes, orbit plan, closed-loop simulation, "
-                    "baselines; writes the report folder and prints where it is.")
+                    "baselines; writes the report folder (report.md, the interactive report.html, "
+                    "trajectory.gif, figures, JSON, CSV) and prints where it is.")
     parser.add_argument("--out", default=str(DEFAULT_OUT), help=f"report folder (default: ./{DEFAULT_OUT})")
     parser.add_argument("--cache", default=None, help="visibility-volume cache folder (off by default)")
     parser.add_argument("--quiet", action="store_true", help="no progress output")
+    add_report_arguments(parser)
     parser.set_defaults(func=main)

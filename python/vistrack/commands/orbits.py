@@ -13,7 +13,7 @@ from ..plotting.orbits import figure_orbits, figure_radius
 from ..progress import Progress
 from ..report.orbits import write_orbits
 from ..saved_volumes import plan_from_volumes
-from . import positive_numbers
+from . import add_export_arguments, export_plan, positive_numbers
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -50,13 +50,14 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--figure-metric", action="store_true", help="also draw Figure 4 (metric along the path)")
     p.add_argument("--spacings", type=positive_numbers("--spacings", "50,25,10,1"), default=[50.0, 25.0, 10.0, 1.0],
                    help="fixed spacings for --figure-metric (default 50,25,10,1)")
+    add_export_arguments(p, direction=True)
     p.add_argument("--quiet", action="store_true", help="no progress bars")
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
     out = Path(args.out)
-    background = footprint_environment(args.map, args.footprints)
+    background = footprint_environment(args.map, args.footprints, args.origin)
     if args.from_plan:
         plan = read_plan(args.from_plan, "--from-plan")
         if not isinstance(plan, _core.VisibilityOrbitPlan):
@@ -78,7 +79,7 @@ def run(args: argparse.Namespace) -> int:
         plan = plan_from_volumes(args.from_volumes, poi, uav, planning.rate_margin)
         source = f"{len(plan.times)} saved VVs from {args.from_volumes}"
     else:
-        env = load_environment(args.map, args.up)
+        env = load_environment(args.map, args.up, origin=args.origin)
         background = background or env  # a mesh without footprints beside it: its roofs
         planner = _core.OrbitPlanner(env, _core.Sensor(d_max=args.d_max))
         with Progress("adaptive VVs", not args.quiet) as bar:
@@ -93,4 +94,5 @@ def run(args: argparse.Namespace) -> int:
     print(f"{source} in {extra['seconds']:.2f} s; R {plan.radii[0]:.1f} m -> {plan.radii[-1]:.1f} m; "
           + ("feasible" if plan.feasible else f"INFEASIBLE: {plan.infeasibility}"))
     print(f"wrote {out}/plan.json, summary.json, orbits.png, radius.png" + (", metric.png" if metric else ""))
+    export_plan(args.export, plan, args.origin, None if args.from_volumes else env, direction=args.direction)
     return 0

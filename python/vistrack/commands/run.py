@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import argparse
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 from ..scenario import Scenario, default_scenario_text
+from . import add_export_arguments, add_report_arguments, export_plan, report_options
 
 
 def register(subparsers: Any) -> None:
@@ -14,21 +16,24 @@ def register(subparsers: Any) -> None:
         "run", help="run a scenario file end to end and write a report folder",
         description="Environment, POI path, adaptive visibility volumes, orbit plan (Algorithm 1), "
                     "closed-loop simulation with line-of-sight evaluation and constant-radius "
-                    "baselines; writes report.md with figures, metrics.json, plan.json, "
-                    "trajectory.csv and VV meshes into --out.")
+                    "baselines; writes report.md with figures, the interactive report.html (3D), "
+                    "trajectory.gif, metrics.json, plan.json, trajectory.csv and VV meshes into --out.")
     parser.add_argument("scenario", nargs="?", help="scenario YAML file (see --print-defaults)")
     parser.add_argument("--out", default=None, help="report folder (default: ./vistrack-out/<scenario name>)")
     parser.add_argument("--cache", default=None,
                         help="folder caching visibility volumes between runs (about 4 MB per 1-degree VV); "
                              "a second run with the same inputs reads them instead of ray casting")
+    add_export_arguments(parser)
     parser.add_argument("--quiet", action="store_true", help="no progress output")
     parser.add_argument("--print-defaults", action="store_true",
                         help="print a complete scenario with every default and exit")
+    add_report_arguments(parser)
     parser.set_defaults(func=main)
 
 
-def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool) -> int:
-    """Shared by ``run`` and ``demo``: run, then print the headline numbers and the report path."""
+def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool, export: Sequence[str] = ()) -> int:
+    """Shared by ``run`` and ``demo``: run, then print the headline numbers and the report path
+    (and write the --export files)."""
     from ..pipeline import run
     from ..report import percent
 
@@ -43,7 +48,14 @@ def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool) 
     cache = m.get("volume_cache")
     if cache:
         print(f"visibility-volume cache {cache['folder']}: {cache['hits']} read, {cache['misses']} computed")
+    if result.env.origin is not None and scenario.origin is None:
+        lat, lon, _ = result.env.origin
+        print(f"map in longitude/latitude, projected about its centre: origin = [{lat:.7f}, {lon:.7f}]")
     print(f"report: {out / 'report.md'}")
+    for name, made in m.get("report_files", {}).items():
+        print(f"  {name}: {made['bytes'] / 1e6:.1f} MB")
+    export_plan(export, result.plan, scenario.origin, result.env, direction=scenario.control.direction,
+                simulation=result.simulation)
     return 0
 
 
@@ -54,5 +66,8 @@ def main(args: argparse.Namespace) -> int:
     if not args.scenario:
         raise SystemExit("vistrack run: error: a scenario file is required (or --print-defaults)")
     scenario = Scenario.load(args.scenario)
+    if args.origin is not None:
+        scenario.origin = args.origin
+    scenario.report = report_options(args, scenario.report)
     out = Path(args.out) if args.out else Path("vistrack-out") / scenario.name
-    return run_scenario(scenario, out, args.cache, args.quiet)
+    return run_scenario(scenario, out, args.cache, args.quiet, args.export)

@@ -1,11 +1,14 @@
 """The report folder of a tracking run (``vistrack run`` / ``demo``): figures, report.md,
-metrics.json, plan.json, trajectory.csv and the VV meshes."""
+report.html (interactive 3D), trajectory.gif, metrics.json, plan.json, trajectory.csv and the VV
+meshes."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Optional, Union
+
+import numpy as np
 
 from .._core import (
     Discretization,
@@ -18,12 +21,23 @@ from .._core import (
 )
 from ..io import write_json, write_plan, write_trajectory
 from ..plotting import OSM_CREDIT, evenly_spaced_indices, figure_volume_3d, new_figure, plot_city, save_figure
+from ..plotting.interactive import volume_layers
+from ..plotting.motion import tracking_scene
 from ..plotting.orbits import figure_metric, figure_orbits, figure_radius
 from ..plotting.simulation import figure_errors, figure_trajectory
 from ..scenario import Scenario
+from .document import Block, Document, Heading, Picture, Table
+from .media import write_media
 
 # Most VV meshes written into a report (evenly picked along the path).
 MAX_SAVED_VOLUMES = 12
+
+HTML_HINT = ("Drag to turn, scroll to zoom. The upper slider picks a visibility volume along the path (with its "
+             "VP and orbit at the flight altitude); the lower slider or ▶ play moves the UAV and the POI, with the "
+             "line of sight green while the POI is visible and red while it is occluded.")
+
+GIF_CAPTION = ("Plan view: the VP of the current sample (green), the orbit of the moment (dashed), the paths "
+               "coloured by line of sight and the line of sight itself (green: visible, red: occluded).")
 
 OSM_NOTE = ("Building geometry from OpenStreetMap (© OpenStreetMap contributors, ODbL 1.0) via the "
             "public DubinsVisibilityTracking repository, where the map comes from ../shared/data.")
@@ -48,70 +62,86 @@ class RunResult:
 
 
 def write_report(result: RunResult, out: Path) -> list[Path]:
-    """Write every file of the report into ``out`` (created) and return their paths."""
+    """Write every file of the report into ``out`` (created) and return their paths: figures,
+    trajectory.gif and report.html (unless the scenario's report options turn them off),
+    plan.json, trajectory.csv, VV meshes, metrics.json and report.md."""
 
     out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []
     s = result.scenario
-    figures: list[tuple[str, str, str]] = []  # (file, title, caption)
+    options = s.report
+    pictures: list[Picture] = []
 
     fig, ax = new_figure((8.5, 8.0))
     plot_city(ax, result.env, result.poi, title=f"{s.name}: city and POI path")
     files.append(save_figure(fig, out / "city.png"))
-    figures.append(("city.png", "City and POI path", f"{s.environment.describe()}; POI at "
-                    f"{result.poi.speed:g} m/s over {result.poi.length:.0f} m."))
+    pictures.append(Picture("city.png", "City and POI path", f"{s.environment.describe()}; POI at "
+                            f"{result.poi.speed:g} m/s over {result.poi.length:.0f} m."))
 
     credit = None if s.environment.kind == "demo" else OSM_CREDIT
     figure_metric(result.metric_runs, s.planning.cutoff, out / "metric.png",
-                           title=f"{s.name}: XOR metric between neighbouring VVs (Fig. 4)", credit=credit)
+                  title=f"{s.name}: XOR metric between neighbouring VVs (Fig. 4)", credit=credit)
     files.append(out / "metric.png")
-    figures.append(("metric.png", "Figure 4: VV difference metric along the path",
-                    "Eq. (56) between neighbouring VVs for fixed spacings and the adaptive method, "
-                    f"cutoff {s.planning.cutoff:.3g} m³."))
+    pictures.append(Picture("metric.png", "Figure 4: VV difference metric along the path",
+                            "Eq. (56) between neighbouring VVs for fixed spacings and the adaptive method, "
+                            f"cutoff {s.planning.cutoff:.3g} m³."))
 
     figure_orbits(result.plan, result.env, out / "orbits.png", credit=credit)
     files.append(out / "orbits.png")
-    figures.append(("orbits.png", "Figure 5: orbits inside their visibility polygons",
-                    f"Circles of radius R(t_k) centred on the POI inside the VP at h_UAV = {s.uav.altitude:g} m."))
+    pictures.append(Picture("orbits.png", "Figure 5: orbits inside their visibility polygons",
+                            "Circles of radius R(t_k) centred on the POI inside the VP at "
+                            f"h_UAV = {s.uav.altitude:g} m."))
 
     figure_radius(result.plan, out / "radius.png")
     files.append(out / "radius.png")
-    figures.append(("radius.png", "Orbit radius and its rate limits",
-                    "MaxRadius per sample, R(t) after Algorithm 1, Lemma 6's threshold and Lemma 5's rate bound."))
+    pictures.append(Picture("radius.png", "Orbit radius and its rate limits",
+                            "MaxRadius per sample, R(t) after Algorithm 1, Lemma 6's threshold and Lemma 5's "
+                            "rate bound."))
 
     # Baselines are drawn with the visibility plan's orbits.
     runs: list[tuple[str, Union[OrbitPlan, VisibilityOrbitPlan], SimulationResult]] = [
         ("visibility orbit", result.plan, result.simulation)]
     runs += [(f"R = {r:g} m", result.plan, b) for r, b in result.baselines.items()]
-    figure_trajectory(runs,
-                              result.env, out / "trajectory.png", title=f"{s.name}: UAV tracking the POI (Fig. 10)",
-                              credit=credit)
+    figure_trajectory(runs, result.env, out / "trajectory.png", title=f"{s.name}: UAV tracking the POI (Fig. 10)",
+                      credit=credit)
     files.append(out / "trajectory.png")
-    figures.append(("trajectory.png", "Figure 10: trajectory",
-                    "UAV path (red) with the reference orbits and the POI path" +
-                    (", and the constant-radius baselines." if result.baselines else ".")))
+    pictures.append(Picture("trajectory.png", "Figure 10: trajectory",
+                            "UAV path (red) with the reference orbits and the POI path" +
+                            (", and the constant-radius baselines." if result.baselines else ".")))
 
     figure_errors(result.simulation, out / "errors.png", window=None,
-                          title=f"{s.name}: errors and control (Fig. 11)",
-                          max_turn_rate=s.uav.speed / s.uav.min_turn_radius)
+                  title=f"{s.name}: errors and control (Fig. 11)",
+                  max_turn_rate=s.uav.speed / s.uav.min_turn_radius)
     files.append(out / "errors.png")
-    figures.append(("errors.png", "Figure 11: errors and control",
-                    "Radial error r - R, heading and heading error, and the steering command against time."))
+    pictures.append(Picture("errors.png", "Figure 11: errors and control",
+                            "Radial error r - R, heading and heading error, and the steering command against time."))
 
-    first = result.plan.volume(0)
-    figure_volume_3d(result.planner.scene, first, out / "volume3d.png", caption=credit or "")
+    # The most constrained sample (smallest MaxRadius): where the buildings shape the VV most.
+    k = int(np.argmin(result.plan.max_radii))
+    plan = result.plan
+    figure_volume_3d(result.planner.scene, plan.volume(k), out / "volume3d.png", caption=credit or "",
+                     env=result.env, view=options.view, orbit=(plan.centers[k], plan.radii[k], s.uav.altitude),
+                     polygons=plan.polygons[k])
     files.append(out / "volume3d.png")
-    figures.append(("volume3d.png", "Visibility volume in 3D",
-                    f"The VV of the first sample (eq. 4), d_max = {s.sensor.d_max:g} m; the orbit lies "
-                    "in its slice at h_UAV."))
+    pictures.append(Picture("volume3d.png", "Visibility volume in 3D",
+                            f"The VV (eq. 4, d_max = {s.sensor.d_max:g} m) of sample {k} (t = {plan.times[k]:.1f} s, "
+                            "the smallest MaxRadius of the plan) with the buildings that carve it; its slice at "
+                            "h_UAV is the VP holding the orbit."))
 
     files.append(write_plan(result.plan, out / "plan.json"))
     files.append(write_trajectory(result.simulation, out / "trajectory.csv"))
     files += _save_volumes(result, out / "volumes")
 
+    scene = tracking_scene(result.plan, result.simulation, result.env, title=f"{s.name}: UAV tracking the POI",
+                           credit=credit)
+    document = _document(result, pictures)
+    layers = volume_layers(result.planner.scene, result.plan, options.volumes) if options.html else []
+    made = write_media(out, scene, document, options, layers, HTML_HINT, GIF_CAPTION)
+    files += [out / name for name in made]
+    result.metrics["report_files"] = {name: {key: round(v, 4) for key, v in m.items()} for name, m in made.items()}
     files.append(write_json(result.metrics, out / "metrics.json"))
     report = out / "report.md"
-    report.write_text(_markdown(result, figures))
+    report.write_text(document.markdown())
     files.append(report)
     result.out = out
     result.files = files
@@ -130,35 +160,31 @@ def _save_volumes(result: RunResult, folder: Path) -> list[Path]:
     return files
 
 
-def _markdown(result: RunResult, figures: list[tuple[str, str, str]]) -> str:
+def _document(result: RunResult, pictures: list[Picture]) -> Document:
     m = result.metrics
     plan, sim = m["plan"], m["simulation"]
-    lines = [f"# vistrack report: {m['scenario']}", "",
-             f"- Environment: {m['environment']} ({m['environment_triangles']} triangles, "
-             f"tallest {m['environment_max_height_m']:.1f} m)",
-             f"- POI: {m['poi']['length_m']:.1f} m at {m['poi']['speed_mps']:g} m/s "
-             f"({m['poi']['duration_s']:.2f} s)",
-             f"- Plan: {plan['samples']} samples ({plan['volumes_computed']} VVs computed), "
-             f"{'feasible' if plan['feasible'] else 'INFEASIBLE: ' + plan['infeasibility']}; "
-             f"R from {plan['initial_radius_m']:.1f} m to {plan['final_radius_m']:.1f} m "
-             f"(min {plan['min_radius_m']:.1f} m, Lemma 6 needs >= {plan['min_feasible_radius_m']:.1f} m)",
-             f"- Simulation: {sim['duration_s']:.2f} s; POI in line of sight "
-             f"{percent(sim['visibility_fraction'])} of the samples; largest |radial error| after "
-             f"settling (after {sim['converge_after_s']:g} s) {sim['radial_error_after_max_abs_m']:.2f} m",
-             ]
+    summary = [f"Environment: {m['environment']} ({m['environment_triangles']} triangles, "
+               f"tallest {m['environment_max_height_m']:.1f} m)",
+               f"POI: {m['poi']['length_m']:.1f} m at {m['poi']['speed_mps']:g} m/s ({m['poi']['duration_s']:.2f} s)",
+               f"Plan: {plan['samples']} samples ({plan['volumes_computed']} VVs computed), "
+               f"{'feasible' if plan['feasible'] else 'INFEASIBLE: ' + plan['infeasibility']}; "
+               f"R from {plan['initial_radius_m']:.1f} m to {plan['final_radius_m']:.1f} m "
+               f"(min {plan['min_radius_m']:.1f} m, Lemma 6 needs >= {plan['min_feasible_radius_m']:.1f} m)",
+               f"Simulation: {sim['duration_s']:.2f} s; POI in line of sight "
+               f"{percent(sim['visibility_fraction'])} of the samples; largest |radial error| after "
+               f"settling (after {sim['converge_after_s']:g} s) {sim['radial_error_after_max_abs_m']:.2f} m"]
+    blocks: list[Block] = []
     if m["baselines"]:
-        lines += ["", "| orbit | visibility |", "|---|---|",
-                  f"| visibility-informed R(t) | {percent(sim['visibility_fraction'])} |"]
-        lines += [f"| constant R = {b['radius_m']:g} m | {percent(b['visibility_fraction'])} |"
-                  for b in m["baselines"].values()]
-    lines += ["", "Files: `metrics.json`, `plan.json`, `trajectory.csv`, `volumes/*.ply`.", ""]
-    for file, title, caption in figures:
-        lines += [f"## {title}", "", f"![{title}]({file})", "", caption, ""]
-    lines += ["## Timings", "", "| stage | seconds |", "|---|---|"]
-    lines += [f"| {k} | {v:.3f} |" for k, v in m["timings_s"].items()]
+        rows = [["visibility-informed R(t)", percent(sim["visibility_fraction"])]]
+        rows += [[f"constant R = {b['radius_m']:g} m", percent(b["visibility_fraction"])]
+                 for b in m["baselines"].values()]
+        blocks.append(Table(["orbit", "visibility"], rows))
+    blocks.append("Files: `metrics.json`, `plan.json`, `trajectory.csv`, `volumes/*.ply`.")
+    blocks += pictures
+    blocks += [Heading("Timings"), Table(["stage", "seconds"], [[k, f"{v:.3f}"] for k, v in m["timings_s"].items()])]
     if result.scenario.environment.kind != "demo":
-        lines += ["", OSM_NOTE]
-    return "\n".join(lines) + "\n"
+        blocks.append(OSM_NOTE)
+    return Document(f"vistrack report: {m['scenario']}", summary, blocks)
 
 
 def percent(value: Any) -> str:

@@ -1,0 +1,295 @@
+// vistrack._core.flight: the Dubins vehicle in wind flown by a guidance law (flight.hpp).
+#include <pybind11/eigen.h>
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "vistrack/error.hpp"
+#include "vistrack/flight.hpp"
+
+namespace py = pybind11;
+
+namespace vistrack::bindings {
+
+namespace {
+
+py::array_t<double> to_numpy(const std::vector<double>& values) {
+  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+}
+
+py::array_t<double> columns(const std::vector<const std::vector<double>*>& cols) {
+  const std::size_t n = cols.front()->size();
+  py::array_t<double> out({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(cols.size())});
+  auto view = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < cols.size(); ++j)
+      view(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j)) = (*cols[j])[i];
+  return out;
+}
+
+Configuration configuration(const std::tuple<double, double, double>& q) {
+  return {std::get<0>(q), std::get<1>(q), std::get<2>(q)};
+}
+
+py::dict terms_dict(const LineFeedbackTerms& t) {
+  py::dict d;
+  d["target_angle"] = t.target_angle;
+  d["cross_track"] = t.cross_track;
+  d["cross_track_step"] = t.cross_track_step;
+  d["reference_angle"] = t.reference_angle;
+  d["unsaturated"] = t.unsaturated;
+  d["turn"] = t.turn;
+  d["saturated"] = t.saturated;
+  return d;
+}
+
+std::vector<Vec2> points_from_array(const Points2& points, const std::string& field) {
+  std::vector<Vec2> out;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    const Vec2 p = points.row(i).transpose();
+    require_finite(p.x(), field + "[" + std::to_string(i) + "][0]");
+    require_finite(p.y(), field + "[" + std::to_string(i) + "][1]");
+    out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace
+
+void bind_flight(py::module_& parent) {
+  py::module_ m = parent.def_submodule(
+      "flight",
+      "The flight layer: a Dubins vehicle (airspeed v, turn rate <= v/R) in wind (constant plus seeded "
+      "Dryden gusts, MIL-F-8785C) flown by a guidance law, with the paper's discrete update or Dormand-Prince "
+      "5(4). Every planner flies here.");
+
+  const Gusts gust_defaults;
+  py::class_<Gusts>(m, "Gusts",
+                    "Dryden turbulence (MIL-F-8785C, horizontal): RMS intensity sigma_u = sigma_v (speed units), "
+                    "length scale L_u = L_v (length units), seed. Reproducible from the seed.")
+      .def(py::init([](std::uint64_t seed, double intensity, double length_scale, double sample_step) {
+             Gusts g{seed, intensity, length_scale, sample_step};
+             g.validate();
+             return g;
+           }),
+           py::kw_only(), py::arg("seed") = gust_defaults.seed, py::arg("intensity") = gust_defaults.intensity,
+           py::arg("length_scale") = gust_defaults.length_scale, py::arg("sample_step") = gust_defaults.sample_step,
+           "seed; intensity sigma (speed units); length_scale L (length units); sample_step (s) of the "
+           "precomputed series, 0: L / (20 V).")
+      .def_readwrite("seed", &Gusts::seed, "random seed")
+      .def_readwrite("intensity", &Gusts::intensity, "sigma_u = sigma_v, speed units")
+      .def_readwrite("length_scale", &Gusts::length_scale, "L_u = L_v, length units")
+      .def_readwrite("sample_step", &Gusts::sample_step, "s between precomputed samples; 0: L / (20 V)")
+      .def_static("mil_f_8785c", &mil_f_8785c_gusts, py::arg("altitude"), py::arg("wind_speed_20ft"),
+                  py::arg("seed") = 0, py::arg("length_unit") = 1.0, py::arg("speed_unit") = 1.0,
+                  "Gusts of the MIL-F-8785C low-altitude model at `altitude` (m, 3.05-304.8) for the wind speed "
+                  "at 20 ft W20 (m/s; light 7.7, moderate 15.4, severe 23.2), in flight units: speeds divided by "
+                  "speed_unit (m/s per unit), lengths by length_unit (m per unit).")
+      .def("__repr__", [](const Gusts& g) {
+        return "Gusts(seed=" + std::to_string(g.seed) + ", intensity=" + detail::to_text(g.intensity) +
+               ", length_scale=" + detail::to_text(g.length_scale) + ", sample_step=" + detail::to_text(g.sample_step) +
+               ")";
+      });
+
+  py::class_<Wind>(m, "Wind", "Wind the vehicle does not know: constant (east, north) plus optional Gusts.")
+      .def(py::init([](double east, double north, std::optional<Gusts> gusts) {
+             Wind w{east, north, gusts};
+             w.validate();
+             return w;
+           }),
+           py::arg("east") = 0.0, py::arg("north") = 0.0, py::arg("gusts") = py::none(),
+           "Constant wind (east, north) in speed units; gusts: Gusts or None.")
+      .def_readwrite("east", &Wind::east, "east component, speed units")
+      .def_readwrite("north", &Wind::north, "north component, speed units")
+      .def_readwrite("gusts", &Wind::gusts, "Gusts or None")
+      .def("__repr__", [](const Wind& w) {
+        return "Wind(east=" + detail::to_text(w.east) + ", north=" + detail::to_text(w.north) +
+               (w.gusts ? ", gusts=Gusts(seed=" + std::to_string(w.gusts->seed) + ", ...))" : std::string(")"));
+      });
+
+  m.def(
+      "dryden_low_altitude",
+      [](double altitude, double w20) {
+        const DrydenLowAltitude d = dryden_low_altitude(altitude, w20);
+        py::dict out;
+        out["sigma_u"] = d.sigma_u;
+        out["sigma_v"] = d.sigma_u;
+        out["sigma_w"] = d.sigma_w;
+        out["length_u"] = d.length_u;
+        out["length_v"] = d.length_u;
+        out["length_w"] = d.length_w;
+        return out;
+      },
+      py::arg("altitude"), py::arg("wind_speed_20ft"),
+      "MIL-F-8785C low-altitude intensities (m/s) and length scales (m) at altitude (m) for W20 (m/s).");
+
+  py::class_<WindField>(m, "WindField", "w(t) for one flight: the constant wind plus the precomputed gust series.")
+      .def(py::init<const Wind&, double, double, double>(), py::arg("wind"), py::arg("airspeed"), py::arg("t0"),
+           py::arg("duration"),
+           "Precomputes the gusts on [t0, t0 + duration] for a vehicle of that airspeed (Taylor's frozen field). "
+           "VistrackError when the wind speed reaches the airspeed.")
+      .def(
+          "at",
+          [](const WindField& w, const std::vector<double>& times) {
+            py::array_t<double> out({static_cast<py::ssize_t>(times.size()), py::ssize_t{2}});
+            auto view = out.mutable_unchecked<2>();
+            for (std::size_t i = 0; i < times.size(); ++i) {
+              const Vec2 v = w.at(times[i]);
+              view(static_cast<py::ssize_t>(i), 0) = v.x();
+              view(static_cast<py::ssize_t>(i), 1) = v.y();
+            }
+            return out;
+          },
+          py::arg("times"), "Wind (east, north) at each time: array (n, 2).")
+      .def_property_readonly("sample_step", &WindField::sample_step, "s between gust samples (0 without gusts)")
+      .def_property_readonly("max_speed", &WindField::max_speed, "largest wind speed over the span")
+      .def_property_readonly("has_gusts", &WindField::has_gusts, "whether gusts were generated");
+
+  py::class_<LineFeedback>(m, "LineFeedback",
+                           "The paper's feedback law (5): psi_turn = clamp(phi_T + |g s + h s_dot dt| sign(phi_T), "
+                           "+-v dt / R) towards the line whose end is the target; turn rate psi_turn / dt.")
+      .def(py::init([](double speed, double turn_radius, double dt, std::pair<double, double> gains, bool smooth) {
+             return LineFeedback(speed, turn_radius, dt, LineFeedbackGains{gains.first, gains.second}, smooth);
+           }),
+           py::arg("speed"), py::arg("turn_radius"), py::arg("dt"),
+           py::arg("gains") = std::make_pair(LineFeedbackGains{}.g, LineFeedbackGains{}.h),
+           py::arg("smooth_sign") = false,
+           "speed v, turn_radius R, law step dt (psi_max = v dt / R <= pi/2), gains (g, h); smooth_sign: "
+           "sign(phi_T) -> clamp(phi_T / psi_max, -1, 1) for continuous flight.")
+      .def(
+          "terms",
+          [](const LineFeedback& law, const std::tuple<double, double, double>& q, const Vec2& line_start,
+             const Vec2& target) { return terms_dict(law.terms(configuration(q), line_start, target)); },
+          py::arg("state"), py::arg("line_start"), py::arg("target"),
+          "Every term of (5) at state (x, y, psi) for the line line_start -> target, as a dict.")
+      .def(
+          "turn_rate",
+          [](const LineFeedback& law, const std::tuple<double, double, double>& q, const Vec2& line_start,
+             const Vec2& target) { return law.turn_rate(configuration(q), line_start, target); },
+          py::arg("state"), py::arg("line_start"), py::arg("target"), "psi_turn / dt, rad/s.")
+      .def_property_readonly("max_turn", &LineFeedback::max_turn, "psi_max = v dt / R, rad per step")
+      .def_property_readonly("speed", &LineFeedback::speed, "v")
+      .def_property_readonly("turn_radius", &LineFeedback::turn_radius, "R")
+      .def_property_readonly("dt", &LineFeedback::dt, "law step, s")
+      .def_property_readonly("gains", [](const LineFeedback& l) { return std::make_pair(l.gains().g, l.gains().h); },
+                             "(g, h)")
+      .def_property_readonly("smooth_sign", &LineFeedback::smooth_sign, "whether sign(phi_T) is smoothed");
+
+  py::class_<FlightGuidance>(m, "FlightGuidance",
+                             "A guidance law for fly(): turn-rate command and target from (x, y, psi) and t; its "
+                             "stateful logic runs only after accepted steps.")
+      .def("command",
+           [](const FlightGuidance& g, const std::tuple<double, double, double>& q, double t) {
+             const GuidanceCommand c = g.command(configuration(q), t);
+             return py::make_tuple(c.turn_rate, py::make_tuple(c.target.x(), c.target.y()), c.target_index);
+           },
+           py::arg("state"), py::arg("t") = 0.0, "(turn_rate, (target_x, target_y), target_index) at a state.")
+      .def_property_readonly("done", &FlightGuidance::done, "True once there is nothing more to fly")
+      .def_property_readonly("revision", &FlightGuidance::revision, "counts changes of the active target");
+
+  py::class_<WaypointFollower, FlightGuidance>(
+      m, "WaypointFollower",
+      "Classical waypoint navigation on the law (5): the line from the previous waypoint (the start for the "
+      "first) to the active one; next waypoint when within waypoint_radius. finish_at_last=False holds at the "
+      "last waypoint until add_waypoint() gives more (feed it from fly()'s on_step).")
+      .def(py::init([](const LineFeedback& law, const Points2& waypoints, double radius, bool finish_at_last) {
+             return WaypointFollower(law, points_from_array(waypoints, "waypoints"), radius, finish_at_last);
+           }),
+           py::arg("law"), py::arg("waypoints"), py::arg("waypoint_radius"), py::arg("finish_at_last") = true,
+           "law: LineFeedback; waypoints: array (n, 2); waypoint_radius R_WP >= 0.")
+      .def("add_waypoint", &WaypointFollower::add_waypoint, py::arg("point"),
+           py::arg("available_from") = -std::numeric_limits<double>::infinity(),
+           "Append a waypoint usable from time available_from on (non-decreasing); allowed during flight.")
+      .def_property_readonly(
+          "waypoints",
+          [](const WaypointFollower& w) {
+            Points2 out(static_cast<Eigen::Index>(w.waypoints().size()), 2);
+            for (std::size_t i = 0; i < w.waypoints().size(); ++i) out.row(static_cast<Eigen::Index>(i)) = w.waypoints()[i];
+            return out;
+          },
+          "array (n, 2)")
+      .def_property_readonly("active", &WaypointFollower::active, "index of the active waypoint")
+      .def_property_readonly("accepted_at", [](const WaypointFollower& w) { return to_numpy(w.accepted_at()); },
+                             "time each waypoint was accepted (NaN: not yet)")
+      .def_property_readonly("waypoint_radius", &WaypointFollower::acceptance_radius, "R_WP");
+
+  py::class_<FlightTrajectory>(m, "FlightTrajectory",
+                               "One sample per output time: state, the turn rate applied from there, the active "
+                               "target and the wind.")
+      .def_property_readonly("t", [](const FlightTrajectory& f) { return to_numpy(f.t); }, "times (n,), s")
+      .def_property_readonly("x", [](const FlightTrajectory& f) { return to_numpy(f.x); }, "x (n,)")
+      .def_property_readonly("y", [](const FlightTrajectory& f) { return to_numpy(f.y); }, "y (n,)")
+      .def_property_readonly("psi", [](const FlightTrajectory& f) { return to_numpy(f.psi); },
+                             "heading (n,), rad, as integrated (not wrapped)")
+      .def_property_readonly("command", [](const FlightTrajectory& f) { return to_numpy(f.command); },
+                             "turn rate applied from each sample (clamped to +-v/R), rad/s")
+      .def_property_readonly("target", [](const FlightTrajectory& f) { return columns({&f.target_x, &f.target_y}); },
+                             "active target (n, 2)")
+      .def_property_readonly(
+          "target_index",
+          [](const FlightTrajectory& f) {
+            return py::array_t<int>(static_cast<py::ssize_t>(f.target_index.size()), f.target_index.data());
+          },
+          "active target's index (n,), -1: none")
+      .def_property_readonly("wind", [](const FlightTrajectory& f) { return columns({&f.wind_east, &f.wind_north}); },
+                             "wind (east, north) at each sample (n, 2)")
+      .def_property_readonly("array", [](const FlightTrajectory& f) { return columns({&f.t, &f.x, &f.y, &f.psi}); },
+                             "(n, 4): t, x, y, psi")
+      .def_readonly("finished", &FlightTrajectory::finished, "the guidance said done (else max_time was reached)")
+      .def_readonly("end_time", &FlightTrajectory::end_time, "time of the last sample, s")
+      .def_property_readonly("switch_times", [](const FlightTrajectory& f) { return to_numpy(f.switch_times); },
+                             "times where the guidance changed its target")
+      .def_readonly("statistics", &FlightTrajectory::statistics, "integrator work, vistrack.OdeStatistics (continuous flights)")
+      .def("__len__", &FlightTrajectory::size);
+
+  const FlightOptions defaults;
+  m.def(
+      "fly",
+      [](FlightGuidance& guidance, const std::tuple<double, double, double>& start, double speed, double turn_radius,
+         std::optional<Wind> wind, double dt, double max_time, const std::string& integration, double t0,
+         std::optional<std::function<void(double, std::tuple<double, double, double>)>> on_step,
+         std::optional<std::function<void(std::size_t, std::size_t)>> progress, double rtol, double atol) {
+        Uav vehicle;
+        vehicle.speed = speed;
+        vehicle.min_turn_radius = turn_radius;
+        require_positive(speed, "speed");
+        require_positive(turn_radius, "turn_radius");
+        FlightOptions options;
+        options.integration = flight_integration_from_string(integration);
+        options.dt = dt;
+        options.max_time = max_time;
+        options.rtol = rtol;
+        options.atol = atol;
+        FlightCallback step_hook;
+        if (on_step)
+          step_hook = [&on_step](double t, const Configuration& q) {
+            py::gil_scoped_acquire acquire;
+            (*on_step)(t, std::make_tuple(q.x, q.y, q.psi));
+          };
+        FlightProgress bar;
+        if (progress)
+          bar = [&progress](std::size_t done, std::size_t total) {
+            py::gil_scoped_acquire acquire;
+            (*progress)(done, total);
+          };
+        const Wind w = wind.value_or(Wind{});
+        py::gil_scoped_release release;
+        return fly(vehicle, w, guidance, configuration(start), options, t0, step_hook, bar);
+      },
+      py::arg("guidance"), py::arg("start"), py::arg("speed"), py::arg("turn_radius"), py::arg("wind") = py::none(),
+      py::arg("dt") = defaults.dt, py::arg("max_time") = defaults.max_time,
+      py::arg("integration") = to_string(defaults.integration), py::arg("t0") = 0.0, py::arg("on_step") = py::none(),
+      py::arg("progress") = py::none(), py::arg("rtol") = defaults.rtol, py::arg("atol") = defaults.atol,
+      "Fly the vehicle (speed v, turn_radius R) from start (x, y, psi) at t0 under the guidance until it is done or "
+      "t0 + max_time. integration 'discrete' (the paper's update, step dt) or 'continuous' (Dormand-Prince, output "
+      "every dt). on_step(t, state) runs after each accepted step (it may feed the guidance); progress(done, total) "
+      "in per mille of max_time. Releases the GIL (callbacks take it).");
+}
+
+}  // namespace vistrack::bindings

@@ -1,0 +1,165 @@
+// Dubins waypoint navigation (DWN) against classical waypoint navigation (WN), after Silverberg &
+// Xu, "Dubins Waypoint Navigation of Small-Class Unmanned Aerial Vehicles" (OJOp 2019; seeds/
+// dubins_waypoint_navigation.txt). Both fly on the flight layer (flight.hpp) with the paper's
+// feedback law (5); they differ in what the law steers to:
+//  * WN: the active waypoint, switching to the next inside the waypoint radius R_WP
+//    (flight.hpp's WaypointFollower);
+//  * DWN: the turning point T_n of the 3-point horizon (current pose C, W_n, W_{n+1}), switching
+//    when T_n enters the reachability zone; the last waypoint is flown to directly.
+//
+// The horizon path (section 2.4, Figure 6): an arc on the vehicle's turning circle (direction d1),
+// the tangent straight to the circle of radius R through W_n (centre W_n + R (cos theta, sin theta),
+// direction d2), ending at T_n; the arc on that circle from T_n through W_n to the exit tangent;
+// straight to W_{n+1}. Fuel (1) F = w_a L_a + w_s L_s, length (2) for w_a = w_s = 1, minimised
+// over theta for each of the four cases d1-d2. The paper fits theta off-line; we solve it.
+//
+// How: with h the heading at W_n (h = theta - d2 pi/2), the path up to W_n is the Dubins CSC word
+// (d1, S, d2) from C to (W_n, h) (the kernel of dubins.hpp), the rest an arc and a tangent to a
+// point. F(h) is smooth between breakpoints where a tangent stops existing (LSR/RSL circles
+// overlapping, W_{n+1} inside the circle) or an arc wraps through 0 (the path gains or loses a
+// loop: T_n = W_n, exit = W_n, no first arc). Its derivative is closed-form:
+//   dF/dh = (w_a - w_s) [-(d1 - d2) sin(q) / p - d2 sin(a) / s2] + w_s d2 (cos a - cos q),
+// q the arc T_n -> W_n, a the arc W_n -> exit, p and s2 the two straights (in units of R). For
+// w_a = w_s it is d2 (cos a - cos q): the optimum puts W_n in the middle of its arc, and
+// |dF/dh| <= 2 R, which bounds F between samples. The solver samples h, brackets the breakpoints
+// (wraps by a root of the wrapped arc, feasibility edges by bisection) and the sign changes of
+// dF/dh, and refines them (Brent) to 1e-12 rad; with unit weights, brackets whose Lipschitz lower
+// bound cannot beat the best are skipped.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vistrack/dubins.hpp"
+#include "vistrack/flight.hpp"
+#include "vistrack/geometry.hpp"
+#include "vistrack/parameters.hpp"
+
+namespace vistrack {
+
+// Turn directions (first arc at C, arc around W_n), in the paper's order.
+enum class TurnCase : std::uint8_t { CcwCcw = 0, CcwCw = 1, CwCcw = 2, CwCw = 3 };
+constexpr int kTurnCaseCount = 4;
+std::string to_string(TurnCase c);  // "ccw-ccw", ...
+TurnCase turn_case_from_string(const std::string& text, const std::string& field = "case");
+
+// The horizon path of one case at one orientation theta. Lengths are arc lengths (length units).
+struct HorizonPath {
+  bool feasible = false;       // false: a tangent does not exist at this theta
+  TurnCase turn_case = TurnCase::CcwCcw;
+  double theta = 0.0;          // in [0, 2 pi): centre of the circle around W_n at W_n + R e(theta)
+  Vec2 point = Vec2::Zero();   // T_n: end of the first straight
+  Vec2 line_start = Vec2::Zero();  // start of the first straight (end of the first arc)
+  Vec2 exit_point = Vec2::Zero();  // where the path leaves the circle around W_n
+  Vec2 circle_center = Vec2::Zero();
+  double heading_at_waypoint = 0.0;  // h at W_n
+  double first_arc = 0.0, first_straight = 0.0;
+  double arc_to_waypoint = 0.0, arc_from_waypoint = 0.0, last_straight = 0.0;
+  double arcs() const { return first_arc + arc_to_waypoint + arc_from_waypoint; }
+  double straights() const { return first_straight + last_straight; }
+  double length = 0.0;         // weighted: w_a arcs() + w_s straights() (infinity when infeasible)
+};
+
+// The horizon path of case c at theta (from pose C through W_n = w_next to W_{n+1} = w_after).
+HorizonPath horizon_path(const Configuration& pose, const Vec2& w_next, const Vec2& w_after, double turn_radius,
+                         TurnCase c, double theta, const FuelWeights& weights = {});
+
+// The optimal turning point: the best horizon path over theta and the four cases.
+struct TurningPoint : HorizonPath {
+  std::array<double, kTurnCaseCount> case_lengths{};  // best weighted length of each case (inf: none)
+  std::array<double, kTurnCaseCount> case_thetas{};
+  int evaluations = 0;         // F(h) evaluations spent
+};
+TurningPoint turning_point(const Configuration& pose, const Vec2& w_next, const Vec2& w_after, double turn_radius,
+                           const FuelWeights& weights = {});
+
+// The reachability zone (section 2.5, Figure 7), fixed to the vehicle: its two turning circles
+// (open disks of radius R at p +- R n) closed at the rear by their common tangent (the box
+// -R <= x_h <= 0, |y_h| <= R in the heading frame). Returns a continuous function of the point that
+// is <= 0 exactly when the point is in the zone (unreachable): min(d_left - R + eps R,
+// d_right - R + eps R, box distance), eps = 1e-9 keeps points on the turning circles ahead reachable.
+double reachability(const Configuration& pose, const Vec2& point, double turn_radius);
+inline bool unreachable(const Configuration& pose, const Vec2& point, double turn_radius) {
+  return reachability(pose, point, turn_radius) <= 0.0;
+}
+
+// One turning point chosen during a DWN flight (the future mission's waypoints).
+struct TurningPointRecord {
+  double t = 0.0;               // when it was planned
+  int waypoint = 0;             // n: the waypoint index it belongs to
+  Configuration pose;           // the vehicle's pose C when planned
+  HorizonPath path;             // the horizon path; for the last waypoint (flown directly) only
+                                // point = W_last, line_start = C, feasible, length = |W_last - C|
+  bool direct = false;          // the last waypoint, flown to directly
+};
+
+// DWN as a flight guidance: the law (5) to T_n along the first straight; at the reachability
+// switch, the next turning point from the current pose.
+class DubinsWaypointGuidance : public FlightGuidance {
+ public:
+  DubinsWaypointGuidance(const LineFeedback& law, const std::vector<Vec2>& waypoints, double turn_radius,
+                         const FuelWeights& weights = {});
+
+  void start(const Configuration& state, double t) override;
+  GuidanceCommand command(const Configuration& state, double t) const override;
+  void advance(const Configuration& state, double t) override;
+  bool done() const override { return done_; }
+  double switching_function(const Configuration& state, double t) const override;
+
+  const std::vector<TurningPointRecord>& turning_points() const { return log_; }
+  std::size_t active() const { return active_; }
+
+ private:
+  void plan(const Configuration& state, double t);
+
+  LineFeedback law_;
+  std::vector<Vec2> waypoints_;
+  double turn_radius_;
+  FuelWeights weights_;
+  std::size_t active_ = 0;
+  Vec2 target_ = Vec2::Zero(), line_start_ = Vec2::Zero();
+  bool done_ = false;
+  std::vector<TurningPointRecord> log_;
+};
+
+// ---- Metrics ----------------------------------------------------------------------------------
+
+struct NavigationMetrics {
+  std::vector<double> miss_distances;  // closest approach of the flown path to each waypoint
+  std::vector<std::uint8_t> reached;   // the guidance got past the waypoint (in order) in time
+  bool all_reached = false;
+  double overshoot = 0.0;    // largest distance from the planned legs on the outside of their turns
+  double undershoot = 0.0;   // largest distance on the inside (cutting corners)
+  int swirls = 0;            // full 2 pi heading excursions while the same waypoint is active
+  double path_length = 0.0;  // ground track
+  double duration = 0.0;     // flight time
+  double fuel = 0.0;         // sum of v dt (w_s + (w_a - w_s) |r| / (v / R)): w_a on full turns, w_s straight
+};
+
+// Metrics of a flight along `legs` = start position followed by the waypoints. The trajectory's
+// target_index is the index into `waypoints` (0 = first waypoint after the start).
+NavigationMetrics navigation_metrics(const FlightTrajectory& trajectory, const Vec2& start,
+                                     const std::vector<Vec2>& waypoints, double speed, double turn_radius,
+                                     const FuelWeights& weights = {});
+
+// ---- One navigation flight ----------------------------------------------------------------------
+
+struct NavigationResult {
+  FlightTrajectory trajectory;
+  NavigationMetrics metrics;
+  std::vector<TurningPointRecord> turning_points;  // DWN only
+  NavigationMethod method = NavigationMethod::Dubins;
+  double waypoint_radius = 0.0;                    // WN only
+  double max_time = 0.0;                           // the limit used
+};
+
+// Flies `waypoints` (all of them, in order) from `start`. Validates everything (errors name the
+// field): at least one waypoint, none within 1e-9 R of the previous one, finite, R > 0, dt > 0
+// with v dt / R <= pi/2, wind below the airspeed.
+NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuration& start,
+                          const WaypointNavOptions& options, const Wind& wind = {});
+
+}  // namespace vistrack

@@ -1,0 +1,49 @@
+// Validation of the flight layer's parameter structs (parameters.hpp) and the integration names.
+#include <algorithm>
+#include <cctype>
+
+#include "vistrack/error.hpp"
+#include "vistrack/flight.hpp"
+#include "vistrack/parameters.hpp"
+
+namespace vistrack {
+
+void Gusts::validate() const {
+  require_non_negative(intensity, "wind.gusts.intensity");
+  require_positive(length_scale, "wind.gusts.length_scale");
+  require_non_negative(sample_step, "wind.gusts.sample_step");
+}
+
+void Wind::validate() const {
+  require_finite(east, "wind.east");
+  require_finite(north, "wind.north");
+  if (gusts) gusts->validate();
+}
+
+void FlightOptions::validate() const {
+  require_positive(dt, "dt");
+  require_positive(max_time, "max_time");
+  if (max_time / dt > 1e8)
+    detail::fail_field("max_time", max_time, "more than 1e8 steps of dt = " + detail::to_text(dt));
+  require_positive(rtol, "rtol");
+  require_positive(atol, "atol");
+}
+
+void LineFeedbackGains::validate() const {
+  require_non_negative(g, "gains.g");
+  require_non_negative(h, "gains.h");
+}
+
+std::string to_string(FlightIntegration integration) {
+  return integration == FlightIntegration::Continuous ? "continuous" : "discrete";
+}
+
+FlightIntegration flight_integration_from_string(const std::string& text, const std::string& field) {
+  std::string lower = text;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (lower == "discrete") return FlightIntegration::Discrete;
+  if (lower == "continuous") return FlightIntegration::Continuous;
+  detail::fail_field(field, text, "must be 'discrete' or 'continuous'");
+}
+
+}  // namespace vistrack

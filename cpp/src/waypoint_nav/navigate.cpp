@@ -1,0 +1,70 @@
+// One WN or DWN flight on the flight layer, with its metrics.
+#include <cmath>
+#include <memory>
+
+#include "vistrack/error.hpp"
+#include "vistrack/waypoint_nav.hpp"
+
+namespace vistrack {
+
+namespace {
+
+void validate_route(const std::vector<Vec2>& waypoints, const Configuration& start, double R) {
+  if (waypoints.empty()) detail::fail_field("waypoints", 0, "at least one waypoint to fly to is needed");
+  for (std::size_t k = 0; k < waypoints.size(); ++k) {
+    const std::string field = "waypoints[" + std::to_string(k) + "]";
+    require_finite(waypoints[k].x(), field + ".x");
+    require_finite(waypoints[k].y(), field + ".y");
+    if (k > 0 && (waypoints[k] - waypoints[k - 1]).norm() < 1e-9 * R)
+      detail::fail_field(field, "(" + detail::to_text(waypoints[k].x()) + ", " + detail::to_text(waypoints[k].y()) + ")",
+                         "closer than 1e-9 R to waypoints[" + std::to_string(k - 1) + "]");
+  }
+  require_finite(start.x, "start.x");
+  require_finite(start.y, "start.y");
+  require_finite(start.psi, "start.psi");
+}
+
+}  // namespace
+
+NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuration& start,
+                          const WaypointNavOptions& options, const Wind& wind) {
+  options.validate();
+  wind.validate();
+  const double R = options.turn_radius;
+  validate_route(waypoints, start, R);
+
+  NavigationResult result;
+  result.method = options.method;
+  double route = (waypoints.front() - Vec2(start.x, start.y)).norm();
+  for (std::size_t k = 1; k < waypoints.size(); ++k) route += (waypoints[k] - waypoints[k - 1]).norm();
+  result.max_time = options.max_time.value_or(
+      3.0 * (route + kTwoPi * R * static_cast<double>(waypoints.size())) / options.speed);
+
+  // Continuous flight smooths sign(phi_T) (see LineFeedback).
+  const LineFeedback law(options.speed, R, options.dt, options.gains,
+                         options.integration == FlightIntegration::Continuous);
+  std::unique_ptr<FlightGuidance> guidance;
+  DubinsWaypointGuidance* dwn = nullptr;
+  if (options.method == NavigationMethod::Dubins) {
+    auto g = std::make_unique<DubinsWaypointGuidance>(law, waypoints, R, options.weights);
+    dwn = g.get();
+    guidance = std::move(g);
+  } else {
+    result.waypoint_radius = options.waypoint_radius.value_or(R);
+    guidance = std::make_unique<WaypointFollower>(law, waypoints, result.waypoint_radius);
+  }
+  Uav vehicle;
+  vehicle.speed = options.speed;
+  vehicle.min_turn_radius = R;
+  FlightOptions flight;
+  flight.integration = options.integration;
+  flight.dt = options.dt;
+  flight.max_time = result.max_time;
+  result.trajectory = fly(vehicle, wind, *guidance, start, flight);
+  if (dwn) result.turning_points = dwn->turning_points();
+  result.metrics = navigation_metrics(result.trajectory, Vec2(start.x, start.y), waypoints, options.speed, R,
+                                      options.weights);
+  return result;
+}
+
+}  // namespace vistrack

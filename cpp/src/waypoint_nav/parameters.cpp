@@ -1,0 +1,31 @@
+// Validation of waypoint_nav's parameter structs (parameters.hpp).
+#include <cmath>
+
+#include "vistrack/error.hpp"
+#include "vistrack/parameters.hpp"
+
+namespace vistrack {
+
+void FuelWeights::validate() const {
+  require_positive(arc, "weights.arc");
+  require_positive(straight, "weights.straight");
+}
+
+void WaypointNavOptions::validate() const {
+  require_positive(turn_radius, "turn_radius");
+  require_positive(speed, "speed");
+  require_positive(dt, "dt");
+  const double psi_max = speed * dt / turn_radius;
+  if (psi_max > 0.5 * 3.14159265358979323846)
+    detail::fail_field("dt", dt, "psi_max = v dt / R = " + detail::to_text(psi_max) + " rad exceeds pi/2");
+  gains.validate();
+  weights.validate();
+  if (waypoint_radius) {
+    if (method == NavigationMethod::Dubins)
+      detail::fail_field("waypoint_radius", *waypoint_radius, "DWN has no waypoint radius (it is for method 'wn')");
+    require_non_negative(*waypoint_radius, "waypoint_radius");
+  }
+  if (max_time) require_positive(*max_time, "max_time");
+}
+
+}  // namespace vistrack

@@ -1,0 +1,315 @@
+"""
+The flight layer: a Dubins vehicle (airspeed v, turn rate <= v/R) in wind (constant plus seeded Dryden gusts, MIL-F-8785C) flown by a guidance law, with the paper's discrete update or Dormand-Prince 5(4). Every planner flies here.
+"""
+from __future__ import annotations
+import collections.abc
+import numpy
+import numpy.typing
+import typing
+import vistrack._core
+__all__: list[str] = ['FlightGuidance', 'FlightTrajectory', 'Gusts', 'LineFeedback', 'PathFollower', 'WaypointFollower', 'Wind', 'WindField', 'dryden_low_altitude', 'fly']
+class Gusts:
+    """
+    Dryden turbulence (MIL-F-8785C, horizontal): RMS intensity sigma_u = sigma_v (speed units), length scale L_u = L_v (length units), seed. Reproducible from the seed.
+    """
+    @staticmethod
+    def mil_f_8785c(altitude: typing.SupportsFloat | typing.SupportsIndex, wind_speed_20ft: typing.SupportsFloat | typing.SupportsIndex, seed: typing.SupportsInt | typing.SupportsIndex = 0, length_unit: typing.SupportsFloat | typing.SupportsIndex = 1.0, speed_unit: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> Gusts:
+        """
+        Gusts of the MIL-F-8785C low-altitude model at `altitude` (m, 3.05-304.8) for the wind speed at 20 ft W20 (m/s; light 7.7, moderate 15.4, severe 23.2), in flight units: speeds divided by speed_unit (m/s per unit), lengths by length_unit (m per unit).
+        """
+    def __init__(self, *, seed: typing.SupportsInt | typing.SupportsIndex = 0, intensity: typing.SupportsFloat | typing.SupportsIndex = 1.0, length_scale: typing.SupportsFloat | typing.SupportsIndex = 200.0, sample_step: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        """
+        seed; intensity sigma (speed units); length_scale L (length units); sample_step (s) of the precomputed series, 0: L / (20 V).
+        """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def intensity(self) -> float:
+        """
+        sigma_u = sigma_v, speed units
+        """
+    @intensity.setter
+    def intensity(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def length_scale(self) -> float:
+        """
+        L_u = L_v, length units
+        """
+    @length_scale.setter
+    def length_scale(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def sample_step(self) -> float:
+        """
+        s between precomputed samples; 0: L / (20 V)
+        """
+    @sample_step.setter
+    def sample_step(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def seed(self) -> int:
+        """
+        random seed
+        """
+    @seed.setter
+    def seed(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+class Wind:
+    """
+    Wind the vehicle does not know: constant (east, north) plus optional Gusts.
+    """
+    def __init__(self, east: typing.SupportsFloat | typing.SupportsIndex = 0.0, north: typing.SupportsFloat | typing.SupportsIndex = 0.0, gusts: Gusts | None = None) -> None:
+        """
+        Constant wind (east, north) in speed units; gusts: Gusts or None.
+        """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def east(self) -> float:
+        """
+        east component, speed units
+        """
+    @east.setter
+    def east(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def gusts(self) -> Gusts | None:
+        """
+        Gusts or None
+        """
+    @gusts.setter
+    def gusts(self, arg0: Gusts | None) -> None:
+        ...
+    @property
+    def north(self) -> float:
+        """
+        north component, speed units
+        """
+    @north.setter
+    def north(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class WindField:
+    """
+    w(t) for one flight: the constant wind plus the precomputed gust series.
+    """
+    def __init__(self, wind: Wind, airspeed: typing.SupportsFloat | typing.SupportsIndex, t0: typing.SupportsFloat | typing.SupportsIndex, duration: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        Precomputes the gusts on [t0, t0 + duration] for a vehicle of that airspeed (Taylor's frozen field). VistrackError when the wind speed reaches the airspeed.
+        """
+    def at(self, times: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex]) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Wind (east, north) at each time: array (n, 2).
+        """
+    @property
+    def has_gusts(self) -> bool:
+        """
+        whether gusts were generated
+        """
+    @property
+    def max_speed(self) -> float:
+        """
+        largest wind speed over the span
+        """
+    @property
+    def sample_step(self) -> float:
+        """
+        s between gust samples (0 without gusts)
+        """
+class LineFeedback:
+    """
+    The paper's feedback law (5): psi_turn = clamp(phi_T + |g s + h s_dot dt| sign(phi_T), +-v dt / R) towards the line whose end is the target; turn rate psi_turn / dt.
+    """
+    def __init__(self, speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, dt: typing.SupportsFloat | typing.SupportsIndex, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), smooth_sign: bool = False) -> None:
+        """
+        speed v, turn_radius R, law step dt (psi_max = v dt / R <= pi/2), gains (g, h); smooth_sign: sign(phi_T) -> clamp(phi_T / psi_max, -1, 1) for continuous flight.
+        """
+    def terms(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], line_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> dict:
+        """
+        Every term of (5) at state (x, y, psi) for the line line_start -> target, as a dict.
+        """
+    def turn_rate(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], line_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> float:
+        """
+        psi_turn / dt, rad/s.
+        """
+    @property
+    def dt(self) -> float:
+        """
+        law step, s
+        """
+    @property
+    def gains(self) -> tuple[float, float]:
+        """
+        (g, h)
+        """
+    @property
+    def max_turn(self) -> float:
+        """
+        psi_max = v dt / R, rad per step
+        """
+    @property
+    def smooth_sign(self) -> bool:
+        """
+        whether sign(phi_T) is smoothed
+        """
+    @property
+    def speed(self) -> float:
+        """
+        v
+        """
+    @property
+    def turn_radius(self) -> float:
+        """
+        R
+        """
+class FlightGuidance:
+    """
+    A guidance law for fly(): turn-rate command and target from (x, y, psi) and t; its stateful logic runs only after accepted steps.
+    """
+    def command(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> tuple[float, tuple[float, float], int]:
+        """
+        (turn_rate, (target_x, target_y), target_index) at a state.
+        """
+    @property
+    def done(self) -> bool:
+        """
+        True once there is nothing more to fly
+        """
+    @property
+    def revision(self) -> int:
+        """
+        counts changes of the active target
+        """
+class WaypointFollower(FlightGuidance):
+    """
+    Classical waypoint navigation on the law (5): the line from the previous waypoint (the start for the first) to the active one; next waypoint when within waypoint_radius. finish_at_last=False holds at the last waypoint until add_waypoint() gives more (feed it from fly()'s on_step).
+    """
+    def __init__(self, law: LineFeedback, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], waypoint_radius: typing.SupportsFloat | typing.SupportsIndex, finish_at_last: bool = True) -> None:
+        """
+        law: LineFeedback; waypoints: array (n, 2); waypoint_radius R_WP >= 0.
+        """
+    def add_waypoint(self, point: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], available_from: typing.SupportsFloat | typing.SupportsIndex = ...) -> None:
+        """
+        Append a waypoint usable from time available_from on (non-decreasing); allowed during flight.
+        """
+    @property
+    def accepted_at(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        time each waypoint was accepted (NaN: not yet)
+        """
+    @property
+    def active(self) -> int:
+        """
+        index of the active waypoint
+        """
+    @property
+    def waypoint_radius(self) -> float:
+        """
+        R_WP
+        """
+    @property
+    def waypoints(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        array (n, 2)
+        """
+class FlightTrajectory:
+    """
+    One sample per output time: state, the turn rate applied from there, the active target and the wind.
+    """
+    def __len__(self) -> int:
+        ...
+    @property
+    def array(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 4): t, x, y, psi
+        """
+    @property
+    def command(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        turn rate applied from each sample (clamped to +-v/R), rad/s
+        """
+    @property
+    def end_time(self) -> float:
+        """
+        time of the last sample, s
+        """
+    @property
+    def finished(self) -> bool:
+        """
+        the guidance said done (else max_time was reached)
+        """
+    @property
+    def psi(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        heading (n,), rad, as integrated (not wrapped)
+        """
+    @property
+    def statistics(self) -> vistrack._core.OdeStatistics:
+        """
+        integrator work, vistrack.OdeStatistics (continuous flights)
+        """
+    @property
+    def switch_times(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        times where the guidance changed its target
+        """
+    @property
+    def t(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        times (n,), s
+        """
+    @property
+    def target(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        active target (n, 2)
+        """
+    @property
+    def target_index(self) -> numpy.typing.NDArray[numpy.int32]:
+        """
+        active target's index (n,), -1: none
+        """
+    @property
+    def wind(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        wind (east, north) at each sample (n, 2)
+        """
+    @property
+    def x(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        x (n,)
+        """
+    @property
+    def y(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        y (n,)
+        """
+class PathFollower(FlightGuidance):
+    """
+    Follows a path of lines and arcs: cross-track and heading feedback with curvature feed-forward, psi_d = psi_path - atan(e / (lookahead_radii R)), rate = v kappa cos(psi - psi_path) / (1 - kappa e) + heading_gain (v / R) wrap(psi_d - psi). Knows the heading, not the wind. Done at the path's end.
+    """
+    def __init__(self, pieces: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 5]"], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, lookahead_radii: typing.SupportsFloat | typing.SupportsIndex = 1.0, heading_gain: typing.SupportsFloat | typing.SupportsIndex = 3.0) -> None:
+        """
+        pieces: (n, 5) rows x0, y0, heading, length, curvature (0 lines, +1/radius ccw, -1/radius cw), each starting where the one before ends; speed v and turn_radius R of the vehicle.
+        """
+    def track(self, state: typing.Annotated[collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], "FixedSize(3)"]) -> dict:
+        """
+        Projection of (x, y, psi) near the current progress: s, piece, cross_track (left positive), heading_error, along (beyond the end).
+        """
+    @property
+    def length(self) -> float:
+        """
+        Path length, m.
+        """
+    @property
+    def progress(self) -> float:
+        """
+        Arc length reached, m.
+        """
+def dryden_low_altitude(altitude: typing.SupportsFloat | typing.SupportsIndex, wind_speed_20ft: typing.SupportsFloat | typing.SupportsIndex) -> dict:
+    """
+    MIL-F-8785C low-altitude intensities (m/s) and length scales (m) at altitude (m) for W20 (m/s).
+    """
+def fly(guidance: FlightGuidance, start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, wind: Wind | None = None, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, max_time: typing.SupportsFloat | typing.SupportsIndex = 3600.0, integration: str = 'discrete', t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, on_step: collections.abc.Callable[[float, tuple[float, float, float]], None] | None = None, progress: collections.abc.Callable[[int, int], None] | None = None, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-09, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-12) -> FlightTrajectory:
+    """
+    Fly the vehicle (speed v, turn_radius R) from start (x, y, psi) at t0 under the guidance until it is done or t0 + max_time. integration 'discrete' (the paper's update, step dt) or 'continuous' (Dormand-Prince, output every dt). on_step(t, state) runs after each accepted step (it may feed the guidance); progress(done, total) in per mille of max_time. Releases the GIL (callbacks take it).
+    """

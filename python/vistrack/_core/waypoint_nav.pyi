@@ -1,0 +1,239 @@
+"""
+Dubins waypoint navigation (Silverberg & Xu 2019) against classical waypoint navigation: the turning point of the 3-waypoint horizon (exact minimisation over theta, four turn cases), the reachability zone, DWN/WN flights on the flight layer and their metrics.
+"""
+from __future__ import annotations
+import collections.abc
+import numpy
+import numpy.typing
+import typing
+import vistrack._core.flight
+__all__: list[str] = ['CASES', 'DEFAULTS', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'TurningPoint', 'TurningPointRecord', 'horizon_lengths', 'horizon_path', 'navigate', 'reachability', 'turning_point', 'turning_points']
+class HorizonPath:
+    """
+    The horizon path C -> arc -> straight -> T_n -> arc through W_n -> straight -> W_{n+1}.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def arc_from_waypoint(self) -> float:
+        """
+        arc W_n -> exit
+        """
+    @property
+    def arc_to_waypoint(self) -> float:
+        """
+        arc T_n -> W_n
+        """
+    @property
+    def case(self) -> str:
+        """
+        'ccw-ccw', 'ccw-cw', 'cw-ccw' or 'cw-cw' (first arc, arc about W_n)
+        """
+    @property
+    def circle_center(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        centre of the circle about W_n
+        """
+    @property
+    def exit_point(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        where the path leaves the circle about W_n
+        """
+    @property
+    def feasible(self) -> bool:
+        """
+        False when a tangent does not exist at this theta
+        """
+    @property
+    def first_arc(self) -> float:
+        """
+        arc length on the vehicle's turning circle
+        """
+    @property
+    def first_straight(self) -> float:
+        """
+        length of the straight to T_n
+        """
+    @property
+    def heading_at_waypoint(self) -> float:
+        """
+        heading at W_n, rad
+        """
+    @property
+    def last_straight(self) -> float:
+        """
+        straight exit -> W_{n+1}
+        """
+    @property
+    def length(self) -> float:
+        """
+        weighted length w_a arcs + w_s straights (inf if infeasible)
+        """
+    @property
+    def line_start(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        start of the first straight (end of the first arc)
+        """
+    @property
+    def point(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        T_n: the turning point, end of the first straight
+        """
+    @property
+    def theta(self) -> float:
+        """
+        circle about W_n centred at W_n + R (cos theta, sin theta), [0, 2 pi)
+        """
+class TurningPoint(HorizonPath):
+    """
+    The optimal horizon path over theta and the four cases.
+    """
+    @property
+    def case_lengths(self) -> dict:
+        """
+        best length found per case (exact for the winner; the others are refined only where they could win)
+        """
+    @property
+    def evaluations(self) -> int:
+        """
+        F(h) evaluations spent
+        """
+class DubinsWaypointGuidance(vistrack._core.flight.FlightGuidance):
+    """
+    DWN as a flight guidance for vistrack.flight.fly: the law (5) to each turning point, the next one when it becomes unreachable; the last waypoint flown to directly.
+    """
+    def __init__(self, law: vistrack._core.flight.LineFeedback, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> None:
+        ...
+    @property
+    def active(self) -> int:
+        """
+        index of the waypoint being approached
+        """
+    @property
+    def turning_points(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        (k, 2) every turning point planned so far
+        """
+class TurningPointRecord:
+    """
+    One turning point planned during a DWN flight.
+    """
+    @property
+    def direct(self) -> bool:
+        """
+        the last waypoint, flown to directly
+        """
+    @property
+    def path(self) -> HorizonPath:
+        """
+        the horizon path
+        """
+    @property
+    def pose(self) -> tuple[float, float, float]:
+        """
+        (x, y, psi) of the vehicle when planned
+        """
+    @property
+    def t(self) -> float:
+        """
+        when it was planned, s
+        """
+    @property
+    def waypoint(self) -> int:
+        """
+        index of its waypoint in the flown list
+        """
+class NavigationResult:
+    """
+    One WN or DWN flight and its metrics.
+    """
+    @property
+    def all_reached(self) -> bool:
+        ...
+    @property
+    def duration(self) -> float:
+        ...
+    @property
+    def fuel(self) -> float:
+        """
+        sum of v dt (w_s + (w_a - w_s) |r| / (v/R))
+        """
+    @property
+    def max_time(self) -> float:
+        """
+        time limit used, s
+        """
+    @property
+    def method(self) -> str:
+        """
+        'dwn' or 'wn'
+        """
+    @property
+    def miss_distances(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        closest approach to each waypoint
+        """
+    @property
+    def overshoot(self) -> float:
+        """
+        largest distance from the legs outside their turns
+        """
+    @property
+    def path_length(self) -> float:
+        ...
+    @property
+    def reached(self) -> numpy.typing.NDArray[numpy.bool]:
+        """
+        whether the guidance got past each waypoint in time
+        """
+    @property
+    def swirls(self) -> int:
+        """
+        full 2 pi heading excursions while one waypoint is active
+        """
+    @property
+    def trajectory(self) -> vistrack._core.flight.FlightTrajectory:
+        """
+        vistrack.flight.FlightTrajectory
+        """
+    @property
+    def turning_points(self) -> list[TurningPointRecord]:
+        """
+        TurningPointRecord list (DWN)
+        """
+    @property
+    def undershoot(self) -> float:
+        """
+        largest distance from the legs inside their turns
+        """
+    @property
+    def waypoint_radius(self) -> float:
+        """
+        R_WP (WN)
+        """
+def horizon_lengths(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], w_next: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], w_after: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, case: str, thetas: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    F(theta) of one case at each theta (inf where the path does not exist).
+    """
+def horizon_path(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], w_next: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], w_after: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, case: str, theta: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> HorizonPath:
+    """
+    The horizon path of one case at one theta.
+    """
+def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), wind: vistrack._core.flight.Wind | None = None, integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None) -> NavigationResult:
+    """
+    Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn'; returns NavigationResult. Releases the GIL.
+    """
+def reachability(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
+    """
+    For each point (n, 2): <= 0 inside the reachability zone (unreachable), > 0 outside.
+    """
+def turning_point(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], w_next: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], w_after: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> TurningPoint:
+    """
+    Turning point T_n over the horizon (pose C, W_n, W_{n+1}): minimises F = w_a L_a + w_s L_s over theta for the four cases; theta to 1e-12 rad.
+    """
+def turning_points(poses: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], w_next: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], w_after: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> dict:
+    """
+    Batch of turning points, one thread, GIL released: poses (n, 3), w_next and w_after (n, 2) -> dict of theta (n,), length (n,), case (n,) indexing CASES, point (n, 2).
+    """
+CASES: tuple = ('ccw-ccw', 'ccw-cw', 'cw-ccw', 'cw-cw')
+DEFAULTS: dict = {'turn_radius': 0.7, 'speed': 0.8, 'dt': 0.02, 'gains': (0.1, 5.25), 'weights': (1.0, 1.0), 'integration': 'discrete', 'method': 'dwn'}

@@ -1,0 +1,85 @@
+"""``vistrack waypoints``: Dubins waypoint navigation (DWN) against classical waypoint navigation
+(WN) over a route (CSV x,y; the flight starts at the first waypoint heading to the second).
+
+Writes metrics.json, one trajectory CSV per flight, the DWN turning points and paths.png (the
+paper's Figures 11/12: WN dashed at each waypoint radius, DWN solid). Defaults are the paper's
+section 3 (R 0.7, v 0.8, dt 0.02, g 0.1, h 5.25; WN radii 0.1R, 0.5R, R). --figure-weights adds
+Figure 10, --monte-carlo N the seeded Monte Carlo over random routes and winds.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from .. import waypoint_nav as wn
+from ..flight import Wind
+from ..io import read_route
+from ..progress import Progress
+from ..report.waypoints import write_waypoints
+from . import (
+    add_export_arguments,
+    add_report_arguments,
+    export_mission,
+    finite_numbers,
+    positive_numbers,
+    report_options,
+)
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    d = wn.DEFAULTS
+    parser = subparsers.add_parser("waypoints", help="Dubins waypoint navigation against classical WN (Figs. 10-12)",
+                                   description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("route", type=Path, help="route CSV with columns x,y")
+    parser.add_argument("--method", choices=["dwn", "wn", "both"], default="both", help="default both")
+    parser.add_argument("--waypoint-radius", type=positive_numbers("--waypoint-radius", "0.07,0.35,0.7"),
+                        help="WN radii, comma-separated (default 0.1R,0.5R,R)")
+    parser.add_argument("--wind", type=finite_numbers("--wind", 2, "0,0.08"), default=[0.0, 0.0],
+                        help="constant wind east,north (default 0,0)")
+    parser.add_argument("--gusts", type=int, metavar="SEED",
+                        help="add Dryden gusts with this seed (light turbulence, MIL-F-8785C, see vt.waypoint_nav)")
+    parser.add_argument("--turn-radius", type=float, default=d["turn_radius"], help=f"R (default {d['turn_radius']})")
+    parser.add_argument("--speed", type=float, default=d["speed"], help=f"v (default {d['speed']})")
+    parser.add_argument("--dt", type=float, default=d["dt"], help=f"step (default {d['dt']})")
+    parser.add_argument("--gains", type=finite_numbers("--gains", 2, "0.1,5.25"), default=list(d["gains"]),
+                        help="g,h (default the paper's 0.1,5.25)")
+    parser.add_argument("--integration", choices=["discrete", "continuous"], default=d["integration"])
+    parser.add_argument("--figure-weights", action="store_true", help="also Figure 10 (theta against w_a)")
+    parser.add_argument("--monte-carlo", type=int, metavar="N", help="also N seeded random routes and winds")
+    parser.add_argument("--seed", type=int, default=0, help="Monte Carlo seed (default 0)")
+    parser.add_argument("--monte-carlo-wind", type=finite_numbers("--monte-carlo-wind", 2, "0,0.2"),
+                        default=[0.0, 0.2], help="Monte Carlo wind speeds, fractions of v (default 0,0.2)")
+    parser.add_argument("--altitude", type=float, default=60.0, help="mission altitude for --export, m (default 60)")
+    add_export_arguments(parser)
+    add_report_arguments(parser)
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.add_argument("--out", type=Path, default=Path("waypoints_out"), help="output folder")
+    parser.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    route = read_route(args.route, "ROUTE")
+    east, north = args.wind
+    wind = Wind(east=east, north=north, gusts=None if args.gusts is None else wn.paper_gusts(args.gusts))
+    R = args.turn_radius
+    radii = wn.PAPER_RADII if args.waypoint_radius is None else [r / R for r in args.waypoint_radius]
+    methods = ("dwn", "wn") if args.method == "both" else (args.method,)
+    options = {"turn_radius": R, "speed": args.speed, "dt": args.dt, "integration": args.integration,
+               "gains": tuple(args.gains)}
+    flights = wn.paper_flights(route, wind=wind, radii=radii, methods=methods, **options)
+    weights = wn.theta_against_weight() if args.figure_weights else None
+    mc = None
+    if args.monte_carlo:
+        with Progress("Monte Carlo", not args.quiet, unit="flight pair") as bar:
+            mc = wn.monte_carlo(args.monte_carlo, args.seed, wind_fraction=tuple(args.monte_carlo_wind), radii=radii,
+                                progress=bar, **options)
+    settings = {**options, "wind": [east, north], "gusts_seed": args.gusts, "radii_over_R": list(radii)}
+    write_waypoints(args.out, flights, wind, str(args.route), settings, weights, mc, report_options(args))
+    # The mission carries DWN's turning points when DWN flew, else the first WN flight's waypoints.
+    export_mission(args.export, lambda ref: flights[0].to_mission(ref, args.altitude, speed=args.speed), args.origin)
+    for f in flights:
+        print(f"{f.label:>14}: max miss {f.miss_distances.max() / R:.3f} R, overshoot {f.overshoot / R:.3f} R, "
+              f"swirls {f.swirls}, path {f.path_length:.3f}, time {f.duration:.2f}, all reached {f.all_reached}")
+    print(f"-> {args.out}")
+    return 0

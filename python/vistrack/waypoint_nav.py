@@ -1,0 +1,366 @@
+"""Dubins waypoint navigation (DWN) against classical waypoint navigation (WN), after Silverberg &
+Xu, *Dubins Waypoint Navigation of Small-Class Unmanned Aerial Vehicles* (OJOp 2019).
+
+Both fly on the flight layer (:mod:`vistrack.flight`) with the paper's feedback law (5). WN
+steers to the active waypoint and switches inside the waypoint radius R_WP; DWN steers to the
+turning point T_n of the horizon (pose, W_n, W_{n+1}) and moves on when T_n enters the
+reachability zone; the last waypoint is flown to directly.
+
+- :func:`turning_point` solves the horizon exactly (four turn cases, theta to 1e-12 rad);
+  :func:`horizon_path` and :func:`horizon_lengths` give the path and F(theta) of one case.
+- :func:`fly` flies a route and returns a :class:`NavigationFlight` with the trajectory and the
+  metrics (miss distances, reached, overshoot, swirls, path length, duration, fuel). Its
+  ``turning_points`` are the DWN turning points in the order flown: the route an autopilot would
+  be given instead of the waypoints.
+- :func:`paper_flights` flies the comparison of the paper's Figures 11 and 12 (DWN, and WN at
+  R_WP = 0.1R, 0.5R, R); :func:`theta_against_weight` is Figure 10;
+  :func:`monte_carlo` goes beyond the paper: random routes and winds, with and without gusts.
+
+Defaults are the paper's section 3: R = 0.7, v = 0.8, dt = 0.02, gains g = 0.1, h = 5.25
+(``DEFAULTS``, read from the C++ parameters).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Callable, Optional, Sequence, Union
+
+import numpy as np
+
+from ._core import VistrackError
+from ._core import waypoint_nav as _wn
+from .flight import FlightTrajectory, Gusts, Wind
+from .georeference import Georeference
+from .mission import Mission, MissionBuilder
+
+__all__ = [
+    "CASES", "DEFAULTS", "PAPER_GUST_MODEL", "PAPER_RADII", "DubinsWaypointGuidance", "HorizonPath", "MonteCarlo",
+    "NavigationFlight", "TurningPoint", "fly", "horizon_lengths", "horizon_path", "monte_carlo", "paper_flights",
+    "paper_gusts", "random_route", "reachability", "theta_against_weight", "turning_point", "turning_points",
+]
+
+HorizonPath = _wn.HorizonPath
+TurningPoint = _wn.TurningPoint
+DubinsWaypointGuidance = _wn.DubinsWaypointGuidance
+turning_point = _wn.turning_point
+turning_points = _wn.turning_points  # batch: poses (n, 3), w_next, w_after (n, 2)
+CASES: tuple[str, ...] = tuple(_wn.CASES)
+horizon_path = _wn.horizon_path
+horizon_lengths = _wn.horizon_lengths
+reachability = _wn.reachability
+
+DEFAULTS: dict[str, Any] = dict(_wn.DEFAULTS)
+# The waypoint radii of the paper's Figures 11 and 12, in units of R.
+PAPER_RADII: tuple[float, ...] = (0.1, 0.5, 1.0)
+# Gusts for the paper's units: MIL-F-8785C low altitude, light turbulence (W20 = 15 kt = 7.7 m/s)
+# at 50 m, reading the units as 1 = 20 m and 1 s (v = 0.8 -> 16 m/s, R = 0.7 -> 14 m):
+# sigma = 0.061 (7.7 % of v), L = 10.1.
+PAPER_GUST_MODEL: dict[str, float] = {"altitude": 50.0, "wind_speed_20ft": 7.7, "length_unit": 20.0,
+                                      "speed_unit": 20.0}
+
+
+def paper_gusts(seed: int, model: Optional[dict[str, float]] = None) -> Gusts:
+    """Dryden gusts of ``PAPER_GUST_MODEL`` (or ``model``) with this seed."""
+    m = {**PAPER_GUST_MODEL, **(model or {})}
+    return Gusts.mil_f_8785c(m["altitude"], m["wind_speed_20ft"], seed, m["length_unit"], m["speed_unit"])
+
+Points = Union[np.ndarray, Sequence[Sequence[float]]]
+
+
+def route_array(waypoints: Points, key: str = "waypoints") -> np.ndarray:
+    """The waypoints as a finite (n, 2) float array with n >= 2; VistrackError naming ``key``."""
+    try:
+        array = np.asarray(waypoints, dtype=float)
+    except (TypeError, ValueError):
+        raise VistrackError(f"{key} = {waypoints!r}: expected an array of (x, y) rows") from None
+    if array.ndim != 2 or array.shape[1] != 2:
+        raise VistrackError(f"{key}: expected shape (n, 2), got {array.shape}")
+    if len(array) < 2:
+        raise VistrackError(f"{key} = {len(array)} waypoints: at least two are needed")
+    bad = np.argwhere(~np.isfinite(array))
+    if len(bad):
+        row, col = bad[0]
+        raise VistrackError(f"{key}[{row}].{'xy'[col]} = {array[row, col]}: must be a finite number")
+    return array
+
+
+def default_start(route: np.ndarray) -> tuple[float, float, float]:
+    """At the first waypoint, heading to the second."""
+    d = route[1] - route[0]
+    return float(route[0, 0]), float(route[0, 1]), math.atan2(d[1], d[0])
+
+
+@dataclass
+class NavigationFlight:
+    """One WN or DWN flight along ``waypoints`` (the flown ones, after ``start``) and its metrics.
+
+    ``trajectory`` is (n, 4): t, x, y, psi; ``flight`` the full record (commands, targets, wind).
+    Lengths are in the route's units; ``miss_distances[k]`` is the closest approach to waypoint k.
+    """
+
+    method: str
+    waypoint_radius: Optional[float]
+    turn_radius: float
+    start: tuple[float, float, float]
+    waypoints: np.ndarray
+    flight: FlightTrajectory
+    miss_distances: np.ndarray
+    reached: np.ndarray
+    swirls: int
+    overshoot: float
+    undershoot: float
+    path_length: float
+    duration: float
+    fuel: float
+    finished: bool
+    turning_point_records: list[Any] = field(default_factory=list)
+
+    @property
+    def trajectory(self) -> np.ndarray:
+        """(n, 4): t, x, y, psi."""
+        return np.asarray(self.flight.array)
+
+    @property
+    def all_reached(self) -> bool:
+        return bool(np.all(self.reached))
+
+    @property
+    def label(self) -> str:
+        """"DWN" or "WN R_WP=0.1R"."""
+        if self.method == "dwn" or self.waypoint_radius is None:
+            return "DWN"
+        return f"WN R_WP={self.waypoint_radius / self.turn_radius:g}R"
+
+    @property
+    def turning_points(self) -> np.ndarray:
+        """(k, 2): the DWN turning points in the order they were flown to (empty for WN); the last
+        is the last waypoint, flown to directly. These are what a mission would carry."""
+        pts = [r.path.point for r in self.turning_point_records]
+        return np.array(pts, dtype=float).reshape(-1, 2)
+
+    def mission_points(self) -> np.ndarray:
+        """(k, 2): the points an autopilot mission of this flight carries: DWN's turning points
+        (the paper keeps them "in the background"; the last is the last waypoint, flown to
+        directly), or WN's waypoints."""
+        return self.turning_points if self.method == "dwn" else np.asarray(self.waypoints, dtype=float)[:, :2]
+
+    def to_mission(self, georeference: Georeference, altitude: float, *, speed: Optional[float] = None,
+                   altitude_mode: str = "relative", firmware: str = "ardupilot",
+                   return_to_launch: bool = False) -> Mission:
+        """The flight as an autopilot mission (route units taken as metres): one NAV_WAYPOINT per
+        :meth:`mission_points` row, with WN's acceptance radius as param2 (DWN's turning points
+        carry 0: the autopilot's default), optionally DO_CHANGE_SPEED first and RTL last."""
+        builder = MissionBuilder(georeference, altitude, speed=speed, altitude_mode=altitude_mode, firmware=firmware)
+        radius = 0.0 if self.method == "dwn" or self.waypoint_radius is None else self.waypoint_radius
+        for point in self.mission_points():
+            builder.waypoint(point, acceptance_radius=radius)
+        if return_to_launch:
+            builder.return_to_launch()
+        return builder.build()
+
+    def metrics(self) -> dict[str, Any]:
+        """The metrics as plain data (JSON), lengths also in units of R."""
+        R = self.turn_radius
+        return {
+            "method": self.method,
+            "label": self.label,
+            "waypoint_radius": self.waypoint_radius,
+            "miss_distances": self.miss_distances.tolist(),
+            "miss_distances_over_R": (self.miss_distances / R).tolist(),
+            "max_miss_over_R": float(self.miss_distances.max() / R),
+            "reached": [bool(r) for r in self.reached],
+            "all_reached": self.all_reached,
+            "finished": self.finished,
+            "swirls": self.swirls,
+            "overshoot": self.overshoot,
+            "overshoot_over_R": self.overshoot / R,
+            "undershoot": self.undershoot,
+            "undershoot_over_R": self.undershoot / R,
+            "path_length": self.path_length,
+            "duration": self.duration,
+            "fuel": self.fuel,
+            "turning_points": self.turning_points.tolist(),
+        }
+
+
+def fly(
+    waypoints: Points,
+    start: Optional[Sequence[float]] = None,
+    method: str = DEFAULTS["method"],
+    turn_radius: float = DEFAULTS["turn_radius"],
+    speed: float = DEFAULTS["speed"],
+    dt: float = DEFAULTS["dt"],
+    gains: tuple[float, float] = DEFAULTS["gains"],
+    waypoint_radius: Optional[float] = None,
+    wind: Optional[Wind] = None,
+    max_time: Optional[float] = None,
+    weights: tuple[float, float] = DEFAULTS["weights"],
+    integration: str = DEFAULTS["integration"],
+) -> NavigationFlight:
+    """Fly a route with DWN (``method="dwn"``) or WN (``"wn"``).
+
+    ``start`` (x, y, psi): every waypoint is flown. Without it the flight starts at the first
+    waypoint heading to the second and flies the others. ``waypoint_radius`` is WN's R_WP (None:
+    R); DWN has none. ``wind`` is unknown to the guidance; ``max_time`` None: 3 (route length +
+    2 pi R per waypoint) / v. ``weights`` (w_a, w_s) weigh arcs and straights in the turning
+    points and in ``fuel``; ``integration`` "discrete" (the paper's) or "continuous".
+    """
+    route = route_array(waypoints)
+    if start is None:
+        pose = default_start(route)
+        flown = route[1:]
+    else:
+        if len(start) != 3:
+            raise VistrackError(f"start = {start!r}: expected (x, y, psi)")
+        pose = (float(start[0]), float(start[1]), float(start[2]))
+        flown = route
+    result = _wn.navigate(flown, pose, method=method, turn_radius=turn_radius, speed=speed, dt=dt, gains=gains,
+                          waypoint_radius=waypoint_radius, weights=weights, wind=wind, integration=integration,
+                          max_time=max_time)
+    return NavigationFlight(
+        method=result.method,
+        waypoint_radius=result.waypoint_radius if result.method == "wn" else None,
+        turn_radius=float(turn_radius),
+        start=pose,
+        waypoints=flown,
+        flight=result.trajectory,
+        miss_distances=np.asarray(result.miss_distances),
+        reached=np.asarray(result.reached),
+        swirls=int(result.swirls),
+        overshoot=float(result.overshoot),
+        undershoot=float(result.undershoot),
+        path_length=float(result.path_length),
+        duration=float(result.duration),
+        fuel=float(result.fuel),
+        finished=bool(result.trajectory.finished),
+        turning_point_records=list(result.turning_points),
+    )
+
+
+def paper_flights(waypoints: Points, wind: Optional[Wind] = None, radii: Sequence[float] = PAPER_RADII,
+                  methods: Sequence[str] = ("dwn", "wn"), **options: Any) -> list[NavigationFlight]:
+    """DWN and WN at each waypoint radius (in units of R) over one route: Figures 11 (no wind) and
+    12 (``wind``). ``options`` go to :func:`fly` (turn_radius, speed, dt, gains, start, ...)."""
+    for method in methods:
+        if method not in ("dwn", "wn"):
+            raise VistrackError(f"method = {method!r}: must be 'dwn' or 'wn'")
+    R = float(options.get("turn_radius", DEFAULTS["turn_radius"]))
+    flights = []
+    if "dwn" in methods:
+        flights.append(fly(waypoints, method="dwn", wind=wind, **options))
+    if "wn" in methods:
+        for fraction in radii:
+            flights.append(fly(waypoints, method="wn", waypoint_radius=fraction * R, wind=wind, **options))
+    return flights
+
+
+def theta_against_weight(arc_weights: Sequence[float] = tuple(np.linspace(1.0, 1.5, 11)), A: float = 4.0,
+                         B: float = 4.0, alpha: float = math.radians(-45.0),
+                         beta: float = math.radians(30.0)) -> dict[str, Any]:
+    """Figure 10: the optimal theta as the arc weight w_a grows (w_s = 1), in the paper's local
+    frame (R = 1, C at the origin, W_n = (A, 0), W_{n+1} = W_n + B (cos beta, sin beta), heading
+    alpha). Returns the weights, thetas (rad), cases and turning points."""
+    pose = (0.0, 0.0, float(alpha))
+    w_next = (float(A), 0.0)
+    w_after = (A + B * math.cos(beta), B * math.sin(beta))
+    points = [turning_point(pose, w_next, w_after, 1.0, (float(w), 1.0)) for w in arc_weights]
+    thetas = np.array([p.theta for p in points])
+    return {
+        "pose": pose, "w_next": w_next, "w_after": w_after, "arc_weights": np.asarray(arc_weights, dtype=float),
+        "thetas": thetas, "cases": [p.case for p in points], "points": points,
+        "theta_range_deg": float(np.degrees(thetas.max() - thetas.min())),
+    }
+
+
+# ---- Monte Carlo beyond the paper ------------------------------------------------------------------
+
+def random_route(rng: np.random.Generator, count: int, turn_radius: float, legs: tuple[float, float] = (4.0, 10.0),
+                 max_turn: float = math.pi / 2) -> np.ndarray:
+    """``count`` waypoints from the origin: legs uniform in ``legs`` (units of R), each turn
+    uniform in [-max_turn, max_turn], first heading uniform."""
+    heading = rng.uniform(-math.pi, math.pi)
+    points = [np.zeros(2)]
+    for k in range(count - 1):
+        if k > 0:
+            heading += rng.uniform(-max_turn, max_turn)
+        length = rng.uniform(*legs) * turn_radius
+        points.append(points[-1] + length * np.array([math.cos(heading), math.sin(heading)]))
+    return np.array(points)
+
+
+@dataclass
+class MonteCarlo:
+    """Per-flight rows and the per-method summary of :func:`monte_carlo`."""
+
+    rows: list[dict[str, Any]]
+    settings: dict[str, Any]
+
+    def methods(self) -> list[str]:
+        return list(dict.fromkeys(r["label"] for r in self.rows))
+
+    def summary(self) -> list[dict[str, Any]]:
+        """Per (gusts, method): miss distance over R (median, 90th percentile, max, over every
+        waypoint of every flight), swirl rate (flights with at least one), share of flights
+        reaching every waypoint, path length over the route's length, overshoot over R (median)."""
+        out = []
+        for gusts in (False, True):
+            for label in self.methods():
+                rows = [r for r in self.rows if r["gusts"] == gusts and r["label"] == label]
+                if not rows:
+                    continue
+                miss = np.concatenate([r["miss_over_R"] for r in rows])
+                out.append({
+                    "gusts": gusts, "label": label, "flights": len(rows),
+                    "miss_median": float(np.median(miss)), "miss_p90": float(np.percentile(miss, 90)),
+                    "miss_max": float(miss.max()),
+                    "swirl_rate": float(np.mean([r["swirls"] > 0 for r in rows])),
+                    "all_reached_rate": float(np.mean([r["all_reached"] for r in rows])),
+                    "path_ratio_mean": float(np.mean([r["path_ratio"] for r in rows])),
+                    "overshoot_median": float(np.median([r["overshoot_over_R"] for r in rows])),
+                })
+        return out
+
+
+def monte_carlo(runs: int = 200, seed: int = 0, waypoints: int = 6, wind_fraction: tuple[float, float] = (0.0, 0.2),
+                radii: Sequence[float] = PAPER_RADII, legs: tuple[float, float] = (4.0, 10.0),
+                gust_model: Optional[dict[str, float]] = None, progress: Optional[Callable[[int, int], None]] = None,
+                **options: Any) -> MonteCarlo:
+    """Random routes (``waypoints`` points, legs in ``legs`` x R, turns <= 90 deg) and winds
+    (speed uniform in ``wind_fraction`` of the airspeed, direction uniform), each flown by DWN and
+    by WN at every radius (units of R), without and with gusts. Seeded: run k draws from
+    ``numpy.random.default_rng([seed, k])``. Gusts: :func:`paper_gusts` (``gust_model`` overrides
+    keys of ``PAPER_GUST_MODEL``)."""
+    if runs < 1:
+        raise VistrackError(f"runs = {runs}: must be at least 1")
+    if not 0.0 <= wind_fraction[0] <= wind_fraction[1] < 1.0:
+        raise VistrackError(f"wind_fraction = {tuple(wind_fraction)}: need 0 <= low <= high < 1 (fractions of v)")
+    model = {**PAPER_GUST_MODEL, **(gust_model or {})}
+    R = float(options.get("turn_radius", DEFAULTS["turn_radius"]))
+    v = float(options.get("speed", DEFAULTS["speed"]))
+    rows: list[dict[str, Any]] = []
+    total = runs * 2
+    for k in range(runs):
+        rng = np.random.default_rng([seed, k])
+        route = random_route(rng, waypoints, R, legs)
+        speed = rng.uniform(*wind_fraction) * v
+        direction = rng.uniform(0.0, 2.0 * math.pi)
+        gust_seed = int(rng.integers(0, 2**63 - 1))
+        route_length = float(np.sum(np.linalg.norm(np.diff(route, axis=0), axis=1)))
+        for with_gusts in (False, True):
+            gusts = paper_gusts(gust_seed, model) if with_gusts else None
+            wind = Wind(east=speed * math.cos(direction), north=speed * math.sin(direction), gusts=gusts)
+            for flight in paper_flights(route, wind=wind, radii=radii, **options):
+                rows.append({
+                    "run": k, "gusts": with_gusts, "wind_speed": speed, "wind_direction": direction,
+                    "label": flight.label, "method": flight.method,
+                    "miss_over_R": flight.miss_distances / R, "swirls": flight.swirls,
+                    "all_reached": flight.all_reached, "path_ratio": flight.path_length / route_length,
+                    "overshoot_over_R": flight.overshoot / R, "duration": flight.duration,
+                })
+            if progress is not None:
+                progress(2 * k + 1 + int(with_gusts), total)
+    settings = {"runs": runs, "seed": seed, "waypoints": waypoints, "wind_fraction": list(wind_fraction),
+                "radii": list(radii), "legs": list(legs), "gust_model": model,
+                "turn_radius": R, "speed": v}
+    return MonteCarlo(rows=rows, settings=settings)

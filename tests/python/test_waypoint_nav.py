@@ -1,0 +1,230 @@
+"""vt.waypoint_nav: turning points, the paper's claims on the example route, the Monte Carlo,
+route files, bad input and the ``vistrack waypoints`` command."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import vistrack as vt
+from vistrack import waypoint_nav as wn
+from vistrack.cli import main
+from vistrack.io import read_route
+
+REPO = Path(__file__).resolve().parents[2]
+ROUTE = REPO / "examples" / "waypoints_paper.csv"
+R = wn.DEFAULTS["turn_radius"]
+
+
+@pytest.fixture(scope="module")
+def route() -> np.ndarray:
+    return read_route(ROUTE)
+
+
+@pytest.fixture(scope="module")
+def calm(route: np.ndarray) -> list[wn.NavigationFlight]:
+    return wn.paper_flights(route)
+
+
+@pytest.fixture(scope="module")
+def windy(route: np.ndarray) -> list[wn.NavigationFlight]:
+    # Unknown constant wind, 10 % of the airspeed, from the bottom of the figure (section 3.4).
+    return wn.paper_flights(route, wind=vt.flight.Wind(north=0.1 * wn.DEFAULTS["speed"]))
+
+
+def test_defaults_are_the_papers_section_3() -> None:
+    assert wn.DEFAULTS["turn_radius"] == 0.7 and wn.DEFAULTS["speed"] == 0.8 and wn.DEFAULTS["dt"] == 0.02
+    assert wn.DEFAULTS["gains"] == (0.1, 5.25)
+
+
+def test_example_route_has_the_papers_geometry(route: np.ndarray) -> None:
+    legs = np.diff(route, axis=0)
+    assert len(route) == 6
+    assert np.all(np.linalg.norm(legs, axis=1) >= 4 * R)
+    headings = np.arctan2(legs[:, 1], legs[:, 0])
+    turns = np.abs((np.diff(headings) + math.pi) % (2 * math.pi) - math.pi)
+    assert np.all(turns <= math.pi / 2 + 1e-12)
+
+
+def test_turning_point_api() -> None:
+    tp = wn.turning_point((0.0, 0.0, 0.0), (4.0, 0.0), (9.0, 0.0), 1.0)
+    assert tp.length == pytest.approx(9.0, abs=1e-12)
+    assert tp.case in ("ccw-ccw", "cw-cw", "cw-ccw", "ccw-cw")
+    np.testing.assert_allclose(tp.point, (4.0, 0.0), atol=1e-9)
+    path = wn.horizon_path((0.0, 0.0, 0.0), (4.0, 0.0), (9.0, 0.0), 1.0, tp.case, tp.theta)
+    assert path.length == pytest.approx(tp.length, abs=1e-12)
+    lengths = wn.horizon_lengths((0.0, 0.0, 0.0), (4.0, 0.0), (9.0, 0.0), 1.0, tp.case, np.linspace(0, 6, 50))
+    assert lengths.min() >= tp.length - 1e-12
+
+
+def test_dwn_passes_every_waypoint_without_wind(calm: list[wn.NavigationFlight]) -> None:
+    dwn = calm[0]
+    assert dwn.method == "dwn" and dwn.all_reached and dwn.swirls == 0
+    assert np.all(dwn.miss_distances < 0.05 * R)
+
+
+def test_wn_at_a_tenth_of_r_overshoots_without_wind(calm: list[wn.NavigationFlight]) -> None:
+    dwn, small, half, full = calm
+    assert small.waypoint_radius == pytest.approx(0.1 * R)
+    # Passes close but turns late: the overshoot is far larger than DWN's.
+    assert small.overshoot > 2.5 * dwn.overshoot
+    # Larger radii turn early: they miss the waypoints by about their radius (the undershoot).
+    assert np.median(half.miss_distances) > 0.1 * R
+    assert np.median(full.miss_distances) > 0.35 * R
+    assert full.undershoot > 2.5 * dwn.undershoot
+
+
+def test_with_unknown_wind_dwn_never_swirls(windy: list[wn.NavigationFlight]) -> None:
+    dwn = windy[0]
+    assert dwn.swirls == 0 and dwn.all_reached
+    assert np.all(dwn.miss_distances < 0.25 * R)
+
+
+def test_with_unknown_wind_our_wn_does_not_swirl_either(route: np.ndarray, windy: list[wn.NavigationFlight]) -> None:
+    # Not the paper's Figure 12: the law (5) points the vehicle at the waypoint every step, and a
+    # pursuer in a steady wind ends its approach heading into the wind, so even R_WP = 0.02 R is
+    # reached (README: "Dubins waypoint navigation").
+    assert all(f.swirls == 0 and f.all_reached for f in windy[1:])
+    tiny = wn.fly(route, method="wn", waypoint_radius=0.02 * R, wind=vt.flight.Wind(north=0.08))
+    assert tiny.swirls == 0 and tiny.all_reached
+
+
+def test_flight_result_shapes(calm: list[wn.NavigationFlight], route: np.ndarray) -> None:
+    dwn = calm[0]
+    traj = dwn.trajectory
+    assert traj.shape[1] == 4 and traj[0, 0] == 0.0
+    np.testing.assert_allclose(traj[0, 1:3], route[0])
+    assert dwn.turning_points.shape == (len(route) - 1, 2)
+    np.testing.assert_allclose(dwn.turning_points[-1], route[-1])  # the last is flown to directly
+    m = dwn.metrics()
+    json.dumps(m)
+    assert m["max_miss_over_R"] < 0.05
+    assert calm[1].turning_points.shape == (0, 2)
+    assert dwn.fuel == pytest.approx(dwn.path_length)  # w_a = w_s = 1 and no wind: air distance
+
+
+def test_start_pose_flies_every_waypoint(route: np.ndarray) -> None:
+    f = wn.fly(route, start=(-3.0, 0.0, 0.0))
+    assert len(f.miss_distances) == len(route) and f.all_reached
+
+
+def test_continuous_integration_agrees(route: np.ndarray, calm: list[wn.NavigationFlight]) -> None:
+    c = wn.fly(route, integration="continuous")
+    assert c.all_reached and np.all(c.miss_distances < 0.05 * R)
+    assert c.path_length == pytest.approx(calm[0].path_length, rel=0.01)
+
+
+def test_fuel_weights_move_theta_less_than_four_degrees() -> None:
+    data = wn.theta_against_weight()
+    assert set(data["cases"]) == {"ccw-ccw"}
+    assert 0.0 < data["theta_range_deg"] < 4.0
+
+
+@pytest.mark.parametrize(
+    ("call", "field"),
+    [
+        (lambda r: wn.fly(r[:1]), "waypoints"),
+        (lambda r: wn.fly(np.vstack([r[:2], r[1:2]])), "waypoints[1]"),
+        (lambda r: wn.fly(r, turn_radius=0.0), "turn_radius"),
+        (lambda r: wn.fly(r, dt=2.0), "dt"),
+        (lambda r: wn.fly(r, dt=0.0), "dt"),
+        (lambda r: wn.fly(r, wind=vt.flight.Wind(east=0.8)), "wind"),
+        (lambda r: wn.fly(np.vstack([r, [[math.nan, 1.0]]])), "waypoints[6].x"),
+        (lambda r: wn.fly(r, start=(0.0, math.nan, 0.0)), "start.y"),
+        (lambda r: wn.fly(r, method="dubins"), "method"),
+        (lambda r: wn.fly(r, method="dwn", waypoint_radius=0.1), "waypoint_radius"),
+        (lambda r: wn.turning_point((0.0, 0.0, 0.0), (1.0, 0.0), (2.0, 0.0), -1.0), "turn_radius"),
+    ],
+)
+def test_bad_input_names_the_field(route: np.ndarray, call, field: str) -> None:
+    with pytest.raises(vt.VistrackError, match=field.replace("[", r"\[").replace("]", r"\]")):
+        call(route)
+
+
+def test_monte_carlo_is_seeded_and_dwn_never_swirls() -> None:
+    a = wn.monte_carlo(runs=4, seed=7)
+    b = wn.monte_carlo(runs=4, seed=7)
+    assert len(a.rows) == 4 * 2 * 4
+    for x, y in zip(a.rows, b.rows):
+        assert x["label"] == y["label"] and x["wind_speed"] == y["wind_speed"]
+        np.testing.assert_array_equal(x["miss_over_R"], y["miss_over_R"])
+    summary = {(s["gusts"], s["label"]): s for s in a.summary()}
+    assert summary[(False, "DWN")]["swirl_rate"] == 0.0 and summary[(True, "DWN")]["swirl_rate"] == 0.0
+    assert wn.monte_carlo(runs=2, seed=8).rows[0]["wind_speed"] != a.rows[0]["wind_speed"]
+
+
+def test_read_route_errors(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.csv"
+    bad.write_text("x,y\n0,0\n1,abc\n")
+    with pytest.raises(vt.VistrackError, match="line 3"):
+        read_route(bad)
+    bad.write_text("x,y\n0,0\n")
+    with pytest.raises(vt.VistrackError, match="at least two"):
+        read_route(bad)
+    plain = tmp_path / "plain.csv"
+    plain.write_text("0,0\n4,0\n")
+    np.testing.assert_array_equal(read_route(plain), [[0, 0], [4, 0]])
+    with pytest.raises(vt.VistrackError, match="route"):
+        read_route(tmp_path / "missing.csv")
+
+
+def test_cli_waypoints(tmp_path: Path) -> None:
+    out = tmp_path / "wp"
+    before = ROUTE.read_bytes()
+    assert main(["waypoints", str(ROUTE), "--method", "both", "--wind", "0,0.08", "--gusts", "3",
+                 "--figure-weights", "--monte-carlo", "2", "--quiet", "--out", str(out)]) == 0
+    assert ROUTE.read_bytes() == before
+    record = json.loads((out / "metrics.json").read_text())
+    assert [f["label"] for f in record["flights"]] == ["DWN", "WN R_WP=0.1R", "WN R_WP=0.5R", "WN R_WP=1R"]
+    for name in ("paths.png", "fig10_theta_weight.png", "monte_carlo.png", "monte_carlo.json",
+                 "trajectory_dwn.csv", "trajectory_wn_0.1R.csv", "turning_points_dwn.csv"):
+        assert (out / name).is_file(), name
+    header = (out / "trajectory_dwn.csv").read_text().splitlines()[0]
+    assert header.startswith("t,x,y,psi,command")
+    np.testing.assert_allclose(read_route(out / "turning_points_dwn.csv")[-1], read_route(ROUTE)[-1])
+
+
+def test_dwn_mission_carries_the_turning_points_and_pymavlink_reads_it(tmp_path: Path,
+                                                                         calm: list[wn.NavigationFlight]) -> None:
+    mavwp = pytest.importorskip("pymavlink.mavwp", reason="pymavlink not installed")
+    ref = vt.Georeference(35.2249, -80.8403)
+    dwn = calm[0]
+    assert dwn.method == "dwn"
+    mission = dwn.to_mission(ref, 60.0, speed=0.8)
+    path = mission.save(tmp_path / "route.waypoints")
+    loader = mavwp.MAVWPLoader()
+    assert loader.load(str(path)) == len(dwn.turning_points) + 2  # home, DO_CHANGE_SPEED, one per point
+    lat, lon = ref.to_latlon(dwn.turning_points[:, 0], dwn.turning_points[:, 1])
+    waypoints = [loader.wp(i) for i in range(loader.count()) if loader.wp(i).command == 16][1:]  # after home
+    np.testing.assert_allclose([w.x for w in waypoints], lat, atol=1e-7)
+    np.testing.assert_allclose([w.y for w in waypoints], lon, atol=1e-7)
+    assert all(w.z == 60.0 and w.param2 == 0.0 for w in waypoints)
+    # WN's mission is its waypoints, each with the acceptance radius it flew with.
+    wn_flight = calm[1]
+    wn_mission = wn_flight.to_mission(ref, 60.0)
+    radii = [item.params[1] for item in wn_mission.items]
+    assert radii == [wn_flight.waypoint_radius] * len(wn_flight.waypoints)
+
+
+def test_cli_report_and_export(tmp_path: Path) -> None:
+    out = tmp_path / "wp"
+    assert main(["waypoints", str(ROUTE), "--quiet", "--out", str(out), "--frames", "12", "--origin",
+                 "35.2249,-80.8403", "--export", str(out / "route.plan")]) == 0
+    for name in ("report.md", "report.html", "trajectory.gif", "route.plan"):
+        assert (out / name).stat().st_size > 500, name
+    assert "trajectory.gif" in (out / "report.md").read_text()
+    plan = json.loads((out / "route.plan").read_text())
+    assert plan["fileType"] == "Plan" and len(plan["mission"]["items"]) >= 5
+    assert main(["waypoints", str(ROUTE), "--quiet", "--out", str(tmp_path / "x"), "--export",
+                 str(tmp_path / "x.plan")]) == 2  # no origin to georeference the route
+
+
+def test_cli_bad_route_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    bad = tmp_path / "r.csv"
+    bad.write_text("x,y\n0,0\n")
+    assert main(["waypoints", str(bad), "--out", str(tmp_path / "o")]) == 2
+    assert "ROUTE" in capsys.readouterr().err
