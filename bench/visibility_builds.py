@@ -63,7 +63,7 @@ def child(repo: Path, build: str, data: Path, inner: int) -> None:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--build", action="append", required=True, help="NAME=BUILD_DIR (repeat)")
+    parser.add_argument("--build", action="append", default=[], help="NAME=BUILD_DIR (repeat)")
     parser.add_argument("--repo", action="append", default=[], help="NAME=REPO whose python/ goes with that build")
     parser.add_argument("--rounds", type=int, default=5)
     parser.add_argument("--inner", type=int, default=3, help="runs per sample (the best is kept)")
@@ -75,6 +75,8 @@ def main() -> int:
     if args.child:
         child(Path(args.child[0]), args.child[1], args.data, args.inner)
         return 0
+    if not args.build:
+        parser.error("give at least one --build NAME=BUILD_DIR")
     if not (args.data / "charlotte" / "uptown_charlotte.obj").exists():
         print(f"real data not found under {args.data}: skipping")
         return 0
