@@ -58,7 +58,8 @@ MODES = ("sinusoid", "loiter", "straight")
 __all__ = [
     "MODES", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowTick", "GroundVehicle", "LoiterShape", "VehicleLeg",
-    "along_track_rate", "arc_length", "baseline", "baseline_radius", "camera_sees", "coordinated_bank",
+    "along_track_rate", "arc_length", "baseline", "baseline_radius", "camera_footprint", "camera_sees",
+    "coordinated_bank",
     "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_slope", "speed_ratio",
 ]
 
@@ -222,3 +223,40 @@ def baseline(vehicle: GroundVehicle, uav: Uav, radius: Optional[float] = None, *
                                start=None if start is None else np.asarray(start, dtype=float))
     visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
     return FollowResult(run, "orbit", visible)
+
+
+def camera_footprint(camera: DownwardCamera, uav: Sequence[float], psi: float, bank: float,
+                     target: Sequence[float], points: int = 72, max_range: Optional[float] = None) -> np.ndarray:
+    """The ground footprint of :func:`camera_sees`' cone as a closed ring (points, 2) on the plane
+    z = 0: the UAV at ``uav`` (x, y, z above that plane) with heading ``psi`` and bank ``bank``
+    (left wing down positive), the gimbal rolled towards ``target`` (x, y[, z]) as far as its range
+    allows. Each vertex is where one generator of the cone meets the ground; a generator that
+    reaches the horizon or lands beyond ``max_range`` (default 4 x the height) from the nadir point is
+    cut there, so a steep bank draws a bounded (clipped) footprint. Used to draw the camera's view."""
+    x, y, z = (float(v) for v in uav[:3])
+    if not z > 0.0:
+        raise VistrackError(f"uav[2] = {z}: the camera must be above the ground (z > 0)")
+    reach = 4.0 * z if max_range is None else float(max_range)
+    up = np.array([0.0, 0.0, 1.0])
+    forward = np.array([math.cos(psi), math.sin(psi), 0.0])
+    left = np.array([-math.sin(psi), math.cos(psi), 0.0])
+    tz = float(target[2]) if len(target) > 2 else 0.0
+    r = np.array([float(target[0]) - x, float(target[1]) - y, tz - z])
+    # As camera_sees (cpp/src/follow/camera.cpp): gimbal roll gamma = bank + the target's lateral
+    # angle, within +-max_gimbal; the camera's roll from level is bank - gamma.
+    lateral = math.atan2(float(r @ left), float(-(r @ up)))
+    gamma = min(max(bank + lateral, -camera.max_gimbal), camera.max_gimbal)
+    roll = bank - gamma
+    axis = -(math.cos(roll) * up + math.sin(roll) * left)
+    across = np.cross(axis, forward)
+    half = 0.5 * camera.fov
+    angles = np.linspace(0.0, 2.0 * math.pi, points, endpoint=False)
+    rays = (math.cos(half) * axis[None, :] + math.sin(half) * (np.outer(np.cos(angles), forward)
+                                                              + np.outer(np.sin(angles), across)))
+    down = -rays[:, 2]
+    horizontal = np.hypot(rays[:, 0], rays[:, 1])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        distance = np.where(down > 0.0, z * horizontal / np.where(down > 0.0, down, 1.0), np.inf)
+    distance = np.minimum(distance, reach)
+    unit = rays[:, :2] / np.maximum(horizontal, 1e-12)[:, None]
+    return np.array([x, y])[None, :] + distance[:, None] * unit

@@ -17,6 +17,7 @@ from vistrack import VistrackError, loiter
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((REPO / "examples").glob("loiter_*aoi.yaml"))
 SQUARE = [(200.0, 200.0), (600.0, 200.0), (600.0, 600.0), (200.0, 600.0)]
+NO_MEDIA = ["--no-animation", "--no-html"]  # the report media are tested in test_planner_reports.py
 
 
 def test_public_api_shape() -> None:
@@ -225,7 +226,8 @@ def test_cli_writes_figures_metrics_and_paths(tmp_path: Path) -> None:
     from vistrack.cli import main
 
     source = EXAMPLES[0].read_bytes()
-    assert main(["loiter", str(EXAMPLES[0]), "--order", "best", "--out", str(tmp_path / "one"), "--quiet"]) == 0
+    assert main(["loiter", str(EXAMPLES[0]), "--order", "best", "--out", str(tmp_path / "one"), "--quiet",
+                 *NO_MEDIA]) == 0
     assert EXAMPLES[0].read_bytes() == source  # input untouched
     metrics = json.loads((tmp_path / "one" / "metrics.json").read_text())
     assert [m["method"] for m in metrics["methods"]] == list(loiter.METHODS)
@@ -235,7 +237,7 @@ def test_cli_writes_figures_metrics_and_paths(tmp_path: Path) -> None:
         assert lines[0].startswith("t,x,y,psi") and len(lines) > 100
     assert (tmp_path / "one" / "plans.png").stat().st_size > 10000
     assert main(["loiter", *map(str, EXAMPLES[:2]), "--method", "ldlpp", "tlpp", "--out", str(tmp_path / "two"),
-                 "--quiet"]) == 0
+                 "--quiet", *NO_MEDIA]) == 0
     assert "| TLPP |" in (tmp_path / "two" / "table.md").read_text()
     assert (tmp_path / "two" / "fig14_comparison.png").exists()
     assert main(["loiter", "--random", "6", "--seed", "1", "--out", str(tmp_path / "random"), "--quiet"]) == 0
@@ -278,7 +280,7 @@ def test_cli_wind(tmp_path: Path) -> None:
     from vistrack.cli import main
 
     assert main(["loiter", str(EXAMPLES[0]), "--method", "tlpp", "--wind", "5,0", "--out", str(tmp_path),
-                 "--quiet"]) == 0
+                 "--quiet", *NO_MEDIA]) == 0
     metrics = json.loads((tmp_path / "metrics.json").read_text())
     flown = metrics["methods"][0]["wind"][0]
     assert flown["wind"] == [5.0, 0.0] and 0.0 <= flown["loiter_covered_fraction"] <= 1.0

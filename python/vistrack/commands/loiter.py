@@ -1,10 +1,13 @@
 """``vistrack loiter``: Fly-Through, TLPP and LDLPP loiter plans over areas of interest, scored by
 camera coverage (Wilhelm, Clem, Eberhart 2017).
 
-One scenario file: plans.png (the methods side by side), metrics.json, path_<method>.csv. Several
-files: the same per scenario in sub-folders, plus table.md / table.json (ours beside Table 1),
-fig13_scenarios.png and fig14_comparison.png. --random N: N seeded random scenarios, the
-distributions per method (random.md, random.json, random_distribution.png).
+One scenario file: plans.png (the methods side by side), metrics.json, path_<method>.csv,
+report.md, trajectory.gif (plan view: AOIs, plans, every method's aircraft at once with the camera
+footprint the coverage scores, in the first --wind when given) and report.html (the same in 3D with
+a time slider, and the report). Several files: the same per scenario in sub-folders, plus
+table.md / table.json (ours beside Table 1), fig13_scenarios.png and fig14_comparison.png.
+--random N: N seeded random scenarios, the distributions per method (random.md, random.json,
+random_distribution.png).
 """
 
 from __future__ import annotations
@@ -15,7 +18,7 @@ from pathlib import Path
 from .. import VistrackError, loiter, loiter_study
 from ..progress import Progress
 from ..report import loiter as report
-from . import positive_numbers
+from . import add_report_arguments, positive_numbers, report_options
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -35,6 +38,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--wind-sweep", type=positive_numbers("--wind-sweep", "5,10"), default=[], metavar="SPEEDS",
                    help="also fly every plan in winds of these speeds (m/s) from 8 directions")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_report_arguments(p)
     p.add_argument("--out", type=Path, required=True, help="output folder (created)")
     p.set_defaults(func=run)
 
@@ -48,7 +52,9 @@ def parse_wind(text: str) -> tuple[float, float]:
 
 
 def run(args: argparse.Namespace) -> int:
-    winds = [parse_wind(w) for w in args.wind] + loiter_study.wind_directions(args.wind_sweep)
+    options = report_options(args)
+    given = [parse_wind(w) for w in args.wind]
+    winds = given + loiter_study.wind_directions(args.wind_sweep)
     if args.random is not None:
         if args.scenarios:
             raise VistrackError(f"--random = {args.random}: give scenario files or --random, not both")
@@ -66,7 +72,7 @@ def run(args: argparse.Namespace) -> int:
         for scenario in scenarios:
             runs = loiter_study.evaluate(scenario, args.method, args.order, winds)
             folder = args.out if len(scenarios) == 1 else args.out / scenario.name
-            written += report.write_scenario(folder, scenario, runs)
+            written += report.write_scenario(folder, scenario, runs, options, given[0] if given else None)
             rows += [run.record(scenario) for run in runs]
             for run in runs:
                 line = (f"{scenario.name} {run.method}: {run.plan.flight_time / 60:.2f} min, transit "
