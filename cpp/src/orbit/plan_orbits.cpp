@@ -1,23 +1,16 @@
 // The orbit plan of section IV from VV samples: VPs at h_UAV, MaxRadius, Algorithm 1.
 #include <tbb/parallel_for.h>
 
+#include "locus.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/orbit.hpp"
 
 namespace vistrack {
+namespace {
 
-VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
-                                VolumeCache& cache, const MetricFunction& metric, const SliceFunction& slice,
-                                const ProgressFunction& progress) {
-  if (!(uav.speed > poi.speed()))
-    detail::fail_field("uav.speed", uav.speed,
-                       "must exceed the POI speed " + detail::to_text(poi.speed()) + " to orbit it (Lemma 5)");
-  return plan_on_samples(poi, uav, sensor, planning, adaptive_discretization(poi, planning, cache, metric, progress),
-                         slice);
-}
-
-VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Sensor& sensor,
-                                    const Planning& planning, Discretization samples, const SliceFunction& slice) {
+VisibilityOrbitPlan plan_with_check(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
+                                    Discretization samples, const SliceFunction& slice,
+                                    const detail::CheckVolumeFunction& volume_at) {
   uav.validate();
   sensor.validate();
   planning.validate();
@@ -25,7 +18,7 @@ VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Se
   const std::size_t n = samples.times.size();
   if (n == 0 || samples.volumes.size() != n) detail::fail_field("samples", n, "need one VV per sample, at least one");
 
-  VisibilityOrbitPlan plan(OrbitPlan{poi, {}, {}, true, {}});
+  VisibilityOrbitPlan plan(OrbitPlan{poi, {}, {}, true, {}, {}});
   plan.uav = uav;
   plan.sensor = sensor;
   plan.planning = planning;
@@ -44,7 +37,33 @@ VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Se
   plan.radii = plan.orbits.radii;
   plan.feasible = plan.orbits.feasible;
   plan.infeasibility = plan.orbits.infeasibility;
+  // Beyond the paper: the locus check between the samples and the smooth R(t).
+  if (planning.locus == Locus::smooth) detail::smooth_locus(plan, slice, volume_at);
   return plan;
+}
+
+}  // namespace
+
+VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
+                                VolumeCache& cache, const MetricFunction& metric, const SliceFunction& slice,
+                                const ProgressFunction& progress) {
+  if (!(uav.speed > poi.speed()))
+    detail::fail_field("uav.speed", uav.speed,
+                       "must exceed the POI speed " + detail::to_text(poi.speed()) + " to orbit it (Lemma 5)");
+  return plan_with_check(poi, uav, sensor, planning, adaptive_discretization(poi, planning, cache, metric, progress),
+                         slice, [&cache](const Vec3& g, bool& computed) { return cache.at(g, &computed); });
+}
+
+VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Sensor& sensor,
+                                    const Planning& planning, Discretization samples, const SliceFunction& slice,
+                                    const VolumeFunction& volume_at) {
+  detail::CheckVolumeFunction check;
+  if (volume_at)
+    check = [volume_at](const Vec3& g, bool& computed) {
+      computed = true;
+      return volume_at(g);
+    };
+  return plan_with_check(poi, uav, sensor, planning, std::move(samples), slice, check);
 }
 
 VisibilityOrbitPlan plan_on_volumes(const PoiPath& poi, const Uav& uav, const Planning& planning,
