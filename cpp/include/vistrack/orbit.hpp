@@ -78,6 +78,16 @@ struct OrbitPlan {
 // centre, or 0 when no polygon contains it. Exact, not a sampled bisection (MaxRadius, sec. IV).
 double max_inscribed_radius(const std::vector<Polygon>& polygons, const Vec2& center);
 
+// MaxRadius by line of sight: the radius of the largest disk at world z = altitude centred above
+// the POI every point of which sees it (within d_max and the altitude band), probed with occlusion
+// rays along `azimuths` directions: on `rings` circles out to d_max's reach, then by bisection to
+// 1e-5 of that reach (1 mm at least) on the azimuths that can set the minimum. Along an azimuth
+// the visible points of the plane form one interval from the centre for 2.5D obstacles; blocked
+// bands narrower than reach / rings between two rings are not seen. The POI is placed on the
+// surface (VisibilityScene::poi_on_surface), as the planner's VVs place it.
+double visible_disk_radius(const VisibilityScene& scene, const Vec3& poi, double altitude, const Sensor& sensor,
+                           int azimuths = 360, int rings = 8);
+
 // Orbits of one radius along the whole POI path (the paper's constant-radius baselines).
 OrbitPlan constant_radius_plan(const PoiPath& poi, double radius, const Uav& uav);
 
@@ -149,11 +159,13 @@ struct Ceiling {
 // The largest smooth R(t) under a ceiling: of the C1 quadratic splines on uniform knots over
 // [breaks.front(), breaks.back()] that obey `limits` and stay under the ceiling, the one with the
 // largest integral of R, by a log-barrier interior point method on the spline's control points (a
-// banded linear program), re-solved with each segment's R_lo raised to the previous solution (so
-// the d2R/dt2 bound of larger radii is used). knot_spacing <= 0 picks one from the d2R/dt2 bound.
+// banded linear program, solved to 1 cm of the optimal mean R), re-solved passes - 1 times with
+// each segment's R_lo raised to the previous solution (so the d2R/dt2 bound of larger radii is
+// used). knot_spacing <= 0 picks one from the d2R/dt2 bound.
 // A ceiling under r_min (1 + v_g/v)^2 gives a profile that the caller must report infeasible (R
 // there is below Lemma 6's bound).
-RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing = 0.0);
+RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing = 0.0,
+                            int passes = 2);
 // Why a smooth profile breaks `limits` (|dR/dt| at a knot, or |d2R/dt2| on a segment against the
 // bound at the segment's smallest R), or "" when it keeps them all.
 std::string smooth_radius_violation(const RadiusProfile& profile, const SmoothRadiusLimits& limits);
@@ -232,11 +244,15 @@ struct VisibilityOrbitPlan : OrbitPlan {
 // VP(s) of a VV at world altitude z (h_UAV: the flight plane).
 using SliceFunction = std::function<std::vector<Polygon>(const VisibilityVolume&, double altitude)>;
 
-// Section IV end to end with the given VV, metric and slice functions (the locus check, for
-// Locus::smooth, takes its VVs from the same cache).
+// MaxRadius at a POI position for the locus check. Called from several threads.
+using MaxRadiusFunction = std::function<double(const Vec3& poi)>;
+
+// Section IV end to end with the given VV, metric and slice functions. The locus check (for
+// Locus::smooth) measures MaxRadius between the samples with check_max_radius (at the samples too,
+// keeping the smaller of it and the VP's), or without one through VVs from the same cache.
 VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
                                 VolumeCache& cache, const MetricFunction& metric, const SliceFunction& slice,
-                                const ProgressFunction& progress = {});
+                                const ProgressFunction& progress = {}, const MaxRadiusFunction& check_max_radius = {});
 // The plan on given samples (no refinement): VPs by `slice`, MaxRadius, Algorithm 1, and for
 // Locus::smooth the locus check and the smooth R(t). The check computes MaxRadius between the
 // samples with `volume_at` (VVs at POI positions, called from several threads); without it, only

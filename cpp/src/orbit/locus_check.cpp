@@ -19,13 +19,15 @@ namespace vistrack::detail {
 namespace {
 
 // Between two check points MaxRadius is assumed to change by at most L m per m of POI travel, L
-// the largest slope of this and the neighbouring intervals but at least kMinSlope: it then stays
-// above the straight line between them less (L^2 - slope^2) ds / (2 L), the deepest such a profile
-// can dip below it. (Off cliffs MaxRadius moves about 0.4 m per m on Charlotte at 300 m, 0.1 m per
+// kSlopeSafety times the largest slope of this and the neighbouring intervals but at least
+// kMinSlope: it then stays above the straight line between them less (L^2 - slope^2) ds / (2 L),
+// the deepest such a profile can dip below it. (The safety factor: a stretch whose own slope is the
+// largest may still bend; on paper_small a 10 m interval sagged 1.7 m below its chord.) (Off cliffs MaxRadius moves about 0.4 m per m on Charlotte at 300 m, 0.1 m per
 // m on the campus.) Where it changes by more than kJump between two check points and at least
 // kKink times as steeply as on both neighbouring intervals (a cliff, located no better than the
 // interval), the smaller value holds on the whole interval instead.
 constexpr double kMinSlope = 0.1;
+constexpr double kSlopeSafety = 2.0;
 constexpr double kJump = 1.0;
 constexpr double kKink = 2.0;
 // An interval binds when R(t) comes within kActive of its ceiling (m); it is halved when that
@@ -75,7 +77,7 @@ double max_excess(const RadiusProfile& profile, double a, double b, double start
 
 }  // namespace
 
-void smooth_locus(VisibilityOrbitPlan& plan, const SliceFunction& slice, const CheckVolumeFunction& volume_at) {
+void smooth_locus(VisibilityOrbitPlan& plan, const CheckProbe& probe) {
   const PoiPath& poi = plan.poi;
   const Planning& planning = plan.planning;
   const Uav& uav = plan.uav;
@@ -85,24 +87,32 @@ void smooth_locus(VisibilityOrbitPlan& plan, const SliceFunction& slice, const C
   LocusCheck& check = plan.check;
   check = LocusCheck{};
 
+  // Without a probe between the samples, or when a sample already fails, the samples alone bound R.
+  const bool refine = static_cast<bool>(probe.max_radius) && plan.orbits.feasible && n_samples > 1;
+  std::atomic<std::size_t> computed{0};
+  auto probe_at = [&](const std::vector<double>& arcs) {
+    std::vector<double> out(arcs.size());
+    tbb::parallel_for(std::size_t{0}, arcs.size(), [&](std::size_t i) {
+      bool was_computed = false;
+      out[i] = probe.max_radius(poi.position(arcs[i] / v_g), was_computed);
+      if (was_computed) ++computed;
+    });
+    return out;
+  };
   std::vector<CheckPoint> points;
   for (std::size_t k = 0; k < n_samples; ++k) points.push_back({samples.times[k] * v_g, plan.max_radii[k]});
-  std::atomic<std::size_t> computed{0};
-  // MaxRadius at new arc lengths, in parallel, merged into `points` (kept sorted).
+  if (refine && probe.at_samples) {
+    std::vector<double> arcs;
+    for (const CheckPoint& p : points) arcs.push_back(p.s);
+    const std::vector<double> probed = probe_at(arcs);
+    for (std::size_t k = 0; k < n_samples; ++k) points[k].max_radius = std::min(points[k].max_radius, probed[k]);
+  }
+  // MaxRadius at new arc lengths, merged into `points` (kept sorted).
   auto measure = [&](const std::vector<double>& arcs) {
-    std::vector<CheckPoint> fresh(arcs.size());
-    tbb::parallel_for(std::size_t{0}, arcs.size(), [&](std::size_t i) {
-      const Vec3 g = poi.position(arcs[i] / v_g);
-      bool was_computed = false;
-      const VolumePtr volume = volume_at(g, was_computed);
-      if (was_computed) ++computed;
-      fresh[i] = {arcs[i], max_inscribed_radius(slice(*volume, uav.altitude), g.head<2>())};
-    });
-    points.insert(points.end(), fresh.begin(), fresh.end());
+    const std::vector<double> probed = probe_at(arcs);
+    for (std::size_t i = 0; i < arcs.size(); ++i) points.push_back({arcs[i], probed[i]});
     std::sort(points.begin(), points.end(), [](const CheckPoint& a, const CheckPoint& b) { return a.s < b.s; });
   };
-  // Without VVs between the samples, or when a sample already fails, the samples alone bound R.
-  const bool refine = static_cast<bool>(volume_at) && plan.orbits.feasible && n_samples > 1;
   if (refine) {
     std::vector<double> grid;
     for (double s : grid_arc_lengths(poi, planning.check_spacing)) {
@@ -136,7 +146,7 @@ void smooth_locus(VisibilityOrbitPlan& plan, const SliceFunction& slice, const C
       const double m_a = points[j].max_radius, m_b = points[j + 1].max_radius;
       const double ds = points[j + 1].s - points[j].s;
       const double left = j > 0 ? slope[j - 1] : 0.0, right = j + 2 < n ? slope[j + 1] : 0.0;
-      const double bound = std::max({kMinSlope, slope[j], left, right});
+      const double bound = std::max(kMinSlope, kSlopeSafety * std::max({slope[j], left, right}));
       slopes[j] = bound;
       if (std::abs(m_b - m_a) > kJump && slope[j] >= kKink * std::max({kMinSlope, left, right})) {
         const double low = std::min(m_a, m_b) - planning.tracking_margin;
@@ -151,7 +161,8 @@ void smooth_locus(VisibilityOrbitPlan& plan, const SliceFunction& slice, const C
       }
     }
     const auto lp0 = std::chrono::steady_clock::now();
-    profile = smooth_radius(ceiling, limits);
+    // One pass while refining; the last round adds the pass with the larger d2R/dt2 budgets.
+    profile = smooth_radius(ceiling, limits, 0.0, 1);
     if (std::getenv("VISTRACK_DEBUG_LOCUS"))
       std::fprintf(stderr, "round %d: %zu points, LP %.3f s\n", round, points.size(),
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - lp0).count());
@@ -171,6 +182,7 @@ void smooth_locus(VisibilityOrbitPlan& plan, const SliceFunction& slice, const C
       std::fprintf(stderr, "   %zu VVs %.3f s\n", middles.size(),
                    std::chrono::duration<double>(std::chrono::steady_clock::now() - m0).count());
   }
+  profile = smooth_radius(ceiling, limits, 0.0, 2);
 
   // The check's record.
   const RadiusProfile paper{samples.times, plan.orbits.radii, {}};

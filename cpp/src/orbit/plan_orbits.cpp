@@ -8,9 +8,20 @@
 namespace vistrack {
 namespace {
 
+// The locus check's MaxRadius from VVs: the VP of each VV at h_UAV, as at the samples.
+detail::CheckProbe volume_probe(std::function<VolumePtr(const Vec3&, bool&)> volume_at, const SliceFunction& slice,
+                                double altitude) {
+  detail::CheckProbe probe;
+  probe.max_radius = [volume_at = std::move(volume_at), slice, altitude](const Vec3& g, bool& computed) {
+    const VolumePtr volume = volume_at(g, computed);
+    return max_inscribed_radius(slice(*volume, altitude), g.head<2>());
+  };
+  return probe;
+}
+
 VisibilityOrbitPlan plan_with_check(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
                                     Discretization samples, const SliceFunction& slice,
-                                    const detail::CheckVolumeFunction& volume_at) {
+                                    const detail::CheckProbe& probe) {
   uav.validate();
   sensor.validate();
   planning.validate();
@@ -38,7 +49,7 @@ VisibilityOrbitPlan plan_with_check(const PoiPath& poi, const Uav& uav, const Se
   plan.feasible = plan.orbits.feasible;
   plan.infeasibility = plan.orbits.infeasibility;
   // Beyond the paper: the locus check between the samples and the smooth R(t).
-  if (planning.locus == Locus::smooth) detail::smooth_locus(plan, slice, volume_at);
+  if (planning.locus == Locus::smooth) detail::smooth_locus(plan, probe);
   return plan;
 }
 
@@ -46,24 +57,34 @@ VisibilityOrbitPlan plan_with_check(const PoiPath& poi, const Uav& uav, const Se
 
 VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
                                 VolumeCache& cache, const MetricFunction& metric, const SliceFunction& slice,
-                                const ProgressFunction& progress) {
+                                const ProgressFunction& progress, const MaxRadiusFunction& check_max_radius) {
   if (!(uav.speed > poi.speed()))
     detail::fail_field("uav.speed", uav.speed,
                        "must exceed the POI speed " + detail::to_text(poi.speed()) + " to orbit it (Lemma 5)");
+  detail::CheckProbe probe;
+  if (check_max_radius) {
+    probe.max_radius = [check_max_radius](const Vec3& g, bool&) { return check_max_radius(g); };
+    probe.at_samples = true;
+  } else {
+    probe = volume_probe([&cache](const Vec3& g, bool& computed) { return cache.at(g, &computed); }, slice,
+                         uav.altitude);
+  }
   return plan_with_check(poi, uav, sensor, planning, adaptive_discretization(poi, planning, cache, metric, progress),
-                         slice, [&cache](const Vec3& g, bool& computed) { return cache.at(g, &computed); });
+                         slice, probe);
 }
 
 VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Sensor& sensor,
                                     const Planning& planning, Discretization samples, const SliceFunction& slice,
                                     const VolumeFunction& volume_at) {
-  detail::CheckVolumeFunction check;
+  detail::CheckProbe probe;
   if (volume_at)
-    check = [volume_at](const Vec3& g, bool& computed) {
-      computed = true;
-      return volume_at(g);
-    };
-  return plan_with_check(poi, uav, sensor, planning, std::move(samples), slice, check);
+    probe = volume_probe(
+        [volume_at](const Vec3& g, bool& computed) {
+          computed = true;
+          return volume_at(g);
+        },
+        slice, uav.altitude);
+  return plan_with_check(poi, uav, sensor, planning, std::move(samples), slice, probe);
 }
 
 VisibilityOrbitPlan plan_on_volumes(const PoiPath& poi, const Uav& uav, const Planning& planning,

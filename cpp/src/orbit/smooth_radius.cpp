@@ -202,7 +202,7 @@ std::vector<Chord> rate_chords(const SmoothRadiusLimits& limits) {
     const double radial = limits.poi_speed + x;
     return std::sqrt(std::max(0.0, v * v - radial * radial));
   };
-  const std::array<double, 4> nodes{0.0, 0.6, 0.9, 1.0};
+  const std::array<double, 3> nodes{0.0, 0.75, 1.0};
   std::vector<Chord> chords;
   for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
     const double x0 = nodes[k] * limits.max_rate, x1 = nodes[k + 1] * limits.max_rate;
@@ -214,7 +214,8 @@ std::vector<Chord> rate_chords(const SmoothRadiusLimits& limits) {
 
 }  // namespace
 
-RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing) {
+RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing, int passes) {
+  if (passes < 1) detail::fail_field("passes", passes, "must be at least 1");
   limits.validate();
   ceiling.validate();
   require_finite(knot_spacing, "knot_spacing");
@@ -229,8 +230,8 @@ RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& li
   const double lemma6_radius = limits.min_turn_radius * (1.0 + limits.poi_speed / limits.uav_speed) *
                               (1.0 + limits.poi_speed / limits.uav_speed);
   const double a_top = limits.max_acceleration(std::max(c_max, 1.05 * lemma6_radius), 0.0);
-  // Knots: fine enough that switching d2R/dt2 only at knots costs about 3 cm (A h^2 / 8).
-  double h = knot_spacing > 0.0 ? knot_spacing : (a_top > 0.0 ? std::sqrt(8.0 * 0.03 / a_top) : t1 - t0);
+  // Knots: fine enough that switching d2R/dt2 only at knots costs about 5 cm (A h^2 / 8).
+  double h = knot_spacing > 0.0 ? knot_spacing : (a_top > 0.0 ? std::sqrt(8.0 * 0.05 / a_top) : t1 - t0);
   const auto n = static_cast<std::size_t>(std::clamp(std::ceil((t1 - t0) / h), 1.0, 4000.0));
   h = (t1 - t0) / static_cast<double>(n);
   const std::size_t controls = n + 2;  // c_0 .. c_n+1; knot i = t0 + i h, i = 0 .. n
@@ -271,7 +272,7 @@ RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& li
   std::vector<double> c(controls, c_min - bulge - delta);
   std::vector<double> floor(n, c_min - bulge - 2.0 * delta);  // R at both ends of interval i stays above
   double t_barrier = static_cast<double>(fixed.size()) / ((t1 - t0) * scale);
-  for (int pass = 0; pass < 2; ++pass) {
+  for (int pass = 0; pass < passes; ++pass) {
     std::vector<Row> rows = fixed;
     for (std::size_t i = 0; i < n; ++i) {
       // d2R/dt2 on interval i and dR/dt at both its knots, on c_i, c_i+1, c_i+2.
@@ -294,9 +295,10 @@ RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& li
       rows.push_back(Row{i, {-0.5, -0.5, 0.0}, -floor[i]});  // R(knot i) >= floor
       rows.push_back(Row{i, {0.0, -0.5, -0.5}, -floor[i]});  // R(knot i+1) >= floor
     }
-    const int steps = barrier_lp(rows, w, c, t_barrier, 1e-3 * (t1 - t0));
+    // Duality gap: the mean of R within 1 cm of the optimum.
+    const int steps = barrier_lp(rows, w, c, t_barrier, 1e-2 * (t1 - t0));
     if (std::getenv("VISTRACK_DEBUG_LOCUS")) std::fprintf(stderr, "  pass %d: %zu rows, %zu controls, %d Newton steps\n", pass, rows.size(), controls, steps);
-    t_barrier = static_cast<double>(rows.size()) / (1e-1 * (t1 - t0));  // warm start near the optimum
+    t_barrier = static_cast<double>(rows.size()) / (1.0 * (t1 - t0));  // warm start near the optimum
     // Raise each interval's floor to what R reached, so the next pass may use the larger budget.
     for (std::size_t i = 0; i < n; ++i)
       floor[i] = std::max(floor[i], std::min(0.5 * (c[i] + c[i + 1]), 0.5 * (c[i + 1] + c[i + 2])) - delta);
