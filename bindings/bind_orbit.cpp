@@ -169,14 +169,29 @@ void bind_orbit(py::module_& m) {
            py::arg("t"), "The ceiling at every element of t.");
   m.def(
       "smooth_radius",
-      [](const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing) {
+      [](const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing, int passes) {
         py::gil_scoped_release release;
-        return smooth_radius(ceiling, limits, knot_spacing);
+        return smooth_radius(ceiling, limits, knot_spacing, passes);
       },
-      py::arg("ceiling"), py::arg("limits"), py::arg("knot_spacing") = 0.0,
+      py::arg("ceiling"), py::arg("limits"), py::arg("knot_spacing") = 0.0, py::arg("passes") = 2,
       "The C1 quadratic spline on uniform knots (knot_spacing; <= 0: picked from the d2R/dt2 bound) with the "
       "largest integral of R(t) under the ceiling that obeys `limits`: a banded linear program solved by a "
-      "log-barrier interior point method. A RadiusProfile.");
+      "log-barrier interior point method, re-solved passes - 1 times with the d2R/dt2 budget of the radii "
+      "reached. A RadiusProfile.");
+  m.def("smooth_radius_violation", &smooth_radius_violation, py::arg("profile"), py::arg("limits"),
+        "Why a smooth RadiusProfile breaks `limits` (|dR/dt| at a knot, |d2R/dt2| on a segment against the bound at "
+        "its smallest R), or '' when it keeps them all.");
+  m.def(
+      "visible_disk_radius",
+      [](const VisibilityScene& scene, const Vec3& poi, double altitude, const Sensor& sensor, int azimuths, int rings) {
+        py::gil_scoped_release release;
+        return visible_disk_radius(scene, poi, altitude, sensor, azimuths, rings);
+      },
+      py::arg("scene"), py::arg("poi"), py::arg("altitude"), py::arg("sensor"), py::arg("azimuths") = 360,
+      py::arg("rings") = 8,
+      "MaxRadius by line of sight (the locus check's probe): the largest disk at world z = altitude centred above "
+      "the POI (placed on the surface) every point of which sees it, by occlusion rays along `azimuths` directions "
+      "on `rings` circles and then by bisection.");
 
   py::class_<LocusCheck>(m, "LocusCheck",
                          "The locus check of a smooth plan: MaxRadius along the whole POI path, the ceilings R(t) obeys "

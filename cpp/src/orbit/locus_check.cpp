@@ -1,12 +1,10 @@
 // The smooth locus (beyond the paper). The paper assumes the POI stays visible between the sampled
 // orbits (sections IV.C, VI); on real maps MaxRadius dips between samples, so the check measures
-// MaxRadius along the whole path (through the planner's VV cache and the same slicer), bounds it
-// between check points, refines where R(t) touches the bound, and puts the smooth R(t) under it.
+// MaxRadius along the whole path (by line of sight, visible_disk_radius, or through VVs and the
+// slicer), bounds it between check points, refines where R(t) touches the bound, and puts the
+// smooth R(t) under it.
 #include <algorithm>
 #include <atomic>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <sstream>
 
@@ -160,12 +158,8 @@ void smooth_locus(VisibilityOrbitPlan& plan, const CheckProbe& probe) {
         gains[j] = dip;
       }
     }
-    const auto lp0 = std::chrono::steady_clock::now();
     // One pass while refining; the last round adds the pass with the larger d2R/dt2 budgets.
     profile = smooth_radius(ceiling, limits, 0.0, 1);
-    if (std::getenv("VISTRACK_DEBUG_LOCUS"))
-      std::fprintf(stderr, "round %d: %zu points, LP %.3f s\n", round, points.size(),
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - lp0).count());
     check.rounds = round;
     if (!refine || round >= kMaxRounds) break;
     std::vector<double> middles;
@@ -176,11 +170,7 @@ void smooth_locus(VisibilityOrbitPlan& plan, const CheckProbe& probe) {
         middles.push_back(0.5 * (points[j].s + points[j + 1].s));
     }
     if (middles.empty()) break;
-    const auto m0 = std::chrono::steady_clock::now();
     measure(middles);
-    if (std::getenv("VISTRACK_DEBUG_LOCUS"))
-      std::fprintf(stderr, "   %zu VVs %.3f s\n", middles.size(),
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - m0).count());
   }
   profile = smooth_radius(ceiling, limits, 0.0, 2);
 

@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <vector>
 
@@ -135,15 +133,13 @@ double slack(const Row& row, const std::vector<double>& c) {
 // centring minimises -t w.c - sum log(slack) by Newton steps with a backtracking (Armijo) line
 // search that keeps every slack positive, and t grows until the duality gap rows / t is below
 // gap. c is updated in place and stays strictly feasible.
-int barrier_lp(const std::vector<Row>& rows, const std::vector<double>& w, std::vector<double>& c, double t,
+void barrier_lp(const std::vector<Row>& rows, const std::vector<double>& w, std::vector<double>& c, double t,
                 double gap) {
-  int steps = 0;
   const std::size_t n = c.size();
   const double m = static_cast<double>(rows.size());
   std::vector<double> grad(n), step(n), trial(n), slacks(rows.size()), moves(rows.size());
   for (;;) {
     for (int newton = 0; newton < 100; ++newton) {
-      ++steps;
       Band hessian(n);
       for (std::size_t i = 0; i < n; ++i) grad[i] = -t * w[i];
       for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -186,7 +182,7 @@ int barrier_lp(const std::vector<Row>& rows, const std::vector<double>& w, std::
       }
       if (!accepted) break;
     }
-    if (m / t <= gap) return steps;
+    if (m / t <= gap) return;
     t *= 20.0;
   }
 }
@@ -296,8 +292,7 @@ RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& li
       rows.push_back(Row{i, {0.0, -0.5, -0.5}, -floor[i]});  // R(knot i+1) >= floor
     }
     // Duality gap: the mean of R within 1 cm of the optimum.
-    const int steps = barrier_lp(rows, w, c, t_barrier, 1e-2 * (t1 - t0));
-    if (std::getenv("VISTRACK_DEBUG_LOCUS")) std::fprintf(stderr, "  pass %d: %zu rows, %zu controls, %d Newton steps\n", pass, rows.size(), controls, steps);
+    barrier_lp(rows, w, c, t_barrier, 1e-2 * (t1 - t0));
     t_barrier = static_cast<double>(rows.size()) / (1.0 * (t1 - t0));  // warm start near the optimum
     // Raise each interval's floor to what R reached, so the next pass may use the larger budget.
     for (std::size_t i = 0; i < n; ++i)

@@ -45,13 +45,10 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--max-depth", type=int, default=planning.max_depth, help="most halvings of one interval")
     p.add_argument("--rate-margin", type=float, default=planning.rate_margin,
                    help="keep |dR/dt| <= (1 - margin)(v - v_g) in Algorithm 1 (default 0: Lemma 5's limit)")
-    p.add_argument("--locus", default=planning.locus, choices=["smooth", "paper"],
-                   help="smooth: R(t) checked against MaxRadius along the whole path, C1 (default); paper: Algorithm 1's "
-                   "piecewise-linear R(t)")
+    p.add_argument("--locus", default=planning.locus, choices=["smooth", "paper"], help="smooth (default): checked "
+                   "against MaxRadius along the whole path, C1; paper: Algorithm 1's piecewise-linear R(t)")
     p.add_argument("--tracking-margin", type=float, default=planning.tracking_margin,
                    help="smooth locus: keep R(t) this far inside MaxRadius, m")
-    p.add_argument("--check-spacing", type=float, default=planning.check_spacing,
-                   help="smooth locus: check MaxRadius every this many m of POI travel, then refine")
     p.add_argument("--footprints", help="GeoJSON footprints drawn under the orbits (default: the GeoJSON map, or "
                    "buildings.geojson beside a mesh --map)")
     p.add_argument("--figure-metric", action="store_true", help="also draw Figure 4 (metric along the path)")
@@ -80,9 +77,7 @@ def run(args: argparse.Namespace) -> int:
     uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude)
     planning = _core.Planning(spacing=args.spacing, cutoff=args.cutoff, resolution_deg=args.resolution,
                               min_spacing=args.min_spacing, max_depth=args.max_depth, rate_margin=args.rate_margin,
-                              locus=args.locus, tracking_margin=args.tracking_margin,
-                              check_spacing=args.check_spacing,
-                              check_min_spacing=min(planning.check_min_spacing, args.check_spacing))
+                              locus=args.locus, tracking_margin=args.tracking_margin)
     start = time.perf_counter()
     metric = None
     if args.from_volumes:
