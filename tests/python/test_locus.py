@@ -245,7 +245,7 @@ def test_scenario_locus_keys(tmp_path: Path) -> None:
     assert (p.locus, p.tracking_margin, p.check_spacing, p.check_min_spacing, p.turn_share) == ("paper", 0.5, 4.0, 0.5, 0.3)
     assert Scenario.from_dict(scenario.to_dict()).planning.locus == "paper"
     assert Scenario.from_dict({}).planning.locus == "smooth"
-    for bad, message in [({"locus": "linear"}, 'planning.locus = linear: "smooth"'),
+    for bad, message in [({"locus": "linear"}, "planning.locus = 'linear': \"smooth\""),
                          ({"tracking_margin": -1}, "planning.tracking_margin = -1"),
                          ({"turn_share": 1.0}, "planning.turn_share = 1"),
                          ({"check_spacing": 2.0, "check_min_spacing": 3.0}, "planning.check_min_spacing = 3")]:

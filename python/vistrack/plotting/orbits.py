@@ -93,8 +93,12 @@ def figure_radius(plan: VisibilityOrbitPlan, path: str | Path) -> Path:
     if smooth and len(plan.check.times):
         c = plan.check
         ax.plot(c.times, c.max_radii, "-", lw=0.8, color="tab:gray", label="MaxRadius along the path (locus check)")
-        ax.stairs(c.ceilings, c.times, color="tab:orange", lw=0.8,
-                  label=f"ceiling: lower bound of MaxRadius - {plan.planning.tracking_margin:g} m")
+        breaks = np.asarray(c.ceiling.breaks)
+        nan = np.full(len(breaks) - 1, np.nan)
+        x = np.column_stack([breaks[:-1], breaks[1:], nan]).ravel()
+        y = np.column_stack([c.ceiling.starts, c.ceiling.ends, nan]).ravel()
+        ax.plot(x, y, color="tab:orange", lw=0.8,
+                label=f"ceiling: lower bound of MaxRadius - {plan.planning.tracking_margin:g} m")
     ax.plot(t, plan.max_radii, "o", ms=3, color="tab:gray", label="MaxRadius at the samples")
     if smooth:
         ax.plot(t, plan.orbits.radii, "--", lw=1, color="tab:green", label="Algorithm 1 (the paper's locus)")
