@@ -59,5 +59,8 @@ void bind_ode(pybind11::module_& m);
 void bind_simulate(pybind11::module_& m);
 void bind_flight(pybind11::module_& m);  // vistrack._core.flight, bindings/bind_flight.cpp
 void bind_waypoint_nav(pybind11::module_& m);  // vistrack._core.waypoint_nav
+void bind_path_following(pybind11::module_& m);  // flight.PathFollower, bindings/bind_path_following.cpp
+void bind_loiter(pybind11::module_& m);  // loiter planners and coverage, bindings/bind_loiter.cpp
+void bind_follow(pybind11::module_& m);  // vistrack._core.follow (issue 15)
 
 }  // namespace vistrack::bindings

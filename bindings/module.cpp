@@ -23,4 +23,7 @@ PYBIND11_MODULE(_core, m) {
   vistrack::bindings::bind_simulate(m);
   vistrack::bindings::bind_flight(m);
   vistrack::bindings::bind_waypoint_nav(m);
+  vistrack::bindings::bind_path_following(m);
+  vistrack::bindings::bind_loiter(m);
+  vistrack::bindings::bind_follow(m);
 }

@@ -11,7 +11,7 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError
 from importlib.metadata import version as _version
 
-from . import _core, dubins, flight, mission, waypoint_nav
+from . import _core, dubins, flight, follow, loiter, mission, sweep, waypoint_nav
 
 # By area: geometry and parameters; environment; visibility and volumes; orbits (section IV);
 # guidance, integrator and closed loop (sections V-VI).
@@ -142,10 +142,12 @@ __all__ = [
     "dubins",
     "epsilon_max",
     "flight",
+    "follow",
     "grid_xor_volume",
     "lambda_max",
     "lemma6_curvature_bound",
     "lemma7_min_gain",
+    "loiter",
     "lyapunov_term",
     "max_inscribed_radius",
     "max_orbit_curvature",
@@ -176,6 +178,7 @@ __all__ = [
     "smooth_radius_violation",
     "solve_ode",
     "steering",
+    "sweep",
     "tune_turn_rate",
     "vector_field",
     "visible_disk_radius",

@@ -14,7 +14,9 @@ from typing import Sequence
 from . import VistrackError, __version__
 
 # Order shown in --help.
-COMMANDS = ["demo", "run", "volumes", "orbits", "simulate", "tune", "intercept", "waypoints"]
+COMMANDS = [
+    "demo", "run", "volumes", "orbits", "simulate", "tune", "intercept", "waypoints", "loiter", "follow", "sweep",
+]
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -38,6 +38,7 @@ WindField = _flight.WindField
 LineFeedback = _flight.LineFeedback
 FlightGuidance = _flight.FlightGuidance
 WaypointFollower = _flight.WaypointFollower
+PathFollower = _flight.PathFollower  # lines and arcs (flight.hpp, Path following; the loiter plans)
 FlightTrajectory = _flight.FlightTrajectory
 dryden_low_altitude = _flight.dryden_low_altitude
 fly = _flight.fly
@@ -47,6 +48,7 @@ __all__ = [
     "FlightTrajectory",
     "Gusts",
     "LineFeedback",
+    "PathFollower",
     "WaypointFollower",
     "Wind",
     "WindField",

@@ -6,10 +6,16 @@
 - VV files: the binary ``vv-*.bin`` of the VV cache (:func:`volume_files`)
 - closed-loop trajectories: CSV (:func:`write_trajectory`)
 - JSON results (:func:`write_json`) and YAML mappings (:func:`read_yaml_mapping`)
+- loiter scenarios: YAML (:func:`read_loiter_scenario`); loiter plans sampled as CSV
+  (:func:`write_loiter_samples_csv`)
 - GeoJSON in WGS84 of trajectories, orbit plans and missions (:func:`trajectory_geojson`,
   :func:`orbit_plan_geojson`, :func:`mission_geojson`, :func:`write_geojson`)
 - waypoint routes: CSV x,y (:func:`read_route`, :func:`write_route`); flown trajectories: CSV
   (:func:`write_flight`)
+- sweeps: road files (GeoJSON LineStrings, :func:`read_roads`) and the results table
+  (``results.csv`` + ``results.parquet``, :func:`write_results_table`, :func:`read_results_table`)
+- follow: vehicle tracks ``t,x,y`` (:func:`read_vehicle_track`), road paths
+  (:func:`read_road_path`), follow trajectories as CSV (:func:`write_follow_trajectory`)
 
 Every error names the option or key and the file: a missing or unreadable file, a file that is
 not text, or text that is not the expected format raises VistrackError.
@@ -24,17 +30,46 @@ from typing import TYPE_CHECKING, Any, Optional, Union
 
 import numpy as np
 
-from ._core import Environment, OrbitPlan, SimulationResult, VisibilityOrbitPlan, VistrackError
+from ._core import Environment, OrbitPlan, RoadNetwork, SimulationResult, VisibilityOrbitPlan, VistrackError
 
 if TYPE_CHECKING:
     from ._core.flight import FlightTrajectory
+    from .loiter import Coverage as LoiterCoverage
+    from .loiter import Plan as LoiterPlan
+    from .loiter import Scenario as LoiterScenario
     from .mission import Georeference, Mission
 
 __all__ = [
-    "GEOJSON_SUFFIXES", "feature_collection", "footprint_environment", "line_feature", "load_environment",
-    "lon_lat", "mission_geojson", "orbit_plan_geojson", "point_feature", "read_plan", "read_route", "read_text",
-    "read_yaml_mapping", "trajectory_geojson", "volume_files", "write_flight", "write_geojson", "write_json",
-    "write_plan", "write_route", "write_trajectory",
+    "GEOJSON_SUFFIXES",
+    "append_json_line",
+    "feature_collection",
+    "footprint_environment",
+    "line_feature",
+    "load_environment",
+    "lon_lat",
+    "mission_geojson",
+    "orbit_plan_geojson",
+    "point_feature",
+    "read_loiter_scenario",
+    "read_plan",
+    "read_results_table",
+    "read_road_path",
+    "read_roads",
+    "read_route",
+    "read_text",
+    "read_vehicle_track",
+    "read_yaml_mapping",
+    "trajectory_geojson",
+    "volume_files",
+    "write_flight",
+    "write_follow_trajectory",
+    "write_geojson",
+    "write_json",
+    "write_loiter_samples_csv",
+    "write_plan",
+    "write_results_table",
+    "write_route",
+    "write_trajectory",
 ]
 
 GEOJSON_SUFFIXES = (".geojson", ".json")
@@ -295,4 +330,267 @@ def write_flight(trajectory: "FlightTrajectory", path: str | Path) -> Path:
     for row in zip(*columns):
         lines.append(",".join(repr(v) for v in row) + "\n")
     file.write_text("".join(lines), encoding="utf-8")
+    return file
+
+
+# --- Sweeps (vistrack.sweep): road files, the results table ---------------------------------------
+
+ROAD_MERGE_DISTANCE = 0.5  # m: vertices of different LineStrings this close are one road node
+
+
+def read_roads(path: str | Path, key: str = "routes.roads") -> RoadNetwork:
+    """A road network from a GeoJSON file of LineString / MultiLineString features in local
+    (east, north) metres: every vertex is a node, consecutive vertices are joined by an edge, and
+    vertices closer than ``ROAD_MERGE_DISTANCE`` (lines meeting at a junction) are one node. Roads
+    meet only where they share a vertex, as in OpenStreetMap ways."""
+    import numpy as np
+    from scipy.spatial import cKDTree
+
+    text = read_text(path, key)
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as error:
+        raise VistrackError(f"{key} = {path}: not JSON ({error.msg} at line {error.lineno})") from None
+    features = data.get("features") if isinstance(data, dict) else None
+    if not isinstance(features, list):
+        raise VistrackError(f"{key} = {path}: not a GeoJSON FeatureCollection (no 'features' list)")
+    lines: list[list[tuple[float, float]]] = []
+    for i, feature in enumerate(features):
+        geometry = feature.get("geometry") if isinstance(feature, dict) else None
+        kind = geometry.get("type") if isinstance(geometry, dict) else None
+        coordinates = geometry.get("coordinates") if isinstance(geometry, dict) else None
+        if kind not in ("LineString", "MultiLineString") or not isinstance(coordinates, list):
+            raise VistrackError(f"{key} = {path}: features[{i}] is {kind!r}, not a LineString or MultiLineString")
+        for part in [coordinates] if kind == "LineString" else coordinates:
+            try:
+                line = [(float(p[0]), float(p[1])) for p in part]
+            except (TypeError, ValueError, IndexError):
+                raise VistrackError(f"{key} = {path}: features[{i}] has a position that is not [x, y]") from None
+            if len(line) < 2 or not np.isfinite(line).all():
+                raise VistrackError(f"{key} = {path}: features[{i}] needs at least two finite positions")
+            lines.append(line)
+    if not lines:
+        raise VistrackError(f"{key} = {path}: no roads in the file")
+    vertices = np.array([p for line in lines for p in line])
+    # Union-find over vertices closer than the merge distance; a node is each group's first vertex.
+    parent = list(range(len(vertices)))
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for a, b in sorted(cKDTree(vertices).query_pairs(ROAD_MERGE_DISTANCE)):
+        ra, rb = root(a), root(b)
+        parent[max(ra, rb)] = min(ra, rb)
+    node_of: dict[int, int] = {}
+    for i in range(len(vertices)):
+        node_of.setdefault(root(i), len(node_of))
+    nodes = np.array([vertices[r] for r in sorted(node_of, key=node_of.__getitem__)])
+    edges: set[tuple[int, int]] = set()
+    first = 0
+    for line in lines:
+        ids = [node_of[root(first + k)] for k in range(len(line))]
+        first += len(line)
+        edges.update((min(a, b), max(a, b)) for a, b in zip(ids, ids[1:]) if a != b)
+    return RoadNetwork(nodes, np.array(sorted(edges), dtype=np.int64).reshape(-1, 2))
+
+
+def _table_column(values: list[Any]) -> tuple[str, list[Any]]:
+    """A column's type ("bool", "int", "float" or "string") and its values, None where missing;
+    mixed or non-scalar values become text (JSON for lists and mappings)."""
+    present = [v for v in values if v is not None]
+    if present and all(isinstance(v, bool) for v in present):
+        return "bool", values
+    if all(isinstance(v, int) and not isinstance(v, bool) for v in present):
+        return ("int", values) if present else ("string", values)
+    if all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in present):
+        return "float", [None if v is None else float(v) for v in values]
+    return "string", [None if v is None else v if isinstance(v, str) else json.dumps(v) for v in values]
+
+
+def write_results_table(rows: list[dict[str, Any]], columns: list[str], folder: str | Path,
+                        metadata: Optional[dict[str, Any]] = None) -> list[Path]:
+    """A sweep's table, one row per case in the given order, as ``results.csv`` (floats written
+    with every digit, missing values empty) and ``results.parquet`` (typed columns: bool, int64,
+    float64 or string; ``metadata`` kept as JSON under the schema key ``vistrack.sweep``)."""
+    import csv
+
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    root = Path(folder)
+    root.mkdir(parents=True, exist_ok=True)
+    typed = {name: _table_column([row.get(name) for row in rows]) for name in columns}
+    csv_file = root / "results.csv"
+    with csv_file.open("w", newline="", encoding="utf-8") as stream:
+        writer = csv.writer(stream)
+        writer.writerow(columns)
+        for i in range(len(rows)):
+            writer.writerow(["" if typed[c][1][i] is None else repr(typed[c][1][i]) if typed[c][0] == "float"
+                             else typed[c][1][i] for c in columns])
+    arrow_types = {"bool": pa.bool_(), "int": pa.int64(), "float": pa.float64(), "string": pa.string()}
+    table = pa.table({c: pa.array(typed[c][1], type=arrow_types[typed[c][0]]) for c in columns})
+    if metadata is not None:
+        table = table.replace_schema_metadata({"vistrack.sweep": json.dumps(metadata)})
+    parquet_file = root / "results.parquet"
+    pq.write_table(table, parquet_file)
+    return [csv_file, parquet_file]
+
+
+def read_results_table(path: str | Path) -> list[dict[str, Any]]:
+    """The rows of a ``results.parquet`` written by :func:`write_results_table`, in file order."""
+    import pyarrow.parquet as pq
+
+    if not Path(path).is_file():
+        raise VistrackError(f"results = {path}: no such file")
+    rows: list[dict[str, Any]] = pq.read_table(path).to_pylist()
+    return rows
+
+
+def append_json_line(data: Any, path: str | Path) -> None:
+    """One JSON document as one line at the end of a file (rows of a sweep as they arrive)."""
+    with Path(path).open("a", encoding="utf-8") as stream:
+        stream.write(json.dumps(data) + "\n")
+
+
+# ---------------------------------------------------------------------------------------------
+# Loiter planning (issue 14): scenario YAML, the sampled path as CSV
+# ---------------------------------------------------------------------------------------------
+
+
+def read_loiter_scenario(path: str | Path) -> LoiterScenario:
+    """A loiter scenario file (examples/loiter_*.yaml); every bad value names its key."""
+    from . import schema
+    from .loiter import Camera, Scenario
+
+    data = read_yaml_mapping(path, "scenario")
+    allowed = {"name", "aois", "start", "end", "turn_radius", "speed", "aoi_radius", "turns", "camera",
+               "threshold", "dt", "paper"}
+    unknown = sorted(set(data) - allowed)
+    if unknown:
+        raise schema.fail(unknown[0], data[unknown[0]], f"unknown key; allowed: {', '.join(sorted(allowed))}")
+
+    def pair(key: str, value: Any) -> tuple[float, float]:
+        if not isinstance(value, (list, tuple)) or len(value) != 2:
+            raise schema.fail(key, value, "must be [x, y] in metres")
+        return schema.number(f"{key}[0]", value[0]), schema.number(f"{key}[1]", value[1])
+
+    raw_aois = data.get("aois")
+    if not isinstance(raw_aois, list) or not raw_aois:
+        raise schema.fail("aois", raw_aois, "must be a non-empty list of [x, y] AOI centres")
+    aois = np.array([pair(f"aois[{i}]", a) for i, a in enumerate(raw_aois)], dtype=float)
+    camera_section = schema.section(data, "camera", {"fov_deg", "max_gimbal_deg", "altitude"})
+    camera = schema.apply_checks(Camera(), camera_section, "camera", {
+        "fov_deg": schema.positive, "max_gimbal_deg": lambda k, v: schema.number(k, v, low=0.0),
+        "altitude": schema.positive})
+    paper = data.get("paper") or {}
+    if not isinstance(paper, dict):
+        raise schema.fail("paper", paper, "must map a method to its Table 1 numbers")
+    scenario = Scenario(
+        aois=aois,
+        name=str(data.get("name", Path(path).stem)),
+        start=pair("start", data.get("start", [0.0, 0.0])),
+        end=pair("end", data.get("end", [0.0, 0.0])),
+        turn_radius=schema.positive("turn_radius", data.get("turn_radius", 46.0)),
+        speed=schema.positive("speed", data.get("speed", 12.0)),
+        aoi_radius=schema.positive("aoi_radius", data.get("aoi_radius", 46.0)),
+        turns=schema.integer("turns", data.get("turns", 1), 1, 1000),
+        camera=camera,
+        threshold=schema.number("threshold", data.get("threshold", 0.75), low=0.0, high=1.0, low_open=True),
+        dt=schema.positive("dt", data.get("dt", 1.0)),
+        paper={str(k): {str(n): float(x) for n, x in dict(v).items()} for k, v in paper.items()},
+    )
+    # The planner's own checks (overlapping circles, R < r, start inside a circle) name the key.
+    scenario.plan("tlpp")
+    return scenario
+
+
+def write_loiter_samples_csv(path: str | Path, plan: LoiterPlan, coverage: LoiterCoverage, dt: float,
+                             threshold: float = 0.75) -> Path:
+    """The plan sampled every dt (as the coverage was): t, x, y, psi, turn rate, segment role, the AOI
+    most in view, the gimbal angle and the AOIs covered at that step."""
+    samples = plan.sample_states(dt, False)
+    roles = [plan.segments[k].role for k in samples.segment]
+    covered = [";".join(str(i) for i in np.flatnonzero(row >= threshold)) for row in coverage.fraction]
+    file = Path(path)
+    file.parent.mkdir(parents=True, exist_ok=True)
+    with open(file, "w", encoding="utf-8") as out:
+        out.write("t,x,y,psi,turn_rate,role,pointed_aoi,gimbal_rad,covered_aois\n")
+        for k in range(samples.poses.shape[0]):
+            x, y, psi = samples.poses[k]
+            out.write(f"{samples.t[k]:.6f},{x:.6f},{y:.6f},{psi:.9f},{samples.turn_rate[k]:.9f},{roles[k]},"
+                      f"{coverage.pointed[k]},{coverage.gimbal[k]:.6f},{covered[k]}\n")
+
+
+# ---- follow (issue 15): vehicle tracks, road paths, follow trajectories -------------------------
+
+
+def _numeric_rows(path: str | Path, key: str, columns: tuple[int, ...]) -> np.ndarray:
+    """The rows of a comma-separated numeric file (a header line is skipped), each with one of
+    ``columns`` counts; VistrackError naming the key, the line and the value otherwise."""
+    import numpy as np
+
+    rows: list[list[float]] = []
+    for number, line in enumerate(read_text(path, key).splitlines(), start=1):
+        cells = [c.strip() for c in line.split(",")]
+        if not line.strip() or line.lstrip().startswith("#"):
+            continue
+        try:
+            values = [float(c) for c in cells]
+        except ValueError:
+            if not rows and number == 1:
+                continue  # a header
+            raise VistrackError(f"{key} = {path}: line {number} is not numbers: {line.strip()!r}") from None
+        if len(values) not in columns:
+            raise VistrackError(f"{key} = {path}: line {number} has {len(values)} values, expected "
+                                f"{' or '.join(str(c) for c in columns)}")
+        rows.append(values[: min(columns)])
+    if len(rows) < 2:
+        raise VistrackError(f"{key} = {path}: needs at least two rows, found {len(rows)}")
+    return np.array(rows, dtype=float)
+
+
+def read_vehicle_track(path: str | Path, key: str = "vehicle.track") -> tuple[np.ndarray, np.ndarray]:
+    """A ground vehicle's track: one ``t,x,y`` per line (s, m; a header line allowed). Returns the
+    times (n,) and positions (n, 2); GroundVehicle checks that the times increase and are finite."""
+    rows = _numeric_rows(path, key, (3,))
+    return rows[:, 0].copy(), rows[:, 1:3].copy()
+
+
+def read_road_path(path: str | Path, key: str = "road") -> np.ndarray:
+    """A road polyline, one ``x,y`` or ``x,y,z`` per line (the data's POI paths): (n, 2)."""
+    return _numeric_rows(path, key, (2, 3))[:, :2].copy()
+
+
+def write_follow_trajectory(result: Any, path: str | Path) -> Path:
+    """A follow run as CSV, one sample per line, full precision: t, the UAV (x, y, psi, turn rate,
+    bank), the vehicle, the offset point, the desired position, the waypoint flown to, the mode,
+    the tracking error, the along-track lag, the camera's view (0/1) and, when evaluated, the
+    line of sight (0/1). ``result``: a vistrack.follow.FollowResult."""
+    import numpy as np
+
+    run = result.run
+    columns = {
+        "t": np.asarray(run.t), "x": result.state[:, 0], "y": result.state[:, 1], "psi": result.state[:, 2],
+        "turn_rate": np.asarray(run.turn_rate), "bank": np.asarray(run.bank),
+        "vehicle_x": result.vehicle[:, 0], "vehicle_y": result.vehicle[:, 1],
+        "offset_x": result.offset_point[:, 0], "offset_y": result.offset_point[:, 1],
+        "desired_x": result.desired[:, 0], "desired_y": result.desired[:, 1],
+        "target_x": np.asarray(run.target)[:, 0], "target_y": np.asarray(run.target)[:, 1],
+        "tracking_error": np.asarray(run.tracking_error), "along_track_lag": np.asarray(run.along_track_lag),
+        "in_view": result.in_view.astype(int),
+    }
+    if result.line_of_sight is not None:
+        columns["line_of_sight"] = result.line_of_sight.astype(int)
+    mode = result.mode
+    names = list(columns)
+    lines = [",".join([*names[:16], "mode", *names[16:]])]
+    values = list(columns.values())
+    for i in range(len(mode)):
+        cells = [repr(float(v[i])) for v in values[:16]] + [str(mode[i])] + [str(int(v[i])) for v in values[16:]]
+        lines.append(",".join(cells))
+    file = Path(path)
+    file.write_text("\n".join(lines) + "\n", encoding="utf-8")
     return file

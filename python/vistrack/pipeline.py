@@ -16,6 +16,7 @@ import numpy as np
 
 from ._core import (
     Control,
+    Environment,
     OrbitPlan,
     OrbitPlanner,
     SimulationOptions,
@@ -48,17 +49,26 @@ def start_on_orbit(plan: AnyPlan, direction: str) -> np.ndarray:
 
 
 def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True,
-        cache_dir: str | Path | None = None) -> RunResult:
-    """Run a scenario end to end; with ``out``, also write the report folder there."""
+        cache_dir: str | Path | None = None, environment: Optional[Environment] = None,
+        planner: Optional[OrbitPlanner] = None, metric_spacings: Sequence[float] = METRIC_SPACINGS) -> RunResult:
+    """Run a scenario end to end; with ``out``, also write the report folder there.
+
+    A caller running many scenarios on one map (``vistrack.sweep``) passes the map's
+    ``environment`` and a ``planner`` built on it with ``scenario.sensor`` (and ``cache_dir``), so
+    the Embree scene and the VV cache are built once; the results are the same as without them.
+    ``metric_spacings``: the fixed spacings of Figure 4's metric runs (none: only the adaptive one).
+    """
     stages = Stages(quiet)
-    env = stages.run("environment", scenario.environment.load, scenario.origin)
+    env = environment if environment is not None else stages.run("environment", scenario.environment.load,
+                                                                   scenario.origin)
     poi = stages.run("POI path", scenario.poi.build, env)
-    planner: OrbitPlanner = stages.run(
-        "visibility scene", OrbitPlanner, env, scenario.sensor, "" if cache_dir is None else str(cache_dir))
+    if planner is None:
+        planner = stages.run("visibility scene", OrbitPlanner, env, scenario.sensor,
+                             "" if cache_dir is None else str(cache_dir))
     plan: VisibilityOrbitPlan = stages.run("visibility volumes and orbits", planner.plan, poi, scenario.uav,
                                            scenario.planning, bar_unit="VV")
     metric_runs: dict[str, Any] = {}
-    for spacing in METRIC_SPACINGS:
+    for spacing in metric_spacings:
         metric_runs[f"{spacing:g} m"] = stages.run(f"metric at {spacing:g} m spacing", planner.fixed, poi, spacing,
                                                    scenario.planning.resolution_deg, bar_unit="VV")
     metric_runs["adaptive"] = plan.discretization

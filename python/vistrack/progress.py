@@ -29,6 +29,11 @@ class Progress:
         self.bar.n = done
         self.bar.refresh()
 
+    def note(self, **fields: Any) -> None:
+        """Show ``name=value`` fields after the bar (e.g. failed=2)."""
+        if self.bar is not None:
+            self.bar.set_postfix(fields, refresh=True)
+
     def close(self) -> None:
         if self.bar is not None:
             self.bar.close()

@@ -31,6 +31,8 @@ import numpy as np
 from ._core import VistrackError
 from ._core import waypoint_nav as _wn
 from .flight import FlightTrajectory, Gusts, Wind
+from .georeference import Georeference
+from .mission import Mission, MissionBuilder
 
 __all__ = [
     "CASES", "DEFAULTS", "PAPER_GUST_MODEL", "PAPER_RADII", "DubinsWaypointGuidance", "HorizonPath", "MonteCarlo",
@@ -136,6 +138,26 @@ class NavigationFlight:
         is the last waypoint, flown to directly. These are what a mission would carry."""
         pts = [r.path.point for r in self.turning_point_records]
         return np.array(pts, dtype=float).reshape(-1, 2)
+
+    def mission_points(self) -> np.ndarray:
+        """(k, 2): the points an autopilot mission of this flight carries: DWN's turning points
+        (the paper keeps them "in the background"; the last is the last waypoint, flown to
+        directly), or WN's waypoints."""
+        return self.turning_points if self.method == "dwn" else np.asarray(self.waypoints, dtype=float)[:, :2]
+
+    def to_mission(self, georeference: Georeference, altitude: float, *, speed: Optional[float] = None,
+                   altitude_mode: str = "relative", firmware: str = "ardupilot",
+                   return_to_launch: bool = False) -> Mission:
+        """The flight as an autopilot mission (route units taken as metres): one NAV_WAYPOINT per
+        :meth:`mission_points` row, with WN's acceptance radius as param2 (DWN's turning points
+        carry 0: the autopilot's default), optionally DO_CHANGE_SPEED first and RTL last."""
+        builder = MissionBuilder(georeference, altitude, speed=speed, altitude_mode=altitude_mode, firmware=firmware)
+        radius = 0.0 if self.method == "dwn" or self.waypoint_radius is None else self.waypoint_radius
+        for point in self.mission_points():
+            builder.waypoint(point, acceptance_radius=radius)
+        if return_to_launch:
+            builder.return_to_launch()
+        return builder.build()
 
     def metrics(self) -> dict[str, Any]:
         """The metrics as plain data (JSON), lengths also in units of R."""

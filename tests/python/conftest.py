@@ -7,8 +7,6 @@ imported from python/ with that extension.
 
 from __future__ import annotations
 
-import glob
-import importlib.util
 import os
 import sys
 from pathlib import Path
@@ -19,21 +17,11 @@ REPO = Path(__file__).resolve().parents[2]
 SHARED_DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
 
 
-def _use_build_tree() -> None:
-    build_dir = os.environ.get("VISTRACK_BUILD_DIR")
-    if not build_dir:
-        return
-    candidates = glob.glob(os.path.join(build_dir, "bindings", "_core*.so"))
-    if not candidates:
-        raise RuntimeError(f"VISTRACK_BUILD_DIR={build_dir}: no bindings/_core*.so there")
-    sys.path.insert(0, str(REPO / "python"))
-    spec = importlib.util.spec_from_file_location("vistrack._core", candidates[0])
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["vistrack._core"] = module
-    spec.loader.exec_module(module)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from build_tree import preload_in_dask_workers, use_build_tree  # noqa: E402
 
-
-_use_build_tree()
+use_build_tree()
+preload_in_dask_workers()
 
 
 def ticks_during(call) -> tuple[int, float]:

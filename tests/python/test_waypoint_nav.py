@@ -188,6 +188,41 @@ def test_cli_waypoints(tmp_path: Path) -> None:
     np.testing.assert_allclose(read_route(out / "turning_points_dwn.csv")[-1], read_route(ROUTE)[-1])
 
 
+def test_dwn_mission_carries_the_turning_points_and_pymavlink_reads_it(tmp_path: Path,
+                                                                         calm: list[wn.NavigationFlight]) -> None:
+    mavwp = pytest.importorskip("pymavlink.mavwp", reason="pymavlink not installed")
+    ref = vt.Georeference(35.2249, -80.8403)
+    dwn = calm[0]
+    assert dwn.method == "dwn"
+    mission = dwn.to_mission(ref, 60.0, speed=0.8)
+    path = mission.save(tmp_path / "route.waypoints")
+    loader = mavwp.MAVWPLoader()
+    assert loader.load(str(path)) == len(dwn.turning_points) + 2  # home, DO_CHANGE_SPEED, one per point
+    lat, lon = ref.to_latlon(dwn.turning_points[:, 0], dwn.turning_points[:, 1])
+    waypoints = [loader.wp(i) for i in range(loader.count()) if loader.wp(i).command == 16][1:]  # after home
+    np.testing.assert_allclose([w.x for w in waypoints], lat, atol=1e-7)
+    np.testing.assert_allclose([w.y for w in waypoints], lon, atol=1e-7)
+    assert all(w.z == 60.0 and w.param2 == 0.0 for w in waypoints)
+    # WN's mission is its waypoints, each with the acceptance radius it flew with.
+    wn_flight = calm[1]
+    wn_mission = wn_flight.to_mission(ref, 60.0)
+    radii = [item.params[1] for item in wn_mission.items]
+    assert radii == [wn_flight.waypoint_radius] * len(wn_flight.waypoints)
+
+
+def test_cli_report_and_export(tmp_path: Path) -> None:
+    out = tmp_path / "wp"
+    assert main(["waypoints", str(ROUTE), "--quiet", "--out", str(out), "--frames", "12", "--origin",
+                 "35.2249,-80.8403", "--export", str(out / "route.plan")]) == 0
+    for name in ("report.md", "report.html", "trajectory.gif", "route.plan"):
+        assert (out / name).stat().st_size > 500, name
+    assert "trajectory.gif" in (out / "report.md").read_text()
+    plan = json.loads((out / "route.plan").read_text())
+    assert plan["fileType"] == "Plan" and len(plan["mission"]["items"]) >= 5
+    assert main(["waypoints", str(ROUTE), "--quiet", "--out", str(tmp_path / "x"), "--export",
+                 str(tmp_path / "x.plan")]) == 2  # no origin to georeference the route
+
+
 def test_cli_bad_route_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     bad = tmp_path / "r.csv"
     bad.write_text("x,y\n0,0\n")

@@ -315,4 +315,71 @@ FlightTrajectory fly(const Uav& vehicle, const WindField& wind, FlightGuidance& 
                      const FlightOptions& options = {}, double t0 = 0.0, const FlightCallback& on_step = {},
                      const FlightProgress& progress = {});
 
+// ---- Path following (issue 14): a guidance that flies a path of lines and arcs ---------------
+//
+// PathFollower flies a given path of straight lines and circular arcs (the loiter plans; any
+// planner's lines and arcs).
+//
+// Law: with s the progress along the path (the closest point near the previous progress), e the
+// cross-track error (positive to the left of the path), psi_p and kappa the path's heading and
+// curvature there,
+//   psi_d = psi_p - atan(e / L),                              L = lookahead_radii * R
+//   rate  = v kappa cos(psi - psi_p) / (1 - kappa e)  +  k wrap(psi_d - psi),   k = heading_gain * v / R,
+// the first term the rate at which the path's heading turns under the vehicle (curvature
+// feed-forward), the second heading feedback towards the line of approach. Like the rest of the
+// flight layer it knows the heading, not the wind (no ground course): a constant wind leaves a
+// tracking error, which is what flying a plan in unknown wind measures.
+
+// One piece: from `start` with `heading`, `length` long, signed curvature (0 line, +1/radius
+// counter-clockwise, -1/radius clockwise).
+struct PathPiece {
+  Vec2 start = Vec2::Zero();
+  double heading = 0.0;
+  double length = 0.0;
+  double curvature = 0.0;
+  Configuration at(double s) const;  // s in [0, length] (not clamped)
+};
+
+class PathFollower : public FlightGuidance {
+ public:
+  // pieces: consecutive (each starting where the one before ends); speed v and turn radius R of
+  // the vehicle. Error naming the field on an empty path, a non-finite value, a piece of length
+  // <= 0, a curvature tighter than 1 / R or a gap between pieces above 1e-6 (1 + |coordinates|).
+  PathFollower(std::vector<PathPiece> pieces, double speed, double turn_radius, const PathFollowingGains& gains = {});
+
+  void start(const Configuration& state, double t) override;
+  GuidanceCommand command(const Configuration& state, double t) const override;
+  void advance(const Configuration& state, double t) override;
+  bool done() const override { return done_; }
+  // The next piece boundary minus the progress at `state`: continuous flight cuts its steps there
+  // (the curvature feed-forward jumps); at the last piece, -1 once the end is reached.
+  double switching_function(const Configuration& state, double t) const override;
+
+  // Where the state projects onto the path near the current progress.
+  struct Tracking {
+    double s = 0.0;              // progress, m
+    std::size_t piece = 0;
+    double cross_track = 0.0;    // m, positive to the left of the path
+    double heading_error = 0.0;  // psi - psi_path, wrapped, rad
+    double along = 0.0;          // signed distance ahead of the path point (non-zero only at the ends)
+  };
+  Tracking track(const Configuration& state) const;
+
+  double progress() const { return progress_; }
+  double length() const { return length_; }
+  const std::vector<PathPiece>& pieces() const { return pieces_; }
+  const PathFollowingGains& gains() const { return gains_; }
+
+ private:
+  std::size_t piece_at(double s) const;
+
+  std::vector<PathPiece> pieces_;
+  std::vector<double> offsets_;
+  double length_ = 0.0;
+  double speed_, turn_radius_;
+  PathFollowingGains gains_;
+  double progress_ = 0.0;
+  bool done_ = false;
+};
+
 }  // namespace vistrack

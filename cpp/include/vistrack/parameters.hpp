@@ -156,4 +156,97 @@ struct WaypointNavOptions {
   void validate() const;
 };
 
+// ---- path following (issue 14): a guidance that flies a path of lines and arcs -------------
+
+// Gains of PathFollower (flight.hpp, Path following), scaled by the vehicle so one set fits every size:
+// the cross-track correction steers at atan(e / (lookahead_radii R)) back to the path, the heading
+// loop closes at heading_gain v / R per radian. With these the linearised cross-track error is a
+// second-order system with damping 0.5 sqrt(heading_gain * lookahead_radii) = 0.87.
+struct PathFollowingGains {
+  double lookahead_radii = 1.0;
+  double heading_gain = 3.0;
+  void validate() const;
+};
+
+// ---- loiter (issue 14): loiter planners over areas of interest, camera coverage -------------
+// Wilhelm, Clem, Eberhart, "Direct Entry Minimal Path UAV Loitering Path Planning" (2017),
+// section 4.1: Raven RQ-11B, turn radius 46 m at 12 m/s, AOI radius = turn radius, one loiter.
+
+struct LoiterParameters {
+  double turn_radius = 46.0;  // r, m: turns outside the loiter (minimum turn radius)
+  double speed = 12.0;        // v, m/s (constant airspeed)
+  double aoi_radius = 46.0;   // R, m: the loiter circle around each AOI centre (POI); R >= r
+  int turns = 1;              // full loiters flown around each AOI (at least 1)
+  void validate() const;      // throws Error naming the field
+};
+
+// The camera of section 2.2: a circular (conic) field of view, full angle fov_deg, on a one-axis
+// (roll) gimbal of +-max_gimbal_deg. altitude: height above the AOIs' ground plane. 61 m is the
+// height at which the paper's nadir footprint is 6,638 m^2 (pi (61 tan 37 deg)^2 = 6,637.9 m^2).
+struct LoiterCamera {
+  double fov_deg = 74.0;
+  double max_gimbal_deg = 25.0;
+  double altitude = 61.0;
+  void validate() const;
+};
+
+// Section 4.1's coverage rule: an AOI counts as covered at a time step when at least `threshold`
+// of its disk lies in the footprint; time steps dt apart (the paper samples at 1 s).
+struct LoiterCoverageOptions {
+  double threshold = 0.75;
+  double dt = 1.0;          // s
+  double gravity = 9.80665; // m/s^2, for the bank angle of a coordinated turn
+  void validate() const;
+};
+
+// ---- follow (issue 15): following a ground vehicle (sinusoidal and loiter modes) ---------------
+
+enum class LoiterPattern : std::uint8_t { Circle = 0, Rose = 1 };  // "circle" | "rose"
+enum class OffsetReference : std::uint8_t { North = 0, Heading = 1 };  // "north" | "heading"
+
+// The follow planner's settings. Angles in radians; speeds are taken from the Uav (airspeed v,
+// minimum turn radius r_min, altitude of the camera).
+struct FollowParameters {
+  // Sinusoidal mode (section II). T, the time the vehicle takes to travel one period D = v_g T.
+  double period = 30.0;               // s
+  // The tightest planned turn is turn_margin * r_min: the period is raised where the sinusoid's
+  // peak curvature A' 2 pi / D would exceed 1 / (turn_margin r_min), and the loiter circle's
+  // radius follows Lemma 6 of the tracking paper with this radius.
+  double turn_margin = 1.25;
+  // Loiter above the threshold h_sigma of the speed ratio sigma = v_p / v_g, with a hysteresis
+  // band of this full width centred on it: loiter from sigma > h + band / 2, back to the
+  // sinusoid below h - band / 2.
+  double threshold = 3.0;             // h_sigma (the paper's ~3)
+  double hysteresis = 0.5;            // full band width, < threshold
+  LoiterPattern loiter_pattern = LoiterPattern::Circle;  // Fig. 3
+  // Circle: its radius. Rose: the largest distance from the centre. 0: the smallest flyable
+  // (circle: turn_margin r_min (1 + 1 / (h - band / 2))^2; rose: 3 times that turn radius).
+  double loiter_radius = 0.0;         // m
+  Circulation loiter_direction = Circulation::CounterClockwise;
+  // Offset vector (Fig. 3): distance L and angle theta. reference "north": theta is fixed to the
+  // map (radians counter-clockwise from east); "heading": counter-clockwise from the vehicle's
+  // heading (0 ahead, pi/2 to its left).
+  double offset_distance = 0.0;       // m
+  double offset_angle = 0.0;          // rad
+  OffsetReference offset_reference = OffsetReference::Heading;
+  // Wind compensation (section III): plan in the air mass with the wind estimate (see follow.hpp).
+  bool wind_compensation = true;
+  // Waypoints are generated every update_period (section V: 1 Hz), each one the desired position
+  // update_period later.
+  double update_period = 1.0;         // s
+  void validate() const;
+};
+
+// How a follow run is flown by the flight layer at step dt, steered by the
+// waypoint paper's feedback law (5) with its gains (LineFeedbackGains, given for the paper's
+// turn radius 0.7) rescaled to the UAV's r_min, since g and h multiply lengths.
+struct FollowFlight {
+  // The paper's discrete update, or Dormand-Prince (then updates happen at the first accepted
+  // step ending at or after each update time, at most dt late).
+  FlightIntegration integration = FlightIntegration::Discrete;
+  double dt = 0.02;        // s, flight step and law step
+  double max_time = 0.0;   // s after the start; 0: until the vehicle's track ends
+  void validate() const;
+};
+
 }  // namespace vistrack

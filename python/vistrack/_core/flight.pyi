@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core
-__all__: list[str] = ['FlightGuidance', 'FlightTrajectory', 'Gusts', 'LineFeedback', 'WaypointFollower', 'Wind', 'WindField', 'dryden_low_altitude', 'fly']
+__all__: list[str] = ['FlightGuidance', 'FlightTrajectory', 'Gusts', 'LineFeedback', 'PathFollower', 'WaypointFollower', 'Wind', 'WindField', 'dryden_low_altitude', 'fly']
 class Gusts:
     """
     Dryden turbulence (MIL-F-8785C, horizontal): RMS intensity sigma_u = sigma_v (speed units), length scale L_u = L_v (length units), seed. Reproducible from the seed.
@@ -282,6 +282,28 @@ class FlightTrajectory:
     def y(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         y (n,)
+        """
+class PathFollower(FlightGuidance):
+    """
+    Follows a path of lines and arcs: cross-track and heading feedback with curvature feed-forward, psi_d = psi_path - atan(e / (lookahead_radii R)), rate = v kappa cos(psi - psi_path) / (1 - kappa e) + heading_gain (v / R) wrap(psi_d - psi). Knows the heading, not the wind. Done at the path's end.
+    """
+    def __init__(self, pieces: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 5]"], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, lookahead_radii: typing.SupportsFloat | typing.SupportsIndex = 1.0, heading_gain: typing.SupportsFloat | typing.SupportsIndex = 3.0) -> None:
+        """
+        pieces: (n, 5) rows x0, y0, heading, length, curvature (0 lines, +1/radius ccw, -1/radius cw), each starting where the one before ends; speed v and turn_radius R of the vehicle.
+        """
+    def track(self, state: typing.Annotated[collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], "FixedSize(3)"]) -> dict:
+        """
+        Projection of (x, y, psi) near the current progress: s, piece, cross_track (left positive), heading_error, along (beyond the end).
+        """
+    @property
+    def length(self) -> float:
+        """
+        Path length, m.
+        """
+    @property
+    def progress(self) -> float:
+        """
+        Arc length reached, m.
         """
 def dryden_low_altitude(altitude: typing.SupportsFloat | typing.SupportsIndex, wind_speed_20ft: typing.SupportsFloat | typing.SupportsIndex) -> dict:
     """

@@ -17,7 +17,14 @@ from ..flight import Wind
 from ..io import read_route
 from ..progress import Progress
 from ..report.waypoints import write_waypoints
-from . import finite_numbers, positive_numbers
+from . import (
+    add_export_arguments,
+    add_report_arguments,
+    export_mission,
+    finite_numbers,
+    positive_numbers,
+    report_options,
+)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -43,6 +50,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--seed", type=int, default=0, help="Monte Carlo seed (default 0)")
     parser.add_argument("--monte-carlo-wind", type=finite_numbers("--monte-carlo-wind", 2, "0,0.2"),
                         default=[0.0, 0.2], help="Monte Carlo wind speeds, fractions of v (default 0,0.2)")
+    parser.add_argument("--altitude", type=float, default=60.0, help="mission altitude for --export, m (default 60)")
+    add_export_arguments(parser)
+    add_report_arguments(parser)
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--out", type=Path, default=Path("waypoints_out"), help="output folder")
     parser.set_defaults(func=run)
@@ -65,7 +75,9 @@ def run(args: argparse.Namespace) -> int:
             mc = wn.monte_carlo(args.monte_carlo, args.seed, wind_fraction=tuple(args.monte_carlo_wind), radii=radii,
                                 progress=bar, **options)
     settings = {**options, "wind": [east, north], "gusts_seed": args.gusts, "radii_over_R": list(radii)}
-    write_waypoints(args.out, flights, wind, str(args.route), settings, weights, mc)
+    write_waypoints(args.out, flights, wind, str(args.route), settings, weights, mc, report_options(args))
+    # The mission carries DWN's turning points when DWN flew, else the first WN flight's waypoints.
+    export_mission(args.export, lambda ref: flights[0].to_mission(ref, args.altitude, speed=args.speed), args.origin)
     for f in flights:
         print(f"{f.label:>14}: max miss {f.miss_distances.max() / R:.3f} R, overshoot {f.overshoot / R:.3f} R, "
               f"swirls {f.swirls}, path {f.path_length:.3f}, time {f.duration:.2f}, all reached {f.all_reached}")

@@ -1,15 +1,24 @@
 """The output folder of ``vistrack waypoints``: metrics.json, one trajectory CSV per flight, the
-DWN turning points, the path figure (Figures 11/12), and optionally Figure 10 and the Monte Carlo."""
+DWN turning points, the path figure (Figures 11/12), optionally Figure 10 and the Monte Carlo, and
+report.md with the animation (trajectory.gif) and the interactive page (report.html)."""
 
 from __future__ import annotations
 
 from pathlib import Path
 from typing import Any, Optional, Sequence
 
+import numpy as np
+
 from .._core.flight import Wind
 from ..io import write_flight, write_json, write_route
+from ..plotting.motion import Line, MotionScene, Track
 from ..plotting.waypoints import figure_monte_carlo, figure_paths, figure_theta_weight
+from ..scenario import ReportOptions
 from ..waypoint_nav import MonteCarlo, NavigationFlight
+from .document import Document, Heading, Picture, Table
+from .media import write_media
+
+TRACK_COLORS = ("tab:red", "tab:blue", "tab:orange", "tab:purple", "tab:brown", "tab:olive")
 
 
 def file_label(flight: NavigationFlight) -> str:
@@ -19,9 +28,22 @@ def file_label(flight: NavigationFlight) -> str:
     return f"wn_{flight.waypoint_radius / flight.turn_radius:g}R"
 
 
+def motion_scene(flights: Sequence[NavigationFlight], wind: Optional[Wind], title: str) -> MotionScene:
+    """The flights as one animation: a track per flight, the route, DWN's turning points, the wind."""
+    tracks = [Track(f.label, f.trajectory[:, 0], f.trajectory[:, 1:3], color=color, trail=None, width=1.2)
+              for f, color in zip(flights, TRACK_COLORS)]
+    route = np.asarray(flights[0].waypoints, dtype=float)[:, :2]
+    start = np.asarray(flights[0].start, dtype=float)[None, :2]
+    lines = [Line("route", np.vstack([start, route]), color="0.3", style=":", width=1.0)]
+    for flight in flights:
+        if flight.method == "dwn" and len(flight.turning_points):
+            lines.append(Line("DWN turning points", flight.turning_points, color="tab:green", style="--", width=0.8))
+    return MotionScene(tracks, lines, wind=None if wind is None else (wind.east, wind.north), title=title)
+
+
 def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Optional[Wind], route_name: str,
                     settings: dict[str, Any], weights: Optional[dict[str, Any]] = None,
-                    mc: Optional[MonteCarlo] = None) -> dict[str, Any]:
+                    mc: Optional[MonteCarlo] = None, report: Optional[ReportOptions] = None) -> dict[str, Any]:
     """Writes the folder and returns the record stored in metrics.json."""
     out.mkdir(parents=True, exist_ok=True)
     record: dict[str, Any] = {"route": route_name, "settings": settings, "flights": [], "figures": []}
@@ -42,5 +64,24 @@ def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Option
         write_json({"settings": mc.settings, "summary": summary}, out / "monte_carlo.json")
         record["monte_carlo"] = summary
         record["figures"].append(figure_monte_carlo(mc, out / "monte_carlo.png").name)
+    document = _document(flights, record, route_name)
+    made = write_media(out, motion_scene(flights, wind, f"{route_name}: DWN against WN"), document, report)
+    record["report_files"] = made
+    (out / "report.md").write_text(document.markdown(), encoding="utf-8")
     write_json(record, out / "metrics.json")
     return record
+
+
+def _document(flights: Sequence[NavigationFlight], record: dict[str, Any], route_name: str) -> Document:
+    R = flights[0].turn_radius
+    rows = [[f.label, f"{f.miss_distances.max() / R:.3f}", f"{f.overshoot / R:.3f}", str(f.swirls),
+             f"{f.path_length:.3f}", f"{f.duration:.2f}", "yes" if f.all_reached else "no"] for f in flights]
+    blocks: list[Any] = [Heading("Flights"),
+                         Table(["flight", "max miss (R)", "overshoot (R)", "swirls", "path length", "time",
+                                "all reached"], rows)]
+    titles = {"paths.png": "Paths (Figures 11/12)", "fig10_theta_weight.png": "Figure 10: theta against w_a",
+              "monte_carlo.png": "Monte Carlo over random routes and winds"}
+    blocks += [Picture(name, titles.get(name, name)) for name in record["figures"]]
+    summary = [f"Route {route_name}: {len(flights[0].waypoints)} waypoints, turn radius R = {R:g}",
+               f"Wind {record['settings']['wind']} (unknown to the guidance)"]
+    return Document("vistrack report: waypoint navigation", summary, blocks)

@@ -1,0 +1,108 @@
+"""The follow numbers the README quotes: the four example scenarios (the paper's Figures 5-9, Fig. 6
+as Fig. 7's scenario without compensation), each flown by the paper's planner and by the
+vector-field baseline, and again on a Charlotte road with line of sight through the buildings.
+Prints markdown tables; with --figures DIR also draws the README's figures.
+
+    VISTRACK_BUILD_DIR=build/dev python3 bench/follow_table.py [--figures docs/figures] [--no-city]
+
+Charlotte geometry © OpenStreetMap contributors (ODbL).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+if os.environ.get("VISTRACK_BUILD_DIR"):
+    sys.path.insert(0, str(REPO / "tests" / "python"))
+    import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
+
+from vistrack.follow_scenario import FollowScenario, FollowStudy  # noqa: E402
+from vistrack.plotting.follow import figure_compare, figure_paths, figure_speed_ratio  # noqa: E402
+
+CASES = (  # name in the table, example file, compensation
+    ("Fig. 5 straight", "follow_straight.yaml", True),
+    ("Fig. 6 wind, no compensation", "follow_wind.yaml", False),
+    ("Fig. 7 wind, compensated", "follow_wind.yaml", True),
+    ("Fig. 8 stop", "follow_stop.yaml", True),
+    ("Fig. 9 truck", "follow_truck.yaml", True),
+)
+
+
+def pct(value: float) -> str:
+    return f"{100 * value:.1f} %"
+
+
+def row(name: str, study: FollowStudy) -> str:
+    m = study.follow.metrics
+    modes = " / ".join(f"{m['time_in_mode_s'][k]:.0f}" for k in ("sinusoid", "loiter", "straight"))
+    centre = (m["centre_offset_m"][0] ** 2 + m["centre_offset_m"][1] ** 2) ** 0.5
+    baseline = study.baseline.metrics if study.baseline else None
+    return (f"| {name} | {m['mean_tracking_error_m']:.1f} / {m['max_tracking_error_m']:.0f} | "
+            f"{m['along_track_lag_m']:.1f} | {modes} | {m['mode_switches']} | {m['time_capturing_s']:.0f} | "
+            f"{centre:.0f} | {m['mean_vehicle_distance_m']:.0f} | {pct(m['camera_fraction'])} | "
+            + (f"{pct(baseline['camera_fraction'])} ({baseline['mean_vehicle_distance_m']:.0f} m) |" if baseline
+               else "- |"))
+
+
+def city_row(name: str, study: FollowStudy) -> str:
+    cells = []
+    for result in (study.city_follow, study.city_baseline):
+        m = result.metrics if result is not None else None
+        cells.append("- | - | -" if m is None else
+                     f"{pct(m['camera_fraction'])} | {pct(m['line_of_sight_fraction'])} | "
+                     f"{pct(m['camera_and_line_of_sight_fraction'])}")
+    return f"| {name} | {cells[0]} | {cells[1]} |"
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--figures", type=Path, help="folder for the README's figures")
+    parser.add_argument("--no-city", dest="city", action="store_false")
+    args = parser.parse_args()
+    studies = []
+    for name, file, compensation in CASES:
+        scenario = FollowScenario.load(REPO / "examples" / file)
+        city = args.city and scenario.city_available() and compensation  # Fig. 6 only in the open
+        studies.append((name, scenario, scenario.run(compensation, city)))
+
+    print("| scenario | tracking error mean / max (m) | along-track lag (m) | time sinusoid / loiter / straight (s) "
+          "| switches | capturing (s) | off-centre (m) | UAV-vehicle (m) | camera | baseline camera (UAV-vehicle) |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for name, _, study in studies:
+        print(row(name, study))
+    if any(s.city_follow is not None for _, _, s in studies):
+        print("\nOn a Charlotte road (paths/3d.csv, the same speed profiles, UAV at 300 m):\n")
+        print("| scenario | planner: camera | line of sight | both | baseline: camera | line of sight | both |")
+        print("|---|---|---|---|---|---|---|")
+        for name, _, study in studies:
+            if study.city_follow is not None:
+                print(city_row(name, study))
+
+    if args.figures:
+        out = args.figures
+        figure_speed_ratio(out / "follow_fig2_speed_ratio.png")
+        by_name = {name: study for name, _, study in studies}
+        figure_paths(by_name["Fig. 5 straight"].follow, out / "follow_fig5.png", "Fig. 5: vehicle south at 10 m/s")
+        figure_compare([("Fig. 6: without compensation", by_name["Fig. 6 wind, no compensation"].follow),
+                        ("Fig. 7: with compensation", by_name["Fig. 7 wind, compensated"].follow)],
+                       out / "follow_fig6_fig7.png", "10 m/s wind from the south; vehicle north then east at 10 m/s")
+        figure_paths(by_name["Fig. 8 stop"].follow, out / "follow_fig8.png", "Fig. 8: north at 8 m/s, then stops")
+        truck = by_name["Fig. 9 truck"]
+        figure_compare([("the paper's planner", truck.follow)]
+                       + ([("vector field (74), constant radius", truck.baseline)] if truck.baseline else []),
+                       out / "follow_fig9.png", "Fig. 9: truck at 0-20 m/s, 40 m ahead")
+        if truck.city_follow is not None and truck.city_baseline is not None:
+            figure_compare([("the paper's planner", truck.city_follow),
+                            ("vector field (74), constant radius", truck.city_baseline)],
+                           out / "follow_city_truck.png", "Fig. 9's truck speeds on a Charlotte road",
+                           truck.environment)
+        print(f"\nfigures in {out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

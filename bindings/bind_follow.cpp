@@ -1,0 +1,348 @@
+// vistrack._core.follow: following a ground vehicle (sinusoid and loiter modes, hysteresis,
+// offset vector, wind compensation) and the runs flown by the flight layer.
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <string>
+#include <tuple>
+
+#include "bindings.hpp"
+#include "vistrack/error.hpp"
+#include "vistrack/follow.hpp"
+
+namespace py = pybind11;
+
+namespace vistrack::bindings {
+namespace {
+
+using InputArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::vector<double> to_vector(const InputArray& a, const std::string& field) {
+  if (a.ndim() != 1) throw Error(field + ": expected a 1-D array, got ndim = " + std::to_string(a.ndim()));
+  return std::vector<double>(a.data(), a.data() + a.shape(0));
+}
+
+Points2 to_points2(const InputArray& a, const std::string& field) {
+  if (a.ndim() != 2 || a.shape(1) != 2)
+    throw Error(field + ": expected an array of shape (n, 2), got ndim = " + std::to_string(a.ndim()));
+  Points2 p(a.shape(0), 2);
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) p.row(i) << a.at(i, 0), a.at(i, 1);
+  return p;
+}
+
+FollowMode mode_from_string(const std::string& text) {
+  for (FollowMode m : {FollowMode::Sinusoid, FollowMode::Loiter, FollowMode::Straight})
+    if (to_string(m) == text) return m;
+  detail::fail_field("mode", text, "must be \"sinusoid\", \"loiter\" or \"straight\"");
+}
+
+}  // namespace
+
+void bind_follow(py::module_& parent) {
+  py::module_ m = parent.def_submodule(
+      "follow",
+      "Following a ground vehicle (ground_vehicle_following paper): the sinusoid's amplitude from the speed "
+      "ratio (eqs. 5, 9-10), loiter (circle or rose) above a threshold with hysteresis, an offset vector, "
+      "wind compensation in the air mass, waypoints at 1 Hz, and the camera footprint metric.");
+
+  m.def("sinusoid_amplitude", py::vectorize(&sinusoid_amplitude), py::arg("speed_ratio"), py::arg("period_distance"),
+        "Amplitude A (m) of y = A sin(2 pi x / D) whose arc length over one period D is speed_ratio * D "
+        "(eqs. 9-10: sigma = (2/pi) E(-A'^2), A' = 2 pi A / D), to 1e-12 relative. speed_ratio >= 1 "
+        "(1 gives 0). Scalars or numpy arrays.");
+  m.def("speed_ratio", py::vectorize(&sinusoid_speed_ratio), py::arg("amplitude"), py::arg("period_distance"),
+        "sigma = v_p / v_g of eqs. (9)-(10) for amplitude A and period distance D. Scalars or arrays.");
+  m.def("sinusoid_slope", py::vectorize(&sinusoid_slope), py::arg("speed_ratio"),
+        "A' = 2 pi A / D for a speed ratio (independent of D).");
+  m.def("along_track_rate", py::vectorize(&sinusoid_along_track_rate), py::arg("x"), py::arg("amplitude"),
+        py::arg("period_distance"), py::arg("uav_speed"),
+        "eq. (5): x_dot = v_p / sqrt(1 + A'^2 cos^2(2 pi x / D)), m/s.");
+  m.def("arc_length", py::vectorize(&sinusoid_arc_length), py::arg("x"), py::arg("amplitude"), py::arg("period_distance"),
+        "Arc length of the sinusoid from 0 to x (incomplete elliptic integral of the second kind).");
+  m.def("phase_at_arc", py::vectorize(&sinusoid_phase_at_arc), py::arg("arc"), py::arg("amplitude"),
+        py::arg("period_distance"), "The phase 2 pi x / D at which the arc length from 0 is `arc`.");
+
+  py::class_<VehicleLeg>(m, "VehicleLeg",
+                         "One leg of a route: heading (rad from east), speed at its start and end (m/s, linear "
+                         "in between; 0 and 0 is a stop), duration (s).")
+      .def(py::init([](double heading, double speed, double duration, std::optional<double> end_speed) {
+             return VehicleLeg{heading, speed, duration, end_speed.value_or(std::numeric_limits<double>::quiet_NaN())};
+           }),
+           py::arg("heading"), py::arg("speed"), py::arg("duration"), py::arg("end_speed") = py::none(),
+           "end_speed None: constant speed.")
+      .def_readwrite("heading", &VehicleLeg::heading, "rad, counter-clockwise from east")
+      .def_readwrite("speed", &VehicleLeg::speed, "m/s at the start")
+      .def_readwrite("duration", &VehicleLeg::duration, "s")
+      .def_readwrite("end_speed", &VehicleLeg::end_speed, "m/s at the end (NaN: same as speed)");
+
+  py::class_<GroundVehicle>(m, "GroundVehicle",
+                            "A ground vehicle as a piecewise-linear track (t, x, y): position interpolated, "
+                            "velocity per segment, heading of the last moving segment.")
+      .def(py::init([](const InputArray& t, const InputArray& xy) {
+             return GroundVehicle(to_vector(t, "track.t"), to_points2(xy, "track.xy"));
+           }),
+           py::arg("t"), py::arg("xy"), "Times (n,) strictly increasing and positions (n, 2).")
+      .def_static("from_legs", &GroundVehicle::from_legs, py::arg("legs"), py::arg("start") = Vec2(0.0, 0.0),
+                  py::arg("t0") = 0.0, py::arg("step") = 0.1,
+                  "Drive the legs from `start` at t0 (speed ramps sampled every `step` s).")
+      .def_static(
+          "along_path",
+          [](const InputArray& path, const std::vector<VehicleLeg>& legs, double t0, double step) {
+            return GroundVehicle::along_path(to_points2(path, "path"), legs, t0, step);
+          },
+          py::arg("path"), py::arg("legs"), py::arg("t0") = 0.0, py::arg("step") = 0.1,
+          "Along a road polyline (n, 2) with the legs' speed profile (their headings ignored).")
+      .def("position", &GroundVehicle::position, py::arg("t"), "Position (2,) at t (clamped to the track).")
+      .def("velocity", &GroundVehicle::velocity, py::arg("t"), "Velocity (2,) of the segment at t (0 outside).")
+      .def("heading", &GroundVehicle::heading, py::arg("t"), "Heading (rad) at t; a standing vehicle keeps its last.")
+      .def(
+          "sample",
+          [](const GroundVehicle& v, const InputArray& times) {
+            const std::vector<double> t = to_vector(times, "times");
+            Points2 p(static_cast<Eigen::Index>(t.size()), 2);
+            for (std::size_t i = 0; i < t.size(); ++i) p.row(static_cast<Eigen::Index>(i)) = v.position(t[i]).transpose();
+            return p;
+          },
+          py::arg("times"), "Positions (n, 2) at the given times.")
+      .def_property_readonly("times", &GroundVehicle::times, "Sample times (s).")
+      .def_property_readonly("positions", &GroundVehicle::positions, "Sample positions (n, 2).")
+      .def_property_readonly("headings", &GroundVehicle::headings, "Heading per segment (rad).")
+      .def_property_readonly("start_time", &GroundVehicle::start_time, "s")
+      .def_property_readonly("end_time", &GroundVehicle::end_time, "s")
+      .def_property_readonly("max_speed", &GroundVehicle::max_speed, "Largest segment speed (m/s).");
+
+  const FollowParameters defaults;
+  py::class_<FollowParameters>(m, "FollowParameters",
+                               "The follow planner's settings (defaults in parameters.hpp). Angles in radians.")
+      .def(py::init([](double period, double turn_margin, double threshold, double hysteresis,
+                       const std::string& loiter_pattern, double loiter_radius, Circulation loiter_direction,
+                       double offset_distance, double offset_angle, const std::string& offset_reference,
+                       bool wind_compensation, double update_period) {
+             FollowParameters p{period, turn_margin, threshold, hysteresis,
+                                loiter_pattern_from_string(loiter_pattern, "follow.loiter_pattern"), loiter_radius,
+                                loiter_direction, offset_distance, offset_angle,
+                                offset_reference_from_string(offset_reference, "follow.offset_reference"),
+                                wind_compensation, update_period};
+             p.validate();
+             return p;
+           }),
+           py::kw_only(), py::arg("period") = defaults.period, py::arg("turn_margin") = defaults.turn_margin,
+           py::arg("threshold") = defaults.threshold, py::arg("hysteresis") = defaults.hysteresis,
+           py::arg("loiter_pattern") = to_string(defaults.loiter_pattern), py::arg("loiter_radius") = defaults.loiter_radius,
+           py::arg("loiter_direction") = defaults.loiter_direction, py::arg("offset_distance") = defaults.offset_distance,
+           py::arg("offset_angle") = defaults.offset_angle, py::arg("offset_reference") = to_string(defaults.offset_reference),
+           py::arg("wind_compensation") = defaults.wind_compensation, py::arg("update_period") = defaults.update_period,
+           "Validated parameters.")
+      .def_readwrite("period", &FollowParameters::period, "T: time for the vehicle to cover one period, s")
+      .def_readwrite("turn_margin", &FollowParameters::turn_margin, "tightest planned turn / r_min")
+      .def_readwrite("threshold", &FollowParameters::threshold, "h_sigma: loiter above this speed ratio")
+      .def_readwrite("hysteresis", &FollowParameters::hysteresis, "full width of the band about the threshold")
+      .def_property(
+          "loiter_pattern", [](const FollowParameters& p) { return to_string(p.loiter_pattern); },
+          [](FollowParameters& p, const std::string& v) { p.loiter_pattern = loiter_pattern_from_string(v, "follow.loiter_pattern"); },
+          "'circle' or 'rose'")
+      .def_readwrite("loiter_radius", &FollowParameters::loiter_radius, "m; 0: the smallest flyable")
+      .def_readwrite("loiter_direction", &FollowParameters::loiter_direction, "'ccw' or 'cw'")
+      .def_readwrite("offset_distance", &FollowParameters::offset_distance, "L, m")
+      .def_readwrite("offset_angle", &FollowParameters::offset_angle, "theta, rad")
+      .def_property(
+          "offset_reference", [](const FollowParameters& p) { return to_string(p.offset_reference); },
+          [](FollowParameters& p, const std::string& v) {
+            p.offset_reference = offset_reference_from_string(v, "follow.offset_reference");
+          },
+          "'north' (theta from east on the map) or 'heading' (theta from the vehicle's heading)")
+      .def_readwrite("wind_compensation", &FollowParameters::wind_compensation, "plan in the air mass")
+      .def_readwrite("update_period", &FollowParameters::update_period, "s between waypoints (1 Hz)")
+      .def("validate", &FollowParameters::validate, "Raise VistrackError naming the first invalid field.");
+
+  const FollowFlight flight_defaults;
+  py::class_<FollowFlight>(m, "FollowFlight",
+                           "How a follow run is flown: integration ('discrete' | 'continuous'), step dt (s), "
+                           "max_time (s, 0: until the track ends).")
+      .def(py::init([](const std::string& integration, double dt, double max_time) {
+             FollowFlight f{flight_integration_from_string(integration, "flight.integration"), dt, max_time};
+             f.validate();
+             return f;
+           }),
+           py::kw_only(), py::arg("integration") = to_string(flight_defaults.integration),
+           py::arg("dt") = flight_defaults.dt, py::arg("max_time") = flight_defaults.max_time)
+      .def_property_readonly("integration", [](const FollowFlight& f) { return to_string(f.integration); })
+      .def_readwrite("dt", &FollowFlight::dt, "s")
+      .def_readwrite("max_time", &FollowFlight::max_time, "s; 0: until the track ends");
+
+  const DownwardCamera camera_defaults;
+  py::class_<DownwardCamera>(m, "DownwardCamera",
+                             "Downward conic camera (fov the full cone angle) on a roll gimbal that points it at the target as far as "
+                             "max_gimbal allows (0: body-fixed).")
+      .def(py::init([](double fov, double max_gimbal) {
+             DownwardCamera c{fov, max_gimbal};
+             c.validate();
+             return c;
+           }),
+           py::kw_only(), py::arg("fov") = camera_defaults.fov, py::arg("max_gimbal") = camera_defaults.max_gimbal,
+           "fov: full angle (rad, default 74 degrees); max_gimbal: the gimbal's roll range (rad, default 25 degrees).")
+      .def_readwrite("fov", &DownwardCamera::fov, "rad")
+      .def_readwrite("max_gimbal", &DownwardCamera::max_gimbal, "rad");
+  m.def("camera_sees", &camera_sees, py::arg("camera"), py::arg("uav"), py::arg("psi"), py::arg("bank"),
+        py::arg("target"), "Whether the ground point target (3,) is in the footprint of the camera at uav (3,).");
+  m.def("coordinated_bank", &coordinated_bank, py::arg("speed"), py::arg("turn_rate"),
+        "Bank angle atan(v psi_dot / g) of a coordinated turn, rad (positive left).");
+
+  py::class_<LoiterShape>(m, "LoiterShape", "The loiter pattern about its centre by arc length (circle or rose).")
+      .def_property_readonly("pattern", [](const LoiterShape& s) { return to_string(s.pattern); })
+      .def_readonly("radius", &LoiterShape::radius, "circle radius or the rose's extent, m")
+      .def_readonly("turn_radius", &LoiterShape::turn_radius, "the rose's turn radius rho, m")
+      .def_readonly("direction", &LoiterShape::direction, "+1 counter-clockwise turns")
+      .def_property_readonly("delta", &LoiterShape::delta, "rose: rotation of the line per pass beyond pi")
+      .def_property_readonly("piece_length", &LoiterShape::piece_length, "circle: circumference; rose: one pass")
+      .def(
+          "sample",
+          [](const LoiterShape& s, const InputArray& arcs) {
+            const std::vector<double> a = to_vector(arcs, "arcs");
+            Points2 p(static_cast<Eigen::Index>(a.size()), 2);
+            for (std::size_t i = 0; i < a.size(); ++i) p.row(static_cast<Eigen::Index>(i)) = s.position(a[i]).transpose();
+            return p;
+          },
+          py::arg("arcs"), "Positions (n, 2) relative to the centre at the given arc lengths.");
+
+  py::class_<FollowObservation>(m, "FollowObservation", "What the planner sees at an update.")
+      .def(py::init([](const Vec2& vehicle_position, const Vec2& vehicle_velocity, double vehicle_heading,
+                       const Vec2& uav_position, double uav_heading, const Vec2& offset_rate) {
+             return FollowObservation{vehicle_position, vehicle_velocity, vehicle_heading, uav_position, uav_heading,
+                                      offset_rate};
+           }),
+           py::kw_only(), py::arg("vehicle_position"), py::arg("vehicle_velocity"), py::arg("vehicle_heading") = 0.0,
+           py::arg("uav_position") = Vec2(0.0, 0.0), py::arg("uav_heading") = 0.0,
+           py::arg("offset_rate") = Vec2(0.0, 0.0))
+      .def_readwrite("vehicle_position", &FollowObservation::vehicle_position)
+      .def_readwrite("vehicle_velocity", &FollowObservation::vehicle_velocity)
+      .def_readwrite("vehicle_heading", &FollowObservation::vehicle_heading)
+      .def_readwrite("uav_position", &FollowObservation::uav_position)
+      .def_readwrite("uav_heading", &FollowObservation::uav_heading)
+      .def_readwrite("offset_rate", &FollowObservation::offset_rate);
+
+  py::class_<FollowTick>(m, "FollowTick", "One update of the planner: mode, pattern parameters, state, waypoint.")
+      .def_readonly("t", &FollowTick::t, "s")
+      .def_property_readonly("mode", [](const FollowTick& k) { return to_string(k.mode); }, "'sinusoid' | 'loiter' | 'straight'")
+      .def_readonly("speed_ratio", &FollowTick::speed_ratio, "sigma (inf when the offset point stands in the frame)")
+      .def_readonly("uav_speed", &FollowTick::uav_speed, "v_p planned with, m/s")
+      .def_readonly("frame_velocity", &FollowTick::frame_velocity, "offset point's velocity in the planning frame")
+      .def_readonly("track_angle", &FollowTick::track_angle, "direction of the sinusoid's axis, rad")
+      .def_readonly("amplitude", &FollowTick::amplitude, "A, m")
+      .def_readonly("period_distance", &FollowTick::period_distance, "D, m")
+      .def_readonly("period", &FollowTick::period, "s")
+      .def_readonly("phase", &FollowTick::phase, "sinusoid phase, rad")
+      .def_readonly("arc", &FollowTick::arc, "loiter arc length, m")
+      .def_readonly("capturing", &FollowTick::capturing, "holding the entry point until the UAV is close")
+      .def_readonly("offset_vector", &FollowTick::offset_vector, "O - vehicle, m")
+      .def_readonly("offset_point", &FollowTick::offset_point, "O, m")
+      .def_readonly("waypoint", &FollowTick::waypoint, "the waypoint issued at t, m");
+
+  py::class_<FollowPlanner>(m, "FollowPlanner", "The 1 Hz follow planner of sections II-V.")
+      .def(py::init<const FollowParameters&, const Uav&, const Vec2&>(), py::arg("parameters"), py::arg("uav"),
+           py::arg("wind_estimate") = Vec2(0.0, 0.0), "wind_estimate (east, north) m/s is used with compensation.")
+      .def("update", &FollowPlanner::update, py::arg("t"), py::arg("observation"),
+           "The update at time t: mode with hysteresis, pattern advanced, next waypoint.")
+      .def("offset_vector", &FollowPlanner::offset_vector, py::arg("vehicle_heading"), "O - vehicle for that heading.")
+      .def("set_offset", &FollowPlanner::set_offset, py::arg("distance"), py::arg("angle"),
+           "Change the offset's distance (m) and angle (rad) from the next update on.")
+      .def("relative_position", &FollowPlanner::relative_position, py::arg("tick"), py::arg("tau"),
+           "Desired position relative to the offset point tau s after the tick.")
+      .def(
+          "next_mode",
+          [](const FollowPlanner& p, const std::string& current, double sigma) {
+            return to_string(p.next_mode(mode_from_string(current), sigma));
+          },
+          py::arg("current"), py::arg("speed_ratio"), "The mode after `current` for sigma, with the hysteresis band.")
+      .def_property_readonly("loiter_shape", &FollowPlanner::loiter_shape, "The loiter pattern in use.");
+
+  py::class_<FollowMetrics>(m, "FollowMetrics", "Scores of one follow run (lengths in m, times in s).")
+      .def_readonly("duration", &FollowMetrics::duration)
+      .def_readonly("mean_tracking_error", &FollowMetrics::mean_tracking_error, "mean distance from the planned path")
+      .def_readonly("max_tracking_error", &FollowMetrics::max_tracking_error)
+      .def_readonly("mean_along_track_lag", &FollowMetrics::mean_along_track_lag, "mean lag behind the desired position")
+      .def_readonly("max_along_track_lag", &FollowMetrics::max_along_track_lag)
+      .def_readonly("final_along_track_lag", &FollowMetrics::final_along_track_lag)
+      .def_readonly("time_sinusoid", &FollowMetrics::time_sinusoid)
+      .def_readonly("time_loiter", &FollowMetrics::time_loiter)
+      .def_readonly("time_straight", &FollowMetrics::time_straight)
+      .def_readonly("time_capturing", &FollowMetrics::time_capturing, "s holding an entry point until reached")
+      .def_readonly("mode_switches", &FollowMetrics::mode_switches)
+      .def_readonly("camera_fraction", &FollowMetrics::camera_fraction, "time fraction with the vehicle in view")
+      .def_readonly("mean_vehicle_distance", &FollowMetrics::mean_vehicle_distance)
+      .def_readonly("mean_offset_distance", &FollowMetrics::mean_offset_distance)
+      .def_readonly("mean_offset_error", &FollowMetrics::mean_offset_error, "mean of UAV - offset point (2,)");
+
+  py::class_<FollowRun>(m, "FollowRun", "One follow run: per-sample arrays, the 1 Hz updates and the metrics.")
+      .def_readonly("t", &FollowRun::t, "sample times (s)")
+      .def_readonly("state", &FollowRun::state, "(n, 3) x, y, psi")
+      .def_readonly("turn_rate", &FollowRun::turn_rate, "applied turn rate (rad/s)")
+      .def_readonly("bank", &FollowRun::bank, "coordinated-turn bank (rad)")
+      .def_readonly("vehicle", &FollowRun::vehicle, "(n, 2) vehicle position")
+      .def_readonly("offset_point", &FollowRun::offset_point, "(n, 2)")
+      .def_readonly("desired", &FollowRun::desired, "(n, 2) desired position")
+      .def_readonly("target", &FollowRun::target, "(n, 2) the waypoint flown to")
+      .def_property_readonly("mode", [](const FollowRun& r) {
+             std::vector<std::string> names;
+             names.reserve(r.mode.size());
+             for (std::uint8_t k : r.mode) names.push_back(to_string(static_cast<FollowMode>(k)));
+             return names;
+           }, "mode of the current update at each sample")
+      .def_readonly("capturing", &FollowRun::capturing, "the update holds its entry point (0/1)")
+      .def_readonly("in_view", &FollowRun::in_view, "vehicle in the camera footprint (0/1)")
+      .def_readonly("tracking_error", &FollowRun::tracking_error, "distance from the planned path (m)")
+      .def_readonly("along_track_lag", &FollowRun::along_track_lag, "m, > 0 behind")
+      .def_readonly("wind", &FollowRun::wind, "(n, 2) true wind")
+      .def_readonly("ticks", &FollowRun::ticks, "the 1 Hz updates")
+      .def_readonly("metrics", &FollowRun::metrics)
+      .def_property_readonly("waypoints", &FollowRun::waypoints, "(k, 2) the generated waypoints")
+      .def_property_readonly("waypoint_times", &FollowRun::waypoint_times, "when each waypoint was issued (s)");
+
+  const auto run_options = [](const FollowFlight& flight, const DownwardCamera& camera, std::optional<Vec3> start,
+                               double path_window, const std::vector<std::tuple<double, double, double>>& offsets) {
+    FollowRunOptions options;
+    options.flight = flight;
+    options.camera = camera;
+    options.start = start;
+    options.path_window = path_window;
+    for (const auto& [t, d, a] : offsets) options.offset_schedule.push_back({t, d, a});
+    return options;
+  };
+  const FollowRunOptions option_defaults;
+  m.def(
+      "follow",
+      [run_options](const GroundVehicle& vehicle, const Uav& uav, const FollowParameters& parameters, const Wind& wind,
+                    std::optional<Vec2> wind_estimate, const FollowFlight& flight, const DownwardCamera& camera,
+                    std::optional<Vec3> start, double path_window,
+                    const std::vector<std::tuple<double, double, double>>& offsets) {
+        const FollowRunOptions options = run_options(flight, camera, start, path_window, offsets);
+        const Vec2 estimate = wind_estimate.value_or(Vec2(wind.east, wind.north));
+        py::gil_scoped_release release;
+        return follow(vehicle, uav, parameters, wind, estimate, options);
+      },
+      py::arg("vehicle"), py::arg("uav"), py::arg("parameters"), py::arg("wind") = Wind{}, py::kw_only(),
+      py::arg("wind_estimate") = py::none(), py::arg("flight") = FollowFlight{}, py::arg("camera") = DownwardCamera{},
+      py::arg("start") = py::none(), py::arg("path_window") = option_defaults.path_window,
+      py::arg("offset_schedule") = std::vector<std::tuple<double, double, double>>{},
+      "Fly the follow planner's 1 Hz waypoints with the flight layer (the waypoint paper's law (5), a "
+      "WaypointFollower fed during the flight). wind: the true wind (vistrack.flight.Wind); wind_estimate "
+      "(east, north): what the planner compensates (None: the true constant wind). start: (x, y, psi) or None "
+      "(on the planned path). offset_schedule: (t, distance, angle) keys, linear in between.");
+  m.def(
+      "orbit_follow",
+      [run_options](const GroundVehicle& vehicle, const Uav& uav, const Control& control, double radius,
+                    const FollowParameters& parameters, const Wind& wind, const FollowFlight& flight,
+                    const DownwardCamera& camera, std::optional<Vec3> start, double path_window) {
+        const FollowRunOptions options = run_options(flight, camera, start, path_window, {});
+        py::gil_scoped_release release;
+        return orbit_follow(vehicle, uav, control, radius, parameters, wind, options);
+      },
+      py::arg("vehicle"), py::arg("uav"), py::arg("control"), py::arg("radius"), py::arg("parameters"),
+      py::arg("wind") = Wind{}, py::kw_only(), py::arg("flight") = FollowFlight{}, py::arg("camera") = DownwardCamera{},
+      py::arg("start") = py::none(), py::arg("path_window") = option_defaults.path_window,
+      "The baseline follower: the tracking paper's vector field (74) and steering law (86) orbiting the offset "
+      "point (from parameters) at a constant radius, flown by the flight layer in the true wind. The result's "
+      "desired position is the orbit's nearest point.");
+}
+
+}  // namespace vistrack::bindings

@@ -1,0 +1,343 @@
+// Following a ground vehicle (the paper in ../shared/seeds/ground_vehicle_following.txt): sinusoidal mode with the amplitude from the
+// speed ratio (section II, eqs. 1-10), loiter mode (circle or rose, Fig. 3) above a threshold
+// with a hysteresis band, an offset vector, wind compensation (section III) and waypoints at 1 Hz
+// (section V). The planner plans; the flight layer flies its waypoints (follow_run.cpp).
+//
+// The sinusoid (eq. 1) lies in a frame x2-y2 fixed on the ground whose x axis is the vehicle's
+// direction of travel: y = A sin(2 pi x / D), D = v_g T. The UAV runs along it at its speed v_p,
+// so x_dot = v_p / sqrt(1 + A'^2 cos^2(2 pi x / D)) (eq. 5, A' = 2 pi A / D), and covering one
+// period in T = D / v_g gives sigma = v_p / v_g = (1/D) int_0^D sqrt(1 + A'^2 cos^2) dx
+// = (2/pi) E(-A'^2) (eqs. 9-10, E the complete elliptic integral of the second kind in the
+// parameter convention). The planner keeps the phase phi = 2 pi x / D as its state and writes
+// the desired position relative to the offset point O(t) (the vehicle's position plus the offset
+// vector), which the sinusoid visits once per period:
+//   lead(phi) = x - v_g t = (D / 2 pi) phi - S(phi) / sigma,   lateral(phi) = A sin(phi),
+// where S(phi) = (D / 2 pi) int_0^phi sqrt(1 + A'^2 cos^2 u) du is the arc length from the start
+// of the period (so S(2 pi) = sigma D, t = S / v_p). With constant v_g this is exactly the
+// paper's fixed sinusoid; when v_g or the heading changes, the pattern follows the vehicle with
+// the phase continuous.
+//
+// Wind compensation (derived here; the paper only says the path "is offset at a ratio of the
+// wind velocity vector"). The aircraft holds its airspeed v_a, so a path is flyable at constant
+// airspeed exactly when it is planned in the air mass: there the UAV is a wind-free Dubins
+// vehicle of speed v_a, and the offset point moves at v_O - w (w the wind estimate). The planner
+// therefore plans the relative pattern with sigma = v_a / |v_O - w| along the direction of
+// v_O - w, and maps it to the ground by adding the drift of the air mass: a point planned t - t0
+// seconds ahead in the air moves by w (t - t0). Relative to the offset point both frames agree,
+// so the desired ground position is O(t) + relative(t) and its airspeed is exactly v_a.
+// Without compensation the planner ignores the wind: it plans on the ground with v_p = the
+// airspeed and the direction of v_O, a path the UAV cannot fly at the planned rate in wind (the
+// paper's Fig. 6). (The paper plans with the measured ground speed; planned so, sigma swings
+// with the heading at every update and the path degrades further: see the README.)
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vistrack/flight.hpp"
+#include "vistrack/geometry.hpp"
+#include "vistrack/guidance.hpp"
+#include "vistrack/parameters.hpp"
+
+namespace vistrack {
+
+// ---- The sinusoid of section II ---------------------------------------------------------------
+
+// sigma(A) of eqs. (9)-(10): (2/pi) E(-A'^2), A' = 2 pi A / D, by Boost.Math's ellint_2 through
+// 1 + a^2 cos^2 u = (1 + a^2)(1 - m sin^2 u), m = a^2 / (1 + a^2) (derived; no negative
+// parameter needed). amplitude >= 0, period_distance > 0.
+double sinusoid_speed_ratio(double amplitude, double period_distance);
+// The inverse: A >= 0 with sinusoid_speed_ratio(A, D) = speed_ratio, to 1e-12 relative
+// (safeguarded Newton on the exact derivative). speed_ratio >= 1 (1 gives 0); below 1 no
+// sinusoid is slow enough and Error names speed_ratio.
+double sinusoid_amplitude(double speed_ratio, double period_distance);
+// The slope amplitude a = A' = 2 pi A / D for a speed ratio (the shape does not depend on D).
+double sinusoid_slope(double speed_ratio);
+// eq. (5): the along-track rate x_dot = v_p / sqrt(1 + A'^2 cos^2(2 pi x / D)).
+double sinusoid_along_track_rate(double x, double amplitude, double period_distance, double uav_speed);
+// Arc length of y = A sin(2 pi x / D) from x = 0 to x (any real x; odd in x). Incomplete
+// elliptic integral of the second kind (Boost.Math).
+double sinusoid_arc_length(double x, double amplitude, double period_distance);
+// The phase phi = 2 pi x / D at which the arc length from 0 is `arc` (any real arc), to 1e-13.
+double sinusoid_phase_at_arc(double arc, double amplitude, double period_distance);
+
+// ---- The ground vehicle -------------------------------------------------------------------------
+
+// One leg of a driven route: heading (radians counter-clockwise from east), speed at the start
+// and at the end (linear in between; 0 and 0 is a stop, the vehicle standing facing `heading`),
+// duration. end_speed NaN: the same as speed.
+struct VehicleLeg {
+  double heading = 0.0;
+  double speed = 0.0;
+  double duration = 0.0;
+  double end_speed = std::numeric_limits<double>::quiet_NaN();
+};
+
+// A ground vehicle as a piecewise-linear track (t_i, x_i, y_i): position interpolated, velocity
+// of the segment (right-continuous), heading of the last segment that moves (the first moving
+// one before it; legs give stops their own heading).
+class GroundVehicle {
+ public:
+  // times strictly increasing, all finite, at least two samples. headings: per segment (size
+  // n - 1) or empty (from the motion). Error names "track.t[i]", "track.x[i]", ...
+  GroundVehicle(std::vector<double> times, Points2 positions, std::vector<double> headings = {});
+  // Legs from `start` at time t0. A leg with a changing speed is sampled every `step` seconds.
+  static GroundVehicle from_legs(const std::vector<VehicleLeg>& legs, const Vec2& start = Vec2::Zero(),
+                                 double t0 = 0.0, double step = 0.1);
+  // Along a polyline (a road path, (n, 2)) with the speed profile of `legs` (their headings are
+  // ignored: the path gives them); stops where the legs stop. Legs longer than the road drive it
+  // back and forth (a U-turn at each end).
+  static GroundVehicle along_path(const Points2& path, const std::vector<VehicleLeg>& legs, double t0 = 0.0,
+                                  double step = 0.1);
+
+  Vec2 position(double t) const;  // clamped to [start, end]
+  Vec2 velocity(double t) const;  // 0 outside [start, end)
+  double heading(double t) const;
+  double speed(double t) const { return velocity(t).norm(); }
+  double start_time() const { return times_.front(); }
+  double end_time() const { return times_.back(); }
+  const std::vector<double>& times() const { return times_; }
+  const Points2& positions() const { return positions_; }
+  const std::vector<double>& headings() const { return headings_; }  // per segment
+  double max_speed() const;
+
+ private:
+  // along_path on a polyline long enough for the legs (ends where the polyline ends).
+  static GroundVehicle driven_along(const Points2& path, const std::vector<VehicleLeg>& legs, double t0, double step);
+  std::size_t segment(double t) const;
+  std::vector<double> times_;
+  Points2 positions_;
+  std::vector<double> headings_;
+};
+
+// ---- Loiter patterns (Fig. 3) ---------------------------------------------------------------------
+
+enum class FollowMode : std::uint8_t { Sinusoid = 0, Loiter = 1, Straight = 2 };
+std::string to_string(FollowMode mode);  // "sinusoid" | "loiter" | "straight"
+std::string to_string(LoiterPattern pattern);
+LoiterPattern loiter_pattern_from_string(const std::string& text, const std::string& field = "loiter_pattern");
+std::string to_string(OffsetReference reference);
+OffsetReference offset_reference_from_string(const std::string& text, const std::string& field = "offset_reference");
+
+// A closed or endless curve about the loiter centre, by arc length s >= 0: the circle of radius
+// R, or the rose of Fig. 3 built from its description (waypoints along a line through the
+// centre, the line rotated after each pass): a straight pass of length 2 l through the centre,
+// then a turn of radius rho and angle pi + delta onto the next line, rotated by pi + delta.
+// The turn is tangent to both lines, so l = rho / tan(delta / 2), and the pattern reaches
+// rho + rho / sin(delta / 2) = extent from the centre: sin(delta / 2) = rho / (extent - rho),
+// extent >= 2 rho (delta = pi: circles of radius rho through the centre).
+struct LoiterShape {
+  LoiterPattern pattern = LoiterPattern::Circle;
+  double radius = 1.0;      // circle radius, or the rose's extent
+  double turn_radius = 1.0; // rose: rho
+  int direction = +1;       // +1 counter-clockwise turns
+  double rotation = 0.0;    // rose: angle of the first line (radians from east)
+
+  void validate() const;
+  double delta() const;         // rose: rotation of the line per pass beyond pi
+  double half_line() const;     // rose: l
+  double piece_length() const;  // circle: 2 pi R; rose: 2 l + rho (pi + delta)
+  Vec2 position(double s) const;  // relative to the centre
+  Vec2 tangent(double s) const;   // unit
+};
+
+// ---- The planner ----------------------------------------------------------------------------------
+
+// What the planner knows at an update: the vehicle's position and velocity (its 1 Hz report) and
+// the UAV's position and heading.
+struct FollowObservation {
+  Vec2 vehicle_position = Vec2::Zero();
+  Vec2 vehicle_velocity = Vec2::Zero();
+  double vehicle_heading = 0.0;  // the offset's reference when it is "heading"
+  Vec2 uav_position = Vec2::Zero();
+  double uav_heading = 0.0;
+  Vec2 offset_rate = Vec2::Zero();  // rate of change of the offset vector itself (a moving offset)
+};
+
+// One 1 Hz update: the mode, the pattern's parameters and its state at time t.
+struct FollowTick {
+  double t = 0.0;
+  FollowMode mode = FollowMode::Straight;
+  double speed_ratio = 0.0;     // sigma used for the mode (+infinity when the offset point stands)
+  double uav_speed = 0.0;       // v_p planned with (the airspeed)
+  Vec2 frame_velocity = Vec2::Zero();  // velocity of the offset point in the planning frame
+  double track_angle = 0.0;     // direction of the sinusoid's x axis (of frame_velocity)
+  double amplitude = 0.0;       // A, m (sinusoid)
+  double period_distance = 0.0; // D, m (sinusoid, after the curvature floor)
+  double period = 0.0;          // D / |frame_velocity|, s (sinusoid)
+  double phase = 0.0;           // sinusoid: phi at t
+  double arc = 0.0;             // loiter: s along the pattern at t
+  bool capturing = false;       // holding the entry point until the UAV is within one update's flight
+  Vec2 offset_vector = Vec2::Zero();   // O - vehicle at t
+  Vec2 offset_point = Vec2::Zero();    // O at t
+  Vec2 waypoint = Vec2::Zero();        // the desired position update_period later, predicted
+};
+
+// The follow planner of sections II-V. update() runs at every update_period.
+class FollowPlanner {
+ public:
+  // wind_estimate: the constant wind the UAV estimates (used only with wind_compensation).
+  FollowPlanner(const FollowParameters& parameters, const Uav& uav, const Vec2& wind_estimate = Vec2::Zero());
+
+  // The update at time t: the mode (with hysteresis), the pattern's state advanced from the
+  // previous update, and the next waypoint.
+  FollowTick update(double t, const FollowObservation& observation);
+
+  // The offset vector for a vehicle heading (rotated with it when the reference is "heading").
+  Vec2 offset_vector(double vehicle_heading) const;
+  // Change the offset's distance and angle (Fig. 8 moves the loiter ahead of the stopped vehicle).
+  void set_offset(double distance, double angle);
+  // The desired position relative to the offset point, tau >= 0 seconds after `tick` (the
+  // pattern of the tick's mode with its parameters held), and its velocity in the planning frame.
+  Vec2 relative_position(const FollowTick& tick, double tau) const;
+  // The loiter shape in use and the speed ratio below which the planner enters the sinusoid.
+  const LoiterShape& loiter_shape() const { return loiter_; }
+  const FollowParameters& parameters() const { return parameters_; }
+  const Uav& uav() const { return uav_; }
+  const Vec2& wind_estimate() const { return wind_; }
+  bool has_ticks() const { return has_previous_; }
+
+  // The next mode from sigma with the hysteresis band (exposed for tests).
+  FollowMode next_mode(FollowMode current, double speed_ratio) const;
+
+ private:
+  double pattern_speed(const FollowTick& tick, double s) const;  // ds/dt of the loiter pattern
+  double advance_arc(const FollowTick& tick, double tau) const;
+  double entry_cost(const Vec2& point, const Vec2& direction, const Vec2& uav_relative, double uav_heading) const;
+  void enter_sinusoid(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const;
+  void enter_loiter(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const;
+  void set_sinusoid_shape(FollowTick& tick) const;
+
+  FollowParameters parameters_;  // offset_distance / offset_angle: the current offset
+  Uav uav_;
+  Vec2 wind_;
+  LoiterShape loiter_;
+  FollowTick previous_;
+  bool has_previous_ = false;
+};
+
+// ---- Camera ----------------------------------------------------------------------------------------
+
+// A downward conic camera (the loiter area's model: a 74-degree cone) on a one-axis roll gimbal
+// (up to 25 degrees), which rolls the camera towards the target as far as it can; max_gimbal 0
+// is a body-fixed camera (the paper's camera on the bottom of the plane). The body banks as in
+// a coordinated turn: phi = atan(v psi_dot / g). The vehicle is seen when the angle between the
+// camera's axis and the line to it is at most fov / 2. A point test for the follow metric; the
+// loiter area computes the footprint ellipse for its disks (peers: to be shared from a lower area).
+struct DownwardCamera {
+  double fov = 74.0 * kPi / 180.0;         // full angle, rad
+  double max_gimbal = 25.0 * kPi / 180.0;  // rad
+  void validate() const;
+};
+// Bank angle of a coordinated turn at speed v and turn rate psi_dot (rad, positive left).
+double coordinated_bank(double speed, double turn_rate);
+// Whether the ground point `target` (x, y, z) is inside the footprint of the camera on a UAV at
+// `uav` (x, y, z) with heading psi and bank (positive: left wing down).
+bool camera_sees(const DownwardCamera& camera, const Vec3& uav, double psi, double bank, const Vec3& target);
+
+// ---- A follow run: the planner's waypoints flown by the flight layer ------------------------------
+
+// Scores of one run. "Desired position": the offset point where the vehicle really is plus the
+// pattern of the current update; "planned path": the curve of desired positions.
+struct FollowMetrics {
+  double duration = 0.0;               // s
+  double mean_tracking_error = 0.0;    // distance from the planned path (within +-path_window), m
+  double max_tracking_error = 0.0;
+  double mean_along_track_lag = 0.0;   // (desired - UAV) . desired direction of travel, m (> 0 behind)
+  double max_along_track_lag = 0.0;
+  double final_along_track_lag = 0.0;
+  double time_sinusoid = 0.0;          // s in each mode
+  double time_loiter = 0.0;
+  double time_straight = 0.0;
+  double time_capturing = 0.0;         // s holding a pattern's entry point until the UAV reached it
+  int mode_switches = 0;               // changes of mode between updates
+  double camera_fraction = 0.0;        // of the time the vehicle is in the camera footprint
+  double mean_vehicle_distance = 0.0;  // horizontal UAV - vehicle, m
+  double mean_offset_distance = 0.0;   // horizontal UAV - offset point, m
+  Vec2 mean_offset_error = Vec2::Zero();  // mean of UAV - offset point: how far off-centre, m
+};
+
+// A change of the offset over time: (t, distance, angle) keys, linear in between, held outside.
+struct OffsetKey {
+  double t = 0.0;
+  double distance = 0.0;
+  double angle = 0.0;
+};
+
+struct FollowRunOptions {
+  FollowFlight flight;
+  DownwardCamera camera;
+  // The UAV's start (x, y, psi). Unset: on the planned path at the first desired position,
+  // heading along it.
+  std::optional<Vec3> start;
+  double path_window = 10.0;  // s either side within which the tracking error looks for the path
+  std::vector<OffsetKey> offset_schedule;  // empty: the parameters' fixed offset
+  void validate() const;
+};
+
+struct FollowRun {
+  // Per flight sample (every flight.dt).
+  std::vector<double> t;
+  Points3 state;                      // x, y, psi
+  std::vector<double> turn_rate;      // applied, rad/s
+  std::vector<double> bank;           // coordinated-turn bank, rad
+  Points2 vehicle;                    // vehicle position
+  Points2 offset_point;
+  Points2 desired;                    // desired position
+  Points2 target;                     // the waypoint being flown to
+  std::vector<std::uint8_t> mode;     // FollowMode of the current update
+  std::vector<std::uint8_t> capturing;  // the current update holds its entry point (empty: never)
+  std::vector<std::uint8_t> in_view;  // vehicle in the camera footprint
+  std::vector<double> tracking_error; // distance from the planned path
+  std::vector<double> along_track_lag;
+  Points2 wind;                       // the true wind at each sample
+  // Per update (1 Hz): the planner's state and the waypoint it issued at that time.
+  std::vector<FollowTick> ticks;
+  FollowMetrics metrics;
+  // The generated waypoints and when each was issued (issue 16 exports these).
+  Points2 waypoints() const;
+  std::vector<double> waypoint_times() const;
+};
+
+// Flies the follow planner's waypoints with the flight layer: at every update the planner sees
+// the vehicle (position, velocity, heading at that time) and the UAV, and issues the next
+// waypoint to a WaypointFollower that always steers along the newest leg. true_wind: what the
+// vehicle flies in (constant plus optional gusts); wind_estimate: what the planner compensates.
+FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParameters& parameters,
+                 const Wind& true_wind, const Vec2& wind_estimate, const FollowRunOptions& options = {});
+
+// The metrics of a run's samples (fills run.tracking_error, along_track_lag, in_view, metrics).
+void score_follow_run(FollowRun& run, const Uav& uav, const DownwardCamera& camera, double path_window);
+
+// ---- Baseline: the tracking pipeline's vector field about the vehicle ------------------------------
+
+// The guidance vector field (74) and steering law (86) of the visibility-volume tracking paper,
+// orbiting the offset point at a constant radius, as a flight-layer guidance that sees the
+// vehicle's position and velocity at every step (what vistrack.simulate does with a PoiPath, here
+// with stops, turns and wind). The target it reports is the offset point.
+class OrbitFollower : public FlightGuidance {
+ public:
+  OrbitFollower(const GroundVehicle& vehicle, const FollowPlanner& offsets, const GuidanceGains& gains, double radius);
+  void start(const Configuration&, double) override {}
+  GuidanceCommand command(const Configuration& state, double t) const override;
+  void advance(const Configuration&, double) override {}
+  bool done() const override { return false; }
+
+ private:
+  const GroundVehicle& vehicle_;
+  const FollowPlanner& offsets_;
+  GuidanceGains gains_;
+  double radius_;
+};
+
+// Flies the baseline like follow() flies the planner. In the result the desired position is the
+// orbit's nearest point (the tracking error is |r - R|), the mode "loiter", and there are no
+// updates; the offset comes from `parameters` (the rest of it is unused). start unset: on the
+// orbit ahead of the offset point, heading along the field.
+FollowRun orbit_follow(const GroundVehicle& vehicle, const Uav& uav, const Control& control, double radius,
+                       const FollowParameters& parameters, const Wind& true_wind, const FollowRunOptions& options = {});
+
+}  // namespace vistrack

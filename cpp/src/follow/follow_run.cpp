@@ -1,0 +1,161 @@
+// A follow run: the planner's 1 Hz waypoints flown by the flight layer's waypoint follower.
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <utility>
+
+#include "vistrack/error.hpp"
+#include "vistrack/flight.hpp"
+#include "vistrack/follow.hpp"
+
+namespace vistrack {
+
+namespace {
+
+// The follower accepts a waypoint from any distance, so it switches to each new one as soon as
+// the planner issues it: it always flies the newest leg (previous waypoint -> newest), never
+// back to a stale one.
+constexpr double kSwitchAtOnce = std::numeric_limits<double>::max();
+// The waypoint paper's gains are for its turn radius 0.7; g and h multiply lengths.
+constexpr double kPaperTurnRadius = 0.7;
+
+FollowObservation observe(const GroundVehicle& vehicle, double t, const Vec2& uav, double psi) {
+  FollowObservation o;
+  o.vehicle_position = vehicle.position(t);
+  o.vehicle_velocity = vehicle.velocity(t);
+  o.vehicle_heading = vehicle.heading(t);
+  o.uav_position = uav;
+  o.uav_heading = psi;
+  return o;
+}
+
+// On the planned path at the first desired position, heading (in the air) along it.
+Configuration start_on_plan(const GroundVehicle& vehicle, const Uav& uav, const FollowParameters& parameters,
+                            const Vec2& wind_estimate, const Vec2& wind, double t0) {
+  FollowPlanner probe(parameters, uav, wind_estimate);
+  const double heading = vehicle.heading(t0);
+  const Vec2 offset_point = vehicle.position(t0) + probe.offset_vector(heading);
+  const FollowTick tick = probe.update(t0, observe(vehicle, t0, offset_point, heading));
+  const double h = 0.01;
+  const Vec2 p0 = tick.offset_point + probe.relative_position(tick, 0.0);
+  const Vec2 p1 = tick.offset_point + vehicle.velocity(t0) * h + probe.relative_position(tick, h);
+  const Vec2 air = (p1 - p0) / h - wind;
+  return {p0.x(), p0.y(), air.norm() > 0.0 ? std::atan2(air.y(), air.x()) : heading};
+}
+
+// The offset (distance, angle) of the schedule at t, or the parameters' when it is empty.
+std::pair<double, double> scheduled_offset(const std::vector<OffsetKey>& keys, const FollowParameters& p, double t) {
+  if (keys.empty()) return {p.offset_distance, p.offset_angle};
+  if (t <= keys.front().t) return {keys.front().distance, keys.front().angle};
+  for (std::size_t i = 1; i < keys.size(); ++i) {
+    if (t < keys[i].t) {
+      const double f = (t - keys[i - 1].t) / (keys[i].t - keys[i - 1].t);
+      return {keys[i - 1].distance + f * (keys[i].distance - keys[i - 1].distance),
+              keys[i - 1].angle + f * (keys[i].angle - keys[i - 1].angle)};
+    }
+  }
+  return {keys.back().distance, keys.back().angle};
+}
+
+}  // namespace
+
+FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParameters& parameters,
+                 const Wind& true_wind, const Vec2& wind_estimate, const FollowRunOptions& options) {
+  uav.validate();
+  parameters.validate();
+  options.validate();
+  true_wind.validate();
+  const Vec2 steady(true_wind.east, true_wind.north);
+  if (!(steady.norm() < uav.speed))
+    detail::fail_field("wind", detail::to_text(steady.x()) + ", " + detail::to_text(steady.y()),
+                       "the wind must be slower than the UAV's airspeed " + detail::to_text(uav.speed));
+  const double t0 = vehicle.start_time();
+  const double duration = options.flight.max_time > 0.0 ? options.flight.max_time : vehicle.end_time() - t0;
+  const double period = parameters.update_period;
+
+  const Configuration start = options.start
+                                  ? Configuration{options.start->x(), options.start->y(), options.start->z()}
+                                  : start_on_plan(vehicle, uav, [&] {
+                                      FollowParameters at_start = parameters;
+                                      std::tie(at_start.offset_distance, at_start.offset_angle) =
+                                          scheduled_offset(options.offset_schedule, parameters, t0);
+                                      return at_start;
+                                    }(), wind_estimate, steady, t0);
+  const WindField wind(true_wind, uav.speed, t0, duration);
+  FollowPlanner planner(parameters, uav, wind_estimate);
+  FollowRun run;
+
+  LineFeedbackGains gains;
+  gains.g *= kPaperTurnRadius / uav.min_turn_radius;
+  gains.h *= kPaperTurnRadius / uav.min_turn_radius;
+  const LineFeedback law(uav.speed, uav.min_turn_radius, options.flight.dt, gains);
+
+  // The planner's update at t with the scheduled offset and its rate over the next update.
+  const auto plan = [&](double t, const Vec2& p, double psi) {
+    const auto [distance, angle] = scheduled_offset(options.offset_schedule, parameters, t);
+    planner.set_offset(distance, angle);
+    FollowObservation o = observe(vehicle, t, p, psi);
+    if (!options.offset_schedule.empty()) {
+      const auto [d1, a1] = scheduled_offset(options.offset_schedule, parameters, t + period);
+      const double heading = o.vehicle_heading;
+      const Vec2 now = planner.offset_vector(heading);
+      planner.set_offset(d1, a1);
+      o.offset_rate = (planner.offset_vector(heading) - now) / period;
+      planner.set_offset(distance, angle);
+    }
+    run.ticks.push_back(planner.update(t, o));
+  };
+  const Vec2 start_position(start.x, start.y);
+  plan(t0, start_position, start.psi);
+  WaypointFollower follower(law, {run.ticks.back().waypoint}, kSwitchAtOnce, /*finish_at_last=*/false);
+
+  // Every update_period: observe, plan, issue the next waypoint (available at once).
+  double next_update = t0 + period;
+  const auto on_step = [&](double t, const Configuration& q) {
+    if (t < next_update - 1e-9 || t >= vehicle.end_time() - 1e-9) return;  // no update once the track ends
+    plan(t, Vec2(q.x, q.y), q.psi);
+    follower.add_waypoint(run.ticks.back().waypoint, t);
+    while (next_update <= t + 1e-9) next_update += period;
+  };
+  FlightOptions flight;
+  flight.integration = options.flight.integration;
+  flight.dt = options.flight.dt;
+  flight.max_time = duration;
+  const FlightTrajectory trajectory = fly(uav, wind, follower, start, flight, t0, on_step);
+
+  // Per sample: the vehicle, the offset point and the desired position of the current update.
+  const std::size_t n = trajectory.size();
+  run.t = trajectory.t;
+  run.state.resize(static_cast<Eigen::Index>(n), 3);
+  run.vehicle.resize(static_cast<Eigen::Index>(n), 2);
+  run.offset_point.resize(static_cast<Eigen::Index>(n), 2);
+  run.desired.resize(static_cast<Eigen::Index>(n), 2);
+  run.target.resize(static_cast<Eigen::Index>(n), 2);
+  run.wind.resize(static_cast<Eigen::Index>(n), 2);
+  run.turn_rate = trajectory.command;
+  run.mode.resize(n);
+  run.capturing.resize(n);
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto r = static_cast<Eigen::Index>(i);
+    const double t = trajectory.t[i];
+    while (k + 1 < run.ticks.size() && run.ticks[k + 1].t <= t + 1e-9) ++k;
+    const FollowTick& tick = run.ticks[k];
+    const Vec2 g = vehicle.position(t);
+    const auto [distance, angle] = scheduled_offset(options.offset_schedule, parameters, t);
+    planner.set_offset(distance, angle);
+    const Vec2 o = g + planner.offset_vector(vehicle.heading(t));
+    run.state.row(r) << trajectory.x[i], trajectory.y[i], trajectory.psi[i];
+    run.vehicle.row(r) = g.transpose();
+    run.offset_point.row(r) = o.transpose();
+    run.desired.row(r) = (o + planner.relative_position(tick, t - tick.t)).transpose();
+    run.target.row(r) << trajectory.target_x[i], trajectory.target_y[i];
+    run.wind.row(r) << trajectory.wind_east[i], trajectory.wind_north[i];
+    run.mode[i] = static_cast<std::uint8_t>(tick.mode);
+    run.capturing[i] = tick.capturing ? 1 : 0;
+  }
+  score_follow_run(run, uav, options.camera, options.path_window);
+  return run;
+}
+
+}  // namespace vistrack

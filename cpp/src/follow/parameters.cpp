@@ -1,0 +1,40 @@
+// Validation of the follow planner's parameters (each default lives in parameters.hpp).
+#include <cmath>
+
+#include "vistrack/error.hpp"
+#include "vistrack/follow.hpp"
+#include "vistrack/parameters.hpp"
+
+namespace vistrack {
+
+void FollowParameters::validate() const {
+  require_positive(period, "follow.period");
+  if (!(turn_margin >= 1.0) || !std::isfinite(turn_margin))
+    detail::fail_field("follow.turn_margin", turn_margin, "must be a finite number >= 1 (a multiple of r_min)");
+  if (!(threshold > 1.0) || !std::isfinite(threshold))
+    detail::fail_field("follow.threshold", threshold, "must be a finite number > 1 (a speed ratio v_p / v_g)");
+  require_non_negative(hysteresis, "follow.hysteresis");
+  if (hysteresis > threshold)
+    detail::fail_field("follow.hysteresis", hysteresis,
+                       "the band must not be wider than the threshold " + detail::to_text(threshold));
+  if (!(threshold - 0.5 * hysteresis > 1.0))
+    detail::fail_field("follow.hysteresis", hysteresis,
+                       "the band's lower edge threshold - hysteresis / 2 must stay above 1 (a loiter needs v_p > v_g)");
+  require_non_negative(loiter_radius, "follow.loiter_radius");
+  require_non_negative(offset_distance, "follow.offset_distance");
+  require_finite(offset_angle, "follow.offset_angle");
+  require_positive(update_period, "follow.update_period");
+}
+
+void FollowFlight::validate() const {
+  require_positive(dt, "flight.dt");
+  require_non_negative(max_time, "flight.max_time");
+}
+
+void DownwardCamera::validate() const {
+  if (!(fov > 0.0 && fov < kPi)) detail::fail_field("camera.fov", fov, "must be in (0, pi) radians");
+  if (!(max_gimbal >= 0.0 && max_gimbal < 0.5 * kPi))
+    detail::fail_field("camera.max_gimbal", max_gimbal, "must be in [0, pi/2) radians");
+}
+
+}  // namespace vistrack

@@ -1,0 +1,253 @@
+// The follow planner (sections II, III, V): mode with hysteresis, the pattern's state from one
+// 1 Hz update to the next, and the waypoint.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "vistrack/error.hpp"
+#include "vistrack/follow.hpp"
+
+namespace vistrack {
+
+namespace {
+
+// A turn of the planning frame by more than this between two updates (a corner of the road)
+// re-enters the sinusoid at the phase nearest to the UAV instead of rotating the pattern about
+// the offset point, which would throw the desired position across it.
+constexpr double kReentryTurn = 20.0 * kPi / 180.0;
+// Substeps of the loiter pattern's speed equation (RK4), s.
+constexpr double kLoiterStep = 0.05;
+
+Vec2 rotate(const Vec2& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+double wrap_phase(double phi) { return phi - kTwoPi * std::floor(phi / kTwoPi); }
+
+// Arc length of the tick's sinusoid from phase 0 to phi.
+double arc_at_phase(const FollowTick& tick, double phi) {
+  return sinusoid_arc_length(tick.period_distance * phi / kTwoPi, tick.amplitude, tick.period_distance);
+}
+
+// The sinusoid relative to the offset point, in the frame of its x axis: lead and lateral.
+Vec2 sinusoid_point(const FollowTick& tick, double phi, double arc) {
+  const double lead = tick.period_distance * phi / kTwoPi - arc / tick.speed_ratio;
+  return {lead, tick.amplitude * std::sin(phi)};
+}
+
+}  // namespace
+
+FollowPlanner::FollowPlanner(const FollowParameters& parameters, const Uav& uav, const Vec2& wind_estimate)
+    : parameters_(parameters), uav_(uav), wind_(wind_estimate) {
+  parameters_.validate();
+  uav_.validate();
+  require_finite(wind_.x(), "wind_estimate.east");
+  require_finite(wind_.y(), "wind_estimate.north");
+  if (!(wind_.norm() < uav_.speed))
+    detail::fail_field("wind_estimate", detail::to_text(wind_.x()) + ", " + detail::to_text(wind_.y()),
+                       "the wind must be slower than the UAV's airspeed " + detail::to_text(uav_.speed));
+  // The loiter's turn radius: Lemma 6 of the tracking paper, r_min (1 + v_O / v)^2, at the fastest
+  // offset point a loiter keeps (sigma at the band's lower edge), with the planning margin.
+  const double lower = parameters_.threshold - 0.5 * parameters_.hysteresis;
+  const double turn = parameters_.turn_margin * uav_.min_turn_radius * std::pow(1.0 + 1.0 / lower, 2);
+  loiter_.pattern = parameters_.loiter_pattern;
+  loiter_.direction = sign(parameters_.loiter_direction);
+  loiter_.turn_radius = turn;
+  const double automatic = loiter_.pattern == LoiterPattern::Circle ? turn : 3.0 * turn;
+  loiter_.radius = parameters_.loiter_radius > 0.0 ? parameters_.loiter_radius : automatic;
+  if (loiter_.pattern == LoiterPattern::Rose && !(loiter_.radius >= 2.0 * turn))
+    detail::fail_field("follow.loiter_radius", loiter_.radius,
+                       "a rose needs at least twice its turn radius " + detail::to_text(turn) + " m");
+  loiter_.validate();
+}
+
+Vec2 FollowPlanner::offset_vector(double vehicle_heading) const {
+  const double angle = parameters_.offset_angle + (parameters_.offset_reference == OffsetReference::Heading ? vehicle_heading : 0.0);
+  return parameters_.offset_distance * Vec2(std::cos(angle), std::sin(angle));
+}
+
+void FollowPlanner::set_offset(double distance, double angle) {
+  require_non_negative(distance, "offset.distance");
+  require_finite(angle, "offset.angle");
+  parameters_.offset_distance = distance;
+  parameters_.offset_angle = angle;
+}
+
+FollowMode FollowPlanner::next_mode(FollowMode current, double speed_ratio) const {
+  const double half = 0.5 * parameters_.hysteresis;
+  if (current == FollowMode::Loiter) {
+    if (speed_ratio > parameters_.threshold - half) return FollowMode::Loiter;
+  } else if (speed_ratio > parameters_.threshold + half) {
+    return FollowMode::Loiter;
+  }
+  return speed_ratio >= 1.0 ? FollowMode::Sinusoid : FollowMode::Straight;
+}
+
+void FollowPlanner::set_sinusoid_shape(FollowTick& tick) const {
+  const double a = sinusoid_slope(tick.speed_ratio);
+  const double frame_speed = tick.frame_velocity.norm();
+  // Peak curvature of y = A sin(2 pi x / D) is a 2 pi / D: keep it within the planned turn.
+  const double tightest = parameters_.turn_margin * uav_.min_turn_radius;
+  tick.period_distance = std::max(frame_speed * parameters_.period, kTwoPi * a * tightest);
+  tick.amplitude = a * tick.period_distance / kTwoPi;
+  tick.period = tick.period_distance / frame_speed;
+}
+
+// Entering a pattern: the point of it the UAV reaches soonest, scored as its distance plus the
+// arc the UAV would turn through to fly along it there (rho |heading change|, rho the planned
+// turn radius). The heading term also breaks the tie where the sinusoid crosses its axis twice.
+double FollowPlanner::entry_cost(const Vec2& point, const Vec2& direction, const Vec2& uav_relative,
+                                 double uav_heading) const {
+  const double turn = std::abs(wrap_to_pi(std::atan2(direction.y(), direction.x()) - uav_heading));
+  return (point - uav_relative).norm() + parameters_.turn_margin * uav_.min_turn_radius * turn;
+}
+
+void FollowPlanner::enter_sinusoid(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const {
+  const double a = kTwoPi * tick.amplitude / tick.period_distance;
+  double best = std::numeric_limits<double>::infinity();
+  constexpr int kSamples = 720;
+  for (int i = 0; i < kSamples; ++i) {
+    const double phi = kTwoPi * i / kSamples;
+    const Vec2 point = rotate(sinusoid_point(tick, phi, arc_at_phase(tick, phi)), tick.track_angle);
+    // In the planning frame the UAV moves along (1, A' cos phi) of the sinusoid's axes.
+    const Vec2 direction = rotate(Vec2(1.0, a * std::cos(phi)), tick.track_angle);
+    const double cost = entry_cost(point, direction, uav_relative, uav_heading);
+    if (cost < best) {
+      best = cost;
+      tick.phase = phi;
+    }
+  }
+}
+
+void FollowPlanner::enter_loiter(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const {
+  // Over enough of the pattern to see every point of the circle, or every orientation of the
+  // rose's line.
+  const double piece = loiter_.piece_length();
+  const int pieces =
+      loiter_.pattern == LoiterPattern::Circle ? 1 : std::min(400, static_cast<int>(std::ceil(kTwoPi / loiter_.delta())) + 2);
+  const double step = std::min(loiter_.turn_radius / 8.0, piece / 64.0);
+  const int samples = static_cast<int>(std::ceil(pieces * piece / step));
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < samples; ++i) {
+    const double s = i * step;
+    const Vec2 direction = tick.frame_velocity + pattern_speed(tick, s) * loiter_.tangent(s);
+    const double cost = entry_cost(loiter_.position(s), direction, uav_relative, uav_heading);
+    if (cost < best) {
+      best = cost;
+      tick.arc = s;
+    }
+  }
+}
+
+// ds/dt along the loiter pattern so that the UAV's speed in the planning frame is v_p:
+// |v_f + s_dot t(s)| = v_p, the positive root (as the tracking paper's eq. (13) for an orbit).
+double FollowPlanner::pattern_speed(const FollowTick& tick, double s) const {
+  const Vec2 t = loiter_.tangent(s);
+  const double b = tick.frame_velocity.dot(t);
+  const double disc = b * b - tick.frame_velocity.squaredNorm() + tick.uav_speed * tick.uav_speed;
+  return std::max(0.0, -b + std::sqrt(std::max(0.0, disc)));
+}
+
+double FollowPlanner::advance_arc(const FollowTick& tick, double tau) const {
+  if (!(tau > 0.0)) return tick.arc;
+  // Fixed steps from the update, then one partial step: nearby tau share their steps, so the
+  // desired position is smooth in tau.
+  const auto rk4 = [&](double s, double h) {
+    const double k1 = pattern_speed(tick, s);
+    const double k2 = pattern_speed(tick, s + 0.5 * h * k1);
+    const double k3 = pattern_speed(tick, s + 0.5 * h * k2);
+    const double k4 = pattern_speed(tick, s + h * k3);
+    return s + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  };
+  const int whole = static_cast<int>(std::floor(tau / kLoiterStep));
+  double s = tick.arc;
+  for (int i = 0; i < whole; ++i) s = rk4(s, kLoiterStep);
+  const double rest = tau - whole * kLoiterStep;
+  return rest > 0.0 ? rk4(s, rest) : s;
+}
+
+Vec2 FollowPlanner::relative_position(const FollowTick& tick, double tau) const {
+  if (tick.capturing) tau = 0.0;  // the held point
+  switch (tick.mode) {
+    case FollowMode::Sinusoid: {
+      const double arc = arc_at_phase(tick, tick.phase) + tick.uav_speed * std::max(0.0, tau);
+      const double phi = sinusoid_phase_at_arc(arc, tick.amplitude, tick.period_distance);
+      return rotate(sinusoid_point(tick, phi, arc), tick.track_angle);
+    }
+    case FollowMode::Loiter:
+      return loiter_.position(advance_arc(tick, tau));
+    case FollowMode::Straight:
+      break;
+  }
+  return Vec2::Zero();
+}
+
+FollowTick FollowPlanner::update(double t, const FollowObservation& o) {
+  require_finite(t, "t");
+  if (has_previous_ && !(t > previous_.t))
+    detail::fail_field("t", t, "updates must move forward in time (the last was " + detail::to_text(previous_.t) + ")");
+  FollowTick tick;
+  tick.t = t;
+  tick.offset_vector = offset_vector(o.vehicle_heading);
+  tick.offset_point = o.vehicle_position + tick.offset_vector;
+  const Vec2 offset_velocity = o.vehicle_velocity + o.offset_rate;
+  if (parameters_.wind_compensation) {
+    tick.uav_speed = uav_.speed;
+    tick.frame_velocity = offset_velocity - wind_;
+  } else {
+    tick.uav_speed = uav_.speed;
+    tick.frame_velocity = offset_velocity;
+  }
+  const double frame_speed = tick.frame_velocity.norm();
+  const bool frame_moves = frame_speed > 1e-9 * tick.uav_speed;
+  tick.speed_ratio = frame_moves ? tick.uav_speed / frame_speed : std::numeric_limits<double>::infinity();
+  tick.track_angle = frame_moves ? std::atan2(tick.frame_velocity.y(), tick.frame_velocity.x())
+                                 : (has_previous_ ? previous_.track_angle : o.vehicle_heading);
+  if (has_previous_) {
+    tick.mode = next_mode(previous_.mode, tick.speed_ratio);
+  } else {
+    tick.mode = tick.speed_ratio > parameters_.threshold ? FollowMode::Loiter
+                : tick.speed_ratio >= 1.0                  ? FollowMode::Sinusoid
+                                                           : FollowMode::Straight;
+  }
+  const Vec2 uav_relative = o.uav_position - tick.offset_point;
+  const bool same_mode = has_previous_ && previous_.mode == tick.mode;
+  bool entered = false;
+  if (tick.mode == FollowMode::Sinusoid) {
+    set_sinusoid_shape(tick);
+    if (same_mode && std::abs(wrap_to_pi(tick.track_angle - previous_.track_angle)) <= kReentryTurn) {
+      // The phase reached under the previous update's shape, kept as the new shape's phase.
+      const double arc = arc_at_phase(previous_, previous_.phase) +
+                         (previous_.capturing ? 0.0 : previous_.uav_speed * (t - previous_.t));
+      tick.phase = wrap_phase(sinusoid_phase_at_arc(arc, previous_.amplitude, previous_.period_distance));
+    } else {
+      enter_sinusoid(tick, uav_relative, o.uav_heading);
+      entered = true;
+    }
+  } else if (tick.mode == FollowMode::Loiter) {
+    if (same_mode) {
+      tick.arc = previous_.capturing ? previous_.arc : advance_arc(previous_, t - previous_.t);
+      if (loiter_.pattern == LoiterPattern::Circle) tick.arc = std::fmod(tick.arc, loiter_.piece_length());
+    } else {
+      enter_loiter(tick, uav_relative, o.uav_heading);
+      entered = true;
+    }
+  }
+  // Capture: a pattern just entered holds its point (moving with the offset point) until the UAV
+  // is within one update's flight of it; only then does it run at v_p, which the UAV could not
+  // catch up with.
+  if (tick.mode != FollowMode::Straight && (entered || (same_mode && previous_.capturing))) {
+    tick.capturing = true;
+    tick.capturing = (relative_position(tick, 0.0) - uav_relative).norm() > uav_.speed * parameters_.update_period;
+  }
+  // The waypoint: the desired position one update later, with the vehicle predicted at its
+  // current velocity and heading.
+  const double dt = parameters_.update_period;
+  tick.waypoint = tick.offset_point + offset_velocity * dt + relative_position(tick, dt);
+  previous_ = tick;
+  has_previous_ = true;
+  return tick;
+}
+
+}  // namespace vistrack

@@ -1,0 +1,653 @@
+"""
+Following a ground vehicle (ground_vehicle_following paper): the sinusoid's amplitude from the speed ratio (eqs. 5, 9-10), loiter (circle or rose) above a threshold with hysteresis, an offset vector, wind compensation in the air mass, waypoints at 1 Hz, and the camera footprint metric.
+"""
+from __future__ import annotations
+import collections.abc
+import numpy
+import numpy.typing
+import typing
+import vistrack._core
+import vistrack._core.flight
+__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'VehicleLeg', 'along_track_rate', 'arc_length', 'camera_sees', 'coordinated_bank', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_slope', 'speed_ratio']
+class VehicleLeg:
+    """
+    One leg of a route: heading (rad from east), speed at its start and end (m/s, linear in between; 0 and 0 is a stop), duration (s).
+    """
+    def __init__(self, heading: typing.SupportsFloat | typing.SupportsIndex, speed: typing.SupportsFloat | typing.SupportsIndex, duration: typing.SupportsFloat | typing.SupportsIndex, end_speed: typing.SupportsFloat | typing.SupportsIndex | None = None) -> None:
+        """
+        end_speed None: constant speed.
+        """
+    @property
+    def duration(self) -> float:
+        """
+        s
+        """
+    @duration.setter
+    def duration(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def end_speed(self) -> float:
+        """
+        m/s at the end (NaN: same as speed)
+        """
+    @end_speed.setter
+    def end_speed(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def heading(self) -> float:
+        """
+        rad, counter-clockwise from east
+        """
+    @heading.setter
+    def heading(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def speed(self) -> float:
+        """
+        m/s at the start
+        """
+    @speed.setter
+    def speed(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class GroundVehicle:
+    """
+    A ground vehicle as a piecewise-linear track (t, x, y): position interpolated, velocity per segment, heading of the last moving segment.
+    """
+    @staticmethod
+    def along_path(path: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], legs: collections.abc.Sequence[VehicleLeg], t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, step: typing.SupportsFloat | typing.SupportsIndex = 0.1) -> GroundVehicle:
+        """
+        Along a road polyline (n, 2) with the legs' speed profile (their headings ignored).
+        """
+    @staticmethod
+    def from_legs(legs: collections.abc.Sequence[VehicleLeg], start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, step: typing.SupportsFloat | typing.SupportsIndex = 0.1) -> GroundVehicle:
+        """
+        Drive the legs from `start` at t0 (speed ramps sampled every `step` s).
+        """
+    def __init__(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], xy: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> None:
+        """
+        Times (n,) strictly increasing and positions (n, 2).
+        """
+    def heading(self, t: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        Heading (rad) at t; a standing vehicle keeps its last.
+        """
+    def position(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        Position (2,) at t (clamped to the track).
+        """
+    def sample(self, times: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        Positions (n, 2) at the given times.
+        """
+    def velocity(self, t: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        Velocity (2,) of the segment at t (0 outside).
+        """
+    @property
+    def end_time(self) -> float:
+        """
+        s
+        """
+    @property
+    def headings(self) -> list[float]:
+        """
+        Heading per segment (rad).
+        """
+    @property
+    def max_speed(self) -> float:
+        """
+        Largest segment speed (m/s).
+        """
+    @property
+    def positions(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        Sample positions (n, 2).
+        """
+    @property
+    def start_time(self) -> float:
+        """
+        s
+        """
+    @property
+    def times(self) -> list[float]:
+        """
+        Sample times (s).
+        """
+class FollowParameters:
+    """
+    The follow planner's settings (defaults in parameters.hpp). Angles in radians.
+    """
+    def __init__(self, *, period: typing.SupportsFloat | typing.SupportsIndex = 30.0, turn_margin: typing.SupportsFloat | typing.SupportsIndex = 1.25, threshold: typing.SupportsFloat | typing.SupportsIndex = 3.0, hysteresis: typing.SupportsFloat | typing.SupportsIndex = 0.5, loiter_pattern: str = 'circle', loiter_radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, loiter_direction: str = 'ccw', offset_distance: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_angle: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_reference: str = 'heading', wind_compensation: bool = True, update_period: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
+        """
+        Validated parameters.
+        """
+    def validate(self) -> None:
+        """
+        Raise VistrackError naming the first invalid field.
+        """
+    @property
+    def hysteresis(self) -> float:
+        """
+        full width of the band about the threshold
+        """
+    @hysteresis.setter
+    def hysteresis(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def loiter_direction(self) -> str:
+        """
+        'ccw' or 'cw'
+        """
+    @loiter_direction.setter
+    def loiter_direction(self, arg0: str) -> None:
+        ...
+    @property
+    def loiter_pattern(self) -> str:
+        """
+        'circle' or 'rose'
+        """
+    @loiter_pattern.setter
+    def loiter_pattern(self, arg1: str) -> None:
+        ...
+    @property
+    def loiter_radius(self) -> float:
+        """
+        m; 0: the smallest flyable
+        """
+    @loiter_radius.setter
+    def loiter_radius(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def offset_angle(self) -> float:
+        """
+        theta, rad
+        """
+    @offset_angle.setter
+    def offset_angle(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def offset_distance(self) -> float:
+        """
+        L, m
+        """
+    @offset_distance.setter
+    def offset_distance(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def offset_reference(self) -> str:
+        """
+        'north' (theta from east on the map) or 'heading' (theta from the vehicle's heading)
+        """
+    @offset_reference.setter
+    def offset_reference(self, arg1: str) -> None:
+        ...
+    @property
+    def period(self) -> float:
+        """
+        T: time for the vehicle to cover one period, s
+        """
+    @period.setter
+    def period(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def threshold(self) -> float:
+        """
+        h_sigma: loiter above this speed ratio
+        """
+    @threshold.setter
+    def threshold(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def turn_margin(self) -> float:
+        """
+        tightest planned turn / r_min
+        """
+    @turn_margin.setter
+    def turn_margin(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def update_period(self) -> float:
+        """
+        s between waypoints (1 Hz)
+        """
+    @update_period.setter
+    def update_period(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def wind_compensation(self) -> bool:
+        """
+        plan in the air mass
+        """
+    @wind_compensation.setter
+    def wind_compensation(self, arg0: bool) -> None:
+        ...
+class FollowFlight:
+    """
+    How a follow run is flown: integration ('discrete' | 'continuous'), step dt (s), max_time (s, 0: until the track ends).
+    """
+    def __init__(self, *, integration: str = 'discrete', dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, max_time: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        ...
+    @property
+    def dt(self) -> float:
+        """
+        s
+        """
+    @dt.setter
+    def dt(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def integration(self) -> str:
+        ...
+    @property
+    def max_time(self) -> float:
+        """
+        s; 0: until the track ends
+        """
+    @max_time.setter
+    def max_time(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class DownwardCamera:
+    """
+    Downward conic camera (fov the full cone angle) on a roll gimbal that points it at the target as far as max_gimbal allows (0: body-fixed).
+    """
+    def __init__(self, *, fov: typing.SupportsFloat | typing.SupportsIndex = 1.2915436464758039, max_gimbal: typing.SupportsFloat | typing.SupportsIndex = 0.4363323129985824) -> None:
+        """
+        fov: full angle (rad, default 74 degrees); max_gimbal: the gimbal's roll range (rad, default 25 degrees).
+        """
+    @property
+    def fov(self) -> float:
+        """
+        rad
+        """
+    @fov.setter
+    def fov(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_gimbal(self) -> float:
+        """
+        rad
+        """
+    @max_gimbal.setter
+    def max_gimbal(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+class LoiterShape:
+    """
+    The loiter pattern about its centre by arc length (circle or rose).
+    """
+    def sample(self, arcs: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        Positions (n, 2) relative to the centre at the given arc lengths.
+        """
+    @property
+    def delta(self) -> float:
+        """
+        rose: rotation of the line per pass beyond pi
+        """
+    @property
+    def direction(self) -> int:
+        """
+        +1 counter-clockwise turns
+        """
+    @property
+    def pattern(self) -> str:
+        ...
+    @property
+    def piece_length(self) -> float:
+        """
+        circle: circumference; rose: one pass
+        """
+    @property
+    def radius(self) -> float:
+        """
+        circle radius or the rose's extent, m
+        """
+    @property
+    def turn_radius(self) -> float:
+        """
+        the rose's turn radius rho, m
+        """
+class FollowObservation:
+    """
+    What the planner sees at an update.
+    """
+    def __init__(self, *, vehicle_position: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], vehicle_velocity: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], vehicle_heading: typing.SupportsFloat | typing.SupportsIndex = 0.0, uav_position: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., uav_heading: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_rate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ...) -> None:
+        ...
+    @property
+    def offset_rate(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        ...
+    @offset_rate.setter
+    def offset_rate(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> None:
+        ...
+    @property
+    def uav_heading(self) -> float:
+        ...
+    @uav_heading.setter
+    def uav_heading(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def uav_position(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        ...
+    @uav_position.setter
+    def uav_position(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> None:
+        ...
+    @property
+    def vehicle_heading(self) -> float:
+        ...
+    @vehicle_heading.setter
+    def vehicle_heading(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def vehicle_position(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        ...
+    @vehicle_position.setter
+    def vehicle_position(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> None:
+        ...
+    @property
+    def vehicle_velocity(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        ...
+    @vehicle_velocity.setter
+    def vehicle_velocity(self, arg0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> None:
+        ...
+class FollowTick:
+    """
+    One update of the planner: mode, pattern parameters, state, waypoint.
+    """
+    @property
+    def amplitude(self) -> float:
+        """
+        A, m
+        """
+    @property
+    def arc(self) -> float:
+        """
+        loiter arc length, m
+        """
+    @property
+    def capturing(self) -> bool:
+        """
+        holding the entry point until the UAV is close
+        """
+    @property
+    def frame_velocity(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        offset point's velocity in the planning frame
+        """
+    @property
+    def mode(self) -> str:
+        """
+        'sinusoid' | 'loiter' | 'straight'
+        """
+    @property
+    def offset_point(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        O, m
+        """
+    @property
+    def offset_vector(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        O - vehicle, m
+        """
+    @property
+    def period(self) -> float:
+        """
+        s
+        """
+    @property
+    def period_distance(self) -> float:
+        """
+        D, m
+        """
+    @property
+    def phase(self) -> float:
+        """
+        sinusoid phase, rad
+        """
+    @property
+    def speed_ratio(self) -> float:
+        """
+        sigma (inf when the offset point stands in the frame)
+        """
+    @property
+    def t(self) -> float:
+        """
+        s
+        """
+    @property
+    def track_angle(self) -> float:
+        """
+        direction of the sinusoid's axis, rad
+        """
+    @property
+    def uav_speed(self) -> float:
+        """
+        v_p planned with, m/s
+        """
+    @property
+    def waypoint(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        the waypoint issued at t, m
+        """
+class FollowPlanner:
+    """
+    The 1 Hz follow planner of sections II-V.
+    """
+    def __init__(self, parameters: FollowParameters, uav: vistrack._core.Uav, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ...) -> None:
+        """
+        wind_estimate (east, north) m/s is used with compensation.
+        """
+    def next_mode(self, current: str, speed_ratio: typing.SupportsFloat | typing.SupportsIndex) -> str:
+        """
+        The mode after `current` for sigma, with the hysteresis band.
+        """
+    def offset_vector(self, vehicle_heading: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        O - vehicle for that heading.
+        """
+    def relative_position(self, tick: FollowTick, tau: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        Desired position relative to the offset point tau s after the tick.
+        """
+    def set_offset(self, distance: typing.SupportsFloat | typing.SupportsIndex, angle: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        Change the offset's distance (m) and angle (rad) from the next update on.
+        """
+    def update(self, t: typing.SupportsFloat | typing.SupportsIndex, observation: FollowObservation) -> FollowTick:
+        """
+        The update at time t: mode with hysteresis, pattern advanced, next waypoint.
+        """
+    @property
+    def loiter_shape(self) -> LoiterShape:
+        """
+        The loiter pattern in use.
+        """
+class FollowMetrics:
+    """
+    Scores of one follow run (lengths in m, times in s).
+    """
+    @property
+    def camera_fraction(self) -> float:
+        """
+        time fraction with the vehicle in view
+        """
+    @property
+    def duration(self) -> float:
+        ...
+    @property
+    def final_along_track_lag(self) -> float:
+        ...
+    @property
+    def max_along_track_lag(self) -> float:
+        ...
+    @property
+    def max_tracking_error(self) -> float:
+        ...
+    @property
+    def mean_along_track_lag(self) -> float:
+        """
+        mean lag behind the desired position
+        """
+    @property
+    def mean_offset_distance(self) -> float:
+        ...
+    @property
+    def mean_offset_error(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        mean of UAV - offset point (2,)
+        """
+    @property
+    def mean_tracking_error(self) -> float:
+        """
+        mean distance from the planned path
+        """
+    @property
+    def mean_vehicle_distance(self) -> float:
+        ...
+    @property
+    def mode_switches(self) -> int:
+        ...
+    @property
+    def time_capturing(self) -> float:
+        """
+        s holding an entry point until reached
+        """
+    @property
+    def time_loiter(self) -> float:
+        ...
+    @property
+    def time_sinusoid(self) -> float:
+        ...
+    @property
+    def time_straight(self) -> float:
+        ...
+class FollowRun:
+    """
+    One follow run: per-sample arrays, the 1 Hz updates and the metrics.
+    """
+    @property
+    def along_track_lag(self) -> list[float]:
+        """
+        m, > 0 behind
+        """
+    @property
+    def bank(self) -> list[float]:
+        """
+        coordinated-turn bank (rad)
+        """
+    @property
+    def capturing(self) -> list[int]:
+        """
+        the update holds its entry point (0/1)
+        """
+    @property
+    def desired(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        (n, 2) desired position
+        """
+    @property
+    def in_view(self) -> list[int]:
+        """
+        vehicle in the camera footprint (0/1)
+        """
+    @property
+    def metrics(self) -> FollowMetrics:
+        ...
+    @property
+    def mode(self) -> list[str]:
+        """
+        mode of the current update at each sample
+        """
+    @property
+    def offset_point(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        (n, 2)
+        """
+    @property
+    def state(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 3]"]:
+        """
+        (n, 3) x, y, psi
+        """
+    @property
+    def t(self) -> list[float]:
+        """
+        sample times (s)
+        """
+    @property
+    def target(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        (n, 2) the waypoint flown to
+        """
+    @property
+    def ticks(self) -> list[FollowTick]:
+        """
+        the 1 Hz updates
+        """
+    @property
+    def tracking_error(self) -> list[float]:
+        """
+        distance from the planned path (m)
+        """
+    @property
+    def turn_rate(self) -> list[float]:
+        """
+        applied turn rate (rad/s)
+        """
+    @property
+    def vehicle(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        (n, 2) vehicle position
+        """
+    @property
+    def waypoint_times(self) -> list[float]:
+        """
+        when each waypoint was issued (s)
+        """
+    @property
+    def waypoints(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        (k, 2) the generated waypoints
+        """
+    @property
+    def wind(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        (n, 2) true wind
+        """
+def along_track_rate(x: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], amplitude: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period_distance: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], uav_speed: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
+    """
+    eq. (5): x_dot = v_p / sqrt(1 + A'^2 cos^2(2 pi x / D)), m/s.
+    """
+def arc_length(x: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], amplitude: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period_distance: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
+    """
+    Arc length of the sinusoid from 0 to x (incomplete elliptic integral of the second kind).
+    """
+def camera_sees(camera: DownwardCamera, uav: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], psi: typing.SupportsFloat | typing.SupportsIndex, bank: typing.SupportsFloat | typing.SupportsIndex, target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"]) -> bool:
+    """
+    Whether the ground point target (3,) is in the footprint of the camera at uav (3,).
+    """
+def coordinated_bank(speed: typing.SupportsFloat | typing.SupportsIndex, turn_rate: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    Bank angle atan(v psi_dot / g) of a coordinated turn, rad (positive left).
+    """
+def follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] | None = None, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0, offset_schedule: collections.abc.Sequence[tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]] = []) -> FollowRun:
+    """
+    Fly the follow planner's 1 Hz waypoints with the flight layer (the waypoint paper's law (5), a WaypointFollower fed during the flight). wind: the true wind (vistrack.flight.Wind); wind_estimate (east, north): what the planner compensates (None: the true constant wind). start: (x, y, psi) or None (on the planned path). offset_schedule: (t, distance, angle) keys, linear in between.
+    """
+def orbit_follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, control: vistrack._core.Control, radius: typing.SupportsFloat | typing.SupportsIndex, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0) -> FollowRun:
+    """
+    The baseline follower: the tracking paper's vector field (74) and steering law (86) orbiting the offset point (from parameters) at a constant radius, flown by the flight layer in the true wind. The result's desired position is the orbit's nearest point.
+    """
+def phase_at_arc(arc: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], amplitude: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period_distance: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
+    """
+    The phase 2 pi x / D at which the arc length from 0 is `arc`.
+    """
+def sinusoid_amplitude(speed_ratio: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period_distance: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
+    """
+    Amplitude A (m) of y = A sin(2 pi x / D) whose arc length over one period D is speed_ratio * D (eqs. 9-10: sigma = (2/pi) E(-A'^2), A' = 2 pi A / D), to 1e-12 relative. speed_ratio >= 1 (1 gives 0). Scalars or numpy arrays.
+    """
+def sinusoid_slope(speed_ratio: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
+    """
+    A' = 2 pi A / D for a speed ratio (independent of D).
+    """
+def speed_ratio(amplitude: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period_distance: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
+    """
+    sigma = v_p / v_g of eqs. (9)-(10) for amplitude A and period distance D. Scalars or arrays.
+    """

@@ -1,0 +1,45 @@
+"""``vistrack follow SCENARIO.yaml``: a UAV following a ground vehicle.
+
+Flies the paper's planner (sinusoid below the speed-ratio threshold, loiter above it with a
+hysteresis band, an offset point, waypoints at 1 Hz) with the flight layer, beside the tracking
+pipeline's vector-field baseline, and, when the scenario has a city section, both again on a city
+road with line of sight through the buildings. Writes figures, trajectory.csv and metrics.json
+to --out. Scenario keys: see vistrack/follow_scenario.py and examples/follow_*.yaml.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from ..follow_scenario import FollowScenario
+from ..report.follow import write_follow
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    parser = subparsers.add_parser(
+        "follow", help="follow a ground vehicle: sinusoid and loiter modes (the ground-vehicle paper)",
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("scenario", type=Path, help="follow scenario (YAML)")
+    parser.add_argument("--out", type=Path, default=Path("follow_out"), help="output folder (default follow_out)")
+    parser.add_argument("--no-compensation", dest="compensation", action="store_false", default=None,
+                        help="plan without the wind estimate (the paper's Fig. 6)")
+    parser.add_argument("--no-city", dest="city", action="store_false", help="skip the city runs")
+    parser.add_argument("--quiet", action="store_true", help="no progress lines")
+    parser.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    scenario = FollowScenario.load(args.scenario)
+    city = args.city and scenario.city_available()
+    if args.city and scenario.city is not None and not city:
+        print(f"city data not found ({scenario.city.map}): skipping the city runs")
+    study = scenario.run(args.compensation, city, None if args.quiet else lambda name: print(f"{name} ...", flush=True))
+    record = write_follow(study, args.out, scenario.description)
+    modes = ", ".join(f"{k} {v:.0f} s" for k, v in record["time_in_mode_s"].items() if v > 0)
+    print(f"tracking error {record['mean_tracking_error_m']:.2f} m mean, {record['max_tracking_error_m']:.1f} m max; "
+          f"lag {record['along_track_lag_m']:.1f} m; {modes}; {record['mode_switches']} switches; "
+          f"camera {100 * record['camera_fraction']:.1f} %"
+          + (f" (baseline {100 * record['baseline']['camera_fraction']:.1f} %)" if "baseline" in record else "")
+          + f" -> {args.out}")
+    return 0

@@ -1,0 +1,84 @@
+"""``vistrack loiter``: Fly-Through, TLPP and LDLPP loiter plans over areas of interest, scored by
+camera coverage (Wilhelm, Clem, Eberhart 2017).
+
+One scenario file: plans.png (the methods side by side), metrics.json, path_<method>.csv. Several
+files: the same per scenario in sub-folders, plus table.md / table.json (ours beside Table 1),
+fig13_scenarios.png and fig14_comparison.png. --random N: N seeded random scenarios, the
+distributions per method (random.md, random.json, random_distribution.png).
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from .. import VistrackError, loiter, loiter_study
+from ..progress import Progress
+from ..report import loiter as report
+from . import positive_numbers
+
+
+def register(subparsers: argparse._SubParsersAction) -> None:
+    p = subparsers.add_parser("loiter", help="loiter planners over areas of interest and their camera coverage",
+                              description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("scenarios", nargs="*", type=Path, help="scenario YAML files (examples/loiter_*.yaml)")
+    p.add_argument("--random", type=int, metavar="N", help="N random scenarios instead of files")
+    p.add_argument("--seed", type=int, default=0, help="seed of the random scenarios (default 0)")
+    p.add_argument("--aois", type=int, nargs="+", default=list(range(4, 10)),
+                   help="AOI counts the random scenarios cycle through (default 4 5 6 7 8 9)")
+    p.add_argument("--method", nargs="+", choices=loiter.METHODS, default=list(loiter.METHODS),
+                   help="methods (default all three)")
+    p.add_argument("--order", choices=loiter.ORDERS, default="given",
+                   help="'best' also plans the best visiting order and reports the time saved")
+    p.add_argument("--wind", action="append", default=[], metavar="E,N",
+                   help="fly every plan in this unknown constant wind (m/s east, north); repeatable")
+    p.add_argument("--wind-sweep", type=positive_numbers("--wind-sweep", "5,10"), default=[], metavar="SPEEDS",
+                   help="also fly every plan in winds of these speeds (m/s) from 8 directions")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.add_argument("--out", type=Path, required=True, help="output folder (created)")
+    p.set_defaults(func=run)
+
+
+def parse_wind(text: str) -> tuple[float, float]:
+    try:
+        east, north = (float(v) for v in text.split(","))
+    except ValueError:
+        raise VistrackError(f"--wind = {text!r}: expected two numbers E,N in m/s") from None
+    return east, north
+
+
+def run(args: argparse.Namespace) -> int:
+    winds = [parse_wind(w) for w in args.wind] + loiter_study.wind_directions(args.wind_sweep)
+    if args.random is not None:
+        if args.scenarios:
+            raise VistrackError(f"--random = {args.random}: give scenario files or --random, not both")
+        if args.random < 1:
+            raise VistrackError(f"--random = {args.random}: must be at least 1")
+        with Progress("random scenarios", not args.quiet, unit="scenario") as bar:
+            records = loiter_study.random_study(args.random, args.seed, args.method, args.order, args.aois, bar)
+        written = report.write_random(args.out, records)
+        print((args.out / "random.md").read_text(encoding="utf-8"), end="")
+    else:
+        if not args.scenarios:
+            raise VistrackError("scenarios: give at least one scenario file, or --random N")
+        scenarios = [loiter.load_scenario(path) for path in args.scenarios]
+        rows, written = [], []
+        for scenario in scenarios:
+            runs = loiter_study.evaluate(scenario, args.method, args.order, winds)
+            folder = args.out if len(scenarios) == 1 else args.out / scenario.name
+            written += report.write_scenario(folder, scenario, runs)
+            rows += [run.record(scenario) for run in runs]
+            for run in runs:
+                line = (f"{scenario.name} {run.method}: {run.plan.flight_time / 60:.2f} min, transit "
+                        f"{run.plan.transit_time:.0f} s, covered {run.coverage.time:.0f} s, "
+                        f"area {run.coverage.area:.0f} m^2")
+                if run.best_plan is not None:
+                    line += f"; best order {run.best_plan.flight_time / 60:.2f} min"
+                print(line)
+        if winds and len(scenarios) == 1:
+            print(report.wind_markdown(loiter_study.wind_summary(rows)), end="")
+        if len(scenarios) > 1:
+            written += report.write_table(args.out, scenarios, rows)
+            print((args.out / "table.md").read_text(encoding="utf-8"), end="")
+    print(f"{len(written)} files in {args.out}")
+    return 0

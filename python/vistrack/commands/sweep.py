@@ -1,0 +1,48 @@
+"""``vistrack sweep SWEEP.yaml --out DIR [--scheduler ADDR] [--workers N]``: many cases as Dask tasks."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from ..sweep import SERIAL, SweepSpec, run
+
+
+def register(subparsers: Any) -> None:
+    parser = subparsers.add_parser(
+        "sweep", help="run a parameter sweep or many routes as Dask tasks, into a results table",
+        description="Every case of a sweep file (a base scenario, parameters to vary, road routes) as "
+                    "one Dask task, on a LocalCluster on this machine or on the cluster of --scheduler; "
+                    "writes results.csv, results.parquet, sweep.json and figures/ into --out. A failed "
+                    "case is a row with its error; results equal a serial run's.")
+    parser.add_argument("sweep", help="sweep YAML file")
+    parser.add_argument("--out", default=None,
+                        help="output folder (default: the file's out:, else ./vistrack-out/<sweep name>)")
+    parser.add_argument("--scheduler", default=None, metavar="ADDR",
+                        help=f"Dask scheduler address (tcp://host:8786); default: a LocalCluster here; "
+                             f"'{SERIAL}': one case after another in this process")
+    parser.add_argument("--workers", type=int, default=None, metavar="N",
+                        help="LocalCluster worker processes (default: one per core); not with --scheduler")
+    parser.add_argument("--no-figures", action="store_true", help="write the table only")
+    parser.add_argument("--quiet", action="store_true", help="no progress bar")
+    parser.set_defaults(func=main)
+
+
+def main(args: argparse.Namespace) -> int:
+    if args.workers is not None and args.scheduler is not None:
+        raise SystemExit("vistrack sweep: error: --workers only applies without --scheduler (a LocalCluster)")
+    if args.workers is not None and args.workers < 1:
+        raise SystemExit(f"vistrack sweep: error: --workers = {args.workers}: must be at least 1")
+    spec = SweepSpec.load(args.sweep)
+    print(f"{spec.name}: {spec.case_count} {spec.kind.name} cases over {', '.join(spec.parameters)} "
+          f"({spec.combine})", flush=True)
+    result = run(spec, args.scheduler, args.workers, out=Path(args.out) if args.out else None,
+                 quiet=args.quiet, figures=not args.no_figures)
+    workers = ", ".join(f"{w}: {s['environments_built']} map(s), {s['cases_run']} case(s)"
+                        for w, s in sorted(result.workers.items()))
+    print(f"{len(result.rows)} cases in {result.wall_s:.1f} s on {result.scheduler} ({workers})")
+    for row in result.failed:
+        print(f"  case {row['case']} failed: {row['run_error']}")
+    print(f"results: {result.out / 'results.csv'} and results.parquet; figures: {result.out / 'figures'}")
+    return 0

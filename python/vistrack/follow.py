@@ -1,0 +1,224 @@
+"""Following a ground vehicle (../shared/seeds/ground_vehicle_following.txt).
+
+The planner flies a sinusoid about the vehicle's path whose amplitude makes the UAV's average
+progress equal the vehicle's (eqs. 5, 9-10: sigma = v_p / v_g = (2/pi) E(-A'^2), A' = 2 pi A / D,
+D = v_g T), loiters (circle or the rose of Fig. 3) above a speed-ratio threshold with a
+hysteresis band, follows an offset point (distance and angle, fixed to north or turning with the
+vehicle), compensates a known wind by planning in the air mass (see cpp/include/vistrack/
+follow.hpp for the derivation), and issues a waypoint every second (section V). The flight layer
+flies the waypoints (the waypoint paper's feedback law (5) on a ``WaypointFollower``).
+
+Example::
+
+    import math, vistrack as vt
+    A = vt.follow.sinusoid_amplitude(2.0, 300.0)           # m, for sigma = 2 and D = 300 m
+    car = vt.follow.GroundVehicle.from_legs([vt.follow.VehicleLeg(-math.pi / 2, 10.0, 300.0)])
+    res = vt.follow.simulate(car, vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0))
+    res.metrics["camera_fraction"], res.mode, res.waypoints
+
+``baseline(...)`` flies the tracking paper's vector field (74) at a constant radius about the same
+offset point, for comparison; with a ``VisibilityScene`` both also report the line of sight
+through the buildings.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Optional, Sequence
+
+import numpy as np
+
+from ._core import Control, Uav, VisibilityScene, VistrackError
+from ._core import follow as _follow
+from .flight import Wind
+
+DownwardCamera = _follow.DownwardCamera
+FollowFlight = _follow.FollowFlight
+FollowMetrics = _follow.FollowMetrics
+FollowObservation = _follow.FollowObservation
+FollowParameters = _follow.FollowParameters
+FollowPlanner = _follow.FollowPlanner
+FollowRun = _follow.FollowRun
+FollowTick = _follow.FollowTick
+GroundVehicle = _follow.GroundVehicle
+LoiterShape = _follow.LoiterShape
+VehicleLeg = _follow.VehicleLeg
+along_track_rate = _follow.along_track_rate
+arc_length = _follow.arc_length
+camera_sees = _follow.camera_sees
+coordinated_bank = _follow.coordinated_bank
+phase_at_arc = _follow.phase_at_arc
+sinusoid_amplitude = _follow.sinusoid_amplitude
+sinusoid_slope = _follow.sinusoid_slope
+speed_ratio = _follow.speed_ratio
+
+MODES = ("sinusoid", "loiter", "straight")
+
+__all__ = [
+    "MODES", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
+    "FollowPlanner", "FollowResult", "FollowRun", "FollowTick", "GroundVehicle", "LoiterShape", "VehicleLeg",
+    "along_track_rate", "arc_length", "baseline", "baseline_radius", "camera_sees", "coordinated_bank",
+    "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_slope", "speed_ratio",
+]
+
+
+@dataclass
+class FollowResult:
+    """One flown run (the planner's, or the baseline's) with numpy views of its samples.
+
+    ``run`` is the core ``FollowRun``; ``line_of_sight`` (n,) is set when a scene was given."""
+
+    run: FollowRun
+    strategy: str = "sinusoid"  # "sinusoid" (the paper's planner) or "orbit" (the baseline)
+    line_of_sight: Optional[np.ndarray] = None
+
+    @property
+    def t(self) -> np.ndarray:
+        return np.asarray(self.run.t)
+
+    @property
+    def state(self) -> np.ndarray:
+        """(n, 3) x, y, psi."""
+        return np.asarray(self.run.state)
+
+    @property
+    def trajectory(self) -> np.ndarray:
+        """(n, 4) t, x, y, psi."""
+        return np.column_stack([self.t, self.state])
+
+    @property
+    def mode(self) -> np.ndarray:
+        """The mode of the current update at each sample ("sinusoid", "loiter", "straight")."""
+        return np.asarray(self.run.mode)
+
+    @property
+    def desired(self) -> np.ndarray:
+        return np.asarray(self.run.desired)
+
+    @property
+    def vehicle(self) -> np.ndarray:
+        return np.asarray(self.run.vehicle)
+
+    @property
+    def offset_point(self) -> np.ndarray:
+        return np.asarray(self.run.offset_point)
+
+    @property
+    def in_view(self) -> np.ndarray:
+        """(n,) bool: the vehicle is inside the camera footprint."""
+        return np.asarray(self.run.in_view, dtype=bool)
+
+    @property
+    def ticks(self) -> list[FollowTick]:
+        return list(self.run.ticks)
+
+    @property
+    def waypoints(self) -> np.ndarray:
+        """(k, 2) the waypoints the planner issued, one per update (what a mission exports)."""
+        return np.asarray(self.run.waypoints)
+
+    @property
+    def waypoint_times(self) -> np.ndarray:
+        """(k,) when each waypoint was issued (s)."""
+        return np.asarray(self.run.waypoint_times)
+
+    @property
+    def metrics(self) -> dict[str, Any]:
+        """The scores as plain data (metrics.json)."""
+        m = self.run.metrics
+        out: dict[str, Any] = {
+            "strategy": self.strategy,
+            "duration_s": m.duration,
+            "mean_tracking_error_m": m.mean_tracking_error,
+            "max_tracking_error_m": m.max_tracking_error,
+            "along_track_lag_m": m.mean_along_track_lag,
+            "max_along_track_lag_m": m.max_along_track_lag,
+            "final_along_track_lag_m": m.final_along_track_lag,
+            "mode_switches": m.mode_switches,
+            "time_capturing_s": m.time_capturing,
+            "time_in_mode_s": {"sinusoid": m.time_sinusoid, "loiter": m.time_loiter, "straight": m.time_straight},
+            "camera_fraction": m.camera_fraction,
+            "mean_vehicle_distance_m": m.mean_vehicle_distance,
+            "mean_offset_distance_m": m.mean_offset_distance,
+            "centre_offset_m": [float(v) for v in m.mean_offset_error],
+        }
+        if self.line_of_sight is not None:
+            weights = np.diff(self.t, append=self.t[-1])  # each sample holds until the next
+            total = float(weights.sum()) or 1.0
+            out["line_of_sight_fraction"] = float(weights @ self.line_of_sight) / total
+            out["camera_and_line_of_sight_fraction"] = float(weights @ (self.line_of_sight & self.in_view)) / total
+        return out
+
+
+def _wind(wind: Wind | Sequence[float] | None) -> Wind:
+    if wind is None:
+        return Wind()
+    if isinstance(wind, Wind):
+        return wind
+    east, north = (float(v) for v in wind)
+    return Wind(east=east, north=north)
+
+
+def line_of_sight(scene: VisibilityScene, run: FollowRun, uav_altitude: float,
+                  vehicle_height: float = 0.5) -> np.ndarray:
+    """(n,) bool: the segment from the UAV (at the scene's ground level + uav_altitude, the
+    altitude the tracking pipeline flies at) to the vehicle (vehicle_height above the surface
+    under it) is clear of the buildings."""
+    state = np.asarray(run.state)
+    vehicle = np.asarray(run.vehicle)
+    n = len(state)
+    uav = np.column_stack([state[:, :2], np.full(n, scene.ground_level + uav_altitude)])
+    ground = scene.poi_on_surface(np.column_stack([vehicle, np.full(n, vehicle_height)]))
+    return np.asarray(scene.line_of_sight(uav, ground), dtype=bool)
+
+
+def simulate(vehicle: GroundVehicle, uav: Uav, parameters: Optional[FollowParameters] = None, *,
+             wind: Wind | Sequence[float] | None = None, wind_estimate: Optional[Sequence[float]] = None,
+             flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
+             start: Optional[Sequence[float]] = None, offset_schedule: Sequence[tuple[float, float, float]] = (),
+             scene: Optional[VisibilityScene] = None, vehicle_height: float = 0.5) -> FollowResult:
+    """Plan and fly a follow run: the planner's 1 Hz waypoints flown by the flight layer.
+
+    wind: the true wind (``vt.flight.Wind`` or (east, north) m/s); wind_estimate: what the
+    planner compensates (default: the true constant wind; compensation is
+    ``parameters.wind_compensation``). start: (x, y, psi), default on the planned path.
+    offset_schedule: (t, distance, angle) keys, linear in between (Fig. 8 moves the loiter ahead).
+    With a scene, ``line_of_sight`` is evaluated at every sample."""
+    true_wind = _wind(wind)
+    estimate = None if wind_estimate is None else np.asarray(wind_estimate, dtype=float)
+    run = _follow.follow(vehicle, uav, parameters or FollowParameters(), true_wind, wind_estimate=estimate,
+                         flight=flight or FollowFlight(), camera=camera or DownwardCamera(),
+                         start=None if start is None else np.asarray(start, dtype=float),
+                         offset_schedule=[(float(t), float(d), float(a)) for t, d, a in offset_schedule])
+    visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
+    return FollowResult(run, "sinusoid", visible)
+
+
+def baseline_radius(vehicle: GroundVehicle, uav: Uav, parameters: Optional[FollowParameters] = None) -> float:
+    """The smallest constant orbit the baseline can hold about the fastest vehicle: Lemma 6 of
+    the tracking paper, r_min (1 + v_g/v)^2, with the planner's turn margin (the vehicle's speed
+    capped at the UAV's: faster, no orbit is flyable)."""
+    margin = (parameters or FollowParameters()).turn_margin
+    ratio = min(vehicle.max_speed / uav.speed, 1.0)
+    return margin * uav.min_turn_radius * (1.0 + ratio) ** 2
+
+
+def baseline(vehicle: GroundVehicle, uav: Uav, radius: Optional[float] = None, *, control: Optional[Control] = None,
+             parameters: Optional[FollowParameters] = None, wind: Wind | Sequence[float] | None = None,
+             flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
+             start: Optional[Sequence[float]] = None, scene: Optional[VisibilityScene] = None,
+             vehicle_height: float = 0.5) -> FollowResult:
+    """The tracking pipeline's guidance vector field (74) and steering law (86) at a constant
+    radius about the offset point of ``parameters`` (default radius: :func:`baseline_radius`),
+    flown by the flight layer in the true wind. Its desired position is the orbit's nearest point,
+    so its tracking error is |r - R|."""
+    parameters = parameters or FollowParameters()
+    r = baseline_radius(vehicle, uav, parameters) if radius is None else float(radius)
+    if not math.isfinite(r) or r <= 0.0:
+        raise VistrackError(f"baseline.radius = {radius!r}: must be a finite number > 0")
+    run = _follow.orbit_follow(vehicle, uav, control or Control(), r, parameters, _wind(wind),
+                               flight=flight or FollowFlight(), camera=camera or DownwardCamera(),
+                               start=None if start is None else np.asarray(start, dtype=float))
+    visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
+    return FollowResult(run, "orbit", visible)

@@ -1,0 +1,190 @@
+"""The ``waypoints`` case kind: one flight of Dubins waypoint navigation (DWN) or classical
+waypoint navigation (WN) over a route (:func:`vistrack.waypoint_nav.fly`, what ``vistrack
+waypoints`` flies per method), in a wind the guidance does not know.
+
+Its base is a mapping (inline or a YAML file) of :func:`~vistrack.waypoint_nav.fly`'s settings;
+missing keys take the paper's defaults (``vt.waypoint_nav.DEFAULTS``)::
+
+    route: waypoints_paper.csv      # CSV x,y; or waypoints: [[x, y], ...];
+                                    # or random_route: {count: 6, legs: [4, 10], seed: 0} (legs in
+                                    # units of R, as vt.waypoint_nav.random_route; no seed: the case's)
+    start: null                     # [x, y, psi]; null: at the first waypoint, heading to the second
+    method: dwn                     # dwn | wn
+    waypoint_radius: null           # WN's R_WP (null: R)
+    turn_radius: 0.7
+    speed: 0.8
+    dt: 0.02
+    gains: [0.1, 5.25]
+    weights: [1.0, 1.0]
+    integration: discrete           # discrete | continuous
+    max_time: null
+    wind: {east: 0.0, north: 0.0, gusts: false}   # or {speed, direction_deg}; gusts: true (Dryden
+                                                  # gusts seeded by the case's seed) or a seed
+
+To fly several methods or winds over the same random route and gusts, vary ``random_route.seed``
+(and give ``wind.gusts`` a seed) as parameters: cases without them draw from their own seeds.
+
+Metrics: ``fly(...).metrics()`` without its lists (miss distances per waypoint, turning points),
+plus ``waypoints``, ``route_length``, ``path_ratio`` (flown length over the route's) and
+``mean_miss_over_R``.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any, Mapping
+
+import numpy as np
+
+from .. import waypoint_nav as wn
+from ..flight import Wind
+from ..io import read_route, read_yaml_mapping
+from ..schema import fail, integer, number, positive, resolve_path
+from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, register_kind, set_dotted
+
+__all__ = ["WAYPOINTS"]
+
+_SOURCES = ("route", "waypoints", "random_route")
+_SETTINGS = ("start", "method", "waypoint_radius", "turn_radius", "speed", "dt", "gains", "weights", "integration",
+             "max_time", "wind")
+_WIND = ("east", "north", "speed", "direction_deg", "gusts")
+_RANDOM = ("count", "legs", "seed")
+_METRICS = ("method", "label", "waypoint_radius", "waypoints", "route_length", "max_miss_over_R",
+            "mean_miss_over_R", "all_reached", "finished", "swirls", "overshoot", "overshoot_over_R", "undershoot",
+            "undershoot_over_R", "path_length", "path_ratio", "duration", "fuel")
+
+
+def _base(value: Any, folder: Path) -> dict[str, Any]:
+    if isinstance(value, str):
+        path = resolve_path(folder, value, "base")
+        data, folder = read_yaml_mapping(path, "base"), path.parent
+    elif isinstance(value, Mapping):
+        data = dict(value)
+    else:
+        raise fail("base", value, "must be a waypoint-navigation mapping or a YAML file of one")
+    full = _defaults(data, folder)
+    _flight_inputs(full, folder, seed=0)  # validates the base
+    return full
+
+
+def _defaults(data: Mapping[str, Any], folder: Path) -> dict[str, Any]:
+    """The base with every setting present (the paper's defaults) and file paths absolute."""
+    unknown = sorted(set(data) - set(_SOURCES) - set(_SETTINGS))
+    if unknown:
+        raise fail(unknown[0], data[unknown[0]], "unknown key; allowed: " + ", ".join((*_SOURCES, *_SETTINGS)))
+    d = wn.DEFAULTS
+    full: dict[str, Any] = {"start": None, "method": d["method"], "waypoint_radius": None,
+                            "turn_radius": d["turn_radius"], "speed": d["speed"], "dt": d["dt"],
+                            "gains": list(d["gains"]), "weights": list(d["weights"]), "integration": d["integration"],
+                            "max_time": None, "wind": {"east": 0.0, "north": 0.0, "gusts": False}}
+    full.update({k: v for k, v in data.items() if k in _SETTINGS})
+    sources = [k for k in _SOURCES if data.get(k) is not None]
+    if len(sources) != 1:
+        raise fail("route", {k: data.get(k) for k in _SOURCES},
+                   "give exactly one of route: CSV, waypoints: [[x, y], ...], random_route: {count, legs}")
+    key = sources[0]
+    full[key] = str(resolve_path(folder, data[key], "route")) if key == "route" else data[key]
+    return full
+
+
+def _keys(base: Mapping[str, Any]) -> set[str]:
+    return dotted_keys(base) | set(_SOURCES) | {f"wind.{k}" for k in _WIND} | {f"random_route.{k}" for k in _RANDOM}
+
+
+def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
+    result = set_dotted(data, key, value)
+    top, _, name = key.partition(".")
+    if top in _SOURCES:
+        for other in _SOURCES:
+            if other != top:
+                result.pop(other, None)
+    if top == "wind" and name in ("east", "north", "speed", "direction_deg"):  # one way to give the wind
+        drop = ("speed", "direction_deg") if name in ("east", "north") else ("east", "north")
+        for other in drop:
+            result["wind"].pop(other, None)
+    return result
+
+
+def _pair(key: str, value: Any) -> tuple[float, float]:
+    if not isinstance(value, (list, tuple)) or len(value) != 2:
+        raise fail(key, value, "must be a pair [a, b]")
+    return number(f"{key}[0]", value[0]), number(f"{key}[1]", value[1])
+
+
+def _route(data: Mapping[str, Any], folder: Path, seed: int, turn_radius: float) -> np.ndarray:
+    if data.get("route") is not None:
+        return read_route(resolve_path(folder, data["route"], "route"), "route")
+    if data.get("waypoints") is not None:
+        return wn.route_array(data["waypoints"], "waypoints")
+    spec = data.get("random_route")
+    if not isinstance(spec, Mapping) or set(spec) - set(_RANDOM):
+        raise fail("random_route", spec, "must be {count: n, legs: [low, high], seed: s} (legs in units of R)")
+    count = integer("random_route.count", spec.get("count", 6), 2, 10_000)
+    legs = _pair("random_route.legs", spec.get("legs", [4.0, 10.0]))
+    if not 0.0 < legs[0] <= legs[1]:
+        raise fail("random_route.legs", spec.get("legs"), "must be 0 < low <= high")
+    if spec.get("seed") is not None:
+        seed = integer("random_route.seed", spec["seed"], 0, 2**63 - 1)
+    return wn.random_route(np.random.default_rng(seed), count, turn_radius, legs)
+
+
+def _wind(value: Any, seed: int) -> Wind:
+    if not isinstance(value, Mapping) or set(value) - set(_WIND):
+        raise fail("wind", value, "must be {east, north} or {speed, direction_deg}, with gusts: false/true/seed")
+    if "speed" in value or "direction_deg" in value:
+        speed = number("wind.speed", value.get("speed", 0.0), low=0.0)
+        angle = math.radians(number("wind.direction_deg", value.get("direction_deg", 0.0)))
+        east, north = speed * math.cos(angle), speed * math.sin(angle)
+    else:
+        east, north = number("wind.east", value.get("east", 0.0)), number("wind.north", value.get("north", 0.0))
+    gusts = value.get("gusts", False)
+    if gusts is False or gusts is None:
+        return Wind(east=east, north=north)
+    gust_seed = seed if gusts is True else integer("wind.gusts", gusts, 0, 2**63 - 1)
+    return Wind(east=east, north=north, gusts=wn.paper_gusts(gust_seed))
+
+
+def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np.ndarray, dict[str, Any]]:
+    """The route and fly()'s keyword arguments, validated (errors name the key and the value)."""
+    turn_radius = positive("turn_radius", data["turn_radius"])
+    options: dict[str, Any] = {
+        "method": data["method"], "turn_radius": turn_radius, "speed": positive("speed", data["speed"]),
+        "dt": positive("dt", data["dt"]), "gains": _pair("gains", data["gains"]),
+        "weights": _pair("weights", data["weights"]), "integration": data["integration"],
+        "wind": _wind(data["wind"], seed),
+    }
+    if options["method"] not in ("dwn", "wn"):
+        raise fail("method", options["method"], 'must be "dwn" or "wn"')
+    if options["integration"] not in ("discrete", "continuous"):
+        raise fail("integration", options["integration"], 'must be "discrete" or "continuous"')
+    if data.get("waypoint_radius") is not None:
+        options["waypoint_radius"] = positive("waypoint_radius", data["waypoint_radius"])
+    if data.get("max_time") is not None:
+        options["max_time"] = positive("max_time", data["max_time"])
+    if data.get("start") is not None:
+        start = data["start"]
+        if not isinstance(start, list) or len(start) != 3:
+            raise fail("start", start, "must be [x, y, psi] or null")
+        options["start"] = tuple(number(f"start[{i}]", c) for i, c in enumerate(start))
+    return _route(data, folder, seed, turn_radius), options
+
+
+def _run(data: dict[str, Any], context: CaseContext) -> CaseOutput:
+    route, options = _flight_inputs(data, context.folder, context.seed)
+    flight = wn.fly(route, **options)
+    metrics = {k: v for k, v in flight.metrics().items() if not isinstance(v, list)}
+    route_length = float(np.sum(np.linalg.norm(np.diff(route, axis=0), axis=1)))  # through the waypoints
+    metrics.update({"waypoints": len(route), "route_length": route_length,
+                    "path_ratio": flight.path_length / route_length if route_length > 0 else None,
+                    "mean_miss_over_R": float(np.mean(flight.miss_distances) / flight.turn_radius)})
+    return CaseOutput(metrics)
+
+
+WAYPOINTS = register_kind(CaseKind(
+    name="waypoints",
+    description="Dubins (DWN) or classical (WN) waypoint navigation over a route in unknown wind (vistrack waypoints)",
+    load_base=_base, keys=_keys, run=_run, apply=_apply, metric_names=_METRICS,
+    figure_metrics=("max_miss_over_R", "mean_miss_over_R", "swirls", "overshoot_over_R", "path_ratio", "duration"),
+    route_key="waypoints",  # routes of a road file (routes.roads) become the waypoints
+))

@@ -1,0 +1,285 @@
+"""vistrack.loiter: the planners' API, coverage against shapely and Monte Carlo, the order search
+against brute force, scenario files, errors naming the field, the CLI."""
+
+from __future__ import annotations
+
+import itertools
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import vistrack as vt
+from vistrack import VistrackError, loiter
+
+REPO = Path(__file__).resolve().parents[2]
+EXAMPLES = sorted((REPO / "examples").glob("loiter_*aoi.yaml"))
+SQUARE = [(200.0, 200.0), (600.0, 200.0), (600.0, 600.0), (200.0, 600.0)]
+
+
+def test_public_api_shape() -> None:
+    assert vt.loiter is loiter
+    assert loiter.METHODS == ("fly_through", "tlpp", "ldlpp")
+    plan = vt.loiter.plan(SQUARE, method="ldlpp", start=(0, 0), end=(0, 0), turn_radius=46.0, speed=12.0,
+                          aoi_radius=46.0, turns=1, order="given")
+    assert plan.flight_time == pytest.approx(plan.length / 12.0)
+    assert plan.transit_time == pytest.approx(plan.flight_time - plan.loiter_time)
+    assert 0 < plan.transit_time < plan.flight_time
+    kinds = {(s.kind, s.role) for s in plan.segments}
+    assert ("arc", "loiter") in kinds and ("line", "transit") in kinds and ("arc", "entry") in kinds
+    for s in plan.segments:
+        assert s.length > 0
+        if s.kind == "arc":
+            assert s.direction in ("ccw", "cw") and s.radius == pytest.approx(46.0) and s.center is not None
+        else:
+            assert s.direction is None and s.radius is None and s.center is None
+    rows = plan.sample(1.0)
+    assert rows.shape[1] == 3
+    assert rows[0, :2] == pytest.approx([0.0, 0.0]) and rows[-1, :2] == pytest.approx([0.0, 0.0], abs=1e-9)
+    # Continuous heading, turn rate within v / r.
+    assert np.all(np.abs(np.diff(rows[:-1, 2])) <= 12.0 / 46.0 + 1e-9)
+    records = loiter.segment_records(plan)
+    assert json.loads(json.dumps(records))[0]["kind"] == "line"
+    circles = loiter.loiter_circles(plan)
+    assert [c["aoi"] for c in circles] == list(plan.order)
+    for c in circles:
+        assert c["direction"] == "ccw" and c["turns"] >= 1.0
+        assert math.dist(c["entry"], c["center"]) == pytest.approx(46.0)
+        assert math.dist(c["exit"], c["center"]) == pytest.approx(46.0)
+
+
+def test_sampling_times_and_end() -> None:
+    plan = loiter.plan(SQUARE, "tlpp")
+    states = plan.sample_states(0.5)
+    assert states.t[0] == 0.0 and states.t[-1] == pytest.approx(plan.flight_time)
+    assert np.all(np.diff(states.t) > 0)
+    for t, row in zip(states.t[::40], states.poses[::40]):
+        assert plan.at_time(float(t)) == pytest.approx(tuple(row))
+    without_end = plan.sample_states(1.0, False)
+    assert without_end.t[-1] <= plan.flight_time and len(without_end.t) == math.floor(plan.flight_time) + 1
+
+
+def test_every_aoi_is_circled_at_least_turns_times() -> None:
+    for method in loiter.METHODS:
+        for turns in (1, 2):
+            plan = loiter.plan(SQUARE, method, turns=turns)
+            assert np.all(plan.loiter_sweep >= 2 * math.pi * turns - 1e-9)
+            # The swept angle about each AOI centre, summed along the sampled loiter, agrees.
+            states = plan.sample_states(0.05)
+            for i, centre in enumerate(SQUARE):
+                on = [k for k, seg in enumerate(states.segment)
+                      if plan.segments[seg].role == "loiter" and plan.segments[seg].aoi == i]
+                angles = np.unwrap(np.arctan2(states.poses[on, 1] - centre[1], states.poses[on, 0] - centre[0]))
+                # Samples fall up to one step inside each end of the loiter.
+                assert abs(angles[-1] - angles[0]) >= 2 * math.pi * turns - 2 * 0.05 * 12.0 / 46.0 - 1e-9
+
+
+def test_best_order_matches_brute_force() -> None:
+    rng = np.random.default_rng(4)
+    aois = loiter.random_aois(6, rng)
+    for method in loiter.METHODS:
+        brute = min(loiter.order_length(aois, list(order), method) for order in itertools.permutations(range(6)))
+        best = loiter.plan(aois, method, order="best")
+        assert best.length == pytest.approx(brute, rel=1e-9)
+        assert loiter.plan(aois, method).length >= best.length - 1e-9
+
+
+def _ellipse_polygon(footprint: loiter.Footprint, n: int = 2048):
+    from shapely.geometry import Polygon
+
+    t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
+    along = np.array(footprint.along)
+    left = np.array([-along[1], along[0]])
+    points = (np.array(footprint.center)[None, :] + np.outer(footprint.semi_along * np.cos(t), along)
+              + np.outer(footprint.semi_across * np.sin(t), left))
+    return Polygon(points)
+
+
+def test_coverage_fractions_agree_with_shapely() -> None:
+    from shapely.geometry import Point
+
+    plan = loiter.plan(SQUARE, "tlpp")
+    camera = loiter.Camera()
+    cov = loiter.coverage(plan, camera=camera)
+    states = plan.sample_states(1.0, False)
+    assert cov.fraction.shape == (len(states.t), 4)
+    checked = 0
+    for k in range(0, len(states.t), 7):
+        i = cov.pointed[k]
+        if i < 0:
+            continue
+        footprint = camera.footprint(tuple(states.poses[k]), cov.bank[k] + cov.gimbal[k])
+        disk = Point(*SQUARE[i]).buffer(46.0, 1024)
+        theirs = _ellipse_polygon(footprint).intersection(disk).area / disk.area
+        assert cov.fraction[k, i] == pytest.approx(theirs, abs=2e-4)
+        checked += 1
+    assert checked > 20
+
+
+def test_coverage_area_against_monte_carlo() -> None:
+    rng = np.random.default_rng(8)
+    camera = loiter.Camera()
+    for _ in range(20):
+        pose = (rng.uniform(-50, 50), rng.uniform(-50, 50), rng.uniform(-math.pi, math.pi))
+        footprint = camera.footprint(pose, rng.uniform(-0.7, 0.7))
+        centre = np.array(footprint.center) + rng.uniform(-80, 80, 2)
+        exact = footprint.disk_area(tuple(centre), 46.0)
+        radius = 46.0 * np.sqrt(rng.uniform(0, 1, 200000))
+        angle = rng.uniform(0, 2 * math.pi, 200000)
+        points = centre + np.column_stack([radius * np.cos(angle), radius * np.sin(angle)])
+        d = points - np.array(footprint.center)
+        along = np.array(footprint.along)
+        a = d @ along
+        s = d @ np.array([-along[1], along[0]])
+        p = np.mean((a / footprint.semi_along) ** 2 + (s / footprint.semi_across) ** 2 <= 1.0)
+        disk = math.pi * 46.0 ** 2
+        assert exact == pytest.approx(p * disk, abs=5 * disk * math.sqrt(max(p * (1 - p), 1e-6) / 200000) + 1e-9)
+
+
+def test_camera_reproduces_nadir_area_and_explains_the_tilted_one() -> None:
+    camera = loiter.Camera()
+    assert camera.altitude == 61.0 and camera.fov_deg == 74.0 and camera.max_gimbal_deg == 25.0
+    assert camera.footprint((0, 0, 0), 0.0).area == pytest.approx(6638, abs=0.5)
+    tilted = camera.footprint((0, 0, 0), math.radians(25))
+    assert tilted.area == pytest.approx(10866, abs=1)
+    assert math.pi * (2 * tilted.semi_across) ** 2 == pytest.approx(51223, abs=1)
+
+
+def test_coverage_from_samples_matches_the_plan() -> None:
+    plan = loiter.plan(SQUARE, "ldlpp")
+    states = plan.sample_states(1.0, False)
+    exact = loiter.coverage(plan)
+    with_rates = loiter.coverage(np.column_stack([states.poses, states.turn_rate]), SQUARE)
+    assert with_rates.time == exact.time and with_rates.area == pytest.approx(exact.area)
+    # Turn rates from the headings: nearly the same (they differ at segment joins).
+    estimated = loiter.coverage(states.poses, SQUARE)
+    assert estimated.time == pytest.approx(exact.time, rel=0.05)
+
+
+def test_scenario_files_load_and_plan() -> None:
+    assert len(EXAMPLES) == 6
+    for path in EXAMPLES:
+        scenario = loiter.load_scenario(path)
+        assert 4 <= len(scenario.aois) <= 9
+        assert np.all((scenario.aois >= 0) & (scenario.aois <= 800))
+        assert set(scenario.paper) == set(loiter.METHODS)
+        for method in loiter.METHODS:
+            plan = scenario.plan(method)
+            assert plan.flight_time > 0 and scenario.coverage(plan).time > 0
+
+
+def test_random_scenarios_are_seeded() -> None:
+    a = loiter.random_scenario(7, seed=3)
+    b = loiter.random_scenario(7, seed=3)
+    assert np.array_equal(a.aois, b.aois)
+    assert not np.array_equal(a.aois, loiter.random_scenario(7, seed=4).aois)
+    d = np.hypot(*(a.aois[:, None, :] - a.aois[None, :, :]).transpose(2, 0, 1))
+    assert np.min(d[np.triu_indices(7, 1)]) >= 160.0
+    for method in loiter.METHODS:  # every order is flyable
+        a.plan(method, "best")
+
+
+@pytest.mark.parametrize("kwargs, field", [
+    ({"aois": np.zeros((0, 2))}, "aois"),
+    ({"aoi_radius": 30.0}, "aoi_radius"),
+    ({"aois": [(300, 300), (350, 300)]}, "aois[1]"),
+    ({"turns": 0}, "turns"),
+    ({"speed": 0.0}, "speed"),
+    ({"turn_radius": -1.0}, "turn_radius"),
+    ({"aois": [(300, float("nan"))]}, "aois[0][1]"),
+    ({"method": "spiral"}, "method"),
+    ({"order": "random"}, "order"),
+    ({"start": (310, 300)}, "start"),
+])
+def test_bad_input_names_the_field(kwargs: dict, field: str) -> None:
+    arguments = {"aois": [(300.0, 300.0), (600.0, 300.0)], **kwargs}
+    with pytest.raises(VistrackError, match=field.replace("[", r"\[").replace("]", r"\]")):
+        loiter.plan(**arguments)
+
+
+def test_ldlpp_refuses_lines_too_short_for_its_turns() -> None:
+    with pytest.raises(VistrackError, match=r"aois\[1\].*LDLPP needs"):
+        loiter.plan([(300, 0), (420, 0), (360, 400)], "ldlpp")
+    assert loiter.plan([(300, 0), (420, 0), (360, 400)], "ldlpp", order="best").order in ([0, 2, 1], [1, 2, 0])
+
+
+def test_scenario_file_errors_name_the_key(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("aois: [[300, 300], [600, 300]]\nspeed: -3\n")
+    with pytest.raises(VistrackError, match="speed"):
+        loiter.load_scenario(bad)
+    bad.write_text("aois: [[300, 300], [600, 300]]\nwind: 3\n")
+    with pytest.raises(VistrackError, match="wind"):
+        loiter.load_scenario(bad)
+    bad.write_text("aois: [[300, 300], [600]]\n")
+    with pytest.raises(VistrackError, match=r"aois\[1\]"):
+        loiter.load_scenario(bad)
+    bad.write_text("aois: [[300, 300]]\ncamera: {altitude: 0}\n")
+    with pytest.raises(VistrackError, match=r"camera\.altitude"):
+        loiter.load_scenario(bad)
+
+
+def test_cli_writes_figures_metrics_and_paths(tmp_path: Path) -> None:
+    from vistrack.cli import main
+
+    source = EXAMPLES[0].read_bytes()
+    assert main(["loiter", str(EXAMPLES[0]), "--order", "best", "--out", str(tmp_path / "one"), "--quiet"]) == 0
+    assert EXAMPLES[0].read_bytes() == source  # input untouched
+    metrics = json.loads((tmp_path / "one" / "metrics.json").read_text())
+    assert [m["method"] for m in metrics["methods"]] == list(loiter.METHODS)
+    assert all(m["best_flight_time_s"] <= m["flight_time_s"] + 1e-9 for m in metrics["methods"])
+    for method in loiter.METHODS:
+        lines = (tmp_path / "one" / f"path_{method}.csv").read_text().splitlines()
+        assert lines[0].startswith("t,x,y,psi") and len(lines) > 100
+    assert (tmp_path / "one" / "plans.png").stat().st_size > 10000
+    assert main(["loiter", *map(str, EXAMPLES[:2]), "--method", "ldlpp", "tlpp", "--out", str(tmp_path / "two"),
+                 "--quiet"]) == 0
+    assert "| TLPP |" in (tmp_path / "two" / "table.md").read_text()
+    assert (tmp_path / "two" / "fig14_comparison.png").exists()
+    assert main(["loiter", "--random", "6", "--seed", "1", "--out", str(tmp_path / "random"), "--quiet"]) == 0
+    assert len(json.loads((tmp_path / "random" / "random.json").read_text())["records"]) == 18
+
+
+def test_cli_errors_are_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from vistrack.cli import main
+
+    assert main(["loiter", "--out", str(tmp_path)]) == 2
+    assert "scenarios" in capsys.readouterr().err
+    assert main(["loiter", str(EXAMPLES[0]), "--wind", "3", "--out", str(tmp_path)]) == 2
+    assert "--wind" in capsys.readouterr().err
+
+
+def test_plans_fly_through_the_flight_layer() -> None:
+    plan = loiter.plan(SQUARE, "ldlpp")
+    calm = loiter.fly(plan)
+    assert calm.finished and calm.end_time == pytest.approx(plan.flight_time, abs=0.5)
+    pieces = loiter.path_pieces(plan)
+    assert pieces.shape == (len(plan.segments), 5)
+    follower = vt.flight.PathFollower(pieces, plan.speed, plan.turn_radius)
+    assert follower.length == pytest.approx(plan.length)
+    # Without wind the flown path stays on the plan and covers what the plan covers.
+    scenario = loiter.Scenario(aois=np.array(SQUARE))
+    calm_score = loiter.fly_and_score(scenario, plan, (0.0, 0.0), keep_trajectory=False)
+    assert calm_score["max_cross_track_m"] < 1.0
+    assert calm_score["loiter_covered_fraction"] == pytest.approx(calm_score["planned_loiter_covered_fraction"])
+    assert calm_score["coverage_time_s"] == pytest.approx(calm_score["planned_coverage_time_s"], abs=3.0)
+    # In a 5 m/s wind the minimum-radius loiters cannot be held: coverage on the loiters drops.
+    windy = loiter.fly_and_score(scenario, plan, (5.0, 0.0), keep_trajectory=False)
+    assert windy["finished"]
+    assert windy["max_cross_track_m"] > 20.0
+    assert windy["loiter_covered_fraction"] < calm_score["loiter_covered_fraction"] - 0.1
+    with pytest.raises(VistrackError, match="wind"):
+        loiter.fly(plan, (12.0, 0.0))
+
+
+def test_cli_wind(tmp_path: Path) -> None:
+    from vistrack.cli import main
+
+    assert main(["loiter", str(EXAMPLES[0]), "--method", "tlpp", "--wind", "5,0", "--out", str(tmp_path),
+                 "--quiet"]) == 0
+    metrics = json.loads((tmp_path / "metrics.json").read_text())
+    flown = metrics["methods"][0]["wind"][0]
+    assert flown["wind"] == [5.0, 0.0] and 0.0 <= flown["loiter_covered_fraction"] <= 1.0
+    assert (tmp_path / "wind_tlpp.png").exists()
