@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ make cmake ninja-build ccache python3-dev python3-venv
-          libembree-dev libcgal-dev libeigen3-dev libgtest-dev libtbb-dev nlohmann-json3-dev)
+          libembree-dev libcgal-dev libeigen3-dev libgtest-dev libtbb-dev libboost-dev nlohmann-json3-dev)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")

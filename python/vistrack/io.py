@@ -522,6 +522,7 @@ def write_loiter_samples_csv(path: str | Path, plan: LoiterPlan, coverage: Loite
             x, y, psi = samples.poses[k]
             out.write(f"{samples.t[k]:.6f},{x:.6f},{y:.6f},{psi:.9f},{samples.turn_rate[k]:.9f},{roles[k]},"
                       f"{coverage.pointed[k]},{coverage.gimbal[k]:.6f},{covered[k]}\n")
+    return file
 
 
 # ---- follow (issue 15): vehicle tracks, road paths, follow trajectories -------------------------
