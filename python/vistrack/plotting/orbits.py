@@ -128,6 +128,7 @@ def figure_radius(plan: VisibilityOrbitPlan, path: str | Path) -> Path:
         cx.set_ylabel("d$^2$R/dt$^2$ (m/s$^2$)")
         cx.grid(alpha=0.3)
     axes[-1].set_xlabel("time (s)")
-    fig.suptitle(f"R(t): {plan.radii[0]:.1f} m → {plan.radii[-1]:.1f} m over {t[-1]:.2f} s ({plan.planning.locus} locus)")
+    fig.suptitle(f"R(t): {plan.radii[0]:.1f} m → {plan.radii[-1]:.1f} m over {t[-1]:.2f} s "
+                 f"({plan.planning.locus} locus)")
     fig.tight_layout()
     return save_figure(fig, path, dpi=130)
