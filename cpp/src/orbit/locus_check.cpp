@@ -201,12 +201,24 @@ void smooth_locus(VisibilityOrbitPlan& plan, const CheckProbe& probe) {
 
   // The reference and its feasibility: Algorithm 1's verdict on the samples first, then Lemma 6 on
   // the whole smooth R(t).
+  const double lowest = profile.min_radius();
+  if (lowest < 0.0) {
+    // A ceiling under 0 (MaxRadius within tracking_margin of 0 somewhere, or a lowered slope
+    // bound) gives no orbit at all: the plan keeps Algorithm 1's piecewise-linear R(t), which stays
+    // a valid (if infeasible) reference, and says why.
+    std::ostringstream why;
+    why.precision(6);
+    why << "the smooth R(t) would fall to " << lowest << " m (tracking_margin = " << planning.tracking_margin
+        << " m inside MaxRadius between the samples): no orbit there; the plan keeps Algorithm 1's radii";
+    plan.feasible = false;
+    plan.infeasibility = plan.orbits.feasible ? why.str() : plan.orbits.infeasibility + "; " + why.str();
+    return;
+  }
   plan.reference = profile;
   plan.radii.clear();
   for (double t : samples.times) plan.radii.push_back(profile.radius(t));
   plan.feasible = plan.orbits.feasible;
   plan.infeasibility = plan.orbits.infeasibility;
-  const double lowest = profile.min_radius();
   if (plan.feasible && lowest < plan.orbits.min_feasible_radius) {
     double at = profile.times.front();
     for (std::size_t k = 0; k < profile.times.size(); ++k)
