@@ -181,7 +181,8 @@ class Scenario:
         scenario.uav, scenario.start = _uav(section(data, "uav", {"speed", "min_turn_radius", "altitude", "start"}))
         scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(section(
-            data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin"}))
+            data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin",
+                               "locus", "tracking_margin", "check_spacing", "check_min_spacing", "turn_share"}))
         scenario.control = _control(section(data, "control", {"beta", "k_psi", "direction"}))
         scenario.simulation = _simulation(section(
             data, "simulation", {"rtol", "atol", "max_step", "output_step"}))
@@ -222,7 +223,11 @@ class Scenario:
             "planning": {"spacing": self.planning.spacing, "cutoff": self.planning.cutoff,
                          "resolution_deg": self.planning.resolution_deg,
                          "min_spacing": self.planning.min_spacing, "max_depth": self.planning.max_depth,
-                         "rate_margin": self.planning.rate_margin},
+                         "rate_margin": self.planning.rate_margin, "locus": self.planning.locus,
+                         "tracking_margin": self.planning.tracking_margin,
+                         "check_spacing": self.planning.check_spacing,
+                         "check_min_spacing": self.planning.check_min_spacing,
+                         "turn_share": self.planning.turn_share},
             "control": {"beta": self.control.beta, "k_psi": self.control.k_psi,
                         "direction": self.control.direction},
             "simulation": {"rtol": self.simulation.rtol, "atol": self.simulation.atol,
@@ -314,12 +319,21 @@ def _sensor(section: dict[str, Any]) -> Sensor:
 
 
 def _planning(section: dict[str, Any]) -> Planning:
+    def locus(key: str, value: Any) -> str:
+        if value not in ("smooth", "paper"):
+            raise fail(key, value, '"smooth" (checked between samples, C1; the default) or "paper" (Algorithm 1, '
+                                   'piecewise linear)')
+        return value
+
     return apply_checks(Planning(), section, "planning", {
         "spacing": positive, "cutoff": positive,
         "resolution_deg": lambda k, v: number(k, v, low=0.1, high=30.0),
         "min_spacing": positive,
         "max_depth": lambda k, v: integer(k, v, 0, 30),
-        "rate_margin": lambda k, v: number(k, v, low=0.0)})  # < 1: checked by Planning.validate
+        "rate_margin": lambda k, v: number(k, v, low=0.0),  # < 1: checked by Planning.validate
+        "locus": locus, "tracking_margin": lambda k, v: number(k, v, low=0.0),
+        "check_spacing": positive, "check_min_spacing": positive,
+        "turn_share": lambda k, v: number(k, v, low=0.0, low_open=True)})  # < 1: checked by Planning.validate
 
 
 def _control(section: dict[str, Any]) -> Control:
