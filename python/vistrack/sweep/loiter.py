@@ -35,7 +35,6 @@ Metrics: the plan's (``vt.loiter.metrics`` without its lists: ``length_m``, ``fl
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -43,8 +42,17 @@ import numpy as np
 
 from .. import loiter
 from ..io import read_loiter_scenario, read_yaml_mapping
-from ..schema import fail, integer, number, positive, resolve_path
-from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, flatten, register_kind, set_dotted
+from ..schema import boolean, fail, integer, number, positive, resolve_path
+from .kinds import (
+    CaseContext,
+    CaseKind,
+    CaseOutput,
+    dotted_keys,
+    flatten,
+    register_kind,
+    set_case_value,
+    wind_components,
+)
 
 __all__ = ["LOITER"]
 
@@ -52,7 +60,7 @@ _SOURCES = ("aois", "random")
 _SETTINGS = ("method", "order", "turns", "turn_radius", "aoi_radius", "speed", "start", "end", "camera",
              "threshold", "dt", "wind")
 _FROM_FILE = ("aois", "start", "end", "turn_radius", "speed", "aoi_radius", "turns", "threshold", "dt")
-_CAMERA = ("fov_deg", "max_gimbal_deg", "altitude")
+_CAMERA = ("fov_deg", "max_gimbal_deg", "altitude", "levelled")
 _WIND = ("east", "north", "speed", "direction_deg")
 _RANDOM = ("count", "seed")
 _FLOWN = ("finished", "flight_time_s", "coverage_time_s", "coverage_area_m2", "loiter_covered_fraction",
@@ -105,17 +113,7 @@ def _keys(base: Mapping[str, Any]) -> set[str]:
 
 
 def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
-    result = set_dotted(data, key, value)
-    top, _, name = key.partition(".")
-    if top in _SOURCES:
-        for other in _SOURCES:
-            if other != top:
-                result.pop(other, None)
-    if top == "wind" and name in _WIND:  # one way to give the wind
-        drop = ("speed", "direction_deg") if name in ("east", "north") else ("east", "north")
-        for other in drop:
-            result["wind"].pop(other, None)
-    return result
+    return set_case_value(data, key, value, _SOURCES)
 
 
 def _pair(key: str, value: Any) -> tuple[float, float]:
@@ -127,11 +125,7 @@ def _pair(key: str, value: Any) -> tuple[float, float]:
 def _wind(value: Any) -> tuple[float, float]:
     if not isinstance(value, Mapping) or set(value) - set(_WIND):
         raise fail("wind", value, "must be {east, north} or {speed, direction_deg} in m/s")
-    if "speed" in value or "direction_deg" in value:
-        speed = number("wind.speed", value.get("speed", 0.0), low=0.0)
-        angle = math.radians(number("wind.direction_deg", value.get("direction_deg", 0.0)))
-        return speed * math.cos(angle), speed * math.sin(angle)
-    return number("wind.east", value.get("east", 0.0)), number("wind.north", value.get("north", 0.0))
+    return wind_components(value)
 
 
 def _scenario(data: Mapping[str, Any], seed: int) -> tuple[loiter.Scenario, str, str, tuple[float, float]]:
@@ -143,12 +137,13 @@ def _scenario(data: Mapping[str, Any], seed: int) -> tuple[loiter.Scenario, str,
         raise fail("order", order, "must be " + ", ".join(loiter.ORDERS))
     camera_data = data["camera"]
     if not isinstance(camera_data, Mapping) or set(camera_data) - set(_CAMERA):
-        raise fail("camera", camera_data, "must be {fov_deg, max_gimbal_deg, altitude}")
+        raise fail("camera", camera_data, "must be {fov_deg, max_gimbal_deg, altitude, levelled}")
     defaults = loiter.Camera()
     camera = loiter.Camera(fov_deg=positive("camera.fov_deg", camera_data.get("fov_deg", defaults.fov_deg)),
                            max_gimbal_deg=number("camera.max_gimbal_deg",
                                                  camera_data.get("max_gimbal_deg", defaults.max_gimbal_deg), low=0.0),
-                           altitude=positive("camera.altitude", camera_data.get("altitude", defaults.altitude)))
+                           altitude=positive("camera.altitude", camera_data.get("altitude", defaults.altitude)),
+                           levelled=boolean("camera.levelled", camera_data.get("levelled", defaults.levelled)))
     settings: dict[str, Any] = {
         "start": _pair("start", data["start"]), "end": _pair("end", data["end"]),
         "turn_radius": positive("turn_radius", data["turn_radius"]), "speed": positive("speed", data["speed"]),

@@ -31,7 +31,6 @@ plus ``waypoints``, ``route_length``, ``path_ratio`` (flown length over the rout
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -41,7 +40,7 @@ from .. import waypoint_nav as wn
 from ..flight import Wind
 from ..io import read_route, read_yaml_mapping
 from ..schema import fail, integer, number, positive, resolve_path
-from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, register_kind, set_dotted
+from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, register_kind, set_case_value, wind_components
 
 __all__ = ["WAYPOINTS"]
 
@@ -93,17 +92,7 @@ def _keys(base: Mapping[str, Any]) -> set[str]:
 
 
 def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
-    result = set_dotted(data, key, value)
-    top, _, name = key.partition(".")
-    if top in _SOURCES:
-        for other in _SOURCES:
-            if other != top:
-                result.pop(other, None)
-    if top == "wind" and name in ("east", "north", "speed", "direction_deg"):  # one way to give the wind
-        drop = ("speed", "direction_deg") if name in ("east", "north") else ("east", "north")
-        for other in drop:
-            result["wind"].pop(other, None)
-    return result
+    return set_case_value(data, key, value, _SOURCES)
 
 
 def _pair(key: str, value: Any) -> tuple[float, float]:
@@ -132,12 +121,7 @@ def _route(data: Mapping[str, Any], folder: Path, seed: int, turn_radius: float)
 def _wind(value: Any, seed: int) -> Wind:
     if not isinstance(value, Mapping) or set(value) - set(_WIND):
         raise fail("wind", value, "must be {east, north} or {speed, direction_deg}, with gusts: false/true/seed")
-    if "speed" in value or "direction_deg" in value:
-        speed = number("wind.speed", value.get("speed", 0.0), low=0.0)
-        angle = math.radians(number("wind.direction_deg", value.get("direction_deg", 0.0)))
-        east, north = speed * math.cos(angle), speed * math.sin(angle)
-    else:
-        east, north = number("wind.east", value.get("east", 0.0)), number("wind.north", value.get("north", 0.0))
+    east, north = wind_components(value)
     gusts = value.get("gusts", False)
     if gusts is False or gusts is None:
         return Wind(east=east, north=north)
