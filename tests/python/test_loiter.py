@@ -3,6 +3,7 @@ against brute force, scenario files, errors naming the field, the CLI."""
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import json
 import math
@@ -220,6 +221,26 @@ def test_scenario_file_errors_name_the_key(tmp_path: Path) -> None:
     bad.write_text("aois: [[300, 300]]\ncamera: {altitude: 0}\n")
     with pytest.raises(VistrackError, match=r"camera\.altitude"):
         loiter.load_scenario(bad)
+    bad.write_text("aois: [[300, 300]]\ncamera: {levelled: 'no'}\n")
+    with pytest.raises(VistrackError, match=r"camera\.levelled = 'no'"):
+        loiter.load_scenario(bad)
+
+
+def test_body_camera_sees_less_of_a_minimum_radius_loiter(tmp_path: Path) -> None:
+    """camera.levelled: false puts the gimbal under the banked body: on a loiter at the minimum
+    turn radius the belly faces out of the circle, so the AOI is held for far less of the loiter
+    than with the paper's levelled camera, which holds it all the time (README's numbers)."""
+    scenario = tmp_path / "one.yaml"
+    scenario.write_text("aois: [[300, 300]]\ncamera: {levelled: false}\n")
+    body = loiter.load_scenario(scenario)
+    assert not body.camera.levelled
+    plan = body.plan("tlpp")
+    on_loiter = np.array([plan.segments[k].role == "loiter" for k in plan.sample_states(body.dt, False).segment])
+    held_body = (body.coverage(plan).fraction[:, 0] >= body.threshold)[on_loiter].mean()
+    levelled = dataclasses.replace(body, camera=loiter.Camera())
+    held_levelled = (levelled.coverage(plan).fraction[:, 0] >= levelled.threshold)[on_loiter].mean()
+    assert held_levelled == 1.0
+    assert held_body < 0.3
 
 
 def test_cli_writes_figures_metrics_and_paths(tmp_path: Path) -> None:
