@@ -18,14 +18,12 @@ Metrics: ``metrics.json`` of ``vistrack follow`` flattened, without the constant
 
 from __future__ import annotations
 
-import copy
 from pathlib import Path
 from typing import Any, Mapping
 
 from ..follow_scenario import TOP_KEYS, FollowScenario
-from ..io import read_yaml_mapping
 from ..schema import fail, number, resolve_path
-from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, flatten, register_kind, set_dotted
+from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, flatten, read_base, register_kind, set_dotted
 
 __all__ = ["FOLLOW", "follow_metrics"]
 
@@ -50,13 +48,7 @@ _METRICS = (*_RUN_METRICS, "wind_compensation", "updates", *(f"baseline.{m}" for
 
 
 def _base(value: Any, folder: Path) -> dict[str, Any]:
-    if isinstance(value, str):
-        path = resolve_path(folder, value, "base")
-        data, folder = dict(read_yaml_mapping(path, "base")), path.parent
-    elif isinstance(value, Mapping):
-        data = copy.deepcopy(dict(value))
-    else:
-        raise fail("base", value, "must be a follow scenario file or a follow scenario mapping")
+    data, folder = read_base(value, folder, "a follow scenario mapping")
     data.pop("city", None)  # no line-of-sight runs in a sweep
     vehicle = data.get("vehicle")
     if isinstance(vehicle, Mapping) and isinstance(vehicle.get("track"), str):

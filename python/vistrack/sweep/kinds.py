@@ -17,7 +17,8 @@ from pathlib import Path
 from typing import Any, Callable, Mapping, Optional
 
 from .._core import RoadNetwork, VistrackError
-from ..schema import number
+from ..io import read_yaml_mapping
+from ..schema import fail, number, resolve_path
 from .resources import Resources
 
 __all__ = ["KINDS", "CaseContext", "CaseKind", "CaseOutput", "dotted_keys", "flatten", "get_kind", "register_kind",
@@ -129,6 +130,18 @@ def wind_components(value: Mapping[str, Any]) -> tuple[float, float]:
         angle = math.radians(number("wind.direction_deg", value.get("direction_deg", 0.0)))
         return speed * math.cos(angle), speed * math.sin(angle)
     return number("wind.east", value.get("east", 0.0)), number("wind.north", value.get("north", 0.0))
+
+
+def read_base(value: Any, folder: Path, what: str) -> tuple[dict[str, Any], Path]:
+    """A kind's ``base``: a mapping (copied) or the path of a YAML file of one (relative to
+    ``folder``); with the folder its relative paths resolve against. VistrackError naming ``base``
+    otherwise (``what`` says what the mapping holds)."""
+    if isinstance(value, str):
+        path = resolve_path(folder, value, "base")
+        return dict(read_yaml_mapping(path, "base")), path.parent
+    if isinstance(value, Mapping):
+        return copy.deepcopy(dict(value)), folder
+    raise fail("base", value, f"must be {what} or a YAML file of one")
 
 
 def set_dotted(data: Mapping[str, Any], key: str, value: Any) -> dict[str, Any]:

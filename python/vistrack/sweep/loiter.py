@@ -41,7 +41,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from .. import loiter
-from ..io import read_loiter_scenario, read_yaml_mapping
+from ..io import read_loiter_scenario
 from ..schema import boolean, fail, integer, number, positive, resolve_path
 from .kinds import (
     CaseContext,
@@ -49,6 +49,7 @@ from .kinds import (
     CaseOutput,
     dotted_keys,
     flatten,
+    read_base,
     register_kind,
     set_case_value,
     wind_components,
@@ -75,18 +76,12 @@ def _defaults() -> dict[str, Any]:
     return {"method": "ldlpp", "order": "given", "turns": 1, "turn_radius": 46.0, "aoi_radius": 46.0, "speed": 12.0,
             "start": [0.0, 0.0], "end": [0.0, 0.0],
             "camera": {"fov_deg": camera.fov_deg, "max_gimbal_deg": camera.max_gimbal_deg,
-                       "altitude": camera.altitude},
+                       "altitude": camera.altitude, "levelled": camera.levelled},
             "threshold": 0.75, "dt": 1.0, "wind": {"east": 0.0, "north": 0.0}}
 
 
 def _base(value: Any, folder: Path) -> dict[str, Any]:
-    if isinstance(value, str):
-        path = resolve_path(folder, value, "base")
-        data, folder = read_yaml_mapping(path, "base"), path.parent
-    elif isinstance(value, Mapping):
-        data = dict(value)
-    else:
-        raise fail("base", value, "must be a loiter mapping or a YAML file of one")
+    data, folder = read_base(value, folder, "a loiter mapping")
     allowed = ("scenario", *_SOURCES, *_SETTINGS)
     unknown = sorted(set(data) - set(allowed))
     if unknown:

@@ -38,9 +38,18 @@ import numpy as np
 
 from .. import waypoint_nav as wn
 from ..flight import Wind
-from ..io import read_route, read_yaml_mapping
+from ..io import read_route
 from ..schema import fail, integer, number, positive, resolve_path
-from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, register_kind, set_case_value, wind_components
+from .kinds import (
+    CaseContext,
+    CaseKind,
+    CaseOutput,
+    dotted_keys,
+    read_base,
+    register_kind,
+    set_case_value,
+    wind_components,
+)
 
 __all__ = ["WAYPOINTS"]
 
@@ -55,13 +64,7 @@ _METRICS = ("method", "label", "waypoint_radius", "waypoints", "route_length", "
 
 
 def _base(value: Any, folder: Path) -> dict[str, Any]:
-    if isinstance(value, str):
-        path = resolve_path(folder, value, "base")
-        data, folder = read_yaml_mapping(path, "base"), path.parent
-    elif isinstance(value, Mapping):
-        data = dict(value)
-    else:
-        raise fail("base", value, "must be a waypoint-navigation mapping or a YAML file of one")
+    data, folder = read_base(value, folder, "a waypoint-navigation mapping")
     full = _defaults(data, folder)
     _flight_inputs(full, folder, seed=0)  # validates the base
     return full
