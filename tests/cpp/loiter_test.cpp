@@ -11,9 +11,12 @@
 #include <random>
 
 #include "loiter/tangents.hpp"
+#include "error_message.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/loiter.hpp"
 #include "vistrack/flight.hpp"
+
+using vistrack::testing::error_message;
 
 using namespace vistrack;
 
@@ -405,20 +408,12 @@ TEST(LoiterOrder, HeuristicAboveTheExactLimit) {
 // ---- Bad input -----------------------------------------------------------------------------------
 
 TEST(LoiterValidation, ErrorsNameTheField) {
-  const auto message = [](const std::function<void()>& call) -> std::string {
-    try {
-      call();
-    } catch (const Error& e) {
-      return e.what();
-    }
-    return "no error";
-  };
   LoiterProblem good;
   good.aois = {Vec2(300.0, 300.0), Vec2(600.0, 300.0)};
   const auto with = [&](const std::function<void(LoiterProblem&)>& change) {
     LoiterProblem p = good;
     change(p);
-    return message([&] { plan_loiter(p, LoiterMethod::Tlpp); });
+    return error_message([&] { plan_loiter(p, LoiterMethod::Tlpp); });
   };
   EXPECT_NE(with([](LoiterProblem& p) { p.aois.clear(); }).find("aois"), std::string::npos);
   EXPECT_NE(with([](LoiterProblem& p) { p.parameters.aoi_radius = 30.0; }).find("aoi_radius"), std::string::npos);
@@ -428,15 +423,15 @@ TEST(LoiterValidation, ErrorsNameTheField) {
   EXPECT_NE(with([](LoiterProblem& p) { p.parameters.turn_radius = -1.0; }).find("turn_radius"), std::string::npos);
   EXPECT_NE(with([](LoiterProblem& p) { p.aois[0].y() = std::nan(""); }).find("aois[0][1]"), std::string::npos);
   EXPECT_NE(with([](LoiterProblem& p) { p.start = Vec2(310.0, 300.0); }).find("start"), std::string::npos);
-  EXPECT_NE(message([] { loiter_method_from_string("spiral"); }).find("method"), std::string::npos);
-  EXPECT_NE(message([&] { plan_loiter_in_order(good, LoiterMethod::Tlpp, {0, 0}); }).find("order[1]"),
+  EXPECT_NE(error_message([] { loiter_method_from_string("spiral"); }).find("method"), std::string::npos);
+  EXPECT_NE(error_message([&] { plan_loiter_in_order(good, LoiterMethod::Tlpp, {0, 0}); }).find("order[1]"),
             std::string::npos);
   LoiterProblem close_start = good;
   close_start.aois[0] = Vec2(60.0, 0.0);
-  EXPECT_NE(message([&] { plan_loiter(close_start, LoiterMethod::Ldlpp); }).find("start"), std::string::npos);
+  EXPECT_NE(error_message([&] { plan_loiter(close_start, LoiterMethod::Ldlpp); }).find("start"), std::string::npos);
   LoiterCamera camera;
   camera.max_gimbal_deg = 60.0;
-  EXPECT_NE(message([&] { camera.validate(); }).find("camera.max_gimbal_deg"), std::string::npos);
+  EXPECT_NE(error_message([&] { camera.validate(); }).find("camera.max_gimbal_deg"), std::string::npos);
 }
 
 // ---- Footprint and the exact area ----------------------------------------------------------------
@@ -736,22 +731,14 @@ TEST(LoiterFlight, PlansFlownWithoutWindStayOnThePath) {
 }
 
 TEST(LoiterFlight, FollowerRejectsBadPaths) {
-  const auto message = [](const std::function<void()>& call) -> std::string {
-    try {
-      call();
-    } catch (const Error& e) {
-      return e.what();
-    }
-    return "no error";
-  };
-  EXPECT_NE(message([] { PathFollower({}, 12.0, 46.0); }).find("pieces"), std::string::npos);
+  EXPECT_NE(error_message([] { PathFollower({}, 12.0, 46.0); }).find("pieces"), std::string::npos);
   const PathPiece line{Vec2(0.0, 0.0), 0.0, 100.0, 0.0};
-  EXPECT_NE(message([&] { PathFollower({line, {Vec2(100.0, 5.0), 0.0, 10.0, 0.0}}, 12.0, 46.0); })
+  EXPECT_NE(error_message([&] { PathFollower({line, {Vec2(100.0, 5.0), 0.0, 10.0, 0.0}}, 12.0, 46.0); })
                 .find("pieces[1].start"),
             std::string::npos);
-  EXPECT_NE(message([&] { PathFollower({{Vec2(0.0, 0.0), 0.0, 10.0, 1.0 / 20.0}}, 12.0, 46.0); })
+  EXPECT_NE(error_message([&] { PathFollower({{Vec2(0.0, 0.0), 0.0, 10.0, 1.0 / 20.0}}, 12.0, 46.0); })
                 .find("pieces[0].curvature"),
             std::string::npos);
-  EXPECT_NE(message([&] { PathFollower({line}, 12.0, 46.0, {0.0, 3.0}); }).find("lookahead_radii"),
+  EXPECT_NE(error_message([&] { PathFollower({line}, 12.0, 46.0, {0.0, 3.0}); }).find("lookahead_radii"),
             std::string::npos);
 }

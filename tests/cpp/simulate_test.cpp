@@ -6,8 +6,11 @@
 #include <random>
 
 #include "test_data.hpp"
+#include "error_message.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/simulate.hpp"
+
+using vistrack::testing::error_message;
 
 namespace vistrack {
 namespace {
@@ -313,28 +316,20 @@ TEST(Simulate, BadInputNamesTheField) {
   const Uav uav;
   const PoiPath poi = two_leg_path(5.0);
   OrbitPlan plan = constant_radius_plan(poi, 150.0, uav);
-  const auto message = [&](auto&& call) {
-    try {
-      call();
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_NE(message([&] { simulate(plan, uav, Vec3(std::nan(""), 0.0, 0.0), Control{}); }).find("x0[0]"),
+  EXPECT_NE(error_message([&] { simulate(plan, uav, Vec3(std::nan(""), 0.0, 0.0), Control{}); }).find("x0[0]"),
             std::string::npos);
   // A direction is a Circulation: a bad one can only come from text, which names its field.
-  EXPECT_NE(message([&] { circulation_from_string("sideways", "control.direction"); }).find("control.direction"),
+  EXPECT_NE(error_message([&] { circulation_from_string("sideways", "control.direction"); }).find("control.direction"),
             std::string::npos);
   Uav slow = uav;
   slow.speed = 4.0;
-  EXPECT_NE(message([&] { simulate(plan, slow, Vec3::Zero(), Control{}); }).find("uav.speed"), std::string::npos);
+  EXPECT_NE(error_message([&] { simulate(plan, slow, Vec3::Zero(), Control{}); }).find("uav.speed"), std::string::npos);
   OrbitPlan steep = plan;
   steep.radii[1] = steep.radii[0] + 20.0 * (steep.times[1] - steep.times[0]);  // dR/dt = 20 > v - v_g
-  EXPECT_NE(message([&] { simulate(steep, uav, Vec3::Zero(), Control{}); }).find("Lemma 5"), std::string::npos);
+  EXPECT_NE(error_message([&] { simulate(steep, uav, Vec3::Zero(), Control{}); }).find("Lemma 5"), std::string::npos);
   SimulationOptions options;
   options.output_step = 0.0;
-  EXPECT_NE(message([&] { simulate(plan, uav, Vec3::Zero(), Control{}, options); }).find("output_step"),
+  EXPECT_NE(error_message([&] { simulate(plan, uav, Vec3::Zero(), Control{}, options); }).find("output_step"),
             std::string::npos);
   EXPECT_THROW(simulate(plan, uav, Vec3::Zero(), Control{}, SimulationOptions{}, {}, -1.0), Error);
 }
