@@ -1,11 +1,13 @@
-"""Benchmark: the whole paper_slow plan (adaptive VVs + Algorithm 1), and the XOR metric (56) per
-pair of neighbouring 1-degree VVs: our fast paths (radial: exact per direction on the meshes;
-grid: the cell intervals) vs our CGAL corefinement path vs the same Boolean volume through
-manifold3d (PyPI), side by side in one run.
+"""Benchmark: the whole paper_slow plan (adaptive VVs + Algorithm 1), the smooth locus against the
+paper's on the three paths with real data (the locus check and the smooth R(t) on top of the same
+VVs), and the XOR metric (56) per pair of neighbouring 1-degree VVs: our fast paths (radial: exact
+per direction on the meshes; grid: the cell intervals) vs our CGAL corefinement path vs the same
+Boolean volume through manifold3d (PyPI), side by side in one run.
 
-    VISTRACK_BUILD_DIR=build/dev python3 bench/orbit_bench.py [--pairs 6] [--repeat 3]
+    VISTRACK_BUILD_DIR=build/dev python3 bench/orbit_bench.py [--pairs 6] [--repeat 3] [--skip-xor]
 
 Goals (issue 5): <= 50 ms per pair on the fast path (radial, the planner's metric); the whole paper_slow plan <= 3 s on 2 cores.
+Goal (issue 12): the smooth locus within 2x of the paper's planning time.
 Charlotte geometry © OpenStreetMap contributors (ODbL).
 """
 
@@ -47,12 +49,34 @@ def manifold_xor(a, b):
     return volume(ma) + volume(mb) - 2.0 * volume(ma ^ mb)
 
 
+def locus_timings(charlotte: vt.Environment, repeat: int) -> None:
+    """Planning time of the smooth locus (check + smooth R(t)) against the paper's, cold (a new
+    scene and VV cache each time), on paper_slow, paper_small and the campus."""
+    campus = load_environment(str(DATA / "campus" / "campus.obj"), "y")
+    runs = [("paper_slow", charlotte, "charlotte/paths/paper_slow.csv", 5.0, vt.Uav(speed=20.0, min_turn_radius=50.0,
+             altitude=300.0), 400.0, dict(spacing=20.0, cutoff=20e6)),
+            ("paper_small", charlotte, "charlotte/paths/paper_small.csv", 5.0, vt.Uav(speed=20.0, min_turn_radius=5.0,
+             altitude=50.0), 100.0, dict(spacing=20.0, cutoff=500e3)),
+            ("campus", campus, "campus/flight_test_path.csv", 0.35, vt.Uav(speed=3.0, min_turn_radius=5.0, altitude=35.0),
+             50.0, dict(spacing=20.0, cutoff=1e5))]
+    print("\nplanning time, smooth locus (check + smooth R(t)) against the paper's (Algorithm 1 only), cold:")
+    for name, env, path, speed, uav, d_max, planning in runs:
+        poi = vt.PoiPath.from_csv(str(DATA / path), speed)
+        sensor = vt.Sensor(d_max=d_max)
+        t_paper, _ = timed(lambda: vt.plan_orbits(env, poi, uav, sensor, vt.Planning(**planning, locus="paper")), repeat)
+        t_smooth, plan = timed(lambda: vt.plan_orbits(env, poi, uav, sensor, vt.Planning(**planning)), repeat)
+        c = plan.check
+        print(f"  {name:11s} paper {t_paper:.3f} s, smooth {t_smooth:.3f} s: x{t_smooth / t_paper:.2f} "
+              f"({len(c.times)} check points, {c.rounds} rounds; goal <= x2: {'met' if t_smooth <= 2 * t_paper else 'NOT met'})")
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--map", default=str(DATA / "charlotte" / "uptown_charlotte.obj"))
     parser.add_argument("--pairs", type=int, default=6, help="neighbouring VV pairs for the XOR comparison")
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--cgal-time-limit", type=float, default=60.0)
+    parser.add_argument("--skip-xor", action="store_true", help="only the plans")
     args = parser.parse_args()
     path = DATA / "charlotte" / "paths" / "paper_slow.csv"
     if not path.exists():
@@ -67,10 +91,14 @@ def main() -> int:
 
     print(f"machine: {os.cpu_count()} cores; vistrack {vt.__version__}")
     # The whole plan, cold: a new scene and an empty VV cache each time.
-    t_plan, plan = timed(lambda: vt.plan_orbits(env, poi, uav, sensor, planning), args.repeat)
+    paper = vt.Planning(spacing=20.0, cutoff=20e6, resolution_deg=1.0, locus="paper")
+    t_plan, plan = timed(lambda: vt.plan_orbits(env, poi, uav, sensor, paper), args.repeat)
     print(f"paper_slow plan (scene + {len(plan.times)} VVs + metric + VPs + Algorithm 1): "
           f"{t_plan:.3f} s  (goal <= 3 s: {'met' if t_plan <= 3.0 else 'NOT met'})")
     print(f"  R {plan.radii[0]:.1f} -> {plan.radii[-1]:.1f} m, feasible={plan.feasible}")
+    locus_timings(env, args.repeat)
+    if args.skip_xor:
+        return 0
 
     # XOR per pair: neighbouring VVs of the plan (1-degree grid), POI frame.
     k_all = list(range(len(plan.times) - 1))

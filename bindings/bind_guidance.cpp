@@ -36,16 +36,19 @@ void bind_guidance(py::module_& m) {
   py::class_<OrbitState>(m, "OrbitState",
                          "The reference orbit at one instant (Definitions 1-2): centre g, its velocity "
                          "g_dot, radius R and dR/dt.")
-      .def(py::init([](const Vec2& center, const Vec2& center_velocity, double radius, double radius_rate) {
-             return make_validated(OrbitState{center, center_velocity, radius, radius_rate});
+      .def(py::init([](const Vec2& center, const Vec2& center_velocity, double radius, double radius_rate,
+                       double radius_acceleration) {
+             return make_validated(OrbitState{center, center_velocity, radius, radius_rate, radius_acceleration});
            }),
            py::kw_only(), py::arg("center") = Vec2(0.0, 0.0), py::arg("center_velocity") = Vec2(0.0, 0.0),
-           py::arg("radius") = 1.0, py::arg("radius_rate") = 0.0,
-           "center g (m), center_velocity g_dot (m/s), radius R (m), radius_rate dR/dt (m/s).")
+           py::arg("radius") = 1.0, py::arg("radius_rate") = 0.0, py::arg("radius_acceleration") = 0.0,
+           "center g (m), center_velocity g_dot (m/s), radius R (m), radius_rate dR/dt (m/s), "
+           "radius_acceleration d2R/dt2 (m/s^2; 0 on the paper's piecewise-linear locus).")
       .def_readwrite("center", &OrbitState::center, "g, (2,)")
       .def_readwrite("center_velocity", &OrbitState::center_velocity, "g_dot, (2,)")
       .def_readwrite("radius", &OrbitState::radius, "R, m")
       .def_readwrite("radius_rate", &OrbitState::radius_rate, "dR/dt, m/s")
+      .def_readwrite("radius_acceleration", &OrbitState::radius_acceleration, "d2R/dt2, m/s^2")
       .def("validate", &OrbitState::validate, "Raise VistrackError naming the first field out of range.");
 
   const GuidanceGains defaults;

@@ -181,6 +181,29 @@ void bind_loiter(py::module_& parent) {
            "(n, 3) array of x, y, psi (continuous) at t = 0, dt, 2 dt, ... and the end point last.")
       .def("sample_states", &LoiterPlan::sample_states, py::arg("dt") = 1.0, py::arg("include_end") = true,
            "Samples (t, poses, turn_rate, segment) at t = 0, dt, ...; include_end appends the end point.")
+      .def(
+          "to_mission",
+          // Missions and the georeference are Python (vistrack.mission, pyproj): delegate.
+          [](const py::object& self, const py::object& georeference, const py::object& altitude,
+             const py::object& speed, double max_step_deg, const py::object& acceptance_radius,
+             bool return_to_launch, const std::string& firmware, const std::string& altitude_mode) {
+            return py::module_::import("vistrack.mission")
+                .attr("loiter_plan_mission")(self, georeference, altitude, py::arg("speed") = speed,
+                                             py::arg("max_step_deg") = max_step_deg,
+                                             py::arg("acceptance_radius") = acceptance_radius,
+                                             py::arg("return_to_launch") = return_to_launch,
+                                             py::arg("firmware") = firmware, py::arg("altitude_mode") = altitude_mode);
+          },
+          py::arg("georeference"), py::arg("altitude"), py::kw_only(), py::arg("speed") = py::none(),
+          py::arg("max_step_deg") = 30.0, py::arg("acceptance_radius") = py::none(),
+          py::arg("return_to_launch") = false, py::arg("firmware") = "ardupilot",
+          py::arg("altitude_mode") = "relative",
+          "The plan as an autopilot mission (vistrack.mission.Mission; save it as .plan, .waypoints or "
+          ".geojson) along the planned path: waypoints at the ends of lines and along the turns, each "
+          "loiter a NAV_LOITER_TURNS of its whole turns (radius signed: positive clockwise) started at the "
+          "plan's entry point on the circle, then waypoints along the circle to its exit point. georeference: "
+          "vistrack.Georeference or (lat, lon[, alt]); altitude: m above the ground at the origin. See "
+          "vistrack.mission.loiter_plan_mission.")
       .def("__repr__", [](const LoiterPlan& p) {
         return "loiter.Plan(method='" + to_string(p.method) + "', aois=" + std::to_string(p.problem.aois.size()) +
                ", length=" + detail::to_text(p.length) + ", flight_time=" + detail::to_text(p.flight_time) +
@@ -199,16 +222,23 @@ void bind_loiter(py::module_& parent) {
   py::class_<LoiterCamera>(m, "Camera",
                            "Section 2.2's camera: circular field of view fov_deg, roll gimbal +-max_gimbal_deg, "
                            "altitude above the AOIs (61 m gives the paper's 6,638 m^2 nadir footprint).")
-      .def(py::init([](double fov_deg, double max_gimbal_deg, double altitude) {
-             LoiterCamera c{fov_deg, max_gimbal_deg, altitude};
+      .def(py::init([](double fov_deg, double max_gimbal_deg, double altitude, bool levelled) {
+             LoiterCamera c{fov_deg, max_gimbal_deg, altitude, levelled};
              c.validate();
              return c;
            }),
            py::arg("fov_deg") = camera_defaults.fov_deg, py::arg("max_gimbal_deg") = camera_defaults.max_gimbal_deg,
-           py::arg("altitude") = camera_defaults.altitude, "fov_deg (full angle), max_gimbal_deg, altitude (m).")
+           py::arg("altitude") = camera_defaults.altitude, py::arg("levelled") = camera_defaults.levelled,
+           "fov_deg (full angle), max_gimbal_deg, altitude (m); levelled: the gimbal angle is measured from the "
+           "vertical (the paper), else the gimbal sits under the banked body (its belly faces out of turns).")
       .def_readwrite("fov_deg", &LoiterCamera::fov_deg, "Full angle of the circular field of view, degrees.")
       .def_readwrite("max_gimbal_deg", &LoiterCamera::max_gimbal_deg, "Largest gimbal roll either side, degrees.")
       .def_readwrite("altitude", &LoiterCamera::altitude, "Height above the AOIs' ground, m.")
+      .def_readwrite("levelled", &LoiterCamera::levelled,
+                     "True: the gimbal angle is measured from the vertical (the paper's camera); False: the gimbal "
+                     "rolls with the banked body, so the axis tilts by gimbal - bank.")
+      .def("tilt", &camera_tilt, py::arg("bank"), py::arg("gimbal"),
+           "The axis' tilt to the left of vertical, rad, for a bank and a gimbal angle (rad, positive left).")
       .def("validate", &LoiterCamera::validate, "Raise VistrackError naming the first invalid field.")
       .def("footprint", [](const LoiterCamera& c, const std::array<double, 3>& pose, double tilt) {
              c.validate();
@@ -217,7 +247,8 @@ void bind_loiter(py::module_& parent) {
            "Ground footprint (an ellipse) at pose (x, y, psi) with the axis tilted `tilt` rad to the left.")
       .def("__repr__", [](const LoiterCamera& c) {
         return "loiter.Camera(fov_deg=" + detail::to_text(c.fov_deg) + ", max_gimbal_deg=" +
-               detail::to_text(c.max_gimbal_deg) + ", altitude=" + detail::to_text(c.altitude) + ")";
+               detail::to_text(c.max_gimbal_deg) + ", altitude=" + detail::to_text(c.altitude) +
+               (c.levelled ? ")" : ", levelled=False)");
       });
 
   py::class_<LoiterCoverage>(m, "Coverage", "Camera coverage of the AOIs along a path (section 4.1).")
@@ -241,6 +272,8 @@ void bind_loiter(py::module_& parent) {
                              "Per step: the AOI the gimbal serves, -1 when none is in reach.")
       .def_property_readonly("gimbal", [](const LoiterCoverage& c) { return vector_array(c.gimbal); },
                              "Per step: gimbal roll, rad, positive to the left.")
+      .def_property_readonly("tilt", [](const LoiterCoverage& c) { return vector_array(c.tilt); },
+                             "Per step: the camera axis' tilt to the left of vertical, rad (Camera.tilt of bank and gimbal).")
       .def_property_readonly("bank", [](const LoiterCoverage& c) { return vector_array(c.bank); },
                              "Per step: bank angle of the coordinated turn, rad, positive to the left.")
       .def_readonly("steps", &LoiterCoverage::steps, "Number of time steps.");

@@ -54,9 +54,11 @@ void bind_parameters(py::module_& m) {
   const Planning planning_defaults;
   py::class_<Planning>(m, "Planning", "Adaptive placement of visibility volumes (section IV.B).")
       .def(py::init([](double spacing, double cutoff, double resolution_deg, double min_spacing,
-                       int max_depth, double rate_margin, std::size_t max_volumes) {
-             return make_validated(
-                 Planning{spacing, cutoff, resolution_deg, min_spacing, max_depth, rate_margin, max_volumes});
+                       int max_depth, double rate_margin, const std::string& locus, double tracking_margin,
+                       double check_spacing, double check_min_spacing, double turn_share, std::size_t max_volumes) {
+             return make_validated(Planning{spacing, cutoff, resolution_deg, min_spacing, max_depth, rate_margin,
+                                            max_volumes, locus_from_string(locus), tracking_margin, check_spacing,
+                                            check_min_spacing, turn_share});
            }),
            py::kw_only(), py::arg("spacing") = planning_defaults.spacing,
            py::arg("cutoff") = planning_defaults.cutoff,
@@ -64,8 +66,15 @@ void bind_parameters(py::module_& m) {
            py::arg("min_spacing") = planning_defaults.min_spacing,
            py::arg("max_depth") = planning_defaults.max_depth,
            py::arg("rate_margin") = planning_defaults.rate_margin,
+           py::arg("locus") = to_string(planning_defaults.locus),
+           py::arg("tracking_margin") = planning_defaults.tracking_margin,
+           py::arg("check_spacing") = planning_defaults.check_spacing,
+           py::arg("check_min_spacing") = planning_defaults.check_min_spacing,
+           py::arg("turn_share") = planning_defaults.turn_share,
            py::arg("max_volumes") = planning_defaults.max_volumes,
-           "spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin, "
+           "spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin; "
+           "locus 'smooth' (checked between samples, C1, the default) or 'paper' (Algorithm 1, piecewise linear); "
+           "tracking_margin (m), check_spacing and check_min_spacing (m), turn_share (smooth locus only); "
            "max_volumes (the largest worst-case VV count a plan may ask for).")
       .def_readwrite("spacing", &Planning::spacing, "initial spacing of VVs along the path, m")
       .def_readwrite("cutoff", &Planning::cutoff, "d_cutoff, m^3")
@@ -77,6 +86,19 @@ void bind_parameters(py::module_& m) {
       .def_readwrite("max_volumes", &Planning::max_volumes,
                      "refuse, before computing any VV, a plan that may need more VVs than this (worst case: "
                      "about path length / min_spacing, ~4.7 MB each at 1 degree)")
+      .def_property(
+          "locus", [](const Planning& p) { return to_string(p.locus); },
+          [](Planning& p, const std::string& text) { p.locus = locus_from_string(text); },
+          "'smooth': R(t) checked against MaxRadius along the whole path, tracking_margin inside it, C1 with "
+          "bounded d2R/dt2 (default); 'paper': Algorithm 1's piecewise-linear R(t) through the samples")
+      .def_readwrite("tracking_margin", &Planning::tracking_margin,
+                     "smooth locus: R(t) stays this far inside MaxRadius (m)")
+      .def_readwrite("check_spacing", &Planning::check_spacing,
+                     "smooth locus: MaxRadius is checked every check_spacing m of POI travel, then refined")
+      .def_readwrite("check_min_spacing", &Planning::check_min_spacing,
+                     "smooth locus: the check halves intervals where R(t) touches its bound down to this (m)")
+      .def_readwrite("turn_share", &Planning::turn_share,
+                     "smooth locus: share of the turn rate Lemma 6 leaves free that d2R/dt2 may use, in (0, 1)")
       .def("validate", &Planning::validate, "Raise VistrackError naming the first invalid field.");
 
   const Control control_defaults;

@@ -207,6 +207,33 @@ void bind_visibility(py::module_& m) {
       "Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when "
       "given, on a grid of about resolution_deg degrees.");
   m.def(
+      "visibility_volume_cost",
+      [](const VisibilityScene& scene, const Eigen::VectorXd& g, double d_max, Band band, double resolution_deg,
+         bool parallel) {
+        const Vec3 p = as_point(g, "g");
+        VolumeCost cost;
+        VisibilityVolume vv;
+        {
+          py::gil_scoped_release release;
+          vv = visibility_volume_with_cost(scene, p, d_max, band, resolution_deg, cost, parallel);
+        }
+        py::dict d;
+        d["bounds_s"] = cost.bounds_s;
+        d["trace_s"] = cost.trace_s;
+        d["refine_s"] = cost.refine_s;
+        d["mesh_s"] = cost.mesh_s;
+        d["volume_s"] = cost.volume_s;
+        d["rays_traced"] = cost.rays_traced;
+        d["rays_skipped"] = cost.rays_skipped;
+        d["refine_rays"] = cost.refine_rays;
+        return py::make_tuple(std::move(vv), d);
+      },
+      py::arg("scene"), py::arg("g"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
+      py::arg("resolution_deg") = Planning{}.resolution_deg, py::arg("parallel") = true,
+      "visibility_volume and where its time and rays went: (vv, {bounds_s, trace_s, refine_s, mesh_s, volume_s "
+      "(seconds), rays_traced, rays_skipped (cell and corner rays traced / decided by the bounds alone), "
+      "refine_rays}); parallel=False keeps it on the calling thread (as in a batch).");
+  m.def(
       "visibility_volumes",
       [](const VisibilityScene& scene, const Points3& pois, double d_max, Band band, double resolution_deg) {
         py::gil_scoped_release release;

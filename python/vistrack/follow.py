@@ -23,14 +23,19 @@ through the buildings.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
-from typing import Any, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 import numpy as np
 
 from ._core import Control, Uav, VisibilityScene, VistrackError
 from ._core import follow as _follow
 from .flight import Wind
+
+if TYPE_CHECKING:
+    from .georeference import Georeference
+    from .mission import Mission
 
 DownwardCamera = _follow.DownwardCamera
 FollowFlight = _follow.FollowFlight
@@ -57,7 +62,8 @@ MODES = ("sinusoid", "loiter", "straight")
 __all__ = [
     "MODES", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowTick", "GroundVehicle", "LoiterShape", "VehicleLeg",
-    "along_track_rate", "arc_length", "baseline", "baseline_radius", "camera_sees", "coordinated_bank",
+    "along_track_rate", "arc_length", "baseline", "baseline_radius", "camera_footprint", "camera_sees",
+    "coordinated_bank",
     "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_slope", "speed_ratio",
 ]
 
@@ -121,6 +127,18 @@ class FollowResult:
     def waypoint_times(self) -> np.ndarray:
         """(k,) when each waypoint was issued (s)."""
         return np.asarray(self.run.waypoint_times)
+
+    def to_mission(self, georeference: Georeference | Sequence[float], altitude: float, *,
+                   speed: Optional[float] = None, tolerance: float = 1.0, return_to_launch: bool = False,
+                   firmware: str = "ardupilot", altitude_mode: str = "relative") -> Mission:
+        """The generated 1 Hz waypoints as an autopilot mission, decimated by Douglas-Peucker at
+        ``tolerance`` m (0: every waypoint), home at the UAV's start; ``speed`` (the UAV's airspeed)
+        adds DO_CHANGE_SPEED. See :func:`vistrack.mission.follow_mission`."""
+        from .mission import follow_mission
+
+        return follow_mission(self.waypoints, georeference, altitude, home=self.state[0, :2], speed=speed,
+                              tolerance=tolerance, return_to_launch=return_to_launch, firmware=firmware,
+                              altitude_mode=altitude_mode)
 
     @property
     def metrics(self) -> dict[str, Any]:
@@ -238,3 +256,40 @@ def baseline(vehicle: GroundVehicle, uav: Uav, radius: Optional[float] = None, *
                                start=_start(start))
     visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
     return FollowResult(run, "orbit", visible)
+
+
+def camera_footprint(camera: DownwardCamera, uav: Sequence[float], psi: float, bank: float,
+                     target: Sequence[float], points: int = 72, max_range: Optional[float] = None) -> np.ndarray:
+    """The ground footprint of :func:`camera_sees`' cone as a closed ring (points, 2) on the plane
+    z = 0: the UAV at ``uav`` (x, y, z above that plane) with heading ``psi`` and bank ``bank``
+    (left wing down positive), the gimbal rolled towards ``target`` (x, y[, z]) as far as its range
+    allows. Each vertex is where one generator of the cone meets the ground; a generator that
+    reaches the horizon or lands beyond ``max_range`` (default 4 x the height) from the nadir point is
+    cut there, so a steep bank draws a bounded (clipped) footprint. Used to draw the camera's view."""
+    x, y, z = (float(v) for v in uav[:3])
+    if not z > 0.0:
+        raise VistrackError(f"uav[2] = {z}: the camera must be above the ground (z > 0)")
+    reach = 4.0 * z if max_range is None else float(max_range)
+    up = np.array([0.0, 0.0, 1.0])
+    forward = np.array([math.cos(psi), math.sin(psi), 0.0])
+    left = np.array([-math.sin(psi), math.cos(psi), 0.0])
+    tz = float(target[2]) if len(target) > 2 else 0.0
+    r = np.array([float(target[0]) - x, float(target[1]) - y, tz - z])
+    # As camera_sees (cpp/src/follow/camera.cpp): gimbal roll gamma = bank + the target's lateral
+    # angle, within +-max_gimbal; the camera's roll from level is bank - gamma.
+    lateral = math.atan2(float(r @ left), float(-(r @ up)))
+    gamma = min(max(bank + lateral, -camera.max_gimbal), camera.max_gimbal)
+    roll = bank - gamma
+    axis = -(math.cos(roll) * up + math.sin(roll) * left)
+    across = np.cross(axis, forward)
+    half = 0.5 * camera.fov
+    angles = np.linspace(0.0, 2.0 * math.pi, points, endpoint=False)
+    rays = (math.cos(half) * axis[None, :] + math.sin(half) * (np.outer(np.cos(angles), forward)
+                                                              + np.outer(np.sin(angles), across)))
+    down = -rays[:, 2]
+    horizontal = np.hypot(rays[:, 0], rays[:, 1])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        distance = np.where(down > 0.0, z * horizontal / np.where(down > 0.0, down, 1.0), np.inf)
+    distance = np.minimum(distance, reach)
+    unit = rays[:, :2] / np.maximum(horizontal, 1e-12)[:, None]
+    return np.array([x, y])[None, :] + distance[:, None] * unit

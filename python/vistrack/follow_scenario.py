@@ -6,6 +6,7 @@ Keys (every one optional except vehicle; lengths m, speeds m/s, angles in degree
 counter-clockwise from east unless a compass word is given)::
 
     description: text
+    origin: [lat, lon, alt]       # where local (0, 0) lies on the Earth (--export), WGS84
     uav: {speed: 21, min_turn_radius: 50, altitude: 200}
     vehicle:                      # one of legs (with start), track, or path (with legs)
       start: [0, 0]
@@ -43,6 +44,7 @@ from .follow import (
     baseline,
     simulate,
 )
+from .georeference import Georeference
 from .io import load_environment, read_road_path, read_vehicle_track, read_yaml_mapping
 from .schema import fail, number, positive, resolve_path, section
 
@@ -52,7 +54,7 @@ __all__ = ["HEADINGS", "CityRoad", "FollowScenario", "FollowStudy"]
 HEADINGS = {name: math.radians(deg) for name, deg in (
     ("east", 0.0), ("northeast", 45.0), ("north", 90.0), ("northwest", 135.0), ("west", 180.0),
     ("southwest", -135.0), ("south", -90.0), ("southeast", -45.0))}
-TOP_KEYS = {"description", "uav", "vehicle", "follow", "offset", "wind", "wind_estimate", "camera", "flight",
+TOP_KEYS = {"description", "origin", "uav", "vehicle", "follow", "offset", "wind", "wind_estimate", "camera", "flight",
             "baseline", "city"}
 
 
@@ -84,6 +86,7 @@ class FollowScenario:
     city: Optional[CityRoad] = None
     description: str = ""
     path: Optional[Path] = None
+    origin: Optional[Georeference] = None  # where local (0, 0) lies on the Earth (mission export)
 
     @classmethod
     def load(cls, path: str | Path) -> "FollowScenario":
@@ -126,7 +129,7 @@ class FollowScenario:
         return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
                    baseline_control=control, city=_city(data, base), description=str(data.get("description", "")),
-                   path=path)
+                   path=path, origin=None if data.get("origin") is None else Georeference.from_value(data["origin"]))
 
     def city_available(self) -> bool:
         """Whether the scenario has a city section whose map and road files exist (the shared

@@ -494,11 +494,12 @@ def append_json_line(data: Any, path: str | Path) -> None:
 def read_loiter_scenario(path: str | Path) -> LoiterScenario:
     """A loiter scenario file (examples/loiter_*.yaml); every bad value names its key."""
     from . import schema
+    from .georeference import Georeference
     from .loiter import Camera, Scenario
 
     data = read_yaml_mapping(path, "scenario")
     allowed = {"name", "aois", "start", "end", "turn_radius", "speed", "aoi_radius", "turns", "camera",
-               "threshold", "dt", "paper"}
+               "threshold", "dt", "paper", "origin"}
     unknown = sorted(set(data) - allowed)
     if unknown:
         raise schema.fail(unknown[0], data[unknown[0]], f"unknown key; allowed: {', '.join(sorted(allowed))}")
@@ -512,10 +513,10 @@ def read_loiter_scenario(path: str | Path) -> LoiterScenario:
     if not isinstance(raw_aois, list) or not raw_aois:
         raise schema.fail("aois", raw_aois, "must be a non-empty list of [x, y] AOI centres")
     aois = np.array([pair(f"aois[{i}]", a) for i, a in enumerate(raw_aois)], dtype=float)
-    camera_section = schema.section(data, "camera", {"fov_deg", "max_gimbal_deg", "altitude"})
+    camera_section = schema.section(data, "camera", {"fov_deg", "max_gimbal_deg", "altitude", "levelled"})
     camera = schema.apply_checks(Camera(), camera_section, "camera", {
         "fov_deg": schema.positive, "max_gimbal_deg": lambda k, v: schema.number(k, v, low=0.0),
-        "altitude": schema.positive})
+        "altitude": schema.positive, "levelled": schema.boolean})
     paper = data.get("paper") or {}
     if not isinstance(paper, dict):
         raise schema.fail("paper", paper, "must map a method to its Table 1 numbers")
@@ -532,6 +533,7 @@ def read_loiter_scenario(path: str | Path) -> LoiterScenario:
         threshold=schema.number("threshold", data.get("threshold", 0.75), low=0.0, high=1.0, low_open=True),
         dt=schema.positive("dt", data.get("dt", 1.0)),
         paper={str(k): {str(n): float(x) for n, x in dict(v).items()} for k, v in paper.items()},
+        origin=None if data.get("origin") is None else Georeference.from_value(data["origin"], "origin"),
     )
     # The planner's own checks (overlapping circles, R < r, start inside a circle) name the key.
     scenario.plan("tlpp")

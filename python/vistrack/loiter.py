@@ -25,6 +25,7 @@ import numpy as np
 from ._core import VistrackError
 from ._core import flight as _flight
 from ._core import loiter as _loiter
+from .georeference import Georeference
 
 Plan = _loiter.Plan
 Segment = _loiter.Segment
@@ -268,6 +269,7 @@ class Scenario:
     threshold: float = 0.75
     dt: float = 1.0
     paper: dict[str, dict[str, float]] = field(default_factory=dict)
+    origin: Georeference | None = None  # where local (0, 0) lies on the Earth (mission export)
 
     def plan(self, method: str, order: str = "given") -> Plan:
         return plan(self.aois, method, self.start, self.end, self.turn_radius, self.speed, self.aoi_radius,

@@ -4,7 +4,7 @@ wind), seeded random scenarios at scale, and their summaries. Output folders: re
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -99,17 +99,22 @@ def wind_summary(rows: Sequence[dict[str, Any]]) -> list[dict[str, Any]]:
     return out
 
 
+def random_scenarios(count: int, seed: int, aoi_counts: Iterable[int] = range(4, 10)) -> Iterator[loiter.Scenario]:
+    """The seeded random scenarios of :func:`random_study` (and ``vistrack loiter --random N --seed
+    S``), in order: scenario k has ``aoi_counts[k % len]`` AOIs, all drawn from one generator."""
+    sizes = list(aoi_counts)
+    rng = np.random.default_rng(seed)
+    for k in range(count):
+        yield loiter.Scenario(aois=loiter.random_aois(sizes[k % len(sizes)], rng), name=f"random-{seed}-{k}")
+
+
 def random_study(count: int, seed: int, methods: Sequence[str] = loiter.METHODS, order: str = "given",
                  aoi_counts: Iterable[int] = range(4, 10),
                  progress: Callable[[int, int], None] | None = None) -> list[dict[str, Any]]:
     """``count`` seeded random scenarios (section 4.1's area and vehicle; sizes cycling through
     ``aoi_counts``), every method on each: one record per (scenario, method)."""
-    sizes = list(aoi_counts)
-    rng = np.random.default_rng(seed)
     records: list[dict[str, Any]] = []
-    for k in range(count):
-        n = sizes[k % len(sizes)]
-        scenario = loiter.Scenario(aois=loiter.random_aois(n, rng), name=f"random-{seed}-{k}")
+    for k, scenario in enumerate(random_scenarios(count, seed, aoi_counts)):
         for run in evaluate(scenario, methods, order):
             row = run.record(scenario)
             row["index"] = k

@@ -13,7 +13,9 @@
 - :class:`MissionBuilder`: what a planner's ``to_mission`` needs, in local metres: waypoints,
   loiter circles joined at an entry point and left at an exit point (so the autopilot does not fly
   to the centre first), speed changes, return to launch. :func:`orbit_plan_mission` turns an orbit
-  plan into timed loiters (``OrbitPlan.to_mission`` calls it).
+  plan into timed loiters (``OrbitPlan.to_mission`` calls it), :func:`loiter_plan_mission` a loiter
+  plan into its path with NAV_LOITER_TURNS (``vt.loiter.Plan.to_mission``), :func:`follow_mission`
+  a follow run's 1 Hz waypoints, decimated (``vt.follow.FollowResult.to_mission``).
 
 Altitudes given to the builder are local heights z (the world z of vistrack's flight plane, e.g.
 ``Uav.altitude``) above the ground at the origin; a mission stores them relative to home
@@ -40,11 +42,12 @@ from .schema import fail, number
 
 if TYPE_CHECKING:
     from ._core import OrbitPlan, SimulationResult
+    from ._core.loiter import Plan as LoiterPlan
 
 __all__ = [
     "ALTITUDE_MODES", "FIRMWARE_TYPES", "MISSION_SUFFIXES", "Command", "Frame", "Georeference", "Mission",
-    "MissionBuilder", "MissionItem", "arc_points", "export_orbit_plan", "load", "orbit_plan_mission", "project_lon_lat",
-    "tangent_entry", "tangent_exit",
+    "MissionBuilder", "MissionItem", "arc_points", "export_orbit_plan", "follow_mission", "load", "loiter_plan_mission",
+    "orbit_plan_mission", "project_lon_lat", "simplify_route", "tangent_entry", "tangent_exit",
 ]
 
 # ---------------------------------------------------------------------------------------------
@@ -484,7 +487,8 @@ class MissionBuilder:
                turns: float | None = None, seconds: float | None = None,
                entry: ArrayLike | None = None, exit: ArrayLike | None = None,
                altitude: float | None = None, max_step_deg: float = 30.0,
-               heading_required: bool = False, fly_to_entry: bool = True) -> MissionBuilder:
+               heading_required: bool = False, fly_to_entry: bool = True,
+               acceptance_radius: float = 0.0) -> MissionBuilder:
         """A loiter circle: NAV_LOITER_TURNS (``turns``), NAV_LOITER_TIME (``seconds``) or, with
         neither, NAV_LOITER_UNLIM. The radius is signed for the autopilot (MAVLink: positive
         clockwise, negative counter-clockwise).
@@ -495,7 +499,8 @@ class MissionBuilder:
         the loiter, waypoints along the circle from the entry (where full turns end) to the exit
         point every ``max_step_deg``, so the vehicle leaves where the planner leaves the circle
         (param4 = 1: converge from the exit location). ``turns=0`` flies only that arc (a
-        fly-through). ArduPilot counts whole turns and whole seconds."""
+        fly-through). ArduPilot counts whole turns and whole seconds. ``acceptance_radius``: param2
+        of the exit arc's waypoints (0: the autopilot's default)."""
         c = _point("center", center)
         radius = number("radius", radius, low=0.0, low_open=True)
         sign = _direction(direction)
@@ -518,17 +523,18 @@ class MissionBuilder:
         if exit is not None:
             start = (_point("entry", entry) if entry is not None
                      else tangent_entry(_point("exit", exit), c, radius, direction))
-            self.arc(c, radius, start, exit, direction, altitude, max_step_deg)
+            self.arc(c, radius, start, exit, direction, altitude, max_step_deg, acceptance_radius=acceptance_radius)
         return self
 
     def arc(self, center: ArrayLike, radius: float, start: ArrayLike, end: ArrayLike, direction: str = "ccw",
-            altitude: float | None = None, max_step_deg: float = 30.0) -> MissionBuilder:
+            altitude: float | None = None, max_step_deg: float = 30.0, *,
+            acceptance_radius: float = 0.0) -> MissionBuilder:
         """Waypoints along a circular arc from ``start`` (where the route already is: no waypoint)
         to ``end`` in ``direction``, at most ``max_step_deg`` apart: a turn of a Dubins-family
         path (an entry or exit turn, a fly-through arc) as the autopilot can fly it. Arcs of a full
-        turn or more belong in :meth:`loiter`."""
+        turn or more belong in :meth:`loiter`. ``acceptance_radius``: param2 of those waypoints."""
         for point in arc_points(center, radius, start, end, direction, max_step_deg)[1:]:
-            self.waypoint(point, altitude)
+            self.waypoint(point, altitude, acceptance_radius=acceptance_radius)
         return self
 
     def change_speed(self, speed: float, *, ground_speed: bool = False) -> MissionBuilder:
@@ -641,3 +647,129 @@ def export_orbit_plan(path: str | Path, plan: OrbitPlan, georeference: Georefere
     io.write_geojson(io.feature_collection(features, origin=[georeference.lat, georeference.lon, georeference.alt]),
                      path)
     return f"wrote {path}: {len(features)} GeoJSON features in WGS84"
+
+
+# ---------------------------------------------------------------------------------------------
+# Loiter plans (vt.loiter, issue 14) and follow runs (vt.follow, issue 15)
+# ---------------------------------------------------------------------------------------------
+
+_TINY_ANGLE = 1e-6  # rad: a loiter remainder below this is a whole number of turns
+
+
+def _arc_acceptance(radius: float, max_step_deg: float) -> float:
+    """param2 of the waypoints along a turn: half their spacing, in whole metres (ArduPilot keeps
+    the acceptance radius as an integer byte), at least 1 m. Without it ArduPlane accepts a
+    waypoint within WP_RADIUS (90 m by default) scaled by the turn angle, more than the 24 m between
+    the waypoints of a 46 m turn every 30 degrees, and cuts the turn."""
+    chord = 2.0 * radius * math.sin(math.radians(max_step_deg) / 2.0)
+    return float(min(255, max(1, math.floor(chord / 2.0))))
+
+
+def _arc(segment: Any) -> tuple[np.ndarray, float, str]:
+    """An arc segment's centre, radius and direction (a line has none)."""
+    if segment.center is None or segment.radius is None or segment.direction is None:
+        raise fail("plan.segments", segment, "an arc needs a centre, a radius and a direction")
+    return np.asarray(segment.center, dtype=float), float(segment.radius), str(segment.direction)
+
+
+def loiter_plan_mission(plan: LoiterPlan, georeference: Georeference | Sequence[float], altitude: float, *,
+                        speed: float | None = None, max_step_deg: float = 30.0,
+                        acceptance_radius: float | None = None, return_to_launch: bool = False,
+                        firmware: str = "ardupilot", altitude_mode: str = "relative") -> Mission:
+    """A loiter plan (``vt.loiter.plan``: Fly-Through, TLPP or LDLPP) as the mission an autopilot
+    flies along the planned path, not towards the AOI centres.
+
+    - DO_CHANGE_SPEED to the plan's speed (airspeed; ``speed`` overrides), home at the plan's start,
+      and a first waypoint there.
+    - Lines: a waypoint at their end. Turns at the turn radius r (the entry and exit turns, the
+      Fly-Through's three-quarter turn): waypoints along the arc every ``max_step_deg`` with an
+      acceptance radius of half their spacing (see ``_arc_acceptance``; ``acceptance_radius``
+      overrides), so the autopilot flies the arc instead of cutting it.
+    - Each AOI's loiter (its consecutive loiter arcs, swept angle S >= 2 pi turns): the route
+      already ends at the loiter entry point (the tangent point of TLPP, the end of LDLPP's entry
+      turn, the Fly-Through's offset point), where NAV_LOITER_TURNS starts: the aircraft is on the
+      circle heading along it, so it circles at once instead of flying to the centre. Radius signed
+      for the direction (MAVLink: positive clockwise), k = floor(S / 2 pi) whole turns (ArduPilot
+      keeps an integer count, at most 255, and the radius in whole metres up to 255 m), param4 = 1
+      (the next leg starts from where the aircraft leaves the circle). The remaining S - 2 pi k
+      (TLPP's arc to the departure tangent, LDLPP's arc until the closing angle reaches alpha_ED,
+      the Fly-Through's arc to its exit) follows as waypoints along the circle to the exit point.
+      A whole number of turns ends where it started, so turns + remainder reproduce S exactly.
+    - The last line ends at the plan's end; ``return_to_launch`` adds RTL.
+
+    ``altitude``: the local height of the flight (the loiter camera's altitude above the AOIs);
+    ``georeference``: vistrack.Georeference or (lat, lon[, alt]).
+    """
+    georeference = Georeference.from_value(georeference, "georeference")
+    altitude = number("altitude", altitude)
+    max_step_deg = number("max_step_deg", max_step_deg, low=0.0, high=180.0, low_open=True)
+    accept = (_arc_acceptance(plan.turn_radius, max_step_deg) if acceptance_radius is None
+              else number("acceptance_radius", acceptance_radius, low=0.0))
+    builder = MissionBuilder(georeference, altitude, speed=plan.speed if speed is None else speed,
+                             altitude_mode=altitude_mode, firmware=firmware, home=plan.start)
+    builder.waypoint(plan.start)
+    segments = list(plan.segments)
+    i = 0
+    while i < len(segments):
+        s = segments[i]
+        if s.role == "loiter":
+            group = [s]
+            while i + len(group) < len(segments) and segments[i + len(group)].role == "loiter" \
+                    and segments[i + len(group)].aoi == s.aoi:
+                group.append(segments[i + len(group)])
+            sweep = sum(g.sweep for g in group)
+            turns = math.floor(sweep / (2.0 * math.pi) + 1e-9)
+            rest = sweep - 2.0 * math.pi * turns
+            exit_point = group[-1].end if rest > _TINY_ANGLE else s.start
+            center, radius, direction = _arc(s)
+            builder.loiter(center, radius, direction=direction, turns=turns, entry=s.start, exit=exit_point,
+                           fly_to_entry=False, max_step_deg=max_step_deg, acceptance_radius=accept)
+            i += len(group)
+            continue
+        if s.kind == "arc":
+            center, radius, direction = _arc(s)
+            builder.arc(center, radius, s.start, s.end, direction, max_step_deg=max_step_deg, acceptance_radius=accept)
+        else:
+            builder.waypoint(s.end)
+        i += 1
+    if return_to_launch:
+        builder.return_to_launch()
+    return builder.build()
+
+
+def simplify_route(points: ArrayLike, tolerance: float) -> np.ndarray:
+    """The route's points that Douglas-Peucker (shapely/GEOS) keeps at ``tolerance`` metres: every
+    dropped point lies within ``tolerance`` of the polyline of the kept ones, which are original
+    points (the first and last included). ``tolerance`` 0 keeps them all."""
+    array = np.asarray(points, dtype=float)
+    if array.ndim != 2 or array.shape[1] < 2 or len(array) == 0 or not np.all(np.isfinite(array[:, :2])):
+        raise fail("points", points, "must be an array (n, 2) of finite local (x, y)")
+    tolerance = number("tolerance", tolerance, low=0.0)
+    if tolerance == 0.0 or len(array) < 3:
+        return array[:, :2].copy()
+    from shapely.geometry import LineString
+
+    kept = np.asarray(LineString(array[:, :2]).simplify(tolerance, preserve_topology=False).coords)
+    return kept
+
+
+def follow_mission(waypoints: ArrayLike, georeference: Georeference | Sequence[float], altitude: float, *,
+                   home: ArrayLike | None = None, speed: float | None = None, tolerance: float = 1.0,
+                   return_to_launch: bool = False, firmware: str = "ardupilot",
+                   altitude_mode: str = "relative") -> Mission:
+    """A follow run's generated waypoints (one per second, section V of the paper) as a mission.
+
+    The planner issues a waypoint every second from where the vehicle is; as a mission they replay
+    the planned route for that vehicle's recorded motion (a live follow needs a companion computer
+    sending them as guided targets). At 21 m/s they are 21 m apart and mostly on straight or gently
+    curving stretches, so by default they are decimated by Douglas-Peucker at ``tolerance`` = 1 m
+    (:func:`simplify_route`): the route stays within 1 m of every generated waypoint with fewer
+    items (ArduPilot boards hold a few hundred to a few thousand). ``tolerance=0`` keeps all.
+    ``home``: the launch point (local x, y; default the first waypoint)."""
+    kept = simplify_route(waypoints, tolerance)
+    builder = MissionBuilder(Georeference.from_value(georeference, "georeference"), altitude, speed=speed,
+                             altitude_mode=altitude_mode, firmware=firmware, home=kept[0] if home is None else home)
+    builder.waypoints(kept)
+    if return_to_launch:
+        builder.return_to_launch()
+    return builder.build()

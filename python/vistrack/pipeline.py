@@ -30,7 +30,7 @@ from ._core import (
     constant_radius_plan,
     simulate,
 )
-from .metrics import simulation_metrics
+from .metrics import locus_summary, simulation_metrics
 from .progress import Stages
 from .report.run import RunResult, write_report
 from .scenario import Scenario
@@ -76,7 +76,7 @@ def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True
         metric_runs[f"{spacing:g} m"] = stages.run(f"metric at {spacing:g} m spacing", fixed, poi, spacing,
                                                    scenario.planning.resolution_deg, bar_unit="VV")
     metric_runs["adaptive"] = plan.discretization
-    if min(plan.radii) <= 0.0:
+    if plan.reference.min_radius <= 0.0:
         raise VistrackError(
             f"plan: the POI is not visible from the flight plane at some samples ({plan.infeasibility}); "
             f"raise sensor.d_max = {scenario.sensor.d_max:g} m or change uav.altitude = {scenario.uav.altitude:g} m")
@@ -139,11 +139,12 @@ def _metrics(result: RunResult) -> dict[str, Any]:
             "infeasibility": plan.infeasibility,
             "initial_radius_m": plan.radii[0],
             "final_radius_m": plan.radii[-1],
-            "min_radius_m": min(plan.radii),
-            "max_radius_m": max(plan.radii),
+            "min_radius_m": float(plan.reference.min_radius),
+            "max_radius_m": float(max(plan.reference.radii)),
             "min_feasible_radius_m": plan.min_feasible_radius,
             "max_metric_m3": max(plan.metric) if len(plan.metric) else 0.0,
             "cutoff_m3": s.planning.cutoff,
+            **locus_summary(plan),
         },
         "simulation": simulation_metrics(result.simulation),
         "baselines": {f"{r:g}": {"radius_m": r, "visibility_fraction": b.visibility_fraction}

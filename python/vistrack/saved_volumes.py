@@ -67,13 +67,19 @@ def load_samples(folder: str | Path, poi: "_core.PoiPath") -> tuple[list[float],
 
 
 def plan_from_volumes(folder: str | Path, poi: _core.PoiPath, uav: _core.Uav,
-                      rate_margin: float = 0.0) -> _core.VisibilityOrbitPlan:
-    """The orbit plan (Algorithm 1, |dR/dt| <= (1 - rate_margin)(v - v_g)) over the saved VVs in
-    ``folder`` along ``poi``, as OrbitPlanner.plan would make it from the same samples with nothing
-    inserted. The plan records the samples' median gap as its spacing and the VVs' grid step as
-    its resolution (cutoff and depth stay at the defaults: nothing was inserted)."""
+                      planning: _core.Planning | None = None) -> _core.VisibilityOrbitPlan:
+    """The orbit plan over the saved VVs in ``folder`` along ``poi``, as OrbitPlanner.plan would
+    make it from the same samples with nothing inserted: Algorithm 1 (rate_margin from
+    ``planning``) and the locus it asks for (for the smooth locus, the check has only the saved
+    VVs: no map to compute MaxRadius between them). The plan records the samples' median gap as
+    its spacing and the VVs' grid step as its resolution (cutoff and depth stay at the defaults:
+    nothing was inserted)."""
     arc_lengths, volumes = load_samples(folder, poi)
     gaps = np.diff(arc_lengths)
-    planning = _core.Planning(spacing=float(np.median(gaps)) if len(gaps) else _core.Planning().spacing,
-                              resolution_deg=360.0 / volumes[0].grid.num_azimuth, rate_margin=rate_margin)
-    return _core.plan_on_volumes(poi, uav, planning, arc_lengths, volumes)
+    base = planning if planning is not None else _core.Planning()
+    recorded = _core.Planning(spacing=float(np.median(gaps)) if len(gaps) else base.spacing,
+                              resolution_deg=360.0 / volumes[0].grid.num_azimuth, rate_margin=base.rate_margin,
+                              locus=base.locus, tracking_margin=base.tracking_margin,
+                              check_spacing=base.check_spacing, check_min_spacing=base.check_min_spacing,
+                              turn_share=base.turn_share)
+    return _core.plan_on_volumes(poi, uav, recorded, arc_lengths, volumes)

@@ -35,7 +35,19 @@ from .mission import Georeference
 from .plotting.animation import DEFAULT_DURATION_S, DEFAULT_FRAMES
 from .plotting.interactive import DEFAULT_VOLUMES
 from .plotting.volumes import DEFAULT_VIEW
-from .schema import apply_checks, coordinate, fail, integer, length, number, positive, resolve_path, section, speed
+from .schema import (
+    apply_checks,
+    boolean,
+    coordinate,
+    fail,
+    integer,
+    length,
+    number,
+    positive,
+    resolve_path,
+    section,
+    speed,
+)
 
 __all__ = ["EnvironmentSpec", "PoiSpec", "ReportOptions", "Scenario", "default_scenario_text", "road_route"]
 
@@ -178,6 +190,7 @@ class Scenario:
         scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(section(
             data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin",
+                               "locus", "tracking_margin", "check_spacing", "check_min_spacing", "turn_share",
                                "max_volumes"}))
         scenario.control = _control(section(data, "control", {"beta", "k_psi", "direction"}))
         scenario.simulation = _simulation(section(
@@ -219,7 +232,12 @@ class Scenario:
             "planning": {"spacing": self.planning.spacing, "cutoff": self.planning.cutoff,
                          "resolution_deg": self.planning.resolution_deg,
                          "min_spacing": self.planning.min_spacing, "max_depth": self.planning.max_depth,
-                         "rate_margin": self.planning.rate_margin, "max_volumes": self.planning.max_volumes},
+                         "rate_margin": self.planning.rate_margin, "locus": self.planning.locus,
+                         "tracking_margin": self.planning.tracking_margin,
+                         "check_spacing": self.planning.check_spacing,
+                         "check_min_spacing": self.planning.check_min_spacing,
+                         "turn_share": self.planning.turn_share,
+                         "max_volumes": self.planning.max_volumes},
             "control": {"beta": self.control.beta, "k_psi": self.control.k_psi,
                         "direction": self.control.direction},
             "simulation": {"rtol": self.simulation.rtol, "atol": self.simulation.atol,
@@ -311,13 +329,22 @@ def _sensor(section: dict[str, Any]) -> Sensor:
 
 
 def _planning(section: dict[str, Any]) -> Planning:
+    def locus(key: str, value: Any) -> str:
+        if value not in ("smooth", "paper"):
+            raise fail(key, value, '"smooth" (checked between samples, C1; the default) or "paper" (Algorithm 1, '
+                                   'piecewise linear)')
+        return value
+
     return apply_checks(Planning(), section, "planning", {
         "spacing": length, "cutoff": lambda k, v: number(k, v, low=0.0, high=1e21, low_open=True),
         "resolution_deg": lambda k, v: number(k, v, low=0.1, high=30.0),
         "min_spacing": length,
         "max_depth": lambda k, v: integer(k, v, 0, 30),
         "rate_margin": lambda k, v: number(k, v, low=0.0),  # < 1: checked by Planning.validate
-        "max_volumes": lambda k, v: integer(k, v, 1, 10**12)})
+        "locus": locus, "tracking_margin": lambda k, v: number(k, v, low=0.0, high=1e7),
+        "check_spacing": length, "check_min_spacing": length,
+        "turn_share": lambda k, v: number(k, v, low=0.0, low_open=True),
+        "max_volumes": lambda k, v: integer(k, v, 1, 10**12)})  # < 1: checked by Planning.validate
 
 
 def _control(section: dict[str, Any]) -> Control:
@@ -345,18 +372,13 @@ def _baselines(value: Any) -> list[float]:
 
 
 def _report(section: dict[str, Any]) -> ReportOptions:
-    def flag(key: str, value: Any) -> bool:
-        if not isinstance(value, bool):
-            raise fail(key, value, "must be true or false")
-        return value
-
     def view(key: str, value: Any) -> tuple[float, float]:
         if not isinstance(value, list) or len(value) != 2:
             raise fail(key, value, "must be [elevation, azimuth] in degrees")
         return (number(f"{key}[0]", value[0], low=-90.0, high=90.0), number(f"{key}[1]", value[1]))
 
     return apply_checks(ReportOptions(), section, "report", {
-        "html": flag, "animation": flag, "frames": lambda k, v: integer(k, v, 2, ReportOptions.MAX_FRAMES),
+        "html": boolean, "animation": boolean, "frames": lambda k, v: integer(k, v, 2, ReportOptions.MAX_FRAMES),
         "duration": lambda k, v: number(k, v, low=0.0, high=3600.0, low_open=True),
         "volumes": lambda k, v: integer(k, v, 1, 100), "view": view})
 

@@ -100,6 +100,13 @@ def apply_checks(target: T, section: Mapping[str, Any], prefix: str,
     return target
 
 
+def boolean(key: str, value: Any) -> bool:
+    """true or false (YAML booleans only; 0, 1 and strings are refused)."""
+    if not isinstance(value, bool):
+        raise fail(key, value, "must be true or false")
+    return value
+
+
 def positive(key: str, value: Any) -> float:
     """A finite number > 0."""
     return number(key, value, low=0.0, low_open=True)

@@ -8,8 +8,11 @@
 #include <random>
 
 #include "dubins/path_integration.hpp"
+#include "error_message.hpp"
 #include "vistrack/dubins.hpp"
 #include "vistrack/error.hpp"
+
+using vistrack::testing::error_message;
 
 using namespace vistrack;
 
@@ -354,41 +357,33 @@ TEST(DubinsBatch, BitIdenticalToScalarKernel) {
 // ---- bad input -----------------------------------------------------------------------------
 
 TEST(DubinsErrors, NamesTheField) {
-  const auto message = [](auto&& call) {
-    try {
-      call();
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_NE(message([&] { dubins_shortest_path({0, 0, 0}, {1, 1, 0}, 0.0); }).find("rho"), std::string::npos);
-  EXPECT_NE(message([&] { dubins_shortest_path({0, 0, 0}, {1, 1, 0}, -1.0); }).find("rho = -1"), std::string::npos);
-  EXPECT_NE(message([&] { dubins_shortest_path({0, nan, 0}, {1, 1, 0}, 1.0); }).find("q0.y"), std::string::npos);
-  EXPECT_NE(message([&] { dubins_shortest_path({0, 0, 0}, {1, 1, nan}, 1.0); }).find("q1.psi"), std::string::npos);
-  EXPECT_NE(message([&] { dubins_word_from_string("LLL"); }).find("word"), std::string::npos);
-  EXPECT_NE(message([&] { circulation_from_string("up"); }).find("direction"), std::string::npos);
-  EXPECT_NE(message([&] { dubins_path({0, 0, 0}, {100, 0, 0}, 1.0, DubinsWord::LRL); }).find("word"),
+  EXPECT_NE(error_message([&] { dubins_shortest_path({0, 0, 0}, {1, 1, 0}, 0.0); }).find("rho"), std::string::npos);
+  EXPECT_NE(error_message([&] { dubins_shortest_path({0, 0, 0}, {1, 1, 0}, -1.0); }).find("rho = -1"), std::string::npos);
+  EXPECT_NE(error_message([&] { dubins_shortest_path({0, nan, 0}, {1, 1, 0}, 1.0); }).find("q0.y"), std::string::npos);
+  EXPECT_NE(error_message([&] { dubins_shortest_path({0, 0, 0}, {1, 1, nan}, 1.0); }).find("q1.psi"), std::string::npos);
+  EXPECT_NE(error_message([&] { dubins_word_from_string("LLL"); }).find("word"), std::string::npos);
+  EXPECT_NE(error_message([&] { circulation_from_string("up"); }).find("direction"), std::string::npos);
+  EXPECT_NE(error_message([&] { dubins_path({0, 0, 0}, {100, 0, 0}, 1.0, DubinsWord::LRL); }).find("word"),
             std::string::npos);
   const DubinsPath p = dubins_shortest_path({0, 0, 0}, {3, 0, 0}, 1.0);
-  EXPECT_NE(message([&] { p.at(4.0); }).find("s = 4"), std::string::npos);
-  EXPECT_NE(message([&] { p.sample(0.0); }).find("step"), std::string::npos);
+  EXPECT_NE(error_message([&] { p.at(4.0); }).find("s = 4"), std::string::npos);
+  EXPECT_NE(error_message([&] { p.sample(0.0); }).find("step"), std::string::npos);
   InterceptProblem bad;
   bad.pursuer_speed = -1.0;
-  EXPECT_NE(message([&] { intercept_circle(bad); }).find("pursuer_speed"), std::string::npos);
+  EXPECT_NE(error_message([&] { intercept_circle(bad); }).find("pursuer_speed"), std::string::npos);
   bad = InterceptProblem{};
   bad.target_speed = nan;
-  EXPECT_NE(message([&] { intercept_circle(bad); }).find("target_speed"), std::string::npos);
+  EXPECT_NE(error_message([&] { intercept_circle(bad); }).find("target_speed"), std::string::npos);
   bad = InterceptProblem{};
   bad.circle.radius = -2.0;
-  EXPECT_NE(message([&] { intercept_circle(bad); }).find("radius = -2"), std::string::npos);
+  EXPECT_NE(error_message([&] { intercept_circle(bad); }).find("radius = -2"), std::string::npos);
   bad = InterceptProblem{};
   bad.circle.center = Vec2(100.0, 0.0);
   bad.target_speed = 1e12;
-  EXPECT_NE(message([&] { intercept_circle(bad); }).find("target_speed = 1e+12"), std::string::npos);
+  EXPECT_NE(error_message([&] { intercept_circle(bad); }).find("target_speed = 1e+12"), std::string::npos);
   TargetCircle circle;
-  EXPECT_NE(message([&] { dubins_path_to_circle({0, 0, 0}, 1.0, circle, nan); }).find("angle"), std::string::npos);
+  EXPECT_NE(error_message([&] { dubins_path_to_circle({0, 0, 0}, 1.0, circle, nan); }).find("angle"), std::string::npos);
 }
 
 // ---- polynomial sin/cos/atan2 used by the length kernel --------------------------------------

@@ -8,8 +8,11 @@
 #include <limits>
 #include <string>
 
+#include "error_message.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/follow.hpp"
+
+using vistrack::testing::error_message;
 
 namespace vistrack {
 namespace {
@@ -28,16 +31,6 @@ double ratio_by_quadrature(double amplitude, double distance) {
   const double a = kTwoPi * amplitude / distance;
   return simpson([&](double x) { const double c = std::cos(kTwoPi * x / distance); return std::sqrt(1.0 + a * a * c * c); },
                  0.0, distance) / distance;
-}
-
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(FollowSinusoid, SpeedRatioMatchesQuadratureOfEquation9) {
@@ -71,10 +64,10 @@ TEST(FollowSinusoid, AmplitudeInvertsTheRatioTo1e12) {
 
 TEST(FollowSinusoid, RatioOneGivesZeroAndBelowOneIsAnError) {
   EXPECT_EQ(sinusoid_amplitude(1.0, 100.0), 0.0);
-  EXPECT_NE(error_of([] { sinusoid_amplitude(0.8, 100.0); }).find("speed_ratio = 0.8"), std::string::npos);
-  EXPECT_NE(error_of([] { sinusoid_amplitude(std::nan(""), 100.0); }).find("speed_ratio"), std::string::npos);
-  EXPECT_NE(error_of([] { sinusoid_amplitude(2.0, 0.0); }).find("period_distance = 0"), std::string::npos);
-  EXPECT_NE(error_of([] { sinusoid_speed_ratio(-1.0, 10.0); }).find("amplitude = -1"), std::string::npos);
+  EXPECT_NE(error_message([] { sinusoid_amplitude(0.8, 100.0); }).find("speed_ratio = 0.8"), std::string::npos);
+  EXPECT_NE(error_message([] { sinusoid_amplitude(std::nan(""), 100.0); }).find("speed_ratio"), std::string::npos);
+  EXPECT_NE(error_message([] { sinusoid_amplitude(2.0, 0.0); }).find("period_distance = 0"), std::string::npos);
+  EXPECT_NE(error_message([] { sinusoid_speed_ratio(-1.0, 10.0); }).find("amplitude = -1"), std::string::npos);
 }
 
 TEST(FollowSinusoid, SmallAndLargeRatiosFollowTheirAsymptotes) {
@@ -139,12 +132,12 @@ TEST(FollowVehicle, LegsWithStopAndTurn) {
 TEST(FollowVehicle, BadTracksNameTheField) {
   Points2 p(3, 2);
   p << 0, 0, 1, 0, 2, 0;
-  EXPECT_NE(error_of([&] { GroundVehicle({0.0, 2.0, 1.0}, p); }).find("track.t[2] = 1"), std::string::npos);
-  EXPECT_NE(error_of([&] { GroundVehicle({0.0, 1.0, 1.0}, p); }).find("track.t[2]"), std::string::npos);
+  EXPECT_NE(error_message([&] { GroundVehicle({0.0, 2.0, 1.0}, p); }).find("track.t[2] = 1"), std::string::npos);
+  EXPECT_NE(error_message([&] { GroundVehicle({0.0, 1.0, 1.0}, p); }).find("track.t[2]"), std::string::npos);
   Points2 q = p;
   q(1, 1) = std::nan("");
-  EXPECT_NE(error_of([&] { GroundVehicle({0.0, 1.0, 2.0}, q); }).find("track.y[1]"), std::string::npos);
-  EXPECT_NE(error_of([&] { GroundVehicle::from_legs({{0.0, -1.0, 10.0}}); }).find("legs[0].speed = -1"), std::string::npos);
+  EXPECT_NE(error_message([&] { GroundVehicle({0.0, 1.0, 2.0}, q); }).find("track.y[1]"), std::string::npos);
+  EXPECT_NE(error_message([&] { GroundVehicle::from_legs({{0.0, -1.0, 10.0}}); }).find("legs[0].speed = -1"), std::string::npos);
 }
 
 TEST(FollowVehicle, AlongAPathWithTheLegsSpeeds) {
@@ -195,7 +188,7 @@ TEST(FollowLoiter, CircleAndRoseValidation) {
   rose.pattern = LoiterPattern::Rose;
   rose.turn_radius = 60.0;
   rose.radius = 100.0;
-  EXPECT_NE(error_of([&] { rose.validate(); }).find("loiter_radius = 100"), std::string::npos);
+  EXPECT_NE(error_message([&] { rose.validate(); }).find("loiter_radius = 100"), std::string::npos);
 }
 
 FollowParameters base_parameters() {
@@ -255,16 +248,16 @@ TEST(FollowPlannerTest, HysteresisBandSuppressesChattering) {
 TEST(FollowPlannerTest, ParametersNameTheField) {
   FollowParameters p;
   p.hysteresis = 3.5;
-  EXPECT_NE(error_of([&] { p.validate(); }).find("follow.hysteresis = 3.5"), std::string::npos);
+  EXPECT_NE(error_message([&] { p.validate(); }).find("follow.hysteresis = 3.5"), std::string::npos);
   p = FollowParameters{};
   p.period = -1.0;
-  EXPECT_NE(error_of([&] { p.validate(); }).find("follow.period = -1"), std::string::npos);
-  EXPECT_NE(error_of([&] { loiter_pattern_from_string("square", "follow.loiter_pattern"); })
+  EXPECT_NE(error_message([&] { p.validate(); }).find("follow.period = -1"), std::string::npos);
+  EXPECT_NE(error_message([&] { loiter_pattern_from_string("square", "follow.loiter_pattern"); })
                 .find("follow.loiter_pattern = square"), std::string::npos);
   const Uav bad{0.0, 50.0, 100.0};
-  EXPECT_NE(error_of([&] { FollowPlanner(FollowParameters{}, bad); }).find("uav.speed = 0"), std::string::npos);
+  EXPECT_NE(error_message([&] { FollowPlanner(FollowParameters{}, bad); }).find("uav.speed = 0"), std::string::npos);
   const Uav uav{20.0, 50.0, 100.0};
-  EXPECT_NE(error_of([&] { FollowPlanner(FollowParameters{}, uav, Vec2(0.0, 20.0)); }).find("wind_estimate"),
+  EXPECT_NE(error_message([&] { FollowPlanner(FollowParameters{}, uav, Vec2(0.0, 20.0)); }).find("wind_estimate"),
             std::string::npos);
 }
 

@@ -16,11 +16,12 @@ namespace {
 
 constexpr double kPiValue = 3.14159265358979323846;
 
-// The orbit of a segment with g and R linear in time: the state at time t.
+// The orbit of a segment with g linear and R quadratic in time (constant R_ddot): the state at t.
 OrbitState moving_orbit(const OrbitState& at0, double t) {
   OrbitState o = at0;
   o.center = at0.center + at0.center_velocity * t;
-  o.radius = at0.radius + at0.radius_rate * t;
+  o.radius = at0.radius + at0.radius_rate * t + 0.5 * at0.radius_acceleration * t * t;
+  o.radius_rate = at0.radius_rate + at0.radius_acceleration * t;
   return o;
 }
 
@@ -44,6 +45,8 @@ RandomCase random_case(std::mt19937& rng, Circulation direction) {
   c.orbit.center_velocity = poi_speed * Vec2(std::cos(gamma), std::sin(gamma));
   c.orbit.radius = 20.0 + 150.0 * unit(rng);
   c.orbit.radius_rate = (2.0 * unit(rng) - 1.0) * 0.9 * (c.gains.speed - poi_speed);
+  // Half the cases on the smooth locus (R_ddot != 0), half on the paper's (R_ddot = 0).
+  if (unit(rng) < 0.5) c.orbit.radius_acceleration = (2.0 * unit(rng) - 1.0) * 3.0;
   const double r = c.orbit.radius * (0.3 + 2.5 * unit(rng));
   const double theta = 2.0 * kPiValue * unit(rng);
   c.xi = c.orbit.center + r * Vec2(std::cos(theta), std::sin(theta));
@@ -99,7 +102,8 @@ TEST(VectorField, TangentOnAStillOrbitAndSafeAtTheCentre) {
   EXPECT_GT(c.u_r, 0.0);  // pushed outwards
 }
 
-// psi_d(xi, t) along the flow xi_dot = u, by central differences: checks (83), (84) and (85).
+// psi_d(xi, t) along the flow xi_dot = u, by central differences: checks (83), (84) and (85),
+// with the R_ddot terms of the smooth locus (in (79) and in the gain of (68)) in half the cases.
 TEST(VectorField, HeadingRateMatchesFiniteDifferencesAlongTheFlow) {
   std::mt19937 rng(11);
   int checked = 0;
@@ -202,19 +206,25 @@ TEST(Steering, ShortWayRoundAndSaturation) {
 // Theorem 1: started on the orbit with (38)-(40) and steered by u = v kappa_s of (31), the
 // vehicle stays on the translating, morphing orbit.
 TEST(OrbitTheory, Theorem1VehicleStaysOnTheOrbit) {
-  struct Case { double v, vg, gamma, radius, rate; Circulation direction; double theta0; };
+  struct Case { double v, vg, gamma, radius, rate; Circulation direction; double theta0; double accel; };
   constexpr Circulation ccw = Circulation::CounterClockwise, cw = Circulation::Clockwise;
-  const Case cases[] = {{20.0, 5.0, 0.7, 158.0, 1.3, ccw, -3.14159265358979 / 2},
-                        {20.0, 5.0, -2.0, 120.0, -2.0, ccw, 0.3},
-                        {20.0, 5.0, 2.5, 85.9, 0.0, cw, 1.0},
-                        {3.0, 0.35, 0.2, 20.0, 0.1, cw, 2.0},
-                        {10.0, 5.0, -3.0 * 3.14159265358979 / 4, 40.0, -1.5, ccw, 4.0}};
+  // The last three morph with R_ddot != 0 (the smooth locus): the curvature (R theta_dot^2 -
+  // R_ddot) / (v u_theta) keeps the vehicle on them too; without the R_ddot term it drifts off.
+  const Case cases[] = {{20.0, 5.0, 0.7, 158.0, 1.3, ccw, -3.14159265358979 / 2, 0.0},
+                        {20.0, 5.0, -2.0, 120.0, -2.0, ccw, 0.3, 0.0},
+                        {20.0, 5.0, 2.5, 85.9, 0.0, cw, 1.0, 0.0},
+                        {3.0, 0.35, 0.2, 20.0, 0.1, cw, 2.0, 0.0},
+                        {10.0, 5.0, -3.0 * 3.14159265358979 / 4, 40.0, -1.5, ccw, 4.0, 0.0},
+                        {20.0, 5.0, 0.7, 158.0, 5.0, ccw, -1.0, -0.5},
+                        {20.0, 5.0, -2.0, 120.0, -3.0, cw, 0.3, 0.4},
+                        {3.0, 0.35, 0.2, 20.0, 0.5, ccw, 2.0, -0.04}};
   for (const Case& c : cases) {
     OrbitState orbit0;
     orbit0.center = Vec2(-150.0, -45.0);
     orbit0.center_velocity = c.vg * Vec2(std::cos(c.gamma), std::sin(c.gamma));
     orbit0.radius = c.radius;
     orbit0.radius_rate = c.rate;
+    orbit0.radius_acceleration = c.accel;
     const double duration = 20.0;  // the radius stays positive over the segment in every case
     auto rhs = [&](double t, const OdeVector<3>& q, OdeVector<3>& dq) {
       const OrbitState o = moving_orbit(orbit0, t);
@@ -239,6 +249,23 @@ TEST(OrbitTheory, Theorem1VehicleStaysOnTheOrbit) {
     gains.speed = c.v;
     gains.direction = c.direction;
     EXPECT_NEAR(wrap_to_pi(vector_field(q0.head<2>(), orbit0, gains).heading - q0.z()), 0.0, 1e-12);
+  }
+}
+
+// On the orbit (r = R, Phi' = 0) the field's heading rate (85) with R_ddot is the curvature of
+// exact orbit following (31) with R_ddot times v: two derivations of the same turn rate.
+TEST(OrbitTheory, FieldHeadingRateOnTheOrbitIsTheExactTurnRate) {
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 1000; ++trial) {
+    const Circulation direction = trial % 2 == 0 ? Circulation::CounterClockwise : Circulation::Clockwise;
+    RandomCase c = random_case(rng, direction);
+    c.orbit.radius_acceleration = (2.0 * unit(rng) - 1.0) * 3.0;
+    const double theta = 2.0 * kPiValue * unit(rng);
+    const Vec2 xi = c.orbit.center + c.orbit.radius * Vec2(std::cos(theta), std::sin(theta));
+    const VectorField f = vector_field(xi, c.orbit, c.gains);
+    const double exact = c.gains.speed * orbit_signed_curvature(theta, c.orbit, c.gains.speed, direction);
+    EXPECT_NEAR(f.heading_rate, exact, 1e-9 * (1.0 + std::abs(exact))) << trial;
   }
 }
 

@@ -11,9 +11,12 @@
 #include <random>
 
 #include "loiter/tangents.hpp"
+#include "error_message.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/loiter.hpp"
 #include "vistrack/flight.hpp"
+
+using vistrack::testing::error_message;
 
 using namespace vistrack;
 
@@ -405,20 +408,12 @@ TEST(LoiterOrder, HeuristicAboveTheExactLimit) {
 // ---- Bad input -----------------------------------------------------------------------------------
 
 TEST(LoiterValidation, ErrorsNameTheField) {
-  const auto message = [](const std::function<void()>& call) -> std::string {
-    try {
-      call();
-    } catch (const Error& e) {
-      return e.what();
-    }
-    return "no error";
-  };
   LoiterProblem good;
   good.aois = {Vec2(300.0, 300.0), Vec2(600.0, 300.0)};
   const auto with = [&](const std::function<void(LoiterProblem&)>& change) {
     LoiterProblem p = good;
     change(p);
-    return message([&] { plan_loiter(p, LoiterMethod::Tlpp); });
+    return error_message([&] { plan_loiter(p, LoiterMethod::Tlpp); });
   };
   EXPECT_NE(with([](LoiterProblem& p) { p.aois.clear(); }).find("aois"), std::string::npos);
   EXPECT_NE(with([](LoiterProblem& p) { p.parameters.aoi_radius = 30.0; }).find("aoi_radius"), std::string::npos);
@@ -428,15 +423,15 @@ TEST(LoiterValidation, ErrorsNameTheField) {
   EXPECT_NE(with([](LoiterProblem& p) { p.parameters.turn_radius = -1.0; }).find("turn_radius"), std::string::npos);
   EXPECT_NE(with([](LoiterProblem& p) { p.aois[0].y() = std::nan(""); }).find("aois[0][1]"), std::string::npos);
   EXPECT_NE(with([](LoiterProblem& p) { p.start = Vec2(310.0, 300.0); }).find("start"), std::string::npos);
-  EXPECT_NE(message([] { loiter_method_from_string("spiral"); }).find("method"), std::string::npos);
-  EXPECT_NE(message([&] { plan_loiter_in_order(good, LoiterMethod::Tlpp, {0, 0}); }).find("order[1]"),
+  EXPECT_NE(error_message([] { loiter_method_from_string("spiral"); }).find("method"), std::string::npos);
+  EXPECT_NE(error_message([&] { plan_loiter_in_order(good, LoiterMethod::Tlpp, {0, 0}); }).find("order[1]"),
             std::string::npos);
   LoiterProblem close_start = good;
   close_start.aois[0] = Vec2(60.0, 0.0);
-  EXPECT_NE(message([&] { plan_loiter(close_start, LoiterMethod::Ldlpp); }).find("start"), std::string::npos);
+  EXPECT_NE(error_message([&] { plan_loiter(close_start, LoiterMethod::Ldlpp); }).find("start"), std::string::npos);
   LoiterCamera camera;
   camera.max_gimbal_deg = 60.0;
-  EXPECT_NE(message([&] { camera.validate(); }).find("camera.max_gimbal_deg"), std::string::npos);
+  EXPECT_NE(error_message([&] { camera.validate(); }).find("camera.max_gimbal_deg"), std::string::npos);
 }
 
 // ---- Footprint and the exact area ----------------------------------------------------------------
@@ -564,16 +559,44 @@ TEST(LoiterCoverage, LoiterAtTheAoiRadiusKeepsItInView) {
   EXPECT_GT(coverage.area, 0.75 * kPiTest * 46.0 * 46.0 * loiter_steps);
 }
 
+TEST(LoiterCoverage, BodyCameraLooksOutOfTheTurnLevelledOneDoesNot) {
+  // Banking left (left wing down) turns the belly to the right: a camera under it, gimbal at 0,
+  // looks to the right of the track by the bank. The levelled camera stays at nadir. Single
+  // left-turning pose heading east, no AOI in reach (the gimbal then levels what it can).
+  Points3 poses(1, 3);
+  poses << 0.0, 0.0, 0.0;
+  const double rate = 12.0 / 46.0, bank = bank_angle(12.0, rate);
+  ASSERT_GT(bank, 0.2);
+  LoiterCamera body;
+  body.levelled = false;
+  body.max_gimbal_deg = 0.0;
+  const Footprint seen = camera_footprint(body, {0.0, 0.0, 0.0}, camera_tilt(body, bank, 0.0));
+  EXPECT_LT(seen.center.y(), -body.altitude * std::tan(bank) * 0.99);  // to the right, at least h tan(bank)
+  EXPECT_NEAR(camera_tilt(LoiterCamera{}, bank, 0.1), 0.1, 1e-15);
+  const std::vector<Vec2> far{Vec2(5000.0, 0.0)};
+  const LoiterCoverage levelled = loiter_coverage(poses, {rate}, far, 46.0, 12.0);
+  EXPECT_NEAR(levelled.tilt[0], 0.0, 1e-15);
+  const LoiterCoverage fixed = loiter_coverage(poses, {rate}, far, 46.0, 12.0, body);
+  EXPECT_NEAR(fixed.tilt[0], -bank, 1e-15);
+  body.max_gimbal_deg = 25.0;
+  const LoiterCoverage gimballed = loiter_coverage(poses, {rate}, far, 46.0, 12.0, body);
+  EXPECT_NEAR(gimballed.tilt[0], 0.0, 1e-15);  // the gimbal (25 deg > bank) levels it
+  EXPECT_NEAR(gimballed.gimbal[0], bank, 1e-15);
+}
+
 TEST(LoiterCoverage, GimbalChoiceBeatsEveryScannedAngle) {
   // No gimbal angle covers more AOIs than the chosen one; with equally many, none holds more of
   // them in view (one AOI: more of it). Scenarios with AOIs close together, where two can count.
-  const LoiterCamera camera;
   const double limit = 25.0 * kPiTest / 180.0, disk = kPiTest * 46.0 * 46.0;
+  for (const bool levelled : {true, false})
   for (const auto& aois : {std::vector<Vec2>{Vec2(250.0, 150.0), Vec2(500.0, 450.0)},
                            std::vector<Vec2>{Vec2(300.0, 300.0), Vec2(400.0, 300.0), Vec2(350.0, 390.0)}}) {
     LoiterProblem problem;
     problem.aois = aois;
     const LoiterPlan plan = plan_loiter(problem, LoiterMethod::Tlpp);
+    LoiterCamera camera;
+    camera.levelled = levelled;
+    camera.altitude = 120.0;  // a footprint wide enough for two AOIs 100 m apart
     const LoiterCoverage coverage = loiter_coverage(plan, camera);
     const LoiterSamples s = plan.sample_states(1.0, false);
     const std::size_t m = aois.size();
@@ -586,7 +609,7 @@ TEST(LoiterCoverage, GimbalChoiceBeatsEveryScannedAngle) {
         double seen = 0.0, most = 0.0;
         for (std::size_t i = 0; i < m; ++i) {
           const double f = given ? (*given)[i]
-                                 : footprint_disk_area(camera_footprint(camera, pose, coverage.bank[k] + gimbal),
+                                 : footprint_disk_area(camera_footprint(camera, pose, camera_tilt(camera, coverage.bank[k], gimbal)),
                                                        aois[i], 46.0) / disk;
           most = std::max(most, f);
           if (f >= 0.75) {
@@ -623,7 +646,9 @@ TEST(LoiterCoverage, BadInputNamesTheField) {
   poses << 0, 0, 0, 1, 0, 0;
   const std::vector<Vec2> aois{Vec2(100.0, 0.0)};
   EXPECT_THROW(loiter_coverage(poses, {0.0}, aois, 46.0, 12.0), Error);
-  EXPECT_THROW(loiter_coverage(poses, {0.0, 5.0}, aois, 46.0, 12.0), Error);  // banks past the horizon
+  LoiterCamera body;
+  body.levelled = false;
+  EXPECT_THROW(loiter_coverage(poses, {0.0, 5.0}, aois, 46.0, 12.0, body), Error);  // banks past the horizon
   LoiterCoverageOptions options;
   options.threshold = 1.5;
   EXPECT_THROW(loiter_coverage(poses, {0.0, 0.0}, aois, 46.0, 12.0, LoiterCamera{}, options), Error);
@@ -706,22 +731,14 @@ TEST(LoiterFlight, PlansFlownWithoutWindStayOnThePath) {
 }
 
 TEST(LoiterFlight, FollowerRejectsBadPaths) {
-  const auto message = [](const std::function<void()>& call) -> std::string {
-    try {
-      call();
-    } catch (const Error& e) {
-      return e.what();
-    }
-    return "no error";
-  };
-  EXPECT_NE(message([] { PathFollower({}, 12.0, 46.0); }).find("pieces"), std::string::npos);
+  EXPECT_NE(error_message([] { PathFollower({}, 12.0, 46.0); }).find("pieces"), std::string::npos);
   const PathPiece line{Vec2(0.0, 0.0), 0.0, 100.0, 0.0};
-  EXPECT_NE(message([&] { PathFollower({line, {Vec2(100.0, 5.0), 0.0, 10.0, 0.0}}, 12.0, 46.0); })
+  EXPECT_NE(error_message([&] { PathFollower({line, {Vec2(100.0, 5.0), 0.0, 10.0, 0.0}}, 12.0, 46.0); })
                 .find("pieces[1].start"),
             std::string::npos);
-  EXPECT_NE(message([&] { PathFollower({{Vec2(0.0, 0.0), 0.0, 10.0, 1.0 / 20.0}}, 12.0, 46.0); })
+  EXPECT_NE(error_message([&] { PathFollower({{Vec2(0.0, 0.0), 0.0, 10.0, 1.0 / 20.0}}, 12.0, 46.0); })
                 .find("pieces[0].curvature"),
             std::string::npos);
-  EXPECT_NE(message([&] { PathFollower({line}, 12.0, 46.0, {0.0, 3.0}); }).find("lookahead_radii"),
+  EXPECT_NE(error_message([&] { PathFollower({line}, 12.0, 46.0, {0.0, 3.0}); }).find("lookahead_radii"),
             std::string::npos);
 }

@@ -320,6 +320,7 @@ TEST(PlanOrbits, PaperSlowExampleOnCharlotte) {
   vt::Sensor sensor;
   sensor.d_max = 400.0;
   vt::Planning planning;  // spacing 20 m, cutoff 20e6 m^3, 1 degree
+  planning.locus = vt::Locus::paper;
   std::size_t last_done = 0, last_total = 0;
   const auto plan = vt::plan_orbits(env, poi, u, sensor, planning, [&](std::size_t done, std::size_t total) {
     EXPECT_LE(done, total);
@@ -342,9 +343,25 @@ TEST(PlanOrbits, PaperSlowExampleOnCharlotte) {
     // The planner's metric is the radial (exact per-direction mesh) XOR of neighbouring VVs.
     EXPECT_EQ(plan.samples.metric[k], vt::radial_xor_volume(*plan.samples.volumes[k], *plan.samples.volumes[k + 1]));
   }
-  // The paper reports 158 m -> 127 m (see README for why ours differs by ~4 %).
+  // The paper reports 158 m -> 127 m (see README for why ours differs by ~4 %); the paper's locus
+  // option gives what the planner gave before the smooth locus existed.
   EXPECT_NEAR(plan.radii.front(), 158.0, 0.1 * 158.0);
   EXPECT_NEAR(plan.radii.back(), 127.0, 0.1 * 127.0);
+  EXPECT_NEAR(plan.radii.front(), 164.3, 0.05);
+  EXPECT_NEAR(plan.radii.back(), 134.8, 0.05);
+  EXPECT_TRUE(plan.reference.times.empty());
+  // The smooth locus on the same samples: flyable everywhere, and the samples agree.
+  planning.locus = vt::Locus::smooth;
+  const auto smooth = vt::plan_orbits(env, poi, u, sensor, planning);
+  EXPECT_TRUE(smooth.feasible) << smooth.infeasibility;
+  EXPECT_EQ(smooth.times, plan.times);
+  EXPECT_EQ(smooth.max_radii, plan.max_radii);
+  const vt::SmoothRadiusLimits limits{20.0, 5.0, 50.0, 15.0, planning.turn_share};
+  EXPECT_EQ(vt::smooth_radius_violation(smooth.reference, limits), "");
+  EXPECT_GE(smooth.reference.min_radius(), smooth.orbits.min_feasible_radius);  // Lemma 6, between samples too
+  EXPECT_GT(smooth.check.paper_violations, 0u);  // the paper's locus leaves the VPs between samples here
+  for (std::size_t j = 0; j < smooth.check.times.size(); ++j)
+    EXPECT_LE(smooth.radius(smooth.check.times[j]), smooth.check.max_radii[j] - planning.tracking_margin + 1e-6);
 }
 
 TEST(AdaptiveDiscretization, RandomWorldsKeepTheInvariants) {
@@ -395,4 +412,235 @@ TEST(AdaptiveDiscretization, RandomWorldsKeepTheInvariants) {
       EXPECT_LE(depth, planning.max_depth);
     }
   }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The smooth locus (beyond the paper): R(t) profiles, the smooth R(t) under a ceiling, MaxRadius by
+// line of sight, and the locus check between the samples.
+
+TEST(RadiusProfile, LinearAndQuadraticPiecesAreContinuous) {
+  const vt::RadiusProfile linear{{0.0, 2.0, 5.0}, {10.0, 14.0, 8.0}, {}};
+  EXPECT_DOUBLE_EQ(linear.radius(1.0), 12.0);
+  EXPECT_DOUBLE_EQ(linear.rate(1.0), 2.0);
+  EXPECT_DOUBLE_EQ(linear.rate(2.0), -2.0);  // right-continuous at a knot
+  EXPECT_DOUBLE_EQ(linear.acceleration(1.0), 0.0);
+  EXPECT_DOUBLE_EQ(linear.radius(-3.0), 10.0);  // held outside the span
+  EXPECT_DOUBLE_EQ(linear.rate(9.0), 0.0);
+  // dR/dt 1 -> -1 -> 2 at the knots: R continues from segment to segment.
+  vt::RadiusProfile quad{{0.0, 2.0, 5.0}, {10.0, 0.0, 0.0}, {1.0, -1.0, 2.0}};
+  quad.radii[1] = 10.0 + 2.0 * (1.0 - 1.0) / 2.0;
+  quad.radii[2] = quad.radii[1] + 3.0 * (-1.0 + 2.0) / 2.0;
+  quad.validate();
+  EXPECT_DOUBLE_EQ(quad.acceleration(1.0), -1.0);
+  EXPECT_DOUBLE_EQ(quad.acceleration(3.0), 1.0);
+  for (double knot : {2.0}) {
+    const double e = 1e-7;
+    EXPECT_NEAR(quad.radius(knot - e), quad.radius(knot + e), 1e-6);
+    EXPECT_NEAR(quad.rate(knot - e), quad.rate(knot + e), 1e-6);
+  }
+  // d/dt R = rate and d/dt rate = acceleration inside the pieces (central differences).
+  for (double t : {0.7, 1.3, 2.9, 4.4}) {
+    const double h = 1e-5;
+    EXPECT_NEAR((quad.radius(t + h) - quad.radius(t - h)) / (2 * h), quad.rate(t), 1e-8);
+    EXPECT_NEAR((quad.rate(t + h) - quad.rate(t - h)) / (2 * h), quad.acceleration(t), 1e-8);
+  }
+  // The minimum lies inside the second piece, where dR/dt = 0 (t = 2 + 1 = 3).
+  EXPECT_NEAR(quad.min_radius(), quad.radius(3.0), 1e-12);
+  EXPECT_LT(quad.min_radius(), std::min({quad.radii[0], quad.radii[1], quad.radii[2]}));
+  vt::RadiusProfile broken = quad;
+  broken.radii[2] += 0.5;  // R would jump at the last knot
+  EXPECT_THROW(broken.validate(), vt::Error);
+  broken = quad;
+  broken.rates.pop_back();
+  EXPECT_THROW(broken.validate(), vt::Error);
+}
+
+namespace {
+
+vt::SmoothRadiusLimits limits_for(double v, double vg, double r_min, double turn_share = 0.5) {
+  vt::SmoothRadiusLimits l;
+  l.uav_speed = v;
+  l.poi_speed = vg;
+  l.min_turn_radius = r_min;
+  l.max_rate = v - vg;
+  l.turn_share = turn_share;
+  return l;
+}
+
+// Every constraint of a smooth R(t) under a ceiling, checked on a fine grid and at the knots.
+void expect_flyable_under(const vt::RadiusProfile& p, const vt::Ceiling& ceiling, const vt::SmoothRadiusLimits& l) {
+  ASSERT_TRUE(p.smooth());
+  EXPECT_NO_THROW(p.validate());  // R continuous at every knot (and dR/dt by construction)
+  EXPECT_EQ(vt::smooth_radius_violation(p, l), "");
+  const double t0 = ceiling.breaks.front(), t1 = ceiling.breaks.back();
+  EXPECT_DOUBLE_EQ(p.times.front(), t0);
+  EXPECT_DOUBLE_EQ(p.times.back(), t1);
+  for (int i = 0; i <= 20000; ++i) {
+    const double t = t0 + (t1 - t0) * i / 20000.0;
+    EXPECT_LE(p.radius(t), ceiling.at(t) + 1e-9) << t;
+    EXPECT_LE(std::abs(p.rate(t)), l.max_rate * (1 + 1e-12)) << t;
+  }
+  for (std::size_t k = 1; k + 1 < p.times.size(); ++k) {
+    const double e = 1e-9 * (t1 - t0);
+    EXPECT_NEAR(p.rate(p.times[k] - e), p.rate(p.times[k] + e), 1e-6) << "dR/dt jumps at knot " << k;
+  }
+}
+
+}  // namespace
+
+TEST(SmoothRadius, StaysUnderTheCeilingWithinTheRateAndTurnBounds) {
+  const vt::SmoothRadiusLimits l = limits_for(20.0, 5.0, 50.0);
+  // A tent, a cliff and a narrow notch: the kinks a piecewise-linear R(t) would copy.
+  const vt::Ceiling ceiling{{0.0, 4.0, 10.0, 10.5, 20.0, 22.0, 23.0, 35.0},
+                            {180.0, 120.0, 160.0, 125.0, 130.0, 105.0, 140.0},
+                            {120.0, 160.0, 160.0, 125.0, 130.0, 105.0, 150.0}};
+  const vt::RadiusProfile p = vt::smooth_radius(ceiling, l);
+  expect_flyable_under(p, ceiling, l);
+  // It touches the ceiling somewhere (it is the largest such R, not just any).
+  double closest = 1e9;
+  for (int i = 0; i <= 3500; ++i) closest = std::min(closest, ceiling.at(i * 0.01) - p.radius(i * 0.01));
+  EXPECT_LT(closest, 0.1);
+  // The bound on d2R/dt2 from the turn rate: turn_share of what Lemma 6 leaves free at R(t), over
+  // the smallest |u_theta| at dR/dt(t).
+  for (double t = 0.0; t < 35.0; t += 0.01)
+    EXPECT_LE(std::abs(p.acceleration(t)), l.max_acceleration(p.radius(t), p.rate(t)) * (1 + 1e-9) + 1e-12) << t;
+  EXPECT_GT(std::abs(p.acceleration(3.0)) + std::abs(p.acceleration(21.0)), 0.1);  // it does bend
+  // A constant ceiling: R sits just under it (5 cm: the knots' bulge allowance), nearly flat.
+  const vt::Ceiling flat{{0.0, 30.0}, {150.0}, {150.0}};
+  const vt::RadiusProfile q = vt::smooth_radius(flat, l);
+  expect_flyable_under(q, flat, l);
+  EXPECT_GT(q.min_radius(), 150.0 - 0.2);
+  EXPECT_THROW(vt::smooth_radius(vt::Ceiling{{0.0, 1.0}, {1.0, 2.0}, {1.0, 2.0}}, l), vt::Error);
+  vt::SmoothRadiusLimits too_fast = l;
+  too_fast.max_rate = 16.0;  // v - v_g = 15
+  EXPECT_THROW(vt::smooth_radius(flat, too_fast), vt::Error);
+}
+
+TEST(SmoothRadius, TurnRateOnTheOrbitStaysWithinTheLimit) {
+  // The bound's claim, checked against the exact turn rate on the orbit (R theta_dot^2 - R_ddot) /
+  // u_theta over every polar angle: at most v / r_min wherever R >= r_min (1 + v_g/v)^2.
+  const vt::SmoothRadiusLimits l = limits_for(20.0, 5.0, 50.0);
+  const double lemma6 = 50.0 * 1.25 * 1.25;
+  for (double radius : {lemma6 * 1.01, 100.0, 160.0})
+    for (double rate : {-14.9, -8.0, 0.0, 3.0, 12.0}) {
+      const double accel = l.max_acceleration(radius, rate) / l.turn_share;  // the whole free turn rate
+      for (double a = -3.14159; a < 3.14159; a += 0.001) {
+        const double radial = 5.0 * std::cos(a) + rate;
+        const double u_theta = std::sqrt(400.0 - radial * radial);
+        const double theta_dot = (5.0 * std::sin(a) + u_theta) / radius;  // (13), counter-clockwise
+        for (double s : {1.0, -1.0})
+          EXPECT_LE(std::abs(radius * theta_dot * theta_dot - s * accel) / u_theta, 20.0 / 50.0 * (1 + 1e-9))
+              << radius << " " << rate << " " << a;
+      }
+    }
+}
+
+TEST(VisibleDiskRadius, OneWallGivesItsShadowAndAgreesWithTheVisibilityPolygon) {
+  // A wall 20 m east of the POI, 30 m tall: from the plane z = 100 the POI (0.5 m up) is hidden
+  // beyond the wall's shadow edge, rho = d (h - z_g) / (H - z_g) = 20 * 99.5 / 29.5 m due east.
+  vt::Building wall;
+  wall.footprint.outer = {vt::Vec2(20.0, -40.0), vt::Vec2(22.0, -40.0), vt::Vec2(22.0, 40.0), vt::Vec2(20.0, 40.0)};
+  wall.height = 30.0;
+  const auto env = vt::Environment::from_buildings({wall});
+  const vt::VisibilityScene scene(env);
+  vt::Sensor sensor;
+  sensor.d_max = 200.0;
+  const vt::Vec3 g(0.0, 0.0, 0.5);
+  const double expected = 20.0 * 99.5 / 29.5;
+  EXPECT_NEAR(vt::visible_disk_radius(scene, g, 100.0, sensor), expected, 0.01);
+  // The same number as MaxRadius of the 1-degree VV's polygon, within its mesh error.
+  const vt::VisibilityVolume vv = vt::visibility_volume(scene, g, sensor.d_max);
+  EXPECT_NEAR(vt::visible_disk_radius(scene, g, 100.0, sensor),
+              vt::max_inscribed_radius(vt::plane_visibility_polygon(vv, 100.0), g.head<2>()), 0.01 * expected);
+  // Open field: the reach of d_max on the plane; above d_max or outside the band: nothing.
+  const vt::Vec3 far_away(-500.0, 0.0, 0.5);
+  EXPECT_NEAR(vt::visible_disk_radius(scene, far_away, 100.0, sensor), std::sqrt(200.0 * 200.0 - 99.5 * 99.5), 1e-3);
+  EXPECT_EQ(vt::visible_disk_radius(scene, far_away, 300.0, sensor), 0.0);
+  sensor.altitude_band = std::make_pair(110.0, 150.0);
+  EXPECT_EQ(vt::visible_disk_radius(scene, far_away, 100.0, sensor), 0.0);
+}
+
+namespace {
+
+// MaxRadius of a synthetic world: 50 m, with a V-shaped dip to 38 m at x = 47 m (8 m wide) that
+// VVs every 20 m never see.
+double dip_world_radius(double x) { return 50.0 - 12.0 * std::max(0.0, 1.0 - std::abs(x - 47.0) / 4.0); }
+
+vt::VolumeFunction dip_world() {
+  return [](const vt::Vec3& g) {
+    auto v = std::make_shared<vt::VisibilityVolume>();
+    v->poi = g;
+    v->grid.num_elevation = 18;
+    v->grid.num_azimuth = 36;
+    v->near.assign(v->grid.size(), 0.0);
+    v->far.assign(v->grid.size(), dip_world_radius(g.x()));
+    return vt::VolumePtr(v);
+  };
+}
+
+}  // namespace
+
+TEST(LocusCheck, FindsTheDipBetweenSamplesAndKeepsTheSmoothLocusOutOfIt) {
+  vt::VolumeCache cache(dip_world());
+  Eigen::MatrixXd w(2, 2);
+  w << 0, 0, 100, 0;
+  const vt::PoiPath poi(w, 5.0);
+  vt::Planning planning;
+  planning.cutoff = 1e12;  // no insertion: samples every 20 m
+  const vt::SliceFunction slice = [](const vt::VisibilityVolume& v, double) {
+    return std::vector<vt::Polygon>{square(v.poi.head<2>(), v.far[0])};
+  };
+  const vt::Uav u = uav(20.0, 10.0);
+  vt::Sensor sensor;
+  planning.locus = vt::Locus::paper;
+  const auto paper = vt::plan_orbits(poi, u, sensor, planning, cache, grid_metric, slice);
+  planning.locus = vt::Locus::smooth;
+  const auto smooth = vt::plan_orbits(poi, u, sensor, planning, cache, grid_metric, slice);
+  ASSERT_TRUE(paper.feasible && smooth.feasible) << smooth.infeasibility;
+  EXPECT_TRUE(paper.reference.times.empty());  // piecewise linear through the samples
+  EXPECT_EQ(paper.times, smooth.times);
+  double paper_worst = -1e9, smooth_worst = -1e9;
+  for (int i = 0; i <= 4000; ++i) {
+    const double t = poi.duration() * i / 4000.0;
+    const double m = dip_world_radius(poi.position(t).x());
+    paper_worst = std::max(paper_worst, paper.radius(t) - m);
+    smooth_worst = std::max(smooth_worst, smooth.radius(t) - (m - planning.tracking_margin));
+  }
+  EXPECT_GT(paper_worst, 10.0);    // the paper's locus runs through the dip (the samples all say 50 m)
+  EXPECT_LE(smooth_worst, 1e-6);   // the smooth one stays tracking_margin inside MaxRadius everywhere
+  const vt::LocusCheck& c = smooth.check;
+  EXPECT_GT(c.paper_violations, 0u);
+  EXPECT_GT(c.paper_max_violation, 6.0);  // 12 m at the dip's bottom, found to within the check's spacing
+  EXPECT_NEAR(c.max_lowering_time, 47.0 / 5.0, 1.0);  // lowered most at the dip
+  EXPECT_GT(c.volumes_computed, 0u);
+  EXPECT_TRUE(std::is_sorted(c.arc_lengths.begin(), c.arc_lengths.end()));
+  for (std::size_t j = 0; j < c.arc_lengths.size(); ++j)
+    EXPECT_DOUBLE_EQ(c.max_radii[j], dip_world_radius(c.arc_lengths[j]));
+  EXPECT_EQ(vt::smooth_radius_violation(smooth.reference, vt::SmoothRadiusLimits{20.0, 5.0, 10.0, 15.0, 0.5}), "");
+  // R at the samples is the reference there; the JSON keeps the reference and the check.
+  for (std::size_t k = 0; k < smooth.times.size(); ++k) EXPECT_DOUBLE_EQ(smooth.radii[k], smooth.radius(smooth.times[k]));
+  const auto again = vt::visibility_orbit_plan_from_json(vt::to_json(smooth));
+  EXPECT_EQ(again.planning.locus, vt::Locus::smooth);
+  EXPECT_EQ(again.reference.times, smooth.reference.times);
+  EXPECT_EQ(again.reference.rates, smooth.reference.rates);
+  EXPECT_EQ(again.orbits.radii, smooth.orbits.radii);
+  EXPECT_EQ(again.check.max_radii, c.max_radii);
+  EXPECT_EQ(again.check.ceiling.starts, c.ceiling.starts);
+  for (double t : {0.3, 9.4, 17.7}) EXPECT_DOUBLE_EQ(again.radius(t), smooth.radius(t));
+}
+
+TEST(LocusCheck, OldPlanFilesReadAsThePapersLocus) {
+  // A plan file from before the smooth locus: no "reference", no planning.locus.
+  const std::string text = R"({"format": "vistrack.visibility_orbit_plan/1", "poi": {"waypoints": [[0,0,0],[100,0,0]],
+    "speed": 5.0}, "times": [0, 10, 20], "radii": [40, 60, 50], "feasible": true, "infeasibility": "",
+    "planning": {"spacing": 20, "cutoff": 1e6, "resolution_deg": 1, "min_spacing": 1, "max_depth": 8}})";
+  const auto plan = vt::visibility_orbit_plan_from_json(text);
+  EXPECT_EQ(plan.planning.locus, vt::Locus::paper);
+  EXPECT_TRUE(plan.reference.times.empty());
+  EXPECT_DOUBLE_EQ(plan.radius(5.0), 50.0);
+  EXPECT_DOUBLE_EQ(plan.radius_rate(12.0), -1.0);
+  EXPECT_DOUBLE_EQ(plan.radius_acceleration(12.0), 0.0);
+  EXPECT_EQ(plan.knot_times(), plan.times);
+  EXPECT_EQ(plan.orbits.radius_rates, (std::vector<double>{2.0, -1.0}));
+  EXPECT_THROW(vt::locus_from_string("smoothest"), vt::Error);
 }

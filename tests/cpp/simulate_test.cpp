@@ -6,8 +6,11 @@
 #include <random>
 
 #include "test_data.hpp"
+#include "error_message.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/simulate.hpp"
+
+using vistrack::testing::error_message;
 
 namespace vistrack {
 namespace {
@@ -62,6 +65,50 @@ TEST(Simulate, StartingOnTheOrbitStaysOnIt) {
       EXPECT_LT(std::abs(r.radial_error[k]), 1e-6) << r.t[k];
     }
     EXPECT_LT(std::abs(r.radial_error[k]), 5.0);  // the POI turn kicks it off a little (Remark 3)
+  }
+}
+
+// A smooth plan by hand: R(t) = 140 + 20 sin(0.2 t) as C1 quadratic pieces (rates at the knots
+// from the sine's derivative, radii integrated so that R stays continuous).
+OrbitPlan smooth_plan(const PoiPath& poi, const Uav& uav) {
+  OrbitPlan plan = constant_radius_plan(poi, 140.0, uav);
+  RadiusProfile& p = plan.reference;
+  for (double t = 0.0; t < poi.duration(); t += 0.7) p.times.push_back(t);
+  p.times.push_back(poi.duration());
+  p.radii.push_back(140.0);
+  for (double t : p.times) p.rates.push_back(4.0 * std::cos(0.2 * t));
+  for (std::size_t k = 0; k + 1 < p.times.size(); ++k)
+    p.radii.push_back(p.radii[k] + 0.5 * (p.times[k + 1] - p.times[k]) * (p.rates[k] + p.rates[k + 1]));
+  p.validate();
+  for (std::size_t k = 0; k < plan.times.size(); ++k) plan.radii[k] = p.radius(plan.times[k]);
+  return plan;
+}
+
+TEST(Simulate, SmoothReferenceRestartsAtItsKnotsAndIsFollowed) {
+  // Started on the smooth orbit with psi = psi_d, the field's flow keeps r = R: the R_ddot
+  // feed-forward of (85) is exact.
+  const Uav uav;
+  const Control control;
+  const PoiPath poi = two_leg_path(5.0);
+  const OrbitPlan plan = smooth_plan(poi, uav);
+  const std::vector<double> b = segment_boundaries(plan);
+  for (double t : plan.reference.times)
+    if (t < poi.duration()) {
+      EXPECT_TRUE(std::any_of(b.begin(), b.end(), [&](double x) { return std::abs(x - t) < 1e-9; }));
+    }
+  OrbitState orbit = orbit_state(plan, 0.0, 0.0);
+  EXPECT_DOUBLE_EQ(orbit.radius_acceleration, plan.radius_acceleration(0.0));
+  const Vec3 x0 = orbit_configuration(1.0, orbit, uav.speed, Circulation::CounterClockwise);
+  SimulationOptions options;
+  options.rtol = 1e-10;
+  options.atol = 1e-10;
+  const SimulationResult r = simulate(plan, uav, x0, control, options);
+  const double t_turn = poi.node_times()[1];
+  for (std::size_t k = 0; k < r.t.size(); ++k) {
+    EXPECT_NEAR(r.orbit_radius[k], plan.radius(r.t[k]), 1e-9);
+    if (r.t[k] < t_turn) {
+      EXPECT_LT(std::abs(r.radial_error[k]), 1e-6) << r.t[k];
+    }
   }
 }
 
@@ -269,28 +316,20 @@ TEST(Simulate, BadInputNamesTheField) {
   const Uav uav;
   const PoiPath poi = two_leg_path(5.0);
   OrbitPlan plan = constant_radius_plan(poi, 150.0, uav);
-  const auto message = [&](auto&& call) {
-    try {
-      call();
-    } catch (const Error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_NE(message([&] { simulate(plan, uav, Vec3(std::nan(""), 0.0, 0.0), Control{}); }).find("x0[0]"),
+  EXPECT_NE(error_message([&] { simulate(plan, uav, Vec3(std::nan(""), 0.0, 0.0), Control{}); }).find("x0[0]"),
             std::string::npos);
   // A direction is a Circulation: a bad one can only come from text, which names its field.
-  EXPECT_NE(message([&] { circulation_from_string("sideways", "control.direction"); }).find("control.direction"),
+  EXPECT_NE(error_message([&] { circulation_from_string("sideways", "control.direction"); }).find("control.direction"),
             std::string::npos);
   Uav slow = uav;
   slow.speed = 4.0;
-  EXPECT_NE(message([&] { simulate(plan, slow, Vec3::Zero(), Control{}); }).find("uav.speed"), std::string::npos);
+  EXPECT_NE(error_message([&] { simulate(plan, slow, Vec3::Zero(), Control{}); }).find("uav.speed"), std::string::npos);
   OrbitPlan steep = plan;
   steep.radii[1] = steep.radii[0] + 20.0 * (steep.times[1] - steep.times[0]);  // dR/dt = 20 > v - v_g
-  EXPECT_NE(message([&] { simulate(steep, uav, Vec3::Zero(), Control{}); }).find("Lemma 5"), std::string::npos);
+  EXPECT_NE(error_message([&] { simulate(steep, uav, Vec3::Zero(), Control{}); }).find("Lemma 5"), std::string::npos);
   SimulationOptions options;
   options.output_step = 0.0;
-  EXPECT_NE(message([&] { simulate(plan, uav, Vec3::Zero(), Control{}, options); }).find("output_step"),
+  EXPECT_NE(error_message([&] { simulate(plan, uav, Vec3::Zero(), Control{}, options); }).find("output_step"),
             std::string::npos);
   EXPECT_THROW(simulate(plan, uav, Vec3::Zero(), Control{}, SimulationOptions{}, {}, -1.0), Error);
 }

@@ -3,8 +3,10 @@
 #include "vistrack/visibility.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -402,6 +404,35 @@ TEST(VisibilityVolume, BatchEqualsSingleAndIsDeterministic) {
     EXPECT_EQ(one.far, batch[static_cast<std::size_t>(k)].far);
     EXPECT_TRUE(one.mesh.faces == batch[static_cast<std::size_t>(k)].mesh.faces);
   }
+}
+
+// One VV alone is spread over the TBB threads (rays in chunks of 64 at fixed offsets, mesh rows
+// counted and then filled): the result must not depend on how many threads there are.
+TEST(VisibilityVolume, ResultsDoNotDependOnTheThreadCount) {
+  const VisibilityScene scene(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)},
+                                         {Vec3(-50, 30, 0), Vec3(-10, 80, 70)},
+                                         {Vec3(-80, -90, 0), Vec3(-20, -40, 15)}}));
+  const std::vector<Vec3> pois = {Vec3(0, 0, 0), Vec3(-30, 10, 1), Vec3(10, -60, 0.5)};
+  for (const Vec3& g : pois)
+    for (const auto& band : {std::optional<std::pair<double, double>>{}, std::optional(std::make_pair(5.0, 60.0)),
+                             std::optional(std::make_pair(-1.0, 40.0))}) {
+      const VisibilityVolume threads = visibility_volume(scene, g, 150.0, band, 1.0);
+      VolumeCost cost;
+      const VisibilityVolume serial = visibility_volume_with_cost(scene, g, 150.0, band, 1.0, cost, false);
+      VisibilityVolume one_thread;
+      {
+        tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+        one_thread = visibility_volume(scene, g, 150.0, band, 1.0);
+      }
+      for (const VisibilityVolume* other : std::array<const VisibilityVolume*, 2>{&serial, &one_thread}) {
+        EXPECT_EQ(threads.volume, other->volume);
+        EXPECT_EQ(threads.near, other->near);
+        EXPECT_EQ(threads.far, other->far);
+        EXPECT_TRUE(threads.mesh.vertices == other->mesh.vertices);
+        EXPECT_TRUE(threads.mesh.faces == other->mesh.faces);
+      }
+      EXPECT_GT(cost.rays_traced + cost.rays_skipped, 0u);
+    }
 }
 
 TEST(VisibilityVolume, SavesObjAndPly) {

@@ -21,6 +21,7 @@ REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = REPO / "examples"
 NORTH, EAST, SOUTH, WEST = math.pi / 2, 0.0, -math.pi / 2, math.pi
 UAV = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
+NO_MEDIA = ["--no-animation", "--no-html"]  # the report media are tested in test_planner_reports.py
 
 
 def _amplitude_by_scipy(sigma: float, distance: float) -> float:
@@ -213,7 +214,8 @@ def test_cli_writes_figures_trajectory_and_metrics(tmp_path: Path) -> None:
     from vistrack.cli import main
 
     out = tmp_path / "stop"
-    assert main(["follow", str(EXAMPLES / "follow_stop.yaml"), "--out", str(out), "--no-city", "--quiet"]) == 0
+    assert main(["follow", str(EXAMPLES / "follow_stop.yaml"), "--out", str(out), "--no-city", "--quiet",
+                 *NO_MEDIA]) == 0
     metrics = json.loads((out / "metrics.json").read_text())
     for key in ("mean_tracking_error_m", "max_tracking_error_m", "along_track_lag_m", "mode_switches",
                 "time_in_mode_s", "camera_fraction"):
@@ -232,7 +234,7 @@ def test_cli_writes_figures_trajectory_and_metrics(tmp_path: Path) -> None:
     last = [float(v) for v in rows[-1].split(",")[8:10]]
     assert last[1] == pytest.approx(1600.0 + 400.0)
     assert main(["follow", str(EXAMPLES / "follow_wind.yaml"), "--out", str(tmp_path / "w"), "--no-city", "--quiet",
-                 "--no-compensation"]) == 0
+                 "--no-compensation", *NO_MEDIA]) == 0
     assert json.loads((tmp_path / "w" / "metrics.json").read_text())["wind_compensation"] is False
 
 

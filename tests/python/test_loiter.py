@@ -3,6 +3,7 @@ against brute force, scenario files, errors naming the field, the CLI."""
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import json
 import math
@@ -17,6 +18,7 @@ from vistrack import VistrackError, loiter
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((REPO / "examples").glob("loiter_*aoi.yaml"))
 SQUARE = [(200.0, 200.0), (600.0, 200.0), (600.0, 600.0), (200.0, 600.0)]
+NO_MEDIA = ["--no-animation", "--no-html"]  # the report media are tested in test_planner_reports.py
 
 
 def test_public_api_shape() -> None:
@@ -110,7 +112,7 @@ def test_coverage_fractions_agree_with_shapely() -> None:
         i = cov.pointed[k]
         if i < 0:
             continue
-        footprint = camera.footprint(tuple(states.poses[k]), cov.bank[k] + cov.gimbal[k])
+        footprint = camera.footprint(tuple(states.poses[k]), cov.tilt[k])
         disk = Point(*SQUARE[i]).buffer(46.0, 1024)
         theirs = _ellipse_polygon(footprint).intersection(disk).area / disk.area
         assert cov.fraction[k, i] == pytest.approx(theirs, abs=2e-4)
@@ -219,13 +221,34 @@ def test_scenario_file_errors_name_the_key(tmp_path: Path) -> None:
     bad.write_text("aois: [[300, 300]]\ncamera: {altitude: 0}\n")
     with pytest.raises(VistrackError, match=r"camera\.altitude"):
         loiter.load_scenario(bad)
+    bad.write_text("aois: [[300, 300]]\ncamera: {levelled: 'no'}\n")
+    with pytest.raises(VistrackError, match=r"camera\.levelled = 'no'"):
+        loiter.load_scenario(bad)
+
+
+def test_body_camera_sees_less_of_a_minimum_radius_loiter(tmp_path: Path) -> None:
+    """camera.levelled: false puts the gimbal under the banked body: on a loiter at the minimum
+    turn radius the belly faces out of the circle, so the AOI is held for far less of the loiter
+    than with the paper's levelled camera, which holds it all the time (README's numbers)."""
+    scenario = tmp_path / "one.yaml"
+    scenario.write_text("aois: [[300, 300]]\ncamera: {levelled: false}\n")
+    body = loiter.load_scenario(scenario)
+    assert not body.camera.levelled
+    plan = body.plan("tlpp")
+    on_loiter = np.array([plan.segments[k].role == "loiter" for k in plan.sample_states(body.dt, False).segment])
+    held_body = (body.coverage(plan).fraction[:, 0] >= body.threshold)[on_loiter].mean()
+    levelled = dataclasses.replace(body, camera=loiter.Camera())
+    held_levelled = (levelled.coverage(plan).fraction[:, 0] >= levelled.threshold)[on_loiter].mean()
+    assert held_levelled == 1.0
+    assert held_body < 0.3
 
 
 def test_cli_writes_figures_metrics_and_paths(tmp_path: Path) -> None:
     from vistrack.cli import main
 
     source = EXAMPLES[0].read_bytes()
-    assert main(["loiter", str(EXAMPLES[0]), "--order", "best", "--out", str(tmp_path / "one"), "--quiet"]) == 0
+    assert main(["loiter", str(EXAMPLES[0]), "--order", "best", "--out", str(tmp_path / "one"), "--quiet",
+                 *NO_MEDIA]) == 0
     assert EXAMPLES[0].read_bytes() == source  # input untouched
     metrics = json.loads((tmp_path / "one" / "metrics.json").read_text())
     assert [m["method"] for m in metrics["methods"]] == list(loiter.METHODS)
@@ -235,7 +258,7 @@ def test_cli_writes_figures_metrics_and_paths(tmp_path: Path) -> None:
         assert lines[0].startswith("t,x,y,psi") and len(lines) > 100
     assert (tmp_path / "one" / "plans.png").stat().st_size > 10000
     assert main(["loiter", *map(str, EXAMPLES[:2]), "--method", "ldlpp", "tlpp", "--out", str(tmp_path / "two"),
-                 "--quiet"]) == 0
+                 "--quiet", *NO_MEDIA]) == 0
     assert "| TLPP |" in (tmp_path / "two" / "table.md").read_text()
     assert (tmp_path / "two" / "fig14_comparison.png").exists()
     assert main(["loiter", "--random", "6", "--seed", "1", "--out", str(tmp_path / "random"), "--quiet"]) == 0
@@ -278,7 +301,7 @@ def test_cli_wind(tmp_path: Path) -> None:
     from vistrack.cli import main
 
     assert main(["loiter", str(EXAMPLES[0]), "--method", "tlpp", "--wind", "5,0", "--out", str(tmp_path),
-                 "--quiet"]) == 0
+                 "--quiet", *NO_MEDIA]) == 0
     metrics = json.loads((tmp_path / "metrics.json").read_text())
     flown = metrics["methods"][0]["wind"][0]
     assert flown["wind"] == [5.0, 0.0] and 0.0 <= flown["loiter_covered_fraction"] <= 1.0

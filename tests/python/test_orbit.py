@@ -62,7 +62,8 @@ def small_example(charlotte):
     poi = vt.PoiPath.from_csv(str(charlotte / "paths" / "paper_small.csv"), 5.0)
     uav = vt.Uav(speed=20.0, min_turn_radius=5.0, altitude=50.0)
     sensor = vt.Sensor(d_max=100.0)
-    planning = vt.Planning(spacing=20.0, cutoff=500e3, resolution_deg=1.0)
+    # The paper's method (Algorithm 1, piecewise linear); the smooth locus is tested in test_locus.py.
+    planning = vt.Planning(spacing=20.0, cutoff=500e3, resolution_deg=1.0, locus="paper")
     planner = vt.OrbitPlanner(env, sensor)
     calls = []
     plan = planner.plan(poi, uav, planning, lambda done, total: calls.append((done, total)))

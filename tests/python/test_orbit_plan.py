@@ -62,8 +62,11 @@ def test_visibility_plan_json_derives_rates_and_validates_parameters() -> None:
     data = json.loads(plan.to_json())
     data["radius_rates"] = [123.0] * len(data["radius_rates"])  # tampered: must not be trusted
     again = vt.VisibilityOrbitPlan.from_json(json.dumps(data))
-    expected = np.diff(plan.radii) / np.diff(plan.times)
+    # radius_rates are Algorithm 1's (the paper's piecewise-linear locus); the smooth reference
+    # R(t) the plan follows has its own rates at its knots (plan.reference.rates).
+    expected = np.diff(plan.orbits.radii) / np.diff(plan.times)
     assert np.allclose(again.radius_rates, expected) and np.allclose(plan.radius_rates, expected)
+    np.testing.assert_array_equal(again.reference.rates, plan.reference.rates)
     data["uav"]["speed"] = -3.0
     with pytest.raises(vt.VistrackError, match="uav.speed = -3"):
         vt.VisibilityOrbitPlan.from_json(json.dumps(data))
@@ -74,12 +77,19 @@ def test_rate_margin_tightens_algorithm_1_and_survives_json() -> None:
     poi = vt.PoiPath(np.array([[-290.0, -210.0], [95.0, -210.0]]), speed=5.0)
     uav = vt.Uav(speed=20.0, min_turn_radius=15.0, altitude=200.0)
     sensor = vt.Sensor(d_max=300.0)
-    paper = vt.plan_orbits(env, poi, uav, sensor, vt.Planning(resolution_deg=3.0, spacing=10.0, cutoff=1e12))
-    tight = vt.plan_orbits(env, poi, uav, sensor,
-                           vt.Planning(resolution_deg=3.0, spacing=10.0, cutoff=1e12, rate_margin=0.5))
+    # Algorithm 1's rate passes, on the paper's locus (the smooth one solves an LP to 1 cm under the
+    # same rate bound, so its radii need not be ordered to 1e-9).
+    paper = vt.plan_orbits(env, poi, uav, sensor,
+                           vt.Planning(resolution_deg=3.0, spacing=10.0, cutoff=1e12, locus="paper"))
+    tight = vt.plan_orbits(env, poi, uav, sensor, vt.Planning(resolution_deg=3.0, spacing=10.0, cutoff=1e12,
+                                                              rate_margin=0.5, locus="paper"))
     assert np.max(np.abs(paper.radius_rates)) == pytest.approx(15.0)  # the city makes it reach v - v_g
     assert np.max(np.abs(tight.radius_rates)) <= 7.5 * (1 + 1e-12)
     assert np.all(np.asarray(tight.radii) <= np.asarray(paper.radii) + 1e-9)
+    # The smooth locus keeps the same margin on its dR/dt everywhere (linear between its knots).
+    smooth = vt.plan_orbits(env, poi, uav, sensor,
+                            vt.Planning(resolution_deg=3.0, spacing=10.0, cutoff=1e12, rate_margin=0.5))
+    assert smooth.reference.smooth and np.max(np.abs(smooth.reference.rates)) <= 7.5 * (1 + 1e-9)
     again = vt.VisibilityOrbitPlan.from_json(tight.to_json())
     assert again.planning.rate_margin == 0.5
     with pytest.raises(vt.VistrackError, match="planning.rate_margin = 1"):

@@ -15,15 +15,18 @@
 
 namespace vistrack {
 
-// The reference orbit at one instant: centre g, its velocity g_dot, radius R and its rate R_dot.
-// Within one plan segment g_dot and R_dot are constant (Definitions 1 and 2).
+// The reference orbit at one instant: centre g, its velocity g_dot, radius R, its rate R_dot and
+// its second derivative R_ddot. Within one plan segment g_dot is constant (Definition 1); R_dot is
+// too on the paper's piecewise-linear locus (Definition 2, R_ddot = 0), while the smooth locus has
+// a constant R_ddot per segment.
 struct OrbitState {
   Vec2 center = Vec2::Zero();        // g
   Vec2 center_velocity = Vec2::Zero();  // g_dot, |g_dot| = v_g
   double radius = 1.0;               // R > 0
   double radius_rate = 0.0;          // R_dot
+  double radius_acceleration = 0.0;  // R_ddot
   // Error naming the field outside the ranges of vistrack/limits.hpp: centre a coordinate, its
-  // velocity and R_dot within the speed range, R a length.
+  // velocity and R_dot within the speed range, R a length, |R_ddot| <= 1e4 m/s^2.
   void validate() const;
 };
 
@@ -51,9 +54,9 @@ struct VectorField {
   double u_theta = 0.0;      // circulation component of u (74), sign = sign(direction)
   Vec2 u = Vec2::Zero();     // the field in x, y (75); |u| = v
   double heading = 0.0;      // psi_d of (77), in (-pi, pi]
-  double attraction_rate = 0.0;  // dPhi'/dt along the field (83)
+  double attraction_rate = 0.0;  // dPhi'/dt along the field (83), plus -sgn(R_dot) R_ddot (2/pi) atan(beta (r - R))
   double polar_rate = 0.0;       // theta_dot along the field (84)
-  double heading_rate = 0.0;     // dpsi_d/dt along the field (85)
+  double heading_rate = 0.0;     // dpsi_d/dt along the field: (85) with R_ddot, (dPhi'/dt - R_ddot + r theta_dot^2) / u_theta
 };
 
 // The vector field (74) at position xi. `heading_hint` orients e_r when xi is exactly at the
@@ -93,7 +96,9 @@ double one_minus_cos_over_x(double x);
 double sinc(double x);
 
 // Exact orbit following (section IV.A). At polar angle theta on the orbit:
-// theta_dot of (13) and the signed curvature of the path, +-(31) (+ counter-clockwise).
+// theta_dot of (13) and the signed curvature of the path, +-(31) (+ counter-clockwise), with
+// R_ddot: (R theta_dot^2 - R_ddot) / (v u_theta) (Lemma 2 with d(x_dot . e_r)/dt = theta_dot g_dot . e_theta
+// + R_ddot in (34)).
 // Throws Error when v^2 < (g_dot . e_r + R_dot)^2, i.e. Lemma 5 is violated at theta.
 double orbit_polar_rate(double theta, const OrbitState& orbit, double speed, Circulation direction);
 double orbit_signed_curvature(double theta, const OrbitState& orbit, double speed, Circulation direction);

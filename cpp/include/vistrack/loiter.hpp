@@ -155,9 +155,14 @@ struct Footprint {
   double area() const;          // pi * semi_along * semi_across
 };
 
-// Camera tilt to the left of the track from the bank of a coordinated turn at this turn rate:
-// atan(v psi_dot / g) (left turns bank left).
+// Bank of a coordinated turn at this turn rate: atan(v psi_dot / g), positive to the left (left
+// turns bank left).
 double bank_angle(double speed, double turn_rate, double gravity = kStandardGravity);
+
+// The camera axis' tilt to the left of vertical for a bank (positive left) and a gimbal angle
+// (positive left): the gimbal angle itself when the camera is levelled; on the body, gimbal - bank,
+// because banking left (left wing down) turns the belly, and a camera under it, to the right.
+double camera_tilt(const LoiterCamera& camera, double bank, double gimbal);
 
 // Footprint of the camera at the pose, tilted `tilt` rad to the left of vertical (bank plus
 // gimbal), at camera.altitude. With half-angle beta = fov/2, k = cos^2 beta - sin^2 tilt > 0,
@@ -185,6 +190,7 @@ struct LoiterCoverage {
   std::vector<int> pointed;           // per step: the AOI most in view (-1: none aimed at)
   std::vector<double> gimbal;         // per step: gimbal angle, rad, positive to the left
   std::vector<double> bank;           // per step: bank angle, rad, positive to the left
+  std::vector<double> tilt;           // per step: camera axis tilt to the left of vertical, rad
   std::size_t steps = 0;
   std::size_t aoi_count = 0;
 };

@@ -21,21 +21,53 @@
 
 namespace vistrack {
 
+// R(t) as the guidance follows it, on knots t_0 < ... < t_m. Piecewise linear between the knots
+// (Definition 2, the paper's locus) when `rates` is empty; otherwise C1 piecewise quadratic with
+// dR/dt = rates[k] at knot k, linear in t between knots (so d2R/dt2 is constant on each segment):
+// R(t) = radii[k] + rates[k] s + (rates[k+1] - rates[k]) s^2 / (2 (t_k+1 - t_k)), s = t - t_k, and
+// radii[k+1] = radii[k] + (t_k+1 - t_k)(rates[k] + rates[k+1]) / 2 (checked by validate()).
+struct RadiusProfile {
+  std::vector<double> times;
+  std::vector<double> radii;
+  std::vector<double> rates;  // empty: piecewise linear
+
+  bool smooth() const { return !rates.empty(); }
+  // Segment k with times[k] <= t < times[k+1] (the last segment at the end and beyond).
+  std::size_t segment(double t) const;
+  // R(t), dR/dt and d2R/dt2 with t clamped to [times.front(), times.back()] for R; outside that
+  // span R is held, so dR/dt and d2R/dt2 are 0 there. At a knot of a piecewise-linear profile
+  // dR/dt is that of the segment starting there (right-continuous), as is d2R/dt2 for a smooth one.
+  double radius(double t) const;
+  double rate(double t) const;
+  double acceleration(double t) const;
+  // Smallest R over [times.front(), times.back()] (a quadratic segment's minimum may lie inside it).
+  double min_radius() const;
+  // Error naming the field when the knots are empty, not increasing, or sizes differ, a value is
+  // not finite, or (smooth) a segment's end misses the next knot's radius.
+  void validate() const;
+};
+
 // The time-varying reference orbit O(theta, t) = g(t) + R(t) [cos theta, sin theta] of eq. (5)
-// that the guidance follows: R is piecewise linear between the knots (times[k], radii[k]); g(t)
-// is the POI path.
+// that the guidance follows: g(t) is the POI path, R(t) the `reference` profile.
 struct OrbitPlan {
   PoiPath poi;
-  std::vector<double> times;         // t_k, increasing, times.front() = 0
-  std::vector<double> radii;         // R(t_k)
+  std::vector<double> times;         // the sample times t_k, increasing, times.front() = 0
+  std::vector<double> radii;         // R(t_k) on the reference
   bool feasible = true;
-  std::string infeasibility;         // which sample fails and why, when !feasible
+  std::string infeasibility;         // which sample or time fails and why, when !feasible
+  // R(t). Without knots: piecewise linear through (times, radii), the paper's locus (every plan
+  // before the smooth locus, and every plan file without a "reference").
+  RadiusProfile reference;
 
-  // R(t), clamped to [times.front(), times.back()].
+  // The reference as the guidance follows it (the piecewise-linear default filled in).
+  RadiusProfile profile() const;
+  // R(t), dR/dt, d2R/dt2 of profile() (see RadiusProfile).
   double radius(double t) const;
-  // dR/dt on the segment containing t (right-continuous), 0 outside.
   double radius_rate(double t) const;
-  // Segment index k with times[k] <= t < times[k+1] (the last segment at the end).
+  double radius_acceleration(double t) const;
+  // The knots of the reference: where dR/dt (piecewise linear) or d2R/dt2 (smooth) may jump.
+  const std::vector<double>& knot_times() const { return reference.times.empty() ? times : reference.times; }
+  // Segment index k with times[k] <= t < times[k+1] of the samples (the last segment at the end).
   std::size_t segment(double t) const;
   // The orbit centres g(t_k), (n, 2).
   Points2 centers() const;
@@ -45,6 +77,16 @@ struct OrbitPlan {
 // `polygons`, holes included): the distance to the nearest boundary of the polygon containing the
 // centre, or 0 when no polygon contains it. Exact, not a sampled bisection (MaxRadius, sec. IV).
 double max_inscribed_radius(const std::vector<Polygon>& polygons, const Vec2& center);
+
+// MaxRadius by line of sight: the radius of the largest disk at world z = altitude centred above
+// the POI every point of which sees it (within d_max and the altitude band), probed with occlusion
+// rays along `azimuths` directions: on `rings` circles out to d_max's reach, then by bisection to
+// 1e-5 of that reach (1 mm at least) on the azimuths that can set the minimum. Along an azimuth
+// the visible points of the plane form one interval from the centre for 2.5D obstacles; blocked
+// bands narrower than reach / rings between two rings are not seen. The POI is placed on the
+// surface (VisibilityScene::poi_on_surface), as the planner's VVs place it.
+double visible_disk_radius(const VisibilityScene& scene, const Vec3& poi, double altitude, const Sensor& sensor,
+                           int azimuths = 360, int rings = 8);
 
 // Orbits of one radius along the whole POI path (the paper's constant-radius baselines).
 OrbitPlan constant_radius_plan(const PoiPath& poi, double radius, const Uav& uav);
@@ -84,6 +126,49 @@ struct CircularOrbits {
 // or a radius is negative or not finite.
 CircularOrbits circular_orbits(const std::vector<double>& times, const std::vector<double>& max_radii,
                                const Uav& uav, double poi_speed, double rate_margin = 0.0);
+
+// ---------------------------------------------------------------------------------------------
+// A smooth reference under a ceiling (beyond the paper).
+
+// What bounds a smooth R(t): |dR/dt| <= max_rate, and on every segment
+// |d2R/dt2| <= turn_share (v / r_min - v (1 + v_g/v)^2 / R_lo) sqrt(v^2 - (v_g + |dR/dt|)^2),
+// R_lo a lower bound of R on the segment. On the orbit the vehicle then turns at most
+// v (1 + v_g/v)^2 / R (Lemma 6) plus |d2R/dt2| / |u_theta| (the d2R/dt2 term of (85) with R_dot in
+// (13): |u_theta| >= sqrt(v^2 - (v_g + |R_dot|)^2)), i.e. at most v / r_min when R >= r_min (1 + v_g/v)^2.
+struct SmoothRadiusLimits {
+  double uav_speed = Uav{}.speed;              // v
+  double poi_speed = 5.0;                      // v_g
+  double min_turn_radius = Uav{}.min_turn_radius;
+  double max_rate = Uav{}.speed - 5.0;         // Lemma 5: v - v_g (times 1 - rate_margin)
+  double turn_share = Planning{}.turn_share;
+  void validate() const;
+  // The bound on |d2R/dt2| at radius >= r_lo and rate |dR/dt| (0 when r_lo fails Lemma 6).
+  double max_acceleration(double r_lo, double rate) const;
+};
+
+// An upper bound on R(t), piecewise linear: from starts[j] to ends[j] on [breaks[j], breaks[j+1]]
+// (it may jump at a break, where the smaller side counts).
+struct Ceiling {
+  std::vector<double> breaks;
+  std::vector<double> starts;
+  std::vector<double> ends;
+  double at(double t) const;  // clamped to [breaks.front(), breaks.back()]
+  void validate() const;      // Error naming the field: sizes, increasing breaks, finite values
+};
+
+// The largest smooth R(t) under a ceiling: of the C1 quadratic splines on uniform knots over
+// [breaks.front(), breaks.back()] that obey `limits` and stay under the ceiling, the one with the
+// largest integral of R, by a log-barrier interior point method on the spline's control points (a
+// banded linear program, solved to 1 cm of the optimal mean R), re-solved passes - 1 times with
+// each segment's R_lo raised to the previous solution (so the d2R/dt2 bound of larger radii is
+// used). knot_spacing <= 0 picks one from the d2R/dt2 bound.
+// A ceiling under r_min (1 + v_g/v)^2 gives a profile that the caller must report infeasible (R
+// there is below Lemma 6's bound).
+RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing = 0.0,
+                            int passes = 2);
+// Why a smooth profile breaks `limits` (|dR/dt| at a knot, or |d2R/dt2| on a segment against the
+// bound at the segment's smallest R), or "" when it keeps them all.
+std::string smooth_radius_violation(const RadiusProfile& profile, const SmoothRadiusLimits& limits);
 
 // ---------------------------------------------------------------------------------------------
 // Adaptive discretization of the POI path (section IV.B).
@@ -135,10 +220,36 @@ Discretization fixed_discretization(const PoiPath& poi, double spacing, VolumeCa
 // ---------------------------------------------------------------------------------------------
 // The whole planner: adaptive VVs, VPs at h_UAV, MaxRadius, Algorithm 1.
 
+// The locus check of a smooth plan: MaxRadius along the POI path between the samples, and how
+// far the smooth R(t) lies below the paper's piecewise-linear one.
+struct LocusCheck {
+  std::vector<double> arc_lengths;   // s_j of the check points (the samples among them), increasing
+  std::vector<double> times;         // t_j = s_j / v_g
+  std::vector<double> max_radii;     // MaxRadius of the VP at h_UAV centred on g(t_j)
+  // The bound R(t) obeys, minus the tracking margin (breaks at the t_j). Where MaxRadius changes by
+  // more than 1 m between two check points, the smaller value on the whole interval; elsewhere the
+  // straight line between them lowered by the most a profile whose slope stays within
+  // slope_bounds[j] (m per m of POI travel: the largest of this and the neighbouring intervals'
+  // slopes, at least 0.1) can dip below it.
+  Ceiling ceiling;
+  std::vector<double> slope_bounds;
+  std::size_t volumes_computed = 0;  // VVs the check computed (the others came from the cache)
+  int rounds = 0;                    // refinement rounds
+  // The paper's piecewise-linear R(t) through Algorithm 1's radii against the check points.
+  std::size_t paper_violations = 0;  // check points where it exceeds MaxRadius
+  double paper_max_violation = 0.0;  // by how much at most, m
+  // paper R(t_j) - smooth R(t_j) per check point: > 0 where the smooth locus is lower.
+  std::vector<double> lowering;
+  double max_lowering = 0.0;         // m
+  double max_lowering_time = 0.0;    // s
+  double min_clearance = 0.0;        // min over check points of MaxRadius - smooth R, m
+};
+
 // A plan with everything it was made from. Its OrbitPlan part is the reference the guidance
-// follows (Algorithm 1's radii at the samples); it runs wherever a plan does.
+// follows: Algorithm 1's radii at the samples, piecewise linear (Locus::paper), or the smooth
+// R(t) under the locus check (Locus::smooth, with `check` filled); it runs wherever a plan does.
 struct VisibilityOrbitPlan : OrbitPlan {
-  explicit VisibilityOrbitPlan(OrbitPlan reference) : OrbitPlan(std::move(reference)) {}
+  explicit VisibilityOrbitPlan(OrbitPlan plan) : OrbitPlan(std::move(plan)) {}
   Uav uav;
   Sensor sensor;
   Planning planning;
@@ -146,26 +257,39 @@ struct VisibilityOrbitPlan : OrbitPlan {
   std::vector<std::vector<Polygon>> polygons;  // the VPs at h_UAV, one list per sample
   std::vector<double> max_radii;               // MaxRadius per sample (line 1 of Algorithm 1)
   CircularOrbits orbits;                       // Algorithm 1 (lines 2-18) on max_radii
+  LocusCheck check;                            // smooth locus only
 };
 
 // VP(s) of a VV at world altitude z (h_UAV: the flight plane).
 using SliceFunction = std::function<std::vector<Polygon>(const VisibilityVolume&, double altitude)>;
 
-// Section IV end to end with the given VV, metric and slice functions.
+// MaxRadius at a POI position for the locus check. Called from several threads.
+using MaxRadiusFunction = std::function<double(const Vec3& poi)>;
+
+// Section IV end to end with the given VV, metric and slice functions. The locus check (for
+// Locus::smooth) measures MaxRadius between the samples with check_max_radius (at the samples too,
+// keeping the smaller of it and the VP's), or without one through VVs from the same cache.
 VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
                                 VolumeCache& cache, const MetricFunction& metric, const SliceFunction& slice,
-                                const ProgressFunction& progress = {});
-// The plan on given samples (no refinement): VPs by `slice`, MaxRadius, Algorithm 1.
+                                const ProgressFunction& progress = {}, const MaxRadiusFunction& check_max_radius = {});
+// The plan on given samples (no refinement): VPs by `slice`, MaxRadius, Algorithm 1, and for
+// Locus::smooth the locus check and the smooth R(t). The check computes MaxRadius between the
+// samples with `volume_at` (VVs at POI positions, called from several threads); without it, only
+// the samples' MaxRadius and the slope rule of LocusCheck bound R(t) between them.
 VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Sensor& sensor,
-                                    const Planning& planning, Discretization samples, const SliceFunction& slice);
+                                    const Planning& planning, Discretization samples, const SliceFunction& slice,
+                                    const VolumeFunction& volume_at = {});
 // The plan on VVs computed elsewhere (saved VV files), placed at the given increasing arc lengths
 // of `poi`: the metric (56) in the POI frame between neighbours, VPs by the edge-walking slicer,
-// MaxRadius and Algorithm 1, with nothing inserted. The VVs must share d_max, band and grid.
+// MaxRadius and Algorithm 1, with nothing inserted (and no VV between them for the locus check).
+// The VVs must share d_max, band and grid.
 VisibilityOrbitPlan plan_on_volumes(const PoiPath& poi, const Uav& uav, const Planning& planning,
                                     const std::vector<double>& arc_lengths, const std::vector<VolumePtr>& volumes);
 
 // JSON round trips, the POI path stored as waypoints and speed ("vistrack.orbit_plan/1", and
 // "vistrack.visibility_orbit_plan/1" with samples, VPs and Algorithm 1's numbers but no VVs).
+// A smooth reference adds "reference" {times, radii, rates} (and a plan its "check"); files
+// without one are read as the piecewise-linear locus they were written with.
 std::string to_json(const OrbitPlan& plan);
 OrbitPlan orbit_plan_from_json(const std::string& text);
 std::string to_json(const VisibilityOrbitPlan& plan);

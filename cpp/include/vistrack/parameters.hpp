@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include "vistrack/geometry.hpp"
@@ -35,7 +36,19 @@ struct Sensor {
   void validate() const;
 };
 
-// Adaptive placement of visibility volumes (section IV.B).
+// Which reference R(t) the orbit planner builds.
+enum class Locus : std::uint8_t {
+  // Beyond the paper: R(t) checked against MaxRadius along the whole POI path (not only at the
+  // samples), kept tracking_margin inside it, and C1 with a bounded d2R/dt2 that the guidance
+  // feeds forward (the default).
+  smooth = 0,
+  // The paper's: Algorithm 1's radii at the samples, piecewise linear between them, no check.
+  paper = 1,
+};
+std::string to_string(Locus locus);                                        // "smooth" / "paper"
+Locus locus_from_string(const std::string& text, const std::string& field = "planning.locus");
+
+// Adaptive placement of visibility volumes (section IV.B) and the locus built on them (IV.C).
 struct Planning {
   double spacing = 20.0;         // initial spacing of VVs along the path, m
   double cutoff = 20e6;          // d_cutoff, m^3
@@ -49,6 +62,19 @@ struct Planning {
   // to min_spacing or max_depth) needs more VVs than this: about path length / min_spacing VVs,
   // ~4 MB each on a 1-degree grid (estimate_work in orbit.hpp). Raise it explicitly for long paths.
   std::size_t max_volumes = 20000;
+  Locus locus = Locus::smooth;
+  // Smooth locus only. R(t) stays this far inside MaxRadius, so that the flown path, which
+  // leaves the reference by the tracking error, stays in the visibility polygon too (m; the
+  // closed loop's largest radial error after capture on the examples: 0.12 m campus and
+  // paper_small, 0.9 m demo, 1.06 m paper_slow; bench/locus_table.py).
+  double tracking_margin = 1.0;
+  // The locus check computes MaxRadius every check_spacing m of POI travel (plus at the samples),
+  // then halves the intervals where R(t) touches the bound down to check_min_spacing (m).
+  double check_spacing = 10.0;
+  double check_min_spacing = 1.0;
+  // Share of the turn rate that Lemma 6 leaves free on the orbit, v / r_min - v (1 + v_g/v)^2 / R,
+  // that the feed-forward of d2R/dt2 may use; the rest stays for the feedback terms of (86).
+  double turn_share = 0.5;
   void validate() const;
 };
 
@@ -164,10 +190,14 @@ struct LoiterParameters {
 // The camera of section 2.2: a circular (conic) field of view, full angle fov_deg, on a one-axis
 // (roll) gimbal of +-max_gimbal_deg. altitude: height above the AOIs' ground plane. 61 m is the
 // height at which the paper's nadir footprint is 6,638 m^2 (pi (61 tan 37 deg)^2 = 6,637.9 m^2).
+// levelled: the gimbal angle is measured from the vertical, as the paper states (a gimbal that
+// also takes out the bank); false: a roll gimbal under the banked body, whose belly faces out of
+// every turn, so the axis tilts by gimbal - bank (see camera_tilt in loiter.hpp).
 struct LoiterCamera {
   double fov_deg = 74.0;
   double max_gimbal_deg = 25.0;
   double altitude = 61.0;
+  bool levelled = true;
   void validate() const;
 };
 

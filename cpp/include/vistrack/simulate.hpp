@@ -1,6 +1,7 @@
 // The closed loop of section VI: the Dubins vehicle (1) steered by (86) around the time-varying
 // orbit of an OrbitPlan, integrated by Dormand-Prince 5(4) and restarted at every instant where
-// R_dot or the POI velocity jumps; optional line-of-sight evaluation at every output sample.
+// R_dot (the paper's locus), R_ddot (the smooth one) or the POI velocity jumps; optional
+// line-of-sight evaluation at every output sample.
 #pragma once
 
 #include <cstdint>
@@ -39,18 +40,18 @@ struct SimulationResult {
   OdeStatistics statistics;
 };
 
-// Times where R_dot or g_dot may jump inside the plan's span: the plan samples and the POI's
-// path nodes, sorted and unique, from the first plan time to the end of the plan (or the path,
-// whichever comes first).
+// Times where R_dot, R_ddot or g_dot may jump inside the plan's span: the knots of the plan's
+// reference (its samples, for the paper's locus) and the POI's path nodes, sorted and unique, from
+// the first plan time to the end of the plan (or the path, whichever comes first).
 std::vector<double> segment_boundaries(const OrbitPlan& plan);
 
-// The orbit (g, g_dot, R, R_dot) on the segment starting at `segment_start`, evaluated at t.
+// The orbit (g, g_dot, R, R_dot, R_ddot) on the segment starting at `segment_start`, evaluated at t.
 OrbitState orbit_state(const OrbitPlan& plan, double segment_start, double t);
 
 // Simulates the closed loop from configuration x0 = (x, y, psi) at the plan's first time to its
 // end. options.rtol/atol/max_step drive the adaptive steps; fixed_step > 0 switches to fixed
 // steps of that size. Samples every options.output_step and at the end. Throws Error for
-// invalid inputs, including a plan segment whose |R_dot| exceeds v - v_g (Lemma 5). With a
+// invalid inputs, including a plan whose |R_dot| exceeds v - v_g somewhere (Lemma 5). With a
 // line_of_sight function, visibility at every sample with the UAV at z = uav.altitude.
 SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
                           const SimulationOptions& options = {}, const LineOfSight& line_of_sight = {},

@@ -133,6 +133,21 @@ std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, c
                                                  double d_max,
                                                  std::optional<std::pair<double, double>> altitude_band = std::nullopt,
                                                  double resolution_deg = Planning{}.resolution_deg);
+// Where one VV's time and rays go (for benchmarks): seconds per phase and ray counts.
+struct VolumeCost {
+  double bounds_s = 0.0;  // per-column bounds of the rays that can hit an obstacle
+  double trace_s = 0.0;   // cell and corner rays
+  double refine_s = 0.0;  // locating the jumps of r (more rays) and refining the mesh there
+  double mesh_s = 0.0;    // writing the mesh
+  double volume_s = 0.0;  // summing its volume
+  std::size_t rays_traced = 0;   // cell and corner rays handed to Embree
+  std::size_t rays_skipped = 0;  // cell and corner rays decided by the bounds alone
+  std::size_t refine_rays = 0;   // rays traced while refining
+};
+// visibility_volume, filling `cost`; parallel = false computes it on the calling thread only.
+VisibilityVolume visibility_volume_with_cost(const VisibilityScene& scene, const Vec3& g, double d_max,
+                                             std::optional<std::pair<double, double>> altitude_band,
+                                             double resolution_deg, VolumeCost& cost, bool parallel = true);
 // Line of sight for segment pairs, building a scene for this call.
 std::vector<bool> line_of_sight(const Environment& env, const Points3& a, const Points3& b);
 

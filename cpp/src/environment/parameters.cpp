@@ -35,6 +35,24 @@ void Planning::validate() const {
   if (!(rate_margin >= 0.0 && rate_margin < 1.0))
     detail::fail_field("planning.rate_margin", rate_margin, "must be in [0, 1) (a fraction of v - v_g)");
   if (max_volumes < 1) detail::fail_field("planning.max_volumes", max_volumes, "must be at least 1");
+  if (locus != Locus::smooth && locus != Locus::paper)
+    detail::fail_field("planning.locus", static_cast<int>(locus), "must be \"smooth\" or \"paper\"");
+  require_in_range(tracking_margin, 0.0, limits::kMaxLength, "m", "planning.tracking_margin");
+  require_length(check_spacing, "planning.check_spacing");
+  require_length(check_min_spacing, "planning.check_min_spacing");
+  if (!(check_min_spacing <= check_spacing))
+    detail::fail_field("planning.check_min_spacing", check_min_spacing,
+                       "must not exceed planning.check_spacing = " + detail::to_text(check_spacing));
+  if (!(turn_share > 0.0 && turn_share < 1.0))
+    detail::fail_field("planning.turn_share", turn_share, "must be in (0, 1) (a share of the free turn rate)");
+}
+
+std::string to_string(Locus locus) { return locus == Locus::paper ? "paper" : "smooth"; }
+
+Locus locus_from_string(const std::string& text, const std::string& field) {
+  if (text == "smooth") return Locus::smooth;
+  if (text == "paper") return Locus::paper;
+  detail::fail_field(field, "\"" + text + "\"", "must be \"smooth\" or \"paper\"");
 }
 
 void Control::validate() const {

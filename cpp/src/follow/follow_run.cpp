@@ -7,6 +7,7 @@
 #include "vistrack/error.hpp"
 #include "vistrack/flight.hpp"
 #include "vistrack/follow.hpp"
+#include "run_samples.hpp"
 
 namespace vistrack {
 
@@ -128,14 +129,7 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
 
   // Per sample: the vehicle, the offset point and the desired position of the current update.
   const std::size_t n = trajectory.size();
-  run.t = trajectory.t;
-  run.state.resize(static_cast<Eigen::Index>(n), 3);
-  run.vehicle.resize(static_cast<Eigen::Index>(n), 2);
-  run.offset_point.resize(static_cast<Eigen::Index>(n), 2);
-  run.desired.resize(static_cast<Eigen::Index>(n), 2);
-  run.target.resize(static_cast<Eigen::Index>(n), 2);
-  run.wind.resize(static_cast<Eigen::Index>(n), 2);
-  run.turn_rate = trajectory.command;
+  detail::size_run_samples(run, trajectory);
   run.mode.resize(n);
   run.capturing.resize(n);
   std::size_t k = 0;

@@ -4,6 +4,7 @@
 
 #include "vistrack/error.hpp"
 #include "vistrack/follow.hpp"
+#include "run_samples.hpp"
 
 namespace vistrack {
 
@@ -61,14 +62,7 @@ FollowRun orbit_follow(const GroundVehicle& vehicle, const Uav& uav, const Contr
 
   FollowRun run;
   const std::size_t n = trajectory.size();
-  run.t = trajectory.t;
-  run.turn_rate = trajectory.command;
-  run.state.resize(static_cast<Eigen::Index>(n), 3);
-  run.vehicle.resize(static_cast<Eigen::Index>(n), 2);
-  run.offset_point.resize(static_cast<Eigen::Index>(n), 2);
-  run.desired.resize(static_cast<Eigen::Index>(n), 2);
-  run.target.resize(static_cast<Eigen::Index>(n), 2);
-  run.wind.resize(static_cast<Eigen::Index>(n), 2);
+  detail::size_run_samples(run, trajectory);
   run.mode.assign(n, static_cast<std::uint8_t>(FollowMode::Loiter));
   for (std::size_t i = 0; i < n; ++i) {
     const auto r = static_cast<Eigen::Index>(i);

@@ -37,6 +37,8 @@ void OrbitState::validate() const {
                      "orbit.center_velocity[" + std::to_string(k) + "]");
   require_length(radius, "orbit.radius");
   require_in_range(radius_rate, -limits::kMaxSpeed, limits::kMaxSpeed, "m/s", "orbit.radius_rate");
+  // 1e4 m/s^2 (about 1,000 g) is far beyond any airframe; the bound keeps (79)/(85) finite.
+  require_in_range(radius_acceleration, -1e4, 1e4, "m/s^2", "orbit.radius_acceleration");
 }
 
 GuidanceGains GuidanceGains::from(const Uav& uav, const Control& control) {
@@ -97,16 +99,22 @@ VectorField vector_field(const Vec2& xi, const OrbitState& orbit, const Guidance
   f.u = f.u_r * f.e_r + f.u_theta * f.e_theta;    // (75)
   f.heading = std::atan2(f.u.y(), f.u.x());       // (77)
 
-  // (83): dPhi'/dt along the field, using r_dot - R_dot = -Phi' (82).
-  f.attraction_rate = -(4.0 / (kPi * kPi)) * atan_bt * beta * margin * margin / (1.0 + bt * bt);
+  // (80) with (82), r_dot - R_dot = -Phi', gives (83). The paper takes R_dot constant (R_ddot = 0,
+  // Definition 2); on the smooth locus the gain v - v_g - |R_dot| of (68) changes too, by
+  // -sgn(R_dot) R_ddot (while it is not clamped at 0).
+  const double r_ddot = orbit.radius_acceleration;
+  const double gain_rate = v - poi_speed - std::abs(r_dot) > 0.0 ? -(r_dot > 0.0 ? 1.0 : r_dot < 0.0 ? -1.0 : 0.0) * r_ddot : 0.0;
+  f.attraction_rate = gain_rate * kTwoOverPi * atan_bt -
+                      (4.0 / (kPi * kPi)) * atan_bt * beta * margin * margin / (1.0 + bt * bt);
   // (84): theta_dot = (u_theta - g_dot . e_theta) / r; r = 0 is the singularity of Remark 6.
   const double r_safe = std::max(f.r, kCentreTolerance * std::max(1.0, orbit.radius));
   f.polar_rate = (f.u_theta - g_theta) / r_safe;
-  // (85): dpsi_d/dt = (dPhi'/dt + r theta_dot^2) / u_theta. u_theta vanishes only when the field
-  // is purely radial (margin = 0 at the worst angle); keep the result finite and signed there.
+  // (79) gains + R_ddot: d(u . e_r)/dt = -dPhi'/dt + R_ddot + theta_dot g_dot . e_theta, so (78) gives
+  // (85) as dpsi_d/dt = (dPhi'/dt - R_ddot + r theta_dot^2) / u_theta. u_theta vanishes only when the
+  // field is purely radial (margin = 0 at the worst angle); keep the result finite and signed there.
   double u_theta_safe = f.u_theta;
   if (std::abs(u_theta_safe) < 1e-12 * v) u_theta_safe = sign(gains.direction) * 1e-12 * v;
-  f.heading_rate = (f.attraction_rate + r_safe * f.polar_rate * f.polar_rate) / u_theta_safe;
+  f.heading_rate = (f.attraction_rate - r_ddot + r_safe * f.polar_rate * f.polar_rate) / u_theta_safe;
   return f;
 }
 
@@ -165,9 +173,13 @@ double steering_command(const Vec3& q, double cos_psi, double sin_psi, const Orb
   const double theta_dot = (u_theta - g_theta) / r_safe;                                // (84)
   double u_theta_safe = u_theta;
   if (std::abs(u_theta_safe) < 1e-12 * v) u_theta_safe = sign(gains.direction) * 1e-12 * v;
-  const double heading_rate =
-      (-(4.0 / (kPi * kPi)) * atan_bt * beta * margin * margin * shape + r_safe * theta_dot * theta_dot) /
-      u_theta_safe;                                                                       // (83), (85)
+  const double r_ddot = orbit.radius_acceleration;
+  const double gain_rate =
+      v - orbit.center_velocity.norm() - std::abs(r_dot) > 0.0 ? -(r_dot > 0.0 ? 1.0 : r_dot < 0.0 ? -1.0 : 0.0) * r_ddot : 0.0;
+  const double heading_rate = (gain_rate * kTwoOverPi * atan_bt -
+                               (4.0 / (kPi * kPi)) * atan_bt * beta * margin * margin * shape - r_ddot +
+                               r_safe * theta_dot * theta_dot) /
+                              u_theta_safe;                                               // (83), (85) with R_ddot
   // psi~ = q_psi - psi_d from the heading h and the unit field u / |u|: cos = h.u, sin = u x h.
   const Vec2 u = u_r * e_r + u_theta * e_theta;
   const double norm_u = u.norm();
@@ -221,10 +233,12 @@ double orbit_polar_rate(double theta, const OrbitState& orbit, double speed, Cir
 
 double orbit_signed_curvature(double theta, const OrbitState& orbit, double speed, Circulation direction) {
   // (31) with the sign of the circulation. Re-derived from Lemma 2: a = g_dot . e_r + R_dot,
-  // b = +-sqrt(v^2 - a^2), a_dot = theta_dot g_dot . e_theta, so kappa_s = R theta_dot^2 / (v b).
-  // (The printed (45) has g_dot . e_theta inside the root; (13) and (31) have g_dot . e_r.)
+  // b = +-sqrt(v^2 - a^2), a_dot = theta_dot g_dot . e_theta + R_ddot ((34) without Definition 2's
+  // R_ddot = 0), so kappa_s = (-a_dot / b + theta_dot) / v = (R theta_dot^2 - R_ddot) / (v b), using
+  // b = g_dot . e_theta + R theta_dot. (The printed (45) has g_dot . e_theta inside the root; (13) and
+  // (31) have g_dot . e_r.)
   const double theta_dot = orbit_polar_rate(theta, orbit, speed, direction);
-  return sign(direction) * orbit.radius * theta_dot * theta_dot /
+  return sign(direction) * (orbit.radius * theta_dot * theta_dot - orbit.radius_acceleration) /
          (speed * tangential_speed(theta, orbit, speed));
 }
 

@@ -1,9 +1,10 @@
 // Camera footprint and coverage (sections 2.2 and 4.1).
 //
 // Camera model: a circular field of view of full angle fov (74 deg), i.e. a cone of half-angle
-// beta = 37 deg, fixed to the body on a roll gimbal (+-25 deg); the body banks by
-// atan(v psi_dot / g) in a coordinated turn (pitch and sideslip neglected). Its axis is tilted by
-// tilt = bank + gimbal to the left of vertical, in the plane across the track; the ground footprint
+// beta = 37 deg, on a roll gimbal (+-25 deg). Levelled (the paper: the gimbal angle is "measured
+// from the vertical"), its axis is tilted by the gimbal angle; on the body, which banks by
+// atan(v psi_dot / g) in a coordinated turn (pitch and sideslip neglected), by gimbal - bank, to the
+// left of vertical, in the plane across the track (camera_tilt); the ground footprint
 // is the cone's plane section, an ellipse (see camera_footprint). At 61 m and nadir it is a disk of
 // radius 61 tan 37 deg = 45.97 m, area 6,637.9 m^2: the paper's 6,638 m^2.
 #include <tbb/blocked_range.h>
@@ -27,11 +28,12 @@ constexpr double kDegree = kPi / 180.0;
 // The fraction of one AOI the camera sees at each gimbal angle, at one pose.
 class AoiView {
  public:
-  AoiView(const LoiterCamera& camera, const Configuration& pose, double bank, const Vec2& center, double radius)
-      : camera_(camera), pose_(pose), bank_(bank), center_(center), radius_(radius) {}
+  // body_tilt: the axis' tilt at gimbal angle 0 (minus the bank on the body, 0 levelled).
+  AoiView(const LoiterCamera& camera, const Configuration& pose, double body_tilt, const Vec2& center, double radius)
+      : camera_(camera), pose_(pose), body_tilt_(body_tilt), center_(center), radius_(radius) {}
 
   double fraction(double gimbal) const {
-    return footprint_disk_area(camera_footprint(camera_, pose_, bank_ + gimbal), center_, radius_) /
+    return footprint_disk_area(camera_footprint(camera_, pose_, body_tilt_ + gimbal), center_, radius_) /
            (kPi * radius_ * radius_);
   }
 
@@ -44,7 +46,7 @@ class AoiView {
     const Vec2 forward = detail::unit_at(pose_.psi);
     const double along = offset.dot(forward), across = offset.dot(detail::left_of(forward));
     const double h = camera_.altitude;
-    const double tilt = std::clamp(std::atan2(across, h), bank_ - limit, bank_ + limit);
+    const double tilt = std::clamp(std::atan2(across, h), body_tilt_ - limit, body_tilt_ + limit);
     const double cosine = (across * std::sin(tilt) + h * std::cos(tilt)) / std::sqrt(along * along + across * across + h * h);
     return cosine >= std::cos(0.5 * camera_.fov_deg * kDegree) * (1.0 - 1e-12);
   }
@@ -55,7 +57,7 @@ class AoiView {
   std::pair<double, double> best(double limit) const {
     const Vec2 offset = center_ - Vec2(pose_.x, pose_.y);
     const double across = offset.dot(detail::left_of(detail::unit_at(pose_.psi)));
-    const double aim = std::clamp(std::atan2(across, camera_.altitude) - bank_, -limit, limit);
+    const double aim = std::clamp(std::atan2(across, camera_.altitude) - body_tilt_, -limit, limit);
     constexpr int kScan = 4;
     double best_gimbal = aim, best_fraction = fraction(aim);
     for (int k = 0; k <= kScan && limit > 0.0 && best_fraction < 1.0; ++k) {
@@ -79,7 +81,7 @@ class AoiView {
  private:
   const LoiterCamera& camera_;
   Configuration pose_;
-  double bank_;
+  double body_tilt_;
   Vec2 center_;
   double radius_;
 };
@@ -175,6 +177,10 @@ double Footprint::area() const { return kPi * semi_along * semi_across; }
 
 double bank_angle(double speed, double turn_rate, double gravity) { return std::atan(speed * turn_rate / gravity); }
 
+double camera_tilt(const LoiterCamera& camera, double bank, double gimbal) {
+  return camera.levelled ? gimbal : gimbal - bank;
+}
+
 // The cone of half-angle beta about the axis (0, sin tilt, -cos tilt) (across-track s to the left,
 // along-track a, the camera at height h) meets the ground where
 //   (s sin tilt + h cos tilt)^2 >= cos^2 beta (a^2 + s^2 + h^2)
@@ -225,7 +231,7 @@ LoiterCoverage loiter_coverage(const Points3& poses, const std::vector<double>& 
       require_finite(poses(row, c), "poses[" + std::to_string(k) + "][" + std::to_string(c) + "]");
     require_finite(turn_rates[k], "turn_rates[" + std::to_string(k) + "]");
     const double bank = bank_angle(speed, turn_rates[k], options.gravity);
-    if (std::abs(bank) + limit + beta >= 0.5 * kPi * (1.0 - 1e-9))
+    if (std::abs(camera_tilt(camera, bank, 0.0)) + limit + beta >= 0.5 * kPi * (1.0 - 1e-9))
       detail::fail_field("turn_rates[" + std::to_string(k) + "]", turn_rates[k],
                          "banks the aircraft by " + detail::to_text(bank / kDegree) +
                              " deg: with the gimbal and half the field of view the camera would see the horizon");
@@ -239,6 +245,7 @@ LoiterCoverage loiter_coverage(const Points3& poses, const std::vector<double>& 
   out.pointed.assign(n, -1);
   out.gimbal.assign(n, 0.0);
   out.bank.assign(n, 0.0);
+  out.tilt.assign(n, 0.0);
   const double h = camera.altitude;
 
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16), [&](const tbb::blocked_range<std::size_t>& range) {
@@ -247,10 +254,11 @@ LoiterCoverage loiter_coverage(const Points3& poses, const std::vector<double>& 
       const Configuration pose{poses(row, 0), poses(row, 1), poses(row, 2)};
       const double bank = bank_angle(speed, turn_rates[k], options.gravity);
       out.bank[k] = bank;
+      const double body_tilt = camera_tilt(camera, bank, 0.0);
       // With no AOI in reach the gimbal levels the camera as far as it can.
-      out.gimbal[k] = std::clamp(-bank, -limit, limit);
+      out.gimbal[k] = std::clamp(-body_tilt, -limit, limit);
       // The footprint never reaches farther from the nadir point than the far edge of the cone.
-      const double reach = h * std::tan(std::abs(bank) + limit + beta);
+      const double reach = h * std::tan(std::abs(body_tilt) + limit + beta);
       // Candidates: AOIs that could reach the threshold. Above 1/2 that needs the centre in view.
       const auto in_reach = [&](std::size_t i) {
         return (aois[i] - Vec2(pose.x, pose.y)).norm() - aoi_radius < reach;
@@ -259,7 +267,7 @@ LoiterCoverage loiter_coverage(const Points3& poses, const std::vector<double>& 
       std::vector<Candidate> candidates;
       for (std::size_t i = 0; i < m; ++i) {
         if (!in_reach(i)) continue;
-        AoiView view(camera, pose, bank, aois[i], aoi_radius);
+        AoiView view(camera, pose, body_tilt, aois[i], aoi_radius);
         if (options.threshold > 0.5 && !view.centre_can_be_seen(limit)) continue;
         const auto [gimbal, fraction] = view.best(limit);
         if (!(fraction > 0.0)) continue;
@@ -267,12 +275,13 @@ LoiterCoverage loiter_coverage(const Points3& poses, const std::vector<double>& 
         candidates.push_back({i, gimbal, fraction});
       }
       if (!candidates.empty()) out.gimbal[k] = choose_gimbal(views, candidates, options.threshold, limit);
+      out.tilt[k] = body_tilt + out.gimbal[k];
       // Every AOI in reach, seen with that pointing (levelled when no AOI is a candidate); the
       // pointed AOI is the one most in view.
       double most = 0.0;
       for (std::size_t i = 0; i < m; ++i) {
         if (!in_reach(i)) continue;
-        const double f = AoiView(camera, pose, bank, aois[i], aoi_radius).fraction(out.gimbal[k]);
+        const double f = AoiView(camera, pose, body_tilt, aois[i], aoi_radius).fraction(out.gimbal[k]);
         out.fraction[k * m + i] = f;
         if (!candidates.empty() && f > most) {
           most = f;

@@ -19,6 +19,8 @@ std::string to_json(const OrbitPlan& plan) {
   out["radii"] = plan.radii;
   out["feasible"] = plan.feasible;
   out["infeasibility"] = plan.infeasibility;
+  if (!plan.reference.times.empty())  // absent: piecewise linear through (times, radii)
+    out["reference"] = {{"times", plan.reference.times}, {"radii", plan.reference.radii}, {"rates", plan.reference.rates}};
   return out.dump(1);
 }
 
@@ -40,7 +42,15 @@ OrbitPlan orbit_plan_from_json(const std::string& text) {
                    in.at("times").get<std::vector<double>>(),
                    in.at("radii").get<std::vector<double>>(),
                    in.value("feasible", true),
-                   in.value("infeasibility", std::string())};
+                   in.value("infeasibility", std::string()),
+                   {}};
+    if (in.contains("reference")) {
+      const auto& r = in["reference"];
+      plan.reference.times = r.at("times").get<std::vector<double>>();
+      plan.reference.radii = r.at("radii").get<std::vector<double>>();
+      plan.reference.rates = r.value("rates", std::vector<double>{});
+      plan.reference.validate();
+    }
     if (plan.times.size() != plan.radii.size() || plan.times.empty())
       detail::fail_field("radii", plan.radii.size(),
                          "must have one entry per time (" + std::to_string(plan.times.size()) + ")");
@@ -95,7 +105,12 @@ std::string to_json(const VisibilityOrbitPlan& plan) {
     out["sensor"]["altitude_band"] = {plan.sensor.altitude_band->first, plan.sensor.altitude_band->second};
   out["planning"] = {{"spacing", plan.planning.spacing},         {"cutoff", plan.planning.cutoff},
                      {"resolution_deg", plan.planning.resolution_deg}, {"min_spacing", plan.planning.min_spacing},
-                     {"max_depth", plan.planning.max_depth}, {"rate_margin", plan.planning.rate_margin}};
+                     {"max_depth", plan.planning.max_depth}, {"rate_margin", plan.planning.rate_margin},
+                     {"locus", to_string(plan.planning.locus)}, {"tracking_margin", plan.planning.tracking_margin},
+                     {"check_spacing", plan.planning.check_spacing},
+                     {"check_min_spacing", plan.planning.check_min_spacing}, {"turn_share", plan.planning.turn_share},
+                     {"max_volumes", plan.planning.max_volumes}};
+  out["orbit_radii"] = plan.orbits.radii;  // Algorithm 1's, at the samples (radii: the reference there)
   const Discretization& samples = plan.samples;
   nlohmann::json centers = nlohmann::json::array();
   for (Eigen::Index k = 0; k < samples.points.rows(); ++k) centers.push_back({samples.points(k, 0), samples.points(k, 1)});
@@ -121,6 +136,22 @@ std::string to_json(const VisibilityOrbitPlan& plan) {
   out["polygons"] = polygons;
   out["vv_volumes"] = nlohmann::json::array();
   for (const VolumePtr& v : samples.volumes) out["vv_volumes"].push_back(v ? v->volume : 0.0);
+  if (plan.planning.locus == Locus::smooth) {
+    const LocusCheck& c = plan.check;
+    out["check"] = {{"arc_lengths", c.arc_lengths},
+                    {"max_radii", c.max_radii},
+                    {"ceiling_starts", c.ceiling.starts},
+                    {"ceiling_ends", c.ceiling.ends},
+                    {"slope_bounds", c.slope_bounds},
+                    {"volumes_computed", c.volumes_computed},
+                    {"rounds", c.rounds},
+                    {"paper_violations", c.paper_violations},
+                    {"paper_max_violation", c.paper_max_violation},
+                    {"lowering", c.lowering},
+                    {"max_lowering", c.max_lowering},
+                    {"max_lowering_time", c.max_lowering_time},
+                    {"min_clearance", c.min_clearance}};
+  }
   return out.dump(1);
 }
 
@@ -150,6 +181,12 @@ VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
       plan.planning.max_depth = p.at("max_depth").get<int>();
       plan.planning.rate_margin = p.value("rate_margin", 0.0);  // absent in files before it existed
       plan.planning.max_volumes = p.value("max_volumes", Planning{}.max_volumes);
+      // Files before the smooth locus hold the paper's piecewise-linear one.
+      plan.planning.locus = locus_from_string(p.value("locus", std::string("paper")), "planning.locus");
+      plan.planning.tracking_margin = p.value("tracking_margin", Planning{}.tracking_margin);
+      plan.planning.check_spacing = p.value("check_spacing", Planning{}.check_spacing);
+      plan.planning.check_min_spacing = p.value("check_min_spacing", Planning{}.check_min_spacing);
+      plan.planning.turn_share = p.value("turn_share", Planning{}.turn_share);
       plan.planning.validate();
     }
     Discretization& samples = plan.samples;
@@ -163,12 +200,37 @@ VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
     for (std::size_t k = 0; k < n; ++k)
       samples.points.row(static_cast<Eigen::Index>(k)) = plan.poi.position(plan.times[k]).transpose();
     plan.max_radii = in.value("max_radii", std::vector<double>{});
-    plan.orbits.radii = plan.radii;
+    plan.orbits.radii = in.value("orbit_radii", plan.radii);
+    if (plan.orbits.radii.size() != n)
+      detail::fail_field("orbit_radii", plan.orbits.radii.size(), "must have one entry per time (" + std::to_string(n) + ")");
     plan.orbits.feasible = plan.feasible;
     plan.orbits.infeasibility = plan.infeasibility;
     // dR/dt is derived from the samples, never trusted from the file.
     for (std::size_t k = 0; k + 1 < n; ++k)
-      plan.orbits.radius_rates.push_back((plan.radii[k + 1] - plan.radii[k]) / (plan.times[k + 1] - plan.times[k]));
+      plan.orbits.radius_rates.push_back((plan.orbits.radii[k + 1] - plan.orbits.radii[k]) /
+                                         (plan.times[k + 1] - plan.times[k]));
+    if (in.contains("check")) {
+      const auto& c = in["check"];
+      LocusCheck& check = plan.check;
+      check.arc_lengths = c.at("arc_lengths").get<std::vector<double>>();
+      for (double s : check.arc_lengths) check.times.push_back(s / plan.poi.speed());
+      check.max_radii = c.at("max_radii").get<std::vector<double>>();
+      check.ceiling.breaks = check.times;
+      check.ceiling.starts = c.at("ceiling_starts").get<std::vector<double>>();
+      check.ceiling.ends = c.at("ceiling_ends").get<std::vector<double>>();
+      if (!check.times.empty()) check.ceiling.validate();
+      check.slope_bounds = c.value("slope_bounds", std::vector<double>{});
+      check.volumes_computed = c.value("volumes_computed", std::size_t{0});
+      check.rounds = c.value("rounds", 0);
+      check.paper_violations = c.value("paper_violations", std::size_t{0});
+      check.paper_max_violation = c.value("paper_max_violation", 0.0);
+      check.lowering = c.value("lowering", std::vector<double>{});
+      check.max_lowering = c.value("max_lowering", 0.0);
+      check.max_lowering_time = c.value("max_lowering_time", 0.0);
+      check.min_clearance = c.value("min_clearance", 0.0);
+      if (check.max_radii.size() != check.arc_lengths.size())
+        detail::fail_field("check.max_radii", check.max_radii.size(), "must have one entry per check arc length");
+    }
     plan.orbits.min_feasible_radius = in.value("min_feasible_radius", 0.0);
     plan.orbits.failing_samples = in.value("failing_samples", std::vector<std::size_t>{});
     if (in.contains("polygons")) {

@@ -1,23 +1,27 @@
 // The orbit plan of section IV from VV samples: VPs at h_UAV, MaxRadius, Algorithm 1.
 #include <tbb/parallel_for.h>
 
+#include "locus.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/orbit.hpp"
 
 namespace vistrack {
+namespace {
 
-VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
-                                VolumeCache& cache, const MetricFunction& metric, const SliceFunction& slice,
-                                const ProgressFunction& progress) {
-  if (!(uav.speed > poi.speed()))
-    detail::fail_field("uav.speed", uav.speed,
-                       "must exceed the POI speed " + detail::to_text(poi.speed()) + " to orbit it (Lemma 5)");
-  return plan_on_samples(poi, uav, sensor, planning, adaptive_discretization(poi, planning, cache, metric, progress),
-                         slice);
+// The locus check's MaxRadius from VVs: the VP of each VV at h_UAV, as at the samples.
+detail::CheckProbe volume_probe(std::function<VolumePtr(const Vec3&, bool&)> volume_at, const SliceFunction& slice,
+                                double altitude) {
+  detail::CheckProbe probe;
+  probe.max_radius = [volume_at = std::move(volume_at), slice, altitude](const Vec3& g, bool& computed) {
+    const VolumePtr volume = volume_at(g, computed);
+    return max_inscribed_radius(slice(*volume, altitude), g.head<2>());
+  };
+  return probe;
 }
 
-VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Sensor& sensor,
-                                    const Planning& planning, Discretization samples, const SliceFunction& slice) {
+VisibilityOrbitPlan plan_with_check(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
+                                    Discretization samples, const SliceFunction& slice,
+                                    const detail::CheckProbe& probe) {
   uav.validate();
   sensor.validate();
   planning.validate();
@@ -25,7 +29,7 @@ VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Se
   const std::size_t n = samples.times.size();
   if (n == 0 || samples.volumes.size() != n) detail::fail_field("samples", n, "need one VV per sample, at least one");
 
-  VisibilityOrbitPlan plan(OrbitPlan{poi, {}, {}, true, {}});
+  VisibilityOrbitPlan plan(OrbitPlan{poi, {}, {}, true, {}, {}});
   plan.uav = uav;
   plan.sensor = sensor;
   plan.planning = planning;
@@ -44,7 +48,43 @@ VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Se
   plan.radii = plan.orbits.radii;
   plan.feasible = plan.orbits.feasible;
   plan.infeasibility = plan.orbits.infeasibility;
+  // Beyond the paper: the locus check between the samples and the smooth R(t).
+  if (planning.locus == Locus::smooth) detail::smooth_locus(plan, probe);
   return plan;
+}
+
+}  // namespace
+
+VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
+                                VolumeCache& cache, const MetricFunction& metric, const SliceFunction& slice,
+                                const ProgressFunction& progress, const MaxRadiusFunction& check_max_radius) {
+  if (!(uav.speed > poi.speed()))
+    detail::fail_field("uav.speed", uav.speed,
+                       "must exceed the POI speed " + detail::to_text(poi.speed()) + " to orbit it (Lemma 5)");
+  detail::CheckProbe probe;
+  if (check_max_radius) {
+    probe.max_radius = [check_max_radius](const Vec3& g, bool&) { return check_max_radius(g); };
+    probe.at_samples = true;
+  } else {
+    probe = volume_probe([&cache](const Vec3& g, bool& computed) { return cache.at(g, &computed); }, slice,
+                         uav.altitude);
+  }
+  return plan_with_check(poi, uav, sensor, planning, adaptive_discretization(poi, planning, cache, metric, progress),
+                         slice, probe);
+}
+
+VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Sensor& sensor,
+                                    const Planning& planning, Discretization samples, const SliceFunction& slice,
+                                    const VolumeFunction& volume_at) {
+  detail::CheckProbe probe;
+  if (volume_at)
+    probe = volume_probe(
+        [volume_at](const Vec3& g, bool& computed) {
+          computed = true;
+          return volume_at(g);
+        },
+        slice, uav.altitude);
+  return plan_with_check(poi, uav, sensor, planning, std::move(samples), slice, probe);
 }
 
 VisibilityOrbitPlan plan_on_volumes(const PoiPath& poi, const Uav& uav, const Planning& planning,

@@ -34,6 +34,18 @@ void validate_plan(const OrbitPlan& plan, const Uav& uav) {
                        "must exceed the POI speed " + detail::to_text(poi_speed) + " to orbit it");
   // Lemma 5: |R_dot| <= v - v_g on every segment, or no constant-speed vehicle can follow it.
   const double limit = uav.speed - poi_speed;
+  const RadiusProfile profile = plan.profile();
+  if (profile.smooth()) {
+    profile.validate();
+    if (!(profile.min_radius() > 0.0))
+      detail::fail_field("plan.reference.radii", profile.min_radius(), "the smooth R(t) must stay positive");
+    // dR/dt is linear between knots: its largest magnitude is at a knot.
+    for (std::size_t k = 0; k < profile.times.size(); ++k)
+      if (std::abs(profile.rates[k]) > limit * (1.0 + 1e-9) + 1e-12)
+        detail::fail_field("plan.reference.rates[" + std::to_string(k) + "]", profile.rates[k],
+                           "exceeds v - v_g = " + detail::to_text(limit) + " (Lemma 5)");
+    return;
+  }
   for (std::size_t k = 0; k + 1 < plan.times.size(); ++k) {
     const double rate = (plan.radii[k + 1] - plan.radii[k]) / (plan.times[k + 1] - plan.times[k]);
     if (std::abs(rate) > limit * (1.0 + 1e-9) + 1e-12)
@@ -94,18 +106,22 @@ SimulationResult closed_loop(const OrbitPlan& plan, const Uav& uav, const Vec3& 
   for (std::size_t i = 0; i + 1 < boundaries.size(); ++i) {
     const double a = boundaries[i];
     const double b = boundaries[i + 1];
-    // Constant over the segment: POI velocity, R_dot; g and R linear from their values at a.
+    // Constant over the segment: POI velocity and d2R/dt2 (0 on the paper's locus); g linear and
+    // R quadratic from their values at a.
     const Vec2 g_a = plan.poi.position(a).head<2>();
     const Vec2 g_dot = plan.poi.velocity(a);
     const double radius_a = plan.radius(a);
     const double radius_rate = plan.radius_rate(a);
+    const double radius_acceleration = plan.radius_acceleration(a);
     const double v = uav.speed;
     auto rhs = [&](double t, const Vec3& q, Vec3& dq) {
       OrbitState orbit;
-      orbit.center = g_a + g_dot * (t - a);
+      const double dt = t - a;
+      orbit.center = g_a + g_dot * dt;
       orbit.center_velocity = g_dot;
-      orbit.radius = radius_a + radius_rate * (t - a);
-      orbit.radius_rate = radius_rate;
+      orbit.radius = radius_a + (radius_rate + 0.5 * radius_acceleration * dt) * dt;
+      orbit.radius_rate = radius_rate + radius_acceleration * dt;
+      orbit.radius_acceleration = radius_acceleration;
       const double c = std::cos(q[2]);
       const double s = std::sin(q[2]);
       dq[0] = v * c;  // (1)
@@ -161,7 +177,7 @@ std::vector<double> segment_boundaries(const OrbitPlan& plan) {
   const double t0 = plan.times.front();
   const double t1 = plan_end(plan);
   std::vector<double> times{t0, t1};
-  for (double t : plan.times)
+  for (double t : plan.knot_times())
     if (t > t0 && t < t1) times.push_back(t);
   for (double t : plan.poi.node_times())
     if (t > t0 && t < t1) times.push_back(t);
@@ -176,14 +192,17 @@ std::vector<double> segment_boundaries(const OrbitPlan& plan) {
 }
 
 OrbitState orbit_state(const OrbitPlan& plan, double segment_start, double t) {
-  // Within a segment g and R are exactly linear (Definitions 1 and 2), so they are evaluated
-  // from the segment start with the segment's rates: no clamping or switching inside a step.
+  // Within a segment g is exactly linear (Definition 1) and R linear (Definition 2) or quadratic
+  // (the smooth locus), so they are evaluated from the segment start with the segment's rates: no
+  // clamping or switching inside a step.
   const Vec2 g0 = plan.poi.position(segment_start).head<2>();
+  const double s = t - segment_start;
   OrbitState orbit;
   orbit.center_velocity = plan.poi.velocity(segment_start);
-  orbit.radius_rate = plan.radius_rate(segment_start);
-  orbit.center = g0 + orbit.center_velocity * (t - segment_start);
-  orbit.radius = plan.radius(segment_start) + orbit.radius_rate * (t - segment_start);
+  orbit.center = g0 + orbit.center_velocity * s;
+  orbit.radius_acceleration = plan.radius_acceleration(segment_start);
+  orbit.radius_rate = plan.radius_rate(segment_start) + orbit.radius_acceleration * s;
+  orbit.radius = plan.radius(segment_start) + (plan.radius_rate(segment_start) + 0.5 * orbit.radius_acceleration * s) * s;
   return orbit;
 }
 

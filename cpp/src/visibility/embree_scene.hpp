@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "visibility/clearance.hpp"
 #include "vistrack/visibility.hpp"
 
 namespace vistrack::detail {
@@ -15,12 +16,17 @@ struct EmbreeScene {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
   unsigned ground_geometry = RTC_INVALID_GEOMETRY_ID;
+  unsigned obstacle_geometry = RTC_INVALID_GEOMETRY_ID;
+  // Obstacle triangles lying in the ground plane (a map's ground sheet, building floors): a hit on
+  // one is a ground hit.
+  std::vector<std::uint8_t> on_ground;
   Vec3 origin = Vec3::Zero();  // Embree vertices are floats relative to this point
   double ground_level = 0.0;
   Bounds3 bounds{};
   std::size_t num_triangles = 0;
   std::uint64_t fingerprint = 0;
   std::vector<Building> buildings;  // exact inside test for 2.5D cities
+  ObstacleIndex obstacles;          // the obstacle triangles relative to `origin`, for Clearance
 
   explicit EmbreeScene(const Environment& env);
   ~EmbreeScene();
@@ -28,7 +34,8 @@ struct EmbreeScene {
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
   // First hits of n rays from `origin` (world) along unit directions dirs[3k..3k+2] within
-  // [t_near, t_far] metres: t_hit[k] (+inf when none) and the hit geometry (ground or obstacle).
+  // [t_near, t_far] metres: t_hit[k] (+inf when none) and the hit geometry (ground, including
+  // obstacle triangles in the ground plane, or obstacle).
   // Traced in coherent batches of 64 with rtcIntersect1M on the calling thread.
   // With t_far_each, ray k ends at t_far_each[k] instead of t_far.
   void trace(const Vec3& origin, const float* dirs, std::size_t n, float t_near, float t_far,

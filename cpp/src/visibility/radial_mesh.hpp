@@ -6,7 +6,6 @@
 #include <array>
 #include <cstdint>
 #include <cmath>
-#include <functional>
 #include <vector>
 
 #include "vistrack/visibility.hpp"
@@ -42,12 +41,43 @@ struct Interval {
 // The visible part of the ray g + t d (|d| = 1, d.z = sin_el) given the first obstacle hit.
 Interval visible_interval(const Setup& s, double sin_el, double obstacle_hit);
 
+// visible_interval's far end and its surface when the POI lies in the band (near = 0 on every
+// ray), without the rest.
+inline double star_far(const Setup& s, double sin_el, double obstacle_hit, Surface& surface) {
+  double far = obstacle_hit < s.d_max ? obstacle_hit : s.d_max;
+  surface = Surface::radial;
+  if (sin_el < 0.0) {
+    const double t_ground = std::max(0.0, (s.ground - s.g.z()) / sin_el);
+    if (t_ground < far) {
+      far = t_ground;
+      surface = Surface::ground;
+    }
+  }
+  if (s.has_band && sin_el != 0.0) {
+    const double exit = ((sin_el > 0.0 ? s.high : s.low) - s.g.z()) / sin_el;
+    if (exit < far) {
+      far = exit;
+      surface = sin_el > 0.0 ? Surface::band_high : Surface::band_low;
+    }
+  }
+  return far;
+}
+
+// How far a ray with that elevation can see at most (ground, band, d_max), or 0 when the band
+// leaves it nothing to see: rays are traced no farther.
+inline double visible_far_bound(const Setup& s, double sin_el) {
+  if (s.poi_in_band) {
+    Surface surface;
+    const double far = star_far(s, sin_el, s.d_max, surface);
+    return far > 0.0 ? far : 0.0;
+  }
+  const Interval bound = visible_interval(s, sin_el, s.d_max);
+  return bound.far > bound.near ? bound.far : 0.0;
+}
+
 // The point at distance t along unit direction d from g; on a band cap or the ground its z is
 // that plane's exactly.
 Vec3 point_on(const Setup& s, const Vec3& d, double t, Surface surface);
-
-// Traces one ray per direction (unit vectors) and returns their visible intervals.
-using IntervalTracer = std::function<std::vector<Interval>(const std::vector<Vec3>& directions)>;
 
 // The triangulated sphere of grid corners. Vertex rows i = 0..ne at elevations
 // -pi/2 + i pi/ne (rows 0 and ne are the poles), columns j at azimuths j d_az. Quad (i, j) splits
@@ -102,6 +132,14 @@ struct Directions {
   // sin_el_rows: sines of the mesh's vertex-row elevations, from -1 (south pole) to 1.
   Directions(const DirectionGrid& g, const SphereGrid& s, const std::vector<double>& sin_el_rows);
   std::size_t num_cells() const { return grid.size(); }
+  // The ray of cell (i, j): DirectionGrid::direction by angle addition, azimuth (j + x_i) d_az.
+  Vec3 cell(std::size_t i, std::size_t j) const {
+    const double sin_el = sin_bottom_cell[i] + y_cell[j] * sin_span_cell[i];
+    const double cos_el = std::sqrt(std::max(0.0, 1.0 - sin_el * sin_el));
+    const double cos_az = cos_az_corner[j] * cos_offset_cell[i] - sin_az_corner[j] * sin_offset_cell[i];
+    const double sin_az = sin_az_corner[j] * cos_offset_cell[i] + cos_az_corner[j] * sin_offset_cell[i];
+    return {cos_el * cos_az, cos_el * sin_az, sin_el};
+  }
   // Ray k: the cells first (k = i * na + j), then the corners (k - num_cells).
   Vec3 ray(std::size_t k) const {
     const auto na = static_cast<std::size_t>(grid.num_azimuth);
@@ -148,13 +186,6 @@ class MeshBuilder {
   double six_volume_ = 0.0;
 };
 
-// The closed mesh of a VV whose POI lies in the band (near = 0 along every ray): the radial
-// surface r = far over the live corners, with radial walls at the jumps of r found by bisection
-// with `trace` (see star_mesh.cpp). triangle_faces receives the faces built over each triangle
-// slot of `sphere` (VisibilityVolume::mesh_triangle_faces).
-TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
-                             const std::vector<Interval>& corner, const IntervalTracer& trace, double& volume,
-                             std::vector<std::int32_t>& triangle_faces);
 // The closed mesh of a VV whose POI lies outside the band (near > 0): outer and inner surfaces
 // joined on the contour where the visible interval closes (see shell_mesh.cpp).
 TriangleMesh build_shell_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,

@@ -7,304 +7,691 @@
 // VV holds 0.2-2.4 % less volume than the per-direction intervals. Each such edge is bisected with
 // more rays until the jump is pinned to 1/2^kBisections of the edge, and the triangles on both
 // sides share a radial wall there.
-#include <algorithm>
-#include <cmath>
-#include <vector>
+//
+// Refinement: an edge whose middle ray differs from both ends holds two jumps (a gap between two
+// buildings, a thin tower in front of the sky; 0.01-0.03 % of a Charlotte VV went missing there),
+// and one wall can hold only one. Such an edge is split at its middle ray, which becomes a vertex,
+// the triangles on both sides are split with it (into at most four pieces each: every piece stays
+// inside its triangle slot, whose faces the radial XOR overlaps), and the new edges get walls in
+// turn.
+//
+// Cost: most slots are plain (three live corners, no jump): they are written in one pass over
+// the rows with their volume r_a r_b r_c det(d_a, d_b, d_c) / 6 (the determinant depends on the
+// row only); the few slots with walls or splits go through the general path. The mesh is written
+// in two passes over the rows (count, then fill at the counted offsets), so rows can be written in
+// parallel and the output does not depend on the number of threads.
+#include "visibility/star_mesh.hpp"
 
-#include "visibility/radial_mesh.hpp"
+#include <Eigen/Geometry>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
 
 namespace vistrack::detail {
 
 namespace {
 
-constexpr double kJumpCandidate = 0.1;  // relative gap |r_u - r_w| / max(r_u, r_w) worth bisecting
+constexpr double kJumpCandidate = 0.1;   // relative gap |r_u - r_w| / max(r_u, r_w) worth bisecting
 constexpr double kJumpConfirmed = 0.05;  // relative gap still left after bisection: a jump
 constexpr int kBisections = 6;
 
-// A mesh edge u-w (u < w) across which r jumps, bracketed by bisection: the ray at lambda_lo of
-// the way from u to w is on u's side of the jump, the ray at lambda_hi on w's side.
-struct Jump {
-  int u = 0;
-  int w = 0;
-  double lambda_lo = 0.0;
-  double lambda_hi = 1.0;
-  Interval lo;
-  Interval hi;
-  bool confirmed = false;
-  int triangle = 0;  // the live triangle the edge was found in (as its edge `edge`)
-  int edge = 0;
-  int vertex_u = -1;  // the two mesh vertices on the jump's ray: r on u's side and on w's side
-  int vertex_w = -1;
-  double gap() const { return std::abs(hi.far - lo.far); }
-};
+// slot_flags bits
+constexpr std::uint8_t kLive = 1;     // all three corners see something
+constexpr std::uint8_t kComplex = 2;  // a split edge or a confirmed jump: the general path
+constexpr int kSplitShift = 2;        // bits 2..4: edge e of the slot is split
 
 bool is_plane(Surface s) { return s != Surface::radial; }
 
-Vec3 edge_direction(const Directions& dirs, const Jump& jump, double lambda) {
-  return ((1.0 - lambda) * dirs.corner(jump.u) + lambda * dirs.corner(jump.w)).normalized();
+// r differs enough between two rays to look for a jump between them (two hits on one plane are
+// joined exactly by the flat triangle between them).
+bool differ(double a, Surface sa, double b, Surface sb) {
+  return std::abs(a - b) > kJumpCandidate * std::max(a, b) && !(sa == sb && is_plane(sa));
 }
 
-// Distance along unit d to the surface that ended interval `iv` (measured on a nearby ray): the
-// exact plane distance for the ground and the band caps, the measured distance otherwise.
-double distance_on(const Setup& s, const Interval& iv, const Vec3& d) {
+// Distance along unit d to the surface that ended an interval measured on a nearby ray: the exact
+// plane distance for the ground and the band caps, the measured distance otherwise.
+double distance_on(const Setup& s, double far, Surface surface, const Vec3& d) {
   double z = 0.0;
-  if (iv.far_surface == Surface::ground) z = s.ground;
-  else if (iv.far_surface == Surface::band_low) z = s.low;
-  else if (iv.far_surface == Surface::band_high) z = s.high;
-  else return iv.far;
+  if (surface == Surface::ground) z = s.ground;
+  else if (surface == Surface::band_low) z = s.low;
+  else if (surface == Surface::band_high) z = s.high;
+  else return far;
   const double t = (z - s.g.z()) / d.z();
-  return std::isfinite(t) && t > 0.0 ? std::min(t, s.d_max) : iv.far;
+  return std::isfinite(t) && t > 0.0 ? std::min(t, s.d_max) : far;
 }
 
-// Finds the jump edges between live triangles: candidates by their corners' gap, then
-// kBisections rounds of rays, each keeping the half of the bracket with the larger gap (a jump
-// keeps its gap, a smooth but steep r(w) loses half of it per round).
-std::vector<Jump> find_jumps(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
-                             const std::vector<Interval>& corner, const std::vector<char>& tri_alive,
-                             const IntervalTracer& trace) {
-  std::vector<Jump> jumps;
-  auto consider = [&](int t, int e, int p, int q) {
-    if (p > q) return;  // each inner edge once (its other triangle has it as q-p)
-    const Interval& a = corner[p];
-    const Interval& b = corner[q];
-    if (std::abs(a.far - b.far) <= kJumpCandidate * std::max(a.far, b.far)) return;
-    // Two hits on one plane are joined exactly by the flat triangle between them.
-    if (a.far_surface == b.far_surface && is_plane(a.far_surface)) return;
-    if (!tri_alive[sphere.neighbour(t, e)]) return;
-    Jump jump;
-    jump.u = p;
-    jump.w = q;
-    jump.lo = a;
-    jump.hi = b;
-    jump.triangle = t;
-    jump.edge = e;
-    jumps.push_back(jump);
-  };
-  sphere.for_each_quad([&](int, int t, int v00, int v01, int v10, int v11) {
-    if (tri_alive[t]) consider(t, 0, v00, v01), consider(t, 1, v01, v11), consider(t, 2, v11, v00);
-    if (tri_alive[t + 1]) consider(t + 1, 0, v00, v11), consider(t + 1, 1, v11, v10), consider(t + 1, 2, v10, v00);
-  });
-  // A bracket whose gap falls to the confirmation level is smooth: it leaves the rounds early.
-  const double alive_gap = 1e-6 * std::max(1.0, s.d_max);
-  // Both ends on one plane is no jump: the ground seen at grazing angles changes fast but stays
-  // flat, and flat triangles hold it exactly.
-  auto open = [&](const Jump& jump) {
-    return jump.lo.far - jump.lo.near > alive_gap && jump.hi.far - jump.hi.near > alive_gap &&
-           jump.gap() > kJumpConfirmed * std::max(jump.lo.far, jump.hi.far) &&
-           !(jump.lo.far_surface == jump.hi.far_surface && is_plane(jump.lo.far_surface));
-  };
-  std::vector<std::size_t> active(jumps.size());
-  for (std::size_t k = 0; k < jumps.size(); ++k) active[k] = k;
-  std::vector<Vec3> directions;
-  for (int round = 0; round < kBisections && !active.empty(); ++round) {
-    directions.clear();
-    for (std::size_t k : active)
-      directions.push_back(edge_direction(dirs, jumps[k], 0.5 * (jumps[k].lambda_lo + jumps[k].lambda_hi)));
-    const std::vector<Interval> mid = trace(directions);
-    std::size_t kept = 0;
-    for (std::size_t m = 0; m < active.size(); ++m) {
-      Jump& jump = jumps[active[m]];
-      const double lambda = 0.5 * (jump.lambda_lo + jump.lambda_hi);
-      if (std::abs(mid[m].far - jump.lo.far) >= std::abs(jump.hi.far - mid[m].far)) {
-        jump.lambda_hi = lambda;
-        jump.hi = mid[m];
-      } else {
-        jump.lambda_lo = lambda;
-        jump.lo = mid[m];
-      }
-      if (open(jump)) active[kept++] = active[m];
-    }
-    active.resize(kept);
+// Runs body(i) for i in [0, n): in parallel when asked (each i must touch its own data only).
+template <class Body>
+void for_each_index(bool parallel, int n, Body body) {
+  if (!parallel) {
+    for (int i = 0; i < n; ++i) body(i);
+    return;
   }
-  for (Jump& jump : jumps) jump.confirmed = open(jump);
-  return jumps;
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 8), [&](const tbb::blocked_range<int>& r) {
+    for (int i = r.begin(); i < r.end(); ++i) body(i);
+  });
+}
+
+double six_volume_of(const Vec3& g, const Vec3& a, const Vec3& b, const Vec3& c) {
+  return (a - g).dot((b - g).cross(c - g));
+}
+
+using Triangle = std::array<int, 3>;
+
+// The triangles of a slot with corners c (outward order; edge e runs from c[e] to c[e + 1]) and
+// the midpoints m[e] of its split edges (bit e of `split`), in outward order: at most four.
+int pieces(const Triangle& c, int split, const Triangle& m, std::array<Triangle, 4>& out) {
+  switch (split) {
+    case 0:
+      out[0] = c;
+      return 1;
+    case 1:
+    case 2:
+    case 4: {
+      const int e = split == 1 ? 0 : (split == 2 ? 1 : 2);
+      const int a = c[static_cast<std::size_t>(e)], b = c[static_cast<std::size_t>((e + 1) % 3)];
+      const int d = c[static_cast<std::size_t>((e + 2) % 3)], x = m[static_cast<std::size_t>(e)];
+      out[0] = {a, x, d};
+      out[1] = {x, b, d};
+      return 2;
+    }
+    case 7:
+      out[0] = {c[0], m[0], m[2]};
+      out[1] = {m[0], c[1], m[1]};
+      out[2] = {m[2], m[1], c[2]};
+      out[3] = {m[0], m[1], m[2]};
+      return 4;
+    default: {
+      // Two split edges, k + 1 and k + 2 (meeting at corner k + 2); edge k whole.
+      const int k = split == 6 ? 0 : (split == 5 ? 1 : 2);
+      const int a = c[static_cast<std::size_t>(k)], b = c[static_cast<std::size_t>((k + 1) % 3)];
+      const int d = c[static_cast<std::size_t>((k + 2) % 3)];
+      const int m1 = m[static_cast<std::size_t>((k + 1) % 3)], m2 = m[static_cast<std::size_t>((k + 2) % 3)];
+      out[0] = {m1, d, m2};
+      out[1] = {a, b, m1};
+      out[2] = {a, m1, m2};
+      return 3;
+    }
+  }
 }
 
 }  // namespace
 
-TriangleMesh build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs,
-                             const std::vector<Interval>& corner, const IntervalTracer& trace, double& volume,
-                             std::vector<std::int32_t>& triangle_faces) {
+void EdgeMap::reset(std::size_t expected) {
+  std::size_t capacity = 64;
+  while (capacity < 2 * expected) capacity *= 2;
+  keys_.assign(capacity, kEmpty);
+  values_.resize(capacity);
+  mask_ = capacity - 1;
+  size_ = 0;
+}
+
+void EdgeMap::insert(std::uint64_t k, std::int32_t value) {
+  if (2 * (size_ + 1) > keys_.size()) {
+    std::vector<std::uint64_t> old_keys = std::move(keys_);
+    std::vector<std::int32_t> old_values = std::move(values_);
+    reset(size_ + 1);
+    for (std::size_t i = 0; i < old_keys.size(); ++i)
+      if (old_keys[i] != kEmpty) insert(old_keys[i], old_values[i]);
+  }
+  std::size_t i = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> 20) & mask_;
+  while (keys_[i] != kEmpty && keys_[i] != k) i = (i + 1) & mask_;
+  if (keys_[i] == kEmpty) ++size_;
+  keys_[i] = k;
+  values_[i] = value;
+}
+
+std::int32_t EdgeMap::find(std::uint64_t k) const {
+  if (size_ == 0) return -1;
+  std::size_t i = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> 20) & mask_;
+  while (keys_[i] != kEmpty) {
+    if (keys_[i] == k) return values_[i];
+    i = (i + 1) & mask_;
+  }
+  return -1;
+}
+
+void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs, const std::vector<double>& far,
+                     const std::vector<Surface>& surface, const TraceContext& tracer_in, StarMeshScratch& sc,
+                     VisibilityVolume& vv, VolumeCost* cost) {
+  PhaseTimer refine_timer(cost ? &cost->refine_s : nullptr);
+  RayCounts refine_counts;
+  TraceContext tracer = tracer_in;
+  tracer.counts = &refine_counts;
   const int nv = sphere.num_vertices();
   const int ne = sphere.ne;
-  const double alive_gap = 1e-6 * std::max(1.0, s.d_max);
-  std::vector<char> alive(static_cast<std::size_t>(nv));
-  for (int v = 0; v < nv; ++v) alive[v] = corner[v].far - corner[v].near > alive_gap ? 1 : 0;
-
-  // Live triangles (all three corners see something), and the live corners of dead triangles:
-  // only those can be pinched, and only triangles with two of them can border the dead region.
+  const int na = sphere.na;
   const int nt = sphere.num_triangle_slots();
-  std::vector<char> tri_alive(static_cast<std::size_t>(nt));
-  std::vector<char> candidate(static_cast<std::size_t>(nv));
-  auto update_triangles = [&]() {
-    std::fill(candidate.begin(), candidate.end(), 0);
-    sphere.for_each_quad([&](int i, int t, int v00, int v01, int v10, int v11) {
-      tri_alive[t] = i >= 1 && alive[v00] && alive[v01] && alive[v11];
-      tri_alive[t + 1] = i <= ne - 2 && alive[v00] && alive[v11] && alive[v10];
-      if (i >= 1 && !tri_alive[t]) candidate[v00] |= alive[v00], candidate[v01] |= alive[v01], candidate[v11] |= alive[v11];
-      if (i <= ne - 2 && !tri_alive[t + 1])
-        candidate[v00] |= alive[v00], candidate[v11] |= alive[v11], candidate[v10] |= alive[v10];
-    });
+  const double alive_gap = 1e-6 * std::max(1.0, s.d_max);
+
+  // Samples: the corners, then the midpoints of split edges.
+  sc.extra_direction.clear();
+  sc.extra_far.clear();
+  sc.extra_surface.clear();
+  sc.extra_parent.clear();
+  auto sample_far = [&](int v) { return v < nv ? far[v] : sc.extra_far[static_cast<std::size_t>(v - nv)]; };
+  auto sample_surface = [&](int v) { return v < nv ? surface[v] : sc.extra_surface[static_cast<std::size_t>(v - nv)]; };
+  auto sample_direction = [&](int v) { return v < nv ? dirs.corner(v) : sc.extra_direction[static_cast<std::size_t>(v - nv)]; };
+  auto slot_corners = [&](int t) { return sphere.corners(t); };
+
+  // Live corners (something visible) and live slots (all three corners live).
+  auto& alive = sc.alive;
+  alive.resize(static_cast<std::size_t>(nv));
+  bool all_alive = true;
+  for (int v = 0; v < nv; ++v) {
+    alive[v] = far[v] > alive_gap ? 1 : 0;
+    all_alive = all_alive && alive[v];
+  }
+  auto& flags = sc.slot_flags;
+  auto& candidate = sc.candidate;
+  flags.resize(static_cast<std::size_t>(nt));
+  candidate.assign(static_cast<std::size_t>(nv), 0);
+  if (all_alive) {
+    std::fill(flags.begin(), flags.end(), kLive);
+    for (int j = 0; j < na; ++j) {
+      flags[static_cast<std::size_t>(2 * j)] = 0;                         // no Ta at the south pole
+      flags[static_cast<std::size_t>(2 * ((ne - 1) * na + j) + 1)] = 0;  // no Tb at the north pole
+    }
+  } else {
+    // The live corners of dead slots: only those can be pinched, and only slots with two of them
+    // can border the dead region.
+    auto update_slots = [&]() {
+      std::fill(candidate.begin(), candidate.end(), 0);
+      sphere.for_each_quad([&](int i, int t, int v00, int v01, int v10, int v11) {
+        flags[t] = i >= 1 && alive[v00] && alive[v01] && alive[v11] ? kLive : 0;
+        flags[t + 1] = i <= ne - 2 && alive[v00] && alive[v11] && alive[v10] ? kLive : 0;
+        if (i >= 1 && !flags[t]) candidate[v00] |= alive[v00], candidate[v01] |= alive[v01], candidate[v11] |= alive[v11];
+        if (i <= ne - 2 && !flags[t + 1])
+          candidate[v00] |= alive[v00], candidate[v11] |= alive[v11], candidate[v10] |= alive[v10];
+      });
+    };
+    update_slots();
+    // A corner where the visible region touches itself (two separate fans of live slots) would
+    // be a non-manifold vertex: drop it, until there is none.
+    for (int round = 0; round < 64; ++round) {
+      bool changed = false;
+      for (int v = 0; v < nv; ++v) {
+        if (!candidate[v]) continue;
+        std::array<int, 6> local{};
+        const int n = sphere.ring(v, local, sc.pole_ring);
+        const int* ring = n < 0 ? sc.pole_ring.data() : local.data();
+        const int size = n < 0 ? static_cast<int>(sc.pole_ring.size()) : n;
+        int runs = 0;
+        for (int k = 0; k < size; ++k)
+          if (flags[ring[k]] && !flags[ring[(k + size - 1) % size]]) ++runs;
+        if (runs >= 2) {
+          alive[v] = 0;
+          changed = true;
+        }
+      }
+      if (!changed) break;
+      update_slots();
+    }
+  }
+  auto live = [&](int t) { return (flags[static_cast<std::size_t>(t)] & kLive) != 0; };
+  // First corner of vertex row i (a pole row is one vertex): quad (i, j) has corners
+  // row_first(i) + j, + j + 1 and row_first(i + 1) + j, + j + 1 (columns modulo na).
+  auto row_first = [&](int i) { return i == 0 ? 0 : (i == ne ? nv - 1 : 1 + (i - 1) * na); };
+
+  // Jump candidates on the grid's edges between live slots. Each edge is examined once per quad
+  // that owns it (its bottom, left and diagonal edge) and recorded from the slot that runs along
+  // it from the lower to the higher corner.
+  auto& jumps = sc.jumps;
+  auto& edges = sc.edges;
+  jumps.clear();
+  edges.reset(1024);
+  auto consider = [&](int t, int e, int p, int q) {
+    if (p > q || !live(t)) return;
+    if (!all_alive && !live(sphere.neighbour(t, e))) return;
+    Jump jump;
+    jump.u = p;
+    jump.w = q;
+    jump.slot = t;
+    jump.edge = e;
+    jump.lo_far = far[p];
+    jump.lo_surface = surface[p];
+    jump.hi_far = far[q];
+    jump.hi_surface = surface[q];
+    jumps.push_back(jump);
   };
-  update_triangles();
-  // A corner where the visible region touches itself (two separate fans of live triangles) would
-  // be a non-manifold vertex: drop it, until there is none.
-  std::vector<int> pole_ring;
-  for (int round = 0; round < 64; ++round) {
-    bool changed = false;
-    for (int v = 0; v < nv; ++v) {
-      if (!candidate[v]) continue;
-      std::array<int, 6> local{};
-      const int n = sphere.ring(v, local, pole_ring);
-      const int* ring = n < 0 ? pole_ring.data() : local.data();
-      const int size = n < 0 ? static_cast<int>(pole_ring.size()) : n;
-      int runs = 0;
-      for (int k = 0; k < size; ++k)
-        if (tri_alive[ring[k]] && !tri_alive[ring[(k + size - 1) % size]]) ++runs;
-      if (runs >= 2) {
-        alive[v] = 0;
-        changed = true;
+  {
+    // A cheap test on r first (raw pointers: the compiler cannot keep vector data in registers
+    // across the byte-sized flag writes); the surfaces only when it passes.
+    const double* r = far.data();
+    const Surface* sf = surface.data();
+    auto gap = [&](int p, int q) { return std::abs(r[p] - r[q]) > kJumpCandidate * std::max(r[p], r[q]); };
+    auto plane_pair = [&](int p, int q) { return sf[p] == sf[q] && is_plane(sf[p]); };
+    for (int i = 0; i < ne; ++i) {
+      const int lo = row_first(i), hi = row_first(i + 1);
+      const bool south = i == 0, north = i + 1 == ne;
+      for (int j = 0; j < na; ++j) {
+        const int jn = j + 1 == na ? 0 : j + 1;
+        const int v00 = south ? lo : lo + j, v01 = south ? lo : lo + jn;
+        const int v10 = north ? hi : hi + j, v11 = north ? hi : hi + jn;
+        const bool diagonal = gap(v00, v11), bottom = !south && gap(v00, v01), left = gap(v00, v10);
+        if (!(diagonal || bottom || left)) continue;
+        const int t = 2 * (i * na + j);
+        if (diagonal && !plane_pair(v00, v11)) consider(t, 2, v11, v00), consider(t + 1, 0, v00, v11);
+        if (bottom && !plane_pair(v00, v01)) consider(t, 0, v00, v01), consider(sphere.tb(i - 1, j), 1, v01, v00);
+        if (left && !plane_pair(v00, v10)) consider(t + 1, 2, v10, v00), consider(sphere.ta(i, j - 1), 1, v00, v10);
       }
     }
-    if (!changed) break;
-    update_triangles();
+  }
+  for (std::size_t k = 0; k < jumps.size(); ++k) {
+    jumps[k].other = sphere.neighbour(jumps[k].slot, jumps[k].edge);
+    edges.insert(EdgeMap::key(jumps[k].u, jumps[k].w), static_cast<std::int32_t>(k));
   }
 
-  std::vector<Jump> jumps = find_jumps(s, sphere, dirs, corner, tri_alive, trace);
-  // edge_jump[3 t + e]: the jump on edge e of triangle t, or -1; jump_triangles: the triangles
-  // with one.
-  std::vector<int> edge_jump(3 * static_cast<std::size_t>(nt), -1);
-  std::vector<int> jump_triangles;
-  for (std::size_t k = 0; k < jumps.size(); ++k) {
+  // Bisection of the jumps from `first` on: kBisections rounds of rays, each keeping the half of
+  // the bracket with the larger gap (a jump keeps its gap, a smooth but steep r(w) loses half of it
+  // per round). A bracket whose gap falls to the confirmation level is smooth: it leaves the
+  // rounds early. Both ends on one plane is no jump: the ground seen at grazing angles changes
+  // fast but stays flat. With allow_split, an edge whose middle ray differs from both ends is
+  // split there instead.
+  auto open = [&](const Jump& jump) {
+    return jump.split < 0 && jump.lo_far > alive_gap && jump.hi_far > alive_gap &&
+           jump.gap() > kJumpConfirmed * std::max(jump.lo_far, jump.hi_far) &&
+           !(jump.lo_surface == jump.hi_surface && is_plane(jump.lo_surface));
+  };
+  auto& active = sc.active;
+  auto& directions = sc.directions;
+  auto bisect = [&](std::size_t first, bool allow_split) {
+    active.clear();
+    for (std::size_t k = first; k < jumps.size(); ++k) active.push_back(static_cast<std::int32_t>(k));
+    for (int round = 0; round < kBisections && !active.empty(); ++round) {
+      directions.resize(active.size());
+      for (std::size_t m = 0; m < active.size(); ++m) {
+        const Jump& jump = jumps[static_cast<std::size_t>(active[m])];
+        const double lambda = 0.5 * (jump.lambda_lo + jump.lambda_hi);
+        directions[m] = ((1.0 - lambda) * sample_direction(jump.u) + lambda * sample_direction(jump.w)).normalized();
+      }
+      sc.mid_far.resize(active.size());
+      sc.mid_surface.resize(active.size());
+      trace_all(
+          tracer, active.size(),
+          [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
+            for (std::size_t m = 0; m < count; ++m) {
+              d[m] = directions[start + m];
+              column[m] = (jumps[static_cast<std::size_t>(active[start + m])].slot / 2) % na;
+            }
+          },
+          [&](std::size_t m, const Vec3& d, double hit) { sc.mid_far[m] = star_far(s, d.z(), hit, sc.mid_surface[m]); });
+      std::size_t kept = 0;
+      for (std::size_t m = 0; m < active.size(); ++m) {
+        Jump& jump = jumps[static_cast<std::size_t>(active[m])];
+        const double mid = sc.mid_far[m];
+        const Surface mid_surface = sc.mid_surface[m];
+        if (allow_split && round == 0 && mid > alive_gap && differ(jump.lo_far, jump.lo_surface, mid, mid_surface) &&
+            differ(mid, mid_surface, jump.hi_far, jump.hi_surface)) {
+          jump.split = nv + static_cast<int>(sc.extra_far.size());
+          sc.extra_direction.push_back(directions[m]);
+          sc.extra_far.push_back(mid);
+          sc.extra_surface.push_back(mid_surface);
+          sc.extra_parent.push_back(active[m]);
+          continue;
+        }
+        const double lambda = 0.5 * (jump.lambda_lo + jump.lambda_hi);
+        if (std::abs(mid - jump.lo_far) >= std::abs(jump.hi_far - mid)) {
+          jump.lambda_hi = lambda;
+          jump.hi_far = mid;
+          jump.hi_surface = mid_surface;
+        } else {
+          jump.lambda_lo = lambda;
+          jump.lo_far = mid;
+          jump.lo_surface = mid_surface;
+        }
+        if (open(jump)) active[kept++] = active[m];
+      }
+      active.resize(kept);
+    }
+  };
+  bisect(0, true);
+
+  // Split edges: mark the slots on both sides, then look for jumps on the new edges (the halves
+  // of the split edges and the edges inside the split slots).
+  const std::size_t level0_jumps = jumps.size();
+  auto& complex_slots = sc.complex_slots;
+  complex_slots.clear();
+  for (std::size_t k = 0; k < level0_jumps; ++k) {
     const Jump& jump = jumps[k];
-    if (!jump.confirmed) continue;
-    const int other = sphere.neighbour(jump.triangle, jump.edge);
-    const auto c = sphere.corners(other);
+    if (jump.split < 0) continue;
+    const int t = jump.slot, other = jump.other;
+    flags[static_cast<std::size_t>(t)] |= static_cast<std::uint8_t>(1 << (kSplitShift + jump.edge));
+    const auto c = slot_corners(other);
     for (int e = 0; e < 3; ++e)
       if (c[static_cast<std::size_t>(e)] == jump.w && c[static_cast<std::size_t>((e + 1) % 3)] == jump.u)
-        edge_jump[3 * static_cast<std::size_t>(other) + e] = static_cast<int>(k);
-    edge_jump[3 * static_cast<std::size_t>(jump.triangle) + jump.edge] = static_cast<int>(k);
-    jump_triangles.push_back(jump.triangle);
-    jump_triangles.push_back(other);
+        flags[static_cast<std::size_t>(other)] |= static_cast<std::uint8_t>(1 << (kSplitShift + e));
+    complex_slots.push_back(t);
+    complex_slots.push_back(other);
   }
-  std::sort(jump_triangles.begin(), jump_triangles.end());
-  jump_triangles.erase(std::unique(jump_triangles.begin(), jump_triangles.end()), jump_triangles.end());
-  // The confirmed jumps on the edges of triangle t, in the order of its corners' edges.
-  auto jumps_of = [&](int t) {
+  std::sort(complex_slots.begin(), complex_slots.end());
+  complex_slots.erase(std::unique(complex_slots.begin(), complex_slots.end()), complex_slots.end());
+  // The midpoints of slot t's split edges.
+  auto midpoints = [&](int t, const Triangle& c) {
+    Triangle m{-1, -1, -1};
+    const int split = flags[static_cast<std::size_t>(t)] >> kSplitShift;
+    for (int e = 0; e < 3; ++e)
+      if (split & (1 << e)) {
+        const std::int32_t k = edges.find(EdgeMap::key(c[static_cast<std::size_t>(e)], c[static_cast<std::size_t>((e + 1) % 3)]));
+        m[static_cast<std::size_t>(e)] = jumps[static_cast<std::size_t>(k)].split;
+      }
+    return m;
+  };
+  for (int t : complex_slots) {
+    const Triangle c = slot_corners(t);
+    std::array<Triangle, 4> piece;
+    const int n = pieces(c, flags[static_cast<std::size_t>(t)] >> kSplitShift, midpoints(t, c), piece);
+    for (int p = 0; p < n; ++p)
+      for (int e = 0; e < 3; ++e) {
+        const int a = piece[static_cast<std::size_t>(p)][static_cast<std::size_t>(e)];
+        const int b = piece[static_cast<std::size_t>(p)][static_cast<std::size_t>((e + 1) % 3)];
+        if (a < nv && b < nv) continue;  // a whole edge of the grid: examined above
+        const std::uint64_t key = EdgeMap::key(a, b);
+        if (edges.find(key) >= 0 || !differ(sample_far(a), sample_surface(a), sample_far(b), sample_surface(b))) continue;
+        // A half of a split grid edge lies on the slot across it too.
+        Jump jump;
+        jump.u = std::min(a, b);
+        jump.w = std::max(a, b);
+        jump.slot = t;
+        if (a < nv || b < nv) {
+          const Jump& parent = jumps[static_cast<std::size_t>(sc.extra_parent[static_cast<std::size_t>(std::max(a, b) - nv)])];
+          jump.other = parent.slot == t ? parent.other : parent.slot;
+        }
+        jump.lo_far = sample_far(jump.u);
+        jump.lo_surface = sample_surface(jump.u);
+        jump.hi_far = sample_far(jump.w);
+        jump.hi_surface = sample_surface(jump.w);
+        edges.insert(key, static_cast<std::int32_t>(jumps.size()));
+        jumps.push_back(jump);
+      }
+  }
+  bisect(level0_jumps, false);
+
+  // Confirmed jumps, and the slots they touch (on both sides of a grid edge).
+  for (std::size_t k = 0; k < jumps.size(); ++k) {
+    Jump& jump = jumps[k];
+    jump.confirmed = open(jump);
+    if (!jump.confirmed) continue;
+    complex_slots.push_back(jump.slot);
+    if (jump.other >= 0) complex_slots.push_back(jump.other);
+  }
+  std::sort(complex_slots.begin(), complex_slots.end());
+  complex_slots.erase(std::unique(complex_slots.begin(), complex_slots.end()), complex_slots.end());
+  for (int t : complex_slots) flags[static_cast<std::size_t>(t)] |= kComplex;
+
+  // The confirmed jumps on the edges of triangle (a, b, c).
+  auto jumps_of = [&](const Triangle& c) {
     std::array<Jump*, 3> edge{};
     for (int e = 0; e < 3; ++e) {
-      const int k = edge_jump[3 * static_cast<std::size_t>(t) + e];
-      edge[static_cast<std::size_t>(e)] = k >= 0 && jumps[static_cast<std::size_t>(k)].confirmed ? &jumps[static_cast<std::size_t>(k)] : nullptr;
+      const std::int32_t k = edges.find(EdgeMap::key(c[static_cast<std::size_t>(e)], c[static_cast<std::size_t>((e + 1) % 3)]));
+      if (k >= 0 && jumps[static_cast<std::size_t>(k)].confirmed) edge[static_cast<std::size_t>(e)] = &jumps[static_cast<std::size_t>(k)];
     }
     return edge;
   };
-  // r just beside the jump on corner p's side.
-  auto side_far = [](const Jump& jump, int p) { return p == jump.u ? jump.lo.far : jump.hi.far; };
+  auto for_each_piece = [&](int t, auto visit) {
+    const Triangle c = slot_corners(t);
+    std::array<Triangle, 4> piece;
+    const int n = pieces(c, flags[static_cast<std::size_t>(t)] >> kSplitShift, midpoints(t, c), piece);
+    for (int p = 0; p < n; ++p) visit(piece[static_cast<std::size_t>(p)]);
+  };
+  // r just beside the jump on sample p's side.
+  auto side_far = [](const Jump& jump, int p) { return p == jump.u ? jump.lo_far : jump.hi_far; };
 
   // A triangle takes at most two jump edges, joined by one wall that must not twist (the nearer
   // side at one end nearer at the other too): drop the weakest jump of any other triangle until
   // none is left. Dropping only lowers counts, so this ends.
   for (bool changed = true; changed;) {
     changed = false;
-    for (int t : jump_triangles) {
-      const auto c = sphere.corners(t);
-      const std::array<Jump*, 3> edge = jumps_of(t);
-      const int count = (edge[0] != nullptr) + (edge[1] != nullptr) + (edge[2] != nullptr);
-      if (count < 2) continue;
-      if (count == 2) {
-        const int r = edge[1] == nullptr ? 0 : (edge[2] == nullptr ? 1 : 2);  // lone corner c[r]
-        const Jump& p = *edge[static_cast<std::size_t>(r)];
-        const Jump& q = *edge[static_cast<std::size_t>((r + 2) % 3)];
-        const int a = c[static_cast<std::size_t>(r)];
-        const int b = c[static_cast<std::size_t>((r + 1) % 3)];
-        const int d = c[static_cast<std::size_t>((r + 2) % 3)];
-        if ((side_far(p, a) - side_far(p, b)) * (side_far(q, a) - side_far(q, d)) > 0.0) continue;
-      }
-      Jump* weakest = nullptr;
-      for (Jump* j : edge)
-        if (j != nullptr && (weakest == nullptr || j->gap() < weakest->gap())) weakest = j;
-      weakest->confirmed = false;
-      changed = true;
+    for (int t : complex_slots) {
+      if (!live(t)) continue;
+      for_each_piece(t, [&](const Triangle& c) {
+        const std::array<Jump*, 3> edge = jumps_of(c);
+        const int count = (edge[0] != nullptr) + (edge[1] != nullptr) + (edge[2] != nullptr);
+        if (count < 2) return;
+        if (count == 2) {
+          const int r = edge[1] == nullptr ? 0 : (edge[2] == nullptr ? 1 : 2);  // lone corner c[r]
+          const Jump& p = *edge[static_cast<std::size_t>(r)];
+          const Jump& q = *edge[static_cast<std::size_t>((r + 2) % 3)];
+          const int a = c[static_cast<std::size_t>(r)];
+          const int b = c[static_cast<std::size_t>((r + 1) % 3)];
+          const int d = c[static_cast<std::size_t>((r + 2) % 3)];
+          if ((side_far(p, a) - side_far(p, b)) * (side_far(q, a) - side_far(q, d)) > 0.0) return;
+        }
+        Jump* weakest = nullptr;
+        for (Jump* j : edge)
+          if (j != nullptr && (weakest == nullptr || j->gap() < weakest->gap())) weakest = j;
+        weakest->confirmed = false;
+        changed = true;
+      });
     }
   }
+  refine_timer.stop();
+  if (cost != nullptr) cost->refine_rays += refine_counts.traced;
+  PhaseTimer mesh_timer(cost ? &cost->mesh_s : nullptr);
 
-  triangle_faces.assign(static_cast<std::size_t>(nt) + 1, 0);
-  // Corners, apex, two vertices per jump and a centre per triangle with a jump ending in it.
-  const auto expected_points = static_cast<Eigen::Index>(nv + 1 + 2 * jumps.size() + jump_triangles.size());
-  MeshBuilder out(s.g, expected_points, 5 * static_cast<Eigen::Index>(nv) + 8);
-  std::vector<int> outer(static_cast<std::size_t>(nv), -1);
-  int apex = -1;
-  auto outer_of = [&](int v) {
-    if (outer[v] < 0) outer[v] = out.add(point_on(s, dirs.corner(v), corner[v].far, corner[v].far_surface));
-    return outer[v];
-  };
-  // The vertex beside the jump on edge p-q on p's side (both created on first use, on the ray at
-  // the middle of the final bracket, so the wall is radial and shared by both triangles).
-  auto jump_vertex = [&](Jump& jump, int p) {
-    if (jump.vertex_u < 0) {
-      const Vec3 d = edge_direction(dirs, jump, 0.5 * (jump.lambda_lo + jump.lambda_hi));
-      jump.vertex_u = out.add(point_on(s, d, distance_on(s, jump.lo, d), jump.lo.far_surface));
-      jump.vertex_w = out.add(point_on(s, d, distance_on(s, jump.hi, d), jump.hi.far_surface));
+  // Vertices: the used corners, the midpoints of split edges, two per confirmed jump, a centroid
+  // per triangle with one jump edge (counted per row), and g when the mesh borders the dead region
+  // (fans to g).
+  auto& corner_vertex = sc.corner_vertex;
+  int num_vertices = 0;
+  if (all_alive) {
+    corner_vertex.resize(static_cast<std::size_t>(nv));
+    for (int v = 0; v < nv; ++v) corner_vertex[v] = v;
+    num_vertices = nv;
+  } else {
+    corner_vertex.assign(static_cast<std::size_t>(nv), -1);
+    sphere.for_each_quad([&](int, int t, int v00, int v01, int v10, int v11) {
+      if (live(t)) corner_vertex[v00] = corner_vertex[v01] = corner_vertex[v11] = 0;
+      if (live(t + 1)) corner_vertex[v00] = corner_vertex[v11] = corner_vertex[v10] = 0;
+    });
+    for (int v = 0; v < nv; ++v)
+      if (corner_vertex[v] == 0) corner_vertex[v] = num_vertices++;
+  }
+  auto& extra_vertex = sc.extra_vertex;
+  extra_vertex.resize(sc.extra_far.size());
+  for (auto& id : extra_vertex) id = num_vertices++;
+  auto outer = [&](int v) { return v < nv ? corner_vertex[v] : extra_vertex[static_cast<std::size_t>(v - nv)]; };
+  for (Jump& jump : jumps)
+    if (jump.confirmed) {
+      jump.vertex = num_vertices;
+      num_vertices += 2;
     }
-    return p == jump.u ? jump.vertex_u : jump.vertex_w;
-  };
-  // Triangle t with corners (a, b, c) in outward order; border fans to g on edges next to the
-  // dead region (the border only appears where far = 0, i.e. the ground or a band face through
-  // g: the fan is then exact).
-  auto emit = [&](int t, int a, int b, int c) {
-    const std::array<int, 3> corners{a, b, c};
-    const std::array<Jump*, 3> edge = jumps_of(t);
+
+  // Faces of triangle (a, b, c) in outward order with its confirmed jumps; face(a, b, c) writes
+  // or counts one face, centroid(x, y, z) makes (or counts) the centroid of three outer vertices.
+  auto emit = [&](const Triangle& corners, auto&& face, auto&& centroid) {
+    const std::array<Jump*, 3> edge = jumps_of(corners);
     const int count = (edge[0] != nullptr) + (edge[1] != nullptr) + (edge[2] != nullptr);
+    auto jump_vertex = [](const Jump& jump, int p) { return p == jump.u ? jump.vertex : jump.vertex + 1; };
     if (count == 0) {
-      out.face(outer_of(a), outer_of(b), outer_of(c));
-    } else if (count == 1) {
+      face(outer(corners[0]), outer(corners[1]), outer(corners[2]));
+      return;
+    }
+    const int r = count == 1 ? (edge[0] != nullptr ? 0 : (edge[1] != nullptr ? 1 : 2))
+                             : (edge[1] == nullptr ? 0 : (edge[2] == nullptr ? 1 : 2));
+    const int x = corners[static_cast<std::size_t>(r)];
+    const int y = corners[static_cast<std::size_t>((r + 1) % 3)];
+    const int z = corners[static_cast<std::size_t>((r + 2) % 3)];
+    if (count == 1) {
       // The jump on edge x-y ends inside the triangle: a wall from it to the centroid.
-      const int r = edge[0] != nullptr ? 0 : (edge[1] != nullptr ? 1 : 2);
-      const int x = corners[static_cast<std::size_t>(r)];
-      const int y = corners[static_cast<std::size_t>((r + 1) % 3)];
-      const int z = corners[static_cast<std::size_t>((r + 2) % 3)];
-      Jump& jump = *edge[static_cast<std::size_t>(r)];
+      const Jump& jump = *edge[static_cast<std::size_t>(r)];
       const int px = jump_vertex(jump, x), py = jump_vertex(jump, y);
-      const int centre = out.add((out.point(outer_of(x)) + out.point(outer_of(y)) + out.point(outer_of(z))) / 3.0);
-      out.face(outer_of(x), px, centre);
-      out.face(py, outer_of(y), centre);
-      out.face(outer_of(y), outer_of(z), centre);
-      out.face(outer_of(z), outer_of(x), centre);
-      out.face(px, py, centre);
+      const int centre = centroid(outer(x), outer(y), outer(z));
+      face(outer(x), px, centre);
+      face(py, outer(y), centre);
+      face(outer(y), outer(z), centre);
+      face(outer(z), outer(x), centre);
+      face(px, py, centre);
     } else {
       // Jumps on the two edges at the lone corner x: its corner piece, the far piece, and the
       // wall between them.
-      const int r = edge[1] == nullptr ? 0 : (edge[2] == nullptr ? 1 : 2);
-      const int x = corners[static_cast<std::size_t>(r)];
-      const int y = corners[static_cast<std::size_t>((r + 1) % 3)];
-      const int z = corners[static_cast<std::size_t>((r + 2) % 3)];
-      Jump& p = *edge[static_cast<std::size_t>(r)];            // on x-y
-      Jump& q = *edge[static_cast<std::size_t>((r + 2) % 3)];  // on z-x
+      const Jump& p = *edge[static_cast<std::size_t>(r)];            // on x-y
+      const Jump& q = *edge[static_cast<std::size_t>((r + 2) % 3)];  // on z-x
       const int px = jump_vertex(p, x), py = jump_vertex(p, y);
       const int qx = jump_vertex(q, x), qz = jump_vertex(q, z);
-      out.face(outer_of(x), px, qx);
-      out.face(py, outer_of(y), outer_of(z));
-      out.face(py, outer_of(z), qz);
-      out.face(qx, px, py);
-      out.face(qx, py, qz);
-    }
-    if (candidate[a] + candidate[b] + candidate[c] < 2) return;  // no edge on the border
-    for (int e = 0; e < 3; ++e) {
-      if (tri_alive[sphere.neighbour(t, e)]) continue;
-      const int p = corners[static_cast<std::size_t>(e)];
-      const int q = corners[static_cast<std::size_t>((e + 1) % 3)];
-      if (apex < 0) apex = out.add(s.g);
-      out.face(outer_of(q), outer_of(p), apex);
+      face(outer(x), px, qx);
+      face(py, outer(y), outer(z));
+      face(py, outer(z), qz);
+      face(qx, px, py);
+      face(qx, py, qz);
     }
   };
-  sphere.for_each_quad([&](int, int t, int v00, int v01, int v10, int v11) {
-    triangle_faces[static_cast<std::size_t>(t)] = out.num_faces();
-    if (tri_alive[t]) emit(t, v00, v01, v11);
-    triangle_faces[static_cast<std::size_t>(t) + 1] = out.num_faces();
-    if (tri_alive[t + 1]) emit(t + 1, v00, v11, v10);
+  // Border fans to g on the slot's edges next to the dead region (the border only appears where
+  // far = 0, i.e. the ground or a band face through g: the fan is exact).
+  auto border = [&](int t, const Triangle& c, auto&& face, int apex) {
+    if (candidate[c[0]] + candidate[c[1]] + candidate[c[2]] < 2) return;
+    for (int e = 0; e < 3; ++e)
+      if (!live(sphere.neighbour(t, e))) face(outer(c[static_cast<std::size_t>((e + 1) % 3)]), outer(c[static_cast<std::size_t>(e)]), apex);
+  };
+
+  // Count pass: faces per slot (mesh_triangle_faces) and centroids per row.
+  auto& triangle_faces = vv.mesh_triangle_faces;
+  triangle_faces.resize(static_cast<std::size_t>(nt) + 1);
+  triangle_faces[0] = 0;
+  auto& row_centroid = sc.row_centroid;
+  row_centroid.assign(static_cast<std::size_t>(ne) + 1, 0);
+  bool any_border = false;
+  {
+    const std::uint8_t* f = flags.data();
+    std::int32_t* offsets = triangle_faces.data();
+    std::int32_t faces = 0;
+    for (int i = 0; i < ne; ++i) {
+      int centroids = 0;
+      for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) {
+        if (f[t] == kLive) {
+          ++faces;
+        } else if (f[t] & kLive) {
+          auto count_face = [&](int, int, int) { ++faces; };
+          auto count_centroid = [&](int, int, int) {
+            ++centroids;
+            return 0;
+          };
+          for_each_piece(t, [&](const Triangle& c) { emit(c, count_face, count_centroid); });
+        }
+        if ((f[t] & kLive) && !all_alive) {
+          const int before = faces;
+          border(t, slot_corners(t), [&](int, int, int) { ++faces; }, 0);
+          any_border = any_border || faces > before;
+        }
+        offsets[t + 1] = faces;
+      }
+      row_centroid[static_cast<std::size_t>(i) + 1] = centroids;
+    }
+  }
+  row_centroid[0] = num_vertices;
+  for (std::size_t i = 1; i < row_centroid.size(); ++i) row_centroid[i] += row_centroid[i - 1];
+  num_vertices = row_centroid.back();
+  const int apex = any_border ? num_vertices++ : -1;
+
+  TriangleMesh& mesh = vv.mesh;
+  mesh.vertices.resize(num_vertices, 3);
+  mesh.faces.resize(triangle_faces.back(), 3);
+  const bool parallel = tracer.parallel;
+  auto set_vertex = [&](int id, const Vec3& p) {
+    double* out = mesh.vertices.data() + 3 * static_cast<std::size_t>(id);
+    out[0] = p.x();
+    out[1] = p.y();
+    out[2] = p.z();
+  };
+  // Vertices first (the centroids are made from them): corners by rows of the sphere.
+  for_each_index(parallel, ne + 1, [&](int i) {
+    const int first = row_first(i);
+    const int last = i == 0 || i == ne ? first + 1 : first + na;
+    const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)], cos_el = dirs.cos_el_corner[static_cast<std::size_t>(i)];
+    for (int v = first; v < last; ++v) {
+      const int id = corner_vertex[v];
+      if (id < 0) continue;
+      const std::size_t j = static_cast<std::size_t>(v - first);
+      const double r = far[v];
+      double* out = mesh.vertices.data() + 3 * static_cast<std::size_t>(id);
+      out[0] = s.g.x() + r * (cos_el * dirs.cos_az_corner[j]);
+      out[1] = s.g.y() + r * (cos_el * dirs.sin_az_corner[j]);
+      out[2] = s.g.z() + r * sin_el;
+      if (surface[v] != Surface::radial) out[2] = point_on(s, Vec3::UnitZ(), 0.0, surface[v]).z();
+    }
   });
-  triangle_faces[static_cast<std::size_t>(nt)] = out.num_faces();
-  return out.finish(volume);
+  for (std::size_t k = 0; k < extra_vertex.size(); ++k)
+    set_vertex(extra_vertex[k], point_on(s, sc.extra_direction[k], sc.extra_far[k], sc.extra_surface[k]));
+  for (const Jump& jump : jumps) {
+    if (!jump.confirmed) continue;
+    const double lambda = 0.5 * (jump.lambda_lo + jump.lambda_hi);
+    const Vec3 d = ((1.0 - lambda) * sample_direction(jump.u) + lambda * sample_direction(jump.w)).normalized();
+    set_vertex(jump.vertex, point_on(s, d, distance_on(s, jump.lo_far, jump.lo_surface, d), jump.lo_surface));
+    set_vertex(jump.vertex + 1, point_on(s, d, distance_on(s, jump.hi_far, jump.hi_surface, d), jump.hi_surface));
+  }
+  if (apex >= 0) set_vertex(apex, s.g);
+
+  // Fill pass, with the volume (signed tetrahedra against g, divergence theorem) per row. A
+  // plain slot's face is g + far d at its three corners: its six-fold volume is
+  // r_a r_b r_c det(d_a, d_b, d_c), and the determinant is the same along a row.
+  auto& row_volume = sc.row_volume;
+  row_volume.assign(static_cast<std::size_t>(ne), 0.0);
+  auto position = [&](int id) {
+    const double* p = mesh.vertices.data() + 3 * static_cast<std::size_t>(id);
+    return Vec3(p[0], p[1], p[2]);
+  };
+  for_each_index(parallel, ne, [&](int i) {
+    const std::array<int, 2> first_slot = {2 * i * na, 2 * i * na + 1};
+    double det[2];
+    for (int h = 0; h < 2; ++h) {
+      const Triangle c = slot_corners(first_slot[static_cast<std::size_t>(h)]);
+      det[h] = dirs.corner(c[0]).dot(dirs.corner(c[1]).cross(dirs.corner(c[2])));
+    }
+    std::int32_t* out = mesh.faces.data() + 3 * static_cast<std::size_t>(triangle_faces[static_cast<std::size_t>(2 * i * na)]);
+    int centroid = row_centroid[static_cast<std::size_t>(i)];
+    double plain = 0.0, other = 0.0;
+    auto face = [&](int a, int b, int c) {
+      out[0] = a;
+      out[1] = b;
+      out[2] = c;
+      out += 3;
+      if (a != apex && b != apex && c != apex) other += six_volume_of(s.g, position(a), position(b), position(c));
+    };
+    auto make_centroid = [&](int x, int y, int z) {
+      const int id = centroid++;
+      set_vertex(id, (position(x) + position(y) + position(z)) / 3.0);
+      return id;
+    };
+    const std::uint8_t* f = flags.data() + 2 * i * na;
+    const double* r = far.data();
+    const std::int32_t* id = corner_vertex.data();
+    const int lo = row_first(i), hi = row_first(i + 1);
+    const bool south = i == 0, north = i + 1 == ne;
+    for (int j = 0; j < na; ++j) {
+      const int jn = j + 1 == na ? 0 : j + 1;
+      const int v00 = south ? lo : lo + j, v01 = south ? lo : lo + jn;
+      const int v10 = north ? hi : hi + j, v11 = north ? hi : hi + jn;
+      if (f[2 * j] == kLive) {
+        out[0] = id[v00];
+        out[1] = id[v01];
+        out[2] = id[v11];
+        out += 3;
+        plain += r[v00] * r[v01] * r[v11] * det[0];
+      } else if (f[2 * j] & kLive) {
+        for_each_piece(2 * (i * na + j), [&](const Triangle& piece) { emit(piece, face, make_centroid); });
+      }
+      if ((f[2 * j] & kLive) && !all_alive) border(2 * (i * na + j), Triangle{v00, v01, v11}, face, apex);
+      if (f[2 * j + 1] == kLive) {
+        out[0] = id[v00];
+        out[1] = id[v11];
+        out[2] = id[v10];
+        out += 3;
+        plain += r[v00] * r[v11] * r[v10] * det[1];
+      } else if (f[2 * j + 1] & kLive) {
+        for_each_piece(2 * (i * na + j) + 1, [&](const Triangle& piece) { emit(piece, face, make_centroid); });
+      }
+      if ((f[2 * j + 1] & kLive) && !all_alive) border(2 * (i * na + j) + 1, Triangle{v00, v11, v10}, face, apex);
+    }
+    row_volume[static_cast<std::size_t>(i)] = plain + other;
+  });
+  mesh_timer.stop();
+  PhaseTimer volume_timer(cost ? &cost->volume_s : nullptr);
+  double six_volume = 0.0;
+  for (double r : row_volume) six_volume += r;
+  vv.volume = six_volume / 6.0;
 }
 
 }  // namespace vistrack::detail

@@ -1,15 +1,20 @@
 // alpha(g) of eq. (4) (section III.D) on a direction grid: Embree rays give the visible interval
 // per direction, and the grid corners' intervals give a closed radial mesh.
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <string>
 
 #include "visibility/embree_scene.hpp"
 #include "visibility/radial_mesh.hpp"
+#include "visibility/star_mesh.hpp"
+#include "visibility/trace.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
 #include "vistrack/visibility.hpp"
@@ -92,47 +97,57 @@ std::vector<double> vertex_row_sines(const DirectionGrid& grid, const Setup& s) 
   return sines;
 }
 
-// The visible interval of each ray k < n from g along direction_of(k) (unit), handed to
-// store(k, interval). Traced in parallel chunks of neighbouring directions, 64 per
-// rtcIntersect1M call; rays end where the band, the ground or d_max end the interval anyway, and
-// rays with nothing to see there are not traced at all.
-template <class DirectionOf, class Store>
-void trace_intervals(const detail::EmbreeScene& embree, const Setup& s, std::size_t n, DirectionOf direction_of,
-                     Store store) {
-  const auto t_far = static_cast<float>(s.d_max);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
-    detail::FlushDenormals flush;
-    constexpr std::size_t kChunk = 64;
-    std::array<float, 3 * kChunk> rays{};
-    std::array<float, kChunk> t{}, t_max{};
-    std::array<bool, kChunk> ground{};
-    std::array<std::size_t, kChunk> slot{};
-    std::array<Vec3, kChunk> d;
-    std::array<double, kChunk> hit{};
-    for (std::size_t start = r.begin(); start < r.end(); start += kChunk) {
-      const std::size_t count = std::min(kChunk, r.end() - start);
-      std::size_t traced = 0;
-      for (std::size_t k = 0; k < count; ++k) {
-        d[k] = direction_of(start + k);
-        hit[k] = kInf;
-        const Interval bound = detail::visible_interval(s, d[k].z(), kInf);
-        if (!(bound.far > bound.near)) continue;
-        for (int c = 0; c < 3; ++c) rays[3 * traced + c] = static_cast<float>(d[k][c]);
-        t_max[traced] = static_cast<float>(bound.far) * (1.0f + 1e-6f);
-        slot[traced++] = k;
-      }
-      embree.trace(s.g, rays.data(), traced, 0.0f, t_far, t.data(), ground.data(), t_max.data());
-      // Ground hits are dropped: the ground is applied exactly, and a ray grazing the ground
-      // plane from a POI on it must not stop.
-      for (std::size_t m = 0; m < traced; ++m)
-        if (!ground[m]) hit[slot[m]] = static_cast<double>(t[m]);
-      for (std::size_t k = 0; k < count; ++k) store(start + k, detail::visible_interval(s, d[k].z(), hit[k]));
-    }
-  });
+// Buffers of one VV, kept between VVs (a batch allocates them once per thread).
+struct Workspace {
+  detail::Clearance clearance;
+  std::vector<double> corner_far;
+  std::vector<detail::Surface> corner_surface;
+  std::vector<Interval> corner;  // shell meshes
+  detail::StarMeshScratch star;
+};
+
+// Workspaces lent to the VVs being computed (a pool rather than thread_local: a thread waiting
+// inside one VV's parallel loop may start another VV).
+class WorkspacePool {
+ public:
+  std::unique_ptr<Workspace> acquire() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (free_.empty()) return std::make_unique<Workspace>();
+    std::unique_ptr<Workspace> w = std::move(free_.back());
+    free_.pop_back();
+    return w;
+  }
+  void release(std::unique_ptr<Workspace> w) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    free_.push_back(std::move(w));
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<Workspace>> free_;
+};
+
+WorkspacePool& workspaces() {
+  static WorkspacePool pool;
+  return pool;
 }
 
+class WorkspaceLease {
+ public:
+  WorkspaceLease() : w_(workspaces().acquire()) {}
+  ~WorkspaceLease() { workspaces().release(std::move(w_)); }
+  WorkspaceLease(const WorkspaceLease&) = delete;
+  WorkspaceLease& operator=(const WorkspaceLease&) = delete;
+  Workspace& operator*() { return *w_; }
+
+ private:
+  std::unique_ptr<Workspace> w_;
+};
+
+// The VV; `parallel` spreads its rays and rows over TBB's threads (the result is the same).
 VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_max,
-                         const std::optional<std::pair<double, double>>& band, double resolution_deg) {
+                         const std::optional<std::pair<double, double>>& band, double resolution_deg, bool parallel,
+                         VolumeCost* cost = nullptr) {
   VisibilityVolume vv;
   vv.poi = g;
   vv.d_max = d_max;
@@ -152,36 +167,78 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   }
 
   // Rays: every cell's sample ray (the grid's intervals), then every corner of the sphere grid (the
-  // mesh); the star mesh traces more rays where it locates jumps.
+  // mesh); the star mesh traces more rays where it locates jumps. Rays the clearance bounds show
+  // to meet no obstacle are not traced.
   const std::vector<double> row_sines = vertex_row_sines(vv.grid, s);
   const detail::SphereGrid sphere{static_cast<int>(row_sines.size()) - 1, na};
   const detail::Directions dirs(vv.grid, sphere, row_sines);
   const std::size_t n_cells = vv.grid.size();
   const auto n_corners = static_cast<std::size_t>(sphere.num_vertices());
+  const detail::EmbreeScene& embree = detail::EmbreeScene::of(scene);
+  WorkspaceLease lease;
+  Workspace& w = *lease;
+  detail::PhaseTimer bounds_timer(cost ? &cost->bounds_s : nullptr);
+  w.clearance.compute(embree.obstacles, g - embree.origin, d_max, na);
+  bounds_timer.stop();
+  detail::RayCounts counts;
+  const detail::TraceContext tracer{embree, s, w.clearance, parallel, &counts};
+  detail::PhaseTimer trace_timer(cost ? &cost->trace_s : nullptr);
+
   vv.near.assign(n_cells, 0.0);
   vv.far.assign(n_cells, 0.0);
-  std::vector<Interval> corner(n_corners);
-  const detail::EmbreeScene& embree = detail::EmbreeScene::of(scene);
-  trace_intervals(embree, s, n_cells + n_corners, [&](std::size_t k) { return dirs.ray(k); },
-                  [&](std::size_t k, const Interval& iv) {
-                    if (k >= n_cells) {
-                      corner[k - n_cells] = iv;
-                    } else if (iv.far > iv.near) {
-                      vv.near[k] = iv.near;
-                      vv.far[k] = iv.far;
-                    }
-                  });
+  // Cells row by row: one division per chunk of 64 rays.
+  auto cell_rays = [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
+    std::size_t i = start / static_cast<std::size_t>(na), j = start % static_cast<std::size_t>(na);
+    for (std::size_t m = 0; m < count; ++m) {
+      d[m] = dirs.cell(i, j);
+      column[m] = static_cast<int>(j);
+      if (++j == static_cast<std::size_t>(na)) j = 0, ++i;
+    }
+  };
   if (s.poi_in_band) {
-    const detail::IntervalTracer tracer = [&](const std::vector<Vec3>& directions) {
-      std::vector<Interval> out(directions.size());
-      trace_intervals(embree, s, directions.size(), [&](std::size_t k) { return directions[k]; },
-                      [&](std::size_t k, const Interval& iv) { out[k] = iv; });
-      return out;
-    };
-    vv.mesh = detail::build_star_mesh(s, sphere, dirs, corner, tracer, vv.volume, vv.mesh_triangle_faces);
+    detail::trace_all(tracer, n_cells, cell_rays, [&](std::size_t k, const Vec3& d, double hit) {
+      detail::Surface surface;
+      const double far = detail::star_far(s, d.z(), hit, surface);
+      vv.far[k] = far > 0.0 ? far : 0.0;
+    });
+  } else {
+    detail::trace_all(tracer, n_cells, cell_rays, [&](std::size_t k, const Vec3& d, double hit) {
+      const Interval iv = detail::visible_interval(s, d.z(), hit);
+      if (iv.far > iv.near) {
+        vv.near[k] = iv.near;
+        vv.far[k] = iv.far;
+      }
+    });
+  }
+  // A corner ray lies on its column's left edge (the poles in every column).
+  auto corner_ray = [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
+    for (std::size_t m = 0; m < count; ++m) {
+      const std::size_t k = start + m;
+      d[m] = dirs.corner(static_cast<int>(k));
+      column[m] = k == 0 || k + 1 == n_corners ? 0 : static_cast<int>((k - 1) % static_cast<std::size_t>(na));
+    }
+  };
+  if (s.poi_in_band) {
+    w.corner_far.resize(n_corners);
+    w.corner_surface.resize(n_corners);
+    detail::trace_all(tracer, n_corners, corner_ray, [&](std::size_t k, const Vec3& d, double hit) {
+      w.corner_far[k] = detail::star_far(s, d.z(), hit, w.corner_surface[k]);
+    });
+    trace_timer.stop();
+    detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, tracer, w.star, vv, cost);
     vv.mesh_row_sines = row_sines;
   } else {
-    vv.mesh = detail::build_shell_mesh(s, sphere, dirs, corner, vv.volume);
+    w.corner.resize(n_corners);
+    detail::trace_all(tracer, n_corners, corner_ray, [&](std::size_t k, const Vec3& d, double hit) {
+      w.corner[k] = detail::visible_interval(s, d.z(), hit);
+    });
+    trace_timer.stop();
+    detail::PhaseTimer mesh_timer(cost ? &cost->mesh_s : nullptr);
+    vv.mesh = detail::build_shell_mesh(s, sphere, dirs, w.corner, vv.volume);
+  }
+  if (cost != nullptr) {
+    cost->rays_traced += counts.traced;
+    cost->rays_skipped += counts.skipped;
   }
   return vv;
 }
@@ -192,7 +249,21 @@ VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, 
                                    std::optional<std::pair<double, double>> altitude_band, double resolution_deg) {
   validate(scene, g, d_max, altitude_band, "g");
   (void)DirectionGrid::from_resolution(resolution_deg);
-  return compute(scene, g, d_max, altitude_band, resolution_deg);
+  // One VV alone: its rays and rows over every thread, isolated so that a thread waiting in it
+  // takes no unrelated task.
+  VisibilityVolume vv;
+  tbb::this_task_arena::isolate([&] { vv = compute(scene, g, d_max, altitude_band, resolution_deg, true); });
+  return vv;
+}
+
+VisibilityVolume visibility_volume_with_cost(const VisibilityScene& scene, const Vec3& g, double d_max,
+                                             std::optional<std::pair<double, double>> altitude_band,
+                                             double resolution_deg, VolumeCost& cost, bool parallel) {
+  validate(scene, g, d_max, altitude_band, "g");
+  (void)DirectionGrid::from_resolution(resolution_deg);
+  VisibilityVolume vv;
+  tbb::this_task_arena::isolate([&] { vv = compute(scene, g, d_max, altitude_band, resolution_deg, parallel, &cost); });
+  return vv;
 }
 
 VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double d_max,
@@ -208,8 +279,11 @@ std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, c
   for (Eigen::Index k = 0; k < pois.rows(); ++k)
     validate(scene, pois.row(k).transpose(), d_max, altitude_band, "pois[" + std::to_string(k) + "]");
   std::vector<VisibilityVolume> result(static_cast<std::size_t>(pois.rows()));
+  // One VV per thread; a batch smaller than the thread count also spreads each VV.
+  const bool parallel_inside = pois.rows() < tbb::this_task_arena::max_concurrency();
   tbb::parallel_for(Eigen::Index{0}, pois.rows(), [&](Eigen::Index k) {
-    result[static_cast<std::size_t>(k)] = compute(scene, pois.row(k).transpose(), d_max, altitude_band, resolution_deg);
+    result[static_cast<std::size_t>(k)] = compute(scene, pois.row(k).transpose(), d_max, altitude_band, resolution_deg,
+                                                  parallel_inside);
   });
   return result;
 }

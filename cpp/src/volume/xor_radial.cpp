@@ -27,6 +27,10 @@
 namespace vistrack {
 namespace {
 
+// Faces holding volume over one triangle slot of a VV mesh: up to four pieces of a split slot,
+// each with up to four faces beside its wall (visibility/star_mesh.cpp).
+constexpr std::size_t kMaxSlotFaces = 16;
+
 // A face seen from the origin (its POI): corners p in outward order and its plane n . x = d.
 struct Face {
   std::array<Vec3, 3> p;
@@ -106,7 +110,7 @@ Cone overlap(const Face& a, const Face& b) {
 
 // The faces of `vv` over triangle slot t that hold volume about the POI (the radial surface; not
 // the walls and fans, whose planes pass through it), in the POI frame.
-int graph_faces(const VisibilityVolume& vv, std::size_t t, std::array<Face, 8>& out) {
+int graph_faces(const VisibilityVolume& vv, std::size_t t, std::array<Face, kMaxSlotFaces>& out) {
   int count = 0;
   for (std::int32_t f = vv.mesh_triangle_faces[t]; f < vv.mesh_triangle_faces[t + 1]; ++f) {
     Face face;
@@ -125,7 +129,7 @@ int graph_faces(const VisibilityVolume& vv, std::size_t t, std::array<Face, 8>& 
 // XOR over slot t: pairwise overlaps of the faces of a and b (one face each when neither has a
 // wall there: the same cone), or the whole volume of one side where the other sees nothing.
 double slot_xor(const VisibilityVolume& a, const VisibilityVolume& b, std::size_t t) {
-  std::array<Face, 8> fa, fb;
+  std::array<Face, kMaxSlotFaces> fa, fb;
   const int na = graph_faces(a, t, fa);
   const int nb = graph_faces(b, t, fb);
   double total = 0.0;
@@ -145,7 +149,7 @@ double slot_xor(const VisibilityVolume& a, const VisibilityVolume& b, std::size_
 }
 
 struct SlotFaces {
-  std::array<Face, 8> face;
+  std::array<Face, kMaxSlotFaces> face;
   int size = 0;
 };
 

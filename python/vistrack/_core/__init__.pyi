@@ -12,7 +12,7 @@ from . import flight
 from . import waypoint_nav
 from . import loiter
 from . import follow
-__all__: list[str] = ['CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'WorkEstimate', 'check_closed_mesh', 'check_work', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'estimate_work', 'flight', 'follow', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'limits', 'loiter', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volumes', 'volume_bytes', 'waypoint_nav', 'wrap_to_pi', 'xor_volume']
+__all__: list[str] = ['Ceiling', 'CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'LocusCheck', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RadiusProfile', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'SmoothRadiusLimits', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'WorkEstimate', 'check_closed_mesh', 'check_work', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'estimate_work', 'flight', 'follow', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'limits', 'loiter', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'smooth_radius', 'smooth_radius_violation', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volume_cost', 'visibility_volumes', 'visible_disk_radius', 'volume_bytes', 'waypoint_nav', 'wrap_to_pi', 'xor_volume']
 class VistrackError(ValueError):
     pass
 class Polygon:
@@ -136,14 +136,30 @@ class Planning:
     """
     Adaptive placement of visibility volumes (section IV.B).
     """
-    def __init__(self, *, spacing: typing.SupportsFloat | typing.SupportsIndex = 20.0, cutoff: typing.SupportsFloat | typing.SupportsIndex = 20000000.0, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_depth: typing.SupportsInt | typing.SupportsIndex = 8, rate_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0, max_volumes: typing.SupportsInt | typing.SupportsIndex = 20000) -> None:
+    def __init__(self, *, spacing: typing.SupportsFloat | typing.SupportsIndex = 20.0, cutoff: typing.SupportsFloat | typing.SupportsIndex = 20000000.0, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_depth: typing.SupportsInt | typing.SupportsIndex = 8, rate_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0, locus: str = 'smooth', tracking_margin: typing.SupportsFloat | typing.SupportsIndex = 1.0, check_spacing: typing.SupportsFloat | typing.SupportsIndex = 10.0, check_min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, turn_share: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_volumes: typing.SupportsInt | typing.SupportsIndex = 20000) -> None:
         """
-        spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin, max_volumes (the largest worst-case VV count a plan may ask for).
+        spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin; locus 'smooth' (checked between samples, C1, the default) or 'paper' (Algorithm 1, piecewise linear); tracking_margin (m), check_spacing and check_min_spacing (m), turn_share (smooth locus only); max_volumes (the largest worst-case VV count a plan may ask for).
         """
     def validate(self) -> None:
         """
         Raise VistrackError naming the first invalid field.
         """
+    @property
+    def check_min_spacing(self) -> float:
+        """
+        smooth locus: the check halves intervals where R(t) touches its bound down to this (m)
+        """
+    @check_min_spacing.setter
+    def check_min_spacing(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def check_spacing(self) -> float:
+        """
+        smooth locus: MaxRadius is checked every check_spacing m of POI travel, then refined
+        """
+    @check_spacing.setter
+    def check_spacing(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
     @property
     def cutoff(self) -> float:
         """
@@ -151,6 +167,14 @@ class Planning:
         """
     @cutoff.setter
     def cutoff(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def locus(self) -> str:
+        """
+        'smooth': R(t) checked against MaxRadius along the whole path, tracking_margin inside it, C1 with bounded d2R/dt2 (default); 'paper': Algorithm 1's piecewise-linear R(t) through the samples
+        """
+    @locus.setter
+    def locus(self, arg1: str) -> None:
         ...
     @property
     def max_depth(self) -> int:
@@ -199,6 +223,22 @@ class Planning:
         """
     @spacing.setter
     def spacing(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def tracking_margin(self) -> float:
+        """
+        smooth locus: R(t) stays this far inside MaxRadius (m)
+        """
+    @tracking_margin.setter
+    def tracking_margin(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def turn_share(self) -> float:
+        """
+        smooth locus: share of the turn rate Lemma 6 leaves free that d2R/dt2 may use, in (0, 1)
+        """
+    @turn_share.setter
+    def turn_share(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
 class Control:
     """
@@ -690,9 +730,54 @@ class MeshCheck:
         """
         CGAL's volume (m^3).
         """
+class RadiusProfile:
+    """
+    R(t) as the guidance follows it: piecewise linear between the knots (times, radii) when rates is empty (the paper's locus, Definition 2), else C1 piecewise quadratic with dR/dt = rates at the knots (the smooth locus).
+    """
+    def __init__(self, times: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], radii: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], rates: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex] = []) -> None:
+        """
+        Knots, R at the knots, and dR/dt at the knots (empty: piecewise linear).
+        """
+    def acceleration_at(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        d2R/dt2 at every element of t (0 when piecewise linear).
+        """
+    def radius_at(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        R(t) at every element of t (numpy in, numpy out).
+        """
+    def rate_at(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        dR/dt at every element of t.
+        """
+    @property
+    def min_radius(self) -> float:
+        """
+        The smallest R(t) (m).
+        """
+    @property
+    def radii(self) -> list[float]:
+        """
+        R at the knots (m).
+        """
+    @property
+    def rates(self) -> list[float]:
+        """
+        dR/dt at the knots (m/s); empty when piecewise linear.
+        """
+    @property
+    def smooth(self) -> bool:
+        """
+        True for the C1 piecewise-quadratic form.
+        """
+    @property
+    def times(self) -> list[float]:
+        """
+        Knot times (s).
+        """
 class OrbitPlan:
     """
-    Time-varying reference orbit about the POI that the guidance follows: R(t) piecewise linear between the knots (times, radii), centred on the POI path g(t) (eq. 5).
+    Time-varying reference orbit about the POI that the guidance follows (eq. 5): centred on the POI path g(t), of radius R(t) = `reference` (piecewise linear through (times, radii) for the paper's locus, C1 piecewise quadratic for the smooth one).
     """
     @staticmethod
     def from_json(text: str) -> OrbitPlan:
@@ -701,11 +786,23 @@ class OrbitPlan:
         """
     def radius(self, t: typing.SupportsFloat | typing.SupportsIndex) -> float:
         """
-        R(t), linear between samples.
+        R(t) of the reference.
+        """
+    def radius_acceleration(self, t: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        d2R/dt2 of the reference.
+        """
+    def radius_at(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        R(t) exactly as the controller follows it, at every element of t (numpy in, numpy out).
         """
     def radius_rate(self, t: typing.SupportsFloat | typing.SupportsIndex) -> float:
         """
-        dR/dt on the segment containing t.
+        dR/dt of the reference (on the segment containing t).
+        """
+    def radius_rate_at(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        dR/dt of the reference at every element of t.
         """
     def to_json(self) -> str:
         """
@@ -728,7 +825,12 @@ class OrbitPlan:
     @property
     def infeasibility(self) -> str:
         """
-        Which sample fails and why.
+        Which sample or time fails and why.
+        """
+    @property
+    def knot_times(self) -> list[float]:
+        """
+        Knots of the reference: where dR/dt or d2R/dt2 may jump (the closed loop restarts there).
         """
     @property
     def poi(self) -> PoiPath:
@@ -738,12 +840,17 @@ class OrbitPlan:
     @property
     def radii(self) -> list[float]:
         """
-        Orbit radii R(t_k) (m).
+        R(t_k) on the reference (m).
+        """
+    @property
+    def reference(self) -> RadiusProfile:
+        """
+        R(t) as the guidance follows it (a RadiusProfile, the piecewise-linear default filled in).
         """
     @property
     def times(self) -> list[float]:
         """
-        Knot times t_k (s).
+        Sample times t_k (s): the orbit centres g(t_k).
         """
 class WorkEstimate:
     """
@@ -799,6 +906,129 @@ class CircularOrbits:
     def radius_rates(self) -> list[float]:
         """
         dR/dt per segment (m/s).
+        """
+class SmoothRadiusLimits:
+    """
+    Bounds of a smooth R(t): |dR/dt| <= max_rate and |d2R/dt2| <= turn_share (v / r_min - v (1 + v_g/v)^2 / R_lo) sqrt(v^2 - (v_g + |dR/dt|)^2).
+    """
+    def __init__(self, *, uav_speed: typing.SupportsFloat | typing.SupportsIndex = 20.0, poi_speed: typing.SupportsFloat | typing.SupportsIndex = 5.0, min_turn_radius: typing.SupportsFloat | typing.SupportsIndex = 50.0, max_rate: typing.SupportsFloat | typing.SupportsIndex = 15.0, turn_share: typing.SupportsFloat | typing.SupportsIndex = 0.5) -> None:
+        """
+        v, v_g, r_min, the rate bound (<= v - v_g), turn_share.
+        """
+    def max_acceleration(self, r_lo: typing.SupportsFloat | typing.SupportsIndex, rate: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        The bound on |d2R/dt2| for R >= r_lo and dR/dt = rate.
+        """
+    @property
+    def max_rate(self) -> float:
+        ...
+    @property
+    def min_turn_radius(self) -> float:
+        ...
+    @property
+    def poi_speed(self) -> float:
+        ...
+    @property
+    def turn_share(self) -> float:
+        ...
+    @property
+    def uav_speed(self) -> float:
+        ...
+class Ceiling:
+    """
+    An upper bound on R(t), piecewise linear: from starts[j] to ends[j] on [breaks[j], breaks[j+1]] (the smaller side at a break).
+    """
+    def __init__(self, breaks: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], starts: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], ends: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex] | None = None) -> None:
+        """
+        Break times, the ceiling at the start and at the end of each interval (ends=None: a step ceiling).
+        """
+    def at(self, t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        The ceiling at every element of t.
+        """
+    @property
+    def breaks(self) -> list[float]:
+        """
+        Break times (s).
+        """
+    @property
+    def ends(self) -> list[float]:
+        """
+        Value at the end of each interval (m).
+        """
+    @property
+    def starts(self) -> list[float]:
+        """
+        Value at the start of each interval (m).
+        """
+class LocusCheck:
+    """
+    The locus check of a smooth plan: MaxRadius along the whole POI path, the ceilings R(t) obeys between check points, and how much lower than the paper's piecewise-linear R(t) it is.
+    """
+    @property
+    def arc_lengths(self) -> list[float]:
+        """
+        s_j of the check points (m).
+        """
+    @property
+    def ceiling(self) -> Ceiling:
+        """
+        The bound R(t) obeys: the lower bound of MaxRadius between check points minus the tracking margin.
+        """
+    @property
+    def lowering(self) -> list[float]:
+        """
+        Paper R(t_j) - smooth R(t_j) per check point (m).
+        """
+    @property
+    def max_lowering(self) -> float:
+        """
+        Its largest value (m).
+        """
+    @property
+    def max_lowering_time(self) -> float:
+        """
+        Where (s).
+        """
+    @property
+    def max_radii(self) -> list[float]:
+        """
+        MaxRadius at the check points (m).
+        """
+    @property
+    def min_clearance(self) -> float:
+        """
+        min_j MaxRadius - smooth R (m).
+        """
+    @property
+    def paper_max_violation(self) -> float:
+        """
+        By how much at most (m).
+        """
+    @property
+    def paper_violations(self) -> int:
+        """
+        Check points where the paper's piecewise-linear R(t) exceeds MaxRadius.
+        """
+    @property
+    def rounds(self) -> int:
+        """
+        Refinement rounds.
+        """
+    @property
+    def slope_bounds(self) -> list[float]:
+        """
+        Per interval: the MaxRadius slope assumed (m per m).
+        """
+    @property
+    def times(self) -> list[float]:
+        """
+        t_j of the check points (s).
+        """
+    @property
+    def volumes_computed(self) -> int:
+        """
+        VVs the check computed.
         """
 class Discretization:
     """
@@ -866,6 +1096,11 @@ class VisibilityOrbitPlan(OrbitPlan):
         s_k of the samples (m).
         """
     @property
+    def check(self) -> LocusCheck:
+        """
+        The locus check (a LocusCheck; empty for the paper's locus).
+        """
+    @property
     def depths(self) -> list[int]:
         """
         Refinement depth of each sample.
@@ -916,7 +1151,7 @@ class VisibilityOrbitPlan(OrbitPlan):
     @property
     def radius_rates(self) -> list[float]:
         """
-        dR/dt per segment (m/s).
+        dR/dt per sample segment of Algorithm 1's piecewise-linear R(t) (m/s).
         """
     @property
     def sensor(self) -> Sensor:
@@ -973,9 +1208,9 @@ class OrbitState:
     """
     The reference orbit at one instant (Definitions 1-2): centre g, its velocity g_dot, radius R and dR/dt.
     """
-    def __init__(self, *, center: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., center_velocity: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., radius: typing.SupportsFloat | typing.SupportsIndex = 1.0, radius_rate: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, *, center: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., center_velocity: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., radius: typing.SupportsFloat | typing.SupportsIndex = 1.0, radius_rate: typing.SupportsFloat | typing.SupportsIndex = 0.0, radius_acceleration: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         """
-        center g (m), center_velocity g_dot (m/s), radius R (m), radius_rate dR/dt (m/s).
+        center g (m), center_velocity g_dot (m/s), radius R (m), radius_rate dR/dt (m/s), radius_acceleration d2R/dt2 (m/s^2; 0 on the paper's piecewise-linear locus).
         """
     def validate(self) -> None:
         """
@@ -1004,6 +1239,14 @@ class OrbitState:
         """
     @radius.setter
     def radius(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def radius_acceleration(self) -> float:
+        """
+        d2R/dt2, m/s^2
+        """
+    @radius_acceleration.setter
+    def radius_acceleration(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def radius_rate(self) -> float:
@@ -1494,6 +1737,14 @@ def slice_mesh(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64,
     """
     Polygons (with holes) where the plane z = altitude cuts a closed mesh (CGAL Polygon_mesh_slicer).
     """
+def smooth_radius(ceiling: Ceiling, limits: SmoothRadiusLimits, knot_spacing: typing.SupportsFloat | typing.SupportsIndex = 0.0, passes: typing.SupportsInt | typing.SupportsIndex = 2) -> RadiusProfile:
+    """
+    The C1 quadratic spline on uniform knots (knot_spacing; <= 0: picked from the d2R/dt2 bound) with the largest integral of R(t) under the ceiling that obeys `limits`: a banded linear program solved by a log-barrier interior point method, re-solved passes - 1 times with the d2R/dt2 budget of the radii reached. A RadiusProfile.
+    """
+def smooth_radius_violation(profile: RadiusProfile, limits: SmoothRadiusLimits) -> str:
+    """
+    Why a smooth RadiusProfile breaks `limits` (|dR/dt| at a knot, |d2R/dt2| on a segment against the bound at its smallest R), or '' when it keeps them all.
+    """
 def solve_ode(fun: collections.abc.Callable[[float, typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]], typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"]], t_span: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], y0: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], *, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-06, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-08, max_step: typing.SupportsFloat | typing.SupportsIndex = ..., first_step: typing.SupportsFloat | typing.SupportsIndex = 0.0, fixed_step: typing.SupportsFloat | typing.SupportsIndex = 0.0, t_eval: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex] = [], events: collections.abc.Sequence[typing.Any] = []) -> OdeResult:
     """
     Dormand-Prince 5(4) for dy/dt = fun(t, y) over t_span = (t0, t1), like scipy.integrate.solve_ivp(method='RK45'): adaptive steps (rtol, atol, max_step, first_step; 0 = automatic), or fixed_step > 0 for fixed steps. Output at t_eval (dense output) or at every step. events: callables event(t, y) with optional attributes direction (+1, -1, 0) and terminal (bool or count), located on the dense output.
@@ -1514,9 +1765,17 @@ def visibility_volume(scene: VisibilityScene, g: typing.Annotated[numpy.typing.A
     """
     Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when given, on a grid of about resolution_deg degrees.
     """
+def visibility_volume_cost(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, parallel: bool = True) -> tuple[VisibilityVolume, dict]:
+    """
+    visibility_volume and where its time and rays went: (vv, {bounds_s, trace_s, refine_s, mesh_s, volume_s (seconds), rays_traced, rays_skipped (cell and corner rays traced / decided by the bounds alone), refine_rays}); parallel=False keeps it on the calling thread (as in a batch).
+    """
 def visibility_volumes(scene: VisibilityScene, pois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> list[VisibilityVolume]:
     """
     VVs for every row of pois (n, 3), in parallel over the points.
+    """
+def visible_disk_radius(scene: VisibilityScene, poi: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], altitude: typing.SupportsFloat | typing.SupportsIndex, sensor: Sensor, azimuths: typing.SupportsInt | typing.SupportsIndex = 360, rings: typing.SupportsInt | typing.SupportsIndex = 8) -> float:
+    """
+    MaxRadius by line of sight (the locus check's probe): the largest disk at world z = altitude centred above the POI (placed on the surface) every point of which sees it, by occlusion rays along `azimuths` directions on `rings` circles and then by bisection.
     """
 def volume_bytes(resolution_deg: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """

@@ -119,6 +119,10 @@ class Plan:
         """
         Samples (t, poses, turn_rate, segment) at t = 0, dt, ...; include_end appends the end point.
         """
+    def to_mission(self, georeference: typing.Any, altitude: typing.Any, *, speed: typing.Any = None, max_step_deg: typing.SupportsFloat | typing.SupportsIndex = 30.0, acceptance_radius: typing.Any = None, return_to_launch: bool = False, firmware: str = 'ardupilot', altitude_mode: str = 'relative') -> typing.Any:
+        """
+        The plan as an autopilot mission (vistrack.mission.Mission; save it as .plan, .waypoints or .geojson) along the planned path: waypoints at the ends of lines and along the turns, each loiter a NAV_LOITER_TURNS of its whole turns (radius signed: positive clockwise) started at the plan's entry point on the circle, then waypoints along the circle to its exit point. georeference: vistrack.Georeference or (lat, lon[, alt]); altitude: m above the ground at the origin. See vistrack.mission.loiter_plan_mission.
+        """
     @property
     def aoi_radius(self) -> float:
         """
@@ -241,15 +245,19 @@ class Camera:
     """
     Section 2.2's camera: circular field of view fov_deg, roll gimbal +-max_gimbal_deg, altitude above the AOIs (61 m gives the paper's 6,638 m^2 nadir footprint).
     """
-    def __init__(self, fov_deg: typing.SupportsFloat | typing.SupportsIndex = 74.0, max_gimbal_deg: typing.SupportsFloat | typing.SupportsIndex = 25.0, altitude: typing.SupportsFloat | typing.SupportsIndex = 61.0) -> None:
+    def __init__(self, fov_deg: typing.SupportsFloat | typing.SupportsIndex = 74.0, max_gimbal_deg: typing.SupportsFloat | typing.SupportsIndex = 25.0, altitude: typing.SupportsFloat | typing.SupportsIndex = 61.0, levelled: bool = True) -> None:
         """
-        fov_deg (full angle), max_gimbal_deg, altitude (m).
+        fov_deg (full angle), max_gimbal_deg, altitude (m); levelled: the gimbal angle is measured from the vertical (the paper), else the gimbal sits under the banked body (its belly faces out of turns).
         """
     def __repr__(self) -> str:
         ...
     def footprint(self, pose: typing.Annotated[collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], "FixedSize(3)"], tilt: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> Footprint:
         """
         Ground footprint (an ellipse) at pose (x, y, psi) with the axis tilted `tilt` rad to the left.
+        """
+    def tilt(self, bank: typing.SupportsFloat | typing.SupportsIndex, gimbal: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        The axis' tilt to the left of vertical, rad, for a bank and a gimbal angle (rad, positive left).
         """
     def validate(self) -> None:
         """
@@ -270,6 +278,14 @@ class Camera:
         """
     @fov_deg.setter
     def fov_deg(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def levelled(self) -> bool:
+        """
+        True: the gimbal angle is measured from the vertical (the paper's camera); False: the gimbal rolls with the banked body, so the axis tilts by gimbal - bank.
+        """
+    @levelled.setter
+    def levelled(self, arg0: bool) -> None:
         ...
     @property
     def max_gimbal_deg(self) -> float:
@@ -317,6 +333,11 @@ class Coverage:
     def steps(self) -> int:
         """
         Number of time steps.
+        """
+    @property
+    def tilt(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        Per step: the camera axis' tilt to the left of vertical, rad (Camera.tilt of bank and gimbal).
         """
     @property
     def time(self) -> float:

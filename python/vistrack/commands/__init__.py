@@ -163,8 +163,9 @@ def add_export_arguments(parser: argparse.ArgumentParser, direction: bool = Fals
 
     parser.add_argument("--export", action="append", default=[], metavar="FILE",
                         help="also write the route for an autopilot or a map, by suffix: .plan (QGroundControl), "
-                             ".waypoints/.txt (QGC WPL 110), .geojson (WGS84); repeatable. Needs --origin, the "
-                             "scenario's origin or a longitude/latitude map")
+                             ".waypoints/.txt (QGC WPL 110), .geojson (WGS84); repeatable. Placed by --origin, "
+                             "else the scenario's origin or a longitude/latitude map (loiter and follow: else "
+                             "Charlotte's origin, with a note)")
     parser.add_argument("--origin", type=origin, default=None, metavar="LAT,LON[,ALT]",
                         help="where local (0, 0, 0) lies: WGS84 degrees and metres above sea level (projects a "
                              "longitude/latitude GeoJSON map and georeferences --export)")
@@ -172,10 +173,24 @@ def add_export_arguments(parser: argparse.ArgumentParser, direction: bool = Fals
         parser.add_argument("--direction", default="ccw", choices=["ccw", "cw"], help="orbit direction for --export")
 
 
+# Where planners without a map (loiter, follow) put their missions when no --origin is given: the
+# Charlotte data's origin (a printed note says so).
+DEFAULT_EXPORT_ORIGIN = Georeference(35.2249, -80.8403)
+
+
 def export_georeference(paths: Sequence[str], georeference: Georeference | None,
-                        env: Environment | None = None) -> Georeference:
-    """The georeference for --export: --origin / the scenario's, else the map's (env.origin)."""
+                        env: Environment | None = None, fallback: Georeference | None = None) -> Georeference:
+    """The georeference for --export: --origin / the scenario's, else the map's (env.origin), else
+    ``fallback`` (with a printed note)."""
+    for path in paths:
+        if Path(path).suffix.lower() not in MISSION_SUFFIXES:
+            raise VistrackError(f"--export = {path}: unknown format; the suffix must be one of "
+                                + ", ".join(MISSION_SUFFIXES))
     reference = georeference or Georeference.of(env)
+    if reference is None and fallback is not None:
+        print(f"--export: no --origin given; local (0, 0) placed at {fallback.lat},{fallback.lon} "
+              "(give --origin LAT,LON to fly it elsewhere)")
+        reference = fallback
     if reference is None:
         raise UsageError(f"--export = {paths[0]}: needs a georeference; give --origin LAT,LON (or origin: "
                          "[lat, lon] in the scenario, or a map in longitude/latitude)")
@@ -205,13 +220,25 @@ def export_plan(paths: Sequence[str], plan: OrbitPlan, georeference: Georeferenc
 
 
 def export_mission(paths: Sequence[str], build: Callable[[Georeference], Mission], georeference: Georeference | None,
-                   env: Environment | None = None) -> None:
+                   env: Environment | None = None, fallback: Georeference | None = None) -> None:
     """--export for any planner: ``build(georeference)`` (its ``to_mission``) saved to each file
     by suffix (.plan, .waypoints, .txt, .geojson); prints what was written."""
     if paths:
-        mission = build(export_georeference(paths, georeference, env))
+        mission = build(export_georeference(paths, georeference, env, fallback))
         for path in paths:
             print(f"wrote {mission.save(path)}: {len(mission)} mission items")
+
+
+def export_missions(paths: Sequence[str], builds: dict[str, Callable[[Georeference], Mission]],
+                    georeference: Georeference | None, fallback: Georeference | None = None) -> None:
+    """--export of several plans (by label, e.g. one per method): one plan goes to the files as
+    given, several to FILE_<label>.suffix each."""
+    if not paths:
+        return
+    reference = export_georeference(paths, georeference, None, fallback)
+    for label, build in builds.items():
+        files = paths if len(builds) == 1 else [str(Path(p).with_stem(f"{Path(p).stem}_{label}")) for p in paths]
+        export_mission(files, build, reference)
 
 
 def add_report_arguments(parser: Any) -> None:

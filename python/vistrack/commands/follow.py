@@ -3,8 +3,11 @@
 Flies the paper's planner (sinusoid below the speed-ratio threshold, loiter above it with a
 hysteresis band, an offset point, waypoints at 1 Hz) with the flight layer, beside the tracking
 pipeline's vector-field baseline, and, when the scenario has a city section, both again on a city
-road with line of sight through the buildings. Writes figures, trajectory.csv and metrics.json
-to --out. Scenario keys: see vistrack/follow_scenario.py and examples/follow_*.yaml.
+road with line of sight through the buildings. Writes figures, trajectory.csv, metrics.json,
+report.md, trajectory.gif (plan view: vehicle, UAV, camera footprint, wind, line of sight on the
+city road; trajectory_open.gif then adds the open-ground run) and report.html (the same in 3D
+with a time slider, and the report) to --out. Scenario keys: see vistrack/follow_scenario.py and
+examples/follow_*.yaml.
 """
 
 from __future__ import annotations
@@ -14,6 +17,7 @@ from pathlib import Path
 
 from ..follow_scenario import FollowScenario
 from ..report.follow import write_follow
+from . import DEFAULT_EXPORT_ORIGIN, add_export_arguments, add_report_arguments, export_mission, report_options
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -25,21 +29,31 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--no-compensation", dest="compensation", action="store_false", default=None,
                         help="plan without the wind estimate (the paper's Fig. 6)")
     parser.add_argument("--no-city", dest="city", action="store_false", help="skip the city runs")
+    parser.add_argument("--export-tolerance", type=float, default=1.0, metavar="M",
+                        help="--export keeps the 1 Hz waypoints Douglas-Peucker needs at this tolerance "
+                             "(default 1 m; 0: every waypoint)")
+    add_export_arguments(parser)
     parser.add_argument("--quiet", action="store_true", help="no progress lines")
+    add_report_arguments(parser)
     parser.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    options = report_options(args)
     scenario = FollowScenario.load(args.scenario)
     city = args.city and scenario.city_available()
     if args.city and scenario.city is not None and not city:
         print(f"city data not found ({scenario.city.map}): skipping the city runs")
     study = scenario.run(args.compensation, city, None if args.quiet else lambda name: print(f"{name} ...", flush=True))
-    record = write_follow(study, args.out, scenario.description)
+    record = write_follow(study, args.out, scenario.description, options)
     modes = ", ".join(f"{k} {v:.0f} s" for k, v in record["time_in_mode_s"].items() if v > 0)
     print(f"tracking error {record['mean_tracking_error_m']:.2f} m mean, {record['max_tracking_error_m']:.1f} m max; "
           f"lag {record['along_track_lag_m']:.1f} m; {modes}; {record['mode_switches']} switches; "
           f"camera {100 * record['camera_fraction']:.1f} %"
           + (f" (baseline {100 * record['baseline']['camera_fraction']:.1f} %)" if "baseline" in record else "")
           + f" -> {args.out}")
+    uav = scenario.uav
+    export_mission(args.export, lambda ref: study.follow.to_mission(
+        ref, uav.altitude, speed=uav.speed, tolerance=args.export_tolerance), args.origin or scenario.origin, None,
+        DEFAULT_EXPORT_ORIGIN)
     return 0

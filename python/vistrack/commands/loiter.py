@@ -1,21 +1,35 @@
 """``vistrack loiter``: Fly-Through, TLPP and LDLPP loiter plans over areas of interest, scored by
 camera coverage (Wilhelm, Clem, Eberhart 2017).
 
-One scenario file: plans.png (the methods side by side), metrics.json, path_<method>.csv. Several
-files: the same per scenario in sub-folders, plus table.md / table.json (ours beside Table 1),
-fig13_scenarios.png and fig14_comparison.png. --random N: N seeded random scenarios, the
-distributions per method (random.md, random.json, random_distribution.png).
+One scenario file: plans.png (the methods side by side), metrics.json, path_<method>.csv,
+report.md, trajectory.gif (plan view: AOIs, plans, every method's aircraft at once with the camera
+footprint the coverage scores, in the first --wind when given) and report.html (the same in 3D with
+a time slider, and the report). Several files: the same per scenario in sub-folders, plus
+table.md / table.json (ours beside Table 1), fig13_scenarios.png and fig14_comparison.png.
+--random N: N seeded random scenarios, the distributions per method (random.md, random.json,
+random_distribution.png).
 """
 
 from __future__ import annotations
 
 import argparse
+from functools import partial
 from pathlib import Path
 
 from .. import loiter, loiter_study
 from ..progress import Progress
 from ..report import loiter as report
-from . import UsageError, count, output_folder, positive_numbers
+from . import (
+    DEFAULT_EXPORT_ORIGIN,
+    UsageError,
+    add_export_arguments,
+    add_report_arguments,
+    count,
+    export_missions,
+    output_folder,
+    positive_numbers,
+    report_options,
+)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -35,7 +49,10 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="fly every plan in this unknown constant wind (m/s east, north); repeatable")
     p.add_argument("--wind-sweep", type=positive_numbers("--wind-sweep", "5,10"), default=[], metavar="SPEEDS",
                    help="also fly every plan in winds of these speeds (m/s) from 8 directions")
+    p.add_argument("--altitude", type=float, help="mission altitude for --export, m (default: the camera's, 61 m)")
+    add_export_arguments(p)
     p.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_report_arguments(p)
     p.add_argument("--out", type=Path, required=True, help="output folder (created)")
     p.set_defaults(func=run)
 
@@ -51,7 +68,12 @@ def parse_wind(text: str) -> tuple[float, float]:
 
 
 def run(args: argparse.Namespace) -> int:
-    winds = [parse_wind(w) for w in args.wind] + loiter_study.wind_directions(args.wind_sweep)
+    options = report_options(args)
+    if args.export and (len(args.scenarios) > 1 or (args.random or 1) > 1):
+        raise UsageError(f"--export = {args.export[0]}: exports one scenario's plans; give one scenario file "
+                         "or --random 1")
+    given = [parse_wind(w) for w in args.wind]
+    winds = given + loiter_study.wind_directions(args.wind_sweep)
     output_folder(args.out)  # a file there is an error now, not after the plans
     if args.random is not None:
         if args.scenarios:
@@ -70,7 +92,7 @@ def run(args: argparse.Namespace) -> int:
         for scenario in scenarios:
             runs = loiter_study.evaluate(scenario, args.method, args.order, winds)
             folder = args.out if len(scenarios) == 1 else args.out / scenario.name
-            written += report.write_scenario(folder, scenario, runs)
+            written += report.write_scenario(folder, scenario, runs, options, given[0] if given else None)
             rows += [run.record(scenario) for run in runs]
             for run in runs:
                 line = (f"{scenario.name} {run.method}: {run.plan.flight_time / 60:.2f} min, transit "
@@ -84,5 +106,12 @@ def run(args: argparse.Namespace) -> int:
         if len(scenarios) > 1:
             written += report.write_table(args.out, scenarios, rows)
             print((args.out / "table.md").read_text(encoding="utf-8"), end="")
+    if args.export:  # one scenario's plans as autopilot missions (vt.mission.loiter_plan_mission)
+        scenario = (loiter.load_scenario(args.scenarios[0]) if args.scenarios
+                    else next(loiter_study.random_scenarios(1, args.seed, args.aois)))
+        altitude = scenario.camera.altitude if args.altitude is None else args.altitude
+        plans = {method: scenario.plan(method, args.order) for method in args.method}
+        export_missions(args.export, {m: partial(p.to_mission, altitude=altitude) for m, p in plans.items()},
+                        args.origin or scenario.origin, DEFAULT_EXPORT_ORIGIN)
     print(f"{len(written)} files in {args.out}")
     return 0

@@ -65,6 +65,10 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                         "min_spacing; ~4.7 MB each at 1 degree); default %(default)s")
     p.add_argument("--rate-margin", type=number("--rate-margin", 0.0, 1.0), default=planning.rate_margin,
                    help="keep |dR/dt| <= (1 - margin)(v - v_g) in Algorithm 1 (default 0: Lemma 5's limit)")
+    p.add_argument("--locus", default=planning.locus, choices=["smooth", "paper"], help="smooth (default): checked "
+                   "against MaxRadius along the whole path, C1; paper: Algorithm 1's piecewise-linear R(t)")
+    p.add_argument("--tracking-margin", type=number("--tracking-margin", 0.0, 1e7), default=planning.tracking_margin,
+                   help="smooth locus: keep R(t) this far inside MaxRadius, m")
     p.add_argument("--footprints", help="GeoJSON footprints drawn under the orbits (default: the GeoJSON map, or "
                    "buildings.geojson beside a mesh --map)")
     p.add_argument("--figure-metric", action="store_true", help="also draw Figure 4 (metric along the path)")
@@ -93,12 +97,13 @@ def run(args: argparse.Namespace) -> int:
     uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude)
     planning = _core.Planning(spacing=args.spacing, cutoff=args.cutoff, resolution_deg=args.resolution,
                               min_spacing=args.min_spacing, max_depth=args.max_depth, rate_margin=args.rate_margin,
+                              locus=args.locus, tracking_margin=args.tracking_margin,
                               max_volumes=args.max_volumes)
     _core.check_work(poi, planning)  # before the map is read
     start = time.perf_counter()
     metric = None
     if args.from_volumes:
-        plan = plan_from_volumes(args.from_volumes, poi, uav, planning.rate_margin)
+        plan = plan_from_volumes(args.from_volumes, poi, uav, planning)
         source = f"{len(plan.times)} saved VVs from {args.from_volumes}"
     else:
         env = load_environment(args.map, args.up, origin=args.origin)
@@ -113,8 +118,8 @@ def run(args: argparse.Namespace) -> int:
         metric = metric_along_path(planner, poi, planning, args.spacings, not args.quiet)
     write_orbits(out, plan, background, extra, metric,
                  f"{Path(args.path).name}: d_max {args.d_max:g} m, {args.resolution:g}° grid")
-    print(f"{source} in {extra['seconds']:.2f} s; R {plan.radii[0]:.1f} m -> {plan.radii[-1]:.1f} m; "
-          + ("feasible" if plan.feasible else f"INFEASIBLE: {plan.infeasibility}"))
+    print(f"{source} in {extra['seconds']:.2f} s; {plan.planning.locus} locus, R {plan.radii[0]:.1f} m -> "
+          f"{plan.radii[-1]:.1f} m; " + ("feasible" if plan.feasible else f"INFEASIBLE: {plan.infeasibility}"))
     print(f"wrote {out}/plan.json, summary.json, orbits.png, radius.png" + (", metric.png" if metric else ""))
     export_plan(args.export, plan, args.origin, None if args.from_volumes else env, direction=args.direction)
     return 0

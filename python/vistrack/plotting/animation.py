@@ -11,6 +11,7 @@ a few milliseconds per frame.
 from __future__ import annotations
 
 import math
+import textwrap
 from pathlib import Path
 from typing import Any, Union
 
@@ -88,9 +89,9 @@ def write_gif(scene: MotionScene, path: Union[str, Path], frames: int = DEFAULT_
     ax.set_ylabel("north (m)")
     ax.tick_params(labelsize=7)
     if scene.title:
-        ax.set_title(scene.title, fontsize=9)
+        ax.set_title("\n".join(textwrap.wrap(scene.title, 90)), fontsize=8)
     if handles:
-        fig.legend(handles=handles, loc="outside lower center", ncol=min(4, len(handles)), fontsize=7,
+        fig.legend(handles=handles, loc="outside lower center", ncol=min(3, len(handles)), fontsize=7,
                    frameon=False)
     if scene.credit:
         fig.text(0.99, 0.005, scene.credit, ha="right", va="bottom", fontsize=5.5, color="gray")

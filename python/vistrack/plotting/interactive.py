@@ -292,10 +292,12 @@ def figure_3d(scene: MotionScene, layers: Sequence[MeshLayer] = (), time_steps: 
 
 def _height_range(scene: MotionScene, positions: Sequence[np.ndarray],
                   layers: Sequence[MeshLayer]) -> tuple[float, float]:
-    """The z axis: from the ground to a little above the tracks and the layers' meshes. Taller
-    buildings are cut at the top of the box (plotly clips to the axis ranges), so that a low
-    flight among towers stays in view."""
-    z = np.concatenate([p[:, 2] for p in positions] + [np.asarray(layer.vertices)[:, 2] for layer in layers])
+    """The z axis: from the ground (or the lowest line or overlay: AOIs, a camera footprint) to a
+    little above the tracks, the lines and the layers' meshes. Taller buildings are cut at the top
+    of the box (plotly clips to the axis ranges), so that a low flight among towers stays in view."""
+    z = np.concatenate([p[:, 2] for p in positions] + [np.asarray(layer.vertices)[:, 2] for layer in layers]
+                       + [line.xyz()[:, 2] for line in scene.lines] + [np.array([o.z for o in scene.overlays])])
+    z = z[np.isfinite(z)]
     low, top = float(z.min()), float(z.max())
     if scene.env is not None:
         low = min(low, scene.env.ground_level)

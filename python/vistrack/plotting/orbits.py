@@ -79,29 +79,56 @@ def figure_orbits(plan: VisibilityOrbitPlan, env: Optional[Environment], path: s
 
 
 def figure_radius(plan: VisibilityOrbitPlan, path: str | Path) -> Path:
-    """R(t) after Algorithm 1 against MaxRadius, Lemma 6's threshold, and dR/dt against Lemma 5."""
+    """R(t) the guidance follows against MaxRadius (at the samples, and along the path for the
+    smooth locus), Algorithm 1's piecewise-linear R(t) and Lemma 6's threshold; dR/dt against
+    Lemma 5's bound; d2R/dt2 of the smooth locus."""
     plt = pyplot()
     t = np.asarray(plan.times)
+    smooth = plan.planning.locus == "smooth"
     rate_limit = plan.uav.speed - plan.poi.speed
-    fig, (ax, bx) = plt.subplots(2, 1, figsize=(8, 6), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
-    ax.plot(t, plan.max_radii, "o", ms=3, color="tab:gray", label="MaxRadius in the VP")
-    ax.plot(t, plan.radii, "-", lw=2, color="tab:blue", label="R(t) after Algorithm 1")
+    dense = np.linspace(t[0], t[-1], 2000) if len(t) > 1 else t
+    fig, axes = plt.subplots(3 if smooth else 2, 1, figsize=(8, 8 if smooth else 6), sharex=True,
+                             gridspec_kw={"height_ratios": [2, 1, 1] if smooth else [2, 1]})
+    ax, bx = axes[0], axes[1]
+    if smooth and len(plan.check.times):
+        c = plan.check
+        ax.plot(c.times, c.max_radii, "-", lw=0.8, color="tab:gray", label="MaxRadius along the path (locus check)")
+        breaks = np.asarray(c.ceiling.breaks)
+        nan = np.full(len(breaks) - 1, np.nan)
+        x = np.column_stack([breaks[:-1], breaks[1:], nan]).ravel()
+        y = np.column_stack([c.ceiling.starts, c.ceiling.ends, nan]).ravel()
+        ax.plot(x, y, color="tab:orange", lw=0.8,
+                label=f"ceiling: lower bound of MaxRadius - {plan.planning.tracking_margin:g} m")
+    ax.plot(t, plan.max_radii, "o", ms=3, color="tab:gray", label="MaxRadius at the samples")
+    if smooth:
+        ax.plot(t, plan.orbits.radii, "--", lw=1, color="tab:green", label="Algorithm 1 (the paper's locus)")
+    ax.plot(dense, plan.radius_at(dense), "-", lw=2, color="tab:blue",
+            label="R(t) followed (smooth locus)" if smooth else "R(t) after Algorithm 1")
     ax.axhline(plan.min_feasible_radius, color="tab:red", ls="--",
                label=f"r_min (1 + v_g/v)$^2$ = {plan.min_feasible_radius:.1f} m (Lemma 6)")
     for k in plan.failing_samples:
         ax.plot(t[k], plan.radii[k], "rx", ms=8, mew=2)
     ax.set_ylabel("orbit radius (m)")
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7)
     ax.grid(alpha=0.3)
     if len(t) > 1:
-        rates = np.asarray(plan.radius_rates)
-        bx.step(np.r_[t[:-1], t[-1]], np.r_[rates, rates[-1]], where="post", color="tab:blue", label="dR/dt")
+        if smooth:
+            rates = np.asarray(plan.orbits.radius_rates)
+            bx.step(np.r_[t[:-1], t[-1]], np.r_[rates, rates[-1]], where="post", color="tab:green", lw=0.8,
+                    label="dR/dt of Algorithm 1")
+        bx.plot(dense, plan.radius_rate_at(dense), color="tab:blue", label="dR/dt followed")
         bx.axhline(rate_limit, color="tab:red", ls="--", label=f"±(v − v_g) = ±{rate_limit:g} m/s (Lemma 5)")
         bx.axhline(-rate_limit, color="tab:red", ls="--")
-        bx.legend(fontsize=8)
-    bx.set_xlabel("time (s)")
+        bx.legend(fontsize=7)
     bx.set_ylabel("dR/dt (m/s)")
     bx.grid(alpha=0.3)
-    fig.suptitle(f"R(t): {plan.radii[0]:.1f} m → {plan.radii[-1]:.1f} m over {t[-1]:.2f} s")
+    if smooth:
+        cx = axes[2]
+        cx.plot(dense, plan.reference.acceleration_at(dense), color="tab:blue", lw=1)
+        cx.set_ylabel("d$^2$R/dt$^2$ (m/s$^2$)")
+        cx.grid(alpha=0.3)
+    axes[-1].set_xlabel("time (s)")
+    fig.suptitle(f"R(t): {plan.radii[0]:.1f} m → {plan.radii[-1]:.1f} m over {t[-1]:.2f} s "
+                 f"({plan.planning.locus} locus)")
     fig.tight_layout()
     return save_figure(fig, path, dpi=130)

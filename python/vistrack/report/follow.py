@@ -1,22 +1,41 @@
-"""The output folder of ``vistrack follow``: figures, trajectory CSVs and metrics.json."""
+"""The output folder of ``vistrack follow``: figures, trajectory CSVs, metrics.json, report.md and,
+as the report options ask, the animation (trajectory.gif) and the interactive page (report.html)."""
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable, Optional, Sequence
 
+import numpy as np
+
+from .._core import Environment
+from ..follow import DownwardCamera, FollowResult, camera_footprint
 from ..follow_scenario import FollowStudy
 from ..io import write_follow_trajectory, write_json
+from ..plotting.common import OSM_CREDIT
 from ..plotting.follow import figure_compare, figure_paths, figure_scores
+from ..plotting.motion import Line, MotionScene, Overlay, Sight, Track
+from ..scenario import ReportOptions
+from .document import Document, Heading, Picture, Table
+from .media import write_media
+
+PLANNER = "sinusoid planner (the paper)"
+BASELINE = "vector field (74), constant radius"
+OPEN_GIF = "trajectory_open.gif"  # the open-ground run, when the main animation is the city run
 
 
-def write_follow(study: FollowStudy, out: Path, title: str = "") -> dict[str, Any]:
+def write_follow(study: FollowStudy, out: Path, title: str = "",
+                 report: Optional[ReportOptions] = None) -> dict[str, Any]:
     """follow_paths.png (the paper's view), follow_scores.png (sigma, mode, errors, camera over
     time), follow_compare.png (planner beside the baseline), follow_city.png (both on the city road
     with line of sight, when run), trajectory.csv (the planner's run), baseline_trajectory.csv,
-    city_trajectory.csv, city_baseline_trajectory.csv, and metrics.json (with the figures' and
+    city_trajectory.csv, city_baseline_trajectory.csv, report.md, and as ``report`` asks
+    trajectory.gif and report.html (the planner's run on the city road when it was run, else on
+    open ground; with a city trajectory_open.gif adds the open-ground run), and metrics.json (with the figures' and
     files' names). Returns the metrics record."""
     out.mkdir(parents=True, exist_ok=True)
+    report = report or ReportOptions()
     p = study.parameters
     label = "with wind compensation" if p.wind_compensation else "without wind compensation"
     title = f"{title} ({label})" if title else label
@@ -24,19 +43,108 @@ def write_follow(study: FollowStudy, out: Path, title: str = "") -> dict[str, An
              figure_scores(study.follow, p.threshold, p.hysteresis, out / "follow_scores.png", title),
              write_follow_trajectory(study.follow, out / "trajectory.csv")]
     if study.baseline is not None:
-        files.append(figure_compare([("sinusoid planner (the paper)", study.follow),
-                                     ("vector field (74), constant radius", study.baseline)],
+        files.append(figure_compare([(PLANNER, study.follow), (BASELINE, study.baseline)],
                                     out / "follow_compare.png", title))
         files.append(write_follow_trajectory(study.baseline, out / "baseline_trajectory.csv"))
     if study.city_follow is not None:
-        runs = [("sinusoid planner (the paper)", study.city_follow)]
+        runs = [(PLANNER, study.city_follow)]
         if study.city_baseline is not None:
-            runs.append(("vector field (74), constant radius", study.city_baseline))
+            runs.append((BASELINE, study.city_baseline))
         files.append(figure_compare(runs, out / "follow_city.png", f"{title}, on a city road", study.environment))
         files.append(write_follow_trajectory(study.city_follow, out / "city_trajectory.csv"))
         if study.city_baseline is not None:
             files.append(write_follow_trajectory(study.city_baseline, out / "city_baseline_trajectory.csv"))
     record = study.metrics()
-    record["files"] = [f.name for f in files]
+    document = _document(study, title, [f.name for f in files])
+    open_scene = motion_scene(study.follow, study.scenario.camera, study.scenario.uav.altitude,
+                              f"{title}: open ground")
+    more: list[tuple[str, MotionScene, str]] = []
+    if study.city_follow is not None and study.environment is not None:
+        scene = motion_scene(study.city_follow, study.scenario.camera, city_altitude(study),
+                             f"{title}: city road", study.environment)
+        hint = ("The planner's run on the city road: buildings, the vehicle, the UAV, the camera footprint and the "
+                "line of sight (green: clear, red: through a building). Drag to turn, scroll to zoom.")
+        more.append((OPEN_GIF, open_scene, "Animation on open ground (the paper's setting)"))
+    else:
+        scene, hint = open_scene, "The planner's run: the vehicle, the UAV and the camera footprint. Drag to turn."
+    record["report_files"] = write_media(out, scene, document, report, figure_hint=hint, more_gifs=more)
+    (out / "report.md").write_text(document.markdown(), encoding="utf-8")
+    record["files"] = [f.name for f in files] + ["report.md"] + list(record["report_files"])
     write_json(record, out / "metrics.json")
     return record
+
+
+def city_altitude(study: FollowStudy) -> float:
+    """The UAV's height above the ground in the city runs (as FollowScenario.run flies them)."""
+    city = study.scenario.city
+    return city.altitude if city is not None and city.altitude is not None else study.scenario.uav.altitude
+
+
+def motion_scene(result: FollowResult, camera: DownwardCamera, altitude: float, title: str,
+                 env: Optional[Environment] = None) -> MotionScene:
+    """One follow run as a scene: the UAV at ``altitude`` above the ground and the vehicle moving,
+    the planned (desired) path, the camera's footprint on the ground (the cone of the metric's
+    camera, its gimbal rolled towards the vehicle), the true wind, and with line of sight (a city
+    run) the sight line green or red and the UAV's path coloured by it."""
+    t = result.t
+    state = result.state
+    vehicle = result.vehicle
+    ground = env.ground_level if env is not None else 0.0
+    visible = result.line_of_sight
+    tracks = [Track("UAV", t, state[:, :2], color="tab:blue", z=ground + altitude, flag=visible),
+              Track("vehicle", t, vehicle, color="black", marker="s", z=ground + 0.5, width=2.5)]
+    lines = [Line("planned path", result.desired, color="0.45", style="--", width=0.9, z=ground + altitude)]
+    # The view holds the paths; a footprint seen at a steep bank may reach beyond it.
+    extent = MotionScene(tracks, lines).fit_extent()
+    bank = np.asarray(result.run.bank, dtype=float)
+
+    def footprint(time: float) -> Sequence[np.ndarray]:
+        k = min(max(int(np.searchsorted(t, time, side="right")) - 1, 0), len(t) - 1)
+        return [camera_footprint(camera, (state[k, 0], state[k, 1], altitude), float(state[k, 2]), float(bank[k]),
+                                 vehicle[k])]
+
+    overlays = [Overlay("camera footprint", footprint, color="tab:orange", z=ground)]
+    wind = np.asarray(result.run.wind, dtype=float)
+    wind_field: Optional[Callable[[float], tuple[float, float]]] = None
+    if len(wind) and np.any(np.hypot(wind[:, 0], wind[:, 1]) > 0.0):
+        def wind_field(time: float) -> tuple[float, float]:
+            k = min(max(int(np.searchsorted(t, time, side="right")) - 1, 0), len(t) - 1)
+            return float(wind[k, 0]), float(wind[k, 1])
+
+    sight = Sight(0, 1, t, visible) if visible is not None else None
+    return MotionScene(tracks, lines, overlays, sight, wind=wind_field, env=env, extent=extent, title=title,
+                       credit=OSM_CREDIT if env is not None else None)
+
+
+def _row(name: str, m: dict[str, Any]) -> list[str]:
+    modes = ", ".join(f"{k} {v:.0f} s" for k, v in m["time_in_mode_s"].items() if v > 0)
+    sight = m.get("line_of_sight_fraction")
+    both = m.get("camera_and_line_of_sight_fraction")
+    return [name, f"{m['mean_tracking_error_m']:.2f}", f"{m['max_tracking_error_m']:.1f}",
+            f"{m['along_track_lag_m']:.1f}", str(m["mode_switches"]), modes or "-",
+            f"{100 * m['camera_fraction']:.1f}", "-" if sight is None else f"{100 * sight:.1f}",
+            "-" if both is None else f"{100 * both:.1f}"]
+
+
+def _document(study: FollowStudy, title: str, files: Sequence[str]) -> Document:
+    s = study.scenario
+    rows = [_row(PLANNER, study.follow.metrics)]
+    if study.baseline is not None:
+        rows.append(_row(BASELINE, study.baseline.metrics))
+    if study.city_follow is not None:
+        rows.append(_row(f"{PLANNER}, city road", study.city_follow.metrics))
+    if study.city_baseline is not None:
+        rows.append(_row(f"{BASELINE}, city road", study.city_baseline.metrics))
+    wind = math.hypot(s.wind.east, s.wind.north)
+    summary = [f"UAV {s.uav.speed:g} m/s at {s.uav.altitude:g} m, turn radius {s.uav.min_turn_radius:g} m; camera "
+               f"{math.degrees(s.camera.fov):.0f} deg on a +-{math.degrees(s.camera.max_gimbal):.0f} deg gimbal",
+               f"Wind {s.wind.east:g} east, {s.wind.north:g} north ({wind:.3g} m/s); {len(study.follow.ticks)} "
+               "updates at 1 Hz"]
+    blocks: list[Any] = [Heading("Runs"),
+                         Table(["run", "mean tracking error (m)", "max (m)", "along-track lag (m)", "mode switches",
+                                "time in mode", "camera sees the vehicle (%)", "line of sight (%)", "both (%)"], rows)]
+    titles = {"follow_paths.png": "Paths (the paper's view)", "follow_scores.png": "Scores over time",
+              "follow_compare.png": "Planner beside the vector-field baseline",
+              "follow_city.png": "On a city road, with line of sight"}
+    blocks += [Picture(name, caption) for name, caption in titles.items() if name in files]
+    return Document(f"vistrack report: following a ground vehicle, {title}", summary, blocks)

@@ -1,21 +1,34 @@
 """The output folder of ``vistrack loiter``: metrics JSON, sampled paths as CSV, the figures, and the
-tables beside the paper's (Table 1, Figure 14), of wind and of random scenarios."""
+tables beside the paper's (Table 1, Figure 14), of wind and of random scenarios; for one scenario
+also report.md, the animation (trajectory.gif) and the interactive page (report.html)."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import Any, Optional
+
+import numpy as np
 
 from .. import loiter
 from ..io import write_json, write_loiter_samples_csv
 from ..loiter import METHOD_NAMES
 from ..loiter_study import MethodRun, summary, wind_summary
 from ..plotting import loiter as figures
+from ..plotting.motion import Line, MotionScene, Overlay, Track, circle_ring, ellipse_ring, sampled
+from ..scenario import ReportOptions
+from .document import Document, Heading, Picture, Table
+from .media import write_media
 
 
-def write_scenario(out: Path, scenario: loiter.Scenario, runs: Sequence[MethodRun]) -> list[Path]:
-    """metrics.json, one sampled-path CSV per method, the methods figure (and the wind figure)."""
+def write_scenario(out: Path, scenario: loiter.Scenario, runs: Sequence[MethodRun],
+                   report: Optional[ReportOptions] = None,
+                   wind: Optional[tuple[float, float]] = None) -> list[Path]:
+    """metrics.json, one sampled-path CSV per method, the methods figure (and the wind figure),
+    report.md, and as ``report`` asks trajectory.gif and report.html: every method's aircraft
+    flying its plan at once (in ``wind``, unknown to the guidance, when given) with the camera
+    footprint the coverage metric uses."""
     out.mkdir(parents=True, exist_ok=True)
     written = [write_json({
         "scenario": scenario.name, "aois": scenario.aois.tolist(), "start": list(scenario.start),
@@ -44,7 +57,92 @@ def write_scenario(out: Path, scenario: loiter.Scenario, runs: Sequence[MethodRu
             shown = run.wind_paths[:: max(1, len(run.wind_paths) // 4)][:4]  # at most four flights drawn
             written.append(figures.wind_figure(run.plan, shown, out / f"wind_{run.method}.png",
                                                f"{METHOD_NAMES[run.method]} flown in unknown wind"))
+    document = scenario_document(scenario, runs, [p.name for p in written])
+    scene = motion_scene(scenario, runs, wind)
+    hint = ("Every method's aircraft flies its plan at the camera's altitude; on the ground its camera footprint "
+            "(the ellipse the coverage metric scores) and the AOIs. Drag to turn, scroll to zoom.")
+    made = write_media(out, scene, document, report, figure_hint=hint)
+    written += [out / name for name in made]
+    written.append(_write_text(out / "report.md", document.markdown()))
     return written
+
+
+def flown_states(scenario: loiter.Scenario, plan: loiter.Plan, planned: loiter.Coverage,
+                 wind: Optional[tuple[float, float]] = None) -> tuple[np.ndarray, np.ndarray, loiter.Coverage]:
+    """What the animation shows of one plan, every ``scenario.dt``: times, poses (n, 3) x, y, psi and
+    their coverage. Without wind the plan's own samples (those ``planned`` scored); in wind the
+    plan flown by the flight layer (``loiter.fly``), scored the same way."""
+    if wind is None:
+        samples = plan.sample_states(scenario.dt, False)
+        return np.asarray(samples.t, dtype=float), np.asarray(samples.poses, dtype=float), planned
+    rows, _ = loiter.flown_samples(loiter.fly(plan, wind), scenario.dt)
+    return scenario.dt * np.arange(len(rows)), rows[:, :3], scenario.coverage(rows)
+
+
+def footprint_rings(camera: loiter.Camera, poses: np.ndarray, cov: loiter.Coverage) -> list[list[np.ndarray]]:
+    """At each step, the footprint the coverage metric scored: the camera axis at the tilt of the
+    bank and the gimbal angle it chose (``cov.tilt``), as one elliptic ring."""
+    tilt = np.asarray(cov.tilt)
+    rings = []
+    for pose, angle in zip(poses, tilt):
+        f = camera.footprint((float(pose[0]), float(pose[1]), float(pose[2])), float(angle))
+        rings.append([ellipse_ring(f.center, f.semi_along, f.semi_across, math.atan2(f.along[1], f.along[0]))])
+    return rings
+
+
+def motion_scene(scenario: loiter.Scenario, runs: Sequence[MethodRun],
+                 wind: Optional[tuple[float, float]] = None) -> MotionScene:
+    """The scenario's methods as one scene: the AOIs, each planned path, each aircraft at the
+    camera's altitude and its camera footprint of the moment on the ground, the wind."""
+    altitude = scenario.camera.altitude
+    lines = [Line("AOI" if k == 0 else None, _closed(circle_ring(c, scenario.aoi_radius)), color="0.55", style="-",
+                  width=0.8, fill=True) for k, c in enumerate(np.asarray(scenario.aois, dtype=float))]
+    tracks, overlays = [], []
+    for run in runs:
+        name, color = METHOD_NAMES[run.method], figures.METHOD_COLORS[run.method]
+        lines.append(Line(f"{name} plan", run.plan.sample(0.5)[:, :2], color=color, style=":", width=0.9, z=altitude))
+        t, poses, cov = flown_states(scenario, run.plan, run.coverage, wind)
+        tracks.append(Track(name, t, poses[:, :2], color=color, z=altitude, width=1.4))
+        rings = footprint_rings(scenario.camera, poses, cov)
+        overlays.append(Overlay(f"{name} camera footprint", sampled(t.tolist(), rings), color=color))
+    names = " / ".join(METHOD_NAMES[run.method] for run in runs)
+    title = f"{scenario.name}: {names}" + ("" if wind is None else f", wind ({wind[0]:g}, {wind[1]:g}) m/s")
+    return MotionScene(tracks, lines, overlays, wind=wind, title=title)
+
+
+def _closed(ring: np.ndarray) -> np.ndarray:
+    return np.vstack([ring, ring[:1]])
+
+
+def scenario_document(scenario: loiter.Scenario, runs: Sequence[MethodRun], files: Sequence[str]) -> Document:
+    """report.md of one scenario: the methods' numbers, the figures and the wind table."""
+    rows = []
+    for run in runs:
+        row = [METHOD_NAMES[run.method], f"{run.plan.flight_time / 60:.2f}", f"{run.plan.transit_time:.0f}",
+               f"{run.coverage.time:.0f}", f"{run.coverage.area / 1e3:.0f}",
+               " ".join(str(int(i)) for i in run.plan.order)]
+        if run.best_plan is not None:
+            row.append(f"{run.best_plan.flight_time / 60:.2f}")
+        rows.append(row)
+    header = ["method", "flight time (min)", "transit (s)", "covered time (s)", "coverage (10^3 m^2)", "order"]
+    if any(run.best_plan is not None for run in runs):
+        header.append("best order (min)")
+    cam = scenario.camera
+    summary_lines = [f"{len(scenario.aois)} AOIs of radius {scenario.aoi_radius:g} m, turn radius "
+                     f"{scenario.turn_radius:g} m, {scenario.speed:g} m/s, start {tuple(scenario.start)}, end "
+                     f"{tuple(scenario.end)}",
+                     f"Camera {cam.fov_deg:g} deg on a +-{cam.max_gimbal_deg:g} deg roll gimbal at {cam.altitude:g} m; "
+                     f"an AOI is covered when {100 * scenario.threshold:.0f} % of it is in view, steps of "
+                     f"{scenario.dt:g} s"]
+    blocks: list[Any] = [Heading("Methods"), Table(header, rows)]
+    titles = {"plans.png": "Plans (the paper's Figures 6, 9, 12)", "plans_best_order.png": "Plans in the best order"}
+    blocks += [Picture(name, titles[name]) for name in titles if name in files]
+    blocks += [Picture(f"wind_{run.method}.png", f"{METHOD_NAMES[run.method]} flown in unknown wind")
+               for run in runs if f"wind_{run.method}.png" in files]
+    winds = wind_summary([run.record(scenario) for run in runs])
+    if winds:
+        blocks += [Heading("Flown in unknown wind"), wind_table(winds), WIND_NOTE]
+    return Document(f"vistrack report: loiter, {scenario.name}", summary_lines, blocks)
 
 
 def table_markdown(rows: Sequence[dict[str, Any]]) -> str:
@@ -86,19 +184,24 @@ def roles_markdown(rows: Sequence[dict[str, Any]]) -> str:
     return "\n".join(lines) + "\n\nTime steps of 1 s summed over the scenarios; covered: some AOI counts as covered.\n"
 
 
-def wind_markdown(rows: Sequence[dict[str, Any]]) -> str:
+WIND_NOTE = "Median (min-max) over scenarios and wind directions; the guidance does not know the wind."
+
+
+def wind_table(rows: Sequence[dict[str, Any]]) -> Table:
+    """Per method and wind speed (loiter_study.wind_summary rows): the share of the loiter time with
+    the AOI covered, flight and covered time against the plan, the largest distance off it."""
     def q(values: Sequence[float], scale: float = 1.0, digits: int = 0) -> str:
         return f"{values[1] * scale:.{digits}f} ({values[0] * scale:.{digits}f}-{values[2] * scale:.{digits}f})"
 
-    head = ("| method | wind (m/s) | flights | loiter time with the AOI covered (plan: 100 %) | flight time / plan | "
-            "covered time / plan | largest distance off the plan (m) |")
-    lines = [head, "|---|---|---|---|---|---|---|"]
-    for r in rows:
-        lines.append(f"| {METHOD_NAMES[r['method']]} | {r['wind_speed']:g} | {r['flights']} | "
-                     f"{q(r['loiter_covered'], 100.0)} % | {q(r['flight_time_ratio'], 1.0, 2)} | "
-                     f"{q(r['coverage_time_ratio'], 1.0, 2)} | {q(r['max_cross_track_m'])} |")
-    return ("\n".join(lines) + "\n\nMedian (min-max) over scenarios and wind directions; the guidance does not "
-            "know the wind.\n")
+    header = ["method", "wind (m/s)", "flights", "loiter time with the AOI covered (plan: 100 %)", "flight time / plan",
+              "covered time / plan", "largest distance off the plan (m)"]
+    return Table(header, [[METHOD_NAMES[r["method"]], f"{r['wind_speed']:g}", str(r["flights"]),
+                           f"{q(r['loiter_covered'], 100.0)} %", q(r["flight_time_ratio"], 1.0, 2),
+                           q(r["coverage_time_ratio"], 1.0, 2), q(r["max_cross_track_m"])] for r in rows])
+
+
+def wind_markdown(rows: Sequence[dict[str, Any]]) -> str:
+    return "\n".join(wind_table(rows).markdown()) + "\n\n" + WIND_NOTE + "\n"
 
 
 def write_table(out: Path, scenarios: Sequence[loiter.Scenario], rows: Sequence[dict[str, Any]]) -> list[Path]:

@@ -36,32 +36,38 @@ HTML_NAME = "report.html"
 
 def write_media(out: Path, scene: MotionScene, document: Document, options: Optional[ReportOptions] = None,
                 layers: Sequence[MeshLayer] = (), figure_hint: str = "", gif_caption: str = "",
-                gif_name: str = GIF_NAME) -> dict[str, dict[str, float]]:
+                gif_name: str = GIF_NAME, more_gifs: Sequence[tuple[str, MotionScene, str]] = ()
+                ) -> dict[str, dict[str, float]]:
     """Write ``gif_name`` and report.html into ``out`` as ``options`` ask (default: both).
 
     The GIF is added to ``document`` as a picture (after its last picture), a "Report files"
     table (sizes, seconds) is appended, and once report.html is written its size joins the
-    summary, so that ``document.markdown()`` afterwards describes both files. Returns
-    ``{file name: {"bytes": ..., "seconds": ...}}`` (also for the metrics file)."""
+    summary, so that ``document.markdown()`` afterwards describes both files. ``more_gifs``
+    (file name, scene, title) are further animations written with the same options and placed
+    after the first. Returns ``{file name: {"bytes": ..., "seconds": ...}}`` (also for the
+    metrics file)."""
     options = options or ReportOptions()
     out.mkdir(parents=True, exist_ok=True)
     made: dict[str, dict[str, float]] = {}
     if options.animation:
-        began = time.perf_counter()
-        path = write_gif(scene, out / gif_name, options.frames, options.duration)
-        made[gif_name] = {"bytes": path.stat().st_size, "seconds": time.perf_counter() - began,
-                          "frames": options.frames}
-        picture = Picture(gif_name, "Animation", gif_caption or
-                          f"Plan view, {options.frames} frames over {options.duration:g} s.")
         last = max((i for i, b in enumerate(document.blocks) if isinstance(b, Picture)), default=None)
-        document.blocks.insert(len(document.blocks) if last is None else last + 1, picture)
+        at = len(document.blocks) if last is None else last + 1
+        animations = [(gif_name, scene, "Animation", gif_caption), *((n, s, t, "") for n, s, t in more_gifs)]
+        for name, shown, title, caption in animations:
+            began = time.perf_counter()
+            path = write_gif(shown, out / name, options.frames, options.duration)
+            made[name] = {"bytes": path.stat().st_size, "seconds": time.perf_counter() - began,
+                          "frames": options.frames}
+            document.blocks.insert(at, Picture(name, title, caption or
+                                               f"Plan view, {options.frames} frames over {options.duration:g} s."))
+            at += 1
     rows: list[list[str]] = []  # the "Report files" table, shared with the document
 
     def row(name: str) -> list[str]:
         return [name, f"{made[name]['bytes'] / 1e6:.2f}", f"{made[name]['seconds']:.2f}"]
 
     if made:
-        rows.append(row(gif_name))
+        rows += [row(name) for name in made]
         document.blocks += [Heading("Report files"), Table(["file", "size (MB)", "seconds to write"], rows)]
     if options.html:
         began = time.perf_counter()

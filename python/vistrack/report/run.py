@@ -95,8 +95,9 @@ def write_report(result: RunResult, out: Path) -> list[Path]:
     figure_radius(result.plan, out / "radius.png")
     files.append(out / "radius.png")
     pictures.append(Picture("radius.png", "Orbit radius and its rate limits",
-                            "MaxRadius per sample, R(t) after Algorithm 1, Lemma 6's threshold and Lemma 5's "
-                            "rate bound."))
+                            "MaxRadius per sample (and along the path, for the smooth locus), the R(t) the guidance "
+                            "follows beside Algorithm 1's piecewise-linear one, Lemma 6's threshold, dR/dt against "
+                            "Lemma 5's bound and d2R/dt2."))
 
     # Baselines are drawn with the visibility plan's orbits.
     runs: list[tuple[str, Union[OrbitPlan, VisibilityOrbitPlan], SimulationResult]] = [
@@ -170,6 +171,7 @@ def _document(result: RunResult, pictures: list[Picture]) -> Document:
                f"{'feasible' if plan['feasible'] else 'INFEASIBLE: ' + plan['infeasibility']}; "
                f"R from {plan['initial_radius_m']:.1f} m to {plan['final_radius_m']:.1f} m "
                f"(min {plan['min_radius_m']:.1f} m, Lemma 6 needs >= {plan['min_feasible_radius_m']:.1f} m)",
+               f"Locus: {locus_line(plan)}",
                f"Simulation: {sim['duration_s']:.2f} s; POI in line of sight "
                f"{percent(sim['visibility_fraction'])} of the samples; largest |radial error| after "
                f"settling (after {sim['converge_after_s']:g} s) {sim['radial_error_after_max_abs_m']:.2f} m"]
@@ -185,6 +187,20 @@ def _document(result: RunResult, pictures: list[Picture]) -> Document:
     if result.scenario.environment.kind != "demo":
         blocks.append(OSM_NOTE)
     return Document(f"vistrack report: {m['scenario']}", summary, blocks)
+
+
+def locus_line(plan: dict[str, Any]) -> str:
+    """How the locus was built, and for the smooth one what its check found (from metrics.json)."""
+    if plan.get("locus") != "smooth":
+        return "the paper's (Algorithm 1's radii, piecewise linear between the samples; not checked between them)"
+    return (f"smooth (beyond the paper): MaxRadius checked at {plan['check_points']} points along the path "
+            f"({plan['check_volumes_computed']} more VVs, {plan['check_rounds']} refinement rounds); the paper's "
+            f"piecewise-linear R(t) leaves the VP at {plan['paper_violations']} of them, by up to "
+            f"{plan['paper_max_violation_m']:.2f} m. R(t) stays {plan['tracking_margin_m']:g} m inside MaxRadius "
+            f"(smallest clearance {plan['min_clearance_m']:.2f} m), C1 with |d2R/dt2| <= "
+            f"{plan['max_abs_acceleration_mps2']:.2f} m/s²; it lies {plan['mean_lowering_m']:.2f} m below the paper's "
+            f"on average, at most {plan['max_lowering_m']:.2f} m at t = {plan['max_lowering_at_s']:.1f} s "
+            f"({plan['max_lowering_at_m']:.0f} m along the path)")
 
 
 def percent(value: Any) -> str:

@@ -8,13 +8,15 @@ result = vt.sweep.run(spec, scheduler="serial")                 # one by one her
 result.rows, result.columns, result.failed, result.files        # results.csv, results.parquet, figures
 ```
 A sweep file (:mod:`vistrack.sweep.spec`) names a base case of one kind (:mod:`vistrack.sweep.kinds`:
-``tracking``, ``waypoints``), the parameters to vary and their combination; each case is one task, run by
-:func:`run_case` with the worker's shared environment and planner
+``tracking``, ``waypoints``, ``loiter``, ``follow``), the parameters to vary and their combination;
+each case is one task, run by :func:`run_case` with the worker's shared environment and planner
 (:mod:`vistrack.sweep.resources`).
 """
 
 from __future__ import annotations
 
+from . import follow as _follow  # noqa: F401
+from . import loiter as _loiter  # noqa: F401
 from . import tracking as _tracking  # noqa: F401  (registers the kinds)
 from . import waypoints as _waypoints  # noqa: F401
 from .execute import SERIAL, SweepResult, metric_columns, run, run_case, run_cases, table_columns

@@ -11,11 +11,14 @@ from __future__ import annotations
 
 import copy
 import fnmatch
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Mapping, Optional
 
 from .._core import RoadNetwork, VistrackError
+from ..io import read_yaml_mapping
+from ..schema import fail, number, resolve_path
 from .resources import Resources
 
 __all__ = ["KINDS", "CaseContext", "CaseKind", "CaseOutput", "dotted_keys", "flatten", "get_kind", "register_kind",
@@ -97,6 +100,48 @@ def get_kind(name: Any) -> CaseKind:
     if not isinstance(name, str) or name not in KINDS:
         raise VistrackError(f"kind = {name!r}: unknown case kind; known kinds: {', '.join(sorted(KINDS))}")
     return KINDS[name]
+
+
+WIND_FORMS = (("east", "north"), ("speed", "direction_deg"))  # two ways to give a constant wind
+
+
+def set_case_value(data: Mapping[str, Any], key: str, value: Any, sources: tuple[str, ...]) -> dict[str, Any]:
+    """:func:`set_dotted`, keeping one way to give each thing: setting (a key under) one of the
+    exclusive top-level ``sources`` drops the others, and setting ``wind.east``/``north`` drops
+    ``wind.speed``/``direction_deg`` (and the other way round)."""
+    result = set_dotted(data, key, value)
+    top, _, name = key.partition(".")
+    if top in sources:
+        for other in sources:
+            if other != top:
+                result.pop(other, None)
+    for form, other_form in (WIND_FORMS, WIND_FORMS[::-1]):
+        if top == "wind" and name in form:
+            for other in other_form:
+                result["wind"].pop(other, None)
+    return result
+
+
+def wind_components(value: Mapping[str, Any]) -> tuple[float, float]:
+    """(east, north) m/s of a ``wind`` mapping given as {east, north} or {speed, direction_deg}
+    (direction the wind blows towards, degrees counter-clockwise from east)."""
+    if "speed" in value or "direction_deg" in value:
+        speed = number("wind.speed", value.get("speed", 0.0), low=0.0)
+        angle = math.radians(number("wind.direction_deg", value.get("direction_deg", 0.0)))
+        return speed * math.cos(angle), speed * math.sin(angle)
+    return number("wind.east", value.get("east", 0.0)), number("wind.north", value.get("north", 0.0))
+
+
+def read_base(value: Any, folder: Path, what: str) -> tuple[dict[str, Any], Path]:
+    """A kind's ``base``: a mapping (copied) or the path of a YAML file of one (relative to
+    ``folder``); with the folder its relative paths resolve against. VistrackError naming ``base``
+    otherwise (``what`` says what the mapping holds)."""
+    if isinstance(value, str):
+        path = resolve_path(folder, value, "base")
+        return dict(read_yaml_mapping(path, "base")), path.parent
+    if isinstance(value, Mapping):
+        return copy.deepcopy(dict(value)), folder
+    raise fail("base", value, f"must be {what} or a YAML file of one")
 
 
 def set_dotted(data: Mapping[str, Any], key: str, value: Any) -> dict[str, Any]:

@@ -32,6 +32,11 @@ _METRICS = (
     "poi.length_m", "poi.duration_s", "poi.speed_mps",
     "plan.samples", "plan.feasible", "plan.infeasibility", "plan.initial_radius_m", "plan.final_radius_m",
     "plan.min_radius_m", "plan.max_radius_m", "plan.min_feasible_radius_m", "plan.max_metric_m3", "plan.cutoff_m3",
+    # The locus (metrics.locus_summary): which one, and for the smooth one what its check found.
+    "plan.locus", "plan.tracking_margin_m", "plan.check_points", "plan.check_volumes_computed", "plan.check_rounds",
+    "plan.paper_violations", "plan.paper_max_violation_m", "plan.min_clearance_m", "plan.max_lowering_m",
+    "plan.max_lowering_at_s", "plan.max_lowering_at_m", "plan.mean_lowering_m", "plan.knots",
+    "plan.max_abs_rate_mps", "plan.max_abs_acceleration_mps2",
     "simulation.duration_s", "simulation.samples", "simulation.rhs_evaluations", "simulation.accepted_steps",
     "simulation.rejected_steps", "simulation.restarts", "simulation.initial_radial_error_m",
     "simulation.converge_after_s", "simulation.radial_error_after_mean_m", "simulation.radial_error_after_max_abs_m",

@@ -31,7 +31,6 @@ plus ``waypoints``, ``route_length``, ``path_ratio`` (flown length over the rout
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -39,9 +38,18 @@ import numpy as np
 
 from .. import waypoint_nav as wn
 from ..flight import Wind
-from ..io import read_route, read_yaml_mapping
+from ..io import read_route
 from ..schema import fail, integer, number, positive, resolve_path
-from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, register_kind, set_dotted
+from .kinds import (
+    CaseContext,
+    CaseKind,
+    CaseOutput,
+    dotted_keys,
+    read_base,
+    register_kind,
+    set_case_value,
+    wind_components,
+)
 
 __all__ = ["WAYPOINTS"]
 
@@ -56,13 +64,7 @@ _METRICS = ("method", "label", "waypoint_radius", "waypoints", "route_length", "
 
 
 def _base(value: Any, folder: Path) -> dict[str, Any]:
-    if isinstance(value, str):
-        path = resolve_path(folder, value, "base")
-        data, folder = read_yaml_mapping(path, "base"), path.parent
-    elif isinstance(value, Mapping):
-        data = dict(value)
-    else:
-        raise fail("base", value, "must be a waypoint-navigation mapping or a YAML file of one")
+    data, folder = read_base(value, folder, "a waypoint-navigation mapping")
     full = _defaults(data, folder)
     _flight_inputs(full, folder, seed=0)  # validates the base
     return full
@@ -93,17 +95,7 @@ def _keys(base: Mapping[str, Any]) -> set[str]:
 
 
 def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
-    result = set_dotted(data, key, value)
-    top, _, name = key.partition(".")
-    if top in _SOURCES:
-        for other in _SOURCES:
-            if other != top:
-                result.pop(other, None)
-    if top == "wind" and name in ("east", "north", "speed", "direction_deg"):  # one way to give the wind
-        drop = ("speed", "direction_deg") if name in ("east", "north") else ("east", "north")
-        for other in drop:
-            result["wind"].pop(other, None)
-    return result
+    return set_case_value(data, key, value, _SOURCES)
 
 
 def _pair(key: str, value: Any) -> tuple[float, float]:
@@ -132,12 +124,7 @@ def _route(data: Mapping[str, Any], folder: Path, seed: int, turn_radius: float)
 def _wind(value: Any, seed: int) -> Wind:
     if not isinstance(value, Mapping) or set(value) - set(_WIND):
         raise fail("wind", value, "must be {east, north} or {speed, direction_deg}, with gusts: false/true/seed")
-    if "speed" in value or "direction_deg" in value:
-        speed = number("wind.speed", value.get("speed", 0.0), low=0.0)
-        angle = math.radians(number("wind.direction_deg", value.get("direction_deg", 0.0)))
-        east, north = speed * math.cos(angle), speed * math.sin(angle)
-    else:
-        east, north = number("wind.east", value.get("east", 0.0)), number("wind.north", value.get("north", 0.0))
+    east, north = wind_components(value)
     gusts = value.get("gusts", False)
     if gusts is False or gusts is None:
         return Wind(east=east, north=north)

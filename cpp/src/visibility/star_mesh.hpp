@@ -1,0 +1,84 @@
+// The mesh of a VV whose POI lies in the altitude band (private to the library); see star_mesh.cpp.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "visibility/radial_mesh.hpp"
+#include "visibility/trace.hpp"
+
+namespace vistrack::detail {
+
+// An edge of the mesh's triangulation of the sphere (samples u < w: the grid's corners, then the
+// midpoints of split edges) across which r jumps, bracketed by bisection: the ray at lambda_lo of
+// the way from u to w is on u's side of the jump, the ray at lambda_hi on w's side.
+struct Jump {
+  int u = 0;
+  int w = 0;
+  int slot = 0;    // a triangle slot of the sphere grid holding the edge (its azimuth column)
+  int edge = -1;   // an edge of the grid: its index in `slot`; else -1 (made by a split)
+  int other = -1;  // the slot on the edge's other side (-1 for an edge inside a slot)
+  double lambda_lo = 0.0;
+  double lambda_hi = 1.0;
+  double lo_far = 0.0;  // r just on u's side, and the surface that ends it
+  double hi_far = 0.0;
+  Surface lo_surface = Surface::radial;
+  Surface hi_surface = Surface::radial;
+  bool confirmed = false;
+  int split = -1;   // the midpoint sample when the edge was split (it held two jumps)
+  int vertex = -1;  // the two mesh vertices on the jump's ray (vertex: u's side, vertex + 1: w's)
+  double gap() const { return hi_far > lo_far ? hi_far - lo_far : lo_far - hi_far; }
+};
+
+// Open-addressing map from an edge (two sample ids) to its Jump.
+class EdgeMap {
+ public:
+  static std::uint64_t key(int a, int b) {
+    const auto lo = static_cast<std::uint32_t>(a < b ? a : b), hi = static_cast<std::uint32_t>(a < b ? b : a);
+    return (static_cast<std::uint64_t>(hi) << 32) | lo;
+  }
+  void reset(std::size_t expected);
+  void insert(std::uint64_t k, std::int32_t value);
+  std::int32_t find(std::uint64_t k) const;  // -1 when absent
+  bool empty() const { return size_ == 0; }
+
+ private:
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::vector<std::uint64_t> keys_;
+  std::vector<std::int32_t> values_;
+  std::size_t mask_ = 0;
+  std::size_t size_ = 0;
+};
+
+// Buffers of one star mesh, kept between VVs so that a batch allocates them once.
+struct StarMeshScratch {
+  std::vector<std::uint8_t> alive, slot_flags, candidate;
+  std::vector<Jump> jumps;
+  EdgeMap edges;
+  std::vector<std::int32_t> active;
+  std::vector<Vec3> directions;
+  std::vector<double> mid_far;
+  std::vector<Surface> mid_surface;
+  // Samples past the corners: midpoints of split edges.
+  std::vector<Vec3> extra_direction;
+  std::vector<double> extra_far;
+  std::vector<Surface> extra_surface;
+  std::vector<std::int32_t> extra_parent;  // the split edge's Jump
+  std::vector<std::int32_t> extra_vertex;
+  std::vector<std::int32_t> complex_slots;   // slots with a split or a jump, ascending
+  std::vector<std::int32_t> corner_vertex;   // mesh vertex of each used corner, else -1
+  std::vector<std::int32_t> row_centroid;    // first centroid vertex of each sphere row
+  std::vector<double> row_volume;
+  std::vector<int> pole_ring;
+};
+
+// The closed mesh of a VV whose POI lies in the band (near = 0 along every ray): the radial
+// surface r = far over the live corners (far[v], surface[v] per corner of `sphere`), with radial
+// walls at the jumps of r located by bisection with more rays, and the grid's triangles split
+// where an edge holds two jumps. Sets vv.mesh, vv.volume and vv.mesh_triangle_faces (the faces
+// built over each triangle slot of `sphere`).
+void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs, const std::vector<double>& far,
+                     const std::vector<Surface>& surface, const TraceContext& tracer, StarMeshScratch& scratch,
+                     VisibilityVolume& vv, VolumeCost* cost = nullptr);
+
+}  // namespace vistrack::detail
