@@ -4,6 +4,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -73,7 +76,13 @@ void bind_follow(py::module_& parent) {
       .def_readwrite("heading", &VehicleLeg::heading, "rad, counter-clockwise from east")
       .def_readwrite("speed", &VehicleLeg::speed, "m/s at the start")
       .def_readwrite("duration", &VehicleLeg::duration, "s")
-      .def_readwrite("end_speed", &VehicleLeg::end_speed, "m/s at the end (NaN: same as speed)");
+      // The C++ struct keeps NaN for "constant speed"; Python sees the effective end speed, never NaN.
+      .def_property(
+          "end_speed", [](const VehicleLeg& leg) { return std::isnan(leg.end_speed) ? leg.speed : leg.end_speed; },
+          [](VehicleLeg& leg, std::optional<double> end_speed) {
+            leg.end_speed = end_speed.value_or(std::numeric_limits<double>::quiet_NaN());
+          },
+          "m/s at the end (the start speed on a constant-speed leg; set None for constant speed)");
 
   py::class_<GroundVehicle>(m, "GroundVehicle",
                             "A ground vehicle as a piecewise-linear track (t, x, y): position interpolated, "

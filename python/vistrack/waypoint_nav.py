@@ -23,6 +23,7 @@ Defaults are the paper's section 3: R = 0.7, v = 0.8, dt = 0.02, gains g = 0.1, 
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any, Callable, Optional, Sequence, Union
 
@@ -85,9 +86,12 @@ def route_array(waypoints: Points, key: str = "waypoints") -> np.ndarray:
     return array
 
 
-def default_start(route: np.ndarray) -> tuple[float, float, float]:
-    """At the first waypoint, heading to the second."""
+def default_start(route: np.ndarray, key: str = "waypoints") -> tuple[float, float, float]:
+    """At the first waypoint, heading to the second (VistrackError when they coincide: no heading)."""
     d = route[1] - route[0]
+    if not np.any(d):
+        raise VistrackError(f"{key}[1] = ({route[1, 0]:g}, {route[1, 1]:g}): coincides with {key}[0], so the "
+                            "flight, which starts there heading to it, has no heading; give start=(x, y, psi)")
     return float(route[0, 0]), float(route[0, 1]), math.atan2(d[1], d[0])
 
 
@@ -215,9 +219,16 @@ def fly(
             raise VistrackError(f"start = {start!r}: expected (x, y, psi)")
         pose = (float(start[0]), float(start[1]), float(start[2]))
         flown = route
-    result = _wn.navigate(flown, pose, method=method, turn_radius=turn_radius, speed=speed, dt=dt, gains=gains,
-                          waypoint_radius=waypoint_radius, weights=weights, wind=wind, integration=integration,
-                          max_time=max_time)
+    try:
+        result = _wn.navigate(flown, pose, method=method, turn_radius=turn_radius, speed=speed, dt=dt, gains=gains,
+                              waypoint_radius=waypoint_radius, weights=weights, wind=wind, integration=integration,
+                              max_time=max_time)
+    except VistrackError as error:
+        if start is not None:
+            raise
+        # navigate numbers the waypoints it flies, which start at the route's second one.
+        text = re.sub(r"waypoints\[(\d+)\]", lambda m: f"waypoints[{int(m.group(1)) + 1}]", str(error))
+        raise VistrackError(text) from None
     return NavigationFlight(
         method=result.method,
         waypoint_radius=result.waypoint_radius if result.method == "wn" else None,

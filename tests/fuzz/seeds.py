@@ -48,6 +48,9 @@ uav: {speed: 20.0, min_turn_radius: 40.0, altitude: 200.0, start: null}\nsensor:
 planning: {spacing: 20.0, cutoff: 2.0e7, resolution_deg: 2.0, min_spacing: 1.0, max_depth: 8, rate_margin: 0.0}
 control: {beta: 0.025, k_psi: 20.0, direction: ccw}\nbaselines: [40.0, 120.0]
 """
+SWEEP = b"""name: fuzz\nkind: loiter\nbase:\n  random: {count: 4, seed: 0}\nparameters:
+  random.seed: {start: 0, stop: 3, step: 1}\n  method: [fly_through, ldlpp]\nmetrics: [method, flight_time_s]
+"""
 
 
 def _generated(target: str) -> list[bytes]:
@@ -97,6 +100,18 @@ def seed_inputs(target: str) -> list[bytes]:
         inputs.append((targets.REPO / "python" / "vistrack" / "scenarios" / "demo.yaml").read_bytes())
     elif target == "intercept":
         inputs.append(INTERCEPT)
+    elif target == "loiter":
+        inputs += [p.read_bytes() for p in sorted((targets.REPO / "examples").glob("loiter_*aoi.yaml"))]
+    elif target == "follow":
+        inputs += [p.read_bytes() for p in sorted((targets.REPO / "examples").glob("follow_*.yaml"))]
+    elif target == "sweep":
+        inputs.append(SWEEP)
+        inputs += [p.read_bytes() for p in sorted((targets.REPO / "examples").glob("sweep_*.yaml"))]
+    elif target == "route":
+        inputs += [b"\x00" + (targets.REPO / "examples" / "waypoints_paper.csv").read_bytes(),
+                   b"\x00" + b"0,0\n100,0\n100,100\n",
+                   b"\x01" + b"t,x,y\n0,0,0\n10,100,0\n20,100,50\n",
+                   b"\x02" + (targets.REPO / "examples" / "charlotte_roads.geojson").read_bytes()]
     elif target == "arrays":
         inputs += [bytes(range(256)), bytes(64), hashlib.sha256(b"vistrack").digest() * 8]
     inputs += _generated(target)

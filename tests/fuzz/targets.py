@@ -27,8 +27,10 @@ import build_tree  # noqa: E402,F401  (imports vistrack from $VISTRACK_BUILD_DIR
 import vistrack as vt  # noqa: E402
 from vistrack import VistrackError  # noqa: E402
 from vistrack.intercept import InterceptProblem  # noqa: E402
-from vistrack.io import read_plan  # noqa: E402
+from vistrack.follow_scenario import FollowScenario  # noqa: E402
+from vistrack.io import read_loiter_scenario, read_plan, read_roads, read_route, read_vehicle_track  # noqa: E402
 from vistrack.scenario import Scenario  # noqa: E402
+from vistrack.sweep.spec import SweepSpec  # noqa: E402
 
 SCRATCH = Path(tempfile.mkdtemp(prefix="vistrack-fuzz-", dir="/dev/shm" if os.path.isdir("/dev/shm") else None))
 
@@ -174,6 +176,53 @@ def intercept(data: bytes) -> None:
     require_finite([result.angle, result.time, result.residual, result.path.length], "intercept")
 
 
+def loiter(data: bytes) -> None:
+    """A loiter scenario file, planned by the three methods in the given order; coverage when the
+    flight is short enough to sample within the fuzzer's timeout."""
+    loaded = read_loiter_scenario(write(data, ".yaml"))
+    for method in ("fly_through", "tlpp", "ldlpp"):
+        planned = loaded.plan(method)
+        require_finite([planned.length, planned.flight_time, planned.transit_time], method)
+        if planned.flight_time / loaded.dt <= 20000:
+            covered = loaded.coverage(planned)
+            require_finite([covered.time, covered.area, np.asarray(covered.time_per_aoi)], f"{method} coverage")
+
+
+def follow(data: bytes) -> None:
+    """A follow scenario file (loaded and validated, not flown: a valid flight may last hours)."""
+    loaded = FollowScenario.load(write(data, ".yaml"))
+    require_finite([loaded.uav.speed, loaded.uav.min_turn_radius, loaded.uav.altitude], "uav")
+    require_finite([(leg.heading, leg.speed, leg.end_speed, leg.duration) for leg in loaded.legs], "legs")
+
+
+def sweep(data: bytes) -> None:
+    """A sweep file: validated and expanded into its cases (not run)."""
+    spec = SweepSpec.load(write(data, ".yaml"))
+    if spec.case_count <= 2000:
+        cases = spec.cases()
+        if len(cases) != spec.case_count:
+            raise Finding(f"{len(cases)} cases, case_count = {spec.case_count}")
+
+
+def route(data: bytes) -> None:
+    """First byte: which reader (waypoint route CSV, vehicle track CSV, road GeoJSON); a route is
+    then flown by the DWN guidance for at most ten simulated minutes."""
+    if not data:
+        return
+    which, body = data[0] % 3, data[1:]
+    if which == 0:
+        points = read_route(write(body, ".csv"))
+        require_finite(points, "route")
+        flight = vt.waypoint_nav.fly(points, turn_radius=40.0, speed=16.0, max_time=600.0)
+        require_finite(np.asarray(flight.trajectory), "trajectory")
+    elif which == 1:
+        times, positions = read_vehicle_track(write(body, ".csv"))
+        require_finite([np.asarray(times), np.asarray(positions)], "track")
+    else:
+        roads = read_roads(write(body, ".geojson"))
+        require_finite(np.asarray(roads.nodes), "nodes")
+
+
 # --------------------------------------------------------------------------------------------
 # Array entry points, driven by a stream of numbers from the input
 
@@ -215,7 +264,7 @@ class Numbers:
 def _call(numbers: Numbers) -> Any:
     """One API call chosen and fed by the input."""
     n = numbers
-    which = n.integer(0, 17)
+    which = n.integer(0, 20)
     if which == 0:
         return vt.dubins.shortest_path((n.number(), n.number(), n.number()), (n.number(), n.number(), n.number()),
                                        n.number()).sample(max(n.number(), 1e-3) if n.byte() & 1 else 1.0)
@@ -286,6 +335,20 @@ def _call(numbers: Numbers) -> Any:
     if which == 16:
         return vt.tune_turn_rate(n.number(), n.number(), n.number(), n.number(), n.number(), num_radii=8,
                                  num_angles=8, num_heading_errors=5).max_turn_rate
+    if which == 18:
+        point = vt.waypoint_nav.turning_point((n.number(), n.number(), n.number()), (n.number(), n.number()),
+                                              (n.number(), n.number()), n.number(), (n.number(), n.number()))
+        if not point.feasible:
+            return []
+        return [point.length, np.asarray(point.point), point.theta, point.heading_at_waypoint]
+    if which == 19:
+        return np.asarray(vt.waypoint_nav.reachability((n.number(), n.number(), n.number()), n.rows(2, 4),
+                                                       n.number()))
+    if which == 20:
+        planned = vt.loiter.plan(n.rows(2, 5), ("fly_through", "tlpp", "ldlpp")[n.integer(0, 2)],
+                                 (n.number(), n.number()), (n.number(), n.number()), n.number(), n.number(),
+                                 n.number(), n.integer(-1, 4), "best" if n.byte() & 1 else "given")
+        return [planned.length, planned.flight_time, planned.transit_time]
     return vt.dubins.length_to_circle((n.number(), n.number(), n.number()), n.number(), (n.number(), n.number()),
                                       n.number(), [n.number() for _ in range(3)])
 
@@ -316,6 +379,10 @@ TARGETS = {t.name: t for t in (
     Target("vv", vv, 1 << 20),
     Target("mission", mission, 8192),
     Target("intercept", intercept, 1024),
+    Target("loiter", loiter, 4096),
+    Target("follow", follow, 4096),
+    Target("sweep", sweep, 4096),
+    Target("route", route, 4096),
     Target("arrays", arrays, 1024),
 )}
 

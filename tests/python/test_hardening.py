@@ -392,6 +392,19 @@ def test_follow_refuses_out_of_range_inputs_and_wrong_shapes() -> None:
     refuses(lambda: F.GroundVehicle(np.array([0.0, 1.0]), np.array([[0.0, 0.0], [1e300, 0.0]])), "track.x")
 
 
+def test_a_constant_speed_leg_reads_its_speed_not_nan() -> None:
+    """VehicleLeg keeps NaN for "constant speed" inside; Python reads the effective end speed."""
+    leg = vt.follow.VehicleLeg(heading=0.0, speed=8.0, duration=40.0)
+    assert leg.end_speed == 8.0
+    leg.end_speed = 3.0
+    assert leg.end_speed == 3.0
+    leg.end_speed = None
+    leg.speed = 5.0
+    assert leg.end_speed == 5.0
+    truck = vt.follow.GroundVehicle.from_legs([leg], (0.0, 0.0))
+    assert np.allclose(truck.position(20.0), (100.0, 0.0))
+
+
 @pytest.mark.parametrize("args, status, fragment", [
     (["waypoints", "{route}", "--monte-carlo", "1000000000"], 2, "--monte-carlo = 1000000000"),
     (["waypoints", "{route}", "--turn-radius", "1e300"], 2, "--turn-radius = 1e+300"),

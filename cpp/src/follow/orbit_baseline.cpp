@@ -37,6 +37,10 @@ FollowRun orbit_follow(const GroundVehicle& vehicle, const Uav& uav, const Contr
   if (!(steady.norm() < uav.speed))
     detail::fail_field("wind", detail::to_text(steady.x()) + ", " + detail::to_text(steady.y()),
                        "the wind must be slower than the UAV's airspeed " + detail::to_text(uav.speed));
+  if (!(uav.speed > vehicle.max_speed()))
+    detail::fail_field("uav.speed", uav.speed,
+                       "must exceed the vehicle's top speed " + detail::to_text(vehicle.max_speed()) +
+                           " m/s to orbit it (Lemma 5)");
   const FollowPlanner offsets(parameters, uav);  // only its offset vector
   const GuidanceGains gains = GuidanceGains::from(uav, control);
   OrbitFollower guidance(vehicle, offsets, gains, radius);

@@ -161,7 +161,13 @@ def add_export_arguments(parser: argparse.ArgumentParser, direction: bool = Fals
                                              f"--origin = {text}: need LAT,LON or LAT,LON,ALT in degrees and metres"
                                              ) from None
 
+    def mission_file(key: str, text: str) -> str:
+        if Path(text).suffix.lower() not in MISSION_SUFFIXES:
+            raise schema.fail(key, text, "unknown format; the suffix must be one of " + ", ".join(MISSION_SUFFIXES))
+        return text
+
     parser.add_argument("--export", action="append", default=[], metavar="FILE",
+                        type=checked("--export", mission_file, numeric=False),
                         help="also write the route for an autopilot or a map, by suffix: .plan (QGroundControl), "
                              ".waypoints/.txt (QGC WPL 110), .geojson (WGS84); repeatable. Placed by --origin, "
                              "else the scenario's origin or a longitude/latitude map (loiter and follow: else "
@@ -182,10 +188,6 @@ def export_georeference(paths: Sequence[str], georeference: Georeference | None,
                         env: Environment | None = None, fallback: Georeference | None = None) -> Georeference:
     """The georeference for --export: --origin / the scenario's, else the map's (env.origin), else
     ``fallback`` (with a printed note)."""
-    for path in paths:
-        if Path(path).suffix.lower() not in MISSION_SUFFIXES:
-            raise VistrackError(f"--export = {path}: unknown format; the suffix must be one of "
-                                + ", ".join(MISSION_SUFFIXES))
     reference = georeference or Georeference.of(env)
     if reference is None and fallback is not None:
         print(f"--export: no --origin given; local (0, 0) placed at {fallback.lat},{fallback.lon} "
@@ -198,12 +200,9 @@ def export_georeference(paths: Sequence[str], georeference: Georeference | None,
 
 
 def check_exports(paths: Sequence[str], georeference: Georeference | None, map_path: str | Path | None) -> None:
-    """--export checked before the work: known suffixes, and a georeference unless the map may
-    bring one (a GeoJSON map in longitude/latitude; the rest is checked once it is read)."""
-    for path in paths:
-        if Path(path).suffix.lower() not in MISSION_SUFFIXES:
-            raise UsageError(f"--export = {path}: unknown format; the suffix must be one of "
-                             + ", ".join(MISSION_SUFFIXES))
+    """--export checked before the work (its suffixes are checked as the command line is parsed):
+    a georeference unless the map may bring one (a GeoJSON map in longitude/latitude; the rest is
+    checked once it is read)."""
     may_bring_origin = map_path is not None and Path(map_path).suffix.lower() in (".geojson", ".json")
     if paths and georeference is None and not may_bring_origin:
         export_georeference(paths, None)

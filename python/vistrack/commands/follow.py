@@ -17,7 +17,14 @@ from pathlib import Path
 
 from ..follow_scenario import FollowScenario
 from ..report.follow import write_follow
-from . import DEFAULT_EXPORT_ORIGIN, add_export_arguments, add_report_arguments, export_mission, report_options
+from . import (
+    DEFAULT_EXPORT_ORIGIN,
+    add_export_arguments,
+    add_report_arguments,
+    export_mission,
+    number,
+    report_options,
+)
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -29,7 +36,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--no-compensation", dest="compensation", action="store_false", default=None,
                         help="plan without the wind estimate (the paper's Fig. 6)")
     parser.add_argument("--no-city", dest="city", action="store_false", help="skip the city runs")
-    parser.add_argument("--export-tolerance", type=float, default=1.0, metavar="M",
+    parser.add_argument("--export-tolerance", type=number("--export-tolerance", 0.0, 1e7), default=1.0, metavar="M",
                         help="--export keeps the 1 Hz waypoints Douglas-Peucker needs at this tolerance "
                              "(default 1 m; 0: every waypoint)")
     add_export_arguments(parser)

@@ -26,6 +26,7 @@ from . import (
     add_report_arguments,
     count,
     export_missions,
+    length,
     output_folder,
     positive_numbers,
     report_options,
@@ -38,7 +39,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("scenarios", nargs="*", type=Path, help="scenario YAML files (examples/loiter_*.yaml)")
     p.add_argument("--random", type=count("--random", 1, 100000), metavar="N",
                    help="N random scenarios instead of files")
-    p.add_argument("--seed", type=int, default=0, help="seed of the random scenarios (default 0)")
+    p.add_argument("--seed", type=count("--seed", 0, 2**63 - 1), default=0,
+                   help="seed of the random scenarios (default 0)")
     p.add_argument("--aois", type=count("--aois", 1, 10000), nargs="+", default=list(range(4, 10)),
                    help="AOI counts the random scenarios cycle through (default 4 5 6 7 8 9)")
     p.add_argument("--method", nargs="+", choices=loiter.METHODS, default=list(loiter.METHODS),
@@ -49,7 +51,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="fly every plan in this unknown constant wind (m/s east, north); repeatable")
     p.add_argument("--wind-sweep", type=positive_numbers("--wind-sweep", "5,10"), default=[], metavar="SPEEDS",
                    help="also fly every plan in winds of these speeds (m/s) from 8 directions")
-    p.add_argument("--altitude", type=float, help="mission altitude for --export, m (default: the camera's, 61 m)")
+    p.add_argument("--altitude", type=length("--altitude"),
+                   help="mission altitude for --export, m (default: the camera's, 61 m)")
     add_export_arguments(p)
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     add_report_arguments(p)

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from ..sweep import SERIAL, SweepSpec, run
+from . import UsageError, count
 
 
 def register(subparsers: Any) -> None:
@@ -22,7 +23,7 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--scheduler", default=None, metavar="ADDR",
                         help=f"Dask scheduler address (tcp://host:8786); default: a LocalCluster here; "
                              f"'{SERIAL}': one case after another in this process")
-    parser.add_argument("--workers", type=int, default=None, metavar="N",
+    parser.add_argument("--workers", type=count("--workers", 1, 1024), default=None, metavar="N",
                         help="LocalCluster worker processes (default: one per core); not with --scheduler")
     parser.add_argument("--no-figures", action="store_true", help="write the table only")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -31,9 +32,7 @@ def register(subparsers: Any) -> None:
 
 def main(args: argparse.Namespace) -> int:
     if args.workers is not None and args.scheduler is not None:
-        raise SystemExit("vistrack sweep: error: --workers only applies without --scheduler (a LocalCluster)")
-    if args.workers is not None and args.workers < 1:
-        raise SystemExit(f"vistrack sweep: error: --workers = {args.workers}: must be at least 1")
+        raise UsageError(f"--workers = {args.workers}: only applies without --scheduler (a LocalCluster)")
     spec = SweepSpec.load(args.sweep)
     print(f"{spec.name}: {spec.case_count} {spec.kind.name} cases over {', '.join(spec.parameters)} "
           f"({spec.combine})", flush=True)

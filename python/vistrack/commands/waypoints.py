@@ -43,7 +43,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                         help="WN radii, comma-separated (default 0.1R,0.5R,R)")
     parser.add_argument("--wind", type=finite_numbers("--wind", 2, "0,0.08"), default=[0.0, 0.0],
                         help="constant wind east,north (default 0,0)")
-    parser.add_argument("--gusts", type=int, metavar="SEED",
+    parser.add_argument("--gusts", type=count("--gusts", 0, 2**63 - 1), metavar="SEED",
                         help="add Dryden gusts with this seed (light turbulence, MIL-F-8785C, see vt.waypoint_nav)")
     parser.add_argument("--turn-radius", type=length("--turn-radius"), default=d["turn_radius"],
                         help=f"R (default {d['turn_radius']})")
@@ -56,7 +56,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--figure-weights", action="store_true", help="also Figure 10 (theta against w_a)")
     parser.add_argument("--monte-carlo", type=count("--monte-carlo", 1, 100000), metavar="N",
                         help="also N seeded random routes and winds")
-    parser.add_argument("--seed", type=int, default=0, help="Monte Carlo seed (default 0)")
+    parser.add_argument("--seed", type=count("--seed", 0, 2**63 - 1), default=0, help="Monte Carlo seed (default 0)")
     parser.add_argument("--monte-carlo-wind", type=finite_numbers("--monte-carlo-wind", 2, "0,0.2"),
                         default=[0.0, 0.2], help="Monte Carlo wind speeds, fractions of v (default 0,0.2)")
     parser.add_argument("--altitude", type=coordinate("--altitude"), default=60.0,
