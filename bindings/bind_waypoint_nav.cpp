@@ -11,6 +11,7 @@
 
 #include "bindings.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/waypoint_nav.hpp"
 
 namespace py = pybind11;
@@ -164,7 +165,13 @@ void bind_waypoint_nav(py::module_& parent) {
   m.def(
       "reachability",
       [](const Pose& pose, const Points2& pts, double turn_radius) {
-        require_positive(turn_radius, "turn_radius");
+        require_length(turn_radius, "turn_radius");
+        require_coordinate(std::get<0>(pose), "pose[0]");
+        require_coordinate(std::get<1>(pose), "pose[1]");
+        require_angle(std::get<2>(pose), "pose[2]");
+        for (Eigen::Index i = 0; i < pts.rows(); ++i)
+          for (int k = 0; k < 2; ++k)
+            require_coordinate(pts(i, k), "points[" + std::to_string(i) + "][" + std::to_string(k) + "]");
         std::vector<double> out(static_cast<std::size_t>(pts.rows()));
         for (Eigen::Index i = 0; i < pts.rows(); ++i)
           out[static_cast<std::size_t>(i)] = reachability(configuration(pose), pts.row(i).transpose(), turn_radius);

@@ -520,6 +520,11 @@ def read_loiter_scenario(path: str | Path) -> LoiterScenario:
     paper = data.get("paper") or {}
     if not isinstance(paper, dict):
         raise schema.fail("paper", paper, "must map a method to its Table 1 numbers")
+    for method, numbers in paper.items():
+        if not isinstance(numbers, dict):
+            raise schema.fail(f"paper.{method}", numbers, "must map a quantity to a number")
+    paper_numbers = {str(method): {str(name): schema.number(f"paper.{method}.{name}", value)
+                                   for name, value in numbers.items()} for method, numbers in paper.items()}
     scenario = Scenario(
         aois=aois,
         name=str(data.get("name", Path(path).stem)),
@@ -532,7 +537,7 @@ def read_loiter_scenario(path: str | Path) -> LoiterScenario:
         camera=camera,
         threshold=schema.number("threshold", data.get("threshold", 0.75), low=0.0, high=1.0, low_open=True),
         dt=schema.positive("dt", data.get("dt", 1.0)),
-        paper={str(k): {str(n): float(x) for n, x in dict(v).items()} for k, v in paper.items()},
+        paper=paper_numbers,
         origin=None if data.get("origin") is None else Georeference.from_value(data["origin"], "origin"),
     )
     # The planner's own checks (overlapping circles, R < r, start inside a circle) name the key.

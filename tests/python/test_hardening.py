@@ -344,6 +344,15 @@ def test_waypoint_navigation_refuses_far_or_missing_waypoints() -> None:
     with pytest.raises(VistrackError):
         vt.waypoint_nav.fly(np.zeros((0, 2)))
     refuses(lambda: vt.flight.Wind(east=1e300, north=0.0), "wind.east = 1e+300", "[-10000, 10000] m/s")
+    # Fuzz finding (tests/fuzz/regressions/arrays/reachability-nan-pose): a NaN pose gave NaNs.
+    wn = vt.waypoint_nav
+    refuses(lambda: wn.reachability((math.nan, 0.0, 0.0), np.zeros((2, 2)), 10.0), "pose[0] = nan")
+    refuses(lambda: wn.reachability((0.0, 0.0, 0.0), np.array([[1e300, 0.0]]), 10.0), "points[0][0] = 1e+300")
+    refuses(lambda: wn.reachability((0.0, 0.0, 0.0), np.zeros((1, 2)), 1e300), "turn_radius = 1e+300")
+    refuses(lambda: wn.turning_point((0.0, 0.0, 0.0), (1e300, 0.0), (0.0, 5.0), 1.0), "w_next.x = 1e+300")
+    refuses(lambda: wn.turning_point((0.0, 0.0, 0.0), (9e6, 0.0), (9e6, 5.0), 1.0), "turn_radius = 1",
+            "at most 1e6 turn radii")
+    assert np.all(np.isfinite(wn.reachability((0.0, 0.0, 1e9), np.array([[1e7, -1e7], [0.0, 0.0]]), 1e-6)))
 
 
 AOIS = [[200.0, 0.0], [500.0, 0.0], [500.0, 300.0]]

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/ode.hpp"
 #include "vistrack/waypoint_nav.hpp"
 #include "waypoint_nav/horizon.hpp"
@@ -27,15 +28,22 @@ Vec2 left_normal(double angle) { return {-std::sin(angle), std::cos(angle)}; }
 
 void validate_horizon(const Configuration& pose, const Vec2& w_next, const Vec2& w_after, double turn_radius,
                       const FuelWeights& weights) {
-  require_finite(pose.x, "pose.x");
-  require_finite(pose.y, "pose.y");
-  require_finite(pose.psi, "pose.psi");
-  require_finite(w_next.x(), "w_next.x");
-  require_finite(w_next.y(), "w_next.y");
-  require_finite(w_after.x(), "w_after.x");
-  require_finite(w_after.y(), "w_after.y");
-  require_positive(turn_radius, "turn_radius");
+  require_coordinate(pose.x, "pose.x");
+  require_coordinate(pose.y, "pose.y");
+  require_angle(pose.psi, "pose.psi");
+  require_coordinate(w_next.x(), "w_next.x");
+  require_coordinate(w_next.y(), "w_next.y");
+  require_coordinate(w_after.x(), "w_after.x");
+  require_coordinate(w_after.y(), "w_after.y");
+  require_length(turn_radius, "turn_radius");
   weights.validate();
+  // As the Dubins solver's limit (limits.hpp): beyond 1e6 R from the pose the turns are below the
+  // rounding of the coordinates.
+  const double reach = std::max((w_next - Vec2(pose.x, pose.y)).norm(), (w_after - Vec2(pose.x, pose.y)).norm());
+  if (!(reach <= limits::kMaxCoordinateOverRho * turn_radius))
+    detail::fail_field("turn_radius", turn_radius,
+                       "is too small for waypoints " + detail::to_text(reach) +
+                           " m away: at most 1e6 turn radii from the pose");
   if ((w_after - w_next).norm() < 1e-9 * turn_radius)
     detail::fail_field("w_after", "(" + detail::to_text(w_after.x()) + ", " + detail::to_text(w_after.y()) + ")",
                        "closer than 1e-9 R to w_next");
