@@ -46,7 +46,7 @@ from .follow import (
 )
 from .georeference import Georeference
 from .io import load_environment, read_road_path, read_vehicle_track, read_yaml_mapping
-from .schema import fail, number, positive, resolve_path, section
+from .schema import fail, number, positive, reject_unknown, resolve_path, section
 
 __all__ = ["HEADINGS", "CityRoad", "FollowScenario", "FollowStudy"]
 
@@ -95,9 +95,7 @@ class FollowScenario:
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any], base: Path, path: Optional[Path] = None) -> "FollowScenario":
-        unknown = sorted(set(data) - TOP_KEYS, key=str)  # a YAML key may be a number
-        if unknown:
-            raise fail(unknown[0], data[unknown[0]], f"unknown key; allowed: {', '.join(sorted(TOP_KEYS))}")
+        reject_unknown(data, TOP_KEYS)
         u = section(data, "uav", {"speed", "min_turn_radius", "altitude"})
         defaults = Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
         uav = Uav(speed=positive("uav.speed", u.get("speed", defaults.speed)),
@@ -234,9 +232,7 @@ def _legs(items: Any) -> list[VehicleLeg]:
         key = f"vehicle.legs[{i}]"
         if not isinstance(leg, Mapping):
             raise fail(key, leg, "must be a mapping with heading, speed, duration")
-        unknown = sorted(set(leg) - allowed, key=str)
-        if unknown:
-            raise fail(f"{key}.{unknown[0]}", leg[unknown[0]], f"unknown key; allowed: {', '.join(sorted(allowed))}")
+        reject_unknown(leg, allowed, f"{key}.")
         speed = number(f"{key}.speed", leg.get("speed", 0.0), low=0.0)
         end = leg.get("end_speed")
         legs.append(VehicleLeg(_heading(key, leg), speed, positive(f"{key}.duration", leg.get("duration")),

@@ -500,9 +500,7 @@ def read_loiter_scenario(path: str | Path) -> LoiterScenario:
     data = read_yaml_mapping(path, "scenario")
     allowed = {"name", "aois", "start", "end", "turn_radius", "speed", "aoi_radius", "turns", "camera",
                "threshold", "dt", "paper", "origin"}
-    unknown = sorted(set(data) - allowed)
-    if unknown:
-        raise schema.fail(unknown[0], data[unknown[0]], f"unknown key; allowed: {', '.join(sorted(allowed))}")
+    schema.reject_unknown(data, allowed)
 
     def pair(key: str, value: Any) -> tuple[float, float]:
         if not isinstance(value, (list, tuple)) or len(value) != 2:

@@ -44,6 +44,7 @@ from .schema import (
     length,
     number,
     positive,
+    reject_unknown,
     resolve_path,
     section,
     speed,
@@ -171,10 +172,7 @@ class Scenario:
         base = Path(base)
         if not isinstance(data, Mapping):
             raise fail("scenario", data, "must be a mapping with sections " + ", ".join(cls.SECTIONS))
-        unknown = sorted(set(data) - set(cls.SECTIONS))
-        if unknown:
-            raise fail(unknown[0], data[unknown[0]],
-                        "unknown section; allowed sections: " + ", ".join(cls.SECTIONS))
+        reject_unknown(data, cls.SECTIONS, noun="section")
         scenario = cls()
         if "name" in data:
             name = data["name"]

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Any, Callable, Mapping, TypeVar
+from typing import Any, Callable, Iterable, Mapping, TypeVar
 
 from ._core import VistrackError
 from ._core import limits as _limits
@@ -70,15 +70,24 @@ def integer(key: str, value: Any, low: int, high: int) -> int:
     return value
 
 
+def reject_unknown(data: Mapping[Any, Any], allowed: Iterable[str], prefix: str = "", noun: str = "key",
+                   where: str = "") -> None:
+    """VistrackError naming the first key of ``data`` outside ``allowed`` (as ``prefix`` + key):
+    "unknown key; allowed keys[ where]: ...". YAML keys may be of any type (``0:``, ``true:``), so
+    they are sorted as text."""
+    names = set(allowed)
+    unknown = sorted(set(data) - names, key=str)
+    if unknown:
+        raise fail(f"{prefix}{unknown[0]}", data[unknown[0]],
+                   f"unknown {noun}; allowed {noun}s{where}: {', '.join(sorted(names))}")
+
+
 def section(data: Mapping[str, Any], name: str, allowed: set[str]) -> dict[str, Any]:
     """The mapping ``data[name]`` (empty when absent), with no key outside ``allowed``."""
     found = data.get(name) or {}
     if not isinstance(found, Mapping):
         raise fail(name, found, "must be a mapping of keys to values")
-    unknown = sorted(set(found) - allowed, key=str)  # keys of any YAML type (1, true, ...)
-    if unknown:
-        raise fail(f"{name}.{unknown[0]}", found[unknown[0]],
-                   f"unknown key; allowed keys in {name}: {', '.join(sorted(allowed))}")
+    reject_unknown(found, allowed, f"{name}.", where=f" in {name}")
     return dict(found)
 
 

@@ -448,3 +448,14 @@ def test_yaml_keys_that_are_numbers_name_the_key(tmp_path: Path) -> None:
     path.write_text("0: w\nradius: 1.0\n")
     refuses(lambda: InterceptProblem.load(path, {}), "config.0")
     refuses(lambda: FollowScenario.load(path), "0 = 'w'", "unknown key")
+    # The same in every loader that lists unknown keys (tests/fuzz/regressions/loiter/number-key.yaml).
+    from vistrack.io import read_loiter_scenario
+    from vistrack.scenario import Scenario
+    from vistrack.sweep.spec import SweepSpec
+
+    refuses(lambda: read_loiter_scenario(path), "0 = 'w'", "unknown key")
+    refuses(lambda: Scenario.load(path), "0 = 'w'", "unknown section")
+    refuses(lambda: SweepSpec.load(path), "0 = 'w'", "unknown key")
+    loiter_sweep = tmp_path / "sweep.yaml"
+    loiter_sweep.write_text("kind: loiter\nbase: {aois: [[300, 300]], 1: 2}\nparameters: {speed: [10, 12]}\n")
+    refuses(lambda: SweepSpec.load(loiter_sweep), "1 = 2", "unknown key")

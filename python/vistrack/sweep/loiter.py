@@ -42,7 +42,7 @@ import numpy as np
 
 from .. import loiter
 from ..io import read_loiter_scenario
-from ..schema import boolean, fail, integer, number, positive, resolve_path
+from ..schema import boolean, fail, integer, number, positive, reject_unknown, resolve_path
 from .kinds import (
     CaseContext,
     CaseKind,
@@ -83,9 +83,7 @@ def _defaults() -> dict[str, Any]:
 def _base(value: Any, folder: Path) -> dict[str, Any]:
     data, folder = read_base(value, folder, "a loiter mapping")
     allowed = ("scenario", *_SOURCES, *_SETTINGS)
-    unknown = sorted(set(data) - set(allowed))
-    if unknown:
-        raise fail(unknown[0], data[unknown[0]], "unknown key; allowed: " + ", ".join(allowed))
+    reject_unknown(data, allowed)
     full = _defaults()
     if data.get("scenario") is not None:  # the file's AOIs and settings, read once
         scenario = read_loiter_scenario(resolve_path(folder, data["scenario"], "scenario"))

@@ -39,7 +39,7 @@ import numpy as np
 
 from .._core import RoadNetwork, VistrackError
 from ..io import read_roads, read_yaml_mapping
-from ..schema import fail, integer, number, resolve_path
+from ..schema import fail, integer, number, reject_unknown, resolve_path
 from .kinds import CaseKind, get_kind
 
 __all__ = ["MAX_CASES", "Case", "Route", "SweepSpec"]
@@ -102,9 +102,7 @@ class SweepSpec:
         folder = Path(folder).resolve()
         if not isinstance(data, Mapping):
             raise fail("sweep", data, "must be a mapping with keys " + ", ".join(_KEYS))
-        unknown = sorted(set(data) - set(_KEYS))
-        if unknown:
-            raise fail(unknown[0], data[unknown[0]], "unknown key; allowed keys: " + ", ".join(_KEYS))
+        reject_unknown(data, _KEYS)
         kind = get_kind(data.get("kind", "tracking"))
         if "base" not in data:
             raise fail("base", None, f"required: the base case of kind {kind.name} (a file or a mapping)")
@@ -269,10 +267,7 @@ def _metrics(data: Any, kind: CaseKind) -> tuple[str, ...]:
 def _routes(data: Any, kind: CaseKind, base: Mapping[str, Any], folder: Path, seed: int) -> dict[str, Route]:
     if not isinstance(data, Mapping):
         raise fail("routes", data, "must be a mapping (roads, nodes or points, ordered, sample)")
-    unknown = sorted(set(data) - {"roads", "nodes", "points", "ordered", "sample", "height"})
-    if unknown:
-        raise fail(f"routes.{unknown[0]}", data[unknown[0]], "unknown key; allowed: roads, nodes, points, "
-                                                             "ordered, sample, height")
+    reject_unknown(data, {"roads", "nodes", "points", "ordered", "sample", "height"}, "routes.")
     if kind.route_key is None:
         raise fail("routes", dict(data), f"kind {kind.name} has no road route to vary")
     if data.get("roads") is not None:

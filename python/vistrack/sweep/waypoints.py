@@ -39,7 +39,7 @@ import numpy as np
 from .. import waypoint_nav as wn
 from ..flight import Wind
 from ..io import read_route
-from ..schema import fail, integer, number, positive, resolve_path
+from ..schema import fail, integer, number, positive, reject_unknown, resolve_path
 from .kinds import (
     CaseContext,
     CaseKind,
@@ -72,9 +72,7 @@ def _base(value: Any, folder: Path) -> dict[str, Any]:
 
 def _defaults(data: Mapping[str, Any], folder: Path) -> dict[str, Any]:
     """The base with every setting present (the paper's defaults) and file paths absolute."""
-    unknown = sorted(set(data) - set(_SOURCES) - set(_SETTINGS))
-    if unknown:
-        raise fail(unknown[0], data[unknown[0]], "unknown key; allowed: " + ", ".join((*_SOURCES, *_SETTINGS)))
+    reject_unknown(data, (*_SOURCES, *_SETTINGS))
     d = wn.DEFAULTS
     full: dict[str, Any] = {"start": None, "method": d["method"], "waypoint_radius": None,
                             "turn_radius": d["turn_radius"], "speed": d["speed"], "dt": d["dt"],
