@@ -268,16 +268,18 @@ def report_options(args: argparse.Namespace, base: Optional[ReportOptions] = Non
     except VistrackError as error:
         raise UsageError(str(error).replace("report.", "--", 1)) from None
     return options
-def finite_numbers(flag: str, count: int, example: str) -> Callable[[str], list[float]]:
-    """An argparse type for exactly ``count`` comma-separated finite numbers, e.g. --wind 0,0.08."""
+def finite_numbers(flag: str, count: int, example: str, limit: float = math.inf) -> Callable[[str], list[float]]:
+    """An argparse type for exactly ``count`` comma-separated finite numbers, e.g. --wind 0,0.08,
+    each within [-limit, limit]."""
 
     def parse(text: str) -> list[float]:
         try:
             values = [float(v) for v in text.split(",") if v.strip()]
         except ValueError:
             values = []
-        if len(values) != count or not all(math.isfinite(v) for v in values):
-            raise argparse.ArgumentTypeError(f"{flag} = {text}: need {count} finite numbers like {example}")
+        if len(values) != count or not all(abs(v) <= limit for v in values):  # NaN and inf fail too
+            within = "" if limit == math.inf else f" in [{-limit:g}, {limit:g}]"
+            raise argparse.ArgumentTypeError(f"{flag} = {text}: need {count} finite numbers{within} like {example}")
         return values
 
     return parse

@@ -26,6 +26,7 @@ from . import (
     add_report_arguments,
     count,
     export_missions,
+    finite_numbers,
     length,
     output_folder,
     positive_numbers,
@@ -47,7 +48,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="methods (default all three)")
     p.add_argument("--order", choices=loiter.ORDERS, default="given",
                    help="'best' also plans the best visiting order and reports the time saved")
-    p.add_argument("--wind", action="append", default=[], metavar="E,N",
+    p.add_argument("--wind", action="append", default=[], metavar="E,N", type=finite_numbers("--wind", 2, "5,0", 1e4),
                    help="fly every plan in this unknown constant wind (m/s east, north); repeatable")
     p.add_argument("--wind-sweep", type=positive_numbers("--wind-sweep", "5,10"), default=[], metavar="SPEEDS",
                    help="also fly every plan in winds of these speeds (m/s) from 8 directions")
@@ -60,29 +61,17 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
-def parse_wind(text: str) -> tuple[float, float]:
-    try:
-        east, north = (float(v) for v in text.split(","))
-    except ValueError:
-        raise UsageError(f"--wind = {text!r}: expected two numbers E,N in m/s") from None
-    if not (abs(east) <= 1e4 and abs(north) <= 1e4):  # NaN fails too (vistrack/limits.hpp: speeds)
-        raise UsageError(f"--wind = {text!r}: components must be finite numbers in [-1e4, 1e4] m/s")
-    return east, north
-
-
 def run(args: argparse.Namespace) -> int:
     options = report_options(args)
     if args.export and (len(args.scenarios) > 1 or (args.random or 1) > 1):
         raise UsageError(f"--export = {args.export[0]}: exports one scenario's plans; give one scenario file "
                          "or --random 1")
-    given = [parse_wind(w) for w in args.wind]
+    given = [(east, north) for east, north in args.wind]
     winds = given + loiter_study.wind_directions(args.wind_sweep)
     output_folder(args.out)  # a file there is an error now, not after the plans
     if args.random is not None:
         if args.scenarios:
             raise UsageError(f"--random = {args.random}: give scenario files or --random, not both")
-        if args.random < 1:
-            raise UsageError(f"--random = {args.random}: must be at least 1")
         with Progress("random scenarios", not args.quiet, unit="scenario") as bar:
             records = loiter_study.random_study(args.random, args.seed, args.method, args.order, args.aois, bar)
         written = report.write_random(args.out, records)

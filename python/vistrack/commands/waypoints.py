@@ -41,7 +41,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--method", choices=["dwn", "wn", "both"], default="both", help="default both")
     parser.add_argument("--waypoint-radius", type=positive_numbers("--waypoint-radius", "0.07,0.35,0.7"),
                         help="WN radii, comma-separated (default 0.1R,0.5R,R)")
-    parser.add_argument("--wind", type=finite_numbers("--wind", 2, "0,0.08"), default=[0.0, 0.0],
+    parser.add_argument("--wind", type=finite_numbers("--wind", 2, "0,0.08", 1e4), default=[0.0, 0.0],
                         help="constant wind east,north (default 0,0)")
     parser.add_argument("--gusts", type=count("--gusts", 0, 2**63 - 1), metavar="SEED",
                         help="add Dryden gusts with this seed (light turbulence, MIL-F-8785C, see vt.waypoint_nav)")
