@@ -28,10 +28,10 @@ class VehicleLeg:
     @property
     def end_speed(self) -> float:
         """
-        m/s at the end (NaN: same as speed)
+        m/s at the end (the start speed on a constant-speed leg; set None for constant speed)
         """
     @end_speed.setter
-    def end_speed(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def end_speed(self, arg1: typing.SupportsFloat | typing.SupportsIndex | None) -> None:
         ...
     @property
     def heading(self) -> float:
