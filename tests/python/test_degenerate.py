@@ -10,25 +10,15 @@ from __future__ import annotations
 import json
 import math
 from pathlib import Path
-from typing import Any, Callable
 
 import numpy as np
 import pytest
 
 import vistrack as vt
-from vistrack import VistrackError
+from refusal import refuses
 
 D_MAX = 100.0
 SPHERE = 4.0 / 3.0 * math.pi * D_MAX**3
-
-
-def refuses(call: Callable[[], Any], *fragments: str) -> str:
-    with pytest.raises(VistrackError) as raised:
-        call()
-    message = str(raised.value)
-    for fragment in fragments:
-        assert fragment in message, f"{fragment!r} not in {message!r}"
-    return message
 
 
 def boxes_obj(path: Path, boxes: list[tuple[tuple[float, ...], tuple[float, ...]]],
@@ -181,7 +171,7 @@ def test_coincident_waypoints() -> None:
     assert flight.all_reached
     # Loiter: two AOIs at one place share one loiter circle, which the planners refuse.
     for method in ("fly_through", "tlpp", "ldlpp"):
-        refuses(lambda: vt.loiter.plan(np.array([[300.0, 0.0], [300.0, 0.0]]), method),
+        refuses(lambda m=method: vt.loiter.plan(np.array([[300.0, 0.0], [300.0, 0.0]]), m),
                 "aois[1] = (300, 0)", "overlaps that of aois[0]")
 
 

@@ -10,27 +10,18 @@ import math
 import subprocess
 import sys
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 import pytest
 
 import vistrack as vt
+from refusal import refuses
 from vistrack import VistrackError
 from vistrack.cli import main as cli_main
 
 REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = REPO / "examples"
-
-
-def refuses(call: Callable[[], Any], *fragments: str, error: type[BaseException] = VistrackError) -> str:
-    """``call()`` raises ``error`` whose message holds every fragment; the message."""
-    with pytest.raises(error) as raised:
-        call()
-    message = str(raised.value)
-    for fragment in fragments:
-        assert fragment in message, f"{fragment!r} not in {message!r}"
-    return message
 
 
 def cli(args: list[str], capsys: pytest.CaptureFixture[str]) -> tuple[int, str]:
