@@ -5,7 +5,9 @@ on all of them alike. Prints medians over the rounds and the load average.
     python3 bench/visibility_builds.py --build before=/work/main/build/dev --build after=build/dev [--rounds 5]
 
 A build is NAME=BUILD_DIR (a CMake build tree with bindings/_core*.so); --repo NAME=REPO gives
-the source tree whose python/ goes with it (default: this repository). Per VV (the 10 POIs of
+the source tree whose python/ goes with it (default: this repository); --env NAME:VAR=VALUE sets an
+environment variable for that build's processes only (one build tree under two names compares,
+e.g., glibc's allocator settings: --env tuned:GLIBC_TUNABLES=glibc.malloc.trim_threshold=...). Per VV (the 10 POIs of
 bench/visibility_bench.py, d_max 400 m): wall ms one VV at a time (visibility_volume, which
 spreads one VV over the cores when the build can), wall ms per VV of a batch of the same 10
 (visibility_volumes) and VVs per second of a batch of 60, and the CPU ms per VV of that batch
@@ -65,6 +67,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--build", action="append", default=[], help="NAME=BUILD_DIR (repeat)")
     parser.add_argument("--repo", action="append", default=[], help="NAME=REPO whose python/ goes with that build")
+    parser.add_argument("--env", action="append", default=[], help="NAME:VAR=VALUE for that build's processes")
     parser.add_argument("--rounds", type=int, default=5)
     parser.add_argument("--inner", type=int, default=3, help="runs per sample (the best is kept)")
     data = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
@@ -82,12 +85,19 @@ def main() -> int:
         return 0
     builds = dict(b.split("=", 1) for b in args.build)
     repos = dict.fromkeys(builds, REPO) | {k: Path(v) for k, v in (r.split("=", 1) for r in args.repo)}
+    envs: dict[str, dict[str, str]] = {name: dict(os.environ) for name in builds}
+    for item in args.env:
+        name, assignment = item.split(":", 1)
+        if name not in builds or "=" not in assignment:
+            parser.error(f"--env {item}: expected NAME:VAR=VALUE with NAME one of {', '.join(builds)}")
+        var, value = assignment.split("=", 1)
+        envs[name][var] = value
     samples: dict[str, list[dict]] = {name: [] for name in builds}
     for _ in range(args.rounds):
         for name, build in builds.items():
             out = subprocess.run([sys.executable, __file__, "--child", str(repos[name]), str(Path(build).resolve()),
                                   "--inner", str(args.inner), "--data", str(args.data)],
-                                 capture_output=True, text=True, check=True)
+                                 capture_output=True, text=True, check=True, env=envs[name])
             samples[name].append(json.loads(out.stdout.strip().splitlines()[-1]))
     keys = ("single_ms", "batch_ms", "batch_vvs_per_s", "batch_cpu_ms", "load")
     print(f"1-degree Charlotte VVs, d_max 400 m; medians of {args.rounds} interleaved rounds (each the best of "

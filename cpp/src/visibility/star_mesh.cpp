@@ -6,7 +6,10 @@
 // (r1 + r2)(r1 - r2)^2 / 4 less of r^3 than the step does, so a plain corner mesh of a Charlotte
 // VV holds 0.2-2.4 % less volume than the per-direction intervals. Each such edge is bisected with
 // more rays until the jump is pinned to 1/2^kBisections of the edge, and the triangles on both
-// sides share a radial wall there.
+// sides share a radial wall there. A jump between two radial surfaces stops earlier once the volume
+// its bracket can misplace, |r_lo^3 - r_hi^3| / 3 per unit solid angle times the bracket's width,
+// is no more than the largest possible jump's (0 to d_max) after all rounds: a jump between two
+// near surfaces holds little volume and needs fewer rays (a fifth fewer on a Charlotte VV).
 //
 // Refinement: an edge whose middle ray differs from both ends holds two jumps (a gap between two
 // buildings, a thin tower in front of the sky; 0.01-0.03 % of a Charlotte VV went missing there),
@@ -37,6 +40,7 @@ namespace {
 constexpr double kJumpCandidate = 0.1;   // relative gap |r_u - r_w| / max(r_u, r_w) worth bisecting
 constexpr double kJumpConfirmed = 0.05;  // relative gap still left after bisection: a jump
 constexpr int kBisections = 6;
+const double kSettledStake = std::ldexp(1.0, -kBisections);  // see settled() in build_star_mesh
 
 // slot_flags bits
 constexpr std::uint8_t kLive = 1;     // all three corners see something
@@ -288,13 +292,25 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   // Bisection of the jumps from `first` on: kBisections rounds of rays, each keeping the half of
   // the bracket with the larger gap (a jump keeps its gap, a smooth but steep r(w) loses half of it
   // per round). A bracket whose gap falls to the confirmation level is smooth: it leaves the
-  // rounds early. Both ends on one plane is no jump: the ground seen at grazing angles changes
-  // fast but stays flat. With allow_split, an edge whose middle ray differs from both ends is
+  // rounds early, and so does a settled one (little volume at stake). Both ends on one plane is no
+  // jump: the ground seen at grazing angles changes fast but stays flat. With allow_split, an edge whose middle ray differs from both ends is
   // split there instead.
   auto open = [&](const Jump& jump) {
     return jump.split < 0 && jump.lo_far > alive_gap && jump.hi_far > alive_gap &&
            jump.gap() > kJumpConfirmed * std::max(jump.lo_far, jump.hi_far) &&
            !(jump.lo_surface == jump.hi_surface && is_plane(jump.lo_surface));
+  };
+  // A bracket is settled when it can misplace no more volume than the largest jump's after
+  // kBisections rounds. Only between two radial surfaces, and only when the wall's vertices stay
+  // within reach at its ray: a wide bracket with a plane (ground, band cap) on one side would put
+  // the other side's vertex beyond that plane, through the plane's exact faces.
+  auto settled = [&](const Jump& jump) {
+    if (jump.lo_surface != Surface::radial || jump.hi_surface != Surface::radial) return false;
+    const double a = jump.lo_far / s.d_max, b = jump.hi_far / s.d_max;
+    if (std::abs(a * a * a - b * b * b) * (jump.lambda_hi - jump.lambda_lo) > kSettledStake) return false;
+    const double lambda = 0.5 * (jump.lambda_lo + jump.lambda_hi);
+    const Vec3 d = ((1.0 - lambda) * sample_direction(jump.u) + lambda * sample_direction(jump.w)).normalized();
+    return std::max(jump.lo_far, jump.hi_far) <= visible_far_bound(s, d.z());
   };
   auto& active = sc.active;
   auto& directions = sc.directions;
@@ -343,7 +359,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
           jump.lo_far = mid;
           jump.lo_surface = mid_surface;
         }
-        if (open(jump)) active[kept++] = active[m];
+        if (open(jump) && !settled(jump)) active[kept++] = active[m];
       }
       active.resize(kept);
     }
