@@ -197,11 +197,15 @@ def test_uav_no_faster_than_the_poi() -> None:
 
 
 def test_d_max_that_never_reaches_the_flight_plane() -> None:
+    """A sensor whose range is shorter than the flight plane's height above the POI, or a band
+    that excludes the plane, sees nothing there: every MaxRadius is 0 and the plan says why."""
     env = vt.Environment.demo()
-    poi = vt.PoiPath(np.array([[-290.0, -210.0, 0.5], [-230.0, -210.0, 20.0]]), 5.0)
+    poi = vt.PoiPath(np.array([[-290.0, -210.0, 0.5], [-230.0, -210.0, 0.5]]), 5.0)
     planning = vt.Planning(spacing=30.0, resolution_deg=10.0)
-    refuses(lambda: vt.plan_orbits(env, poi, vt.Uav(altitude=200.0), vt.Sensor(d_max=180.0), planning),
-            "sensor.d_max = 180", "180 m where the path is highest")
-    refuses(lambda: vt.plan_orbits(env, poi, vt.Uav(altitude=200.0),
-                                   vt.Sensor(d_max=300.0, altitude_band=(20.0, 150.0)), planning),
-            "uav.altitude = 200", "outside sensor.altitude_band")
+    for sensor in (vt.Sensor(d_max=199.0), vt.Sensor(d_max=300.0, altitude_band=(20.0, 150.0))):
+        plan = vt.plan_orbits(env, poi, vt.Uav(altitude=200.0), sensor, planning)
+        assert not plan.feasible and "not visible from that altitude" in plan.infeasibility
+        assert np.all(np.asarray(plan.max_radii) == 0.0) and np.all(np.isfinite(plan.radii))
+    # One metre more range than the height reaches the plane: a small disk, no longer 0.
+    reach = vt.plan_orbits(env, poi, vt.Uav(altitude=200.0), vt.Sensor(d_max=250.0), planning)
+    assert min(reach.max_radii) > 0.0

@@ -61,20 +61,6 @@ VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor
   if (!(uav.speed > poi.speed()))
     detail::fail_field("uav.speed", uav.speed,
                        "must exceed the POI speed " + detail::to_text(poi.speed()) + " to orbit it (Lemma 5)");
-  // A sensor that never reaches the flight plane, or a band that excludes it, leaves MaxRadius = 0
-  // at every sample: refused here, before any VV, rather than planned as an all-infeasible path.
-  // The POI's height is linear along each edge, so the smallest gap lies at a waypoint.
-  const double closest = uav.altitude - poi.waypoints().col(2).maxCoeff();
-  if (!(sensor.d_max > closest))
-    detail::fail_field("sensor.d_max", sensor.d_max,
-                       "must exceed the flight plane's height above the POI, " + detail::to_text(closest) +
-                           " m where the path is highest (uav.altitude = " + detail::to_text(uav.altitude) +
-                           "): the sensor would never reach an orbit");
-  if (sensor.altitude_band &&
-      !(uav.altitude >= sensor.altitude_band->first && uav.altitude <= sensor.altitude_band->second))
-    detail::fail_field("uav.altitude", uav.altitude,
-                       "lies outside sensor.altitude_band [" + detail::to_text(sensor.altitude_band->first) + ", " +
-                           detail::to_text(sensor.altitude_band->second) + "]: no orbit could be seen from it");
   detail::CheckProbe probe;
   if (check_max_radius) {
     probe.max_radius = [check_max_radius](const Vec3& g, bool&) { return check_max_radius(g); };
