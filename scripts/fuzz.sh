@@ -19,7 +19,11 @@ import tomllib
 print("\n".join(tomllib.load(open("pyproject.toml", "rb"))["project"]["optional-dependencies"]["fuzz"]))
 PY
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || read -r -a targets <<<"$("$python" tests/fuzz/fuzz.py --list | sed 's/^targets: //')"
+if [ ${#targets[@]} -eq 0 ]; then
+  listed=$("$python" tests/fuzz/fuzz.py --list)  # a failing import stops the script here (set -e)
+  read -r -a targets <<<"${listed#targets: }"
+fi
+[ ${#targets[@]} -gt 0 ] || { echo "vistrack fuzz: no targets"; exit 1; }
 failed=()
 for target in "${targets[@]}"; do
   log=build/fuzz/$target.log

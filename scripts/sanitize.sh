@@ -43,6 +43,7 @@ export VISTRACK_RANDOM_CASES=${VISTRACK_RANDOM_CASES:-100000}
 "$(command -v ctest || echo .venv/bin/ctest)" --test-dir "$build_dir" --output-on-failure -j"$jobs" -E "$SLOW" "$@"
 tested=$(date +%s)
 # Python itself is not instrumented: ASan's runtime must be the first library loaded.
-LD_PRELOAD="$(${CXX:-g++} -print-file-name=libasan.so)" VISTRACK_BUILD_DIR="$build_dir" \
+compiler=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build_dir/CMakeCache.txt")
+LD_PRELOAD="$("${compiler:-g++}" -print-file-name=libasan.so)" VISTRACK_BUILD_DIR="$build_dir" \
   "$python" -m pytest -q -p no:cacheprovider "${PYTESTS[@]}"
 echo "vistrack sanitize: build $((built - start)) s, ctest $((tested - built)) s, pytest $(($(date +%s) - tested)) s"

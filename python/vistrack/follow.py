@@ -32,6 +32,7 @@ import numpy as np
 from ._core import Control, Uav, VisibilityScene, VistrackError
 from ._core import follow as _follow
 from .flight import Wind
+from .schema import length
 
 if TYPE_CHECKING:
     from .georeference import Georeference
@@ -224,9 +225,15 @@ def simulate(vehicle: GroundVehicle, uav: Uav, parameters: Optional[FollowParame
     run = _follow.follow(vehicle, uav, parameters or FollowParameters(), true_wind, wind_estimate=estimate,
                          flight=flight or FollowFlight(), camera=camera or DownwardCamera(),
                          start=_start(start),
-                         offset_schedule=[(float(t), float(d), float(a)) for t, d, a in offset_schedule])
+                         offset_schedule=[_offset_key(k, key) for k, key in enumerate(offset_schedule)])
     visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
     return FollowResult(run, "sinusoid", visible)
+
+
+def _offset_key(k: int, key: Any) -> tuple[float, float, float]:
+    """One (t, distance, angle) key of an offset schedule; VistrackError naming it otherwise."""
+    values = _numbers(key, 3, f"offset_schedule[{k}]", "(t s, distance m, angle rad)")
+    return values[0], values[1], values[2]
 
 
 def baseline_radius(vehicle: GroundVehicle, uav: Uav, parameters: Optional[FollowParameters] = None) -> float:
@@ -248,9 +255,7 @@ def baseline(vehicle: GroundVehicle, uav: Uav, radius: Optional[float] = None, *
     flown by the flight layer in the true wind. Its desired position is the orbit's nearest point,
     so its tracking error is |r - R|."""
     parameters = parameters or FollowParameters()
-    r = baseline_radius(vehicle, uav, parameters) if radius is None else float(radius)
-    if not 1e-6 <= r <= 1e7:  # a length (vistrack/limits.hpp)
-        raise VistrackError(f"baseline.radius = {radius!r}: must be a finite number in [1e-06, 1e+07] m")
+    r = baseline_radius(vehicle, uav, parameters) if radius is None else length("baseline.radius", radius)
     run = _follow.orbit_follow(vehicle, uav, control or Control(), r, parameters, _wind(wind),
                                flight=flight or FollowFlight(), camera=camera or DownwardCamera(),
                                start=_start(start))

@@ -17,7 +17,7 @@ import numpy as np
 
 from . import dubins
 from .io import read_yaml_mapping
-from .schema import fail, number
+from .schema import fail, number, reject_unknown
 
 __all__ = ["InterceptProblem"]
 
@@ -41,10 +41,7 @@ class InterceptProblem:
     def from_mapping(cls, data: Mapping[str, Any], where: str = "config") -> "InterceptProblem":
         """Defaults updated by ``data``; unknown keys and bad values name the key."""
         names = [f.name for f in fields(cls)]
-        unknown = sorted((str(key) for key in set(data) - set(names)), key=str)
-        if unknown:
-            first = next(key for key in data if str(key) == unknown[0])  # a YAML key may be a number (0: w)
-            raise fail(f"{where}.{unknown[0]}", data[first], f"unknown key (known: {', '.join(names)})")
+        reject_unknown(data, names, f"{where}.")
         problem = cls()
         for key, value in data.items():
             if value is None:

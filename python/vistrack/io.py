@@ -136,6 +136,8 @@ def read_plan(path: str | Path, key: str = "plan") -> AnyPlan:
         raise VistrackError(f"{key} = {path}: not JSON ({error.msg} at line {error.lineno})") from None
     except RecursionError:
         raise VistrackError(f"{key} = {path}: not JSON (nested too deeply)") from None
+    except ValueError:  # after JSONDecodeError, its subclass: integers of more than 4300 digits
+        raise VistrackError(f"{key} = {path}: not JSON (a number too long to read)") from None
     if isinstance(data, dict) and data.get("format") == "vistrack.visibility_orbit_plan/1":
         return VisibilityOrbitPlan.from_json(text)
     return OrbitPlan.from_json(text)
@@ -194,6 +196,8 @@ def parse_yaml(text: str, key: str, path: str | Path) -> Any:
         raise VistrackError(f"{key} = {path}: not valid YAML ({reason})") from None
     except RecursionError:
         raise VistrackError(f"{key} = {path}: not valid YAML (nested too deeply)") from None
+    except ValueError:  # Python refuses integers of more than 4300 digits
+        raise VistrackError(f"{key} = {path}: not valid YAML (a number too long to read)") from None
 
 
 def read_yaml_mapping(path: str | Path, key: str) -> dict[str, Any]:

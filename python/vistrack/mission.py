@@ -310,6 +310,8 @@ def _plan_from_json(text: str, source: str) -> Mission:
         raise fail(source, f"line {error.lineno}", f"not valid JSON ({error.msg})") from None
     except RecursionError:
         raise fail(source, "JSON", "nested too deeply") from None
+    except ValueError:  # after JSONDecodeError, its subclass: integers of more than 4300 digits
+        raise fail(source, "JSON", "holds a number too long to read") from None
     if not isinstance(document, dict) or document.get("fileType") != "Plan":
         raise fail(f"{source}: fileType", document.get("fileType") if isinstance(document, dict) else document,
                    'must be "Plan" (a QGroundControl plan)')

@@ -36,6 +36,8 @@ def number(key: str, value: Any, *, low: float | None = None, high: float | None
         result = float(value)
     except (TypeError, ValueError):
         raise fail(key, value, "must be a number") from None
+    except OverflowError:  # an integer beyond the doubles (YAML reads 10**400 exactly)
+        raise fail(key, f"an integer of {len(str(value))} digits", "must be a finite number") from None
     if not math.isfinite(result):
         raise fail(key, value, "must be a finite number")
     if low is not None and (result < low or (low_open and result == low)):

@@ -11,7 +11,7 @@ from typing import Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from . import _core
+from . import _core, schema
 from ._core import Environment, Planning, PoiMotion, PoiPath, VisibilityScene, VisibilityVolume
 
 Band = Optional[Tuple[float, float]]
@@ -62,17 +62,17 @@ def visibility_volumes(
     )
 
 
-def check_count(path: PoiPath, spacing: float, max_volumes: int = Planning().max_volumes) -> int:
+def check_count(path: PoiPath, spacing: float, max_volumes: int = Planning().max_volumes,
+                field: str = "max_volumes", spacing_field: str = "spacing") -> int:
     """The number of POI positions every ``spacing`` metres along ``path`` (ends included);
-    VistrackError naming --max-volumes when it exceeds ``max_volumes`` (checked before any VV)."""
-    if not (_core.limits.MIN_LENGTH <= spacing <= _core.limits.MAX_LENGTH):
-        raise _core.VistrackError(f"spacing = {spacing}: must be a finite number in [1e-06, 1e+07] m")
+    VistrackError naming ``field`` when it exceeds ``max_volumes`` (checked before any VV)."""
+    spacing = schema.length(spacing_field, spacing)
     count = max(2, math.ceil(path.length / spacing) + 1)
     if count > max_volumes:
         raise _core.VistrackError(
-            f"--max-volumes = {max_volumes}: {count} VVs every {spacing:g} m along the {path.length:.6g} m path "
+            f"{field} = {max_volumes}: {count} VVs every {spacing:g} m along the {path.length:.6g} m path "
             f"(about {count * _core.volume_bytes(Planning().resolution_deg) / 1e9:.3g} GB at 1 degree); raise "
-            "--max-volumes explicitly to allow it, or raise --spacing")
+            f"{field} explicitly to allow it, or raise {spacing_field}")
     return count
 
 

@@ -206,6 +206,6 @@ def test_d_max_that_never_reaches_the_flight_plane() -> None:
         plan = vt.plan_orbits(env, poi, vt.Uav(altitude=200.0), sensor, planning)
         assert not plan.feasible and "not visible from that altitude" in plan.infeasibility
         assert np.all(np.asarray(plan.max_radii) == 0.0) and np.all(np.isfinite(plan.radii))
-    # One metre more range than the height reaches the plane: a small disk, no longer 0.
+    # 50 m more range than the height reaches the plane: a disk of MaxRadius > 0.
     reach = vt.plan_orbits(env, poi, vt.Uav(altitude=200.0), vt.Sensor(d_max=250.0), planning)
     assert min(reach.max_radii) > 0.0

@@ -450,3 +450,35 @@ def test_yaml_keys_that_are_numbers_name_the_key(tmp_path: Path) -> None:
     loiter_sweep = tmp_path / "sweep.yaml"
     loiter_sweep.write_text("kind: loiter\nbase: {aois: [[300, 300]], 1: 2}\nparameters: {speed: [10, 12]}\n")
     refuses(lambda: SweepSpec.load(loiter_sweep), "1 = 2", "unknown key")
+
+
+def test_numbers_too_long_for_python_are_refused(tmp_path: Path) -> None:
+    """Found in review: Python reads at most 4300-digit integers and float() overflows past 1e308;
+    both escaped as ValueError/OverflowError from the YAML and JSON loaders."""
+    from vistrack import schema
+    from vistrack.io import read_plan
+    from vistrack.scenario import Scenario
+
+    digits = "1" * 5000
+    scenario = tmp_path / "long.yaml"
+    scenario.write_text(f"poi: {{speed: {digits}}}\n")
+    refuses(lambda: Scenario.load(scenario), "not valid YAML", "too long")
+    plan = tmp_path / "long.json"
+    plan.write_text(f'{{"format": {digits}}}')
+    refuses(lambda: read_plan(plan), "not JSON", "too long")
+    mission = tmp_path / "long.plan"
+    mission.write_text(f'{{"fileType": {digits}}}')
+    refuses(lambda: vt.mission.load(mission), "too long")
+    refuses(lambda: schema.number("poi.speed", 10**400), "poi.speed = 'an integer of 401 digits'", "finite")
+
+
+def test_python_values_of_the_wrong_kind_name_the_parameter() -> None:
+    """Found in review: follow's radius and offset keys, and numpy thresholds (which are valid)."""
+    truck = _truck()
+    uav = vt.Uav(speed=20.0, min_turn_radius=40.0, altitude=100.0)
+    refuses(lambda: vt.follow.baseline(truck, uav, "abc"), "baseline.radius = 'abc'")
+    refuses(lambda: vt.follow.simulate(truck, uav, offset_schedule=[(0.0, 1.0)]), "offset_schedule[0]")
+    plan = vt.loiter.plan(np.array([[300.0, 0.0]]), "tlpp")
+    assert vt.loiter.coverage(plan, np.array([[300.0, 0.0]]), threshold=np.float32(0.75)).time > 0.0
+    poi = vt.PoiPath(np.array([[0.0, 0.0], [1e6, 0.0]]), 5.0)
+    refuses(lambda: vt.visibility.check_count(poi, 1.0, 100), "max_volumes = 100", "raise max_volumes")

@@ -54,11 +54,12 @@ std::vector<Sample> speed_profile(const std::vector<VehicleLeg>& legs, double t0
     require_finite(leg.heading, field + ".heading");
     require_in_range(leg.speed, 0.0, limits::kMaxSpeed, "m/s", field + ".speed");
     require_positive(leg.duration, field + ".duration");
-    if (!(leg.duration / step <= 1e7))  // a ramp is sampled every step: bound the samples (and the int below)
-      detail::fail_field(field + ".duration", leg.duration,
-                         "more than 1e7 samples of step = " + detail::to_text(step) + " s");
     const double end_speed = std::isnan(leg.end_speed) ? leg.speed : leg.end_speed;
     require_in_range(end_speed, 0.0, limits::kMaxSpeed, "m/s", field + ".end_speed");
+    // A ramp is sampled every step: bound its samples (and the int below); a constant leg is one piece.
+    if (end_speed != leg.speed && !(leg.duration / step <= 1e7))
+      detail::fail_field(field + ".duration", leg.duration,
+                         "more than 1e7 samples of step = " + detail::to_text(step) + " s");
     const int pieces = end_speed == leg.speed ? 1 : std::max(1, static_cast<int>(std::ceil(leg.duration / step)));
     const Sample start = samples.back();
     for (int k = 1; k <= pieces; ++k) {

@@ -61,7 +61,7 @@ def run(args: argparse.Namespace) -> int:
         output_folder(args.save_volumes, "--save-volumes")
     path = vt.PoiPath.from_csv(str(args.path), speed=1.0) if args.path is not None else None
     if path is not None:
-        check_count(path, args.spacing, args.max_volumes)  # before the map is read
+        check_count(path, args.spacing, args.max_volumes, "--max-volumes", "--spacing")  # before the map is read
     env = load_environment(args.map, args.up)
     scene = vt.VisibilityScene(env)
     pois = poi_positions(scene, points=args.points, path=path, spacing=args.spacing, max_volumes=args.max_volumes)
