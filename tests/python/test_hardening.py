@@ -390,6 +390,8 @@ def test_follow_refuses_out_of_range_inputs_and_wrong_shapes() -> None:
     refuses(lambda: F.GroundVehicle.from_legs([F.VehicleLeg(heading=0.0, speed=1.0, duration=1e300, end_speed=2.0)],
                                               (0.0, 0.0)), "legs[0].duration = 1e+300", "more than 1e7 samples")
     refuses(lambda: F.GroundVehicle(np.array([0.0, 1.0]), np.array([[0.0, 0.0], [1e300, 0.0]])), "track.x")
+    # A constant-speed leg is one piece whatever its length (only ramps are sampled every step).
+    assert F.GroundVehicle.from_legs([F.VehicleLeg(heading=0.0, speed=1.0, duration=2e6)], (0.0, 0.0)).end_time == 2e6
 
 
 def test_a_constant_speed_leg_reads_its_speed_not_nan() -> None:
