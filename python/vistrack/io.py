@@ -506,15 +506,10 @@ def read_loiter_scenario(path: str | Path) -> LoiterScenario:
                "threshold", "dt", "paper", "origin"}
     schema.reject_unknown(data, allowed)
 
-    def pair(key: str, value: Any) -> tuple[float, float]:
-        if not isinstance(value, (list, tuple)) or len(value) != 2:
-            raise schema.fail(key, value, "must be [x, y] in metres")
-        return schema.number(f"{key}[0]", value[0]), schema.number(f"{key}[1]", value[1])
-
     raw_aois = data.get("aois")
     if not isinstance(raw_aois, list) or not raw_aois:
         raise schema.fail("aois", raw_aois, "must be a non-empty list of [x, y] AOI centres")
-    aois = np.array([pair(f"aois[{i}]", a) for i, a in enumerate(raw_aois)], dtype=float)
+    aois = np.array([schema.pair(f"aois[{i}]", a) for i, a in enumerate(raw_aois)], dtype=float)
     camera_section = schema.section(data, "camera", {"fov_deg", "max_gimbal_deg", "altitude", "levelled"})
     camera = schema.apply_checks(Camera(), camera_section, "camera", {
         "fov_deg": schema.positive, "max_gimbal_deg": lambda k, v: schema.number(k, v, low=0.0),
@@ -530,8 +525,8 @@ def read_loiter_scenario(path: str | Path) -> LoiterScenario:
     scenario = Scenario(
         aois=aois,
         name=str(data.get("name", Path(path).stem)),
-        start=pair("start", data.get("start", [0.0, 0.0])),
-        end=pair("end", data.get("end", [0.0, 0.0])),
+        start=schema.pair("start", data.get("start", [0.0, 0.0])),
+        end=schema.pair("end", data.get("end", [0.0, 0.0])),
         turn_radius=schema.positive("turn_radius", data.get("turn_radius", 46.0)),
         speed=schema.positive("speed", data.get("speed", 12.0)),
         aoi_radius=schema.positive("aoi_radius", data.get("aoi_radius", 46.0)),

@@ -72,6 +72,13 @@ def integer(key: str, value: Any, low: int, high: int) -> int:
     return value
 
 
+def pair(key: str, value: Any, what: str = "[x, y] in metres") -> tuple[float, float]:
+    """Two finite numbers given as a two-item list, e.g. a point; VistrackError naming ``key``."""
+    if not isinstance(value, (list, tuple)) or len(value) != 2:
+        raise fail(key, value, f"must be {what}")
+    return number(f"{key}[0]", value[0]), number(f"{key}[1]", value[1])
+
+
 def reject_unknown(data: Mapping[Any, Any], allowed: Iterable[str], prefix: str = "", noun: str = "key",
                    where: str = "") -> None:
     """VistrackError naming the first key of ``data`` outside ``allowed`` (as ``prefix`` + key):

@@ -42,7 +42,7 @@ import numpy as np
 
 from .. import loiter
 from ..io import read_loiter_scenario
-from ..schema import boolean, fail, integer, number, positive, reject_unknown, resolve_path
+from ..schema import boolean, fail, integer, number, pair, positive, reject_unknown, resolve_path
 from .kinds import (
     CaseContext,
     CaseKind,
@@ -109,12 +109,6 @@ def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
     return set_case_value(data, key, value, _SOURCES)
 
 
-def _pair(key: str, value: Any) -> tuple[float, float]:
-    if not isinstance(value, (list, tuple)) or len(value) != 2:
-        raise fail(key, value, "must be [x, y] in metres")
-    return number(f"{key}[0]", value[0]), number(f"{key}[1]", value[1])
-
-
 def _wind(value: Any) -> tuple[float, float]:
     if not isinstance(value, Mapping) or set(value) - set(_WIND):
         raise fail("wind", value, "must be {east, north} or {speed, direction_deg} in m/s")
@@ -138,7 +132,7 @@ def _scenario(data: Mapping[str, Any], seed: int) -> tuple[loiter.Scenario, str,
                            altitude=positive("camera.altitude", camera_data.get("altitude", defaults.altitude)),
                            levelled=boolean("camera.levelled", camera_data.get("levelled", defaults.levelled)))
     settings: dict[str, Any] = {
-        "start": _pair("start", data["start"]), "end": _pair("end", data["end"]),
+        "start": pair("start", data["start"]), "end": pair("end", data["end"]),
         "turn_radius": positive("turn_radius", data["turn_radius"]), "speed": positive("speed", data["speed"]),
         "aoi_radius": positive("aoi_radius", data["aoi_radius"]), "turns": integer("turns", data["turns"], 1, 1000),
         "camera": camera, "dt": positive("dt", data["dt"]),
@@ -148,7 +142,7 @@ def _scenario(data: Mapping[str, Any], seed: int) -> tuple[loiter.Scenario, str,
         aois = data["aois"]
         if not isinstance(aois, list) or not aois:
             raise fail("aois", aois, "must be a non-empty list of [x, y] AOI centres")
-        centres = np.array([_pair(f"aois[{i}]", a) for i, a in enumerate(aois)], dtype=float)
+        centres = np.array([pair(f"aois[{i}]", a) for i, a in enumerate(aois)], dtype=float)
         scenario = loiter.Scenario(aois=centres, name="aois", **settings)
     else:
         spec = data["random"]

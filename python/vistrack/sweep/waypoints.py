@@ -39,7 +39,7 @@ import numpy as np
 from .. import waypoint_nav as wn
 from ..flight import Wind
 from ..io import read_route
-from ..schema import fail, integer, number, positive, reject_unknown, resolve_path
+from ..schema import fail, integer, number, pair, positive, reject_unknown, resolve_path
 from .kinds import (
     CaseContext,
     CaseKind,
@@ -96,12 +96,6 @@ def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
     return set_case_value(data, key, value, _SOURCES)
 
 
-def _pair(key: str, value: Any) -> tuple[float, float]:
-    if not isinstance(value, (list, tuple)) or len(value) != 2:
-        raise fail(key, value, "must be a pair [a, b]")
-    return number(f"{key}[0]", value[0]), number(f"{key}[1]", value[1])
-
-
 def _route(data: Mapping[str, Any], folder: Path, seed: int, turn_radius: float) -> np.ndarray:
     if data.get("route") is not None:
         return read_route(resolve_path(folder, data["route"], "route"), "route")
@@ -111,7 +105,7 @@ def _route(data: Mapping[str, Any], folder: Path, seed: int, turn_radius: float)
     if not isinstance(spec, Mapping) or set(spec) - set(_RANDOM):
         raise fail("random_route", spec, "must be {count: n, legs: [low, high], seed: s} (legs in units of R)")
     count = integer("random_route.count", spec.get("count", 6), 2, 10_000)
-    legs = _pair("random_route.legs", spec.get("legs", [4.0, 10.0]))
+    legs = pair("random_route.legs", spec.get("legs", [4.0, 10.0]), "a pair [a, b]")
     if not 0.0 < legs[0] <= legs[1]:
         raise fail("random_route.legs", spec.get("legs"), "must be 0 < low <= high")
     if spec.get("seed") is not None:
@@ -135,8 +129,8 @@ def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np
     turn_radius = positive("turn_radius", data["turn_radius"])
     options: dict[str, Any] = {
         "method": data["method"], "turn_radius": turn_radius, "speed": positive("speed", data["speed"]),
-        "dt": positive("dt", data["dt"]), "gains": _pair("gains", data["gains"]),
-        "weights": _pair("weights", data["weights"]), "integration": data["integration"],
+        "dt": positive("dt", data["dt"]), "gains": pair("gains", data["gains"], "a pair [a, b]"),
+        "weights": pair("weights", data["weights"], "a pair [a, b]"), "integration": data["integration"],
         "wind": _wind(data["wind"], seed),
     }
     if options["method"] not in ("dwn", "wn"):
