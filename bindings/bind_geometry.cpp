@@ -75,7 +75,9 @@ void bind_geometry(py::module_& m) {
       "limits",
       "The valid range of every numeric input (vistrack/limits.hpp; README, Hardening): coordinates "
       "|v| <= MAX_COORDINATE m, lengths in [MIN_LENGTH, MAX_LENGTH] m, speeds in [MIN_SPEED, MAX_SPEED] m/s, "
-      "angles |a| <= MAX_ANGLE rad, volumes in (0, MAX_VOLUME] m^3, threads in [0, MAX_THREADS].");
+      "angles |a| <= MAX_ANGLE rad, volumes in (0, MAX_VOLUME] m^3, threads in [0, MAX_THREADS], the guidance gains "
+      "beta in [MIN_GAIN, MAX_BETA] 1/m and k_psi in [MIN_GAIN, MAX_HEADING_GAIN] 1/s, and ODE tolerances rtol in "
+      "[MIN_RTOL, MAX_RTOL] and atol in [MIN_ATOL, MAX_ATOL].");
   ranges.attr("MAX_COORDINATE") = limits::kMaxCoordinate;
   ranges.attr("MIN_LENGTH") = limits::kMinLength;
   ranges.attr("MAX_LENGTH") = limits::kMaxLength;
@@ -84,6 +86,13 @@ void bind_geometry(py::module_& m) {
   ranges.attr("MAX_ANGLE") = limits::kMaxAngle;
   ranges.attr("MAX_VOLUME") = limits::kMaxVolume;
   ranges.attr("MAX_THREADS") = limits::kMaxThreads;
+  ranges.attr("MIN_GAIN") = limits::kMinGain;
+  ranges.attr("MAX_BETA") = limits::kMaxBeta;
+  ranges.attr("MAX_HEADING_GAIN") = limits::kMaxHeadingGain;
+  ranges.attr("MIN_RTOL") = limits::kMinRelativeTolerance;
+  ranges.attr("MAX_RTOL") = limits::kMaxRelativeTolerance;
+  ranges.attr("MIN_ATOL") = limits::kMinAbsoluteTolerance;
+  ranges.attr("MAX_ATOL") = limits::kMaxAbsoluteTolerance;
 }
 
 }  // namespace vistrack::bindings

@@ -137,7 +137,7 @@ void bind_guidance(py::module_& m) {
   m.def(
       "lyapunov_term",
       [](const VectorField& field, const OrbitState& orbit, double beta, double heading_error) {
-        require_in_range(beta, 1e-9, 1e3, "1/m", "beta");
+        require_beta(beta, "beta");
         return lyapunov_term(field, checked(orbit), beta, checked_angle(heading_error, "heading_error"));
       },
       py::arg("field"), py::arg("orbit"), py::arg("beta"), py::arg("heading_error"), "u_lyap of (86) for the field at the UAV and heading error psi - psi_d.");

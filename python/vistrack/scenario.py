@@ -36,19 +36,24 @@ from .plotting.animation import DEFAULT_DURATION_S, DEFAULT_FRAMES
 from .plotting.interactive import DEFAULT_VOLUMES
 from .plotting.volumes import DEFAULT_VIEW
 from .schema import (
+    absolute_tolerance,
     apply_checks,
     boolean,
     coordinate,
     fail,
+    heading_gain,
     integer,
     length,
     number,
     positive,
+    rate_margin,
     reject_unknown,
+    relative_tolerance,
     resolve_path,
     section,
     speed,
 )
+from .schema import beta as schema_beta
 
 __all__ = ["EnvironmentSpec", "PoiSpec", "ReportOptions", "Scenario", "default_scenario_text", "road_route"]
 
@@ -338,11 +343,11 @@ def _planning(section: dict[str, Any]) -> Planning:
         "resolution_deg": lambda k, v: number(k, v, low=0.1, high=30.0),
         "min_spacing": length,
         "max_depth": lambda k, v: integer(k, v, 0, 30),
-        "rate_margin": lambda k, v: number(k, v, low=0.0),  # < 1: checked by Planning.validate
+        "rate_margin": rate_margin,
         "locus": locus, "tracking_margin": lambda k, v: number(k, v, low=0.0, high=1e7),
         "check_spacing": length, "check_min_spacing": length,
         "turn_share": lambda k, v: number(k, v, low=0.0, low_open=True),
-        "max_volumes": lambda k, v: integer(k, v, 1, 10**12)})  # < 1: checked by Planning.validate
+        "max_volumes": lambda k, v: integer(k, v, 1, 10**12)})
 
 
 def _control(section: dict[str, Any]) -> Control:
@@ -351,14 +356,13 @@ def _control(section: dict[str, Any]) -> Control:
             raise fail(key, value, 'must be "ccw" or "cw"')
         return value
 
-    return apply_checks(Control(), section, "control", {"beta": positive, "k_psi": positive,
+    return apply_checks(Control(), section, "control", {"beta": schema_beta, "k_psi": heading_gain,
                                                   "direction": direction})
 
 
 def _simulation(section: dict[str, Any]) -> SimulationOptions:
     return apply_checks(SimulationOptions(), section, "simulation", {
-        "rtol": lambda k, v: number(k, v, low=0.0, high=1.0, low_open=True),
-        "atol": positive, "max_step": positive, "output_step": positive})
+        "rtol": relative_tolerance, "atol": absolute_tolerance, "max_step": positive, "output_step": positive})
 
 
 def _baselines(value: Any) -> list[float]:

@@ -12,8 +12,8 @@ from typing import Any, Callable, Iterable, Mapping, TypeVar
 from ._core import VistrackError
 from ._core import limits as _limits
 
-__all__ = ["apply_checks", "coordinate", "fail", "integer", "length", "number", "positive", "resolve_path", "section",
-           "speed"]
+__all__ = ["absolute_tolerance", "apply_checks", "beta", "coordinate", "fail", "heading_gain", "integer", "length",
+           "number", "positive", "rate_margin", "relative_tolerance", "resolve_path", "section", "speed"]
 
 T = TypeVar("T")
 
@@ -61,6 +61,34 @@ def length(key: str, value: Any) -> float:
 def speed(key: str, value: Any) -> float:
     """A speed in m/s: [1e-6, 1e4]."""
     return number(key, value, low=_limits.MIN_SPEED, high=_limits.MAX_SPEED)
+
+
+def beta(key: str, value: Any) -> float:
+    """The vector field's gain beta in 1/m: [1e-9, 1e3]."""
+    return number(key, value, low=_limits.MIN_GAIN, high=_limits.MAX_BETA)
+
+
+def heading_gain(key: str, value: Any) -> float:
+    """The heading gain k_psi in 1/s: [1e-9, 1e6]."""
+    return number(key, value, low=_limits.MIN_GAIN, high=_limits.MAX_HEADING_GAIN)
+
+
+def relative_tolerance(key: str, value: Any) -> float:
+    """An ODE's rtol: [1e-13, 1]."""
+    return number(key, value, low=_limits.MIN_RTOL, high=_limits.MAX_RTOL)
+
+
+def absolute_tolerance(key: str, value: Any) -> float:
+    """An ODE's atol: [1e-15, 1e6]."""
+    return number(key, value, low=_limits.MIN_ATOL, high=_limits.MAX_ATOL)
+
+
+def rate_margin(key: str, value: Any) -> float:
+    """A share of Lemma 5's radius rate v - v_g kept in reserve: [0, 1)."""
+    result = number(key, value, low=0.0, high=1.0)
+    if result == 1.0:
+        raise fail(key, value, "must be in [0, 1) (a fraction of v - v_g)")
+    return result
 
 
 def integer(key: str, value: Any, low: int, high: int) -> int:

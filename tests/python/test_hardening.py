@@ -17,7 +17,7 @@ import pytest
 
 import vistrack as vt
 from refusal import refuses
-from vistrack import VistrackError
+from vistrack import VistrackError, schema
 from vistrack.cli import main as cli_main
 
 REPO = Path(__file__).resolve().parents[2]
@@ -263,28 +263,32 @@ def test_cli_run_on_a_file_that_is_not_a_scenario(kind: str, tmp_path: Path,
     one_line_error(["run", str(path), "--out", str(tmp_path / "out"), "--quiet"], capsys, 1, str(path))
 
 
-@pytest.mark.parametrize("args", [
-    ["orbits", "--from-plan", "{bin}"],
-    ["simulate", "--plan", "{bin}"],
-    ["intercept", "--config", "{bin}"],
-    ["volumes", "--path", "{bin}"],
-    ["volumes", "--map", "{huge}", "--path", "{csv}"],
+@pytest.mark.parametrize("args, option", [
+    (["orbits", "--from-plan", "{bin}"], "--from-plan"),
+    (["simulate", "--plan", "{bin}"], "--plan"),
+    (["intercept", "--config", "{bin}"], "--config"),
+    (["volumes", "--map", "{city}", "--path", "{bin}"], "binary.dat:2"),
+    (["volumes", "--map", "{huge}", "--path", "{csv}"], "huge.geojson"),
 ])
-def test_cli_binary_and_overflowing_inputs_are_one_line(args: list[str], tmp_path: Path,
+def test_cli_binary_and_overflowing_inputs_are_one_line(args: list[str], option: str, tmp_path: Path,
                                                         capsys: pytest.CaptureFixture[str]) -> None:
     """orbits --from-plan, simulate --plan, intercept --config and volumes --path with binary files,
-    and volumes --map with the 1e999 GeoJSON, printed tracebacks."""
+    and volumes --map with the 1e999 GeoJSON, printed tracebacks: now one line naming the option
+    (or, for a bad value inside a file, the file)."""
     binary = tmp_path / "binary.dat"
     binary.write_bytes(bytes(range(256)) * 64)
     huge = tmp_path / "huge.geojson"
     huge.write_text(_square_collection("1e999"))
+    city = tmp_path / "city.geojson"
+    city.write_text(_square_collection("10"))
     csv = tmp_path / "path.csv"
     csv.write_text("0,0\n10,0\n")
-    argv = [a.format(bin=binary, huge=huge, csv=csv) for a in args]
+    argv = [a.format(bin=binary, huge=huge, csv=csv, city=city) for a in args]
     argv += ["--out", str(tmp_path / "out")] if args[0] not in ("intercept",) else []
     code, err = cli(argv, capsys)
     assert code in (1, 2), (code, err)
     assert err.count("\n") == 1 and "Traceback" not in err, err
+    assert option in err, err
 
 
 def test_cli_out_pointing_at_a_file_fails_before_the_run(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -301,6 +305,32 @@ def test_cli_usage_errors_exit_2(capsys: pytest.CaptureFixture[str]) -> None:
     one_line_error(["run"], capsys, 2, "scenario file is required")
     one_line_error(["run", "x.yaml", "--max-volumes", "-3"], capsys, 2, "--max-volumes")
     one_line_error(["intercept", "--rho", "nan"], capsys, 2, "--rho")
+    # Ranges the library would refuse only after the inputs were read are the parser's too.
+    one_line_error(["orbits", "--rate-margin", "1"], capsys, 2, "--rate-margin = 1.0", "[0, 1)")
+    one_line_error(["simulate", "--plan", "p.json", "--fixed-step", "1e-10"], capsys, 2, "--fixed-step = 1e-10")
+    one_line_error(["simulate", "--plan", "p.json", "--atol", "1e7"], capsys, 2, "--atol")
+    one_line_error(["simulate", "--plan", "p.json", "--k-psi", "0"], capsys, 2, "--k-psi")
+    one_line_error(["tune", "--beta", "1e4"], capsys, 2, "--beta")
+
+
+def test_gain_and_tolerance_ranges_are_the_same_everywhere() -> None:
+    """beta, k_psi, rtol and atol have one range (limits.hpp), whichever entry point takes them."""
+    lim = vt._core.limits
+    assert (lim.MIN_GAIN, lim.MAX_BETA, lim.MAX_HEADING_GAIN) == (1e-9, 1e3, 1e6)
+    assert (lim.MIN_RTOL, lim.MAX_RTOL, lim.MIN_ATOL, lim.MAX_ATOL) == (1e-13, 1.0, 1e-15, 1e6)
+    too_big = lim.MAX_ATOL * 10
+    refuses(lambda: vt.SimulationOptions(atol=too_big).validate(), "simulation.atol", "1e+06")
+    refuses(lambda: vt.solve_ode(lambda t, y: -y, (0.0, 1.0), np.array([1.0]), atol=too_big), "ode.atol", "1e+06")
+    refuses(lambda: vt.Control(beta=lim.MAX_BETA * 2).validate(), "control.beta", "1000")
+    refuses(lambda: vt.Control(k_psi=0.0).validate(), "control.k_psi", "1e-09")
+    refuses(lambda: vt.lemma7_min_gain(20.0, lim.MAX_BETA * 2), "beta", "1000")
+    for check, low, high in [(schema.beta, lim.MIN_GAIN, lim.MAX_BETA),
+                             (schema.heading_gain, lim.MIN_GAIN, lim.MAX_HEADING_GAIN),
+                             (schema.relative_tolerance, lim.MIN_RTOL, lim.MAX_RTOL),
+                             (schema.absolute_tolerance, lim.MIN_ATOL, lim.MAX_ATOL)]:
+        assert check("k", low) == low and check("k", high) == high
+        for outside in (low / 2, high * 2):
+            refuses(lambda c=check, v=outside: c("k", v), f"k = {outside!r}")
 
 
 # --- Wrong Python types --------------------------------------------------------------------------

@@ -10,6 +10,10 @@
 //   times                                                                         finite
 //   volumes (d_cutoff)                                                            (0, 1e21] m^3
 //   threads                                                                        [0, 1024]
+//   guidance gains: beta (vector field, 1/m)                                       [1e-9, 1e3]
+//                   k_psi (heading, 1/s)                                           [1e-9, 1e6]
+//   ODE tolerances: rtol                                                          [1e-13, 1]
+//                   atol (m, rad)                                                 [1e-15, 1e6]
 //   a Dubins problem's coordinates relative to its turn radius                     max|x, y| <= 1e6 rho
 //
 // Why: 1e7 m is a local frame of 10,000 km (any city, any flight); beyond it float32 ray tracing
@@ -20,7 +24,11 @@
 // resolved to 1e-7 rad. The Dubins solver snaps within eps = 1e-11 (1 + max|coordinate| / rho)
 // (dubins.hpp): the rounding of coordinates far from the origin, seen on the scale of rho; at most
 // 1e6 rho from the origin keeps eps <= 1e-5, beyond it the snaps decide the word (a 8 µm turn radius
-// 2,600 km from the origin picked a path 6 % longer than another word's).
+// 2,600 km from the origin picked a path 6 % longer than another word's). A gain below 1e-9 steers
+// nothing within any flight; beta 1e3 /m turns the field over within a millimetre and k_psi 1e6 /s
+// over a microsecond, both far past what a step of the integrator resolves. Below rtol 1e-13 a
+// double-precision step's error estimate is rounding noise (scipy's floor is 100 eps); below atol
+// 1e-15 the scaled error norm overflows near a zero state; an atol above 1e6 m accepts any state.
 #pragma once
 
 #include <string>
@@ -38,6 +46,13 @@ inline constexpr double kMaxAngle = 1e9;       // rad
 inline constexpr double kMaxVolume = 1e21;     // m^3 (kMaxLength cubed)
 inline constexpr int kMaxThreads = 1024;
 inline constexpr double kMaxCoordinateOverRho = 1e6;
+inline constexpr double kMinGain = 1e-9;               // beta (1/m) and k_psi (1/s)
+inline constexpr double kMaxBeta = 1e3;                // 1/m
+inline constexpr double kMaxHeadingGain = 1e6;         // 1/s
+inline constexpr double kMinRelativeTolerance = 1e-13;
+inline constexpr double kMaxRelativeTolerance = 1.0;
+inline constexpr double kMinAbsoluteTolerance = 1e-15;
+inline constexpr double kMaxAbsoluteTolerance = 1e6;
 
 // "[1e-06, 1e+07] m" style text of a range, for messages.
 std::string range_text(double low, double high, const std::string& unit);
@@ -53,6 +68,10 @@ void require_length(double value, const std::string& field);      // [1e-6, 1e7]
 void require_speed(double value, const std::string& field);       // [1e-6, 1e4] m/s
 void require_angle(double value, const std::string& field);       // |a| <= 1e9 rad
 void require_threads(int value, const std::string& field);        // [0, 1024]
+void require_beta(double value, const std::string& field);          // [1e-9, 1e3] 1/m
+void require_heading_gain(double value, const std::string& field);  // [1e-9, 1e6] 1/s
+// rtol in [1e-13, 1] and atol in [1e-15, 1e6]; the fields are prefix + "rtol" / "atol".
+void require_tolerances(double rtol, double atol, const std::string& prefix);
 
 // Every loader opens its file through this: Error "field = path: ..." for a missing path, a
 // folder or anything else that is not a regular file (a folder opens as an empty stream on

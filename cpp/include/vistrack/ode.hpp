@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
@@ -33,11 +34,9 @@ struct OdeOptions {
   double first_step = 0.0;   // 0: chosen automatically (Hairer-Wanner starting step)
   double fixed_step = 0.0;   // > 0: steps of exactly this size (last one shortened), no error control
   std::size_t max_steps = 10'000'000;
-  // rtol in [1e-13, 1] (below, a double-precision step's error estimate is rounding noise) and
-  // atol in [1e-15, 1e15] (below, the scaled error norm overflows near a zero state).
+  // The tolerances' ranges are limits.hpp's.
   void validate() const {
-    if (!(rtol >= 1e-13 && rtol <= 1.0)) detail::fail_field("ode.rtol", rtol, "must be a finite number in [1e-13, 1]");
-    if (!(atol >= 1e-15 && atol <= 1e15)) detail::fail_field("ode.atol", atol, "must be a finite number in [1e-15, 1e15]");
+    require_tolerances(rtol, atol, "ode.");
     if (!(max_step > 0.0)) detail::fail_field("ode.max_step", max_step, "must be greater than 0");
     require_non_negative(first_step, "ode.first_step");
     require_non_negative(fixed_step, "ode.fixed_step");

@@ -56,15 +56,12 @@ Locus locus_from_string(const std::string& text, const std::string& field) {
 }
 
 void Control::validate() const {
-  require_in_range(beta, 1e-9, 1e3, "1/m", "control.beta");
-  require_in_range(k_psi, 1e-9, 1e6, "1/s", "control.k_psi");
+  require_beta(beta, "control.beta");
+  require_heading_gain(k_psi, "control.k_psi");
 }
 
 void SimulationOptions::validate() const {
-  // Below 1e-13 the error estimate of a double-precision step is rounding noise (scipy's floor is
-  // 100 eps); an atol below 1e-15 m overflows the scaled error norm near a zero state.
-  require_in_range(rtol, 1e-13, 1.0, "", "simulation.rtol");
-  require_in_range(atol, 1e-15, 1e6, "", "simulation.atol");
+  require_tolerances(rtol, atol, "simulation.");
   require_in_range(max_step, 1e-9, 1e9, "s", "simulation.max_step");
   require_in_range(output_step, 1e-6, 1e9, "s", "simulation.output_step");
 }

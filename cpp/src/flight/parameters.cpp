@@ -26,8 +26,7 @@ void FlightOptions::validate() const {
   require_positive(max_time, "max_time");
   if (max_time / dt > 1e8)
     detail::fail_field("max_time", max_time, "more than 1e8 steps of dt = " + detail::to_text(dt));
-  require_positive(rtol, "rtol");
-  require_positive(atol, "atol");
+  require_tolerances(rtol, atol, "");
 }
 
 void LineFeedbackGains::validate() const {

@@ -40,6 +40,19 @@ void require_threads(int value, const std::string& field) {
                                          std::to_string(limits::kMaxThreads) + "]");
 }
 
+void require_beta(double value, const std::string& field) {
+  require_in_range(value, limits::kMinGain, limits::kMaxBeta, "1/m", field);
+}
+
+void require_heading_gain(double value, const std::string& field) {
+  require_in_range(value, limits::kMinGain, limits::kMaxHeadingGain, "1/s", field);
+}
+
+void require_tolerances(double rtol, double atol, const std::string& prefix) {
+  require_in_range(rtol, limits::kMinRelativeTolerance, limits::kMaxRelativeTolerance, "", prefix + "rtol");
+  require_in_range(atol, limits::kMinAbsoluteTolerance, limits::kMaxAbsoluteTolerance, "", prefix + "atol");
+}
+
 void require_regular_file(const std::string& path, const std::string& field, const std::string& kind) {
   namespace fs = std::filesystem;
   std::error_code error;

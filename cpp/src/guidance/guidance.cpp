@@ -22,8 +22,8 @@ constexpr double kCentreTolerance = 1e-12;
 
 void GuidanceGains::validate() const {
   require_speed(speed, "gains.speed");
-  require_in_range(beta, 1e-9, 1e3, "1/m", "gains.beta");  // as Control::validate
-  require_in_range(k_psi, 1e-9, 1e6, "1/s", "gains.k_psi");
+  require_beta(beta, "gains.beta");
+  require_heading_gain(k_psi, "gains.k_psi");
   // v / r_min over the speed and length ranges.
   require_in_range(max_turn_rate, limits::kMinSpeed / limits::kMaxLength, limits::kMaxSpeed / limits::kMinLength,
                    "rad/s", "gains.max_turn_rate");
@@ -289,7 +289,7 @@ double lambda_max() {
 
 double lemma7_min_gain(double speed, double beta) {
   require_speed(speed, "speed");
-  require_in_range(beta, 1e-9, 1e3, "1/m", "beta");
+  require_beta(beta, "beta");
   return speed * beta * 4.0 / (kPi * kPi) * epsilon_max();  // (87)
 }
 

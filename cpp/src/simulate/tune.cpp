@@ -31,7 +31,7 @@ TuningResult tune_turn_rate(double radius, double radius_rate, double speed, dou
   require_in_range(radius_rate, -limits::kMaxSpeed, limits::kMaxSpeed, "m/s", "radius_rate");
   require_speed(speed, "speed");
   require_in_range(poi_speed, 0.0, limits::kMaxSpeed, "m/s", "poi_speed");
-  require_in_range(beta, 1e-9, 1e3, "1/m", "beta");
+  require_beta(beta, "beta");
   grid.validate();
   if (!(std::abs(radius_rate) <= speed - poi_speed))
     detail::fail_field("radius_rate", radius_rate,

@@ -6,7 +6,7 @@ import argparse
 import time
 from pathlib import Path
 
-from .. import _core
+from .. import _core, schema
 from ..io import footprint_environment, load_environment, read_plan
 from ..metrics import metric_along_path
 from ..plotting.orbits import figure_orbits, figure_radius
@@ -17,6 +17,7 @@ from . import (
     UsageError,
     add_export_arguments,
     check_exports,
+    checked,
     count,
     export_plan,
     length,
@@ -63,7 +64,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--max-volumes", type=count("--max-volumes", 1, 10**12), default=planning.max_volumes,
                    help="refuse plans that may need more VVs than this (worst case: about path length / "
                         "min_spacing; ~4.7 MB each at 1 degree); default %(default)s")
-    p.add_argument("--rate-margin", type=number("--rate-margin", 0.0, 1.0), default=planning.rate_margin,
+    p.add_argument("--rate-margin", type=checked("--rate-margin", schema.rate_margin), default=planning.rate_margin,
                    help="keep |dR/dt| <= (1 - margin)(v - v_g) in Algorithm 1 (default 0: Lemma 5's limit)")
     p.add_argument("--locus", default=planning.locus, choices=["smooth", "paper"], help="smooth (default): checked "
                    "against MaxRadius along the whole path, C1; paper: Algorithm 1's piecewise-linear R(t)")

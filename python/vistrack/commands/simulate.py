@@ -11,12 +11,20 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from .. import _core
+from .. import _core, schema
 from ..io import load_environment, read_plan
 from ..metrics import CONVERGE_AFTER
 from ..pipeline import simulate_with_baselines, start_on_orbit
 from ..report.simulation import write_simulation
-from . import configuration, coordinate, length, number, output_folder, speed
+from . import checked, configuration, coordinate, length, number, output_folder, speed
+
+
+def fixed_step(key: str, value: object) -> float:
+    """0 (adaptive steps) or a step in [1e-9, 1e9] s, as simulate() takes it."""
+    step = schema.number(key, value, low=0.0, high=1e9)
+    if 0.0 < step < 1e-9:
+        raise schema.fail(key, value, "must be 0 (adaptive steps) or in [1e-9, 1e9] s")
+    return step
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -32,17 +40,18 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--speed", type=speed("--speed"), default=uav.speed, help="UAV speed v, m/s")
     p.add_argument("--min-turn-radius", type=length("--min-turn-radius"), default=uav.min_turn_radius, help="r_min, m")
     p.add_argument("--altitude", type=coordinate("--altitude"), default=uav.altitude, help="h_UAV, m")
-    p.add_argument("--beta", type=number("--beta", 1e-9, 1e3), default=control.beta,
+    p.add_argument("--beta", type=checked("--beta", schema.beta), default=control.beta,
                    help="beta of the vector field, 1/m")
-    p.add_argument("--k-psi", type=number("--k-psi", 1e-9, 1e6), default=control.k_psi, help="heading gain k_psi, 1/s")
+    p.add_argument("--k-psi", type=checked("--k-psi", schema.heading_gain), default=control.k_psi,
+                   help="heading gain k_psi, 1/s")
     p.add_argument("--direction", default=control.direction, choices=["ccw", "cw"], help="circulation")
     p.add_argument("--x0", type=configuration("--x0"), help="start X,Y,PSI (default: on the first orbit east of "
                    "the POI)")
-    p.add_argument("--rtol", type=number("--rtol", 1e-13, 1.0), default=options.rtol)
-    p.add_argument("--atol", type=number("--atol", 1e-15, 1e6), default=options.atol)
+    p.add_argument("--rtol", type=checked("--rtol", schema.relative_tolerance), default=options.rtol)
+    p.add_argument("--atol", type=checked("--atol", schema.absolute_tolerance), default=options.atol)
     p.add_argument("--max-step", type=number("--max-step", 1e-9, 1e9), default=options.max_step, help="s")
     p.add_argument("--output-step", type=number("--output-step", 1e-6, 1e9), default=options.output_step, help="s")
-    p.add_argument("--fixed-step", type=number("--fixed-step", 0.0, 1e9), default=0.0,
+    p.add_argument("--fixed-step", type=checked("--fixed-step", fixed_step), default=0.0,
                    help="fixed integration step, s (0: adaptive)")
     p.add_argument("--baseline-radius", type=length("--baseline-radius"), action="append", default=[],
                    help="also simulate constant-radius orbits of this radius (repeatable)")

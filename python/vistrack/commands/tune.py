@@ -11,10 +11,11 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from .. import schema
 from ..progress import Progress
 from ..report.tune import write_tuning
 from ..tuning import tune_beta
-from . import length, number, output_folder, positive_numbers, speed
+from . import checked, length, number, output_folder, positive_numbers, speed
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -27,7 +28,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--speed", type=speed("--speed"), default=20.0, help="UAV speed v, m/s")
     p.add_argument("--poi-speed", type=number("--poi-speed", 0.0, 1e4), default=5.0, help="POI speed v_g, m/s")
     p.add_argument("--min-turn-radius", type=length("--min-turn-radius"), default=50.0, help="r_min, m")
-    p.add_argument("--beta", type=number("--beta", 1e-9, 1e3), default=0.025, help="beta for the map, 1/m")
+    p.add_argument("--beta", type=checked("--beta", schema.beta), default=0.025, help="beta for the map, 1/m")
     p.add_argument("--sweep", type=positive_numbers("--sweep", "0.01,0.025,0.05"), default=None,
                    help="betas for the max-vs-beta curve (default: 30 values, log-spaced around --beta)")
     p.add_argument("--tau", type=number("--tau", 0.0, 1.0, low_open=True), default=1.0,
