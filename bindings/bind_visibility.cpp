@@ -226,13 +226,15 @@ void bind_visibility(py::module_& m) {
         d["rays_traced"] = cost.rays_traced;
         d["rays_skipped"] = cost.rays_skipped;
         d["refine_rays"] = cost.refine_rays;
+        d["embree_s"] = cost.embree_s;
         return py::make_tuple(std::move(vv), d);
       },
       py::arg("scene"), py::arg("g"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
       py::arg("resolution_deg") = Planning{}.resolution_deg, py::arg("parallel") = true,
       "visibility_volume and where its time and rays went: (vv, {bounds_s, trace_s, refine_s, mesh_s, volume_s "
       "(seconds), rays_traced, rays_skipped (cell and corner rays traced / decided by the bounds alone), "
-      "refine_rays}); parallel=False keeps it on the calling thread (as in a batch).");
+      "refine_rays, embree_s (CPU seconds inside Embree, part of trace_s and refine_s)}); parallel=False keeps it "
+      "on the calling thread (as in a batch).");
   m.def(
       "visibility_volumes",
       [](const VisibilityScene& scene, const Points3& pois, double d_max, Band band, double resolution_deg) {

@@ -307,3 +307,20 @@ def test_polygon_agreement_sees_a_wrong_polygon(box_env, open_field):
     assert polygon_agreement(boxed, wrong, 20.0) < 0.95
     with pytest.raises(vt.VistrackError, match="step"):
         polygon_agreement(boxed, vv, 20.0, step=0.0)
+
+
+def test_volume_cost_accounts_for_every_ray_and_returns_the_same_vv(charlotte, charlotte_scene):
+    """visibility_volume_cost (the benchmarks' breakdown): the same VV as visibility_volume, every
+    cell and corner ray either traced or decided by the bounds, Embree's time inside the phases
+    that trace, on the calling thread with parallel=False."""
+    pois, _ = path_pois(charlotte_scene, charlotte / "paths" / "paper_slow.csv", [0.0, 30.0])
+    for g in pois:
+        vv, cost = vt._core.visibility_volume_cost(charlotte_scene, g, 400.0, None, 1.0, False)
+        plain = vt.visibility_volume(charlotte_scene, g, 400.0, None, 1.0)
+        assert vv.volume == plain.volume and np.array_equal(vv.faces, plain.faces) and np.array_equal(vv.far, plain.far)
+        corners = 2 + (len(vv.mesh_row_sines) - 2) * vv.grid.num_azimuth
+        assert cost["rays_traced"] + cost["rays_skipped"] == vv.grid.size + corners
+        assert 0 < cost["rays_traced"] < vv.grid.size + corners and cost["refine_rays"] > 0
+        phases = [cost[k] for k in ("bounds_s", "trace_s", "refine_s", "mesh_s", "volume_s")]
+        assert all(p >= 0.0 for p in phases) and sum(phases) > 0.0
+        assert 0.0 < cost["embree_s"] <= cost["trace_s"] + cost["refine_s"]

@@ -143,6 +143,7 @@ struct VolumeCost {
   std::size_t rays_traced = 0;   // cell and corner rays handed to Embree
   std::size_t rays_skipped = 0;  // cell and corner rays decided by the bounds alone
   std::size_t refine_rays = 0;   // rays traced while refining
+  double embree_s = 0.0;  // CPU seconds inside Embree's rtcIntersect1M, summed over threads (in trace_s and refine_s)
 };
 // visibility_volume, filling `cost`; parallel = false computes it on the calling thread only.
 VisibilityVolume visibility_volume_with_cost(const VisibilityScene& scene, const Vec3& g, double d_max,

@@ -163,6 +163,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
                      VisibilityVolume& vv, VolumeCost* cost) {
   PhaseTimer refine_timer(cost ? &cost->refine_s : nullptr);
   RayCounts refine_counts;
+  refine_counts.timed = cost != nullptr;
   TraceContext tracer = tracer_in;
   tracer.counts = &refine_counts;
   const int nv = sphere.num_vertices();
@@ -485,7 +486,10 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     }
   }
   refine_timer.stop();
-  if (cost != nullptr) cost->refine_rays += refine_counts.traced;
+  if (cost != nullptr) {
+    cost->refine_rays += refine_counts.traced;
+    cost->embree_s += 1e-9 * static_cast<double>(refine_counts.embree_ns.load());
+  }
   PhaseTimer mesh_timer(cost ? &cost->mesh_s : nullptr);
 
   // Vertices: the used corners, the midpoints of split edges, two per confirmed jump, a centroid

@@ -181,6 +181,7 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   w.clearance.compute(embree.obstacles, g - embree.origin, d_max, na);
   bounds_timer.stop();
   detail::RayCounts counts;
+  counts.timed = cost != nullptr;
   const detail::TraceContext tracer{embree, s, w.clearance, parallel, &counts};
   detail::PhaseTimer trace_timer(cost ? &cost->trace_s : nullptr);
 
@@ -239,6 +240,7 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   if (cost != nullptr) {
     cost->rays_traced += counts.traced;
     cost->rays_skipped += counts.skipped;
+    cost->embree_s += 1e-9 * static_cast<double>(counts.embree_ns.load());
   }
   return vv;
 }
