@@ -19,12 +19,10 @@ namespace detail {
 
 namespace {
 
-}  // namespace
-
-constexpr double kGroundHalfSize = 1.0e6;   // m: covers every query the float scene can carry
+constexpr double kGroundHalfSize = 1.0e6;      // m: covers every query the float scene can carry
 constexpr double kMaxLocalCoordinate = 1.0e6;  // m from the local origin, beyond it floats are too coarse
-constexpr std::size_t kBatch = 64;
-constexpr double kOnGround = 1e-6;          // m: a triangle this close to the ground plane lies in it          // rays per rtcIntersect1M call (notes: 35-43 Mrays/s)
+constexpr std::size_t kBatch = 64;             // rays per rtcIntersect1M call (notes: 35-43 Mrays/s)
+constexpr double kOnGround = 1e-6;             // m: a triangle this close to the ground plane lies in it
 
 void embree_error(void* /*user*/, RTCError code, const char* message) {
   // Reported through rtcGetDeviceError after each build step; nothing to do here.
@@ -52,6 +50,8 @@ void init_ray(RTCRay& ray, const float o[3], const float d[3], float t_near, flo
   ray.id = 0;
   ray.flags = 0;
 }
+
+}  // namespace
 
 FlushDenormals::FlushDenormals() : saved_(_mm_getcsr()) {
   _MM_SET_FLUSH_ZERO_MODE(_MM_FLUSH_ZERO_ON);
