@@ -4,10 +4,9 @@
 # cmake/VistrackSanitize.cmake), then ctest. Any finding aborts the test that triggers it.
 # VISTRACK_SANITIZE_PYTHON=1 also builds the extension with the sanitizers and runs the pytest
 # files in PYTESTS against it, with ASan's runtime and libstdc++ preloaded into Python (which links
-# neither: without libstdc++ first, ASan cannot intercept C++ throws). Not in CI yet: the
-# instrumented extension's build would add to CI's 90-minute budget (README, "Limits and hardening").
-#   bash scripts/sanitize.sh                            # build + run (CI: .ci/run's sanitizer step)
-#   VISTRACK_SANITIZE_PYTHON=1 bash scripts/sanitize.sh # also the pytest subset
+# neither: without libstdc++ first, ASan cannot intercept C++ throws). CI (.ci/run) runs both.
+#   bash scripts/sanitize.sh                            # build + run the GoogleTests
+#   VISTRACK_SANITIZE_PYTHON=1 bash scripts/sanitize.sh # also the pytest subset (CI)
 #   bash scripts/sanitize.sh -R Dubins                  # extra arguments go to ctest
 # Budget: the tests listed in SLOW below run in the normal ctest only (each is a larger instance
 # of what a faster test covers under the sanitizers), and the random-case tests of limits_test run
