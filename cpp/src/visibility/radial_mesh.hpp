@@ -101,15 +101,30 @@ struct SphereGrid {
     const int i = (t / 2) / na;
     return (t % 2 == 0) ? i >= 1 : i <= ne - 2;
   }
+  // First vertex of row i (a pole row is one vertex).
+  int row_first(int i) const { return i == 0 ? 0 : (i == ne ? num_vertices() - 1 : 1 + (i - 1) * na); }
+  // The quads of row i: quad(j) gives the corners (i, j), (i, j+1), (i+1, j), (i+1, j+1) of quad
+  // (i, j), j in [0, na), without vertex()'s branches per corner (the hot loops of the mesh).
+  struct QuadRow {
+    int lo, hi, na;
+    bool south, north;  // the row touches the south (north) pole
+    std::array<int, 4> quad(int j) const {
+      const int jn = j + 1 == na ? 0 : j + 1;
+      return {south ? lo : lo + j, south ? lo : lo + jn, north ? hi : hi + j, north ? hi : hi + jn};
+    }
+  };
+  QuadRow quad_row(int i) const { return {row_first(i), row_first(i + 1), na, i == 0, i + 1 == ne}; }
   // Calls visit(i, t, v00, v01, v10, v11) for every quad in row-major order: row i, its Ta slot t
   // (Tb is t + 1) and its corner vertices (i, j), (i, j+1), (i+1, j), (i+1, j+1).
   template <class Visit>
   void for_each_quad(Visit visit) const {
-    for (int i = 0; i < ne; ++i)
+    for (int i = 0; i < ne; ++i) {
+      const QuadRow row = quad_row(i);
       for (int j = 0; j < na; ++j) {
-        const int jn = j + 1 == na ? 0 : j + 1;
-        visit(i, 2 * (i * na + j), vertex(i, j), vertex(i, jn), vertex(i + 1, j), vertex(i + 1, jn));
+        const auto [v00, v01, v10, v11] = row.quad(j);
+        visit(i, 2 * (i * na + j), v00, v01, v10, v11);
       }
+    }
   }
   std::array<int, 3> corners(int t) const;
   // The triangle across edge e (corner e to corner e+1) of triangle t.

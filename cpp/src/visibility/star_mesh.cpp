@@ -237,9 +237,6 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     }
   }
   auto live = [&](int t) { return (flags[static_cast<std::size_t>(t)] & kLive) != 0; };
-  // First corner of vertex row i (a pole row is one vertex): quad (i, j) has corners
-  // row_first(i) + j, + j + 1 and row_first(i + 1) + j, + j + 1 (columns modulo na).
-  auto row_first = [&](int i) { return i == 0 ? 0 : (i == ne ? nv - 1 : 1 + (i - 1) * na); };
 
   // Jump candidates on the grid's edges between live slots. Each edge is examined once per quad
   // that owns it (its bottom, left and diagonal edge) and recorded from the slot that runs along
@@ -270,13 +267,10 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     auto gap = [&](int p, int q) { return std::abs(r[p] - r[q]) > kJumpCandidate * std::max(r[p], r[q]); };
     auto plane_pair = [&](int p, int q) { return sf[p] == sf[q] && is_plane(sf[p]); };
     for (int i = 0; i < ne; ++i) {
-      const int lo = row_first(i), hi = row_first(i + 1);
-      const bool south = i == 0, north = i + 1 == ne;
+      const SphereGrid::QuadRow row = sphere.quad_row(i);
       for (int j = 0; j < na; ++j) {
-        const int jn = j + 1 == na ? 0 : j + 1;
-        const int v00 = south ? lo : lo + j, v01 = south ? lo : lo + jn;
-        const int v10 = north ? hi : hi + j, v11 = north ? hi : hi + jn;
-        const bool diagonal = gap(v00, v11), bottom = !south && gap(v00, v01), left = gap(v00, v10);
+        const auto [v00, v01, v10, v11] = row.quad(j);
+        const bool diagonal = gap(v00, v11), bottom = !row.south && gap(v00, v01), left = gap(v00, v10);
         if (!(diagonal || bottom || left)) continue;
         const int t = 2 * (i * na + j);
         if (diagonal && !plane_pair(v00, v11)) consider(t, 2, v11, v00), consider(t + 1, 0, v00, v11);
@@ -618,7 +612,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   };
   // Vertices first (the centroids are made from them): corners by rows of the sphere.
   for_each_index(parallel, ne + 1, [&](int i) {
-    const int first = row_first(i);
+    const int first = sphere.row_first(i);
     const int last = i == 0 || i == ne ? first + 1 : first + na;
     const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)], cos_el = dirs.cos_el_corner[static_cast<std::size_t>(i)];
     for (int v = first; v < last; ++v) {
@@ -678,12 +672,9 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     const std::uint8_t* f = flags.data() + 2 * i * na;
     const double* r = far.data();
     const std::int32_t* id = corner_vertex.data();
-    const int lo = row_first(i), hi = row_first(i + 1);
-    const bool south = i == 0, north = i + 1 == ne;
+    const SphereGrid::QuadRow row = sphere.quad_row(i);
     for (int j = 0; j < na; ++j) {
-      const int jn = j + 1 == na ? 0 : j + 1;
-      const int v00 = south ? lo : lo + j, v01 = south ? lo : lo + jn;
-      const int v10 = north ? hi : hi + j, v11 = north ? hi : hi + jn;
+      const auto [v00, v01, v10, v11] = row.quad(j);
       if (f[2 * j] == kLive) {
         out[0] = id[v00];
         out[1] = id[v01];
