@@ -143,7 +143,9 @@ struct VolumeCost {
   std::size_t rays_traced = 0;   // cell and corner rays handed to Embree
   std::size_t rays_skipped = 0;  // cell and corner rays decided by the bounds alone
   std::size_t refine_rays = 0;   // rays traced while refining
-  double embree_s = 0.0;  // CPU seconds inside Embree's rtcIntersect1M, summed over threads (in trace_s and refine_s)
+  // CPU seconds handing rays to Embree (rtcIntersect1M, with packing the 64-ray batches and reading
+  // the hits), summed over threads; part of trace_s and refine_s.
+  double embree_s = 0.0;
 };
 // visibility_volume, filling `cost`; parallel = false computes it on the calling thread only.
 VisibilityVolume visibility_volume_with_cost(const VisibilityScene& scene, const Vec3& g, double d_max,
