@@ -324,6 +324,9 @@ def test_gain_and_tolerance_ranges_are_the_same_everywhere() -> None:
     refuses(lambda: vt.Control(beta=lim.MAX_BETA * 2).validate(), "control.beta", "1000")
     refuses(lambda: vt.Control(k_psi=0.0).validate(), "control.k_psi", "1e-09")
     refuses(lambda: vt.lemma7_min_gain(20.0, lim.MAX_BETA * 2), "beta", "1000")
+    for section, key, value in [("control", "beta", 2e3), ("control", "k_psi", 0.0), ("simulation", "rtol", 1e-14),
+                                ("simulation", "atol", 1e7), ("planning", "rate_margin", 1.0)]:
+        refuses(lambda s=section, k=key, v=value: vt.Scenario.from_dict({s: {k: v}}), f"{section}.{key} = {value!r}")
     for check, low, high in [(schema.beta, lim.MIN_GAIN, lim.MAX_BETA),
                              (schema.heading_gain, lim.MIN_GAIN, lim.MAX_HEADING_GAIN),
                              (schema.relative_tolerance, lim.MIN_RTOL, lim.MAX_RTOL),
