@@ -1,7 +1,7 @@
 """Visibility-volume benchmark on uptown Charlotte: vistrack (Embree 3, C++) against trimesh with
 its Embree backend (embreex), the same rays from the same POIs, side by side in one run.
 
-    python bench/visibility_bench.py [--data ../shared/data] [--points 10] [--repeat 3]
+    python bench/visibility_bench.py [--data ../shared/data] [--points 10] [--repeat 3] [--keep-freed-memory]
 
 Reports per resolution (1 and 0.5 degrees): milliseconds per VV (rays, intervals, closed mesh and
 volume) for one VV at a time and for the parallel batch, the rays per second that implies, the
@@ -61,7 +61,11 @@ def main() -> int:
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--d-max", type=float, default=400.0)
     parser.add_argument("--json", type=Path, help="also write the numbers here")
+    parser.add_argument("--keep-freed-memory", action="store_true",
+                        help="first call vt.keep_freed_memory() (as the vistrack command does)")
     args = parser.parse_args()
+    if args.keep_freed_memory and not vt.keep_freed_memory():
+        print("keep_freed_memory: no glibc mallopt here; measuring with the defaults")
 
     import trimesh
     from trimesh.ray.ray_pyembree import RayMeshIntersector

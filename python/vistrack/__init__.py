@@ -96,7 +96,7 @@ from ._core import (
 from .mission import Georeference
 from .pipeline import RunResult, run
 from .scenario import Scenario
-from .visibility import polygon_agreement, visibility_scene, visibility_volume, visibility_volumes
+from .visibility import keep_freed_memory, polygon_agreement, visibility_scene, visibility_volume, visibility_volumes
 
 try:
     __version__ = _version("vistrack")
@@ -151,6 +151,7 @@ __all__ = [
     "flight",
     "follow",
     "grid_xor_volume",
+    "keep_freed_memory",
     "lambda_max",
     "lemma6_curvature_bound",
     "lemma7_min_gain",

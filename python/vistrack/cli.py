@@ -19,6 +19,7 @@ import sys
 from typing import NoReturn, Sequence
 
 from . import VistrackError, __version__
+from .visibility import keep_freed_memory
 
 # Order shown in --help.
 COMMANDS = [
@@ -57,6 +58,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exit_:  # argparse has printed the usage error (or --help / --version)
         return exit_.code if isinstance(exit_.code, int) else USAGE_ERROR
+    keep_freed_memory()  # VV batches reuse freed pages (a process-wide malloc setting: the command's to make)
     try:
         return int(args.func(args) or 0)
     except UsageError as error:

@@ -6,6 +6,7 @@ is built for the call) or a :class:`VisibilityScene` (built once: the fast path 
 
 from __future__ import annotations
 
+import ctypes
 import math
 from typing import Optional, Sequence, Tuple, Union
 
@@ -15,6 +16,27 @@ from . import _core, schema
 from ._core import Environment, Planning, PoiMotion, PoiPath, VisibilityScene, VisibilityVolume
 
 Band = Optional[Tuple[float, float]]
+
+
+def keep_freed_memory(max_bytes: int = 1 << 30) -> bool:
+    """Let this process keep the memory it frees for reuse instead of handing it back to the kernel
+    (glibc's malloc: blocks up to 32 MiB come from the heap, and up to ``max_bytes`` of free heap
+    stay in the process). Each VV writes 4-5 MB of new arrays (intervals, mesh, slot offsets);
+    with glibc's defaults what a batch frees goes back to the kernel, and the next batch pays a page
+    fault per 4 KB again. Measured on Charlotte (1-degree VVs in batches of 10, 2 cores, quiet):
+    212 -> 267 VVs/s. Process-wide, for the rest of the process's life, so the library never calls
+    it itself; the ``vistrack`` command does. The same as starting Python with
+    ``GLIBC_TUNABLES=glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_threshold=<max_bytes>``.
+    Returns False, changing nothing, where the C library has no working mallopt (not glibc)."""
+    max_bytes = schema.integer("max_bytes", max_bytes, 0, 2**31 - 1)  # mallopt takes a C int
+    try:
+        mallopt = ctypes.CDLL(None).mallopt
+    except (OSError, AttributeError):
+        return False
+    mallopt.argtypes = [ctypes.c_int, ctypes.c_int]
+    mallopt.restype = ctypes.c_int
+    m_trim_threshold, m_mmap_threshold = -1, -3  # <malloc.h>
+    return bool(mallopt(m_mmap_threshold, 32 << 20)) and bool(mallopt(m_trim_threshold, max_bytes))
 
 
 def visibility_scene(env: Union[Environment, VisibilityScene]) -> VisibilityScene:

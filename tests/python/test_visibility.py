@@ -324,3 +324,50 @@ def test_volume_cost_accounts_for_every_ray_and_returns_the_same_vv(charlotte, c
         phases = [cost[k] for k in ("bounds_s", "trace_s", "refine_s", "mesh_s", "volume_s")]
         assert all(p >= 0.0 for p in phases) and sum(phases) > 0.0
         assert 0.0 < cost["embree_s"] <= cost["trace_s"] + cost["refine_s"]
+
+
+_RETAINED = """
+import sys
+sys.path.insert(0, sys.argv[2])
+import conftest  # vistrack from the build tree when VISTRACK_BUILD_DIR is set
+import numpy as np
+import vistrack as vt
+def rss():
+    return int(open("/proc/self/statm").read().split()[1]) * 4096
+if sys.argv[1] == "keep":
+    assert vt.keep_freed_memory()
+before = rss()
+for _ in range(3):
+    arrays = [np.ones(200_000) for _ in range(4)]  # four 1.6 MB arrays, as a VV's (mesh, intervals)
+    del arrays
+print(rss() - before)
+"""
+
+
+def test_keep_freed_memory_keeps_what_a_batch_frees(tmp_path: Path):
+    """After keep_freed_memory() the pages of freed VV-sized arrays stay in the process (the next
+    batch reuses them without page faults); without it glibc returns them to the kernel."""
+    import subprocess
+    import sys
+
+    script = tmp_path / "retained.py"
+    script.write_text(_RETAINED)
+    here = str(Path(__file__).parent)
+    kept = {mode: int(subprocess.run([sys.executable, str(script), mode, here], check=True, capture_output=True,
+                                     text=True).stdout.split()[-1]) for mode in ("plain", "keep")}
+    assert kept["keep"] >= 5_000_000, kept
+    assert kept["plain"] < 1_000_000, kept  # the control: glibc's default hands the memory back
+
+
+def test_keep_freed_memory_checks_its_argument_and_the_cli_calls_it(monkeypatch, tmp_path: Path):
+    with pytest.raises(vt.VistrackError, match="max_bytes = -1"):
+        vt.keep_freed_memory(-1)
+    with pytest.raises(vt.VistrackError, match="max_bytes"):
+        vt.keep_freed_memory(2**31)
+    import vistrack.cli
+
+    calls = []
+    monkeypatch.setattr(vistrack.cli, "keep_freed_memory", lambda: calls.append(1) or True)
+    assert vistrack.cli.main(["volumes", "--map", str(tmp_path / "none.geojson"), "--points", "0,0",
+                              "--out", str(tmp_path / "out")]) == 1
+    assert calls == [1]
