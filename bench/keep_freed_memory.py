@@ -25,9 +25,9 @@ REPO = Path(__file__).resolve().parents[1]
 
 def worker(mode: str, keep: bool, seconds: float) -> None:
     sys.path.insert(0, str(REPO / "tests" / "python"))
-    import conftest  # noqa: F401  (vistrack from the build tree when VISTRACK_BUILD_DIR is set)
     import numpy as np
 
+    import conftest  # vistrack from the build tree when VISTRACK_BUILD_DIR is set
     import vistrack as vt
     from vistrack import _core
 
@@ -57,15 +57,17 @@ def main() -> int:
     if args.worker:
         worker(args.worker[0], args.worker[1] == "keep", args.seconds)
         return 0
-    if not (conftest_data := REPO.parent / "shared" / "data" / "charlotte").is_dir() and "VISTRACK_DATA" not in os.environ:
-        print(f"skipped: no Charlotte data at {conftest_data}")
+    data = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data")) / "charlotte"
+    if not data.is_dir():
+        print(f"skipped: no Charlotte data at {data} (set VISTRACK_DATA)")
         return 0
     for mode in ("batch", "single"):
         rates: dict[str, list[float]] = {"default": [], "kept": []}
         for _ in range(args.rounds):
             for name in rates:
-                run = subprocess.run([sys.executable, __file__, "--seconds", str(args.seconds), "--worker", mode,
-                                      "keep" if name == "kept" else "plain"], check=True, capture_output=True, text=True)
+                command = [sys.executable, __file__, "--seconds", str(args.seconds), "--worker", mode,
+                           "keep" if name == "kept" else "plain"]
+                run = subprocess.run(command, check=True, capture_output=True, text=True)
                 rates[name].append(float(run.stdout.split()[-1]))
         median = {name: statistics.median(values) for name, values in rates.items()}
         label = "in batches of 10 (both cores)" if mode == "batch" else "one at a time on one thread"
