@@ -150,10 +150,11 @@ def main() -> int:
               + f"; rays: {total['rays_traced']:.0f} traced, {total['rays_skipped']:.0f} decided by the bounds, "
               f"{total['refine_rays']:.0f} refining")
         # The floor these rays set: Embree's own time, whatever the rest of the VV costs.
-        cores = os.cpu_count() or 1
+        cores = len(os.sched_getaffinity(0))
+        cap = f"{cores / total['embree_s']:.0f}" if total["embree_s"] > 0 else "no"
         print(f"  inside Embree: {total['embree_s'] * 1e3:.2f} ms ({100 * total['embree_s'] / spent:.0f} %) for "
               f"{total['rays_traced'] + total['refine_rays']:.0f} rays; Embree alone caps a {cores}-core batch at "
-              f"{cores / total['embree_s']:.0f} VVs/s")
+              f"{cap} VVs/s")
     for row in results:
         print(f"{row['resolution_deg']:g} deg: first hits agree with the peer on {100 * row['hit_agreement']:.2f}% of rays "
               f"(within 5 cm); batch {row['ratio_batch_vs_peer']:.1f}x the peer's rays/s")

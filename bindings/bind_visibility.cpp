@@ -233,8 +233,9 @@ void bind_visibility(py::module_& m) {
       py::arg("resolution_deg") = Planning{}.resolution_deg, py::arg("parallel") = true,
       "visibility_volume and where its time and rays went: (vv, {bounds_s, trace_s, refine_s, mesh_s, volume_s "
       "(seconds), rays_traced, rays_skipped (cell and corner rays traced / decided by the bounds alone), "
-      "refine_rays, embree_s (CPU seconds in Embree's rtcIntersect1M calls with their ray packing, part of trace_s and refine_s)}); parallel=False keeps it "
-      "on the calling thread (as in a batch).");
+      "refine_rays, embree_s (seconds in Embree's rtcIntersect1M calls with their ray packing, per thread and "
+      "summed over threads: within trace_s + refine_s when parallel=False)}); parallel=False keeps it on the "
+      "calling thread (as in a batch).");
   m.def(
       "visibility_volumes",
       [](const VisibilityScene& scene, const Points3& pois, double d_max, Band band, double resolution_deg) {

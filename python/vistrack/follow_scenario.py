@@ -46,7 +46,8 @@ from .follow import (
 )
 from .georeference import Georeference
 from .io import load_environment, read_road_path, read_vehicle_track, read_yaml_mapping
-from .schema import fail, number, positive, reject_unknown, resolve_path, section
+from .schema import beta as schema_beta
+from .schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
 
 __all__ = ["HEADINGS", "CityRoad", "FollowScenario", "FollowStudy"]
 
@@ -312,8 +313,8 @@ def _baseline(data: Mapping[str, Any]) -> tuple[Optional[float], Optional[Contro
     b = section(data, "baseline", {"radius", "beta", "k_psi", "direction"})
     radius = number("baseline.radius", b.get("radius", 0.0), low=0.0)
     d = Control()
-    control = Control(beta=positive("baseline.beta", b.get("beta", d.beta)),
-                      k_psi=positive("baseline.k_psi", b.get("k_psi", d.k_psi)),
+    control = Control(beta=schema_beta("baseline.beta", b.get("beta", d.beta)),
+                      k_psi=heading_gain("baseline.k_psi", b.get("k_psi", d.k_psi)),
                       direction=str(b.get("direction", d.direction)))
     return (radius or None), control
 

@@ -85,8 +85,8 @@ def absolute_tolerance(key: str, value: Any) -> float:
 
 def rate_margin(key: str, value: Any) -> float:
     """A share of Lemma 5's radius rate v - v_g kept in reserve: [0, 1)."""
-    result = number(key, value, low=0.0, high=1.0)
-    if result == 1.0:
+    result = number(key, value)
+    if not 0.0 <= result < 1.0:
         raise fail(key, value, "must be in [0, 1) (a fraction of v - v_g)")
     return result
 

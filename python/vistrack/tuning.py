@@ -9,7 +9,9 @@ from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 
+from . import schema
 from ._core import TuningResult, VistrackError, lemma7_min_gain, tune_turn_rate
+from ._core import limits as _limits
 
 __all__ = ["BetaTuning", "tune_beta"]
 
@@ -59,16 +61,22 @@ def tune_beta(radius: float, radius_rate: float, speed: float, poi_speed: float,
               r_max_factor: float = 4.0, direction: str = "ccw",
               progress: Callable[[int, int], None] | None = None) -> BetaTuning:
     """The grid search of Figure 9 at ``beta`` and over ``sweep`` (default: 30 betas log-spaced over
-    two decades around ``beta``). ``progress(done, total)`` is called after each beta."""
+    two decades around ``beta``, within beta's range [1e-9, 1e3] 1/m). ``progress(done, total)``
+    is called after each beta. Every beta is checked before the first search."""
     if not (min_turn_radius > 0 and np.isfinite(min_turn_radius)):
         raise VistrackError(f"min_turn_radius = {min_turn_radius}: must be a finite number > 0")
+    beta = schema.beta("beta", beta)
+    if sweep is None:
+        betas = np.geomspace(max(beta / 10, _limits.MIN_GAIN), min(beta * 10, _limits.MAX_BETA), 30)
+    else:
+        betas = np.asarray([schema.beta(f"sweep[{k}]", b) for k, b in enumerate(sweep)], dtype=float)
 
     def search(b: float) -> TuningResult:
         return tune_turn_rate(radius, radius_rate, speed, poi_speed, b, direction=direction, tau=tau,
                               r_max_factor=r_max_factor)
 
     tuning = BetaTuning(radius, radius_rate, speed, poi_speed, min_turn_radius, beta, tau, search(beta))
-    tuning.betas = [float(b) for b in (sweep if sweep is not None else np.geomspace(beta / 10, beta * 10, 30))]
+    tuning.betas = [float(b) for b in betas]
     for k, b in enumerate(tuning.betas):
         tuning.sweep_max_turn_rate.append(search(b).max_turn_rate)
         if progress is not None:

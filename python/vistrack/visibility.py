@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import ctypes
 import math
+import numbers
+import sys
 from typing import Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -23,20 +25,27 @@ def keep_freed_memory(max_bytes: int = 1 << 30) -> bool:
     (glibc's malloc: blocks up to 32 MiB come from the heap, and up to ``max_bytes`` of free heap
     stay in the process). Each VV writes 4-5 MB of new arrays (intervals, mesh, slot offsets);
     with glibc's defaults what a batch frees goes back to the kernel, and the next batch pays a page
-    fault per 4 KB again. Measured on Charlotte (1-degree VVs in batches of 10, 2 cores, quiet):
-    212 -> 267 VVs/s. Process-wide, for the rest of the process's life, so the library never calls
-    it itself; the ``vistrack`` command does. The same as starting Python with
+    fault per 4 KB again. Measured on Charlotte (1-degree VVs in batches of 10, 2 cores, quiet;
+    bench/keep_freed_memory.py): 214 -> 265 VVs/s. Process-wide, for the rest of the process's
+    life, so the library never calls it itself; the ``vistrack`` command does, in its own process
+    (not in the Dask workers of a sweep). The same as starting Python with
     ``GLIBC_TUNABLES=glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_threshold=<max_bytes>``.
-    Returns False, changing nothing, where the C library has no working mallopt (not glibc)."""
+    True when glibc took both settings; False off Linux, where the C library has no mallopt, or
+    where it refused a setting (an allocator that ignores mallopt, such as AddressSanitizer's,
+    returns 0)."""
+    if isinstance(max_bytes, numbers.Integral) and not isinstance(max_bytes, bool):
+        max_bytes = int(max_bytes)  # numpy integers too
     max_bytes = schema.integer("max_bytes", max_bytes, 0, 2**31 - 1)  # mallopt takes a C int
+    if not sys.platform.startswith("linux"):
+        return False
     try:
         mallopt = ctypes.CDLL(None).mallopt
-    except (OSError, AttributeError):
+    except (OSError, AttributeError, TypeError):
         return False
     mallopt.argtypes = [ctypes.c_int, ctypes.c_int]
     mallopt.restype = ctypes.c_int
-    m_trim_threshold, m_mmap_threshold = -1, -3  # <malloc.h>
-    return bool(mallopt(m_mmap_threshold, 32 << 20)) and bool(mallopt(m_trim_threshold, max_bytes))
+    m_trim_threshold, m_mmap_threshold = -1, -3  # <malloc.h>; glibc returns 1 on success
+    return mallopt(m_mmap_threshold, 32 << 20) == 1 and mallopt(m_trim_threshold, max_bytes) == 1
 
 
 def visibility_scene(env: Union[Environment, VisibilityScene]) -> VisibilityScene:

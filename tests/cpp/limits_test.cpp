@@ -23,6 +23,8 @@
 #include "test_data.hpp"
 #include "vistrack/dubins.hpp"
 #include "vistrack/environment.hpp"
+#include "vistrack/flight.hpp"
+#include "vistrack/parameters.hpp"
 #include "vistrack/ode.hpp"
 #include "vistrack/orbit.hpp"
 #include "vistrack/simulate.hpp"
@@ -183,6 +185,32 @@ TEST(Limits, XorPerturbationIsANudge) {
   options.perturbation = 0.0;
   options.time_limit = 1e300;  // past 1e6 s the deadline overflows the clock
   expect_error([&] { xor_volume(a, a, XorFrame::poi, XorMethod::mesh, options); }, {"options.time_limit"});
+}
+
+TEST(Limits, GainsAndTolerancesHaveOneRangeEverywhere) {
+  // limits.hpp's ranges, whichever entry point takes the value.
+  EXPECT_NO_THROW(require_beta(limits::kMinGain, "b"));
+  EXPECT_NO_THROW(require_beta(limits::kMaxBeta, "b"));
+  expect_error([] { require_beta(2 * limits::kMaxBeta, "b"); }, {"b = 2000", "[1e-09, 1000] 1/m"});
+  expect_error([] { require_heading_gain(0.0, "k"); }, {"k = 0", "[1e-09, 1e+06] 1/s"});
+  expect_error([] { require_heading_gain(kNaN, "k"); }, {"k = nan"});
+  expect_error([] { require_tolerances(1e-14, 1e-8, "x."); }, {"x.rtol = 1e-14", "[1e-13, 1]"});
+  expect_error([] { require_tolerances(1e-6, 1e7, "x."); }, {"x.atol = 1e+07", "[1e-15, 1e+06]"});
+  Control control;
+  control.beta = 0.0;
+  expect_error([&] { control.validate(); }, {"control.beta = 0"});
+  SimulationOptions simulation;
+  simulation.atol = 1e7;
+  expect_error([&] { simulation.validate(); }, {"simulation.atol = 1e+07"});
+  FlightOptions flight;
+  flight.rtol = 2.0;  // was any positive number
+  expect_error([&] { flight.validate(); }, {"rtol = 2", "[1e-13, 1]"});
+  flight.rtol = 1e-6;
+  flight.atol = 1e7;
+  expect_error([&] { flight.validate(); }, {"atol = 1e+07"});
+  OdeOptions ode;
+  ode.atol = 1e7;  // was accepted up to 1e15
+  expect_error([&] { ode.validate(); }, {"ode.atol = 1e+07"});
 }
 
 TEST(Limits, OdeTolerancesAreNamed) {

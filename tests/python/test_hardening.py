@@ -311,6 +311,7 @@ def test_cli_usage_errors_exit_2(capsys: pytest.CaptureFixture[str]) -> None:
     one_line_error(["simulate", "--plan", "p.json", "--atol", "1e7"], capsys, 2, "--atol")
     one_line_error(["simulate", "--plan", "p.json", "--k-psi", "0"], capsys, 2, "--k-psi")
     one_line_error(["tune", "--beta", "1e4"], capsys, 2, "--beta")
+    one_line_error(["tune", "--sweep", "0.01,5000"], capsys, 2, "--sweep = '5000'")
 
 
 def test_gain_and_tolerance_ranges_are_the_same_everywhere() -> None:
@@ -319,14 +320,28 @@ def test_gain_and_tolerance_ranges_are_the_same_everywhere() -> None:
     assert (lim.MIN_GAIN, lim.MAX_BETA, lim.MAX_HEADING_GAIN) == (1e-9, 1e3, 1e6)
     assert (lim.MIN_RTOL, lim.MAX_RTOL, lim.MIN_ATOL, lim.MAX_ATOL) == (1e-13, 1.0, 1e-15, 1e6)
     too_big = lim.MAX_ATOL * 10
-    refuses(lambda: vt.SimulationOptions(atol=too_big).validate(), "simulation.atol", "1e+06")
+    refuses(lambda: vt.SimulationOptions(atol=too_big), "simulation.atol", "1e+06")  # the constructor checks
     refuses(lambda: vt.solve_ode(lambda t, y: -y, (0.0, 1.0), np.array([1.0]), atol=too_big), "ode.atol", "1e+06")
-    refuses(lambda: vt.Control(beta=lim.MAX_BETA * 2).validate(), "control.beta", "1000")
-    refuses(lambda: vt.Control(k_psi=0.0).validate(), "control.k_psi", "1e-09")
+    refuses(lambda: vt.Control(beta=lim.MAX_BETA * 2), "control.beta", "1000")
+    refuses(lambda: vt.Control(k_psi=0.0), "control.k_psi", "1e-09")
     refuses(lambda: vt.lemma7_min_gain(20.0, lim.MAX_BETA * 2), "beta", "1000")
     for section, key, value in [("control", "beta", 2e3), ("control", "k_psi", 0.0), ("simulation", "rtol", 1e-14),
                                 ("simulation", "atol", 1e7), ("planning", "rate_margin", 1.0)]:
         refuses(lambda s=section, k=key, v=value: vt.Scenario.from_dict({s: {k: v}}), f"{section}.{key} = {value!r}")
+    # The follow scenario's baseline controller and the beta sweep of `tune` take the same range.
+    import yaml
+
+    from vistrack.follow_scenario import FollowScenario
+    from vistrack.tuning import tune_beta
+
+    follow = yaml.safe_load((EXAMPLES / "follow_straight.yaml").read_text())
+    follow["baseline"] = {"beta": 5000.0}
+    refuses(lambda: FollowScenario.from_mapping(follow, EXAMPLES), "baseline.beta = 5000.0")
+    follow["baseline"] = {"k_psi": 0.0}
+    refuses(lambda: FollowScenario.from_mapping(follow, EXAMPLES), "baseline.k_psi = 0.0")
+    refuses(lambda: tune_beta(85.9, 1.3, 20.0, 5.0, 50.0, 0.025, sweep=[0.01, 5000.0]), "sweep[1] = 5000.0")
+    wide = tune_beta(85.9, 1.3, 20.0, 5.0, 50.0, 500.0, sweep=None, progress=None)
+    assert max(wide.betas) == pytest.approx(lim.MAX_BETA) and min(wide.betas) == pytest.approx(50.0)
     for check, low, high in [(schema.beta, lim.MIN_GAIN, lim.MAX_BETA),
                              (schema.heading_gain, lim.MIN_GAIN, lim.MAX_HEADING_GAIN),
                              (schema.relative_tolerance, lim.MIN_RTOL, lim.MAX_RTOL),

@@ -143,8 +143,8 @@ struct VolumeCost {
   std::size_t rays_traced = 0;   // cell and corner rays handed to Embree
   std::size_t rays_skipped = 0;  // cell and corner rays decided by the bounds alone
   std::size_t refine_rays = 0;   // rays traced while refining
-  // CPU seconds handing rays to Embree (rtcIntersect1M, with packing the 64-ray batches and reading
-  // the hits), summed over threads; part of trace_s and refine_s.
+  // Seconds handing rays to Embree (rtcIntersect1M, with packing the 64-ray batches and reading the
+  // hits): wall time per thread, summed over threads; within trace_s + refine_s when parallel = false.
   double embree_s = 0.0;
 };
 // visibility_volume, filling `cost`; parallel = false computes it on the calling thread only.

@@ -1767,7 +1767,7 @@ def visibility_volume(scene: VisibilityScene, g: typing.Annotated[numpy.typing.A
     """
 def visibility_volume_cost(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, parallel: bool = True) -> tuple[VisibilityVolume, dict]:
     """
-    visibility_volume and where its time and rays went: (vv, {bounds_s, trace_s, refine_s, mesh_s, volume_s (seconds), rays_traced, rays_skipped (cell and corner rays traced / decided by the bounds alone), refine_rays, embree_s (CPU seconds in Embree's rtcIntersect1M calls with their ray packing, part of trace_s and refine_s)}); parallel=False keeps it on the calling thread (as in a batch).
+    visibility_volume and where its time and rays went: (vv, {bounds_s, trace_s, refine_s, mesh_s, volume_s (seconds), rays_traced, rays_skipped (cell and corner rays traced / decided by the bounds alone), refine_rays, embree_s (seconds in Embree's rtcIntersect1M calls with their ray packing, per thread and summed over threads: within trace_s + refine_s when parallel=False)}); parallel=False keeps it on the calling thread (as in a batch).
     """
 def visibility_volumes(scene: VisibilityScene, pois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> list[VisibilityVolume]:
     """

@@ -15,7 +15,15 @@ from .. import schema
 from ..progress import Progress
 from ..report.tune import write_tuning
 from ..tuning import tune_beta
-from . import checked, length, number, output_folder, positive_numbers, speed
+from . import checked, length, number, output_folder, speed
+
+
+def betas(key: str, text: str) -> list[float]:
+    """Comma-separated betas, each within beta's range."""
+    values = [v for v in text.split(",") if v.strip()]
+    if not values:
+        raise schema.fail(key, text, "need betas in 1/m like 0.01,0.025,0.05")
+    return [schema.beta(key, v) for v in values]
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -29,7 +37,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--poi-speed", type=number("--poi-speed", 0.0, 1e4), default=5.0, help="POI speed v_g, m/s")
     p.add_argument("--min-turn-radius", type=length("--min-turn-radius"), default=50.0, help="r_min, m")
     p.add_argument("--beta", type=checked("--beta", schema.beta), default=0.025, help="beta for the map, 1/m")
-    p.add_argument("--sweep", type=positive_numbers("--sweep", "0.01,0.025,0.05"), default=None,
+    p.add_argument("--sweep", type=checked("--sweep", betas, numeric=False), default=None,
                    help="betas for the max-vs-beta curve (default: 30 values, log-spaced around --beta)")
     p.add_argument("--tau", type=number("--tau", 0.0, 1.0, low_open=True), default=1.0,
                    help="search r >= tau R (Remark 6), 0 < tau <= 1")
