@@ -77,7 +77,7 @@ def test_origin_georeferences_the_environment(tmp_path: Path) -> None:
         ("planning: {max_depth: 99}", r"planning.max_depth = 99: must be an integer in \[0, 30\]"),
         ("planning: {resolution_deg: 90}", r"planning.resolution_deg = 90: must be <= 30"),
         ("planning: {rate_margin: 1}", r"planning.rate_margin = 1: must be in \[0, 1\)"),
-        ("planning: {rate_margin: -0.1}", r"planning.rate_margin = -0.1: must be >= 0"),
+        ("planning: {rate_margin: -0.1}", r"planning.rate_margin = -0.1: must be in \[0, 1\)"),
         ("poi: {route: [[0, 0, 1], [5, 5]]}", r"poi.route\[0\] = \[0, 0, 1\]: must be \[x, y\]"),
         ("name: ../../etc", r"name = .*it names the output folder"),
         ("sensor: {altitude_band: [100, 50]}", r"sensor.altitude_band"),
