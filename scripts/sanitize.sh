@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# The GoogleTest suite under AddressSanitizer + UndefinedBehaviorSanitizer (issue 18): a separate
-# build of the C++ library and its tests in build/sanitize (-DVISTRACK_SANITIZE=address,undefined,
-# cmake/VistrackSanitize.cmake), then ctest. Any finding aborts the test that triggers it.
-# VISTRACK_SANITIZE_PYTHON=1 also builds the extension with the sanitizers and runs the pytest
-# files in PYTESTS against it, with ASan's runtime and libstdc++ preloaded into Python (which links
-# neither: without libstdc++ first, ASan cannot intercept C++ throws). CI (.ci/run) runs both.
-#   bash scripts/sanitize.sh                            # build + run the GoogleTests
-#   VISTRACK_SANITIZE_PYTHON=1 bash scripts/sanitize.sh # also the pytest subset (CI)
+# The GoogleTest suite and a pytest subset under AddressSanitizer + UndefinedBehaviorSanitizer
+# (issue 18): a separate build of the C++ library, its tests and the Python extension in
+# build/sanitize (-DVISTRACK_SANITIZE=address,undefined, cmake/VistrackSanitize.cmake), then
+# ctest, then the pytest files in PYTESTS against that extension, with ASan's runtime and
+# libstdc++ preloaded into Python (which links neither: without libstdc++ first, ASan cannot
+# intercept C++ throws). Any finding aborts the test that triggers it.
+#   bash scripts/sanitize.sh                            # build + run both (CI: .ci/run's sanitizer step)
+#   VISTRACK_SANITIZE_PYTHON=0 bash scripts/sanitize.sh # the GoogleTests only, no extension
 #   bash scripts/sanitize.sh -R Dubins                  # extra arguments go to ctest
 # Budget: the tests listed in SLOW below run in the normal ctest only (each is a larger instance
 # of what a faster test covers under the sanitizers), and the random-case tests of limits_test run
@@ -15,7 +15,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${VISTRACK_SANITIZE_BUILD_DIR:-build/sanitize}
 jobs=${VISTRACK_SANITIZE_JOBS:-2}
-with_python=${VISTRACK_SANITIZE_PYTHON:-0}
+with_python=${VISTRACK_SANITIZE_PYTHON:-1}
 python=${VISTRACK_PYTHON:-.venv/bin/python}
 SLOW='^(RadialXor\.EqualsCgalOnTheSameMeshes|VisibilityVolumeData\.|RadialXor\.MeshesOnDifferentVertexRowsAreOverlappedToo|MeshXor\.PerturbationHandlesIdenticalSpheresAndStaysSmall)'
 # The input-facing Python surface: reproducers, degenerate geometry, every fuzz seed and finding,

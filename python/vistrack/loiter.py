@@ -229,7 +229,7 @@ def metrics(plan: Plan, cov: Coverage | None = None, dt: float = 1.0, threshold:
 
 def _threshold(threshold: float) -> float:
     """A coverage threshold: a fraction in (0, 1] (NaN would count nothing as covered, silently)."""
-    if isinstance(threshold, (bool, str)) or not isinstance(threshold, numbers.Real) or not 0.0 < threshold <= 1.0:
+    if isinstance(threshold, bool) or not isinstance(threshold, numbers.Real) or not 0.0 < threshold <= 1.0:
         raise VistrackError(f"threshold = {threshold!r}: must be a fraction in (0, 1]")
     return float(threshold)
 

@@ -6,6 +6,7 @@ VistrackError of the form "key = value: what is allowed", naming the key as the 
 from __future__ import annotations
 
 import math
+import numbers
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping, TypeVar
 
@@ -92,12 +93,10 @@ def rate_margin(key: str, value: Any) -> float:
 
 
 def integer(key: str, value: Any, low: int, high: int) -> int:
-    """An integer (not a bool) within [low, high]."""
-    if isinstance(value, bool) or not isinstance(value, int):
+    """An integer (not a bool; numpy integers too) within [low, high], as an int."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or not low <= int(value) <= high:
         raise fail(key, value, f"must be an integer in [{low}, {high}]")
-    if not low <= value <= high:
-        raise fail(key, value, f"must be an integer in [{low}, {high}]")
-    return value
+    return int(value)
 
 
 def pair(key: str, value: Any, what: str = "[x, y] in metres") -> tuple[float, float]:

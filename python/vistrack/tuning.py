@@ -13,7 +13,7 @@ from . import schema
 from ._core import TuningResult, VistrackError, lemma7_min_gain, tune_turn_rate
 from ._core import limits as _limits
 
-__all__ = ["BetaTuning", "tune_beta"]
+__all__ = ["BetaTuning", "default_sweep", "tune_beta"]
 
 
 @dataclass
@@ -56,6 +56,13 @@ class BetaTuning:
         }
 
 
+def default_sweep(beta: float, count: int = 30) -> np.ndarray:
+    """``count`` betas log-spaced over two decades around ``beta``, clipped to beta's range
+    [1e-9, 1e3] 1/m (tune_beta's sweep when none is given)."""
+    beta = schema.beta("beta", beta)
+    return np.geomspace(max(beta / 10, _limits.MIN_GAIN), min(beta * 10, _limits.MAX_BETA), count)
+
+
 def tune_beta(radius: float, radius_rate: float, speed: float, poi_speed: float, min_turn_radius: float,
               beta: float, sweep: Optional[Sequence[float]] = None, *, tau: float = 1.0,
               r_max_factor: float = 4.0, direction: str = "ccw",
@@ -67,7 +74,7 @@ def tune_beta(radius: float, radius_rate: float, speed: float, poi_speed: float,
         raise VistrackError(f"min_turn_radius = {min_turn_radius}: must be a finite number > 0")
     beta = schema.beta("beta", beta)
     if sweep is None:
-        betas = np.geomspace(max(beta / 10, _limits.MIN_GAIN), min(beta * 10, _limits.MAX_BETA), 30)
+        betas = default_sweep(beta)
     else:
         betas = np.asarray([schema.beta(f"sweep[{k}]", b) for k, b in enumerate(sweep)], dtype=float)
 

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import ctypes
 import math
-import numbers
 import sys
 from typing import Optional, Sequence, Tuple, Union
 
@@ -33,8 +32,6 @@ def keep_freed_memory(max_bytes: int = 1 << 30) -> bool:
     True when glibc took both settings; False off Linux, where the C library has no mallopt, or
     where it refused a setting (an allocator that ignores mallopt, such as AddressSanitizer's,
     returns 0)."""
-    if isinstance(max_bytes, numbers.Integral) and not isinstance(max_bytes, bool):
-        max_bytes = int(max_bytes)  # numpy integers too
     max_bytes = schema.integer("max_bytes", max_bytes, 0, 2**31 - 1)  # mallopt takes a C int
     if not sys.platform.startswith("linux"):
         return False

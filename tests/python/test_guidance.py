@@ -78,6 +78,16 @@ def test_tuning_matches_figure_9():
         vt.tune_turn_rate(85.9, 1.0, 20.0, 5.0, 0.025, direction="up")
 
 
+def test_tune_beta_sweeps_around_beta_within_its_range():
+    """Without a sweep, tune_beta searches 30 betas over two decades around beta, clipped to beta's
+    range (limits.hpp): around 500 /m the sweep ends at 1000, not 5000."""
+    from vistrack.tuning import default_sweep, tune_beta
+
+    wide = tune_beta(85.9, 1.3, 20.0, 5.0, 50.0, 500.0)
+    assert max(wide.betas) == pytest.approx(vt._core.limits.MAX_BETA) and min(wide.betas) == pytest.approx(50.0)
+    assert np.array_equal(wide.betas, default_sweep(500.0)) and len(wide.sweep_max_turn_rate) == 30
+
+
 def test_lemma_constants():
     x = np.linspace(0, 20, 2_000_001)
     assert vt.epsilon_max() == pytest.approx(np.max(np.arctan(x) ** 2 / (1 + x * x)), abs=1e-12)

@@ -332,7 +332,7 @@ def test_gain_and_tolerance_ranges_are_the_same_everywhere() -> None:
     import yaml
 
     from vistrack.follow_scenario import FollowScenario
-    from vistrack.tuning import tune_beta
+    from vistrack.tuning import default_sweep, tune_beta
 
     follow = yaml.safe_load((EXAMPLES / "follow_straight.yaml").read_text())
     follow["baseline"] = {"beta": 5000.0}
@@ -340,8 +340,9 @@ def test_gain_and_tolerance_ranges_are_the_same_everywhere() -> None:
     follow["baseline"] = {"k_psi": 0.0}
     refuses(lambda: FollowScenario.from_mapping(follow, EXAMPLES), "baseline.k_psi = 0.0")
     refuses(lambda: tune_beta(85.9, 1.3, 20.0, 5.0, 50.0, 0.025, sweep=[0.01, 5000.0]), "sweep[1] = 5000.0")
-    wide = tune_beta(85.9, 1.3, 20.0, 5.0, 50.0, 500.0, sweep=None, progress=None)
-    assert max(wide.betas) == pytest.approx(lim.MAX_BETA) and min(wide.betas) == pytest.approx(50.0)
+    wide = default_sweep(500.0)  # tune_beta's sweep when none is given
+    assert max(wide) == pytest.approx(lim.MAX_BETA) and min(wide) == pytest.approx(50.0)
+    assert len(default_sweep(0.025)) == 30 and default_sweep(0.025)[0] == pytest.approx(0.0025)
     for check, low, high in [(schema.beta, lim.MIN_GAIN, lim.MAX_BETA),
                              (schema.heading_gain, lim.MIN_GAIN, lim.MAX_HEADING_GAIN),
                              (schema.relative_tolerance, lim.MIN_RTOL, lim.MAX_RTOL),

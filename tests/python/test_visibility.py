@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import vistrack as vt
+from vistrack import cli
 from vistrack.visibility import polygon_agreement
 
 
@@ -348,16 +352,12 @@ print(alive - rss())  # what freeing them handed back to the kernel
 def test_keep_freed_memory_keeps_what_a_batch_frees(tmp_path: Path):
     """After keep_freed_memory() the pages of freed VV-sized arrays stay in the process (the next
     batch reuses them without page faults); without it glibc returns them to the kernel."""
-    import subprocess
-    import sys
-
-    import os
-
     script = tmp_path / "retained.py"
     script.write_text(_RETAINED)
     here = str(Path(__file__).parent)
     # glibc's defaults in the child, whatever this process was started with.
-    env = {k: v for k, v in os.environ.items() if k not in ("GLIBC_TUNABLES", "LD_PRELOAD") and not k.startswith("MALLOC_")}
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("GLIBC_TUNABLES", "LD_PRELOAD") and not k.startswith("MALLOC_")}
     out = {mode: subprocess.run([sys.executable, str(script), mode, here], check=True, capture_output=True, text=True,
                                 env=env).stdout.split()[-1] for mode in ("plain", "keep")}
     if out["keep"] == "unsupported":
@@ -375,10 +375,9 @@ def test_keep_freed_memory_checks_its_argument_and_the_cli_calls_it(monkeypatch,
     with pytest.raises(vt.VistrackError, match="max_bytes"):
         vt.keep_freed_memory("1")  # type: ignore[arg-type]
     assert vt.keep_freed_memory(np.int64(1 << 30)) == vt.keep_freed_memory(1 << 30)  # numpy integers too
-    import vistrack.cli
 
     calls = []
-    monkeypatch.setattr(vistrack.cli, "keep_freed_memory", lambda: calls.append(1) or True)
-    assert vistrack.cli.main(["volumes", "--map", str(tmp_path / "none.geojson"), "--points", "0,0",
+    monkeypatch.setattr(cli, "keep_freed_memory", lambda: calls.append(1) or True)
+    assert cli.main(["volumes", "--map", str(tmp_path / "none.geojson"), "--points", "0,0",
                               "--out", str(tmp_path / "out")]) == 1
     assert calls == [1]

@@ -288,8 +288,8 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   // the bracket with the larger gap (a jump keeps its gap, a smooth but steep r(w) loses half of it
   // per round). A bracket whose gap falls to the confirmation level is smooth: it leaves the
   // rounds early, and so does a settled one (little volume at stake). Both ends on one plane is no
-  // jump: the ground seen at grazing angles changes fast but stays flat. With allow_split, an edge whose middle ray differs from both ends is
-  // split there instead.
+  // jump: the ground seen at grazing angles changes fast but stays flat. With allow_split, an edge
+  // whose middle ray differs from both ends is split there instead.
   auto open = [&](const Jump& jump) {
     return jump.split < 0 && jump.lo_far > alive_gap && jump.hi_far > alive_gap &&
            jump.gap() > kJumpConfirmed * std::max(jump.lo_far, jump.hi_far) &&
