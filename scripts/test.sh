@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Quick start, second command: install what is needed, then run every test (GoogleTest through
-# ctest, ruff and mypy on the package, then pytest). Exits non-zero when any check fails.
+# ctest, ruff and mypy on the package, the docs site, then pytest). Exits non-zero when any check fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=build/test
@@ -10,4 +10,5 @@ ctest_bin=$(command -v ctest || echo .venv/bin/ctest)
 "$ctest_bin" --test-dir "$build_dir" --output-on-failure -j2
 .venv/bin/ruff check python
 .venv/bin/mypy python/vistrack
+NO_MKDOCS_2_WARNING=1 .venv/bin/mkdocs build --strict --quiet --site-dir build/site
 .venv/bin/python -m pytest tests/python "$@"
