@@ -18,7 +18,7 @@ class AssignedReexports(griffe.Extension):
         for name, member in list(mod.members.items()):
             if member.is_alias or not member.is_attribute:
                 continue
-            parts = str(member.value).split(".")  # type: ignore[union-attr]
+            parts = str(getattr(member, "value", "")).split(".")
             if len(parts) != 2 or parts[0] not in mod.imports:
                 continue
             target = f"{mod.imports[parts[0]]}.{parts[1]}"
