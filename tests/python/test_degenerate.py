@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
-from refusal import refuses
+from support.refusal import refuses
 
 D_MAX = 100.0
 SPHERE = 4.0 / 3.0 * math.pi * D_MAX**3

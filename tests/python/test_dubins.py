@@ -9,7 +9,8 @@ import numpy as np
 import pytest
 
 import vistrack as vt
-from conftest import standalone_executable, ticks_during
+from support.build_tree import standalone_executable
+from support.threads import ticks_during
 from vistrack import VistrackError, dubins
 
 

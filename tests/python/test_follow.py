@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
-from conftest import ticks_during
+from support.threads import ticks_during
 from vistrack import follow
 from vistrack.follow_scenario import FollowScenario
 

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
-from refusal import refuses
+from support.refusal import refuses
 from vistrack import VistrackError, schema
 from vistrack.cli import main as cli_main
 
@@ -59,7 +59,7 @@ def test_huge_thread_count_in_a_fresh_interpreter() -> None:
             "try:\n vt.dubins.shortest_lengths(np.zeros((4,3)), np.ones((4,3)), 2.0, threads=100000)\n"
             "except vt.VistrackError as e:\n print(e)\n")
     sys.path.insert(0, str(Path(__file__).resolve().parent))
-    preload = "import sys; sys.path.insert(0, %r); import build_tree\n" % str(Path(__file__).resolve().parent)
+    preload = "import sys; sys.path.insert(0, %r); import support.build_tree\n" % str(Path(__file__).resolve().parent)
     done = subprocess.run([sys.executable, "-c", preload + code], capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert "threads = 100000" in done.stdout

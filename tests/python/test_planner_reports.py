@@ -16,7 +16,7 @@ import pytest
 from shapely.geometry import Point, Polygon
 
 import vistrack as vt
-from report_checks import check_gif, check_page
+from support.report_checks import check_gif, check_page
 from vistrack.cli import main
 from vistrack.io import load_environment
 from vistrack.plotting.interactive import DEFAULT_TIME_STEPS, decode_array

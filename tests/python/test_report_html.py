@@ -14,8 +14,8 @@ import pytest
 from PIL import Image
 
 import vistrack as vt
-from headless_browser import find_chromium, load
-from report_checks import check_gif, check_page, plotly_figure
+from support.headless_browser import find_chromium, load
+from support.report_checks import check_gif, check_page, plotly_figure
 from vistrack.cli import main
 from vistrack.plotting.animation import write_gif
 from vistrack.plotting.interactive import DEFAULT_TIME_STEPS, decode_array

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
-from conftest import standalone_executable
+from support.build_tree import standalone_executable
 from vistrack.cli import main
 
 REPO = Path(__file__).resolve().parents[2]

@@ -18,7 +18,7 @@ import pytest
 import yaml
 
 import vistrack as vt
-from build_tree import dask_preload_arguments
+from support.build_tree import dask_preload_arguments
 from vistrack.cli import main
 from vistrack.io import read_results_table, read_roads, read_route, write_results_table
 from vistrack.sweep import SERIAL, SweepSpec

@@ -158,7 +158,7 @@ def test_save_round_trip(open_field, tmp_path: Path):
 
 
 def test_long_calls_release_the_gil(open_field):
-    from conftest import ticks_during
+    from support.threads import ticks_during
 
     scene = vt.visibility_scene(open_field)
     pois = np.zeros((24, 3))
@@ -215,7 +215,7 @@ def test_standalone_vistrack_vv_matches_python(charlotte, tmp_path):
     import json
     import subprocess
 
-    from conftest import standalone_executable
+    from support.build_tree import standalone_executable
 
     exe = standalone_executable("vistrack_vv")
     if exe is None:
