@@ -24,6 +24,11 @@ use_build_tree()
 preload_in_dask_workers()
 
 
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line("markers", "sanitize: in the pytest subset scripts/sanitize.sh runs under ASan + UBSan "
+                                       "(the input-facing surface: bad input, degenerate geometry, fuzz findings)")
+
+
 @pytest.fixture(scope="session")
 def shared_data() -> Path:
     """The real data folder; the test is skipped with a clear message when it is absent."""

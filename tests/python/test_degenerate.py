@@ -20,6 +20,8 @@ from support.refusal import refuses
 D_MAX = 100.0
 SPHERE = 4.0 / 3.0 * math.pi * D_MAX**3
 
+pytestmark = pytest.mark.sanitize  # the input-facing surface (scripts/sanitize.sh)
+
 
 def boxes_obj(path: Path, boxes: list[tuple[tuple[float, ...], tuple[float, ...]]],
               hollow: tuple[tuple[float, ...], tuple[float, ...]] | None = None) -> Path:

@@ -3,15 +3,21 @@
 from __future__ import annotations
 
 import math
+import subprocess
+import sys
 import threading
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import vistrack as vt
 from support.build_tree import standalone_executable
+from support.refusal import refuses
 from support.threads import ticks_during
 from vistrack import VistrackError, dubins
+
+pytestmark = pytest.mark.sanitize  # the input-facing surface (scripts/sanitize.sh)
 
 
 def test_both_import_styles() -> None:
@@ -251,3 +257,39 @@ def test_vistrack_dubins_csv(tmp_path) -> None:
     assert bad.read_text() == "0,0,0,1,1,0\n0,0,nan,1,1,0\n"
     done = subprocess.run([exe, "--rho", "-1", str(source)], capture_output=True, text=True)
     assert done.returncode == 2 and "--rho = -1" in done.stderr
+
+
+def test_huge_thread_counts_are_refused_not_a_segfault() -> None:
+    """shortest_lengths(..., threads=100000) killed the interpreter with SIGSEGV."""
+    q0, q1 = np.zeros((4, 3)), np.ones((4, 3))
+    for threads in (100000, 2**31 - 1, -1):
+        refuses(lambda t=threads: vt.dubins.shortest_lengths(q0, q1, 2.0, threads=t), f"threads = {threads}")
+    lengths, _ = vt.dubins.shortest_lengths(q0, q1, 2.0, threads=1024)
+    assert np.all(np.isfinite(lengths))
+
+
+def test_huge_thread_count_in_a_fresh_interpreter() -> None:
+    """The same call in its own process: it exits normally (a SIGSEGV would be returncode -11)."""
+    code = ("import numpy as np, vistrack as vt\n"
+            "try:\n vt.dubins.shortest_lengths(np.zeros((4,3)), np.ones((4,3)), 2.0, threads=100000)\n"
+            "except vt.VistrackError as e:\n print(e)\n")
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    preload = "import sys; sys.path.insert(0, %r); import support.build_tree\n" % str(Path(__file__).resolve().parent)
+    done = subprocess.run([sys.executable, "-c", preload + code], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert "threads = 100000" in done.stdout
+
+
+@pytest.mark.parametrize("rho", [5e-324, 1e-300, 1e308, math.inf, math.nan, 0.0, -1.0])
+def test_dubins_turn_radius_out_of_range(rho: float) -> None:
+    """shortest_path((0,0,0),(10,5,1.0),5e-324).length was NaN; 1e-300 or 1e308 gave inf."""
+    refuses(lambda: vt.dubins.shortest_path((0, 0, 0), (10, 5, 1.0), rho), "rho = ", "[1e-06, 1e+07] m")
+
+
+def test_dubins_far_coordinates_and_huge_circles() -> None:
+    """Coordinates 1e300 and path_to_circle(..., radius=1e300) gave inf."""
+    refuses(lambda: vt.dubins.shortest_path((0, 0, 0), (1e300, 5, 1.0), 1.0), "q1.x = 1e+300")
+    refuses(lambda: vt.dubins.path_to_circle((0, 0, 0), 1.0, (10, 0), 1e300, 0.5, "cw"), "radius = 1e+300")
+    # Far from the origin on the scale of rho: refused naming rho and how far it may be.
+    refuses(lambda: vt.dubins.shortest_path((2.6e6, 0, 0), (2.6e6 + 1, 0, 1.0), 1e-5), "rho = 1e-05",
+            "translate the problem nearer the origin")

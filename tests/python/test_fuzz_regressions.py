@@ -14,6 +14,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "fuzz"))
 import seeds
 import targets
 
+pytestmark = pytest.mark.sanitize  # the input-facing surface (scripts/sanitize.sh)
+
 
 @pytest.mark.parametrize("name", sorted(targets.TARGETS))
 def test_seeds_and_findings_pass_the_fuzz_check(name: str) -> None:

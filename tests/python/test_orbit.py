@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.refusal import refuses
 
 
 def test_circular_orbits_matches_the_lower_envelope_closed_form():
@@ -178,3 +179,29 @@ def test_cli_orbits_writes_plan_and_figures(charlotte, tmp_path):
     assert main(["orbits", "--out", str(again_dir)]) == 2  # neither map and path nor a plan
     assert main(["orbits", "--map", str(tmp_path / "missing.obj"), "--path",
                  str(charlotte / "paths" / "paper_small.csv"), "--out", str(out)]) == 1  # a failure, not usage
+
+
+def _paper_slow() -> vt.PoiPath:
+    return vt.PoiPath(np.array([[0.0, 0.0], [1500.0, 0.0], [1500.0, 900.0]]), 5.0)
+
+
+@pytest.mark.sanitize
+def test_work_estimate_refuses_tiny_spacing_before_any_volume() -> None:
+    """Planning(spacing=0.01) grew until std::bad_alloc (tens of GB)."""
+    poi = _paper_slow()
+    planning = vt.Planning(spacing=0.01)
+    work = vt.estimate_work(poi, planning)
+    assert work.volumes > planning.max_volumes and work.bytes > 1e10
+    env = vt.Environment.demo()
+    message = refuses(lambda: vt.plan_orbits(env, poi, vt.Uav(), vt.Sensor(d_max=300.0), planning),
+                      "planning.max_volumes = 20000", "GB", "raise planning.max_volumes")
+    assert "\n" not in message
+
+
+@pytest.mark.sanitize
+def test_work_estimate_refuses_a_10000_km_path() -> None:
+    """A 10,000 km POI path grew until std::bad_alloc."""
+    poi = vt.PoiPath(np.array([[0.0, 0.0], [1e7, 0.0]]), 5.0)
+    refuses(lambda: vt.check_work(poi, vt.Planning()), "planning.max_volumes")
+    raised = vt.Planning(max_volumes=10**12)
+    vt.check_work(poi, raised)  # raising the limit explicitly allows it (nothing computed here)

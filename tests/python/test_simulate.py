@@ -15,6 +15,7 @@ import pytest
 
 import vistrack as vt
 from support.build_tree import standalone_executable
+from support.refusal import refuses
 from vistrack.cli import main
 
 REPO = Path(__file__).resolve().parents[2]
@@ -189,3 +190,27 @@ def test_campus_flight_test_visibility_matches_the_paper(campus):
     # interpolated orbit can leave the VPs (the paper's stated assumption).
     assert visibility(plan) >= 0.95
     assert visibility(plan) > visibility(vt.constant_radius_plan(poi, 23.4, uav))
+
+
+@pytest.mark.sanitize
+def test_line_of_sight_callable_returning_nan() -> None:
+    """A line-of-sight callable returning NaN counted as visible (visibility_fraction 1.0)."""
+    poi = vt.PoiPath(np.array([[-290.0, -210.0], [-100.0, -210.0]]), 5.0)
+    uav = vt.Uav(altitude=200.0)
+    plan = vt.constant_radius_plan(poi, 120.0, uav)
+
+    def nan_sight(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        return np.full(len(a), np.nan)
+
+    refuses(lambda: vt.simulate(plan, uav, (-170.0, -210.0, 1.57), vt.Control(), line_of_sight=nan_sight),
+            "line_of_sight")
+
+
+@pytest.mark.sanitize
+def test_simulate_refuses_a_uav_under_the_ground() -> None:
+    """simulate accepted a UAV below the ground (fraction 0.0) that plan_orbits rejects."""
+    env = vt.Environment.demo()
+    poi = vt.PoiPath(np.array([[-290.0, -210.0], [-100.0, -210.0]]), 5.0)
+    plan = vt.constant_radius_plan(poi, 120.0, vt.Uav())
+    refuses(lambda: vt.simulate(plan, vt.Uav(altitude=-5.0), (-170.0, -210.0, 1.57), vt.Control(), env),
+            "uav.altitude = -5", "above the ground")

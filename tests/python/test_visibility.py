@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import os
 import subprocess
 import sys
@@ -11,6 +12,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.refusal import refuses
 from vistrack import cli
 from vistrack.visibility import polygon_agreement
 
@@ -381,3 +383,21 @@ def test_keep_freed_memory_checks_its_argument_and_the_cli_calls_it(monkeypatch,
     assert cli.main(["volumes", "--map", str(tmp_path / "none.geojson"), "--points", "0,0",
                               "--out", str(tmp_path / "out")]) == 1
     assert calls == [1]
+
+
+@pytest.mark.sanitize
+def test_visibility_volume_with_a_huge_range() -> None:
+    """visibility_volume(env, (-150,-45,.5), 1e300).volume was NaN; an XOR against it returned the other's volume."""
+    env = vt.Environment.demo()
+    refuses(lambda: vt.visibility_volume(env, (-150.0, -45.0, 0.5), 1e300), "d_max = 1e+300", "[1e-06, 1e+07] m")
+    refuses(lambda: vt.visibility_volume(env, (math.nan, -45.0, 0.5), 100.0), "nan")
+
+
+@pytest.mark.sanitize
+def test_direction_grid_refuses_indices_out_of_range() -> None:
+    """DirectionGrid.elevation(10**9) answered instead of refusing the index."""
+    grid = vt.DirectionGrid.from_resolution(10.0)
+    refuses(lambda: grid.elevation(10**9), "1000000000")
+    refuses(lambda: grid.elevation(-1), "-1")
+    refuses(lambda: grid.azimuth(10**9), "1000000000")
+    assert math.isfinite(grid.elevation(0))

@@ -3,10 +3,13 @@ Charlotte VVs."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
 import vistrack as vt
+from support.refusal import refuses
 
 
 def box(lo, hi):
@@ -163,3 +166,13 @@ def test_radial_path_on_uneven_terrain_equals_cgal(campus):
     radial = vt.xor_volume(a, b)
     assert radial == vt.radial_xor_volume(a, b)
     assert radial == pytest.approx(vt.xor_volume(a, b, method="mesh", time_limit=300.0), rel=2e-4)
+
+
+@pytest.mark.sanitize
+def test_mesh_xor_with_a_huge_perturbation() -> None:
+    """xor_volume(..., method="mesh", perturbation=1e300) returned a wrong volume."""
+    env = vt.Environment.demo()
+    a = vt.visibility_volume(env, (-290.0, -210.0, 0.5), 200.0, resolution_deg=30.0)
+    b = vt.visibility_volume(env, (-280.0, -210.0, 0.5), 200.0, resolution_deg=30.0)
+    refuses(lambda: vt.xor_volume(a, b, method="mesh", perturbation=1e300), "perturbation = 1e+300")
+    refuses(lambda: vt.xor_volume(a, b, method="mesh", perturbation=math.nan), "perturbation = nan")
