@@ -13,12 +13,11 @@ from pathlib import Path
 
 import pytest
 
-REPO = Path(__file__).resolve().parents[2]
-SHARED_DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
-
-
 sys.path.insert(0, str(Path(__file__).resolve().parent))  # the support package
-from support.build_tree import preload_in_dask_workers, use_build_tree  # noqa: E402
+from support.build_tree import preload_in_dask_workers, use_build_tree
+from support.paths import REPO
+
+SHARED_DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
 
 use_build_tree()
 preload_in_dask_workers()

@@ -13,17 +13,16 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.cli import NO_MEDIA
+from support.paths import EXAMPLES
 from support.refusal import refuses
 from support.threads import ticks_during
 from support.vehicles import east_truck
 from vistrack import follow
 from vistrack.follow_scenario import FollowScenario
 
-REPO = Path(__file__).resolve().parents[2]
-EXAMPLES = REPO / "examples"
 NORTH, EAST, SOUTH, WEST = math.pi / 2, 0.0, -math.pi / 2, math.pi
 UAV = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
-NO_MEDIA = ["--no-animation", "--no-html"]  # the report media are tested in test_planner_reports.py
 
 pytestmark = pytest.mark.sanitize  # the input-facing surface (scripts/sanitize.sh)
 

@@ -4,18 +4,15 @@ against scipy (same algorithm: identical step counts) and the paper's theory."""
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
 import vistrack as vt
+from support.paths import EXAMPLES
 from support.refusal import refuses
 from vistrack import schema
-
-REPO = Path(__file__).resolve().parents[2]
-EXAMPLES = REPO / "examples"
 
 
 def test_vector_field_has_constant_speed_and_turns_the_right_way():

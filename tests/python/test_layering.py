@@ -9,7 +9,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[2]
+from support.paths import REPO
 
 # Bottom to top. error/limits (the input ranges)/geometry/parameters are the base every area may
 # use; planners are peers of one another and may not include each other.

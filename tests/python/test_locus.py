@@ -12,10 +12,8 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.paths import REPO
 from vistrack.scenario import Scenario
-
-REPO = Path(__file__).resolve().parents[2]
-
 
 # ---------------------------------------------------------------------------------------------
 # The smooth R(t) under a ceiling: our barrier method against HiGHS on the same linear program.

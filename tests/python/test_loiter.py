@@ -14,13 +14,13 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.cli import NO_MEDIA
+from support.paths import REPO
 from support.refusal import refuses
 from vistrack import VistrackError, loiter
 
-REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((REPO / "examples").glob("loiter_*aoi.yaml"))
 SQUARE = [(200.0, 200.0), (600.0, 200.0), (600.0, 600.0), (200.0, 600.0)]
-NO_MEDIA = ["--no-animation", "--no-html"]  # the report media are tested in test_planner_reports.py
 
 pytestmark = pytest.mark.sanitize  # the input-facing surface (scripts/sanitize.sh)
 

@@ -13,11 +13,11 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.paths import REPO
 from vistrack import mission as vm
 from vistrack.cli import main
 from vistrack.mission import Command, Frame, Georeference
 
-REPO = Path(__file__).resolve().parents[2]
 CHARLOTTE = Georeference(35.2249, -80.8403, 230.0)
 CM = 0.01
 

@@ -13,10 +13,10 @@ import yaml
 
 import vistrack as vt
 from support.cli import one_line_error
+from support.paths import DEMO_SCENARIO, REPO
 from vistrack.cli import main
 from vistrack.scenario import Scenario
 
-REPO = Path(__file__).resolve().parents[2]
 REPORT_FILES = ["report.md", "metrics.json", "plan.json", "trajectory.csv", "city.png", "metric.png",
                 "orbits.png", "radius.png", "trajectory.png", "errors.png", "volume3d.png"]
 
@@ -164,6 +164,6 @@ def test_cli_out_pointing_at_a_file_fails_before_the_run(tmp_path: Path, capsys:
     """`run --out` pointing at an existing file failed only after the whole run."""
     existing = tmp_path / "file.txt"
     existing.write_text("keep me\n")
-    one_line_error(["run", str(REPO / "python" / "vistrack" / "scenarios" / "demo.yaml"), "--out", str(existing),
+    one_line_error(["run", str(DEMO_SCENARIO), "--out", str(existing),
                     "--quiet"], capsys, 1, "--out", "is a file, not a folder")
     assert existing.read_text() == "keep me\n"

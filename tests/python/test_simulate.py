@@ -15,12 +15,12 @@ import pytest
 
 import vistrack as vt
 from support.build_tree import standalone_executable
+from support.paths import REPO
 from support.refusal import refuses
 from vistrack.cli import main
 
-REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "bench"))
-from closed_loop_reference import simulate_reference  # noqa: E402
+from closed_loop_reference import simulate_reference
 
 WAYPOINTS = np.array([[-150.0, -45.0], [-50.0, 45.0], [20.0, -35.0]])  # paper_slow.csv
 

@@ -12,13 +12,13 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.paths import REPO
 from support.refusal import refuses
 from vistrack import VistrackError
 from vistrack import waypoint_nav as wn
 from vistrack.cli import main
 from vistrack.io import read_route
 
-REPO = Path(__file__).resolve().parents[2]
 ROUTE = REPO / "examples" / "waypoints_paper.csv"
 R = wn.DEFAULTS["turn_radius"]
 

@@ -9,15 +9,8 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.meshes import box
 from support.refusal import refuses
-
-
-def box(lo, hi):
-    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
-    v = np.array([[hi[0] if i & 1 else lo[0], hi[1] if i & 2 else lo[1], hi[2] if i & 4 else lo[2]] for i in range(8)])
-    f = np.array([[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
-                  [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]], dtype=np.int32)
-    return v, f
 
 
 def test_mesh_xor_of_boxes_is_analytic():

@@ -23,3 +23,6 @@ def one_line_error(args: list[str], capsys: pytest.CaptureFixture[str], status: 
     for fragment in fragments:
         assert fragment in err, f"{fragment!r} not in {err!r}"
     return err
+
+
+NO_MEDIA = ["--no-animation", "--no-html"]  # the report media are tested in test_planner_reports.py
