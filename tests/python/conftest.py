@@ -7,7 +7,6 @@ imported from python/ with that extension.
 
 from __future__ import annotations
 
-import os
 import sys
 from pathlib import Path
 
@@ -15,9 +14,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))  # the support package
 from support.build_tree import preload_in_dask_workers, use_build_tree
-from support.paths import REPO
-
-SHARED_DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
+from support.paths import SHARED_DATA
 
 use_build_tree()
 preload_in_dask_workers()

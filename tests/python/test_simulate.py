@@ -5,17 +5,15 @@ from __future__ import annotations
 
 import json
 import math
-import os
 import subprocess
 import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import vistrack as vt
 from support.build_tree import standalone_executable
-from support.paths import REPO
+from support.paths import REPO, SHARED_DATA
 from support.refusal import refuses
 from vistrack.cli import main
 
@@ -134,7 +132,7 @@ def test_standalone_executable_matches_python(tmp_path):
     assert csv.read_text() == direct.to_csv()
     bad = subprocess.run([str(exe), "--plan", str(plan_path), "--beta", "abc"], capture_output=True, text=True)
     assert bad.returncode == 2 and "--beta" in bad.stderr
-    city = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data")) / "charlotte" / "buildings.geojson"
+    city = SHARED_DATA / "charlotte" / "buildings.geojson"
     if city.exists():
         seen = subprocess.run([str(exe), "--plan", str(plan_path), "--out", str(csv), "--map", str(city),
                                "--min-turn-radius", "5", "--altitude", "50", "--beta", "0.5", "--k-psi", "40",

@@ -19,7 +19,7 @@ import yaml
 
 import vistrack as vt
 from support.build_tree import dask_preload_arguments
-from support.paths import REPO
+from support.paths import REPO, SHARED_DATA
 from support.sweeps import without_run_columns
 from vistrack.cli import main
 from vistrack.io import read_results_table, read_roads, read_route, write_results_table
@@ -136,7 +136,7 @@ def test_examples_are_valid_sweep_files() -> None:
     examples = sorted((REPO / "examples").glob("sweep_*.yaml"))
     assert (REPO / "examples" / "sweep_small.yaml") in examples
     for path in examples:
-        if "charlotte" in path.name and not (REPO.parent / "shared" / "data").is_dir():
+        if "charlotte" in path.name and not SHARED_DATA.is_dir():
             continue
         spec = SweepSpec.load(path)
         assert spec.case_count >= 1 and spec.name == yaml.safe_load(path.read_text()).get("name", path.stem)
