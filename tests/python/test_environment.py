@@ -71,7 +71,8 @@ def test_from_buildings_extrudes_closed_outward_meshes() -> None:
     assert _signed_volume(env) == pytest.approx((1600 - 400) * 20 + 100 * 35)
     # Normalised: outer counter-clockwise, hole clockwise (shoelace sign).
     outer, hole = env.footprints[0].outer, env.footprints[0].holes[0]
-    shoelace = lambda r: 0.5 * np.sum(r[:, 0] * np.roll(r[:, 1], -1) - np.roll(r[:, 0], -1) * r[:, 1])
+    def shoelace(r):
+        return 0.5 * np.sum(r[:, 0] * np.roll(r[:, 1], -1) - np.roll(r[:, 0], -1) * r[:, 1])
     assert shoelace(outer) > 0 > shoelace(hole)
     assert env.footprints[0].area == pytest.approx(1200.0)
 
@@ -147,7 +148,7 @@ SQUARE = [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]
         ([_feature([[[0, 0], [1, 1], [0, 0]]], {"height": 4})], r"coordinates\[0\].*at least 3"),
         ([_feature([[[0, 0], [10, 10], [10, 0], [0, 10]]], {"height": 4})], r"coordinates\[0\].*self-intersecting"),
         ([_feature([[[0, 0], [5, 0], [10, 0]]], {"height": 4})], r"coordinates\[0\].*degenerate"),
-        ([_feature(SQUARE + [[[20, 20], [25, 20], [25, 25]]], {"height": 4})], r"coordinates\[1\].*inside the outer"),
+        ([_feature([*SQUARE, [[20, 20], [25, 20], [25, 25]]], {"height": 4})], r"coordinates\[1\].*inside the outer"),
         ([_feature(SQUARE, {"height": 4}), _feature([[[5, 5], [15, 5], [15, 15], [5, 15]]], {"height": 4})],
          r"features\[0\] \(id 0\) and features\[1\] \(id 1\) overlap: shared area = 25"),
         ([], r"features = \[\]"),
@@ -267,7 +268,8 @@ def test_poi_paths_from_csv(charlotte, campus) -> None:
     poi = vt.PoiPath.from_csv(charlotte / "paths" / "paper_slow.csv", speed=5.0)
     assert poi.waypoints.shape == (3, 3)
     assert poi.length == pytest.approx(np.hypot(100, 90) + np.hypot(70, 80))
-    for path in [*sorted((charlotte / "paths").glob("*.csv")), campus / "poi_path.csv", campus / "flight_test_path.csv"]:
+    paths = [*sorted((charlotte / "paths").glob("*.csv")), campus / "poi_path.csv", campus / "flight_test_path.csv"]
+    for path in paths:
         assert vt.PoiPath.from_csv(str(path), 1.0).length > 0
 
 

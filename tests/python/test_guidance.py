@@ -105,14 +105,15 @@ def test_safe_functions():
 
 
 def test_bad_gains_name_the_field():
-    with pytest.raises(vt.VistrackError, match="gains.beta"):
+    with pytest.raises(vt.VistrackError, match=r"gains\.beta"):
         vt.GuidanceGains(beta=0.0)
     with pytest.raises(vt.VistrackError, match="direction = 'sideways'"):
         vt.GuidanceGains(direction="sideways")
     with pytest.raises(TypeError, match="direction: str"):  # the one spelling is the string
         vt.GuidanceGains(direction=2)
-    with pytest.raises(vt.VistrackError, match="orbit.radius_rate"):
-        vt.orbit_signed_curvature(0.0, vt.OrbitState(center_velocity=np.array([5.0, 0.0]), radius=10.0, radius_rate=16.0), 20.0)
+    with pytest.raises(vt.VistrackError, match=r"orbit\.radius_rate"):
+        orbit = vt.OrbitState(center_velocity=np.array([5.0, 0.0]), radius=10.0, radius_rate=16.0)
+        vt.orbit_signed_curvature(0.0, orbit, 20.0)
 
 
 # --- the integrator against scipy's RK45 (the same method): same steps, same values ---------

@@ -104,10 +104,10 @@ def test_save_binary_load_round_trip(city, tmp_path: Path) -> None:
     assert back.volume == vv.volume and back.d_max == vv.d_max and back.altitude_band is None
     assert np.array_equal(back.poi, vv.poi) and np.array_equal(back.near, vv.near) and np.array_equal(back.far, vv.far)
     assert np.array_equal(back.vertices, vv.vertices) and np.array_equal(back.faces, vv.faces)
-    with pytest.raises(vt.VistrackError, match="missing.bin.*does not exist"):
+    with pytest.raises(vt.VistrackError, match=r"missing\.bin.*does not exist"):
         vt.VisibilityVolume.load(tmp_path / "missing.bin")
     (tmp_path / "bad.bin").write_bytes((tmp_path / "a.bin").read_bytes()[:-9] + b"x" * 9)
-    with pytest.raises(vt.VistrackError, match="bad.bin"):
+    with pytest.raises(vt.VistrackError, match=r"bad\.bin"):
         vt.VisibilityVolume.load(str(tmp_path / "bad.bin"))
     with pytest.raises(vt.VistrackError, match="no-such-folder"):
         vv.save_binary(tmp_path / "no-such-folder" / "a.bin")

@@ -25,7 +25,7 @@ WAYPOINTS = np.array([[-150.0, -45.0], [-50.0, 45.0], [20.0, -35.0]])  # paper_s
 
 def _morphing_plan(uav: vt.Uav) -> vt.OrbitPlan:
     poi = vt.PoiPath(WAYPOINTS, 5.0)
-    times = list(np.arange(0.0, poi.duration, 6.0)) + [poi.duration]
+    times = [*np.arange(0.0, poi.duration, 6.0), poi.duration]
     radii = [158.0 - 31.0 * t / poi.duration + 10 * math.sin(t / 4) for t in times]  # R_i 158 -> R_f 127
     text = json.loads(vt.constant_radius_plan(poi, 100.0, uav).to_json())
     text["times"], text["radii"], text["max_radii"] = times, radii, radii
@@ -80,7 +80,7 @@ def test_line_of_sight_callable_and_bad_input():
     assert np.all(seen["z"][0] == uav.altitude) and np.all(seen["z"][1] == 0.0)
     with pytest.raises(vt.VistrackError, match="x0"):
         vt.simulate(plan, uav, np.array([math.nan, 0.0, 0.0]), vt.Control())
-    with pytest.raises(vt.VistrackError, match="uav.speed"):
+    with pytest.raises(vt.VistrackError, match=r"uav\.speed"):
         vt.simulate(plan, vt.Uav(speed=4.0), np.zeros(3), vt.Control())
     text = json.loads(plan.to_json())
     text["radii"][1] = text["radii"][0] + 30.0 * (text["times"][1] - text["times"][0])
@@ -179,7 +179,8 @@ def test_campus_flight_test_visibility_matches_the_paper(campus):
     def visibility(plan):
         orbit = vt.OrbitState(center=np.asarray(plan.centers)[0], center_velocity=np.asarray(poi.velocity(0.0)),
                               radius=plan.radii[0], radius_rate=plan.radius_rate(0.0))
-        return vt.simulate(plan, uav, vt.orbit_configuration(0.0, orbit, uav.speed, "ccw"), control, scene).visibility_fraction
+        start = vt.orbit_configuration(0.0, orbit, uav.speed, "ccw")
+        return vt.simulate(plan, uav, start, control, scene).visibility_fraction
 
     for radius, paper in [(11.2, 1.00), (23.4, 0.840), (35.0, 0.640)]:
         assert visibility(vt.constant_radius_plan(poi, radius, uav)) == pytest.approx(paper, abs=0.03), radius

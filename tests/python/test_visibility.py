@@ -96,7 +96,8 @@ def test_line_of_sight_matches_exact_test(box_env):
     rng = np.random.default_rng(5)
     a = np.column_stack([rng.uniform(-100, 100, 3000), rng.uniform(-100, 100, 3000), rng.uniform(0, 60, 3000)])
     b = np.column_stack([rng.uniform(-100, 100, 3000), rng.uniform(-100, 100, 3000), rng.uniform(0, 60, 3000)])
-    inside = lambda p: (p >= (40 - 0.01, -20 - 0.01, -1)).all() and (p <= (60.01, 20.01, 30.01)).all()
+    def inside(p):
+        return (p >= (40 - 0.01, -20 - 0.01, -1)).all() and (p <= (60.01, 20.01, 30.01)).all()
     keep = np.array([not inside(p) and not inside(q) for p, q in zip(a, b)])
     visible = box_env.line_of_sight(a[keep], b[keep])
     assert visible.dtype == bool
@@ -105,21 +106,21 @@ def test_line_of_sight_matches_exact_test(box_env):
     assert 0.2 < visible.mean() < 0.95
     scene = vt.visibility_scene(box_env)
     np.testing.assert_array_equal(scene.line_of_sight(b[keep], a[keep]), visible)
-    with pytest.raises(vt.VistrackError, match="b.rows"):
+    with pytest.raises(vt.VistrackError, match=r"b\.rows"):
         box_env.line_of_sight(a[:3], b[:2])
 
 
 @pytest.mark.parametrize(
     "kwargs, field",
     [
-        (dict(g=(50.0, 0.0, 10.0), d_max=100.0), "inside an obstacle"),
-        (dict(g=(0.0, 0.0, -1.0), d_max=100.0), r"g\[2\]"),
-        (dict(g=(0.0, np.nan, 0.0), d_max=100.0), r"g\[1\]"),
-        (dict(g=(0.0, 0.0, 0.0), d_max=0.0), "d_max"),
-        (dict(g=(0.0, 0.0, 0.0), d_max=np.nan), "d_max"),
-        (dict(g=(0.0, 0.0, 0.0), d_max=100.0, altitude_band=(60.0, 20.0)), "altitude_band"),
-        (dict(g=(0.0, 0.0, 0.0), d_max=100.0, resolution_deg=0.0), "resolution_deg"),
-        (dict(g=(0.0, 0.0), d_max=100.0), "g must have 3"),
+        ({"g": (50.0, 0.0, 10.0), "d_max": 100.0}, "inside an obstacle"),
+        ({"g": (0.0, 0.0, -1.0), "d_max": 100.0}, r"g\[2\]"),
+        ({"g": (0.0, np.nan, 0.0), "d_max": 100.0}, r"g\[1\]"),
+        ({"g": (0.0, 0.0, 0.0), "d_max": 0.0}, "d_max"),
+        ({"g": (0.0, 0.0, 0.0), "d_max": np.nan}, "d_max"),
+        ({"g": (0.0, 0.0, 0.0), "d_max": 100.0, "altitude_band": (60.0, 20.0)}, "altitude_band"),
+        ({"g": (0.0, 0.0, 0.0), "d_max": 100.0, "resolution_deg": 0.0}, "resolution_deg"),
+        ({"g": (0.0, 0.0), "d_max": 100.0}, "g must have 3"),
     ],
 )
 def test_bad_input_names_the_field(box_env, kwargs, field):
@@ -184,7 +185,7 @@ def test_cli_volumes_writes_results(charlotte, tmp_path: Path):
     assert code == 0
     summary = json.loads((out / "volumes.json").read_text())
     assert len(summary["points"]) == 2
-    for k, record in enumerate(summary["points"]):
+    for record in summary["points"]:
         assert record["mesh_valid"], record["mesh_problem"]
         assert record["poi"][2] == pytest.approx(0.5)
         assert record["max_radius"] > 0.0
@@ -264,7 +265,7 @@ def test_charlotte_mesh_meets_the_fine_grid_volume_at_20_positions(charlotte, ch
 def test_low_altitude_vp_matches_line_of_sight(charlotte, charlotte_scene):
     """VPs cut from 1-degree VVs at 20 and 50 m (paper_small's d_max 100 m) against line-of-sight
     queries on a 1 m lattice: IoU >= 0.99 (measured 0.9968-0.9997 by bench/accuracy.py)."""
-    pois, poi = path_pois(charlotte_scene, charlotte / "paths" / "paper_small.csv", [0.0, 25.0, 50.0, 75.0])
+    pois, _poi = path_pois(charlotte_scene, charlotte / "paths" / "paper_small.csv", [0.0, 25.0, 50.0, 75.0])
     for g in pois:
         vv = vt.visibility_volume(charlotte_scene, g, 100.0, None, 1.0)
         for h in (20.0, 50.0):

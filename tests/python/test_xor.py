@@ -71,7 +71,7 @@ def test_xor_paths_against_each_other_and_monte_carlo(city, charlotte, pair):
     - the grid path (cell intervals) is within 1 % of them (measured 0.01-0.04 % on these pairs,
       at most 1 % on the 26 pairs of paper_slow and paper_small);
     - each is within 1 % of the Monte Carlo estimate, plus three standard deviations."""
-    env, scene = city
+    _env, scene = city
     a_point, b_point, d_max = CHARLOTTE_PAIRS[pair]
     ga = np.array(a_point)
     if b_point is None:  # 20 m further along paper_small
@@ -98,7 +98,7 @@ def test_radial_path_is_exact_on_close_pairs(city, charlotte):
     """Pairs 5 m apart (where adaptive insertion ends up): the XOR is small, so the grid path's
     cell sampling is off by up to 4 % there, while the radial path still equals CGAL on the same
     meshes (nudge allowance 1e-5)."""
-    env, scene = city
+    _env, scene = city
     path = vt.PoiPath.from_csv(str(charlotte / "paths" / "paper_slow.csv"), 5.0)
     ga, gb = (np.ravel(scene.poi_on_surface(np.ravel(path.position(t)))) for t in (40.0, 41.0))
     a = vt._core.visibility_volume(scene, ga, 400.0, None, 1.0)
@@ -115,7 +115,7 @@ def test_staggered_cell_rays_keep_the_grid_path_close_to_a_fine_grid(charlotte, 
     paper_slow (d_max 400 m) and paper_small (100 m): median error <= 0.25 % (measured 0.11 % and
     0.05 %; rays through the cell centres gave 0.66 % and 0.31 %, because a vertical building edge
     then puts the same quantization error in every row it crosses)."""
-    env, scene = city
+    _env, scene = city
     errors = []
     for name, d_max in (("paper_slow", 400.0), ("paper_small", 100.0)):
         path = vt.PoiPath.from_csv(str(charlotte / "paths" / f"{name}.csv"), 5.0)
@@ -129,7 +129,7 @@ def test_staggered_cell_rays_keep_the_grid_path_close_to_a_fine_grid(charlotte, 
 
 
 def test_open_terrain_is_zero_in_the_poi_frame_only(city):
-    env, scene = city
+    _env, scene = city
     # Far outside the city nothing occludes: both VVs are the same hemisphere about their POI.
     ga, gb = np.array([3000.0, 3000.0, 0.5]), np.array([3030.0, 3000.0, 0.5])
     a = vt._core.visibility_volume(scene, ga, 100.0, None, 4.0)
