@@ -1,4 +1,4 @@
-"""The smooth locus (issue 12): R(t) checked against MaxRadius along the whole POI path, C1 with a
+"""The smooth locus: R(t) checked against MaxRadius along the whole POI path, C1 with a
 bounded d2R/dt2, and followed by the guidance with the matching feed-forward; the paper's locus one
 option away. Oracles: scipy's HiGHS on the same linear program, MaxRadius of the VP from 1-degree VVs
 (edge-walking slicer, cross-checked with CGAL's) at 400 evenly spaced times, and the closed loop."""

@@ -1,6 +1,6 @@
-"""The sweep kinds of the loiter and follow planners (issue 17 for issues 14 and 15): rows equal
-running each case directly through the planners' public API, serially and on a LocalCluster,
-bad bases name the key, and the declared metric names match what a run returns."""
+"""The sweep kinds of the loiter and follow planners: rows equal running each case directly through
+the planners' public API, serially and on a LocalCluster, bad bases name the key, and the declared
+metric names match what a run returns."""
 
 from __future__ import annotations
 

@@ -251,7 +251,7 @@ def test_charlotte_mesh_holds_the_volume_of_a_fine_grid(charlotte, charlotte_sce
 
 
 def test_charlotte_mesh_meets_the_fine_grid_volume_at_20_positions(charlotte, charlotte_scene):
-    """Issue 19's accuracy bound: the 1-degree mesh volume within 0.05 % of the per-direction
+    """The accuracy bound: the 1-degree mesh volume within 0.05 % of the per-direction
     volume of a 0.2-degree grid at 20 POIs along paper_slow (d_max 400 m; measured <= 0.026 %).
     Not at d_max 100 m: there paper_small's VVs stay within 0.17 % (bench/accuracy.py)."""
     path = vt.PoiPath.from_csv(str(charlotte / "paths" / "paper_slow.csv"), speed=5.0)
