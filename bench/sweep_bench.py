@@ -26,7 +26,7 @@ from typing import Any
 HERE = Path(__file__).resolve().parent
 if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(HERE.parent / "tests" / "python"))
-    import build_tree  # imports vistrack from the build tree, in this process and in the workers
+    from support import build_tree  # imports vistrack from the build tree, in this process and in the workers
 
     build_tree.preload_in_dask_workers()
 

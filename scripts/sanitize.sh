@@ -18,11 +18,10 @@ jobs=${VISTRACK_SANITIZE_JOBS:-2}
 with_python=${VISTRACK_SANITIZE_PYTHON:-1}
 python=${VISTRACK_PYTHON:-.venv/bin/python}
 SLOW='^(RadialXor\.EqualsCgalOnTheSameMeshes|VisibilityVolumeData\.|RadialXor\.MeshesOnDifferentVertexRowsAreOverlappedToo|MeshXor\.PerturbationHandlesIdenticalSpheresAndStaysSmall)'
-# The input-facing Python surface: reproducers, degenerate geometry, every fuzz seed and finding,
-# and the Dubins, waypoint, loiter and follow entry points.
-PYTESTS=(tests/python/test_hardening.py tests/python/test_degenerate.py tests/python/test_fuzz_regressions.py
-         tests/python/test_dubins.py tests/python/test_waypoint_nav.py tests/python/test_loiter.py
-         tests/python/test_follow.py)
+# The input-facing Python surface, the tests marked `sanitize`: every reproducer of bad input (each in
+# its area's file), degenerate geometry, every fuzz seed and finding, and the Dubins, waypoint,
+# loiter and follow entry points. Only the files holding such tests are collected.
+mapfile -t PYTESTS < <(grep -l "pytest.mark.sanitize" tests/python/test_*.py)
 
 start=$(date +%s)
 python_args=(-DVISTRACK_BUILD_PYTHON=OFF)
@@ -51,7 +50,7 @@ if [ "$with_python" = 1 ]; then
   compiler=${compiler:-g++}
   # -s: a sanitizer report goes to the terminal, not into pytest's capture of a dying process.
   LD_PRELOAD="$("$compiler" -print-file-name=libasan.so) $("$compiler" -print-file-name=libstdc++.so)" \
-    VISTRACK_BUILD_DIR="$build_dir" "$python" -m pytest -q -s -p no:cacheprovider "${PYTESTS[@]}"
+    VISTRACK_BUILD_DIR="$build_dir" "$python" -m pytest -q -s -p no:cacheprovider -m sanitize "${PYTESTS[@]}"
 fi
 summary="build $((built - start)) s, ctest $((tested - built)) s"
 if [ "$with_python" = 1 ]; then summary+=", pytest $(($(date +%s) - tested)) s"; fi

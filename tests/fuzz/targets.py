@@ -23,7 +23,7 @@ REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "tests" / "python"))
 import numpy as np  # noqa: E402
 
-import build_tree  # noqa: E402,F401  (imports vistrack from $VISTRACK_BUILD_DIR when set)
+import support.build_tree  # noqa: E402,F401  (imports vistrack from $VISTRACK_BUILD_DIR when set)
 import vistrack as vt  # noqa: E402
 from vistrack import VistrackError  # noqa: E402
 from vistrack.intercept import InterceptProblem  # noqa: E402

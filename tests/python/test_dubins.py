@@ -3,14 +3,21 @@
 from __future__ import annotations
 
 import math
+import subprocess
+import sys
 import threading
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import vistrack as vt
-from conftest import standalone_executable, ticks_during
+from support.build_tree import standalone_executable
+from support.refusal import refuses
+from support.threads import ticks_during
 from vistrack import VistrackError, dubins
+
+pytestmark = pytest.mark.sanitize  # the input-facing surface (scripts/sanitize.sh)
 
 
 def test_both_import_styles() -> None:
@@ -90,7 +97,8 @@ def test_batch_runs_concurrently_with_the_gil_released() -> None:
     q1 = rng.uniform(-5, 5, (200000, 3))
     expected, _ = dubins.shortest_lengths(q0, q1, 1.0)
     results: list[np.ndarray] = []
-    threads = [threading.Thread(target=lambda: results.append(dubins.shortest_lengths(q0, q1, 1.0)[0])) for _ in range(3)]
+    threads = [threading.Thread(target=lambda: results.append(dubins.shortest_lengths(q0, q1, 1.0)[0]))
+               for _ in range(3)]
     for t in threads:
         t.start()
     for t in threads:
@@ -116,7 +124,8 @@ def test_batch_runs_concurrently_with_the_gil_released() -> None:
         (lambda: dubins.path((0, 0, 0), (100, 0, 0), 1.0, "RLR"), "word"),
         (lambda: dubins.shortest_lengths(np.zeros((3, 2)), np.zeros((3, 3)), 1.0), "q0s"),
         (lambda: dubins.shortest_lengths(np.zeros((3, 3)), np.zeros((4, 3)), 1.0), "q1s.shape[0]"),
-        (lambda: dubins.shortest_lengths(np.zeros((3, 3)), np.array([[0, 0, 0], [1, np.inf, 0], [0, 0, 0]]), 1.0), "q1s[1].y"),
+        (lambda: dubins.shortest_lengths(np.zeros((3, 3)), np.array([[0, 0, 0], [1, np.inf, 0], [0, 0, 0]]), 1.0),
+         "q1s[1].y"),
         (lambda: dubins.path_to_circle((0, 0, 0), 1.0, (5, 5), 1.0, 0.0, "up"), "direction"),
         (lambda: dubins.path_to_circle((0, 0, 0), 1.0, (5, 5), -1.0, 0.0, "cw"), "radius = -1"),
         (lambda: dubins.intercept_circle((0, 0, 0), 1.0, 0.0, (5, 5), 1.0, 0.0, 1.0), "pursuer_speed"),
@@ -170,7 +179,8 @@ def test_length_to_circle_is_continuous_and_periodic_under_four_rho() -> None:
 def test_csc_branches_are_discontinuous_but_their_minimum_is_not() -> None:
     # Lemma 1/2: single words jump by 2 pi rho where an arc disappears; the minimum does not.
     angles = np.linspace(0.0, 2 * np.pi, 4001)
-    lsl = np.array([dubins.word_lengths(START, dubins.path_to_circle(START, 1.0, CENTER, RADIUS, a).goal, 1.0)["LSL"] for a in angles])
+    lsl = np.array([dubins.word_lengths(START, dubins.path_to_circle(START, 1.0, CENTER, RADIUS, a).goal, 1.0)["LSL"]
+                    for a in angles])
     assert np.abs(np.diff(lsl)).max() > 5.0  # a ~2 pi jump somewhere on the circle
 
 
@@ -191,11 +201,16 @@ def brute_force_intercept(pursuer, rho, vp, center, radius, alpha0, vt_, directi
 @pytest.mark.parametrize(
     "case",
     [
-        dict(pursuer=(0, 0, 0), rho=1.0, vp=1.0, center=(-4, 3), radius=1.0, alpha0=math.pi, vt=1.2, direction="cw"),
-        dict(pursuer=(0, 0, 0), rho=1.0, vp=1.0, center=(-4, 3), radius=1.0, alpha0=math.pi, vt=1.2, direction="ccw"),
-        dict(pursuer=(2, -1, 2.0), rho=0.5, vp=2.0, center=(10, 4), radius=3.0, alpha0=0.3, vt=1.0, direction="cw"),
-        dict(pursuer=(2, -1, -1.0), rho=0.8, vp=1.0, center=(-6, 8), radius=2.0, alpha0=-2.0, vt=3.0, direction="ccw"),
-        dict(pursuer=(0, 0, 0), rho=1.0, vp=1.0, center=(1.5, 0.5), radius=2.0, alpha0=1.0, vt=0.7, direction="cw"),
+        {"pursuer": (0, 0, 0), "rho": 1.0, "vp": 1.0, "center": (-4, 3), "radius": 1.0, "alpha0": math.pi, "vt": 1.2,
+         "direction": "cw"},
+        {"pursuer": (0, 0, 0), "rho": 1.0, "vp": 1.0, "center": (-4, 3), "radius": 1.0, "alpha0": math.pi, "vt": 1.2,
+         "direction": "ccw"},
+        {"pursuer": (2, -1, 2.0), "rho": 0.5, "vp": 2.0, "center": (10, 4), "radius": 3.0, "alpha0": 0.3, "vt": 1.0,
+         "direction": "cw"},
+        {"pursuer": (2, -1, -1.0), "rho": 0.8, "vp": 1.0, "center": (-6, 8), "radius": 2.0, "alpha0": -2.0, "vt": 3.0,
+         "direction": "ccw"},
+        {"pursuer": (0, 0, 0), "rho": 1.0, "vp": 1.0, "center": (1.5, 0.5), "radius": 2.0, "alpha0": 1.0, "vt": 0.7,
+         "direction": "cw"},
     ],
 )
 def test_intercept_against_brute_force(case: dict) -> None:
@@ -232,7 +247,8 @@ def test_vistrack_dubins_csv(tmp_path) -> None:
     lines = ["x0,y0,psi0,x1,y1,psi1"] + [",".join(repr(float(v)) for v in (*a, *b)) for a, b in zip(q0, q1)]
     source.write_text("\n".join(lines) + "\n")
     out = tmp_path / "out.csv"
-    done = subprocess.run([exe, "--rho", "2.5", "--segments", "-o", str(out), str(source)], capture_output=True, text=True)
+    done = subprocess.run([exe, "--rho", "2.5", "--segments", "-o", str(out), str(source)], capture_output=True,
+                          text=True)
     assert done.returncode == 0, done.stderr
     rows = out.read_text().splitlines()
     assert rows[0] == "length,word,seg1,seg2,seg3" and len(rows) == 501
@@ -250,3 +266,39 @@ def test_vistrack_dubins_csv(tmp_path) -> None:
     assert bad.read_text() == "0,0,0,1,1,0\n0,0,nan,1,1,0\n"
     done = subprocess.run([exe, "--rho", "-1", str(source)], capture_output=True, text=True)
     assert done.returncode == 2 and "--rho = -1" in done.stderr
+
+
+def test_huge_thread_counts_are_refused_not_a_segfault() -> None:
+    """shortest_lengths(..., threads=100000) killed the interpreter with SIGSEGV."""
+    q0, q1 = np.zeros((4, 3)), np.ones((4, 3))
+    for threads in (100000, 2**31 - 1, -1):
+        refuses(lambda t=threads: vt.dubins.shortest_lengths(q0, q1, 2.0, threads=t), f"threads = {threads}")
+    lengths, _ = vt.dubins.shortest_lengths(q0, q1, 2.0, threads=1024)
+    assert np.all(np.isfinite(lengths))
+
+
+def test_huge_thread_count_in_a_fresh_interpreter() -> None:
+    """The same call in its own process: it exits normally (a SIGSEGV would be returncode -11)."""
+    code = ("import numpy as np, vistrack as vt\n"
+            "try:\n vt.dubins.shortest_lengths(np.zeros((4,3)), np.ones((4,3)), 2.0, threads=100000)\n"
+            "except vt.VistrackError as e:\n print(e)\n")
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    preload = "import sys; sys.path.insert(0, %r); import support.build_tree\n" % str(Path(__file__).resolve().parent)
+    done = subprocess.run([sys.executable, "-c", preload + code], capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert "threads = 100000" in done.stdout
+
+
+@pytest.mark.parametrize("rho", [5e-324, 1e-300, 1e308, math.inf, math.nan, 0.0, -1.0])
+def test_dubins_turn_radius_out_of_range(rho: float) -> None:
+    """shortest_path((0,0,0),(10,5,1.0),5e-324).length was NaN; 1e-300 or 1e308 gave inf."""
+    refuses(lambda: vt.dubins.shortest_path((0, 0, 0), (10, 5, 1.0), rho), "rho = ", "[1e-06, 1e+07] m")
+
+
+def test_dubins_far_coordinates_and_huge_circles() -> None:
+    """Coordinates 1e300 and path_to_circle(..., radius=1e300) gave inf."""
+    refuses(lambda: vt.dubins.shortest_path((0, 0, 0), (1e300, 5, 1.0), 1.0), "q1.x = 1e+300")
+    refuses(lambda: vt.dubins.path_to_circle((0, 0, 0), 1.0, (10, 0), 1e300, 0.5, "cw"), "radius = 1e+300")
+    # Far from the origin on the scale of rho: refused naming rho and how far it may be.
+    refuses(lambda: vt.dubins.shortest_path((2.6e6, 0, 0), (2.6e6 + 1, 0, 1.0), 1e-5), "rho = 1e-05",
+            "translate the problem nearer the origin")

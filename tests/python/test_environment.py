@@ -3,11 +3,15 @@
 from __future__ import annotations
 
 import json
+import math
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import vistrack as vt
+from support.geojson import square_collection
+from support.refusal import refuses
 
 
 def test_poi_path_constant_speed() -> None:
@@ -67,7 +71,8 @@ def test_from_buildings_extrudes_closed_outward_meshes() -> None:
     assert _signed_volume(env) == pytest.approx((1600 - 400) * 20 + 100 * 35)
     # Normalised: outer counter-clockwise, hole clockwise (shoelace sign).
     outer, hole = env.footprints[0].outer, env.footprints[0].holes[0]
-    shoelace = lambda r: 0.5 * np.sum(r[:, 0] * np.roll(r[:, 1], -1) - np.roll(r[:, 0], -1) * r[:, 1])
+    def shoelace(r):
+        return 0.5 * np.sum(r[:, 0] * np.roll(r[:, 1], -1) - np.roll(r[:, 0], -1) * r[:, 1])
     assert shoelace(outer) > 0 > shoelace(hole)
     assert env.footprints[0].area == pytest.approx(1200.0)
 
@@ -143,7 +148,7 @@ SQUARE = [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]
         ([_feature([[[0, 0], [1, 1], [0, 0]]], {"height": 4})], r"coordinates\[0\].*at least 3"),
         ([_feature([[[0, 0], [10, 10], [10, 0], [0, 10]]], {"height": 4})], r"coordinates\[0\].*self-intersecting"),
         ([_feature([[[0, 0], [5, 0], [10, 0]]], {"height": 4})], r"coordinates\[0\].*degenerate"),
-        ([_feature(SQUARE + [[[20, 20], [25, 20], [25, 25]]], {"height": 4})], r"coordinates\[1\].*inside the outer"),
+        ([_feature([*SQUARE, [[20, 20], [25, 20], [25, 25]]], {"height": 4})], r"coordinates\[1\].*inside the outer"),
         ([_feature(SQUARE, {"height": 4}), _feature([[[5, 5], [15, 5], [15, 15], [5, 15]]], {"height": 4})],
          r"features\[0\] \(id 0\) and features\[1\] \(id 1\) overlap: shared area = 25"),
         ([], r"features = \[\]"),
@@ -263,7 +268,8 @@ def test_poi_paths_from_csv(charlotte, campus) -> None:
     poi = vt.PoiPath.from_csv(charlotte / "paths" / "paper_slow.csv", speed=5.0)
     assert poi.waypoints.shape == (3, 3)
     assert poi.length == pytest.approx(np.hypot(100, 90) + np.hypot(70, 80))
-    for path in [*sorted((charlotte / "paths").glob("*.csv")), campus / "poi_path.csv", campus / "flight_test_path.csv"]:
+    paths = [*sorted((charlotte / "paths").glob("*.csv")), campus / "poi_path.csv", campus / "flight_test_path.csv"]
+    for path in paths:
         assert vt.PoiPath.from_csv(str(path), 1.0).length > 0
 
 
@@ -340,3 +346,70 @@ def test_overlap_check_matches_shapely_area() -> None:
         assert rejected == (shared > 1.0)
         outcomes.add(rejected)
     assert outcomes == {True, False}
+
+
+@pytest.mark.sanitize
+def test_poi_path_polygon_and_angles_with_huge_values() -> None:
+    """PoiPath([[-1e308,0],[1e308,0]]).velocity(0) was [nan, 0]; max_inscribed_radius on a 1e308
+    polygon was inf; wrap_to_pi(inf) was NaN."""
+    refuses(lambda: vt.PoiPath(np.array([[-1e308, 0.0], [1e308, 0.0]]), 5.0), "waypoints[0][0] = -1e+308",
+            "[-1e+07, 1e+07] m")
+    corners = np.array([[-1e308, -1e308], [1e308, -1e308], [1e308, 1e308], [-1e308, 1e308]])
+    refuses(lambda: vt.max_inscribed_radius([vt.Polygon(corners)], (0.0, 0.0)), "outer[0][0] = -1e+308")
+    refuses(lambda: vt.wrap_to_pi(math.inf), "angle = inf")
+    refuses(lambda: vt.wrap_to_pi(math.nan), "angle = nan")
+
+
+@pytest.mark.sanitize
+def test_csv_first_row_with_a_bad_number_is_not_a_header(tmp_path: Path) -> None:
+    """A CSV whose first row is 0,0,0.5abc was silently taken as a header."""
+    path = tmp_path / "a.csv"
+    path.write_text("0,0,0.5abc\n10,0,0.5\n20,0,0.5\n")
+    refuses(lambda: vt.PoiPath.from_csv(path, 5.0), "0.5abc", "not a number")
+    header = tmp_path / "h.csv"
+    header.write_text("x,y,z\n0,0,0.5\n10,0,0.5\n")
+    assert vt.PoiPath.from_csv(header, 5.0).waypoints.shape == (2, 3)
+
+
+@pytest.mark.sanitize
+def test_road_networks_are_checked_when_they_enter() -> None:
+    """RoadNetwork accepted NaN nodes and out-of-range edges until later."""
+    refuses(lambda: vt.RoadNetwork(np.array([[math.nan, 0.0], [1.0, 1.0]]), np.array([[0, 1]])), "nodes[0][0] = nan")
+    refuses(lambda: vt.RoadNetwork(np.array([[0.0, 0.0], [1.0, 1.0]]), np.array([[0, 5]])), "edges[0]",
+            "out of range")
+
+
+@pytest.mark.sanitize
+def test_geojson_height_1e999(tmp_path: Path) -> None:
+    """A GeoJSON height of 1e999 raised a bare RuntimeError."""
+    path = tmp_path / "big.geojson"
+    path.write_text(square_collection("1e999"))
+    refuses(lambda: vt.Environment.from_geojson(path), "not valid JSON")
+
+
+@pytest.mark.sanitize
+def test_non_utf8_csv(tmp_path: Path) -> None:
+    """A non-UTF-8 CSV raised UnicodeDecodeError (its byte position past the file's end)."""
+    path = tmp_path / "u.csv"
+    path.write_bytes(b"0,0\n\xff\xfe,1\n")
+    message = refuses(lambda: vt.PoiPath.from_csv(path, 5.0), "\\xff\\xfe")
+    message.encode("utf-8")
+
+
+@pytest.mark.sanitize
+def test_a_folder_is_not_a_file(tmp_path: Path) -> None:
+    """A directory passed as a file read "the GeoJSON file is empty"."""
+    refuses(lambda: vt.Environment.from_geojson(tmp_path), "is a folder, not a GeoJSON file")
+    refuses(lambda: vt.Environment.from_mesh(tmp_path, up="z"), "is a folder")
+    refuses(lambda: vt.PoiPath.from_csv(tmp_path, 5.0), "is a folder")
+
+
+@pytest.mark.sanitize
+def test_mesh_with_nan_vertices_or_bad_faces(tmp_path: Path) -> None:
+    """A mesh with NaN vertices or out-of-range faces said only "cannot read a mesh from this file"."""
+    nan = tmp_path / "n.obj"
+    nan.write_text("v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n")
+    refuses(lambda: vt.Environment.from_mesh(nan, up="z"), "n.obj:2", "not finite")
+    face = tmp_path / "f.obj"
+    face.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n")
+    refuses(lambda: vt.Environment.from_mesh(face, up="z"), "f.obj:4", "names no vertex")

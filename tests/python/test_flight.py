@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
-from conftest import ticks_during
+from support.threads import ticks_during
 from vistrack import flight
 
 

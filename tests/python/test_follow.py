@@ -13,15 +13,18 @@ import numpy as np
 import pytest
 
 import vistrack as vt
-from conftest import ticks_during
+from support.cli import NO_MEDIA
+from support.paths import EXAMPLES
+from support.refusal import refuses
+from support.threads import ticks_during
+from support.vehicles import east_truck
 from vistrack import follow
 from vistrack.follow_scenario import FollowScenario
 
-REPO = Path(__file__).resolve().parents[2]
-EXAMPLES = REPO / "examples"
 NORTH, EAST, SOUTH, WEST = math.pi / 2, 0.0, -math.pi / 2, math.pi
 UAV = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
-NO_MEDIA = ["--no-animation", "--no-html"]  # the report media are tested in test_planner_reports.py
+
+pytestmark = pytest.mark.sanitize  # the input-facing surface (scripts/sanitize.sh)
 
 
 def _amplitude_by_scipy(sigma: float, distance: float) -> float:
@@ -264,3 +267,37 @@ def test_city_runs_report_line_of_sight(charlotte: Path) -> None:
     ground = scene.poi_on_surface(np.column_stack([result.vehicle[k], np.full(len(k), 0.5)]))
     assert np.array_equal(env.line_of_sight(uav, ground), result.line_of_sight[k])
     assert not result.line_of_sight.all()  # the buildings hide the vehicle some of the time
+
+
+def test_follow_refuses_out_of_range_inputs_and_wrong_shapes() -> None:
+    F = vt.follow
+    uav = vt.Uav(speed=20.0, min_turn_radius=40.0, altitude=100.0)
+    truck = east_truck()
+    # update_period 1e-12 meant 6e13 planner updates: it hung.
+    refuses(lambda: F.simulate(truck, uav, F.FollowParameters(update_period=1e-12)), "follow.update_period = 1e-12",
+            "more than 1e8 planner updates")
+    refuses(lambda: F.FollowParameters(offset_distance=1e300), "follow.offset_distance = 1e+300")
+    refuses(lambda: F.simulate(truck, uav, wind=(1, 2, 3)), "wind = (1, 2, 3)")
+    refuses(lambda: F.simulate(truck, uav, start=(0.0, 0.0)), "start = (0.0, 0.0)", "(x, y, psi)")
+    refuses(lambda: F.simulate(truck, uav, start=(1e300, 0.0, 0.0)), "start[0] = 1e+300")
+    refuses(lambda: F.baseline(truck, uav, 1e-300), "baseline.radius = 1e-300")
+    refuses(lambda: F.GroundVehicle.from_legs([F.VehicleLeg(heading=0.0, speed=1e300, duration=60.0)], (0.0, 0.0)),
+            "legs[0].speed = 1e+300")
+    refuses(lambda: F.GroundVehicle.from_legs([F.VehicleLeg(heading=0.0, speed=1.0, duration=1e300, end_speed=2.0)],
+                                              (0.0, 0.0)), "legs[0].duration = 1e+300", "more than 1e7 samples")
+    refuses(lambda: F.GroundVehicle(np.array([0.0, 1.0]), np.array([[0.0, 0.0], [1e300, 0.0]])), "track.x")
+    # A constant-speed leg is one piece whatever its length (only ramps are sampled every step).
+    assert F.GroundVehicle.from_legs([F.VehicleLeg(heading=0.0, speed=1.0, duration=2e6)], (0.0, 0.0)).end_time == 2e6
+
+
+def test_a_constant_speed_leg_reads_its_speed_not_nan() -> None:
+    """VehicleLeg keeps NaN for "constant speed" inside; Python reads the effective end speed."""
+    leg = vt.follow.VehicleLeg(heading=0.0, speed=8.0, duration=40.0)
+    assert leg.end_speed == 8.0
+    leg.end_speed = 3.0
+    assert leg.end_speed == 3.0
+    leg.end_speed = None
+    leg.speed = 5.0
+    assert leg.end_speed == 5.0
+    truck = vt.follow.GroundVehicle.from_legs([leg], (0.0, 0.0))
+    assert np.allclose(truck.position(20.0), (100.0, 0.0))

@@ -1,7 +1,6 @@
-"""Replays every fuzz target's seeds and stored findings (tests/fuzz/regressions/<target>/, issue
-18's reproducers among them) through the same check the fuzzer applies: a finite result or a
-VistrackError, nothing else. A finding of scripts/fuzz.sh becomes a regression test by copying
-its input into that folder."""
+"""Replays every fuzz target's seeds and stored findings (tests/fuzz/regressions/<target>/) through
+the same check the fuzzer applies: a finite result or a VistrackError, nothing else. A finding of
+scripts/fuzz.sh becomes a regression test by copying its input into that folder."""
 
 from __future__ import annotations
 
@@ -13,6 +12,8 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "fuzz"))
 import seeds
 import targets
+
+pytestmark = pytest.mark.sanitize  # the input-facing surface (scripts/sanitize.sh)
 
 
 @pytest.mark.parametrize("name", sorted(targets.TARGETS))

@@ -10,6 +10,9 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import vistrack as vt
+from support.paths import EXAMPLES
+from support.refusal import refuses
+from vistrack import schema
 
 
 def test_vector_field_has_constant_speed_and_turns_the_right_way():
@@ -102,14 +105,15 @@ def test_safe_functions():
 
 
 def test_bad_gains_name_the_field():
-    with pytest.raises(vt.VistrackError, match="gains.beta"):
+    with pytest.raises(vt.VistrackError, match=r"gains\.beta"):
         vt.GuidanceGains(beta=0.0)
     with pytest.raises(vt.VistrackError, match="direction = 'sideways'"):
         vt.GuidanceGains(direction="sideways")
     with pytest.raises(TypeError, match="direction: str"):  # the one spelling is the string
         vt.GuidanceGains(direction=2)
-    with pytest.raises(vt.VistrackError, match="orbit.radius_rate"):
-        vt.orbit_signed_curvature(0.0, vt.OrbitState(center_velocity=np.array([5.0, 0.0]), radius=10.0, radius_rate=16.0), 20.0)
+    with pytest.raises(vt.VistrackError, match=r"orbit\.radius_rate"):
+        orbit = vt.OrbitState(center_velocity=np.array([5.0, 0.0]), radius=10.0, radius_rate=16.0)
+        vt.orbit_signed_curvature(0.0, orbit, 20.0)
 
 
 # --- the integrator against scipy's RK45 (the same method): same steps, same values ---------
@@ -169,3 +173,52 @@ def test_solve_ode_bad_input():
         vt.solve_ode(_exp_sin, (0.0, 1.0), np.array([math.nan]))
     with pytest.raises(vt.VistrackError, match="size"):
         vt.solve_ode(lambda t, y: np.ones(3), (0.0, 1.0), np.array([1.0]))
+
+
+@pytest.mark.sanitize
+def test_ode_tolerances_out_of_range() -> None:
+    """ODE tolerances of 1e-300 reported "ode.rhs = -nan"."""
+    def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        return -y
+
+    refuses(lambda: vt.solve_ode(rhs, (0.0, 1.0), np.array([1.0]), rtol=1e-300), "rtol = 1e-300")
+    refuses(lambda: vt.solve_ode(rhs, (0.0, 1.0), np.array([1.0]), atol=math.nan), "atol = nan")
+
+
+@pytest.mark.sanitize
+def test_gain_and_tolerance_ranges_are_the_same_everywhere() -> None:
+    """beta, k_psi, rtol and atol have one range (limits.hpp), whichever entry point takes them."""
+    lim = vt._core.limits
+    assert (lim.MIN_GAIN, lim.MAX_BETA, lim.MAX_HEADING_GAIN) == (1e-9, 1e3, 1e6)
+    assert (lim.MIN_RTOL, lim.MAX_RTOL, lim.MIN_ATOL, lim.MAX_ATOL) == (1e-13, 1.0, 1e-15, 1e6)
+    too_big = lim.MAX_ATOL * 10
+    refuses(lambda: vt.SimulationOptions(atol=too_big), "simulation.atol", "1e+06")  # the constructor checks
+    refuses(lambda: vt.solve_ode(lambda t, y: -y, (0.0, 1.0), np.array([1.0]), atol=too_big), "ode.atol", "1e+06")
+    refuses(lambda: vt.Control(beta=lim.MAX_BETA * 2), "control.beta", "1000")
+    refuses(lambda: vt.Control(k_psi=0.0), "control.k_psi", "1e-09")
+    refuses(lambda: vt.lemma7_min_gain(20.0, lim.MAX_BETA * 2), "beta", "1000")
+    for section, key, value in [("control", "beta", 2e3), ("control", "k_psi", 0.0), ("simulation", "rtol", 1e-14),
+                                ("simulation", "atol", 1e7), ("planning", "rate_margin", 1.0)]:
+        refuses(lambda s=section, k=key, v=value: vt.Scenario.from_dict({s: {k: v}}), f"{section}.{key} = {value!r}")
+    # The follow scenario's baseline controller and the beta sweep of `tune` take the same range.
+    import yaml
+
+    from vistrack.follow_scenario import FollowScenario
+    from vistrack.tuning import default_sweep, tune_beta
+
+    follow = yaml.safe_load((EXAMPLES / "follow_straight.yaml").read_text())
+    follow["baseline"] = {"beta": 5000.0}
+    refuses(lambda: FollowScenario.from_mapping(follow, EXAMPLES), "baseline.beta = 5000.0")
+    follow["baseline"] = {"k_psi": 0.0}
+    refuses(lambda: FollowScenario.from_mapping(follow, EXAMPLES), "baseline.k_psi = 0.0")
+    refuses(lambda: tune_beta(85.9, 1.3, 20.0, 5.0, 50.0, 0.025, sweep=[0.01, 5000.0]), "sweep[1] = 5000.0")
+    wide = default_sweep(500.0)  # tune_beta's sweep when none is given
+    assert max(wide) == pytest.approx(lim.MAX_BETA) and min(wide) == pytest.approx(50.0)
+    assert len(default_sweep(0.025)) == 30 and default_sweep(0.025)[0] == pytest.approx(0.0025)
+    for check, low, high in [(schema.beta, lim.MIN_GAIN, lim.MAX_BETA),
+                             (schema.heading_gain, lim.MIN_GAIN, lim.MAX_HEADING_GAIN),
+                             (schema.relative_tolerance, lim.MIN_RTOL, lim.MAX_RTOL),
+                             (schema.absolute_tolerance, lim.MIN_ATOL, lim.MAX_ATOL)]:
+        assert check("k", low) == low and check("k", high) == high
+        for outside in (low / 2, high * 2):
+            refuses(lambda c=check, v=outside: c("k", v), f"k = {outside!r}")

@@ -9,7 +9,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[2]
+from support.paths import REPO
 
 # Bottom to top. error/limits (the input ranges)/geometry/parameters are the base every area may
 # use; planners are peers of one another and may not include each other.
@@ -107,6 +107,6 @@ def test_importing_the_library_loads_no_command_module() -> None:
     code = ("import sys, vistrack, vistrack.pipeline, vistrack.report; "
             "print([m for m in sys.modules if m.startswith(('vistrack.commands', 'vistrack.cli'))])")
     env_path = str(Path(__file__).parent)
-    run = subprocess.run([sys.executable, "-c", f"import sys; sys.path.insert(0, {env_path!r}); import conftest; {code}"],
-                         capture_output=True, text=True, check=True, cwd=REPO)
+    script = f"import sys; sys.path.insert(0, {env_path!r}); import conftest; {code}"
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True, cwd=REPO)
     assert run.stdout.strip().splitlines()[-1] == "[]"

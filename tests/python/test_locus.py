@@ -1,4 +1,4 @@
-"""The smooth locus (issue 12): R(t) checked against MaxRadius along the whole POI path, C1 with a
+"""The smooth locus: R(t) checked against MaxRadius along the whole POI path, C1 with a
 bounded d2R/dt2, and followed by the guidance with the matching feed-forward; the paper's locus one
 option away. Oracles: scipy's HiGHS on the same linear program, MaxRadius of the VP from 1-degree VVs
 (edge-walking slicer, cross-checked with CGAL's) at 400 evenly spaced times, and the closed loop."""
@@ -12,10 +12,8 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.paths import REPO
 from vistrack.scenario import Scenario
-
-REPO = Path(__file__).resolve().parents[2]
-
 
 # ---------------------------------------------------------------------------------------------
 # The smooth R(t) under a ceiling: our barrier method against HiGHS on the same linear program.
@@ -137,11 +135,13 @@ def test_radius_at_is_what_the_closed_loop_follows() -> None:
 
 SETUPS = {
     "campus": ("campus/campus.obj", "campus/flight_test_path.csv", 0.35,
-               dict(speed=3.0, min_turn_radius=5.0, altitude=35.0), 50.0, dict(spacing=20.0, cutoff=1e5)),
+               {"speed": 3.0, "min_turn_radius": 5.0, "altitude": 35.0}, 50.0, {"spacing": 20.0, "cutoff": 1e5}),
     "paper_slow": ("charlotte/uptown_charlotte.obj", "charlotte/paths/paper_slow.csv", 5.0,
-                   dict(speed=20.0, min_turn_radius=50.0, altitude=300.0), 400.0, dict(spacing=20.0, cutoff=20e6)),
+                   {"speed": 20.0, "min_turn_radius": 50.0, "altitude": 300.0}, 400.0,
+                   {"spacing": 20.0, "cutoff": 20e6}),
     "paper_small": ("charlotte/uptown_charlotte.obj", "charlotte/paths/paper_small.csv", 5.0,
-                    dict(speed=20.0, min_turn_radius=5.0, altitude=50.0), 100.0, dict(spacing=20.0, cutoff=500e3)),
+                    {"speed": 20.0, "min_turn_radius": 5.0, "altitude": 50.0}, 100.0,
+                    {"spacing": 20.0, "cutoff": 500e3}),
 }
 
 
@@ -167,7 +167,8 @@ def test_smooth_locus_stays_inside_the_visibility_polygons(name: str, shared_dat
     times = np.linspace(0.0, poi.duration, 400)
     truth, volumes = dense_max_radius(planner.scene, poi, times, d_max, uav.altitude)
     radius = plan.radius_at(times)
-    assert (radius <= truth).all(), f"{(radius > truth).sum()} of 400 times outside, by up to {(radius - truth).max():.2f} m"
+    assert (radius <= truth).all(), \
+        f"{(radius > truth).sum()} of 400 times outside, by up to {(radius - truth).max():.2f} m"
     # The edge-walking slicer is CGAL's slicer, where the locus comes closest.
     for k in np.argsort(truth - radius)[:2]:
         exact = vt.max_inscribed_radius(volumes[k].slice(uav.altitude), np.ravel(poi.position(times[k]))[:2])
@@ -242,7 +243,8 @@ def test_scenario_locus_keys(tmp_path: Path) -> None:
     scenario = Scenario.from_dict({"planning": {"locus": "paper", "tracking_margin": 0.5, "check_spacing": 4.0,
                                                 "check_min_spacing": 0.5, "turn_share": 0.3}})
     p = scenario.planning
-    assert (p.locus, p.tracking_margin, p.check_spacing, p.check_min_spacing, p.turn_share) == ("paper", 0.5, 4.0, 0.5, 0.3)
+    assert (p.locus, p.tracking_margin, p.check_spacing, p.check_min_spacing, p.turn_share) == \
+        ("paper", 0.5, 4.0, 0.5, 0.3)
     assert Scenario.from_dict(scenario.to_dict()).planning.locus == "paper"
     assert Scenario.from_dict({}).planning.locus == "smooth"
     for bad, message in [({"locus": "linear"}, "planning.locus = 'linear': \"smooth\""),
@@ -251,7 +253,7 @@ def test_scenario_locus_keys(tmp_path: Path) -> None:
                          ({"check_spacing": 2.0, "check_min_spacing": 3.0}, "planning.check_min_spacing = 3")]:
         with pytest.raises(vt.VistrackError, match=message.replace("(", r"\(")):
             Scenario.from_dict({"planning": bad})
-    with pytest.raises(vt.VistrackError, match="planning.locus"):
+    with pytest.raises(vt.VistrackError, match=r"planning\.locus"):
         vt.Planning(locus="linear")
 
 
@@ -270,7 +272,7 @@ def test_smooth_plan_json_round_trip_and_cli(charlotte: Path, tmp_path: Path) ->
     t = np.linspace(0.0, plan.times[-1], 1000)
     again = vt.VisibilityOrbitPlan.from_json(plan.to_json())
     np.testing.assert_array_equal(again.radius_at(t), plan.radius_at(t))
-    assert main(args[:-3] + ["--locus", "paper", "--out", str(tmp_path / "paper"), "--quiet"]) == 0
+    assert main([*args[:-3], "--locus", "paper", "--out", str(tmp_path / "paper"), "--quiet"]) == 0
     paper = read_plan(tmp_path / "paper" / "plan.json")
     assert paper.planning.locus == "paper" and not paper.reference.smooth
     assert list(paper.radii) == list(plan.orbits.radii)  # Algorithm 1's radii, the same samples

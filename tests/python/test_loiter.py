@@ -8,17 +8,21 @@ import itertools
 import json
 import math
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
 
 import vistrack as vt
+from support.cli import NO_MEDIA
+from support.paths import REPO
+from support.refusal import refuses
 from vistrack import VistrackError, loiter
 
-REPO = Path(__file__).resolve().parents[2]
 EXAMPLES = sorted((REPO / "examples").glob("loiter_*aoi.yaml"))
 SQUARE = [(200.0, 200.0), (600.0, 200.0), (600.0, 600.0), (200.0, 600.0)]
-NO_MEDIA = ["--no-animation", "--no-html"]  # the report media are tested in test_planner_reports.py
+
+pytestmark = pytest.mark.sanitize  # the input-facing surface (scripts/sanitize.sh)
 
 
 def test_public_api_shape() -> None:
@@ -306,3 +310,26 @@ def test_cli_wind(tmp_path: Path) -> None:
     flown = metrics["methods"][0]["wind"][0]
     assert flown["wind"] == [5.0, 0.0] and 0.0 <= flown["loiter_covered_fraction"] <= 1.0
     assert (tmp_path / "wind_tlpp.png").exists()
+
+
+AOIS = [[200.0, 0.0], [500.0, 0.0], [500.0, 300.0]]
+
+
+@pytest.mark.parametrize("kwargs, fragment", [
+    ({"turn_radius": 1e300, "aoi_radius": 1e300}, "turn_radius = 1e+300"),
+    ({"speed": 1e300}, "speed = 1e+300"),
+    ({"start": "ab"}, "start = 'ab'"),
+    ({"start": (math.nan, 0.0)}, "start[0] = nan"),
+])
+def test_loiter_plans_refuse_out_of_range_inputs(kwargs: dict[str, Any], fragment: str) -> None:
+    refuses(lambda: vt.loiter.plan(AOIS, **kwargs), fragment)
+
+
+def test_loiter_refuses_far_aois_too_many_and_nan_thresholds() -> None:
+    refuses(lambda: vt.loiter.plan([[1e300, 0.0], [400.0, 0.0]]), "aois[0][0] = 1e+300")
+    refuses(lambda: vt.loiter.plan(None), "aois = None")  # type: ignore[arg-type]
+    many = np.column_stack([np.arange(10001) * 100.0, np.zeros(10001)])
+    refuses(lambda: vt.loiter.plan(many, turn_radius=40.0, aoi_radius=40.0), "at most 10000 AOIs")
+    plan = vt.loiter.plan(AOIS)
+    refuses(lambda: vt.loiter.metrics(plan, threshold=math.nan), "threshold = nan")
+    refuses(lambda: vt.loiter.fly(plan, wind=(1e300, 0.0)), "wind.east = 1e+300")

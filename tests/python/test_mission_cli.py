@@ -4,16 +4,15 @@ QGroundControl's format expect, GeoJSON in WGS84, and one-line errors."""
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import vistrack as vt
+from support.paths import DEMO_SCENARIO, REPO
 from vistrack.cli import main
 from vistrack.mission import Command, Georeference
 
-REPO = Path(__file__).resolve().parents[2]
 CHARLOTTE = Georeference(35.2249, -80.8403)
 
 
@@ -50,7 +49,7 @@ def test_orbits_export_plan_waypoints_geojson(charlotte, tmp_path, capsys) -> No
 
 def test_run_export_with_the_scenario_origin(tmp_path, capsys) -> None:
     scenario = tmp_path / "demo.yaml"
-    text = (REPO / "python" / "vistrack" / "scenarios" / "demo.yaml").read_text()
+    text = (DEMO_SCENARIO).read_text()
     scenario.write_text("origin: [35.2249, -80.8403, 230]\n" + text)
     out = tmp_path / "report"
     assert main(["run", str(scenario), "--out", str(out), "--quiet", "--export", str(tmp_path / "r.txt"),
@@ -66,7 +65,7 @@ def test_run_export_with_the_scenario_origin(tmp_path, capsys) -> None:
 
 
 def test_export_errors_are_one_line(tmp_path, capsys) -> None:
-    args = ["run", str(REPO / "python" / "vistrack" / "scenarios" / "demo.yaml"), "--out", str(tmp_path / "o"),
+    args = ["run", str(DEMO_SCENARIO), "--out", str(tmp_path / "o"),
             "--quiet", "--export", str(tmp_path / "r.plan")]
     assert main(args) == 2
     assert "--export = " in capsys.readouterr().err and not (tmp_path / "r.plan").exists()

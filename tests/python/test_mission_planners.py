@@ -1,7 +1,7 @@
-"""Missions of the loiter planners and of follow runs (issue 16 for issues 14 and 15): every item on
-the planned path to 1 cm after the trip through latitude and longitude, the loiter circles as
-NAV_LOITER_TURNS with the radius signed by the direction and the whole turns plus the exit arc equal
-to the planned sweep, files read back by pymavlink's MAVWPLoader and by our loader, and the CLI."""
+"""Missions of the loiter planners and of follow runs: every item on the planned path to 1 cm after
+the trip through latitude and longitude, the loiter circles as NAV_LOITER_TURNS with the radius
+signed by the direction and the whole turns plus the exit arc equal to the planned sweep, files read
+back by pymavlink's MAVWPLoader and by our loader, and the CLI."""
 
 from __future__ import annotations
 
@@ -13,11 +13,11 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.paths import REPO
 from vistrack import mission as vm
 from vistrack.cli import main
 from vistrack.mission import Command, Frame, Georeference
 
-REPO = Path(__file__).resolve().parents[2]
 CHARLOTTE = Georeference(35.2249, -80.8403, 230.0)
 CM = 0.01
 

@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.refusal import refuses
 
 
 def test_circular_orbits_matches_the_lower_envelope_closed_form():
@@ -46,7 +47,7 @@ def test_lemma6_bound_is_the_maximum_of_31():
 
 
 def test_bad_input_names_the_field():
-    with pytest.raises(vt.VistrackError, match="uav.speed"):
+    with pytest.raises(vt.VistrackError, match=r"uav\.speed"):
         vt.circular_orbits([0.0, 1.0], [10.0, 10.0], vt.Uav(speed=5.0), 5.0)
     with pytest.raises(vt.VistrackError, match="max_radii"):
         vt.circular_orbits([0.0, 1.0], [10.0, float("nan")], vt.Uav(), 5.0)
@@ -71,7 +72,7 @@ def small_example(charlotte):
 
 
 def test_small_example_plan_is_feasible_and_consistent(small_example):
-    env, poi, uav, sensor, planning, planner, plan, calls = small_example
+    _env, poi, uav, _sensor, planning, _planner, plan, calls = small_example
     assert plan.feasible, plan.infeasibility
     n = len(plan.times)
     assert len(plan.radii) == len(plan.max_radii) == len(plan.polygons) == plan.num_volumes == n
@@ -86,14 +87,15 @@ def test_small_example_plan_is_feasible_and_consistent(small_example):
     s = np.asarray(plan.arc_lengths)
     for k, d in enumerate(plan.metric):
         if d > planning.cutoff:
-            assert s[k + 1] - s[k] < 2 * planning.min_spacing or max(plan.depths[k], plan.depths[k + 1]) >= planning.max_depth
+            assert (s[k + 1] - s[k] < 2 * planning.min_spacing
+                    or max(plan.depths[k], plan.depths[k + 1]) >= planning.max_depth)
     assert calls and calls[-1][0] == calls[-1][1] == plan.volumes_computed
     # The progress callback is called from the planning thread with the GIL.
 
 
 def test_orbit_circles_see_the_poi(small_example):
     """Points of each orbit circle at h_UAV have line of sight to the POI (constraint (7))."""
-    env, poi, uav, sensor, planning, planner, plan, calls = small_example
+    env, poi, uav, _sensor, _planning, _planner, plan, _calls = small_example
     scene = vt._core.VisibilityScene(env)
     theta = np.linspace(0, 2 * np.pi, 90, endpoint=False)
     seen, total = 0, 0
@@ -119,7 +121,7 @@ def test_plan_json_round_trip(small_example, tmp_path):
 
 
 def test_planner_reuses_volumes_across_spacings(small_example):
-    env, poi, uav, sensor, planning, planner, plan, calls = small_example
+    _env, poi, _uav, _sensor, _planning, planner, _plan, _calls = small_example
     fine = planner.fixed(poi, 10.0)
     coarse = planner.fixed(poi, 20.0)
     assert coarse.volumes_computed == 0  # every 20 m sample is also a 10 m sample
@@ -128,7 +130,7 @@ def test_planner_reuses_volumes_across_spacings(small_example):
 
 
 def test_plane_slicer_matches_cgal_slicer(small_example):
-    env, poi, uav, sensor, planning, planner, plan, calls = small_example
+    env, poi, _uav, _sensor, _planning, _planner, _plan, _calls = small_example
     scene = vt._core.VisibilityScene(env)
     for t in (0.0, 20.0, poi.duration):
         vv = vt._core.visibility_volume(scene, np.asarray(poi.position(t)), 100.0, None, 1.0)
@@ -138,7 +140,7 @@ def test_plane_slicer_matches_cgal_slicer(small_example):
 
 
 def test_infeasible_and_invisible_plans_say_why(small_example):
-    env, poi, uav, sensor, planning, planner, plan, calls = small_example
+    _env, poi, uav, _sensor, planning, planner, _plan, _calls = small_example
     # r_min = 20 m needs R >= 31.25 m: the 20 m orbits fail Lemma 6.
     tight = planner.plan(poi, vt.Uav(speed=20.0, min_turn_radius=20.0, altitude=50.0), planning)
     assert not tight.feasible and "Lemma 6" in tight.infeasibility and "sample" in tight.infeasibility
@@ -146,7 +148,7 @@ def test_infeasible_and_invisible_plans_say_why(small_example):
     high = planner.plan(poi, vt.Uav(speed=20.0, min_turn_radius=5.0, altitude=150.0), planning)
     assert not high.feasible and "not visible" in high.infeasibility
     assert max(high.max_radii) == 0.0
-    with pytest.raises(vt.VistrackError, match="uav.speed"):
+    with pytest.raises(vt.VistrackError, match=r"uav\.speed"):
         planner.plan(poi, vt.Uav(speed=4.0, min_turn_radius=5.0, altitude=50.0), planning)
     # Another grid resolution gets its own VV cache in the same planner (one source for the grid:
     # the Planning), never a mix of grids.
@@ -178,3 +180,29 @@ def test_cli_orbits_writes_plan_and_figures(charlotte, tmp_path):
     assert main(["orbits", "--out", str(again_dir)]) == 2  # neither map and path nor a plan
     assert main(["orbits", "--map", str(tmp_path / "missing.obj"), "--path",
                  str(charlotte / "paths" / "paper_small.csv"), "--out", str(out)]) == 1  # a failure, not usage
+
+
+def _paper_slow() -> vt.PoiPath:
+    return vt.PoiPath(np.array([[0.0, 0.0], [1500.0, 0.0], [1500.0, 900.0]]), 5.0)
+
+
+@pytest.mark.sanitize
+def test_work_estimate_refuses_tiny_spacing_before_any_volume() -> None:
+    """Planning(spacing=0.01) grew until std::bad_alloc (tens of GB)."""
+    poi = _paper_slow()
+    planning = vt.Planning(spacing=0.01)
+    work = vt.estimate_work(poi, planning)
+    assert work.volumes > planning.max_volumes and work.bytes > 1e10
+    env = vt.Environment.demo()
+    message = refuses(lambda: vt.plan_orbits(env, poi, vt.Uav(), vt.Sensor(d_max=300.0), planning),
+                      "planning.max_volumes = 20000", "GB", "raise planning.max_volumes")
+    assert "\n" not in message
+
+
+@pytest.mark.sanitize
+def test_work_estimate_refuses_a_10000_km_path() -> None:
+    """A 10,000 km POI path grew until std::bad_alloc."""
+    poi = vt.PoiPath(np.array([[0.0, 0.0], [1e7, 0.0]]), 5.0)
+    refuses(lambda: vt.check_work(poi, vt.Planning()), "planning.max_volumes")
+    raised = vt.Planning(max_volumes=10**12)
+    vt.check_work(poi, raised)  # raising the limit explicitly allows it (nothing computed here)

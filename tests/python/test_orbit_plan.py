@@ -44,7 +44,7 @@ def test_constant_radius_plan_and_json_round_trip() -> None:
     again = vt.OrbitPlan.from_json(plan.to_json())
     assert again.times == plan.times and again.radii == plan.radii
     assert np.allclose(again.centers, plan.centers)
-    with pytest.raises(vt.VistrackError, match="uav.speed"):
+    with pytest.raises(vt.VistrackError, match=r"uav\.speed"):
         vt.constant_radius_plan(poi, 60.0, vt.Uav(speed=4.0))
     with pytest.raises(vt.VistrackError, match="radius"):
         vt.constant_radius_plan(poi, -1.0, vt.Uav())
@@ -68,7 +68,7 @@ def test_visibility_plan_json_derives_rates_and_validates_parameters() -> None:
     assert np.allclose(again.radius_rates, expected) and np.allclose(plan.radius_rates, expected)
     np.testing.assert_array_equal(again.reference.rates, plan.reference.rates)
     data["uav"]["speed"] = -3.0
-    with pytest.raises(vt.VistrackError, match="uav.speed = -3"):
+    with pytest.raises(vt.VistrackError, match=r"uav\.speed = -3"):
         vt.VisibilityOrbitPlan.from_json(json.dumps(data))
 
 
@@ -92,5 +92,5 @@ def test_rate_margin_tightens_algorithm_1_and_survives_json() -> None:
     assert smooth.reference.smooth and np.max(np.abs(smooth.reference.rates)) <= 7.5 * (1 + 1e-9)
     again = vt.VisibilityOrbitPlan.from_json(tight.to_json())
     assert again.planning.rate_margin == 0.5
-    with pytest.raises(vt.VistrackError, match="planning.rate_margin = 1"):
+    with pytest.raises(vt.VistrackError, match=r"planning\.rate_margin = 1"):
         vt.Planning(rate_margin=1.0)

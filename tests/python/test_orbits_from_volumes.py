@@ -10,30 +10,23 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.cities import STREET_BETWEEN_BLOCKS, four_blocks
 from vistrack import _core
 from vistrack.cli import main
 from vistrack.saved_volumes import arc_length_on_path
 
-
-def _square(cx: float, cy: float, half: float) -> np.ndarray:
-    return np.array([[cx - half, cy - half], [cx + half, cy - half], [cx + half, cy + half], [cx - half, cy + half]])
-
-
-WAYPOINTS = np.array([[-90.0, 0.0], [0.0, 0.0], [0.0, 90.0]])
 POI_SPEED, RESOLUTION = 5.0, 4.0
 
 
 @pytest.fixture(scope="module")
 def city(tmp_path_factory):
-    env = vt.Environment.from_buildings(
-        [(_square(-40, -40, 22), 40.0), (_square(40, -40, 22), 25.0), (_square(-40, 40, 22), 30.0),
-         (_square(40, 40, 22), 55.0)])
-    poi = vt.PoiPath(WAYPOINTS, POI_SPEED)
+    env = four_blocks()
+    poi = vt.PoiPath(STREET_BETWEEN_BLOCKS, POI_SPEED)
     uav = vt.Uav(speed=20.0, min_turn_radius=5.0, altitude=50.0)
     sensor = vt.Sensor(d_max=100.0)
     root = tmp_path_factory.mktemp("from-volumes")
     csv = root / "path.csv"
-    csv.write_text("".join(f"{x},{y}\n" for x, y in WAYPOINTS))
+    csv.write_text("".join(f"{x},{y}\n" for x, y in STREET_BETWEEN_BLOCKS))
     return env, poi, uav, sensor, csv
 
 
@@ -111,20 +104,20 @@ def test_save_binary_load_round_trip(city, tmp_path: Path) -> None:
     assert back.volume == vv.volume and back.d_max == vv.d_max and back.altitude_band is None
     assert np.array_equal(back.poi, vv.poi) and np.array_equal(back.near, vv.near) and np.array_equal(back.far, vv.far)
     assert np.array_equal(back.vertices, vv.vertices) and np.array_equal(back.faces, vv.faces)
-    with pytest.raises(vt.VistrackError, match="missing.bin.*does not exist"):
+    with pytest.raises(vt.VistrackError, match=r"missing\.bin.*does not exist"):
         vt.VisibilityVolume.load(tmp_path / "missing.bin")
     (tmp_path / "bad.bin").write_bytes((tmp_path / "a.bin").read_bytes()[:-9] + b"x" * 9)
-    with pytest.raises(vt.VistrackError, match="bad.bin"):
+    with pytest.raises(vt.VistrackError, match=r"bad\.bin"):
         vt.VisibilityVolume.load(str(tmp_path / "bad.bin"))
     with pytest.raises(vt.VistrackError, match="no-such-folder"):
         vv.save_binary(tmp_path / "no-such-folder" / "a.bin")
 
 
 def test_arc_length_on_path_projects_onto_the_polyline() -> None:
-    assert arc_length_on_path(WAYPOINTS, np.array([-45.0, 0.3])) == pytest.approx((45.0, 0.3))
-    assert arc_length_on_path(WAYPOINTS, np.array([0.0, 60.0])) == pytest.approx((150.0, 0.0))
-    assert arc_length_on_path(WAYPOINTS, np.array([-100.0, 0.0])) == pytest.approx((0.0, 10.0))  # clamped
-    assert arc_length_on_path(WAYPOINTS, np.array([3.0, 100.0])) == pytest.approx((180.0, np.hypot(3, 10)))
+    assert arc_length_on_path(STREET_BETWEEN_BLOCKS, np.array([-45.0, 0.3])) == pytest.approx((45.0, 0.3))
+    assert arc_length_on_path(STREET_BETWEEN_BLOCKS, np.array([0.0, 60.0])) == pytest.approx((150.0, 0.0))
+    assert arc_length_on_path(STREET_BETWEEN_BLOCKS, np.array([-100.0, 0.0])) == pytest.approx((0.0, 10.0))  # clamped
+    assert arc_length_on_path(STREET_BETWEEN_BLOCKS, np.array([3.0, 100.0])) == pytest.approx((180.0, np.hypot(3, 10)))
 
 
 def _error_line(capsys) -> str:

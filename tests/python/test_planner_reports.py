@@ -16,14 +16,13 @@ import pytest
 from shapely.geometry import Point, Polygon
 
 import vistrack as vt
-from report_checks import check_gif, check_page
+from support.paths import EXAMPLES
+from support.report_checks import check_gif, check_page
 from vistrack.cli import main
 from vistrack.io import load_environment
 from vistrack.plotting.interactive import DEFAULT_TIME_STEPS, decode_array
 from vistrack.report.loiter import footprint_rings
 
-REPO = Path(__file__).resolve().parents[2]
-EXAMPLES = REPO / "examples"
 LOITER = EXAMPLES / "loiter_4aoi.yaml"
 FAST = ["--frames", "5", "--duration", "1.5"]
 

@@ -14,15 +14,14 @@ import pytest
 from PIL import Image
 
 import vistrack as vt
-from headless_browser import find_chromium, load
-from report_checks import check_gif, check_page, plotly_figure
+from support.headless_browser import find_chromium, load
+from support.paths import REPO
+from support.report_checks import check_gif, check_page, plotly_figure
 from vistrack.cli import main
 from vistrack.plotting.animation import write_gif
 from vistrack.plotting.interactive import DEFAULT_TIME_STEPS, decode_array
 from vistrack.plotting.motion import MotionScene, Overlay, Sight, Track, circle_ring
 from vistrack.scenario import ReportOptions, Scenario
-
-REPO = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(scope="module")

@@ -8,6 +8,7 @@ import pytest
 import yaml
 
 import vistrack as vt
+from support.refusal import refuses
 from vistrack.scenario import Scenario, default_scenario_text
 
 
@@ -102,3 +103,13 @@ def test_unreadable_and_invalid_files(tmp_path: Path) -> None:
         Scenario.load(tmp_path / "missing.yaml")
     with pytest.raises(vt.VistrackError, match="not valid YAML"):
         Scenario.load(write(tmp_path, "uav: {speed: [1,"))
+
+
+@pytest.mark.sanitize
+def test_scenario_with_a_duplicated_section(tmp_path: Path) -> None:
+    """A scenario YAML with a duplicated section kept the last one without a word."""
+    from vistrack.scenario import Scenario
+
+    path = tmp_path / "twice.yaml"
+    path.write_text("environment: {demo: true}\nplanning: {spacing: 20.0}\nplanning: {spacing: 5.0}\n")
+    refuses(lambda: Scenario.load(path), "planning", "twice")

@@ -5,28 +5,27 @@ from __future__ import annotations
 
 import json
 import math
-import os
 import subprocess
 import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import vistrack as vt
-from conftest import standalone_executable
+from support.build_tree import standalone_executable
+from support.paths import REPO, SHARED_DATA
+from support.refusal import refuses
 from vistrack.cli import main
 
-REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "bench"))
-from closed_loop_reference import simulate_reference  # noqa: E402
+from closed_loop_reference import simulate_reference
 
 WAYPOINTS = np.array([[-150.0, -45.0], [-50.0, 45.0], [20.0, -35.0]])  # paper_slow.csv
 
 
 def _morphing_plan(uav: vt.Uav) -> vt.OrbitPlan:
     poi = vt.PoiPath(WAYPOINTS, 5.0)
-    times = list(np.arange(0.0, poi.duration, 6.0)) + [poi.duration]
+    times = [*np.arange(0.0, poi.duration, 6.0), poi.duration]
     radii = [158.0 - 31.0 * t / poi.duration + 10 * math.sin(t / 4) for t in times]  # R_i 158 -> R_f 127
     text = json.loads(vt.constant_radius_plan(poi, 100.0, uav).to_json())
     text["times"], text["radii"], text["max_radii"] = times, radii, radii
@@ -81,7 +80,7 @@ def test_line_of_sight_callable_and_bad_input():
     assert np.all(seen["z"][0] == uav.altitude) and np.all(seen["z"][1] == 0.0)
     with pytest.raises(vt.VistrackError, match="x0"):
         vt.simulate(plan, uav, np.array([math.nan, 0.0, 0.0]), vt.Control())
-    with pytest.raises(vt.VistrackError, match="uav.speed"):
+    with pytest.raises(vt.VistrackError, match=r"uav\.speed"):
         vt.simulate(plan, vt.Uav(speed=4.0), np.zeros(3), vt.Control())
     text = json.loads(plan.to_json())
     text["radii"][1] = text["radii"][0] + 30.0 * (text["times"][1] - text["times"][0])
@@ -133,7 +132,7 @@ def test_standalone_executable_matches_python(tmp_path):
     assert csv.read_text() == direct.to_csv()
     bad = subprocess.run([str(exe), "--plan", str(plan_path), "--beta", "abc"], capture_output=True, text=True)
     assert bad.returncode == 2 and "--beta" in bad.stderr
-    city = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data")) / "charlotte" / "buildings.geojson"
+    city = SHARED_DATA / "charlotte" / "buildings.geojson"
     if city.exists():
         seen = subprocess.run([str(exe), "--plan", str(plan_path), "--out", str(csv), "--map", str(city),
                                "--min-turn-radius", "5", "--altitude", "50", "--beta", "0.5", "--k-psi", "40",
@@ -180,7 +179,8 @@ def test_campus_flight_test_visibility_matches_the_paper(campus):
     def visibility(plan):
         orbit = vt.OrbitState(center=np.asarray(plan.centers)[0], center_velocity=np.asarray(poi.velocity(0.0)),
                               radius=plan.radii[0], radius_rate=plan.radius_rate(0.0))
-        return vt.simulate(plan, uav, vt.orbit_configuration(0.0, orbit, uav.speed, "ccw"), control, scene).visibility_fraction
+        start = vt.orbit_configuration(0.0, orbit, uav.speed, "ccw")
+        return vt.simulate(plan, uav, start, control, scene).visibility_fraction
 
     for radius, paper in [(11.2, 1.00), (23.4, 0.840), (35.0, 0.640)]:
         assert visibility(vt.constant_radius_plan(poi, radius, uav)) == pytest.approx(paper, abs=0.03), radius
@@ -189,3 +189,27 @@ def test_campus_flight_test_visibility_matches_the_paper(campus):
     # interpolated orbit can leave the VPs (the paper's stated assumption).
     assert visibility(plan) >= 0.95
     assert visibility(plan) > visibility(vt.constant_radius_plan(poi, 23.4, uav))
+
+
+@pytest.mark.sanitize
+def test_line_of_sight_callable_returning_nan() -> None:
+    """A line-of-sight callable returning NaN counted as visible (visibility_fraction 1.0)."""
+    poi = vt.PoiPath(np.array([[-290.0, -210.0], [-100.0, -210.0]]), 5.0)
+    uav = vt.Uav(altitude=200.0)
+    plan = vt.constant_radius_plan(poi, 120.0, uav)
+
+    def nan_sight(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        return np.full(len(a), np.nan)
+
+    refuses(lambda: vt.simulate(plan, uav, (-170.0, -210.0, 1.57), vt.Control(), line_of_sight=nan_sight),
+            "line_of_sight")
+
+
+@pytest.mark.sanitize
+def test_simulate_refuses_a_uav_under_the_ground() -> None:
+    """simulate accepted a UAV below the ground (fraction 0.0) that plan_orbits rejects."""
+    env = vt.Environment.demo()
+    poi = vt.PoiPath(np.array([[-290.0, -210.0], [-100.0, -210.0]]), 5.0)
+    plan = vt.constant_radius_plan(poi, 120.0, vt.Uav())
+    refuses(lambda: vt.simulate(plan, vt.Uav(altitude=-5.0), (-170.0, -210.0, 1.57), vt.Control(), env),
+            "uav.altitude = -5", "above the ground")

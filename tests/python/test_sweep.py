@@ -18,14 +18,13 @@ import pytest
 import yaml
 
 import vistrack as vt
-from build_tree import dask_preload_arguments
+from support.build_tree import dask_preload_arguments
+from support.paths import REPO, SHARED_DATA
+from support.sweeps import without_run_columns
 from vistrack.cli import main
 from vistrack.io import read_results_table, read_roads, read_route, write_results_table
 from vistrack.sweep import SERIAL, SweepSpec
 from vistrack.sweep.kinds import flatten
-
-REPO = Path(__file__).resolve().parents[2]
-DEMO = REPO / "python" / "vistrack" / "scenarios" / "demo.yaml"
 
 # A cheap tracking case on the demo city (about 1.5 s): a 385 m straight street, 2-degree VVs.
 CHEAP_BASE: dict[str, Any] = {
@@ -39,10 +38,6 @@ CHEAP_BASE: dict[str, Any] = {
 }
 FOUR_CASES = {"name": "four", "base": CHEAP_BASE,
               "parameters": {"uav.altitude": [180.0, 220.0], "control.beta": [0.02, 0.03]}}
-
-
-def without_run_columns(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    return [{k: v for k, v in row.items() if not k.startswith("run_")} for row in rows]
 
 
 def alone(case: vt.sweep.Case) -> dict[str, Any]:
@@ -141,7 +136,7 @@ def test_examples_are_valid_sweep_files() -> None:
     examples = sorted((REPO / "examples").glob("sweep_*.yaml"))
     assert (REPO / "examples" / "sweep_small.yaml") in examples
     for path in examples:
-        if "charlotte" in path.name and not (REPO.parent / "shared" / "data").is_dir():
+        if "charlotte" in path.name and not SHARED_DATA.is_dir():
             continue
         spec = SweepSpec.load(path)
         assert spec.case_count >= 1 and spec.name == yaml.safe_load(path.read_text()).get("name", path.stem)

@@ -1,6 +1,6 @@
-"""The sweep kinds of the loiter and follow planners (issue 17 for issues 14 and 15): rows equal
-running each case directly through the planners' public API, serially and on a LocalCluster,
-bad bases name the key, and the declared metric names match what a run returns."""
+"""The sweep kinds of the loiter and follow planners: rows equal running each case directly through
+the planners' public API, serially and on a LocalCluster, bad bases name the key, and the declared
+metric names match what a run returns."""
 
 from __future__ import annotations
 
@@ -13,17 +13,11 @@ import numpy as np
 import pytest
 
 import vistrack as vt
+from support.paths import EXAMPLES
+from support.sweeps import without_run_columns
 from vistrack.follow_scenario import FollowScenario
 from vistrack.sweep import SERIAL, SweepSpec
 from vistrack.sweep.kinds import flatten
-
-REPO = Path(__file__).resolve().parents[2]
-EXAMPLES = REPO / "examples"
-
-
-def without_run_columns(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    return [{k: v for k, v in row.items() if not k.startswith("run_")} for row in rows]
-
 
 # --- loiter ---------------------------------------------------------------------------------------------
 

@@ -4,23 +4,17 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 import vistrack as vt
+from support.cities import STREET_BETWEEN_BLOCKS, four_blocks
 from vistrack import _core
-
-
-def _square(cx: float, cy: float, half: float) -> np.ndarray:
-    return np.array([[cx - half, cy - half], [cx + half, cy - half], [cx + half, cy + half], [cx - half, cy + half]])
 
 
 @pytest.fixture(scope="module")
 def small_city():
-    env = vt.Environment.from_buildings(
-        [(_square(-40, -40, 22), 40.0), (_square(40, -40, 22), 25.0), (_square(-40, 40, 22), 30.0),
-         (_square(40, 40, 22), 55.0)])
-    poi = vt.PoiPath(np.array([[-90.0, 0.0], [0.0, 0.0], [0.0, 90.0]]), 5.0)
+    env = four_blocks()
+    poi = vt.PoiPath(STREET_BETWEEN_BLOCKS, 5.0)
     uav = vt.Uav(speed=20.0, min_turn_radius=5.0, altitude=50.0)
     sensor = vt.Sensor(d_max=100.0)
     planning = vt.Planning(spacing=30.0, cutoff=2e5, resolution_deg=4.0)

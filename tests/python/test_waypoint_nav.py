@@ -6,18 +6,23 @@ from __future__ import annotations
 import json
 import math
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
 
 import vistrack as vt
+from support.paths import REPO
+from support.refusal import refuses
+from vistrack import VistrackError
 from vistrack import waypoint_nav as wn
 from vistrack.cli import main
 from vistrack.io import read_route
 
-REPO = Path(__file__).resolve().parents[2]
 ROUTE = REPO / "examples" / "waypoints_paper.csv"
 R = wn.DEFAULTS["turn_radius"]
+
+pytestmark = pytest.mark.sanitize  # the input-facing surface (scripts/sanitize.sh)
 
 
 @pytest.fixture(scope="module")
@@ -228,3 +233,31 @@ def test_cli_bad_route_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture
     bad.write_text("x,y\n0,0\n")
     assert main(["waypoints", str(bad), "--out", str(tmp_path / "o")]) == 1
     assert "ROUTE" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("kwargs, fragment", [
+    ({"turn_radius": 1e300}, "turn_radius = 1e+300"),
+    ({"speed": math.nan}, "speed = nan"),
+    ({"dt": 1e-12}, "more than 1e8 steps"),
+    ({"start": (0.0, 0.0, math.inf)}, "start.psi = inf"),
+    ({"start": (1e300, 0.0, 0.0)}, "start.x = 1e+300"),
+])
+def test_waypoint_navigation_refuses_out_of_range_inputs(kwargs: dict[str, Any], fragment: str) -> None:
+    refuses(lambda: vt.waypoint_nav.fly([[0.0, 0.0], [200.0, 0.0], [200.0, 200.0]], **kwargs), fragment)
+
+
+def test_waypoint_navigation_refuses_far_or_missing_waypoints() -> None:
+    refuses(lambda: vt.waypoint_nav.fly([[0.0, 0.0], [1e300, 0.0]]), "1e+300")
+    refuses(lambda: vt.waypoint_nav.fly([[math.nan, 0.0], [200.0, 0.0]]), "nan")
+    with pytest.raises(VistrackError):
+        vt.waypoint_nav.fly(np.zeros((0, 2)))
+    refuses(lambda: vt.flight.Wind(east=1e300, north=0.0), "wind.east = 1e+300", "[-10000, 10000] m/s")
+    # Fuzz finding (tests/fuzz/regressions/arrays/reachability-nan-pose): a NaN pose gave NaNs.
+    wn = vt.waypoint_nav
+    refuses(lambda: wn.reachability((math.nan, 0.0, 0.0), np.zeros((2, 2)), 10.0), "pose[0] = nan")
+    refuses(lambda: wn.reachability((0.0, 0.0, 0.0), np.array([[1e300, 0.0]]), 10.0), "points[0][0] = 1e+300")
+    refuses(lambda: wn.reachability((0.0, 0.0, 0.0), np.zeros((1, 2)), 1e300), "turn_radius = 1e+300")
+    refuses(lambda: wn.turning_point((0.0, 0.0, 0.0), (1e300, 0.0), (0.0, 5.0), 1.0), "w_next.x = 1e+300")
+    refuses(lambda: wn.turning_point((0.0, 0.0, 0.0), (9e6, 0.0), (9e6, 5.0), 1.0), "turn_radius = 1",
+            "at most 1e6 turn radii")
+    assert np.all(np.isfinite(wn.reachability((0.0, 0.0, 1e9), np.array([[1e7, -1e7], [0.0, 0.0]]), 1e-6)))

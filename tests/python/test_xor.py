@@ -3,18 +3,14 @@ Charlotte VVs."""
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
 import vistrack as vt
-
-
-def box(lo, hi):
-    lo, hi = np.asarray(lo, float), np.asarray(hi, float)
-    v = np.array([[hi[0] if i & 1 else lo[0], hi[1] if i & 2 else lo[1], hi[2] if i & 4 else lo[2]] for i in range(8)])
-    f = np.array([[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
-                  [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]], dtype=np.int32)
-    return v, f
+from support.meshes import box
+from support.refusal import refuses
 
 
 def test_mesh_xor_of_boxes_is_analytic():
@@ -75,7 +71,7 @@ def test_xor_paths_against_each_other_and_monte_carlo(city, charlotte, pair):
     - the grid path (cell intervals) is within 1 % of them (measured 0.01-0.04 % on these pairs,
       at most 1 % on the 26 pairs of paper_slow and paper_small);
     - each is within 1 % of the Monte Carlo estimate, plus three standard deviations."""
-    env, scene = city
+    _env, scene = city
     a_point, b_point, d_max = CHARLOTTE_PAIRS[pair]
     ga = np.array(a_point)
     if b_point is None:  # 20 m further along paper_small
@@ -102,7 +98,7 @@ def test_radial_path_is_exact_on_close_pairs(city, charlotte):
     """Pairs 5 m apart (where adaptive insertion ends up): the XOR is small, so the grid path's
     cell sampling is off by up to 4 % there, while the radial path still equals CGAL on the same
     meshes (nudge allowance 1e-5)."""
-    env, scene = city
+    _env, scene = city
     path = vt.PoiPath.from_csv(str(charlotte / "paths" / "paper_slow.csv"), 5.0)
     ga, gb = (np.ravel(scene.poi_on_surface(np.ravel(path.position(t)))) for t in (40.0, 41.0))
     a = vt._core.visibility_volume(scene, ga, 400.0, None, 1.0)
@@ -119,7 +115,7 @@ def test_staggered_cell_rays_keep_the_grid_path_close_to_a_fine_grid(charlotte, 
     paper_slow (d_max 400 m) and paper_small (100 m): median error <= 0.25 % (measured 0.11 % and
     0.05 %; rays through the cell centres gave 0.66 % and 0.31 %, because a vertical building edge
     then puts the same quantization error in every row it crosses)."""
-    env, scene = city
+    _env, scene = city
     errors = []
     for name, d_max in (("paper_slow", 400.0), ("paper_small", 100.0)):
         path = vt.PoiPath.from_csv(str(charlotte / "paths" / f"{name}.csv"), 5.0)
@@ -133,7 +129,7 @@ def test_staggered_cell_rays_keep_the_grid_path_close_to_a_fine_grid(charlotte, 
 
 
 def test_open_terrain_is_zero_in_the_poi_frame_only(city):
-    env, scene = city
+    _env, scene = city
     # Far outside the city nothing occludes: both VVs are the same hemisphere about their POI.
     ga, gb = np.array([3000.0, 3000.0, 0.5]), np.array([3030.0, 3000.0, 0.5])
     a = vt._core.visibility_volume(scene, ga, 100.0, None, 4.0)
@@ -163,3 +159,13 @@ def test_radial_path_on_uneven_terrain_equals_cgal(campus):
     radial = vt.xor_volume(a, b)
     assert radial == vt.radial_xor_volume(a, b)
     assert radial == pytest.approx(vt.xor_volume(a, b, method="mesh", time_limit=300.0), rel=2e-4)
+
+
+@pytest.mark.sanitize
+def test_mesh_xor_with_a_huge_perturbation() -> None:
+    """xor_volume(..., method="mesh", perturbation=1e300) returned a wrong volume."""
+    env = vt.Environment.demo()
+    a = vt.visibility_volume(env, (-290.0, -210.0, 0.5), 200.0, resolution_deg=30.0)
+    b = vt.visibility_volume(env, (-280.0, -210.0, 0.5), 200.0, resolution_deg=30.0)
+    refuses(lambda: vt.xor_volume(a, b, method="mesh", perturbation=1e300), "perturbation = 1e+300")
+    refuses(lambda: vt.xor_volume(a, b, method="mesh", perturbation=math.nan), "perturbation = nan")

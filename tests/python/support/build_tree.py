@@ -12,10 +12,12 @@ from __future__ import annotations
 import glob
 import importlib.util
 import os
+import shutil
 import sys
+import sysconfig
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 
 
 def use_build_tree() -> None:
@@ -42,6 +44,19 @@ def dask_preload_arguments() -> list[str]:
     """The `dask scheduler` / `dask worker` options that preload this file (the scheduler unpickles
     the tasks too; the worker's --preload overrides the setting)."""
     return ["--preload", str(Path(__file__).resolve())] if os.environ.get("VISTRACK_BUILD_DIR") else []
+
+
+def standalone_executable(name: str) -> Path | None:
+    """A standalone executable (vistrack_vv, vistrack_sim, vistrack_dubins): from the CMake build
+    tree given by VISTRACK_BUILD_DIR, else installed beside the ``vistrack`` command."""
+    build_dir = os.environ.get("VISTRACK_BUILD_DIR")
+    candidates = [Path(build_dir) / "cpp" / name] if build_dir else []
+    candidates.append(Path(sysconfig.get_path("scripts")) / name)
+    for candidate in candidates:
+        if os.access(candidate, os.X_OK):
+            return candidate
+    found = shutil.which(name)
+    return Path(found) if found else None
 
 
 use_build_tree()  # as a Dask preload script, on import

@@ -4,7 +4,7 @@ Chromium writes every console message to stderr as ``INFO:CONSOLE`` whatever its
 page is loaded from a copy with a small script first in <head> that reports console.error calls,
 uncaught errors, rejected promises and, once plotly has drawn, the figure's trace count, each
 as a tagged console.log line. Run as a script to take a screenshot of a report by hand:
-``python tests/python/headless_browser.py report.html shot.png``.
+``python tests/python/support/headless_browser.py report.html shot.png``.
 """
 
 from __future__ import annotations

@@ -1,0 +1,2 @@
+"""Helpers the tests share (imported as ``support.<module>``; conftest.py puts tests/python on the
+path)."""
