@@ -14,11 +14,12 @@ import numpy as np
 
 from .. import schema
 from .._core import VistrackError
-from ..mission import MISSION_SUFFIXES, Georeference, Mission, export_orbit_plan
+from ..mission import MISSION_SUFFIXES, Georeference, Mission
+from ..tracking.to_mission import export_orbit_plan
 
 if TYPE_CHECKING:
     from .._core import Environment, OrbitPlan
-    from ..scenario import ReportOptions
+    from ..report_options import ReportOptions
 
 
 class UsageError(VistrackError):
@@ -254,7 +255,7 @@ def add_report_arguments(parser: Any) -> None:
 def report_options(args: argparse.Namespace, base: Optional[ReportOptions] = None) -> ReportOptions:
     """``base`` (a scenario's report section, or the defaults) overridden by the command line,
     validated; errors name the option (``--frames = 1: ...``)."""
-    from ..scenario import ReportOptions
+    from ..report_options import ReportOptions
 
     options = base if base is not None else ReportOptions()
     options.animation = options.animation and not args.no_animation

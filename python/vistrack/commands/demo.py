@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from ..scenario import Scenario
+from ..tracking.scenario import Scenario
 from . import add_report_arguments, output_folder, report_options
 from .run import run_scenario
 

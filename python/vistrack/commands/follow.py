@@ -15,7 +15,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from ..follow_scenario import FollowScenario
+from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
 from . import (
     DEFAULT_EXPORT_ORIGIN,

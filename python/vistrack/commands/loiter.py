@@ -16,7 +16,8 @@ import argparse
 from functools import partial
 from pathlib import Path
 
-from .. import loiter, loiter_study
+from .. import loiter
+from ..loiter import study as loiter_study
 from ..progress import Progress
 from ..report import loiter as report
 from . import (

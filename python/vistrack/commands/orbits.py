@@ -8,11 +8,11 @@ from pathlib import Path
 
 from .. import _core, schema
 from ..io import footprint_environment, load_environment, read_plan
-from ..metrics import metric_along_path
 from ..plotting.orbits import figure_orbits, figure_radius
 from ..progress import Progress
 from ..report.orbits import write_orbits
-from ..saved_volumes import plan_from_volumes
+from ..tracking.metrics import metric_along_path
+from ..tracking.saved_volumes import plan_from_volumes
 from . import (
     UsageError,
     add_export_arguments,

@@ -7,7 +7,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from ..scenario import Scenario, default_scenario_text
+from ..tracking.scenario import Scenario, default_scenario_text
 from . import (
     UsageError,
     add_export_arguments,
@@ -46,8 +46,8 @@ def register(subparsers: Any) -> None:
 def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool, export: Sequence[str] = ()) -> int:
     """Shared by ``run`` and ``demo``: run, then print the headline numbers and the report path
     (and write the --export files)."""
-    from ..pipeline import run
     from ..report import percent
+    from ..report.run import run
 
     result = run(scenario, out, quiet=quiet, cache_dir=cache)
     m = result.metrics

@@ -14,7 +14,7 @@ from pathlib import Path
 from .. import schema
 from ..progress import Progress
 from ..report.tune import write_tuning
-from ..tuning import tune_beta
+from ..tracking.tuning import tune_beta
 from . import checked, length, number, output_folder, speed
 
 

@@ -16,7 +16,7 @@ from .. import waypoint_nav as wn
 from ..flight import Wind
 from ..io import read_route
 from ..progress import Progress
-from ..report.waypoints import write_waypoints
+from ..report.waypoint_nav import write_waypoints
 from . import (
     add_export_arguments,
     add_report_arguments,

@@ -12,12 +12,13 @@ from typing import Any, Optional
 import numpy as np
 
 from .. import loiter
-from ..io import write_json, write_loiter_samples_csv
+from ..io import write_json
 from ..loiter import METHOD_NAMES
-from ..loiter_study import MethodRun, summary, wind_summary
+from ..loiter.files import write_loiter_samples_csv
+from ..loiter.study import MethodRun, summary, wind_summary
 from ..plotting import loiter as figures
 from ..plotting.motion import Line, MotionScene, Overlay, Track, circle_ring, ellipse_ring, sampled
-from ..scenario import ReportOptions
+from ..report_options import ReportOptions
 from .document import Document, Heading, Picture, Table
 from .media import write_media
 

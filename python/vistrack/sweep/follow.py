@@ -21,7 +21,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Mapping
 
-from ..follow_scenario import TOP_KEYS, FollowScenario
+from ..follow.scenario import TOP_KEYS, FollowScenario
 from ..schema import fail, number, resolve_path
 from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, flatten, read_base, register_kind, set_dotted
 
