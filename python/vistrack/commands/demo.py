@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from ..tracking.scenario import Scenario
-from . import add_report_arguments, output_folder, report_options
+from .output import add_report_arguments, output_folder, report_options
 from .run import run_scenario
 
 DEFAULT_OUT = Path("vistrack-out") / "demo"

@@ -17,14 +17,9 @@ from pathlib import Path
 
 from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
-from . import (
-    DEFAULT_EXPORT_ORIGIN,
-    add_export_arguments,
-    add_report_arguments,
-    export_mission,
-    number,
-    report_options,
-)
+from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
+from .output import add_report_arguments, report_options
+from .types import number
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

@@ -20,19 +20,10 @@ from .. import loiter
 from ..loiter import study as loiter_study
 from ..progress import Progress
 from ..report import loiter as report
-from . import (
-    DEFAULT_EXPORT_ORIGIN,
-    UsageError,
-    add_export_arguments,
-    add_report_arguments,
-    count,
-    export_missions,
-    finite_numbers,
-    length,
-    output_folder,
-    positive_numbers,
-    report_options,
-)
+from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_missions
+from .lists import finite_numbers, positive_numbers
+from .output import add_report_arguments, output_folder, report_options
+from .types import UsageError, count, length
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

@@ -13,20 +13,11 @@ from ..progress import Progress
 from ..report.orbits import write_orbits
 from ..tracking.metrics import metric_along_path
 from ..tracking.saved_volumes import plan_from_volumes
-from . import (
-    UsageError,
-    add_export_arguments,
-    check_exports,
-    checked,
-    count,
-    export_plan,
-    length,
-    number,
-    output_folder,
-    positive_numbers,
-    speed,
-)
-from . import coordinate as coordinate_type
+from .export import add_export_arguments, check_exports, export_plan
+from .lists import positive_numbers
+from .output import output_folder
+from .types import UsageError, checked, count, length, number, speed
+from .types import coordinate as coordinate_type
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

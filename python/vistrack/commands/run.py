@@ -8,16 +8,9 @@ from pathlib import Path
 from typing import Any
 
 from ..tracking.scenario import Scenario, default_scenario_text
-from . import (
-    UsageError,
-    add_export_arguments,
-    add_report_arguments,
-    check_exports,
-    count,
-    export_plan,
-    output_folder,
-    report_options,
-)
+from .export import add_export_arguments, check_exports, export_plan
+from .output import add_report_arguments, output_folder, report_options
+from .types import UsageError, count
 
 
 def register(subparsers: Any) -> None:

@@ -16,7 +16,9 @@ from ..io import load_environment, read_plan
 from ..report.simulation import write_simulation
 from ..tracking.metrics import CONVERGE_AFTER
 from ..tracking.pipeline import simulate_with_baselines, start_on_orbit
-from . import checked, configuration, coordinate, length, number, output_folder, speed
+from .lists import configuration
+from .output import output_folder
+from .types import checked, coordinate, length, number, speed
 
 
 def fixed_step(key: str, value: object) -> float:

@@ -15,7 +15,8 @@ from .. import schema
 from ..progress import Progress
 from ..report.tune import write_tuning
 from ..tracking.tuning import tune_beta
-from . import checked, length, number, output_folder, speed
+from .output import output_folder
+from .types import checked, length, number, speed
 
 
 def betas(key: str, text: str) -> list[float]:
