@@ -170,5 +170,5 @@ def _environment_from_geojson(path: Any, origin: Any = None,
     return _from_geojson(path, origin, project)
 
 
-_environment_from_geojson.__doc__ = _from_geojson.__doc__
+_environment_from_geojson.__doc__ = (_from_geojson.__doc__ or "").partition("\n\n")[2]  # without the signature line
 Environment.from_geojson = staticmethod(_environment_from_geojson)  # type: ignore[method-assign]

@@ -1,5 +1,9 @@
-"""The architecture holds: a lower C++ area never includes a higher one (DESIGN.md, Layers), and the
-Python library never imports its command line."""
+"""The architecture holds (DESIGN.md, Layers and The Python layer): a lower C++ area never includes
+a higher one; over the Python package's whole import graph (imports in functions and under
+TYPE_CHECKING included) there is no circle, the products (tracking, waypoint_nav, loiter, follow)
+never import one another, the models never import report, plotting, sweep or commands, and the
+library never imports its command line; the compiled module imports no Python; modules stay small
+(450 lines, command modules 120); ``import vistrack`` loads neither matplotlib nor Dask."""
 
 from __future__ import annotations
 

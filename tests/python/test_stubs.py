@@ -7,6 +7,8 @@ from pathlib import Path
 
 import pytest
 
+import vistrack  # noqa: F401  (the stubs show the methods the package attaches: to_mission, from_geojson)
+
 REPO = Path(__file__).resolve().parents[2]
 
 

@@ -81,7 +81,7 @@ def check_exports(paths: Sequence[str], georeference: Georeference | None, map_p
 
 def export_plan(paths: Sequence[str], plan: OrbitPlan, georeference: Georeference | None, env: Environment | None,
                 **options: Any) -> None:
-    """Write each --export file of an orbit plan (vistrack.mission.export_orbit_plan) and print
+    """Write each --export file of an orbit plan (vistrack.tracking.to_mission.export_orbit_plan) and print
     what was written."""
     if paths:
         reference = export_georeference(paths, georeference, env)

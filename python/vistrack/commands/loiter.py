@@ -90,7 +90,7 @@ def run(args: argparse.Namespace) -> int:
         if len(scenarios) > 1:
             written += report.write_table(args.out, scenarios, rows)
             print((args.out / "table.md").read_text(encoding="utf-8"), end="")
-    if args.export:  # one scenario's plans as autopilot missions (vt.mission.loiter_plan_mission)
+    if args.export:  # one scenario's plans as autopilot missions (vistrack.loiter.to_mission)
         scenario = (loiter.load_scenario(args.scenarios[0]) if args.scenarios
                     else next(loiter_study.random_scenarios(1, args.seed, args.aois)))
         altitude = scenario.camera.altitude if args.altitude is None else args.altitude

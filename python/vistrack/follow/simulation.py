@@ -115,7 +115,7 @@ class FollowResult:
                    firmware: str = "ardupilot", altitude_mode: str = "relative") -> Mission:
         """The generated 1 Hz waypoints as an autopilot mission, decimated by Douglas-Peucker at
         ``tolerance`` m (0: every waypoint), home at the UAV's start; ``speed`` (the UAV's airspeed)
-        adds DO_CHANGE_SPEED. See :func:`vistrack.mission.follow_mission`."""
+        adds DO_CHANGE_SPEED. See :func:`vistrack.follow.to_mission.follow_mission`."""
         return follow_mission(self.waypoints, georeference, altitude, home=self.state[0, :2], speed=speed,
                               tolerance=tolerance, return_to_launch=return_to_launch, firmware=firmware,
                               altitude_mode=altitude_mode)

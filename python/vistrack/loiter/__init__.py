@@ -10,7 +10,7 @@ covered at a time step when at least 75 % of its disk lies in the footprint.
 - ``scenario``: a scenario's settings, seeded random scenarios; ``files``: its YAML, plans as CSV
 - ``flying``: a plan flown through the flight layer in wind, and scored
 - ``study``: every method on a scenario, random studies at scale (``vistrack.loiter_study``)
-- ``to_mission``: a plan as an autopilot mission (``Plan.to_mission``)
+- ``to_mission``: a plan as an autopilot mission; ``methods`` attaches it as ``Plan.to_mission``
 
 >>> import vistrack as vt
 >>> plan = vt.loiter.plan([(300, 200), (600, 500)], method="ldlpp")
@@ -20,7 +20,7 @@ covered at a time step when at least 75 % of its disk lies in the footprint.
 
 from __future__ import annotations
 
-from . import to_mission as _to_mission  # noqa: F401  (attaches Plan.to_mission)
+from . import methods as _methods  # noqa: F401  (attaches Plan.to_mission)
 from .files import (
     load_scenario,
 )

@@ -100,16 +100,3 @@ def loiter_plan_mission(plan: LoiterPlan, georeference: Georeference | Sequence[
     if return_to_launch:
         builder.return_to_launch()
     return builder.build()
-
-
-def _to_mission(self: LoiterPlan, georeference: Georeference | Sequence[float], altitude: float, *,
-                speed: float | None = None, max_step_deg: float = 30.0, acceptance_radius: float | None = None,
-                return_to_launch: bool = False, firmware: str = "ardupilot",
-                altitude_mode: str = "relative") -> Mission:
-    return loiter_plan_mission(self, georeference, altitude, speed=speed, max_step_deg=max_step_deg,
-                               acceptance_radius=acceptance_radius, return_to_launch=return_to_launch,
-                               firmware=firmware, altitude_mode=altitude_mode)
-
-
-_to_mission.__doc__ = loiter_plan_mission.__doc__
-LoiterPlan.to_mission = _to_mission  # type: ignore[attr-defined]  # the compiled class gains a Python method

@@ -30,7 +30,16 @@ from __future__ import annotations
 from .._moved import forward
 from ..georeference import Georeference, project_lon_lat
 from .builder import MissionBuilder, arc_points, simplify_route, tangent_entry, tangent_exit
-from .items import ALTITUDE_MODES, FIRMWARE_TYPES, MISSION_SUFFIXES, Command, Frame, MissionItem
+from .items import (
+    ALTITUDE_MODES,
+    FIRMWARE_TYPES,
+    MISSION_SUFFIXES,
+    VEHICLE_FIXED_WING,
+    WPL_HEADER,
+    Command,
+    Frame,
+    MissionItem,
+)
 from .model import Mission, mission_geojson, plan_json, waypoints_text
 from .reader import load
 
@@ -42,7 +51,7 @@ __getattr__ = forward(__name__, {
 })
 
 __all__ = [
-    "ALTITUDE_MODES", "FIRMWARE_TYPES", "MISSION_SUFFIXES", "Command", "Frame", "Georeference", "Mission",
-    "MissionBuilder", "MissionItem", "arc_points", "load", "mission_geojson", "plan_json", "project_lon_lat",
-    "simplify_route", "tangent_entry", "tangent_exit", "waypoints_text",
+    "ALTITUDE_MODES", "FIRMWARE_TYPES", "MISSION_SUFFIXES", "VEHICLE_FIXED_WING", "WPL_HEADER", "Command", "Frame",
+    "Georeference", "Mission", "MissionBuilder", "MissionItem", "arc_points", "load", "mission_geojson",
+    "plan_json", "project_lon_lat", "simplify_route", "tangent_entry", "tangent_exit", "waypoints_text",
 ]

@@ -9,8 +9,8 @@ from enum import IntEnum
 from ..georeference import degrees
 from ..schema import fail
 
-__all__ = ["ALTITUDE_MODES", "FIRMWARE_TYPES", "MISSION_SUFFIXES", "Command", "Frame", "MissionItem", "check_item",
-           "qgc_altitude_mode"]
+__all__ = ["ALTITUDE_MODES", "FIRMWARE_TYPES", "MISSION_SUFFIXES", "VEHICLE_FIXED_WING", "WPL_HEADER", "Command",
+           "Frame", "MissionItem", "check_item", "qgc_altitude_mode"]
 
 
 class Command(IntEnum):
@@ -68,6 +68,7 @@ class MissionItem:
 
 
 def check_item(item: MissionItem, key: str) -> None:
+    """An item's command, parameters and coordinates checked; errors name ``key``."""
     if not isinstance(item, MissionItem):
         raise fail(key, item, "must be a MissionItem")
     if not 0 <= int(item.command) <= 65535:
@@ -83,6 +84,7 @@ def check_item(item: MissionItem, key: str) -> None:
 
 
 def qgc_altitude_mode(item: MissionItem, key: str) -> int:
+    """QGroundControl's AltitudeMode of an item with a coordinate."""
     try:
         return _QGC_ALTITUDE_MODE[Frame(item.frame)]
     except (ValueError, KeyError):

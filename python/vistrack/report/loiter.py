@@ -189,7 +189,7 @@ WIND_NOTE = "Median (min-max) over scenarios and wind directions; the guidance d
 
 
 def wind_table(rows: Sequence[dict[str, Any]]) -> Table:
-    """Per method and wind speed (loiter_study.wind_summary rows): the share of the loiter time with
+    """Per method and wind speed (vistrack.loiter.study.wind_summary rows): the share of the loiter time with
     the AOI covered, flight and covered time against the plan, the largest distance off it."""
     def q(values: Sequence[float], scale: float = 1.0, digits: int = 0) -> str:
         return f"{values[1] * scale:.{digits}f} ({values[0] * scale:.{digits}f}-{values[2] * scale:.{digits}f})"

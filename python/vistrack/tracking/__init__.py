@@ -5,11 +5,13 @@
   (``vt.run`` in ``vistrack.report.run`` adds the report folder)
 - ``metrics``: plan and simulation summaries; ``tuning``: the guidance gain beta (Lemma 7)
 - ``saved_volumes``: orbit plans from VV files saved by ``vistrack volumes``
-- ``to_mission``: an orbit plan as an autopilot mission (``OrbitPlan.to_mission``)
+- ``to_mission``: an orbit plan as an autopilot mission; ``methods`` attaches it as
+  ``OrbitPlan.to_mission``
 """
 
 from __future__ import annotations
 
+from . import methods as _methods  # noqa: F401  (attaches OrbitPlan.to_mission)
 from .pipeline import METRIC_SPACINGS, closed_loop, compute, simulate_with_baselines, start_on_orbit
 from .result import RunResult
 from .scenario import EnvironmentSpec, PoiSpec, ReportOptions, Scenario, default_scenario_text, road_route

@@ -102,14 +102,3 @@ def export_orbit_plan(path: str | Path, plan: OrbitPlan, georeference: Georefere
     write_geojson(feature_collection(features, origin=[georeference.lat, georeference.lon, georeference.alt]),
                      path)
     return f"wrote {path}: {len(features)} GeoJSON features in WGS84"
-
-
-def _to_mission(self: OrbitPlan, georeference: Georeference | Sequence[float], altitude: float | None = None, *,
-                direction: str = "ccw", speed: float | None = None, start: ArrayLike | None = None,
-                end: str = "loiter", firmware: str = "ardupilot", altitude_mode: str = "relative") -> Mission:
-    return orbit_plan_mission(self, georeference, altitude, direction=direction, speed=speed, start=start, end=end,
-                              firmware=firmware, altitude_mode=altitude_mode)
-
-
-_to_mission.__doc__ = orbit_plan_mission.__doc__
-OrbitPlan.to_mission = _to_mission  # type: ignore[attr-defined]  # the compiled class gains a Python method
