@@ -1,5 +1,5 @@
 """A loiter plan as the mission an autopilot flies along the planned path
-(``vt.loiter.Plan.to_mission``, attached here)."""
+(``vt.loiter.Plan.to_mission``: see ``methods``)."""
 
 from __future__ import annotations
 

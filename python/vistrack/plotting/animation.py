@@ -22,7 +22,7 @@ from .city import footprint_path, plot_buildings
 from .common import pyplot
 from .motion import OCCLUDED_COLOR, VISIBLE_COLOR, MotionScene, Track
 
-# Defaults of the animation options (the scenario's report section and the commands use these).
+# Size of the GIF's frames (frames and duration: report_options).
 DEFAULT_SIZE_IN = 5.5
 DEFAULT_DPI = 90
 

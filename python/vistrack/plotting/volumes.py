@@ -11,8 +11,6 @@ from .._core import Environment, Polygon, VisibilityScene, VisibilityVolume
 from ..report_options import DEFAULT_VIEW
 from .common import pyplot, save_figure
 
-# Default viewpoint of the static 3D VV figure: elevation and azimuth in degrees (matplotlib's).
-
 
 def _shade(triangles: np.ndarray, rgb: Sequence[float], alpha: float) -> np.ndarray:
     """Per-face RGBA lit by a fixed light (Lambert, with an ambient floor)."""

@@ -1,4 +1,4 @@
-"""An orbit plan as an autopilot mission (``OrbitPlan.to_mission``, attached here) and its export
+"""An orbit plan as an autopilot mission (``OrbitPlan.to_mission``: see ``methods``) and its export
 by suffix: a mission file or GeoJSON over a map."""
 
 from __future__ import annotations
