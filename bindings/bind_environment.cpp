@@ -87,12 +87,15 @@ std::optional<std::tuple<double, double, double>> origin_to_python(const std::op
   return std::make_tuple(origin->latitude, origin->longitude, origin->altitude);
 }
 
-// Longitude/latitude files are projected by vistrack.mission (pyproj's topocentric conversion,
-// the one georeference vistrack uses for maps in and routes out); imported only when needed.
-Points2 project_lon_lat(const Points2& lon_lat, const GeodeticPoint& origin) {
-  py::gil_scoped_acquire gil;
-  const py::object project = py::module_::import("vistrack.mission").attr("project_lon_lat");
-  return project(lon_lat, py::make_tuple(origin.latitude, origin.longitude, origin.altitude)).cast<Points2>();
+// Longitude/latitude files are projected by a Python callable (the package passes
+// vistrack.georeference.project_lon_lat); `project` outlives the load, so it is held by reference
+// and never copied while the GIL is released.
+LonLatProjection lon_lat_projection(const py::object& project) {
+  if (project.is_none()) return {};
+  return [&project](const Points2& lon_lat, const GeodeticPoint& origin) {
+    py::gil_scoped_acquire gil;
+    return project(lon_lat, py::make_tuple(origin.latitude, origin.longitude, origin.altitude)).cast<Points2>();
+  };
 }
 
 }  // namespace
@@ -126,19 +129,20 @@ void bind_environment(py::module_& m) {
                           "Obstacles (2.5D buildings or a triangle mesh), ground and road network.")
       .def_static(
           "from_geojson",
-          [](const py::object& path, const py::object& origin) {
+          [](const py::object& path, const py::object& origin, const py::object& project) {
             const std::string name = path_string(path);
-            const GeoJsonOptions options{origin_from_python(origin, "origin"), &project_lon_lat};
+            const GeoJsonOptions options{origin_from_python(origin, "origin"), lon_lat_projection(project)};
             py::gil_scoped_release release;
             return Environment::from_geojson(name, options);
           },
-          py::arg("path"), py::arg("origin") = py::none(),
+          py::arg("path"), py::arg("origin") = py::none(), py::arg("project") = py::none(),
                   "2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: "
                   "height from properties.height, else building:levels x 3 m; id from properties.id, "
                   "else the feature index. Coordinates in local east-north metres, or WGS84 longitude/latitude "
                   "(the GeoJSON default, as OpenStreetMap exports give; told apart by range, anything else is a "
-                  "VistrackError) projected to local metres by vistrack.mission.Georeference (pyproj, ellipsoidal "
-                  "tangent plane) about origin (lat, lon[, alt]) or a Georeference, else about the centre of the "
+                  "VistrackError) projected to local metres by project(lon_lat, (lat, lon, alt)) (the package "
+                  "passes vistrack.georeference.project_lon_lat: pyproj, ellipsoidal tangent plane) about "
+                  "origin (lat, lon[, alt]) or a Georeference, else about the centre of the "
                   "data's bounding box (rounded to 1e-7 degree); env.origin reports it. Footprints are validated "
                   "(simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up "
                   "to 1 m^2 are taken as touching walls, and a footprint inside a building at least as "

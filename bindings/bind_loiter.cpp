@@ -181,29 +181,6 @@ void bind_loiter(py::module_& parent) {
            "(n, 3) array of x, y, psi (continuous) at t = 0, dt, 2 dt, ... and the end point last.")
       .def("sample_states", &LoiterPlan::sample_states, py::arg("dt") = 1.0, py::arg("include_end") = true,
            "Samples (t, poses, turn_rate, segment) at t = 0, dt, ...; include_end appends the end point.")
-      .def(
-          "to_mission",
-          // Missions and the georeference are Python (vistrack.mission, pyproj): delegate.
-          [](const py::object& self, const py::object& georeference, const py::object& altitude,
-             const py::object& speed, double max_step_deg, const py::object& acceptance_radius,
-             bool return_to_launch, const std::string& firmware, const std::string& altitude_mode) {
-            return py::module_::import("vistrack.mission")
-                .attr("loiter_plan_mission")(self, georeference, altitude, py::arg("speed") = speed,
-                                             py::arg("max_step_deg") = max_step_deg,
-                                             py::arg("acceptance_radius") = acceptance_radius,
-                                             py::arg("return_to_launch") = return_to_launch,
-                                             py::arg("firmware") = firmware, py::arg("altitude_mode") = altitude_mode);
-          },
-          py::arg("georeference"), py::arg("altitude"), py::kw_only(), py::arg("speed") = py::none(),
-          py::arg("max_step_deg") = 30.0, py::arg("acceptance_radius") = py::none(),
-          py::arg("return_to_launch") = false, py::arg("firmware") = "ardupilot",
-          py::arg("altitude_mode") = "relative",
-          "The plan as an autopilot mission (vistrack.mission.Mission; save it as .plan, .waypoints or "
-          ".geojson) along the planned path: waypoints at the ends of lines and along the turns, each "
-          "loiter a NAV_LOITER_TURNS of its whole turns (radius signed: positive clockwise) started at the "
-          "plan's entry point on the circle, then waypoints along the circle to its exit point. georeference: "
-          "vistrack.Georeference or (lat, lon[, alt]); altitude: m above the ground at the origin. See "
-          "vistrack.mission.loiter_plan_mission.")
       .def("__repr__", [](const LoiterPlan& p) {
         return "loiter.Plan(method='" + to_string(p.method) + "', aois=" + std::to_string(p.problem.aois.size()) +
                ", length=" + detail::to_text(p.length) + ", flight_time=" + detail::to_text(p.flight_time) +

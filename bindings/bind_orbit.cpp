@@ -85,28 +85,7 @@ void bind_orbit(py::module_& m) {
            },
            py::arg("t"), "dR/dt of the reference at every element of t.")
       .def("to_json", py::overload_cast<const OrbitPlan&>(&to_json), "The plan as JSON text.")
-      .def_static("from_json", &orbit_plan_from_json, py::arg("text"), "A plan from JSON text.")
-      .def(
-          "to_mission",
-          // Missions and the georeference are Python (vistrack.mission, pyproj): delegate.
-          [](const py::object& self, const py::object& georeference, const py::object& altitude,
-             const std::string& direction, const py::object& speed, const py::object& start, const std::string& end,
-             const std::string& firmware, const std::string& altitude_mode) {
-            return py::module_::import("vistrack.mission")
-                .attr("orbit_plan_mission")(self, georeference, altitude, py::arg("direction") = direction,
-                                            py::arg("speed") = speed, py::arg("start") = start, py::arg("end") = end,
-                                            py::arg("firmware") = firmware, py::arg("altitude_mode") = altitude_mode);
-          },
-          py::arg("georeference"), py::arg("altitude") = py::none(), py::kw_only(), py::arg("direction") = "ccw",
-          py::arg("speed") = py::none(), py::arg("start") = py::none(), py::arg("end") = "loiter",
-          py::arg("firmware") = "ardupilot", py::arg("altitude_mode") = "relative",
-          "The plan as an autopilot mission (vistrack.mission.Mission; save it as .plan, .waypoints or "
-          ".geojson): one NAV_LOITER_TIME per segment about the POI's position at the segment's middle, "
-          "with R(t) there, after a waypoint at the tangent entry of the first orbit; then a loiter over "
-          "the POI's last position (end='loiter'), 'rtl' or 'none'. georeference: vistrack.Georeference or "
-          "(lat, lon[, alt]); altitude (m above the ground at the origin) and speed default to the plan's "
-          "UAV when it has one. A companion computer flying the vector field tracks far better: the "
-          "autopilot circles fixed centres one after the other. See vistrack.mission.orbit_plan_mission.");
+      .def_static("from_json", &orbit_plan_from_json, py::arg("text"), "A plan from JSON text.");
 
   m.def("max_inscribed_radius", &max_inscribed_radius, py::arg("polygons"), py::arg("center"),
         "Radius of the largest circle centred at `center` inside the visibility polygon: the "

@@ -12,6 +12,8 @@ sys.path.insert(0, "tests/python")
 import conftest  # noqa: F401  (loads the build tree's extension as vistrack._core)
 import pybind11_stubgen
 
+import vistrack  # noqa: F401  (attaches the methods written in Python: to_mission, Environment.from_geojson)
+
 sys.argv = ["pybind11-stubgen", "vistrack._core", "-o", "python", "--ignore-all-errors"]
 pybind11_stubgen.main()
 PY

@@ -1,9 +1,19 @@
 """vistrack: occlusion-aware tracking of a moving ground target by a Dubins UAV.
 
-The C++ core lives in ``vistrack._core``; this package re-exports it by area and adds scenario
-files (``scenario``), file formats (``io``), the pipeline from map to report (``pipeline``,
-``report``), metrics, plotting and the command line (``cli``, ``commands``; the library never
-imports them).
+The C++ core lives in ``vistrack._core``; this package re-exports it by area. The Python layer:
+
+- shared parts: ``dubins``, ``flight``, ``visibility``, ``georeference``, ``schema``, ``progress``,
+  ``intercept``, ``report_options``; ``io`` (one module per generic file format) and ``mission``
+  (autopilot missions and their builder)
+- one package per planner: ``tracking`` (visibility-volume orbits: scenario, pipeline, metrics,
+  tuning), ``waypoint_nav``, ``loiter``, ``follow``; each converts its own plans to missions
+- horizontal layers, one module per planner: ``report``, ``plotting`` (matplotlib) and ``sweep``
+  (Dask), imported on first use so ``import vistrack`` stays light; ``vt.run`` (the pipeline
+  with its report folder) lives in ``report.run``
+- the command line: ``cli``, ``commands`` (the library never imports them)
+
+``scenario``, ``pipeline``, ``metrics``, ``tuning``, ``saved_volumes``, ``follow_scenario`` and
+``loiter_study`` are the old addresses of modules now in a planner's package.
 """
 
 from __future__ import annotations
@@ -11,7 +21,25 @@ from __future__ import annotations
 from importlib.metadata import PackageNotFoundError
 from importlib.metadata import version as _version
 
-from . import _core, dubins, flight, follow, loiter, mission, sweep, waypoint_nav
+from . import (
+    _core,
+    dubins,
+    flight,
+    follow,
+    follow_scenario,
+    georeference,
+    io,
+    loiter,
+    loiter_study,
+    metrics,
+    mission,
+    pipeline,
+    saved_volumes,
+    scenario,
+    tracking,
+    tuning,
+    waypoint_nav,
+)
 
 # By area: geometry and parameters; environment; visibility and volumes; orbits (section IV);
 # guidance, integrator and closed loop (sections V-VI).
@@ -93,10 +121,14 @@ from ._core import (
     wrap_to_pi,
     xor_volume,
 )
-from .mission import Georeference
-from .pipeline import RunResult, run
-from .scenario import Scenario
+from ._moved import forward
+from .georeference import Georeference
+from .tracking import RunResult, Scenario
 from .visibility import keep_freed_memory, polygon_agreement, visibility_scene, visibility_volume, visibility_volumes
+
+# The heavy horizontal layers, and vt.run from the report layer, load on first use.
+__getattr__ = forward(__name__, {"sweep": "vistrack.sweep", "report": "vistrack.report",
+                                 "plotting": "vistrack.plotting", "run": "vistrack.report.run"})
 
 try:
     __version__ = _version("vistrack")
@@ -150,17 +182,22 @@ __all__ = [
     "estimate_work",
     "flight",
     "follow",
+    "follow_scenario",
+    "georeference",
     "grid_xor_volume",
+    "io",
     "keep_freed_memory",
     "lambda_max",
     "lemma6_curvature_bound",
     "lemma7_min_gain",
     "loiter",
+    "loiter_study",
     "lyapunov_term",
     "max_inscribed_radius",
     "max_orbit_curvature",
     "mesh_volume",
     "mesh_xor_volume",
+    "metrics",
     "min_feasible_radius",
     "mission",
     "one_minus_cos_over_x",
@@ -168,6 +205,7 @@ __all__ = [
     "orbit_curvature",
     "orbit_polar_rate",
     "orbit_signed_curvature",
+    "pipeline",
     "plan_on_volumes",
     "plan_orbits",
     "plane_visibility_polygon",
@@ -176,6 +214,8 @@ __all__ = [
     "radial_xor_volume",
     "run",
     "sample_vector_field",
+    "saved_volumes",
+    "scenario",
     "segment_boundaries",
     "shares_direction_grid",
     "shares_radial_mesh",
@@ -187,7 +227,9 @@ __all__ = [
     "solve_ode",
     "steering",
     "sweep",
+    "tracking",
     "tune_turn_rate",
+    "tuning",
     "vector_field",
     "visibility_scene",
     "visibility_volume",

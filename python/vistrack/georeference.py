@@ -1,8 +1,9 @@
 """The georeference: vistrack's local east-north-up metres on the WGS84 ellipsoid, through pyproj.
 
 One :class:`Georeference` serves maps in (``Environment.from_geojson`` projects longitude/latitude
-files with :func:`project_lon_lat`) and routes out (``vistrack.mission``), so a route drawn over a
-building corner in local metres lands on that corner's latitude and longitude.
+files with :func:`project_lon_lat`, which this module hands to the compiled loader) and routes out
+(``vistrack.mission``), so a route drawn over a building corner in local metres lands on that
+corner's latitude and longitude.
 """
 
 from __future__ import annotations
@@ -10,16 +11,15 @@ from __future__ import annotations
 from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Callable, Optional
 
 import numpy as np
 
+from ._core import Environment
 from .schema import fail, number
 
 if TYPE_CHECKING:
     from pyproj import Transformer
-
-    from ._core import Environment
 
 __all__ = ["Georeference", "degrees", "project_lon_lat"]
 
@@ -160,3 +160,15 @@ def project_lon_lat(lon_lat: np.ndarray, origin: Georeference | Sequence[float])
     points = np.asarray(lon_lat, dtype=float).reshape(-1, 2)
     east, north = Georeference.from_value(origin).to_local(points[:, 1], points[:, 0])
     return np.column_stack([east, north])
+
+
+_from_geojson = Environment.from_geojson  # the binding: it takes the projection as an argument
+
+
+def _environment_from_geojson(path: Any, origin: Any = None,
+                              project: Optional[Callable[..., Any]] = project_lon_lat) -> Environment:
+    return _from_geojson(path, origin, project)
+
+
+_environment_from_geojson.__doc__ = (_from_geojson.__doc__ or "").partition("\n\n")[2]  # without the signature line
+Environment.from_geojson = staticmethod(_environment_from_geojson)  # type: ignore[method-assign]

@@ -187,6 +187,29 @@ def test_lon_lat_geojson_errors(tmp_path) -> None:
         vt.Environment.from_geojson(write([[514500, 3897900], [514600, 3897900], [514600, 3898000]]))
 
 
+def test_the_loader_projects_with_the_projection_it_is_given(tmp_path) -> None:
+    """The compiled loader imports no Python: the package hands it georeference.project_lon_lat; a
+    caller may pass another projection, or none (then longitude/latitude is refused)."""
+    path = tmp_path / "f.geojson"
+    path.write_text(json.dumps({"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {"height": 5}, "geometry": {"type": "Polygon", "coordinates": [
+            [[-80.8404, 35.2248], [-80.8403, 35.2248], [-80.8403, 35.2249], [-80.8404, 35.2249]]]}}]}))
+    seen = []
+
+    def shifted(lon_lat, origin):
+        seen.append(origin)
+        return project_lon_lat(lon_lat, origin) + 100.0
+
+    moved = vt.Environment.from_geojson(path, origin=CHARLOTTE, project=shifted)
+    plain = vt.Environment.from_geojson(path, origin=CHARLOTTE)
+    assert seen == [(CHARLOTTE.lat, CHARLOTTE.lon, CHARLOTTE.alt)]
+    np.testing.assert_allclose(moved.footprints[0].outer, plain.footprints[0].outer + 100.0, atol=1e-9)
+    with pytest.raises(vt.VistrackError, match=r"this loader has no projection to local metres"):
+        vt.Environment.from_geojson(path, project=None)
+    with pytest.raises(vt.VistrackError, match=r"project = 1 rows"):
+        vt.Environment.from_geojson(path, project=lambda lon_lat, origin: np.zeros((1, 2)))
+
+
 def test_metric_geojson_keeps_an_origin_and_env_origin_is_settable(tmp_path) -> None:
     path = tmp_path / "m.geojson"
     path.write_text(json.dumps({"type": "FeatureCollection", "features": [

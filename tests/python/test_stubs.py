@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 
+import vistrack  # noqa: F401  (the stubs show the methods the package attaches: to_mission, from_geojson)
 from support.paths import REPO
 
 

@@ -6,6 +6,8 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
+import vistrack.georeference
+import vistrack.mission.model
 from . import limits
 from . import dubins
 from . import flight
@@ -363,9 +365,9 @@ class Environment:
         Environment from a list of (Polygon, height) or (Polygon, height, id) (an (n, 2) array may stand for a Polygon without holes), validated as in from_geojson; optional RoadNetwork checked against every footprint.
         """
     @staticmethod
-    def from_geojson(path: typing.Any, origin: typing.Any = None) -> Environment:
+    def from_geojson(path: typing.Any, origin: typing.Any = None, project: typing.Callable[..., typing.Any] | None = vistrack.georeference.project_lon_lat) -> Environment:
         """
-        2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: height from properties.height, else building:levels x 3 m; id from properties.id, else the feature index. Coordinates in local east-north metres, or WGS84 longitude/latitude (the GeoJSON default, as OpenStreetMap exports give; told apart by range, anything else is a VistrackError) projected to local metres by vistrack.mission.Georeference (pyproj, ellipsoidal tangent plane) about origin (lat, lon[, alt]) or a Georeference, else about the centre of the data's bounding box (rounded to 1e-7 degree); env.origin reports it. Footprints are validated (simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up to 1 m^2 are taken as touching walls, and a footprint inside a building at least as tall as a building part) and normalised counter-clockwise.
+        2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: height from properties.height, else building:levels x 3 m; id from properties.id, else the feature index. Coordinates in local east-north metres, or WGS84 longitude/latitude (the GeoJSON default, as OpenStreetMap exports give; told apart by range, anything else is a VistrackError) projected to local metres by project(lon_lat, (lat, lon, alt)) (the package passes vistrack.georeference.project_lon_lat: pyproj, ellipsoidal tangent plane) about origin (lat, lon[, alt]) or a Georeference, else about the centre of the data's bounding box (rounded to 1e-7 degree); env.origin reports it. Footprints are validated (simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up to 1 m^2 are taken as touching walls, and a footprint inside a building at least as tall as a building part) and normalised counter-clockwise.
         """
     @staticmethod
     def from_mesh(path: typing.Any, up: str = 'z') -> Environment:
@@ -808,9 +810,22 @@ class OrbitPlan:
         """
         The plan as JSON text.
         """
-    def to_mission(self, georeference: typing.Any, altitude: typing.Any = None, *, direction: str = 'ccw', speed: typing.Any = None, start: typing.Any = None, end: str = 'loiter', firmware: str = 'ardupilot', altitude_mode: str = 'relative') -> typing.Any:
+    def to_mission(self, georeference: vistrack.georeference.Georeference | typing.Sequence[float], altitude: float | None = None, *, direction: str = 'ccw', speed: float | None = None, start: typing.Sequence[float] | None = None, end: str = 'loiter', firmware: str = 'ardupilot', altitude_mode: str = 'relative') -> vistrack.mission.model.Mission:
         """
-        The plan as an autopilot mission (vistrack.mission.Mission; save it as .plan, .waypoints or .geojson): one NAV_LOITER_TIME per segment about the POI's position at the segment's middle, with R(t) there, after a waypoint at the tangent entry of the first orbit; then a loiter over the POI's last position (end='loiter'), 'rtl' or 'none'. georeference: vistrack.Georeference or (lat, lon[, alt]); altitude (m above the ground at the origin) and speed default to the plan's UAV when it has one. A companion computer flying the vector field tracks far better: the autopilot circles fixed centres one after the other. See vistrack.mission.orbit_plan_mission.
+        An orbit plan as an autopilot mission: one NAV_LOITER_TIME per segment [t_k, t_k+1] about
+            the POI's position at the segment's middle, with R(t) there, for the segment's duration.
+        
+            The autopilot circles fixed centres one after the other, so its orbit lags the moving POI by up
+            to v_g (t_k+1 - t_k) / 2 and it flies no guidance law: a companion computer flying vistrack's
+            vector field (eq. 74) along the plan (``vistrack simulate``) tracks far better; the mission is
+            for a ground station's map, a plain autopilot, or a fallback.
+        
+            ``altitude`` / ``speed`` default to the plan's UAV (a VisibilityOrbitPlan); the mission first
+            flies from ``start`` (local x, y; default home = the origin) to the tangent entry point of the
+            first orbit, and ends with a loiter over the POI's last position (``end="loiter"``), a return
+            to launch ("rtl") or nothing ("none"). For ArduPilot, which counts whole seconds, the segment
+            boundaries are rounded to whole seconds from the start (the total stays within 0.5 s).
+            
         """
     @property
     def centers(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:

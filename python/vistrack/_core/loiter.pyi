@@ -6,6 +6,8 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
+import vistrack.georeference
+import vistrack.mission.model
 __all__: list[str] = ['Camera', 'Coverage', 'EXACT_ORDER_LIMIT', 'Footprint', 'METHODS', 'ORDERS', 'Plan', 'STANDARD_GRAVITY', 'Samples', 'Segment', 'bank_angle', 'best_order', 'ellipse_disk_area', 'entry_angle', 'entry_distance', 'order_length', 'plan', 'plan_coverage', 'plan_in_order', 'sample_coverage', 'turn_angle']
 class Segment:
     """
@@ -119,9 +121,32 @@ class Plan:
         """
         Samples (t, poses, turn_rate, segment) at t = 0, dt, ...; include_end appends the end point.
         """
-    def to_mission(self, georeference: typing.Any, altitude: typing.Any, *, speed: typing.Any = None, max_step_deg: typing.SupportsFloat | typing.SupportsIndex = 30.0, acceptance_radius: typing.Any = None, return_to_launch: bool = False, firmware: str = 'ardupilot', altitude_mode: str = 'relative') -> typing.Any:
+    def to_mission(self, georeference: vistrack.georeference.Georeference | typing.Sequence[float], altitude: float, *, speed: float | None = None, max_step_deg: float = 30.0, acceptance_radius: float | None = None, return_to_launch: bool = False, firmware: str = 'ardupilot', altitude_mode: str = 'relative') -> vistrack.mission.model.Mission:
         """
-        The plan as an autopilot mission (vistrack.mission.Mission; save it as .plan, .waypoints or .geojson) along the planned path: waypoints at the ends of lines and along the turns, each loiter a NAV_LOITER_TURNS of its whole turns (radius signed: positive clockwise) started at the plan's entry point on the circle, then waypoints along the circle to its exit point. georeference: vistrack.Georeference or (lat, lon[, alt]); altitude: m above the ground at the origin. See vistrack.mission.loiter_plan_mission.
+        A loiter plan (``vt.loiter.plan``: Fly-Through, TLPP or LDLPP) as the mission an autopilot
+            flies along the planned path, not towards the AOI centres.
+        
+            - DO_CHANGE_SPEED to the plan's speed (airspeed; ``speed`` overrides), home at the plan's start,
+              and a first waypoint there.
+            - Lines: a waypoint at their end. Turns at the turn radius r (the entry and exit turns, the
+              Fly-Through's three-quarter turn): waypoints along the arc every ``max_step_deg`` with an
+              acceptance radius of half their spacing (see ``_arc_acceptance``; ``acceptance_radius``
+              overrides), so the autopilot flies the arc instead of cutting it.
+            - Each AOI's loiter (its consecutive loiter arcs, swept angle S >= 2 pi turns): the route
+              already ends at the loiter entry point (the tangent point of TLPP, the end of LDLPP's entry
+              turn, the Fly-Through's offset point), where NAV_LOITER_TURNS starts: the aircraft is on the
+              circle heading along it, so it circles at once instead of flying to the centre. Radius signed
+              for the direction (MAVLink: positive clockwise), k = floor(S / 2 pi) whole turns (ArduPilot
+              keeps an integer count, at most 255, and the radius in whole metres up to 255 m), param4 = 1
+              (the next leg starts from where the aircraft leaves the circle). The remaining S - 2 pi k
+              (TLPP's arc to the departure tangent, LDLPP's arc until the closing angle reaches alpha_ED,
+              the Fly-Through's arc to its exit) follows as waypoints along the circle to the exit point.
+              A whole number of turns ends where it started, so turns + remainder reproduce S exactly.
+            - The last line ends at the plan's end; ``return_to_launch`` adds RTL.
+        
+            ``altitude``: the local height of the flight (the loiter camera's altitude above the AOIs);
+            ``georeference``: vistrack.Georeference or (lat, lon[, alt]).
+            
         """
     @property
     def aoi_radius(self) -> float:

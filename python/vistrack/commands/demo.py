@@ -6,8 +6,8 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from ..scenario import Scenario
-from . import add_report_arguments, output_folder, report_options
+from ..tracking.scenario import Scenario
+from .output import add_report_arguments, output_folder, report_options
 from .run import run_scenario
 
 DEFAULT_OUT = Path("vistrack-out") / "demo"

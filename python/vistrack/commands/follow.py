@@ -6,7 +6,7 @@ pipeline's vector-field baseline, and, when the scenario has a city section, bot
 road with line of sight through the buildings. Writes figures, trajectory.csv, metrics.json,
 report.md, trajectory.gif (plan view: vehicle, UAV, camera footprint, wind, line of sight on the
 city road; trajectory_open.gif then adds the open-ground run) and report.html (the same in 3D
-with a time slider, and the report) to --out. Scenario keys: see vistrack/follow_scenario.py and
+with a time slider, and the report) to --out. Scenario keys: see vistrack/follow/scenario.py and
 examples/follow_*.yaml.
 """
 
@@ -15,16 +15,11 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from ..follow_scenario import FollowScenario
+from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
-from . import (
-    DEFAULT_EXPORT_ORIGIN,
-    add_export_arguments,
-    add_report_arguments,
-    export_mission,
-    number,
-    report_options,
-)
+from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
+from .output import add_report_arguments, report_options
+from .types import number
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

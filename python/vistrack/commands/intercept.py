@@ -14,7 +14,8 @@ from pathlib import Path
 
 from ..intercept import InterceptProblem
 from ..report.intercept import write_intercept
-from . import coordinate, length, number, output_folder, speed
+from .output import output_folder
+from .types import coordinate, length, number, speed
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

@@ -16,22 +16,14 @@ import argparse
 from functools import partial
 from pathlib import Path
 
-from .. import loiter, loiter_study
+from .. import loiter
+from ..loiter import study as loiter_study
 from ..progress import Progress
 from ..report import loiter as report
-from . import (
-    DEFAULT_EXPORT_ORIGIN,
-    UsageError,
-    add_export_arguments,
-    add_report_arguments,
-    count,
-    export_missions,
-    finite_numbers,
-    length,
-    output_folder,
-    positive_numbers,
-    report_options,
-)
+from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_missions
+from .lists import finite_numbers, positive_numbers
+from .output import add_report_arguments, output_folder, report_options
+from .types import UsageError, count, length
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -98,7 +90,7 @@ def run(args: argparse.Namespace) -> int:
         if len(scenarios) > 1:
             written += report.write_table(args.out, scenarios, rows)
             print((args.out / "table.md").read_text(encoding="utf-8"), end="")
-    if args.export:  # one scenario's plans as autopilot missions (vt.mission.loiter_plan_mission)
+    if args.export:  # one scenario's plans as autopilot missions (vistrack.loiter.to_mission)
         scenario = (loiter.load_scenario(args.scenarios[0]) if args.scenarios
                     else next(loiter_study.random_scenarios(1, args.seed, args.aois)))
         altitude = scenario.camera.altitude if args.altitude is None else args.altitude

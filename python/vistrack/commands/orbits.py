@@ -8,25 +8,16 @@ from pathlib import Path
 
 from .. import _core, schema
 from ..io import footprint_environment, load_environment, read_plan
-from ..metrics import metric_along_path
 from ..plotting.orbits import figure_orbits, figure_radius
 from ..progress import Progress
 from ..report.orbits import write_orbits
-from ..saved_volumes import plan_from_volumes
-from . import (
-    UsageError,
-    add_export_arguments,
-    check_exports,
-    checked,
-    count,
-    export_plan,
-    length,
-    number,
-    output_folder,
-    positive_numbers,
-    speed,
-)
-from . import coordinate as coordinate_type
+from ..tracking.metrics import metric_along_path
+from ..tracking.saved_volumes import plan_from_volumes
+from .export import add_export_arguments, check_exports, export_plan
+from .lists import positive_numbers
+from .output import output_folder
+from .types import UsageError, checked, count, length, number, speed
+from .types import coordinate as coordinate_type
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

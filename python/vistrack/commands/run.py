@@ -7,17 +7,10 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from ..scenario import Scenario, default_scenario_text
-from . import (
-    UsageError,
-    add_export_arguments,
-    add_report_arguments,
-    check_exports,
-    count,
-    export_plan,
-    output_folder,
-    report_options,
-)
+from ..tracking.scenario import Scenario, default_scenario_text
+from .export import add_export_arguments, check_exports, export_plan
+from .output import add_report_arguments, output_folder, report_options
+from .types import UsageError, count
 
 
 def register(subparsers: Any) -> None:
@@ -46,8 +39,8 @@ def register(subparsers: Any) -> None:
 def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool, export: Sequence[str] = ()) -> int:
     """Shared by ``run`` and ``demo``: run, then print the headline numbers and the report path
     (and write the --export files)."""
-    from ..pipeline import run
     from ..report import percent
+    from ..report.run import run
 
     result = run(scenario, out, quiet=quiet, cache_dir=cache)
     m = result.metrics

@@ -13,10 +13,12 @@ from pathlib import Path
 
 from .. import _core, schema
 from ..io import load_environment, read_plan
-from ..metrics import CONVERGE_AFTER
-from ..pipeline import simulate_with_baselines, start_on_orbit
 from ..report.simulation import write_simulation
-from . import checked, configuration, coordinate, length, number, output_folder, speed
+from ..tracking.metrics import CONVERGE_AFTER
+from ..tracking.pipeline import simulate_with_baselines, start_on_orbit
+from .lists import configuration
+from .output import output_folder
+from .types import checked, coordinate, length, number, speed
 
 
 def fixed_step(key: str, value: object) -> float:

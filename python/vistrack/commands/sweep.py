@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from ..sweep import SERIAL, SweepSpec, run
-from . import UsageError, count
+from .types import UsageError, count
 
 
 def register(subparsers: Any) -> None:

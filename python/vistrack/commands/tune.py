@@ -14,8 +14,9 @@ from pathlib import Path
 from .. import schema
 from ..progress import Progress
 from ..report.tune import write_tuning
-from ..tuning import tune_beta
-from . import checked, length, number, output_folder, speed
+from ..tracking.tuning import tune_beta
+from .output import output_folder
+from .types import checked, length, number, speed
 
 
 def betas(key: str, text: str) -> list[float]:

@@ -19,7 +19,9 @@ from vistrack.progress import Progress
 from vistrack.report.volumes import write_volumes
 from vistrack.visibility import check_count, poi_positions
 
-from . import coordinate, count, length, number, output_folder, point_list
+from .lists import point_list
+from .output import output_folder
+from .types import coordinate, count, length, number
 
 DEFAULT_OUT = Path("vistrack-out") / "volumes"
 

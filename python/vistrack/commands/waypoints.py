@@ -16,21 +16,11 @@ from .. import waypoint_nav as wn
 from ..flight import Wind
 from ..io import read_route
 from ..progress import Progress
-from ..report.waypoints import write_waypoints
-from . import (
-    add_export_arguments,
-    add_report_arguments,
-    coordinate,
-    count,
-    export_mission,
-    finite_numbers,
-    length,
-    number,
-    output_folder,
-    positive_numbers,
-    report_options,
-    speed,
-)
+from ..report.waypoint_nav import write_waypoints
+from .export import add_export_arguments, export_mission
+from .lists import finite_numbers, positive_numbers
+from .output import add_report_arguments, output_folder, report_options
+from .types import coordinate, count, length, number, speed
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:

@@ -7,7 +7,7 @@
 - ``simulation``: Figure 10 (trajectory) and Figure 11 (errors and control)
 - ``tune``: Figure 9 (turn rate needed against beta)
 - ``intercept``: Figure 7 of the intercept paper
-- ``waypoints``: Figures 10-12 of the Dubins waypoint navigation paper, the Monte Carlo
+- ``waypoint_nav``: Figures 10-12 of the Dubins waypoint navigation paper, the Monte Carlo
 - ``loiter``: loiter plans over AOIs (Figures 6, 9, 12, 13), Figure 14, random-scenario distributions, flights in wind
 - ``follow``: ground-vehicle following (its Figures 2 and 5-9, planner against baseline, city runs)
 """

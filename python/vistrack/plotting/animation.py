@@ -17,13 +17,12 @@ from typing import Any, Union
 
 import numpy as np
 
+from ..report_options import DEFAULT_DURATION_S, DEFAULT_FRAMES
 from .city import footprint_path, plot_buildings
 from .common import pyplot
 from .motion import OCCLUDED_COLOR, VISIBLE_COLOR, MotionScene, Track
 
-# Defaults of the animation options (the scenario's report section and the commands use these).
-DEFAULT_FRAMES = 60
-DEFAULT_DURATION_S = 8.0
+# Size of the GIF's frames (frames and duration: report_options).
 DEFAULT_SIZE_IN = 5.5
 DEFAULT_DPI = 90
 

@@ -18,12 +18,12 @@ from typing import Any, Optional, Sequence
 import numpy as np
 
 from .._core import Environment, VisibilityOrbitPlan, VisibilityScene
+from ..report_options import DEFAULT_VOLUMES
 from .common import evenly_spaced_indices
 from .motion import OCCLUDED_COLOR, VISIBLE_COLOR, Line, MotionScene, Track, circle_ring, polygon_rings
 
 Trace = dict[str, Any]  # one plotly trace as JSON
 DEFAULT_TIME_STEPS = 100  # frames of the time slider
-DEFAULT_VOLUMES = 8  # VVs under the volume slider
 DEFAULT_VOLUME_RESOLUTION_DEG = 3.0  # direction grid of the VVs shown (the plan's are finer)
 CITY_COLORSCALE = [[0.0, "#d9d9d9"], [1.0, "#4d5a6a"]]
 VOLUME_COLOR = "#31a354"

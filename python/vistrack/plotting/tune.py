@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..tuning import BetaTuning
+from ..tracking.tuning import BetaTuning
 from .common import pyplot, save_figure
 
 

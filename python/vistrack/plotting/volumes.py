@@ -8,10 +8,8 @@ from typing import Optional, Sequence, Union
 import numpy as np
 
 from .._core import Environment, Polygon, VisibilityScene, VisibilityVolume
+from ..report_options import DEFAULT_VIEW
 from .common import pyplot, save_figure
-
-# Default viewpoint of the static 3D VV figure: elevation and azimuth in degrees (matplotlib's).
-DEFAULT_VIEW = (32.0, -58.0)
 
 
 def _shade(triangles: np.ndarray, rgb: Sequence[float], alpha: float) -> np.ndarray:

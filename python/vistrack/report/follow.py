@@ -11,12 +11,13 @@ import numpy as np
 
 from .._core import Environment
 from ..follow import DownwardCamera, FollowResult, camera_footprint
-from ..follow_scenario import FollowStudy
-from ..io import write_follow_trajectory, write_json
+from ..follow.files import write_follow_trajectory
+from ..follow.scenario import FollowStudy
+from ..io import write_json
 from ..plotting.common import OSM_CREDIT
 from ..plotting.follow import figure_compare, figure_paths, figure_scores
 from ..plotting.motion import Line, MotionScene, Overlay, Sight, Track
-from ..scenario import ReportOptions
+from ..report_options import ReportOptions
 from .document import Document, Heading, Picture, Table
 from .media import write_media
 

@@ -12,12 +12,13 @@ from typing import Any, Optional
 import numpy as np
 
 from .. import loiter
-from ..io import write_json, write_loiter_samples_csv
+from ..io import write_json
 from ..loiter import METHOD_NAMES
-from ..loiter_study import MethodRun, summary, wind_summary
+from ..loiter.files import write_loiter_samples_csv
+from ..loiter.study import MethodRun, summary, wind_summary
 from ..plotting import loiter as figures
 from ..plotting.motion import Line, MotionScene, Overlay, Track, circle_ring, ellipse_ring, sampled
-from ..scenario import ReportOptions
+from ..report_options import ReportOptions
 from .document import Document, Heading, Picture, Table
 from .media import write_media
 
@@ -188,7 +189,7 @@ WIND_NOTE = "Median (min-max) over scenarios and wind directions; the guidance d
 
 
 def wind_table(rows: Sequence[dict[str, Any]]) -> Table:
-    """Per method and wind speed (loiter_study.wind_summary rows): the share of the loiter time with
+    """Per method and wind speed (vistrack.loiter.study.wind_summary rows): the share of the loiter time with
     the AOI covered, flight and covered time against the plan, the largest distance off it."""
     def q(values: Sequence[float], scale: float = 1.0, digits: int = 0) -> str:
         return f"{values[1] * scale:.{digits}f} ({values[0] * scale:.{digits}f}-{values[2] * scale:.{digits}f})"

@@ -7,7 +7,7 @@ A planner's report folder gets both in a few lines::
     from vistrack.plotting.motion import MotionScene, Track, Line, Overlay, sampled, ellipse_ring
     from vistrack.report.document import Document, Picture, Table
     from vistrack.report.media import write_media
-    from vistrack.scenario import ReportOptions
+    from vistrack.report_options import ReportOptions
 
     scene = MotionScene(tracks=[Track("UAV", t, xy, z=altitude)], lines=[Line("planned path", path_xy)],
                         overlays=[Overlay("camera footprint", sampled(t, rings))], wind=(0.0, 0.08),
@@ -26,7 +26,7 @@ from typing import Optional, Sequence
 from ..plotting.animation import write_gif
 from ..plotting.interactive import MeshLayer, figure_3d
 from ..plotting.motion import MotionScene
-from ..scenario import ReportOptions
+from ..report_options import ReportOptions
 from .document import Document, Heading, Picture, Table
 from .html import write_html
 

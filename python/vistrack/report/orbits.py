@@ -8,8 +8,8 @@ from typing import Any, Mapping, Optional, Union
 
 from .._core import Discretization, Environment, VisibilityOrbitPlan
 from ..io import write_json, write_plan
-from ..metrics import plan_summary
 from ..plotting.orbits import figure_metric, figure_orbits, figure_radius
+from ..tracking.metrics import plan_summary
 
 
 def write_orbits(out: Path, plan: VisibilityOrbitPlan, background: Optional[Environment],

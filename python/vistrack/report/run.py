@@ -4,18 +4,15 @@ meshes."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Optional, Union
+from typing import Any, Optional, Sequence, Union
 
 import numpy as np
 
 from .._core import (
-    Discretization,
     Environment,
     OrbitPlan,
     OrbitPlanner,
-    PoiPath,
     SimulationResult,
     VisibilityOrbitPlan,
 )
@@ -25,7 +22,10 @@ from ..plotting.interactive import volume_layers
 from ..plotting.motion import tracking_scene
 from ..plotting.orbits import figure_metric, figure_orbits, figure_radius
 from ..plotting.simulation import figure_errors, figure_trajectory
-from ..scenario import Scenario
+from ..progress import Stages
+from ..tracking.pipeline import METRIC_SPACINGS, compute
+from ..tracking.result import RunResult
+from ..tracking.scenario import Scenario
 from .document import Block, Document, Heading, Picture, Table
 from .media import write_media
 
@@ -43,22 +43,19 @@ OSM_NOTE = ("Building geometry from OpenStreetMap (© OpenStreetMap contributors
             "public DubinsVisibilityTracking repository, where the map comes from ../shared/data.")
 
 
-@dataclass
-class RunResult:
-    """Everything a run computed; ``metrics`` is what metrics.json holds."""
-
-    scenario: Scenario
-    env: Environment
-    poi: PoiPath
-    plan: VisibilityOrbitPlan
-    simulation: SimulationResult
-    planner: OrbitPlanner
-    baselines: dict[float, SimulationResult] = field(default_factory=dict)
-    metric_runs: dict[str, Union[Discretization, VisibilityOrbitPlan]] = field(default_factory=dict)
-    metrics: dict[str, Any] = field(default_factory=dict)
-    out: Optional[Path] = None
-    files: list[Path] = field(default_factory=list)
-    timings: dict[str, float] = field(default_factory=dict)
+def run(scenario: Scenario, out: str | Path | None = None, *, quiet: bool = True,
+        cache_dir: str | Path | None = None, environment: Optional[Environment] = None,
+        planner: Optional[OrbitPlanner] = None, metric_spacings: Sequence[float] = METRIC_SPACINGS) -> RunResult:
+    """Run a scenario end to end (:func:`vistrack.tracking.pipeline.compute`: a caller running many
+    scenarios on one map passes its ``environment`` and ``planner``; ``metric_spacings`` are Figure
+    4's fixed spacings); with ``out``, also write the report folder there."""
+    result = compute(scenario, quiet=quiet, cache_dir=cache_dir, environment=environment, planner=planner,
+                     metric_spacings=metric_spacings)
+    if out is not None:
+        stages = Stages(quiet)
+        stages.timings = result.timings  # the report's time joins the run's
+        stages.run("report", write_report, result, Path(out))
+    return result
 
 
 def write_report(result: RunResult, out: Path) -> list[Path]:

@@ -7,8 +7,8 @@ from typing import Any, Optional, Sequence, Union
 
 from .._core import Environment, OrbitPlan, SimulationResult, VisibilityOrbitPlan
 from ..io import write_json, write_trajectory
-from ..metrics import simulation_metrics
 from ..plotting.simulation import figure_errors, figure_trajectory
+from ..tracking.metrics import simulation_metrics
 
 Run = tuple[str, Union[OrbitPlan, VisibilityOrbitPlan], SimulationResult, float]  # label, plan, result, s
 

@@ -6,7 +6,7 @@ from pathlib import Path
 
 from ..io import write_json
 from ..plotting.tune import figure_tuning
-from ..tuning import BetaTuning
+from ..tracking.tuning import BetaTuning
 
 
 def write_tuning(tuning: BetaTuning, out: Path) -> list[Path]:

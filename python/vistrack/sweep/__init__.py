@@ -18,7 +18,7 @@ from __future__ import annotations
 from . import follow as _follow  # noqa: F401
 from . import loiter as _loiter  # noqa: F401
 from . import tracking as _tracking  # noqa: F401  (registers the kinds)
-from . import waypoints as _waypoints  # noqa: F401
+from . import waypoint_nav as _waypoint_nav  # noqa: F401
 from .execute import SERIAL, SweepResult, metric_columns, run, run_case, run_cases, table_columns
 from .kinds import KINDS, CaseContext, CaseKind, CaseOutput, get_kind, register_kind
 from .resources import Resources

@@ -1,9 +1,9 @@
 """The ``follow`` case kind: one run of the ground-vehicle follower (sinusoid and loiter modes,
-:class:`vistrack.follow_scenario.FollowScenario`) and, unless the base says ``baseline: false``,
+:class:`vistrack.follow.scenario.FollowScenario`) and, unless the base says ``baseline: false``,
 the vector-field baseline on the same vehicle: what ``vistrack follow --no-city`` flies.
 
 Its base is a follow scenario (a file such as ``examples/follow_truck.yaml``, or a mapping with the
-same keys; see :mod:`vistrack.follow_scenario`). A parameter sets any of its keys
+same keys; see :mod:`vistrack.follow.scenario`). A parameter sets any of its keys
 (``follow.period``, ``follow.threshold``, ``follow.hysteresis``, ``follow.compensation``,
 ``offset.distance``, ``offset.angle_deg``, ``wind.north``, ``uav.speed``, ``vehicle.legs``...) and
 ``vehicle.speed_scale``, which multiplies every leg's speed (and end speed): a faster or slower
@@ -21,7 +21,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Mapping
 
-from ..follow_scenario import TOP_KEYS, FollowScenario
+from ..follow.scenario import TOP_KEYS, FollowScenario
 from ..schema import fail, number, resolve_path
 from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, flatten, read_base, register_kind, set_dotted
 

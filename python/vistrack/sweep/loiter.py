@@ -41,7 +41,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from .. import loiter
-from ..io import read_loiter_scenario
+from ..loiter.files import read_loiter_scenario
 from ..schema import boolean, fail, integer, number, pair, positive, reject_unknown, resolve_path
 from .kinds import (
     CaseContext,

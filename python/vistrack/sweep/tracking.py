@@ -1,4 +1,4 @@
-"""The ``tracking`` case kind: one run of the map-to-report pipeline (:func:`vistrack.pipeline.run`)
+"""The ``tracking`` case kind: one run of the map-to-report pipeline (:func:`vistrack.tracking.pipeline.compute`)
 without its report, on the worker's shared environment and orbit planner.
 
 Its base is a scenario (a file or a mapping, as ``vistrack run`` reads); a parameter sets any
@@ -17,9 +17,9 @@ from typing import Any, Mapping
 import numpy as np
 
 from .._core import RoadNetwork
-from ..pipeline import run as run_pipeline
-from ..scenario import Scenario
 from ..schema import fail, resolve_path
+from ..tracking.pipeline import compute
+from ..tracking.scenario import Scenario
 from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, flatten, register_kind, set_dotted
 
 __all__ = ["TRACKING"]
@@ -90,7 +90,7 @@ def _run(data: dict[str, Any], context: CaseContext) -> CaseOutput:
     share = (np.asarray(poi.waypoints).tobytes(), poi.speed, p.resolution_deg, p.spacing, p.min_spacing,
              p.max_depth, p.cutoff)
     planner = context.resources.planner(key, env, scenario.sensor, context.cache_dir, share)
-    result = run_pipeline(scenario, environment=env, planner=planner, metric_spacings=())
+    result = compute(scenario, environment=env, planner=planner, metric_spacings=())
     metrics = dict(result.metrics)
     for volatile in ("scenario", "timings_s", "volume_cache"):
         metrics.pop(volatile, None)

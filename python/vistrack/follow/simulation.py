@@ -1,25 +1,5 @@
-"""Following a ground vehicle (../shared/seeds/ground_vehicle_following.txt).
-
-The planner flies a sinusoid about the vehicle's path whose amplitude makes the UAV's average
-progress equal the vehicle's (eqs. 5, 9-10: sigma = v_p / v_g = (2/pi) E(-A'^2), A' = 2 pi A / D,
-D = v_g T), loiters (circle or the rose of Fig. 3) above a speed-ratio threshold with a
-hysteresis band, follows an offset point (distance and angle, fixed to north or turning with the
-vehicle), compensates a known wind by planning in the air mass (see cpp/include/vistrack/
-follow.hpp for the derivation), and issues a waypoint every second (section V). The flight layer
-flies the waypoints (the waypoint paper's feedback law (5) on a ``WaypointFollower``).
-
-Example::
-
-    import math, vistrack as vt
-    A = vt.follow.sinusoid_amplitude(2.0, 300.0)           # m, for sigma = 2 and D = 300 m
-    car = vt.follow.GroundVehicle.from_legs([vt.follow.VehicleLeg(-math.pi / 2, 10.0, 300.0)])
-    res = vt.follow.simulate(car, vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0))
-    res.metrics["camera_fraction"], res.mode, res.waypoints
-
-``baseline(...)`` flies the tracking paper's vector field (74) at a constant radius about the same
-offset point, for comparison; with a ``VisibilityScene`` both also report the line of sight
-through the buildings.
-"""
+"""Following a ground vehicle: the planner's run, its result and scores, the vector-field baseline
+and the camera's view (the API of ``vistrack.follow``)."""
 
 from __future__ import annotations
 
@@ -29,14 +9,15 @@ from typing import TYPE_CHECKING, Any, Optional, Sequence
 
 import numpy as np
 
-from ._core import Control, Uav, VisibilityScene, VistrackError
-from ._core import follow as _follow
-from .flight import Wind
-from .schema import length
+from .._core import Control, Uav, VisibilityScene, VistrackError
+from .._core import follow as _follow
+from ..flight import Wind
+from ..schema import length
+from .to_mission import follow_mission
 
 if TYPE_CHECKING:
-    from .georeference import Georeference
-    from .mission import Mission
+    from ..georeference import Georeference
+    from ..mission.model import Mission
 
 DownwardCamera = _follow.DownwardCamera
 FollowFlight = _follow.FollowFlight
@@ -134,9 +115,7 @@ class FollowResult:
                    firmware: str = "ardupilot", altitude_mode: str = "relative") -> Mission:
         """The generated 1 Hz waypoints as an autopilot mission, decimated by Douglas-Peucker at
         ``tolerance`` m (0: every waypoint), home at the UAV's start; ``speed`` (the UAV's airspeed)
-        adds DO_CHANGE_SPEED. See :func:`vistrack.mission.follow_mission`."""
-        from .mission import follow_mission
-
+        adds DO_CHANGE_SPEED. See :func:`vistrack.follow.to_mission.follow_mission`."""
         return follow_mission(self.waypoints, georeference, altitude, home=self.state[0, :2], speed=speed,
                               tolerance=tolerance, return_to_launch=return_to_launch, firmware=firmware,
                               altitude_mode=altitude_mode)

@@ -12,8 +12,8 @@ import numpy as np
 from .._core.flight import Wind
 from ..io import write_flight, write_json, write_route
 from ..plotting.motion import Line, MotionScene, Track
-from ..plotting.waypoints import figure_monte_carlo, figure_paths, figure_theta_weight
-from ..scenario import ReportOptions
+from ..plotting.waypoint_nav import figure_monte_carlo, figure_paths, figure_theta_weight
+from ..report_options import ReportOptions
 from ..waypoint_nav import MonteCarlo, NavigationFlight
 from .document import Document, Heading, Picture, Table
 from .media import write_media

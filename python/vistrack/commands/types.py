@@ -1,0 +1,73 @@
+"""Argparse types from the library's schema checks: a value's range is checked while the command
+line is parsed (a usage error, exit 2), before any work."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any, Callable
+
+from .. import schema
+from .._core import VistrackError
+
+__all__ = ["UsageError", "checked", "coordinate", "count", "length", "number", "speed"]
+
+
+class UsageError(VistrackError):
+    """A command line that cannot be run as given (a missing or conflicting option): exit status 2
+    (a failure while running is 1)."""
+
+
+def checked(flag: str, check: Callable[[str, Any], Any], numeric: bool = True) -> Callable[[str], Any]:
+    """An argparse type from a schema check (``schema.length``, ``schema.speed``, ...): the value's
+    range is checked while the command line is parsed (a usage error, exit 2), before any work.
+    ``numeric``: the text goes to the check as a float when it reads as one (the message then shows
+    the number), else as it is."""
+
+    def parse(text: str) -> Any:
+        value: Any = text
+        if numeric:
+            try:
+                value = float(text)
+            except ValueError:
+                pass
+        try:
+            return check(flag, value)
+        except VistrackError as error:
+            raise argparse.ArgumentTypeError(str(error)) from None
+
+    parse.__name__ = getattr(check, "__name__", "value")  # argparse names the type in some messages
+    return parse
+
+
+def length(flag: str) -> Callable[[str], float]:
+    """A length in metres, [1e-6, 1e7]."""
+    return checked(flag, schema.length)
+
+
+def speed(flag: str) -> Callable[[str], float]:
+    """A speed in m/s, [1e-6, 1e4]."""
+    return checked(flag, schema.speed)
+
+
+def coordinate(flag: str) -> Callable[[str], float]:
+    """A coordinate or an altitude in metres, |value| <= 1e7."""
+    return checked(flag, schema.coordinate)
+
+
+def number(flag: str, low: float | None = None, high: float | None = None, low_open: bool = False
+           ) -> Callable[[str], float]:
+    """A finite number within [low, high] (low excluded when ``low_open``)."""
+    return checked(flag, lambda key, value: schema.number(key, value, low=low, high=high, low_open=low_open))
+
+
+def count(flag: str, low: int, high: int) -> Callable[[str], int]:
+    """An integer within [low, high]."""
+
+    def parse(key: str, text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise schema.fail(key, text, f"must be an integer in [{low}, {high}]") from None
+        return schema.integer(key, value, low, high)
+
+    return checked(flag, parse, numeric=False)

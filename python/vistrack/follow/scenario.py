@@ -1,0 +1,336 @@
+"""Follow scenarios from YAML (``examples/follow_*.yaml``) and the runs ``vistrack follow`` makes
+of one: the paper's planner, the vector-field baseline on the same vehicle, and optionally both
+again on a city road with line of sight through the buildings.
+
+Keys (every one optional except vehicle; lengths m, speeds m/s, angles in degrees
+counter-clockwise from east unless a compass word is given)::
+
+    description: text
+    origin: [lat, lon, alt]       # where local (0, 0) lies on the Earth (--export), WGS84
+    uav: {speed: 21, min_turn_radius: 50, altitude: 200}
+    vehicle:                      # one of legs (with start), track, or path (with legs)
+      start: [0, 0]
+      legs: [{heading: south, speed: 10, duration: 300, end_speed: 10}]   # or heading_deg: -90
+      track: file.csv             # t,x,y per line (header allowed)
+    follow: {period, turn_margin, threshold, hysteresis, loiter_pattern, loiter_radius,
+             loiter_direction, compensation, update_period}
+    offset: {distance: 0, angle_deg: 0, reference: heading, changes: [{t, distance, angle_deg}]}
+    wind: {east: 0, north: 10, gusts: {seed, intensity, length_scale}}  # the true wind (towards)
+    wind_estimate: {east: 0, north: 10}      # what the planner compensates (default: the true wind)
+    camera: {fov_deg: 74, max_gimbal_deg: 25}
+    flight: {dt: 0.02, integration: discrete, max_time: 0}
+    baseline: {radius: 0, beta: 0.025, k_psi: 20, direction: ccw}   # radius 0: Lemma 6; false: none
+    city: {map: city.obj, up: y, road: road.csv, altitude: 300}     # the legs' speeds on a road
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Mapping, Optional
+
+import numpy as np
+
+from .._core import Control, Environment, Uav, VisibilityScene
+from ..flight import Gusts, Wind
+from ..georeference import Georeference
+from ..io.mesh import load_environment
+from ..io.text import read_yaml_mapping
+from ..schema import beta as schema_beta
+from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
+from .files import read_road_path, read_vehicle_track
+from .simulation import (
+    DownwardCamera,
+    FollowFlight,
+    FollowParameters,
+    FollowResult,
+    GroundVehicle,
+    VehicleLeg,
+    baseline,
+    simulate,
+)
+
+__all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy"]
+
+# Compass words as angles counter-clockwise from east (radians).
+HEADINGS = {name: math.radians(deg) for name, deg in (
+    ("east", 0.0), ("northeast", 45.0), ("north", 90.0), ("northwest", 135.0), ("west", 180.0),
+    ("southwest", -135.0), ("south", -90.0), ("southeast", -45.0))}
+TOP_KEYS = {"description", "origin", "uav", "vehicle", "follow", "offset", "wind", "wind_estimate", "camera", "flight",
+            "baseline", "city"}
+
+
+@dataclass
+class CityRoad:
+    """A city and a road in it: the scenario's speed profile driven along the road."""
+
+    map: Path
+    road: Path
+    up: str = "y"
+    altitude: Optional[float] = None  # the UAV's altitude over the city (default: the scenario's)
+
+
+@dataclass
+class FollowScenario:
+    """One follow scenario, validated (errors name the key)."""
+
+    vehicle: GroundVehicle
+    legs: list[VehicleLeg] = field(default_factory=list)
+    uav: Uav = field(default_factory=lambda: Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0))
+    parameters: FollowParameters = field(default_factory=FollowParameters)
+    offset_schedule: list[tuple[float, float, float]] = field(default_factory=list)
+    wind: Wind = field(default_factory=Wind)
+    wind_estimate: Optional[tuple[float, float]] = None
+    camera: DownwardCamera = field(default_factory=DownwardCamera)
+    flight: FollowFlight = field(default_factory=FollowFlight)
+    baseline_radius: Optional[float] = None  # None: Lemma 6 (vt.follow.baseline_radius)
+    baseline_control: Optional[Control] = field(default_factory=Control)  # None: no baseline
+    city: Optional[CityRoad] = None
+    description: str = ""
+    path: Optional[Path] = None
+    origin: Optional[Georeference] = None  # where local (0, 0) lies on the Earth (mission export)
+
+    @classmethod
+    def load(cls, path: str | Path) -> "FollowScenario":
+        file = Path(path)
+        return cls.from_mapping(read_yaml_mapping(file, "scenario"), file.resolve().parent, file)
+
+    @classmethod
+    def from_mapping(cls, data: Mapping[str, Any], base: Path, path: Optional[Path] = None) -> "FollowScenario":
+        reject_unknown(data, TOP_KEYS)
+        u = section(data, "uav", {"speed", "min_turn_radius", "altitude"})
+        defaults = Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
+        uav = Uav(speed=positive("uav.speed", u.get("speed", defaults.speed)),
+                  min_turn_radius=positive("uav.min_turn_radius", u.get("min_turn_radius", defaults.min_turn_radius)),
+                  altitude=number("uav.altitude", u.get("altitude", defaults.altitude)))
+        vehicle, legs = _vehicle(data, base)
+        parameters = _parameters(data)
+        schedule = _offset_schedule(data)
+        wind = _wind(data)
+        if math.hypot(wind.east, wind.north) >= uav.speed:
+            raise fail("wind", {"east": wind.east, "north": wind.north},
+                       f"must be slower than the UAV's airspeed {uav.speed} m/s")
+        estimate = None
+        if data.get("wind_estimate") is not None:
+            e = section(data, "wind_estimate", {"east", "north"})
+            estimate = (number("wind_estimate.east", e.get("east", 0.0)),
+                        number("wind_estimate.north", e.get("north", 0.0)))
+        c = section(data, "camera", {"fov_deg", "max_gimbal_deg"})
+        camera = DownwardCamera(fov=math.radians(number("camera.fov_deg", c.get("fov_deg", 74.0), low=0.0, high=179.0)),
+                                max_gimbal=math.radians(number("camera.max_gimbal_deg", c.get("max_gimbal_deg", 25.0),
+                                                               low=0.0, high=89.0)))
+        f = section(data, "flight", {"dt", "integration", "max_time"})
+        integration = f.get("integration", "discrete")
+        if integration not in ("discrete", "continuous"):
+            raise fail("flight.integration", integration, 'must be "discrete" or "continuous"')
+        flight = FollowFlight(integration=integration, dt=positive("flight.dt", f.get("dt", 0.02)),
+                              max_time=number("flight.max_time", f.get("max_time", 0.0), low=0.0))
+        radius, control = _baseline(data)
+        return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
+                   wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
+                   baseline_control=control, city=_city(data, base), description=str(data.get("description", "")),
+                   path=path, origin=None if data.get("origin") is None else Georeference.from_value(data["origin"]))
+
+    def city_available(self) -> bool:
+        """Whether the scenario has a city section whose map and road files exist (the shared
+        data is optional: without it the city runs are skipped)."""
+        return self.city is not None and self.city.map.is_file() and self.city.road.is_file()
+
+    def city_vehicle(self) -> GroundVehicle:
+        """The scenario's speed profile driven along the city road (its legs' headings ignored)."""
+        if self.city is None or not self.legs:
+            raise fail("city", None, "needs a city section and a vehicle given by legs")
+        road = read_road_path(self.city.road, "city.road")
+        return GroundVehicle.along_path(road, self.legs)
+
+    def run(self, compensation: Optional[bool] = None, city: bool = True,
+            stage: Optional[Callable[[str], None]] = None) -> "FollowStudy":
+        """The planner's run, the baseline's, and with ``city`` (when the scenario has one) both
+        again on the city road with line of sight. compensation overrides the file's.
+        ``stage(name)`` is called before each run (progress)."""
+        say = stage or (lambda _name: None)
+        parameters = self.parameters
+        if compensation is not None:
+            parameters = _with_compensation(parameters, compensation)
+        common: dict[str, Any] = {"wind": self.wind, "flight": self.flight, "camera": self.camera}
+        say("follow")
+        follow = simulate(self.vehicle, self.uav, parameters, wind_estimate=self.wind_estimate,
+                          offset_schedule=self.offset_schedule, **common)
+        orbit = None
+        if self.baseline_control is not None:
+            say("baseline")
+            orbit = baseline(self.vehicle, self.uav, self.baseline_radius, control=self.baseline_control,
+                             parameters=parameters, **common)
+        study = FollowStudy(self, parameters, follow, orbit)
+        if city and self.city is not None:
+            say("city")
+            env = load_environment(self.city.map, up=self.city.up)
+            scene = VisibilityScene(env)
+            vehicle = self.city_vehicle()
+            uav = Uav(speed=self.uav.speed, min_turn_radius=self.uav.min_turn_radius,
+                      altitude=self.city.altitude if self.city.altitude is not None else self.uav.altitude)
+            study.environment = env
+            study.city_follow = simulate(vehicle, uav, parameters, wind_estimate=self.wind_estimate,
+                                         offset_schedule=self.offset_schedule, scene=scene, **common)
+            if self.baseline_control is not None:
+                study.city_baseline = baseline(vehicle, uav, self.baseline_radius, control=self.baseline_control,
+                                               parameters=parameters, scene=scene, **common)
+        return study
+
+
+@dataclass
+class FollowStudy:
+    """The runs of one scenario."""
+
+    scenario: FollowScenario
+    parameters: FollowParameters
+    follow: FollowResult
+    baseline: Optional[FollowResult] = None
+    city_follow: Optional[FollowResult] = None
+    city_baseline: Optional[FollowResult] = None
+    environment: Optional[Environment] = None
+
+    def metrics(self) -> dict[str, Any]:
+        """metrics.json: the planner's run at the top level, then the baseline and the city runs."""
+        out = dict(self.follow.metrics)
+        out["wind_compensation"] = bool(self.parameters.wind_compensation)
+        out["updates"] = len(self.follow.ticks)
+        if self.baseline is not None:
+            out["baseline"] = self.baseline.metrics
+            out["baseline"]["radius_m"] = float(np.median(np.linalg.norm(
+                self.baseline.desired - self.baseline.offset_point, axis=1)))
+        if self.city_follow is not None:
+            out["city"] = {"follow": self.city_follow.metrics}
+            if self.city_baseline is not None:
+                out["city"]["baseline"] = self.city_baseline.metrics
+        return out
+
+
+def _with_compensation(p: FollowParameters, on: bool) -> FollowParameters:
+    return FollowParameters(period=p.period, turn_margin=p.turn_margin, threshold=p.threshold,
+                            hysteresis=p.hysteresis, loiter_pattern=p.loiter_pattern, loiter_radius=p.loiter_radius,
+                            loiter_direction=p.loiter_direction, offset_distance=p.offset_distance,
+                            offset_angle=p.offset_angle, offset_reference=p.offset_reference,
+                            wind_compensation=on, update_period=p.update_period)
+
+
+def _heading(key: str, leg: Mapping[str, Any]) -> float:
+    if "heading" in leg and "heading_deg" in leg:
+        raise fail(key, leg, "give heading (a compass word) or heading_deg, not both")
+    if "heading" in leg:
+        word = leg["heading"]
+        if not isinstance(word, str) or word.lower() not in HEADINGS:
+            raise fail(f"{key}.heading", word, f"must be one of {', '.join(HEADINGS)} (or use heading_deg)")
+        return HEADINGS[word.lower()]
+    return math.radians(number(f"{key}.heading_deg", leg.get("heading_deg", 0.0)))
+
+
+def _legs(items: Any) -> list[VehicleLeg]:
+    if not isinstance(items, list) or not items:
+        raise fail("vehicle.legs", items, "must be a non-empty list of legs")
+    legs = []
+    allowed = {"heading", "heading_deg", "speed", "duration", "end_speed"}
+    for i, leg in enumerate(items):
+        key = f"vehicle.legs[{i}]"
+        if not isinstance(leg, Mapping):
+            raise fail(key, leg, "must be a mapping with heading, speed, duration")
+        reject_unknown(leg, allowed, f"{key}.")
+        speed = number(f"{key}.speed", leg.get("speed", 0.0), low=0.0)
+        end = leg.get("end_speed")
+        legs.append(VehicleLeg(_heading(key, leg), speed, positive(f"{key}.duration", leg.get("duration")),
+                               None if end is None else number(f"{key}.end_speed", end, low=0.0)))
+    return legs
+
+
+def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[VehicleLeg]]:
+    v = section(data, "vehicle", {"start", "legs", "track"})
+    if ("legs" in v) == ("track" in v):
+        raise fail("vehicle", dict(v), "give either legs (with an optional start) or track (a t,x,y CSV file)")
+    if "track" in v:
+        t, xy = read_vehicle_track(resolve_path(base, v["track"], "vehicle.track"), "vehicle.track")
+        return GroundVehicle(t, xy), []
+    start = v.get("start", [0.0, 0.0])
+    if not isinstance(start, (list, tuple)) or len(start) != 2:
+        raise fail("vehicle.start", start, "must be [x, y]")
+    legs = _legs(v["legs"])
+    xy = np.array([number(f"vehicle.start[{i}]", s) for i, s in enumerate(start)])
+    return GroundVehicle.from_legs(legs, xy), legs
+
+
+def _parameters(data: Mapping[str, Any]) -> FollowParameters:
+    f = section(data, "follow", {"period", "turn_margin", "threshold", "hysteresis", "loiter_pattern",
+                                 "loiter_radius", "loiter_direction", "compensation", "update_period"})
+    o = section(data, "offset", {"distance", "angle_deg", "reference", "changes"})
+    d = FollowParameters()
+    compensation = f.get("compensation", d.wind_compensation)
+    if not isinstance(compensation, bool):
+        raise fail("follow.compensation", compensation, "must be true or false")
+    checks = {"period": positive, "turn_margin": positive, "threshold": positive, "update_period": positive,
+              "hysteresis": lambda k, x: number(k, x, low=0.0), "loiter_radius": lambda k, x: number(k, x, low=0.0)}
+    values: dict[str, Any] = {name: check(f"follow.{name}", f[name]) for name, check in checks.items() if name in f}
+    for name in ("loiter_pattern", "loiter_direction"):
+        if name in f:
+            values[name] = str(f[name])
+    try:
+        return FollowParameters(wind_compensation=compensation,
+                                offset_distance=number("offset.distance", o.get("distance", 0.0), low=0.0),
+                                offset_angle=math.radians(number("offset.angle_deg", o.get("angle_deg", 0.0))),
+                                offset_reference=str(o.get("reference", d.offset_reference)), **values)
+    except ValueError as error:  # the core names the field (follow.hysteresis, ...)
+        raise type(error)(str(error).replace("direction =", "follow.loiter_direction =", 1)) from None
+
+
+def _offset_schedule(data: Mapping[str, Any]) -> list[tuple[float, float, float]]:
+    changes = (data.get("offset") or {}).get("changes") if isinstance(data.get("offset"), Mapping) else None
+    if changes is None:
+        return []
+    if not isinstance(changes, list):
+        raise fail("offset.changes", changes, "must be a list of {t, distance, angle_deg}")
+    keys = []
+    for i, c in enumerate(changes):
+        key = f"offset.changes[{i}]"
+        if not isinstance(c, Mapping) or "t" not in c:
+            raise fail(key, c, "must be a mapping with t, distance and angle_deg")
+        keys.append((number(f"{key}.t", c["t"]), number(f"{key}.distance", c.get("distance", 0.0), low=0.0),
+                     math.radians(number(f"{key}.angle_deg", c.get("angle_deg", 0.0)))))
+    return keys
+
+
+def _wind(data: Mapping[str, Any]) -> Wind:
+    w = section(data, "wind", {"east", "north", "gusts"})
+    gusts = None
+    if w.get("gusts"):
+        g = section(w, "gusts", {"seed", "intensity", "length_scale"})
+        gusts = Gusts(seed=int(number("wind.gusts.seed", g.get("seed", 0), low=0.0)),
+                      intensity=number("wind.gusts.intensity", g.get("intensity", 1.0), low=0.0),
+                      length_scale=positive("wind.gusts.length_scale", g.get("length_scale", 200.0)))
+    return Wind(east=number("wind.east", w.get("east", 0.0)), north=number("wind.north", w.get("north", 0.0)),
+                gusts=gusts)
+
+
+def _baseline(data: Mapping[str, Any]) -> tuple[Optional[float], Optional[Control]]:
+    if data.get("baseline") is False:
+        return None, None
+    b = section(data, "baseline", {"radius", "beta", "k_psi", "direction"})
+    radius = number("baseline.radius", b.get("radius", 0.0), low=0.0)
+    d = Control()
+    control = Control(beta=schema_beta("baseline.beta", b.get("beta", d.beta)),
+                      k_psi=heading_gain("baseline.k_psi", b.get("k_psi", d.k_psi)),
+                      direction=str(b.get("direction", d.direction)))
+    return (radius or None), control
+
+
+def _city(data: Mapping[str, Any], base: Path) -> Optional[CityRoad]:
+    if data.get("city") is None:
+        return None
+    c = section(data, "city", {"map", "road", "up", "altitude"})
+    for key in ("map", "road"):
+        if key not in c:
+            raise fail(f"city.{key}", None, "is required in a city section")
+    up = str(c.get("up", "y"))
+    if up not in ("y", "z"):
+        raise fail("city.up", up, 'must be "y" or "z"')
+    altitude = c.get("altitude")
+    return CityRoad(map=resolve_path(base, c["map"], "city.map"), road=resolve_path(base, c["road"], "city.road"),
+                    up=up, altitude=None if altitude is None else number("city.altitude", altitude))

@@ -1,0 +1,82 @@
+"""Loiter files: the scenario YAML (examples/loiter_*.yaml) and a plan sampled as CSV."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from .. import schema
+from ..georeference import Georeference
+from ..io.text import read_yaml_mapping
+from .planning import Camera, Coverage, Plan
+from .scenario import Scenario
+
+__all__ = ["load_scenario", "read_loiter_scenario", "write_loiter_samples_csv"]
+
+
+def read_loiter_scenario(path: str | Path) -> Scenario:
+    """A loiter scenario file (examples/loiter_*.yaml); every bad value names its key."""
+    data = read_yaml_mapping(path, "scenario")
+    allowed = {"name", "aois", "start", "end", "turn_radius", "speed", "aoi_radius", "turns", "camera",
+               "threshold", "dt", "paper", "origin"}
+    schema.reject_unknown(data, allowed)
+
+    raw_aois = data.get("aois")
+    if not isinstance(raw_aois, list) or not raw_aois:
+        raise schema.fail("aois", raw_aois, "must be a non-empty list of [x, y] AOI centres")
+    aois = np.array([schema.pair(f"aois[{i}]", a) for i, a in enumerate(raw_aois)], dtype=float)
+    camera_section = schema.section(data, "camera", {"fov_deg", "max_gimbal_deg", "altitude", "levelled"})
+    camera = schema.apply_checks(Camera(), camera_section, "camera", {
+        "fov_deg": schema.positive, "max_gimbal_deg": lambda k, v: schema.number(k, v, low=0.0),
+        "altitude": schema.positive, "levelled": schema.boolean})
+    paper = data.get("paper") or {}
+    if not isinstance(paper, dict):
+        raise schema.fail("paper", paper, "must map a method to its Table 1 numbers")
+    for method, numbers in paper.items():
+        if not isinstance(numbers, dict):
+            raise schema.fail(f"paper.{method}", numbers, "must map a quantity to a number")
+    paper_numbers = {str(method): {str(name): schema.number(f"paper.{method}.{name}", value)
+                                   for name, value in numbers.items()} for method, numbers in paper.items()}
+    scenario = Scenario(
+        aois=aois,
+        name=str(data.get("name", Path(path).stem)),
+        start=schema.pair("start", data.get("start", [0.0, 0.0])),
+        end=schema.pair("end", data.get("end", [0.0, 0.0])),
+        turn_radius=schema.positive("turn_radius", data.get("turn_radius", 46.0)),
+        speed=schema.positive("speed", data.get("speed", 12.0)),
+        aoi_radius=schema.positive("aoi_radius", data.get("aoi_radius", 46.0)),
+        turns=schema.integer("turns", data.get("turns", 1), 1, 1000),
+        camera=camera,
+        threshold=schema.number("threshold", data.get("threshold", 0.75), low=0.0, high=1.0, low_open=True),
+        dt=schema.positive("dt", data.get("dt", 1.0)),
+        paper=paper_numbers,
+        origin=None if data.get("origin") is None else Georeference.from_value(data["origin"], "origin"),
+    )
+    # The planner's own checks (overlapping circles, R < r, start inside a circle) name the key.
+    scenario.plan("tlpp")
+    return scenario
+
+
+def write_loiter_samples_csv(path: str | Path, plan: Plan, coverage: Coverage, dt: float,
+                             threshold: float = 0.75) -> Path:
+    """The plan sampled every dt (as the coverage was): t, x, y, psi, turn rate, segment role, the AOI
+    most in view, the gimbal angle and the AOIs covered at that step."""
+    samples = plan.sample_states(dt, False)
+    roles = [plan.segments[k].role for k in samples.segment]
+    covered = [";".join(str(i) for i in np.flatnonzero(row >= threshold)) for row in coverage.fraction]
+    file = Path(path)
+    file.parent.mkdir(parents=True, exist_ok=True)
+    with open(file, "w", encoding="utf-8") as out:
+        out.write("t,x,y,psi,turn_rate,role,pointed_aoi,gimbal_rad,covered_aois\n")
+        for k in range(samples.poses.shape[0]):
+            x, y, psi = samples.poses[k]
+            out.write(f"{samples.t[k]:.6f},{x:.6f},{y:.6f},{psi:.9f},{samples.turn_rate[k]:.9f},{roles[k]},"
+                      f"{coverage.pointed[k]},{coverage.gimbal[k]:.6f},{covered[k]}\n")
+    return file
+
+
+def load_scenario(path: str | Path) -> Scenario:
+    """Read a loiter scenario YAML file (see examples/loiter_*.yaml)."""
+    return read_loiter_scenario(Path(path))
+

@@ -1,0 +1,106 @@
+"""Flying a loiter plan through the flight layer in a wind the guidance does not know, and scoring
+the flown path with the scenario's camera."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import flight
+from .._core import VistrackError
+from .planning import Coverage, FlightTrajectory, Plan, Wind, coverage, threshold_value
+from .scenario import Scenario
+
+__all__ = ["flown_samples", "fly", "fly_and_score", "loiter_coverage_fraction", "path_pieces"]
+
+
+def path_pieces(plan: Plan) -> np.ndarray:
+    """The plan as (n, 5) rows x0, y0, heading, length, curvature: the path a
+    ``vistrack.flight.PathFollower`` flies."""
+    rows = []
+    for s in plan.segments:
+        curvature = 0.0
+        if s.radius is not None:  # arcs
+            curvature = (1.0 if s.direction == "ccw" else -1.0) / s.radius
+        rows.append((s.start[0], s.start[1], s.start_heading, s.length, curvature))
+    return np.array(rows, dtype=float)
+
+
+def fly(plan: Plan, wind: Wind | tuple[float, float] | None = None, dt: float = 0.05,
+        integration: str = "discrete", lookahead_radii: float = 1.0, heading_gain: float = 3.0) -> FlightTrajectory:
+    """Fly the plan through the flight layer: a ``PathFollower`` on its lines and arcs, the Dubins
+    vehicle of the plan's speed and turn radius, in a wind the guidance does not know (``Wind`` or
+    (east, north) m/s). Starts at the plan's start on its first heading; ends at its end point (or
+    after three times the planned flight time plus 10 minutes)."""
+    if wind is not None and not isinstance(wind, flight.Wind):
+        east, north = wind
+        wind = flight.Wind(east=float(east), north=float(north))
+    follower = flight.PathFollower(path_pieces(plan), plan.speed, plan.turn_radius, lookahead_radii, heading_gain)
+    start = plan.at_time(0.0)
+    return flight.fly(follower, start, plan.speed, plan.turn_radius, wind=wind, dt=dt,
+                      max_time=3.0 * plan.flight_time + 600.0, integration=integration)
+
+
+def flown_samples(trajectory: FlightTrajectory, dt: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
+    """A flown trajectory every ``dt`` (whole multiples of its output step): (n, 4) rows x, y, psi and
+    the turn rate applied there (the input of :func:`coverage`), and the index of the path piece
+    (plan segment) being flown at each."""
+    t = np.asarray(trajectory.t)
+    step = float(t[1] - t[0]) if t.size > 1 else dt
+    stride = max(1, round(dt / step))
+    if abs(stride * step - dt) > 1e-9 * dt:
+        raise VistrackError(f"dt = {dt}: must be a multiple of the flight's output step {step}")
+    keep = slice(0, t.size, stride)
+    rows = np.column_stack([trajectory.x[keep], trajectory.y[keep], trajectory.psi[keep], trajectory.command[keep]])
+    return rows, np.asarray(trajectory.target_index)[keep]
+
+
+def loiter_coverage_fraction(plan: Plan, segments: np.ndarray, cov: Coverage, threshold: float = 0.75) -> float:
+    """Of the time steps spent on a loiter segment (by the index of the segment flown at each), the
+    fraction at which that loiter's AOI counts as covered."""
+    threshold = threshold_value(threshold)
+    covered, total = 0, 0
+    for k, index in enumerate(segments):
+        segment = plan.segments[int(index)]
+        if segment.role == "loiter" and segment.aoi is not None:
+            total += 1
+            covered += bool(cov.fraction[k, segment.aoi] >= threshold)
+    return covered / total if total else 0.0
+
+
+def fly_and_score(scenario: Scenario, plan: Plan, wind: tuple[float, float], planned: Coverage | None = None,
+                  keep_trajectory: bool = True) -> dict[str, object]:
+    """Fly ``plan`` in the constant ``wind`` (east, north) and score the flown path with the
+    scenario's camera against the plan: flight time, covered time (total and per AOI), the share of
+    the loiter time with the AOI covered, and how far the path was blown off the plan."""
+    planned = planned if planned is not None else scenario.coverage(plan)
+    trajectory = fly(plan, wind)
+    samples, segments = flown_samples(trajectory, scenario.dt)
+    flown = coverage(samples, scenario.aois, scenario.camera, scenario.threshold, scenario.dt, speed=scenario.speed,
+                     aoi_radius=scenario.aoi_radius)
+    planned_segments = np.asarray(plan.sample_states(scenario.dt, False).segment)
+    planned_loiter = loiter_coverage_fraction(plan, planned_segments, planned, scenario.threshold)
+    flown_loiter = loiter_coverage_fraction(plan, segments, flown, scenario.threshold)
+    cross_track = _cross_track(plan, trajectory)
+    record: dict[str, object] = {
+        "wind": [float(wind[0]), float(wind[1])], "finished": bool(trajectory.finished),
+        "flight_time_s": float(trajectory.end_time), "planned_flight_time_s": plan.flight_time,
+        "coverage_time_s": flown.time, "planned_coverage_time_s": planned.time,
+        "coverage_time_per_aoi_s": [float(t) for t in flown.time_per_aoi],
+        "coverage_area_m2": flown.area, "planned_coverage_area_m2": planned.area,
+        "loiter_covered_fraction": flown_loiter, "planned_loiter_covered_fraction": planned_loiter,
+        "loiter_coverage_lost": planned_loiter - flown_loiter,
+        "max_cross_track_m": float(np.max(cross_track)),
+        "rms_cross_track_m": float(np.sqrt(np.mean(cross_track ** 2))),
+    }
+    if keep_trajectory:
+        record["_trajectory"] = np.column_stack([trajectory.x, trajectory.y])
+    return record
+
+
+def _cross_track(plan: Plan, trajectory: FlightTrajectory) -> np.ndarray:
+    """Distance of each flown sample from the planned path (nearest point of a 1 m sampling)."""
+    from scipy.spatial import cKDTree
+
+    dense = plan.sample(1.0 / plan.speed)[:, :2]
+    distance, _ = cKDTree(dense).query(np.column_stack([trajectory.x, trajectory.y]))
+    return np.asarray(distance)

@@ -1,0 +1,73 @@
+"""A loiter scenario: AOI centres, start and end, vehicle, camera and coverage settings; seeded
+random scenarios (section 4.1's area and vehicle)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .._core import VistrackError
+from ..georeference import Georeference
+from .planning import AREA_SIZE, Camera, Coverage, Plan, Point, coverage, plan
+
+__all__ = ["Scenario", "random_aois", "random_scenario"]
+
+
+@dataclass
+class Scenario:
+    """A loiter mission: AOI centres, start and end, vehicle, camera and coverage settings.
+
+    ``paper`` holds the paper's Table 1 numbers for the scenario of the same size, when the file
+    gives them (``{"fly_through": {"flight_time_min": ..., "coverage_m2": ...}, ...}``).
+    """
+
+    aois: np.ndarray
+    name: str = "scenario"
+    start: tuple[float, float] = (0.0, 0.0)
+    end: tuple[float, float] = (0.0, 0.0)
+    turn_radius: float = 46.0
+    speed: float = 12.0
+    aoi_radius: float = 46.0
+    turns: int = 1
+    camera: Camera = field(default_factory=Camera)
+    threshold: float = 0.75
+    dt: float = 1.0
+    paper: dict[str, dict[str, float]] = field(default_factory=dict)
+    origin: Georeference | None = None  # where local (0, 0) lies on the Earth (mission export)
+
+    def plan(self, method: str, order: str = "given") -> Plan:
+        return plan(self.aois, method, self.start, self.end, self.turn_radius, self.speed, self.aoi_radius,
+                    self.turns, order)
+
+    def coverage(self, plan_or_samples: Plan | np.ndarray) -> Coverage:
+        return coverage(plan_or_samples, self.aois, self.camera, self.threshold, self.dt, speed=self.speed,
+                        aoi_radius=self.aoi_radius)
+
+
+
+def random_aois(count: int, rng: np.random.Generator, size: float = AREA_SIZE, separation: float = 160.0,
+                clearance: float = 80.0, start: Point = (0.0, 0.0), end: Point = (0.0, 0.0),
+                attempts: int = 100000) -> np.ndarray:
+    """``count`` AOI centres uniform in [0, size]^2, at least ``separation`` apart and ``clearance``
+    from the start and end (defaults: LDLPP can fly every order, 2 D_Entry = 159.3 m and
+    D_Entry = 79.7 m at R = r = 46 m)."""
+    if count < 1:
+        raise VistrackError(f"count = {count}: at least one AOI")
+    anchors = [np.asarray(start, dtype=float), np.asarray(end, dtype=float)]
+    chosen: list[np.ndarray] = []
+    for _ in range(attempts):
+        c = rng.uniform(0.0, size, 2)
+        if all(np.hypot(*(c - a)) >= clearance for a in anchors) and all(
+                np.hypot(*(c - o)) >= separation for o in chosen):
+            chosen.append(c)
+            if len(chosen) == count:
+                return np.array(chosen)
+    raise VistrackError(f"count = {count}: could not place that many AOIs {separation} m apart in "
+                        f"{size} x {size} m")
+
+
+def random_scenario(count: int, seed: int, **settings: object) -> Scenario:
+    """A seeded random scenario of ``count`` AOIs (section 4.1's area and vehicle)."""
+    rng = np.random.default_rng(seed)
+    return Scenario(aois=random_aois(count, rng), name=f"random-{count}-{seed}", **settings)  # type: ignore[arg-type]

@@ -1,0 +1,358 @@
+"""Scenario files: one YAML document describing a whole tracking run.
+
+A scenario names the environment, the POI's path, the UAV, the sensor, the planning, control and
+simulation settings, and optional constant-radius baselines. Every numeric default comes from
+the C++ parameter structs (cpp/include/vistrack/parameters.hpp), the single place defaults live;
+``vistrack run --print-defaults`` prints a complete scenario with them.
+
+Relative paths inside a scenario file are resolved against the file's own folder.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Mapping, Sequence
+
+import numpy as np
+import yaml
+
+from .._core import (
+    Control,
+    Environment,
+    Planning,
+    PoiMotion,
+    PoiPath,
+    RoadNetwork,
+    Sensor,
+    SimulationOptions,
+    Uav,
+    VistrackError,
+)
+from ..georeference import Georeference
+from ..io.mesh import load_environment
+from ..io.text import parse_yaml, read_text
+from ..report_options import ReportOptions, report_options
+from ..schema import (
+    absolute_tolerance,
+    apply_checks,
+    coordinate,
+    fail,
+    heading_gain,
+    integer,
+    length,
+    number,
+    positive,
+    rate_margin,
+    reject_unknown,
+    relative_tolerance,
+    resolve_path,
+    section,
+    speed,
+)
+from ..schema import beta as schema_beta
+
+__all__ = ["EnvironmentSpec", "PoiSpec", "ReportOptions", "Scenario", "default_scenario_text", "road_route"]
+
+DEMO_SCENARIO = Path(__file__).parent.parent / "scenarios" / "demo.yaml"
+
+
+def road_route(roads: RoadNetwork, via_points: Sequence[Sequence[float]]) -> list[int]:
+    """Road nodes from the node nearest the first point, through the nodes nearest the others,
+    joined by shortest routes along the road edges."""
+    via = [roads.nearest_node(np.asarray(p, dtype=float)) for p in via_points]
+    nodes = [via[0]]
+    for a, b in zip(via, via[1:]):
+        nodes += roads.shortest_route(a, b)[1:]
+    return nodes
+
+
+@dataclass
+class EnvironmentSpec:
+    """Where the environment comes from: the demo city, a GeoJSON file or a mesh file."""
+
+    kind: str = "demo"  # "demo", "geojson" or "mesh"
+    path: Path | None = None
+    up: str = "z"
+
+    def load(self, origin: Georeference | None = None) -> Environment:
+        """The environment; ``origin`` (the scenario's) becomes ``env.origin`` and is what a
+        longitude/latitude GeoJSON is projected about (without it: the data's centre)."""
+        if self.kind == "demo" or self.path is None:
+            env = Environment.demo()
+            env.origin = origin
+            return env
+        return load_environment(self.path, self.up, self.kind, origin)
+
+    def describe(self) -> str:
+        return "demo city" if self.kind == "demo" else f"{self.kind} {self.path}"
+
+
+@dataclass
+class PoiSpec:
+    """The POI's path: a CSV file, explicit waypoints, road-network nodes, or a route along the
+    roads through the nodes nearest to given points; and its speed."""
+
+    speed: float = PoiMotion().speed
+    path: Path | None = None
+    waypoints: list[list[float]] | None = None
+    nodes: list[int] | None = None
+    route: list[list[float]] | None = None
+
+    def build(self, env: Environment) -> PoiPath:
+        if self.path is not None:
+            return PoiPath.from_csv(str(self.path), self.speed)
+        if self.waypoints is not None:
+            return PoiPath(np.asarray(self.waypoints, dtype=float), self.speed)
+        if self.nodes is not None:
+            return PoiPath.from_nodes(env.roads, self.nodes, self.speed)
+        if self.route is not None:
+            return PoiPath.from_nodes(env.roads, road_route(env.roads, self.route), self.speed)
+        raise VistrackError("poi: no path given (path: CSV, waypoints: [[x, y], ...] or nodes: [...])")
+
+
+@dataclass
+class Scenario:
+    """A validated scenario. Build one with Scenario.load(path) or Scenario.from_dict(data)."""
+
+    environment: EnvironmentSpec = field(default_factory=EnvironmentSpec)
+    poi: PoiSpec = field(default_factory=PoiSpec)
+    uav: Uav = field(default_factory=Uav)
+    start: tuple[float, float, float] | None = None  # UAV start (x, y, psi); None: on the orbit
+    sensor: Sensor = field(default_factory=Sensor)
+    planning: Planning = field(default_factory=Planning)
+    control: Control = field(default_factory=Control)
+    simulation: SimulationOptions = field(default_factory=SimulationOptions)
+    baselines: list[float] = field(default_factory=list)  # constant orbit radii to compare, m
+    origin: Georeference | None = None  # where local (0, 0, 0) lies on the Earth (maps in, routes out)
+    report: ReportOptions = field(default_factory=ReportOptions)
+    name: str = "scenario"
+    source: Path | None = None
+
+    SECTIONS = ("name", "origin", "environment", "poi", "uav", "sensor", "planning", "control",
+                "simulation", "baselines", "report")
+
+    @classmethod
+    def load(cls, path: str | Path) -> "Scenario":
+        """Read and validate a scenario YAML file; errors name the key, the value and the range."""
+        path = Path(path)
+        data = parse_yaml(read_text(path, "scenario"), "scenario", path)
+        scenario = cls.from_dict(data if data is not None else {}, base=path.parent)
+        scenario.source = path
+        if scenario.name == "scenario":
+            scenario.name = path.stem
+        return scenario
+
+    @classmethod
+    def demo(cls) -> "Scenario":
+        """The scenario ``vistrack demo`` runs: the embedded city, no files needed."""
+        return cls.load(DEMO_SCENARIO)
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any], base: str | Path = ".") -> "Scenario":
+        """Validate a scenario given as a mapping (the parsed YAML)."""
+        base = Path(base)
+        if not isinstance(data, Mapping):
+            raise fail("scenario", data, "must be a mapping with sections " + ", ".join(cls.SECTIONS))
+        reject_unknown(data, cls.SECTIONS, noun="section")
+        scenario = cls()
+        if "name" in data:
+            name = data["name"]
+            if not isinstance(name, str) or not re.fullmatch(r"[\w.-]+", name) or set(name) == {"."}:
+                raise fail("name", name, "must be a non-empty name of letters, digits, '_', '-' or '.' "
+                                          "(it names the output folder)")
+            scenario.name = data["name"]
+        if data.get("origin") is not None:
+            scenario.origin = Georeference.from_value(data["origin"], "origin")
+        scenario.environment = _environment(section(data, "environment", {"demo", "geojson", "mesh", "up"}), base)
+        scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
+        scenario.uav, scenario.start = _uav(section(data, "uav", {"speed", "min_turn_radius", "altitude", "start"}))
+        scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
+        scenario.planning = _planning(section(
+            data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin",
+                               "locus", "tracking_margin", "check_spacing", "check_min_spacing", "turn_share",
+                               "max_volumes"}))
+        scenario.control = _control(section(data, "control", {"beta", "k_psi", "direction"}))
+        scenario.simulation = _simulation(section(
+            data, "simulation", {"rtol", "atol", "max_step", "output_step"}))
+        scenario.baselines = _baselines(data.get("baselines", []))
+        scenario.report = report_options(section(data, "report", {"html", "animation", "frames", "duration", "volumes",
+                                                           "view"}))
+        if not scenario.uav.speed > scenario.poi.speed:
+            raise fail("uav.speed", scenario.uav.speed,
+                        f"must exceed poi.speed = {scenario.poi.speed} (the UAV must outrun the POI)")
+        return scenario
+
+    def to_dict(self) -> dict[str, Any]:
+        """The scenario as plain data, every default filled in (what --print-defaults shows)."""
+        env: dict[str, Any] = {"demo": True} if self.environment.kind == "demo" else {
+            self.environment.kind: str(self.environment.path)}
+        if self.environment.kind == "mesh":
+            env["up"] = self.environment.up
+        poi: dict[str, Any] = {"speed": self.poi.speed}
+        if self.poi.path is not None:
+            poi["path"] = str(self.poi.path)
+        if self.poi.waypoints is not None:
+            poi["waypoints"] = self.poi.waypoints
+        if self.poi.nodes is not None:
+            poi["nodes"] = self.poi.nodes
+        if self.poi.route is not None:
+            poi["route"] = self.poi.route
+        band = self.sensor.altitude_band
+        origin = self.origin
+        return {
+            "name": self.name,
+            "origin": None if origin is None else [origin.lat, origin.lon, origin.alt],
+            "environment": env,
+            "poi": poi,
+            "uav": {"speed": self.uav.speed, "min_turn_radius": self.uav.min_turn_radius,
+                    "altitude": self.uav.altitude,
+                    "start": list(self.start) if self.start is not None else None},
+            "sensor": {"d_max": self.sensor.d_max, "altitude_band": list(band) if band else None},
+            "planning": {"spacing": self.planning.spacing, "cutoff": self.planning.cutoff,
+                         "resolution_deg": self.planning.resolution_deg,
+                         "min_spacing": self.planning.min_spacing, "max_depth": self.planning.max_depth,
+                         "rate_margin": self.planning.rate_margin, "locus": self.planning.locus,
+                         "tracking_margin": self.planning.tracking_margin,
+                         "check_spacing": self.planning.check_spacing,
+                         "check_min_spacing": self.planning.check_min_spacing,
+                         "turn_share": self.planning.turn_share,
+                         "max_volumes": self.planning.max_volumes},
+            "control": {"beta": self.control.beta, "k_psi": self.control.k_psi,
+                        "direction": self.control.direction},
+            "simulation": {"rtol": self.simulation.rtol, "atol": self.simulation.atol,
+                           "max_step": self.simulation.max_step,
+                           "output_step": self.simulation.output_step},
+            "baselines": list(self.baselines),
+            "report": {"html": self.report.html, "animation": self.report.animation, "frames": self.report.frames,
+                       "duration": self.report.duration, "volumes": self.report.volumes,
+                       "view": list(self.report.view)},
+        }
+
+
+def _environment(section: dict[str, Any], base: Path) -> EnvironmentSpec:
+    sources = [key for key in ("demo", "geojson", "mesh") if section.get(key) not in (None, False)]
+    if not section:
+        return EnvironmentSpec()
+    if len(sources) != 1:
+        raise fail("environment", section, "give exactly one of demo: true, geojson: FILE, mesh: FILE")
+    kind = sources[0]
+    if kind == "demo":
+        if section["demo"] is not True:
+            raise fail("environment.demo", section["demo"], "must be true")
+        if "up" in section:
+            raise fail("environment.up", section["up"], "only applies to environment.mesh")
+        return EnvironmentSpec()
+    up = section.get("up", "z")
+    if up not in ("y", "z"):
+        raise fail("environment.up", up, 'must be "z" or "y"')
+    if kind == "geojson" and "up" in section:
+        raise fail("environment.up", up, "only applies to environment.mesh")
+    return EnvironmentSpec(kind, resolve_path(base, section[kind], f"environment.{kind}"), up)
+
+
+def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
+    spec = PoiSpec()
+    if "speed" in section:
+        spec.speed = speed("poi.speed", section["speed"])
+    sources = [key for key in ("path", "waypoints", "nodes", "route") if key in section]
+    if len(sources) > 1:
+        raise fail("poi", section, "give one of path: CSV, waypoints: [[x, y], ...], nodes: [...], "
+                                    "route: [[x, y], ...]")
+    if not sources:
+        return spec  # PoiSpec.build says what is missing when the scenario is run
+    key = sources[0]
+    value = section[key]
+    if key == "path":
+        spec.path = resolve_path(base, value, "poi.path")
+    elif key in ("waypoints", "route"):
+        if not isinstance(value, list) or len(value) < 2:
+            raise fail(f"poi.{key}", value, "must be a list of at least two points")
+        points = []
+        for i, point in enumerate(value):
+            sizes = (2, 3) if key == "waypoints" else (2,)
+            if not isinstance(point, list) or len(point) not in sizes:
+                allowed = "must be [x, y] or [x, y, z]" if key == "waypoints" else "must be [x, y]"
+                raise fail(f"poi.{key}[{i}]", point, allowed)
+            points.append([coordinate(f"poi.{key}[{i}][{k}]", c) for k, c in enumerate(point)])
+        setattr(spec, key, points)
+    else:
+        if not isinstance(value, list) or len(value) < 2:
+            raise fail("poi.nodes", value, "must be a list of at least two road-node indices")
+        spec.nodes = [integer(f"poi.nodes[{i}]", n, 0, 10**9) for i, n in enumerate(value)]
+    return spec
+
+
+def _uav(section: dict[str, Any]) -> tuple[Uav, tuple[float, float, float] | None]:
+    uav = apply_checks(Uav(), section, "uav", {"speed": speed, "min_turn_radius": length, "altitude": coordinate})
+    start = section.get("start")
+    if start is not None:
+        if not isinstance(start, list) or len(start) != 3:
+            raise fail("uav.start", start, "must be [x, y, psi] (metres, metres, radians)")
+        start = (coordinate("uav.start[0]", start[0]), coordinate("uav.start[1]", start[1]),
+                 number("uav.start[2]", start[2], low=-1e9, high=1e9))
+    return uav, start
+
+
+def _sensor(section: dict[str, Any]) -> Sensor:
+    sensor = Sensor()
+    if "d_max" in section:
+        sensor.d_max = length("sensor.d_max", section["d_max"])
+    band = section.get("altitude_band")
+    if band is not None:
+        if not isinstance(band, list) or len(band) != 2:
+            raise fail("sensor.altitude_band", band, "must be [h_lo, h_hi] in metres, or null")
+        sensor.altitude_band = (coordinate("sensor.altitude_band[0]", band[0]),
+                                coordinate("sensor.altitude_band[1]", band[1]))
+    sensor.validate()
+    return sensor
+
+
+def _planning(section: dict[str, Any]) -> Planning:
+    def locus(key: str, value: Any) -> str:
+        if value not in ("smooth", "paper"):
+            raise fail(key, value, '"smooth" (checked between samples, C1; the default) or "paper" (Algorithm 1, '
+                                   'piecewise linear)')
+        return value
+
+    return apply_checks(Planning(), section, "planning", {
+        "spacing": length, "cutoff": lambda k, v: number(k, v, low=0.0, high=1e21, low_open=True),
+        "resolution_deg": lambda k, v: number(k, v, low=0.1, high=30.0),
+        "min_spacing": length,
+        "max_depth": lambda k, v: integer(k, v, 0, 30),
+        "rate_margin": rate_margin,
+        "locus": locus, "tracking_margin": lambda k, v: number(k, v, low=0.0, high=1e7),
+        "check_spacing": length, "check_min_spacing": length,
+        "turn_share": lambda k, v: number(k, v, low=0.0, low_open=True),
+        "max_volumes": lambda k, v: integer(k, v, 1, 10**12)})
+
+
+def _control(section: dict[str, Any]) -> Control:
+    def direction(key: str, value: Any) -> str:
+        if value not in ("ccw", "cw"):
+            raise fail(key, value, 'must be "ccw" or "cw"')
+        return value
+
+    return apply_checks(Control(), section, "control", {"beta": schema_beta, "k_psi": heading_gain,
+                                                  "direction": direction})
+
+
+def _simulation(section: dict[str, Any]) -> SimulationOptions:
+    return apply_checks(SimulationOptions(), section, "simulation", {
+        "rtol": relative_tolerance, "atol": absolute_tolerance, "max_step": positive, "output_step": positive})
+
+
+def _baselines(value: Any) -> list[float]:
+    if value is None:
+        return []
+    if not isinstance(value, list):
+        raise fail("baselines", value, "must be a list of orbit radii in metres")
+    return [length(f"baselines[{i}]", r) for i, r in enumerate(value)]
+
+
+def default_scenario_text() -> str:
+    """A complete scenario with every default written out (the demo city and route)."""
+    scenario = Scenario.demo()
+    scenario.name = "scenario"
+    return yaml.safe_dump(scenario.to_dict(), sort_keys=False)

@@ -1,0 +1,74 @@
+"""Dubins waypoint navigation (DWN) against classical waypoint navigation (WN), after Silverberg &
+Xu, *Dubins Waypoint Navigation of Small-Class Unmanned Aerial Vehicles* (OJOp 2019).
+
+Both fly on the flight layer (:mod:`vistrack.flight`) with the paper's feedback law (5). WN
+steers to the active waypoint and switches inside the waypoint radius R_WP; DWN steers to the
+turning point T_n of the horizon (pose, W_n, W_{n+1}) and moves on when T_n enters the
+reachability zone; the last waypoint is flown to directly.
+
+- :func:`turning_point` solves the horizon exactly (four turn cases, theta to 1e-12 rad);
+  :func:`horizon_path` and :func:`horizon_lengths` give the path and F(theta) of one case.
+- :func:`fly` flies a route and returns a :class:`NavigationFlight` with the trajectory and the
+  metrics (miss distances, reached, overshoot, swirls, path length, duration, fuel). Its
+  ``turning_points`` are the DWN turning points in the order flown: the route an autopilot would
+  be given instead of the waypoints.
+- :func:`paper_flights` flies the comparison of the paper's Figures 11 and 12 (DWN, and WN at
+  R_WP = 0.1R, 0.5R, R); :func:`theta_against_weight` is Figure 10;
+  :func:`monte_carlo` goes beyond the paper: random routes and winds, with and without gusts.
+
+- ``navigation``: the API above; ``study``: the Monte Carlo; routes come in as CSV
+  (:func:`vistrack.io.read_route`).
+
+Defaults are the paper's section 3: R = 0.7, v = 0.8, dt = 0.02, gains g = 0.1, h = 5.25
+(``DEFAULTS``, read from the C++ parameters).
+"""
+
+from __future__ import annotations
+
+from .navigation import (
+    CASES,
+    DEFAULTS,
+    PAPER_GUST_MODEL,
+    PAPER_RADII,
+    DubinsWaypointGuidance,
+    HorizonPath,
+    NavigationFlight,
+    TurningPoint,
+    default_start,
+    fly,
+    horizon_lengths,
+    horizon_path,
+    paper_flights,
+    paper_gusts,
+    reachability,
+    route_array,
+    theta_against_weight,
+    turning_point,
+    turning_points,
+)
+from .study import MonteCarlo, monte_carlo, random_route
+
+__all__ = [
+    "CASES",
+    "DEFAULTS",
+    "PAPER_GUST_MODEL",
+    "PAPER_RADII",
+    "DubinsWaypointGuidance",
+    "HorizonPath",
+    "MonteCarlo",
+    "NavigationFlight",
+    "TurningPoint",
+    "default_start",
+    "fly",
+    "horizon_lengths",
+    "horizon_path",
+    "monte_carlo",
+    "paper_flights",
+    "paper_gusts",
+    "random_route",
+    "reachability",
+    "route_array",
+    "theta_against_weight",
+    "turning_point",
+    "turning_points",
+]
