@@ -66,8 +66,16 @@ def main() -> int:
     studies = []
     for name, file, compensation in CASES:
         scenario = FollowScenario.load(REPO / "examples" / file)
-        city = args.city and scenario.city_available() and compensation  # Fig. 6 only in the open
-        studies.append((name, scenario, scenario.run(compensation, city)))
+        study = scenario.run(compensation, city=False)
+        # The same speeds on a Charlotte road, at the city file's altitude (Fig. 6 only in the open).
+        city_file = REPO / "examples" / file.replace(".yaml", "_city.yaml")
+        if args.city and compensation and city_file.is_file():
+            in_city = FollowScenario.load(city_file)
+            if in_city.city_available():
+                city_study = in_city.run(compensation, city=True)
+                study.city_follow, study.city_baseline = city_study.city_follow, city_study.city_baseline
+                study.environment = city_study.environment
+        studies.append((name, scenario, study))
 
     print("| scenario | tracking error mean / max (m) | along-track lag (m) | time sinusoid / loiter / straight (s) "
           "| switches | capturing (s) | off-centre (m) | UAV-vehicle (m) | camera | baseline camera (UAV-vehicle) |")

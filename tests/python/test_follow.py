@@ -185,8 +185,10 @@ def test_scenario_errors_name_the_key(tmp_path: Path) -> None:
         load("vehicle: {legs: [{heading: up, speed: 5, duration: 10}]}")
     with pytest.raises(vt.VistrackError, match=r"^speed = "):
         load("speed: 3\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}")
+    # The wind's speed against the airspeed is the flight's one check (WindField), made when it flies.
+    too_windy = load("uav: {speed: 20}\nwind: {north: 25}\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}")
     with pytest.raises(vt.VistrackError, match=r"^wind = "):
-        load("uav: {speed: 20}\nwind: {north: 25}\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}")
+        too_windy.run(city=False)
     with pytest.raises(vt.VistrackError, match=r"^follow\.hysteresis = 4"):
         load("follow: {hysteresis: 4}\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}")
     track = tmp_path / "track.csv"
@@ -251,7 +253,7 @@ def test_cli_error_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str
 
 
 def test_city_runs_report_line_of_sight(charlotte: Path) -> None:
-    scenario = FollowScenario.load(EXAMPLES / "follow_straight.yaml")
+    scenario = FollowScenario.load(EXAMPLES / "follow_straight_city.yaml")
     scenario.flight = follow.FollowFlight(max_time=120.0)
     study = scenario.run(city=True)
     assert study.city_follow is not None and study.city_baseline is not None

@@ -101,7 +101,7 @@ def test_print_defaults_is_a_valid_scenario(tmp_path: Path, capsys: pytest.Captu
 @pytest.mark.parametrize(
     "text, message",
     [
-        ("uav: {speed: -1}\n", "uav.speed = -1: must be >= 1e-06"),
+        ("uav: {speed: -1}\n", "uav.speed = -1: must be a finite number in [1e-06, 10000] m/s"),
         ("planning: {cutof: 3}\n", "planning.cutof = 3: unknown key"),
         ("environment: {mesh: missing.obj}\n", "missing.obj"),
     ],

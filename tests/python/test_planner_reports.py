@@ -246,14 +246,13 @@ def test_follow_camera_footprint_is_the_cone_camera_sees(psi: float, bank: float
 
 def test_follow_city_animates_line_of_sight(charlotte: Path, tmp_path: Path) -> None:
     """A minute on the Charlotte road: buildings, the line of sight green or red as the city
-    trajectory's column says, the UAV at the city altitude, and the open-ground run as a second GIF."""
+    trajectory's column says, the UAV at the scenario's altitude, and the open-ground run as a second GIF."""
     scenario = tmp_path / "city.yaml"
     scenario.write_text(
-        "uav: {speed: 21.0, min_turn_radius: 50.0, altitude: 200.0}\n"
+        "uav: {speed: 21.0, min_turn_radius: 50.0, altitude: 150.0}\n"
         "vehicle: {start: [0, 0], legs: [{heading: north, speed: 10.0, duration: 60.0}]}\n"
         "baseline: false\n"
-        f"city: {{map: {charlotte / 'uptown_charlotte.obj'}, up: y, road: {charlotte / 'paths' / '3d.csv'}, "
-        "altitude: 150.0}\n")
+        f"city: {{mesh: {charlotte / 'uptown_charlotte.obj'}, up: y, road: {charlotte / 'paths' / '3d.csv'}}}\n")
     out = tmp_path / "city"
     assert main(["follow", str(scenario), "--out", str(out), "--quiet", "--frames", "4", "--duration", "1"]) == 0
     check_gif(out / "trajectory.gif", 4, 1.0)

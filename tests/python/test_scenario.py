@@ -55,11 +55,15 @@ baselines: [11.2, 35]
     assert s.origin is None
 
 
-def test_origin_georeferences_the_environment(tmp_path: Path) -> None:
-    s = Scenario.from_dict({"origin": [35.2249, -80.8403, 230]})
+def test_origin_georeferences_the_environment(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    s = Scenario.from_dict({"georeference": {"lat": 35.2249, "lon": -80.8403, "alt": 230}})
     assert s.origin == vt.Georeference(35.2249, -80.8403, 230.0)
-    assert s.to_dict()["origin"] == [35.2249, -80.8403, 230.0]
+    assert s.to_dict()["georeference"] == {"lat": 35.2249, "lon": -80.8403, "alt": 230.0}
     assert Scenario.from_dict(s.to_dict()).origin == s.origin
+    assert capsys.readouterr().out == ""
+    # The spelling before the one schema still loads, with one line naming the new key.
+    assert Scenario.from_dict({"origin": [35.2249, -80.8403, 230]}).origin == s.origin
+    assert capsys.readouterr().out == "vistrack: 'origin' is now 'georeference' (still read; see the docs' Scenario files)\n"
     env = s.environment.load(s.origin)  # the demo city, now on the Earth
     assert env.origin == (35.2249, -80.8403, 230.0)
     assert Scenario.from_dict({}).environment.load().origin is None
@@ -68,9 +72,10 @@ def test_origin_georeferences_the_environment(tmp_path: Path) -> None:
 @pytest.mark.parametrize(
     "text, message",
     [
-        ("uav: {sped: 3}", r"uav.sped = 3: unknown key; allowed keys in uav: altitude, min_turn_radius"),
+        ("uav: {sped: 3}", r"uav.sped = 3: unknown key; allowed keys in uav: altitude, dynamics, min_turn_radius"),
+        ("uav: {dynamics: jet}", r"uav.dynamics = 'jet': must be one of dubins"),
         ("colour: red", r"colour = 'red': unknown section"),
-        ("uav: {speed: -2}", r"uav.speed = -2: must be >= 1e-06"),
+        ("uav: {speed: -2}", r"uav.speed = -2: must be a finite number in \[1e-06, 10000\] m/s"),
         ("uav: {speed: .nan}", r"uav.speed = nan: must be a finite number"),
         ("uav: {speed: fast}", r"uav.speed = 'fast': must be a number"),
         ("uav: {speed: 4}\npoi: {speed: 5}", r"uav.speed = 4.0: must exceed poi.speed"),
@@ -82,8 +87,13 @@ def test_origin_georeferences_the_environment(tmp_path: Path) -> None:
         ("poi: {route: [[0, 0, 1], [5, 5]]}", r"poi.route\[0\] = \[0, 0, 1\]: must be \[x, y\]"),
         ("name: ../../etc", r"name = .*it names the output folder"),
         ("sensor: {altitude_band: [100, 50]}", r"sensor.altitude_band"),
-        ("environment: {mesh: a.obj, up: x}", r"environment.up = 'x': must be \"z\" or \"y\""),
-        ("environment: {demo: true, mesh: a.obj}", r"environment = .*exactly one of"),
+        ("city: {mesh: a.obj, up: x}", r"city.up = 'x': must be \"z\" or \"y\""),
+        ("city: {demo: true, mesh: a.obj}", r"city = .*exactly one of"),
+        ("environment: {demo: true, mesh: a.obj}", r"city = .*exactly one of"),  # the old spelling, renamed
+        ("environment: {demo: true}\ncity: {demo: true}", r"environment = .*renamed to city: give only city"),
+        ("georeference: {lat: 95, lon: 0}", r"georeference.lat = 95: must be <= 90 and >= -90"),
+        ("georeference: {lon: 0}", r"georeference.lat = None: is required"),
+        ("georeference: [35, -80]", r"georeference = \[35, -80\]: must be \{lat, lon, alt\}"),
         ("poi: {waypoints: [[0, 0]]}", r"poi.waypoints = .*at least two"),
         ("uav: {start: [0, 1]}", r"uav.start = \[0, 1\]: must be \[x, y, psi\]"),
         ("baselines: [10, -1]", r"baselines\[1\] = -1: must be >= 1e-06"),

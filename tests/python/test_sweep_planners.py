@@ -146,7 +146,7 @@ def test_follow_sweep_of_an_example_file_equals_the_scenario_run(tmp_path: Path)
     ("loiter", {"random": {"count": 0}}, "random.count = 0"),
     ("loiter", {"scenario": "missing.yaml"}, "scenario = "),
     ("follow", {"vehicle": {"legs": []}}, "vehicle.legs = []"),
-    ("follow", {**FOLLOW_BASE, "uav": {"speed": -1.0}}, "uav.speed = -1.0"),
+    ("follow", {**FOLLOW_BASE, "uav": {"speed": -1.0}}, "uav.speed = -1: must be a finite number"),
     ("follow", {**FOLLOW_BASE, "vehicle": {**FOLLOW_BASE["vehicle"], "speed_scale": -1}}, "vehicle.speed_scale = -1"),
     ("follow", {**FOLLOW_BASE, "colour": 1}, "colour = 1: unknown key"),
 ])

@@ -6,8 +6,8 @@ Keys (every one optional except vehicle; lengths m, speeds m/s, angles in degree
 counter-clockwise from east unless a compass word is given)::
 
     description: text
-    origin: [lat, lon, alt]       # where local (0, 0) lies on the Earth (--export), WGS84
-    uav: {speed: 21, min_turn_radius: 50, altitude: 200}
+    georeference: {lat, lon, alt} # where local (0, 0) lies on the Earth (--export), WGS84
+    uav: {speed: 21, min_turn_radius: 50, altitude: 200, dynamics: dubins}
     vehicle:                      # one of legs (with start), track, or path (with legs)
       start: [0, 0]
       legs: [{heading: south, speed: 10, duration: 300, end_speed: 10}]   # or heading_deg: -90
@@ -17,10 +17,13 @@ counter-clockwise from east unless a compass word is given)::
     offset: {distance: 0, angle_deg: 0, reference: heading, changes: [{t, distance, angle_deg}]}
     wind: {east: 0, north: 10, gusts: {seed, intensity, length_scale}}  # the true wind (towards)
     wind_estimate: {east: 0, north: 10}      # what the planner compensates (default: the true wind)
-    camera: {fov_deg: 74, max_gimbal_deg: 25}
+    camera: {fov_deg: 74, max_gimbal_deg: 25, mount: roll}
     flight: {dt: 0.02, integration: discrete, max_time: 0}
     baseline: {radius: 0, beta: 0.025, k_psi: 20, direction: ccw}   # radius 0: Lemma 6; false: none
-    city: {map: city.obj, up: y, road: road.csv, altitude: 300}     # the legs' speeds on a road
+    city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude
+
+uav, wind, camera, city and georeference are the blocks every scenario shares
+(:mod:`vistrack.scenario_blocks`).
 """
 
 from __future__ import annotations
@@ -33,10 +36,20 @@ from typing import Any, Callable, Mapping, Optional
 import numpy as np
 
 from .._core import Control, Environment, Uav, VisibilityScene
-from ..flight import Gusts, Wind
+from ..flight import Wind
 from ..georeference import Georeference
-from ..io.mesh import load_environment
 from ..io.text import read_yaml_mapping
+from ..scenario_blocks import (
+    City,
+    Rename,
+    camera_block,
+    city_block,
+    georeference_block,
+    origin_to_georeference,
+    uav_block,
+    upgrade,
+    wind_block,
+)
 from ..schema import beta as schema_beta
 from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
 from .files import read_road_path, read_vehicle_track
@@ -57,18 +70,14 @@ __all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy"]
 HEADINGS = {name: math.radians(deg) for name, deg in (
     ("east", 0.0), ("northeast", 45.0), ("north", 90.0), ("northwest", 135.0), ("west", 180.0),
     ("southwest", -135.0), ("south", -90.0), ("southeast", -45.0))}
-TOP_KEYS = {"description", "origin", "uav", "vehicle", "follow", "offset", "wind", "wind_estimate", "camera", "flight",
-            "baseline", "city"}
+TOP_KEYS = {"description", "georeference", "uav", "vehicle", "follow", "offset", "wind", "wind_estimate", "camera",
+            "flight", "baseline", "city"}
+# Spellings from before the one scenario schema, still read (city.map: see _old_city_map).
+RENAMES = (Rename("origin", "georeference", origin_to_georeference),)
+# The follow examples' UAV, where the file gives none.
+DEFAULT_UAV = Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
 
-
-@dataclass
-class CityRoad:
-    """A city and a road in it: the scenario's speed profile driven along the road."""
-
-    map: Path
-    road: Path
-    up: str = "y"
-    altitude: Optional[float] = None  # the UAV's altitude over the city (default: the scenario's)
+CityRoad = City  # the scenario's city block with its road (the name predates the one schema)
 
 
 @dataclass
@@ -77,7 +86,8 @@ class FollowScenario:
 
     vehicle: GroundVehicle
     legs: list[VehicleLeg] = field(default_factory=list)
-    uav: Uav = field(default_factory=lambda: Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0))
+    uav: Uav = field(default_factory=lambda: Uav(speed=DEFAULT_UAV.speed, min_turn_radius=DEFAULT_UAV.min_turn_radius,
+                                                 altitude=DEFAULT_UAV.altitude))
     parameters: FollowParameters = field(default_factory=FollowParameters)
     offset_schedule: list[tuple[float, float, float]] = field(default_factory=list)
     wind: Wind = field(default_factory=Wind)
@@ -86,7 +96,7 @@ class FollowScenario:
     flight: FollowFlight = field(default_factory=FollowFlight)
     baseline_radius: Optional[float] = None  # None: Lemma 6 (vt.follow.baseline_radius)
     baseline_control: Optional[Control] = field(default_factory=Control)  # None: no baseline
-    city: Optional[CityRoad] = None
+    city: Optional[City] = None
     description: str = ""
     path: Optional[Path] = None
     origin: Optional[Georeference] = None  # where local (0, 0) lies on the Earth (mission export)
@@ -98,28 +108,21 @@ class FollowScenario:
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any], base: Path, path: Optional[Path] = None) -> "FollowScenario":
+        data = upgrade(_old_city_map(data), RENAMES)
         reject_unknown(data, TOP_KEYS)
-        u = section(data, "uav", {"speed", "min_turn_radius", "altitude"})
-        defaults = Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
-        uav = Uav(speed=positive("uav.speed", u.get("speed", defaults.speed)),
-                  min_turn_radius=positive("uav.min_turn_radius", u.get("min_turn_radius", defaults.min_turn_radius)),
-                  altitude=number("uav.altitude", u.get("altitude", defaults.altitude)))
+        uav = uav_block(data, DEFAULT_UAV).uav
         vehicle, legs = _vehicle(data, base)
         parameters = _parameters(data)
         schedule = _offset_schedule(data)
-        wind = _wind(data)
-        if math.hypot(wind.east, wind.north) >= uav.speed:
-            raise fail("wind", {"east": wind.east, "north": wind.north},
-                       f"must be slower than the UAV's airspeed {uav.speed} m/s")
+        wind = wind_block(data)
         estimate = None
         if data.get("wind_estimate") is not None:
             e = section(data, "wind_estimate", {"east", "north"})
             estimate = (number("wind_estimate.east", e.get("east", 0.0)),
                         number("wind_estimate.north", e.get("north", 0.0)))
-        c = section(data, "camera", {"fov_deg", "max_gimbal_deg"})
-        camera = DownwardCamera(fov=math.radians(number("camera.fov_deg", c.get("fov_deg", 74.0), low=0.0, high=179.0)),
-                                max_gimbal=math.radians(number("camera.max_gimbal_deg", c.get("max_gimbal_deg", 25.0),
-                                                               low=0.0, high=89.0)))
+        defaults = DownwardCamera()
+        c = camera_block(data, math.degrees(defaults.fov), math.degrees(defaults.max_gimbal), mounts=("roll",))
+        camera = DownwardCamera(fov=math.radians(c.fov_deg), max_gimbal=math.radians(c.max_gimbal_deg))
         f = section(data, "flight", {"dt", "integration", "max_time"})
         integration = f.get("integration", "discrete")
         if integration not in ("discrete", "continuous"):
@@ -130,17 +133,19 @@ class FollowScenario:
         return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
                    baseline_control=control, city=_city(data, base), description=str(data.get("description", "")),
-                   path=path, origin=None if data.get("origin") is None else Georeference.from_value(data["origin"]))
+                   path=path, origin=georeference_block(data))
 
     def city_available(self) -> bool:
         """Whether the scenario has a city section whose map and road files exist (the shared
         data is optional: without it the city runs are skipped)."""
-        return self.city is not None and self.city.map.is_file() and self.city.road.is_file()
+        city = self.city
+        return city is not None and city.path is not None and city.path.is_file() and city.road is not None \
+            and city.road.is_file()
 
     def city_vehicle(self) -> GroundVehicle:
         """The scenario's speed profile driven along the city road (its legs' headings ignored)."""
-        if self.city is None or not self.legs:
-            raise fail("city", None, "needs a city section and a vehicle given by legs")
+        if self.city is None or self.city.road is None or not self.legs:
+            raise fail("city", None, "needs a city section with a road and a vehicle given by legs")
         road = read_road_path(self.city.road, "city.road")
         return GroundVehicle.along_path(road, self.legs)
 
@@ -165,11 +170,10 @@ class FollowScenario:
         study = FollowStudy(self, parameters, follow, orbit)
         if city and self.city is not None:
             say("city")
-            env = load_environment(self.city.map, up=self.city.up)
+            env = self.city.load(self.origin)
             scene = VisibilityScene(env)
             vehicle = self.city_vehicle()
-            uav = Uav(speed=self.uav.speed, min_turn_radius=self.uav.min_turn_radius,
-                      altitude=self.city.altitude if self.city.altitude is not None else self.uav.altitude)
+            uav = self.uav
             study.environment = env
             study.city_follow = simulate(vehicle, uav, parameters, wind_estimate=self.wind_estimate,
                                          offset_schedule=self.offset_schedule, scene=scene, **common)
@@ -297,18 +301,6 @@ def _offset_schedule(data: Mapping[str, Any]) -> list[tuple[float, float, float]
     return keys
 
 
-def _wind(data: Mapping[str, Any]) -> Wind:
-    w = section(data, "wind", {"east", "north", "gusts"})
-    gusts = None
-    if w.get("gusts"):
-        g = section(w, "gusts", {"seed", "intensity", "length_scale"})
-        gusts = Gusts(seed=int(number("wind.gusts.seed", g.get("seed", 0), low=0.0)),
-                      intensity=number("wind.gusts.intensity", g.get("intensity", 1.0), low=0.0),
-                      length_scale=positive("wind.gusts.length_scale", g.get("length_scale", 200.0)))
-    return Wind(east=number("wind.east", w.get("east", 0.0)), north=number("wind.north", w.get("north", 0.0)),
-                gusts=gusts)
-
-
 def _baseline(data: Mapping[str, Any]) -> tuple[Optional[float], Optional[Control]]:
     if data.get("baseline") is False:
         return None, None
@@ -321,16 +313,27 @@ def _baseline(data: Mapping[str, Any]) -> tuple[Optional[float], Optional[Contro
     return (radius or None), control
 
 
-def _city(data: Mapping[str, Any], base: Path) -> Optional[CityRoad]:
-    if data.get("city") is None:
-        return None
-    c = section(data, "city", {"map", "road", "up", "altitude"})
-    for key in ("map", "road"):
-        if key not in c:
-            raise fail(f"city.{key}", None, "is required in a city section")
-    up = str(c.get("up", "y"))
-    if up not in ("y", "z"):
-        raise fail("city.up", up, 'must be "y" or "z"')
-    altitude = c.get("altitude")
-    return CityRoad(map=resolve_path(base, c["map"], "city.map"), road=resolve_path(base, c["road"], "city.road"),
-                    up=up, altitude=None if altitude is None else number("city.altitude", altitude))
+def _city(data: Mapping[str, Any], base: Path) -> Optional[City]:
+    city = city_block(data, base, road=True)
+    if city is not None and (city.kind == "demo" or city.road is None):
+        raise fail("city", data["city"], "needs a map (mesh: FILE or geojson: FILE) and road: a CSV path")
+    return city
+
+
+def _old_city_map(data: Mapping[str, Any]) -> Mapping[str, Any]:
+    """The follow city block before the one schema: ``map`` (read by its suffix, ``up`` y by default)
+    becomes ``mesh`` or ``geojson``; ``altitude`` is refused, the flight altitude being uav.altitude."""
+    city = data.get("city")
+    if not isinstance(city, Mapping) or not ("map" in city or "altitude" in city):
+        return data
+    if "altitude" in city:
+        raise fail("city.altitude", city["altitude"], "the flight altitude is uav.altitude, one per scenario: give the "
+                                                      "city run a file of its own (examples/follow_*_city.yaml)")
+    new = dict(city)
+    path = new.pop("map")
+    kind = "geojson" if str(path).lower().endswith((".geojson", ".json")) else "mesh"
+    if kind == "mesh":
+        new.setdefault("up", "y")
+    new[kind] = path
+    print(f"vistrack: 'city.map' is now 'city.{kind}' (still read; see the docs' Scenario files)")
+    return {**data, "city": new}

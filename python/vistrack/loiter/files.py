@@ -7,29 +7,39 @@ from pathlib import Path
 import numpy as np
 
 from .. import schema
-from ..georeference import Georeference
+from .._core import Uav
 from ..io.text import read_yaml_mapping
+from ..scenario_blocks import Rename, camera_block, georeference_block, origin_to_georeference, uav_block, upgrade
 from .planning import Camera, Coverage, Plan
 from .scenario import Scenario
 
-__all__ = ["load_scenario", "read_loiter_scenario", "write_loiter_samples_csv"]
+__all__ = ["RENAMES", "load_scenario", "read_loiter_scenario", "write_loiter_samples_csv"]
+
+# Spellings from before the one scenario schema, still read.
+RENAMES = (Rename("origin", "georeference", origin_to_georeference), Rename("turn_radius", "uav.min_turn_radius"),
+           Rename("speed", "uav.speed"), Rename("camera.altitude", "uav.altitude"),
+           Rename("camera.levelled", "camera.mount",
+                  lambda value: "levelled" if schema.boolean("camera.levelled", value) else "roll"))
 
 
 def read_loiter_scenario(path: str | Path) -> Scenario:
     """A loiter scenario file (examples/loiter_*.yaml); every bad value names its key."""
-    data = read_yaml_mapping(path, "scenario")
-    allowed = {"name", "aois", "start", "end", "turn_radius", "speed", "aoi_radius", "turns", "camera",
-               "threshold", "dt", "paper", "origin"}
+    data = upgrade(read_yaml_mapping(path, "scenario"), RENAMES)
+    allowed = {"name", "aois", "start", "end", "uav", "aoi_radius", "turns", "camera", "threshold", "dt", "paper",
+               "georeference"}
     schema.reject_unknown(data, allowed)
 
     raw_aois = data.get("aois")
     if not isinstance(raw_aois, list) or not raw_aois:
         raise schema.fail("aois", raw_aois, "must be a non-empty list of [x, y] AOI centres")
     aois = np.array([schema.pair(f"aois[{i}]", a) for i, a in enumerate(raw_aois)], dtype=float)
-    camera_section = schema.section(data, "camera", {"fov_deg", "max_gimbal_deg", "altitude", "levelled"})
-    camera = schema.apply_checks(Camera(), camera_section, "camera", {
-        "fov_deg": schema.positive, "max_gimbal_deg": lambda k, v: schema.number(k, v, low=0.0),
-        "altitude": schema.positive, "levelled": schema.boolean})
+    defaults, camera_defaults = Scenario(aois=np.zeros((0, 2))), Camera()
+    uav = uav_block(data, Uav(speed=defaults.speed, min_turn_radius=defaults.turn_radius,
+                              altitude=camera_defaults.altitude)).uav
+    mount = camera_block(data, camera_defaults.fov_deg, camera_defaults.max_gimbal_deg)
+    # The camera's height above the AOIs' ground plane is the flight altitude.
+    camera = Camera(mount.fov_deg, mount.max_gimbal_deg, uav.altitude, mount.mount == "levelled")
+    camera.validate()
     paper = data.get("paper") or {}
     if not isinstance(paper, dict):
         raise schema.fail("paper", paper, "must map a method to its Table 1 numbers")
@@ -43,15 +53,16 @@ def read_loiter_scenario(path: str | Path) -> Scenario:
         name=str(data.get("name", Path(path).stem)),
         start=schema.pair("start", data.get("start", [0.0, 0.0])),
         end=schema.pair("end", data.get("end", [0.0, 0.0])),
-        turn_radius=schema.positive("turn_radius", data.get("turn_radius", 46.0)),
-        speed=schema.positive("speed", data.get("speed", 12.0)),
-        aoi_radius=schema.positive("aoi_radius", data.get("aoi_radius", 46.0)),
-        turns=schema.integer("turns", data.get("turns", 1), 1, 1000),
+        turn_radius=uav.min_turn_radius,
+        speed=uav.speed,
+        aoi_radius=schema.positive("aoi_radius", data.get("aoi_radius", defaults.aoi_radius)),
+        turns=schema.integer("turns", data.get("turns", defaults.turns), 1, 1000),
         camera=camera,
-        threshold=schema.number("threshold", data.get("threshold", 0.75), low=0.0, high=1.0, low_open=True),
-        dt=schema.positive("dt", data.get("dt", 1.0)),
+        threshold=schema.number("threshold", data.get("threshold", defaults.threshold), low=0.0, high=1.0,
+                                low_open=True),
+        dt=schema.positive("dt", data.get("dt", defaults.dt)),
         paper=paper_numbers,
-        origin=None if data.get("origin") is None else Georeference.from_value(data["origin"], "origin"),
+        origin=georeference_block(data),
     )
     # The planner's own checks (overlapping circles, R < r, start inside a circle) name the key.
     scenario.plan("tlpp")

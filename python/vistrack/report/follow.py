@@ -61,7 +61,7 @@ def write_follow(study: FollowStudy, out: Path, title: str = "",
                               f"{title}: open ground")
     more: list[tuple[str, MotionScene, str]] = []
     if study.city_follow is not None and study.environment is not None:
-        scene = motion_scene(study.city_follow, study.scenario.camera, city_altitude(study),
+        scene = motion_scene(study.city_follow, study.scenario.camera, study.scenario.uav.altitude,
                              f"{title}: city road", study.environment)
         hint = ("The planner's run on the city road: buildings, the vehicle, the UAV, the camera footprint and the "
                 "line of sight (green: clear, red: through a building). Drag to turn, scroll to zoom.")
@@ -73,12 +73,6 @@ def write_follow(study: FollowStudy, out: Path, title: str = "",
     record["files"] = [f.name for f in files] + ["report.md"] + list(record["report_files"])
     write_json(record, out / "metrics.json")
     return record
-
-
-def city_altitude(study: FollowStudy) -> float:
-    """The UAV's height above the ground in the city runs (as FollowScenario.run flies them)."""
-    city = study.scenario.city
-    return city.altitude if city is not None and city.altitude is not None else study.scenario.uav.altitude
 
 
 def motion_scene(result: FollowResult, camera: DownwardCamera, altitude: float, title: str,

@@ -31,9 +31,17 @@ from .._core import (
     VistrackError,
 )
 from ..georeference import Georeference
-from ..io.mesh import load_environment
 from ..io.text import parse_yaml, read_text
 from ..report_options import ReportOptions, report_options
+from ..scenario_blocks import (
+    City,
+    Rename,
+    city_block,
+    georeference_block,
+    origin_to_georeference,
+    uav_block,
+    upgrade,
+)
 from ..schema import (
     absolute_tolerance,
     apply_checks,
@@ -68,25 +76,7 @@ def road_route(roads: RoadNetwork, via_points: Sequence[Sequence[float]]) -> lis
     return nodes
 
 
-@dataclass
-class EnvironmentSpec:
-    """Where the environment comes from: the demo city, a GeoJSON file or a mesh file."""
-
-    kind: str = "demo"  # "demo", "geojson" or "mesh"
-    path: Path | None = None
-    up: str = "z"
-
-    def load(self, origin: Georeference | None = None) -> Environment:
-        """The environment; ``origin`` (the scenario's) becomes ``env.origin`` and is what a
-        longitude/latitude GeoJSON is projected about (without it: the data's centre)."""
-        if self.kind == "demo" or self.path is None:
-            env = Environment.demo()
-            env.origin = origin
-            return env
-        return load_environment(self.path, self.up, self.kind, origin)
-
-    def describe(self) -> str:
-        return "demo city" if self.kind == "demo" else f"{self.kind} {self.path}"
+EnvironmentSpec = City  # the scenario's city block (the name predates the one schema)
 
 
 @dataclass
@@ -116,7 +106,7 @@ class PoiSpec:
 class Scenario:
     """A validated scenario. Build one with Scenario.load(path) or Scenario.from_dict(data)."""
 
-    environment: EnvironmentSpec = field(default_factory=EnvironmentSpec)
+    environment: City = field(default_factory=City)
     poi: PoiSpec = field(default_factory=PoiSpec)
     uav: Uav = field(default_factory=Uav)
     start: tuple[float, float, float] | None = None  # UAV start (x, y, psi); None: on the orbit
@@ -130,8 +120,10 @@ class Scenario:
     name: str = "scenario"
     source: Path | None = None
 
-    SECTIONS = ("name", "origin", "environment", "poi", "uav", "sensor", "planning", "control",
+    SECTIONS = ("name", "georeference", "city", "poi", "uav", "sensor", "planning", "control",
                 "simulation", "baselines", "report")
+    # Spellings from before the one scenario schema, still read.
+    RENAMES = (Rename("origin", "georeference", origin_to_georeference), Rename("environment", "city"))
 
     @classmethod
     def load(cls, path: str | Path) -> "Scenario":
@@ -155,6 +147,7 @@ class Scenario:
         base = Path(base)
         if not isinstance(data, Mapping):
             raise fail("scenario", data, "must be a mapping with sections " + ", ".join(cls.SECTIONS))
+        data = upgrade(data, cls.RENAMES)
         reject_unknown(data, cls.SECTIONS, noun="section")
         scenario = cls()
         if "name" in data:
@@ -163,11 +156,11 @@ class Scenario:
                 raise fail("name", name, "must be a non-empty name of letters, digits, '_', '-' or '.' "
                                           "(it names the output folder)")
             scenario.name = data["name"]
-        if data.get("origin") is not None:
-            scenario.origin = Georeference.from_value(data["origin"], "origin")
-        scenario.environment = _environment(section(data, "environment", {"demo", "geojson", "mesh", "up"}), base)
+        scenario.origin = georeference_block(data)
+        scenario.environment = city_block(data, base) or City()
         scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
-        scenario.uav, scenario.start = _uav(section(data, "uav", {"speed", "min_turn_radius", "altitude", "start"}))
+        uav = uav_block(data, Uav(), extra=("start",))
+        scenario.uav, scenario.start = uav.uav, _start(uav.extra or {})
         scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(section(
             data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin",
@@ -203,8 +196,8 @@ class Scenario:
         origin = self.origin
         return {
             "name": self.name,
-            "origin": None if origin is None else [origin.lat, origin.lon, origin.alt],
-            "environment": env,
+            "georeference": None if origin is None else {"lat": origin.lat, "lon": origin.lon, "alt": origin.alt},
+            "city": env,
             "poi": poi,
             "uav": {"speed": self.uav.speed, "min_turn_radius": self.uav.min_turn_radius,
                     "altitude": self.uav.altitude,
@@ -229,27 +222,6 @@ class Scenario:
                        "duration": self.report.duration, "volumes": self.report.volumes,
                        "view": list(self.report.view)},
         }
-
-
-def _environment(section: dict[str, Any], base: Path) -> EnvironmentSpec:
-    sources = [key for key in ("demo", "geojson", "mesh") if section.get(key) not in (None, False)]
-    if not section:
-        return EnvironmentSpec()
-    if len(sources) != 1:
-        raise fail("environment", section, "give exactly one of demo: true, geojson: FILE, mesh: FILE")
-    kind = sources[0]
-    if kind == "demo":
-        if section["demo"] is not True:
-            raise fail("environment.demo", section["demo"], "must be true")
-        if "up" in section:
-            raise fail("environment.up", section["up"], "only applies to environment.mesh")
-        return EnvironmentSpec()
-    up = section.get("up", "z")
-    if up not in ("y", "z"):
-        raise fail("environment.up", up, 'must be "z" or "y"')
-    if kind == "geojson" and "up" in section:
-        raise fail("environment.up", up, "only applies to environment.mesh")
-    return EnvironmentSpec(kind, resolve_path(base, section[kind], f"environment.{kind}"), up)
 
 
 def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
@@ -284,15 +256,14 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     return spec
 
 
-def _uav(section: dict[str, Any]) -> tuple[Uav, tuple[float, float, float] | None]:
-    uav = apply_checks(Uav(), section, "uav", {"speed": speed, "min_turn_radius": length, "altitude": coordinate})
-    start = section.get("start")
-    if start is not None:
-        if not isinstance(start, list) or len(start) != 3:
-            raise fail("uav.start", start, "must be [x, y, psi] (metres, metres, radians)")
-        start = (coordinate("uav.start[0]", start[0]), coordinate("uav.start[1]", start[1]),
-                 number("uav.start[2]", start[2], low=-1e9, high=1e9))
-    return uav, start
+def _start(extra: Mapping[str, Any]) -> tuple[float, float, float] | None:
+    start = extra.get("start")
+    if start is None:
+        return None
+    if not isinstance(start, list) or len(start) != 3:
+        raise fail("uav.start", start, "must be [x, y, psi] (metres, metres, radians)")
+    return (coordinate("uav.start[0]", start[0]), coordinate("uav.start[1]", start[1]),
+            number("uav.start[2]", start[2], low=-1e9, high=1e9))
 
 
 def _sensor(section: dict[str, Any]) -> Sensor:

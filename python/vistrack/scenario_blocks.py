@@ -1,0 +1,237 @@
+"""The blocks every scenario file shares, parsed in this one place (docs: Scenario files)::
+
+    uav:          {speed, min_turn_radius, altitude, dynamics}   # the flight altitude lives here only
+    wind:         {east, north, gusts: {seed, intensity, length_scale}}   # m/s, the direction it blows to
+    camera:       {fov_deg, max_gimbal_deg, mount}                # mount: levelled | roll
+    city:         {mesh | geojson | demo, up, road}               # the environment
+    georeference: {lat, lon, alt}                                 # where local (0, 0, 0) lies, WGS84
+
+Each product takes the blocks it uses (tracking: uav, city, georeference; loiter: uav, camera,
+georeference; follow: all five). Types are parsed here; the ranges are the C++ structs' own
+``validate()``, whose messages name the key. Spellings from before the one schema still load
+where the change is a rename (:func:`upgrade`), each with one line on stdout naming the new key.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable, Mapping, Optional, Sequence
+
+from ._core import Environment, Uav
+from .flight import Gusts, Wind
+from .georeference import Georeference
+from .io.mesh import load_environment
+from .schema import fail, integer, number, positive, reject_unknown, resolve_path, section
+
+__all__ = [
+    "CAMERA_MOUNTS",
+    "DYNAMICS",
+    "CameraBlock",
+    "City",
+    "Rename",
+    "UavBlock",
+    "camera_block",
+    "city_block",
+    "georeference_block",
+    "uav_block",
+    "upgrade",
+    "wind_block",
+]
+
+# The vehicle models a flight can use; "dubins" is the instant-turn vehicle every planner flies.
+DYNAMICS = ("dubins",)
+# levelled: the gimbal angle is measured from the vertical (it also takes out the bank);
+# roll: a roll gimbal under the banked body, so the axis tilts by gimbal - bank.
+CAMERA_MOUNTS = ("levelled", "roll")
+UAV_KEYS = {"speed", "min_turn_radius", "altitude", "dynamics"}
+
+
+@dataclass(frozen=True)
+class Rename:
+    """An old spelling (a top-level key, or ``section.key``) and the key that replaced it; ``convert``
+    turns the old value into the new one where its form changed too."""
+
+    old: str
+    new: str
+    convert: Optional[Callable[[Any], Any]] = None
+
+
+def upgrade(data: Mapping[str, Any], renames: Sequence[Rename], announce: Callable[[str], None] = print) -> dict:
+    """``data`` with every old spelling moved to its new key (one line through ``announce`` for
+    each); a file giving both the old and the new key is refused, naming the old one."""
+    out = {key: dict(value) if isinstance(value, Mapping) else value for key, value in data.items()}
+    for rename in renames:
+        found, value = _pop(out, rename.old)
+        if not found:
+            continue
+        if _has(out, rename.new):
+            raise fail(rename.old, value, f"renamed to {rename.new}: give only {rename.new}")
+        _put(out, rename.new, rename.convert(value) if rename.convert else value)
+        announce(f"vistrack: '{rename.old}' is now '{rename.new}' (still read; see the docs' Scenario files)")
+    return out
+
+
+def _has(data: Mapping[str, Any], dotted: str) -> bool:
+    head, _, tail = dotted.partition(".")
+    if not tail:
+        return head in data
+    inner = data.get(head)
+    return isinstance(inner, Mapping) and tail in inner
+
+
+def _pop(data: dict, dotted: str) -> tuple[bool, Any]:
+    head, _, tail = dotted.partition(".")
+    if not tail:
+        return (True, data.pop(head)) if head in data else (False, None)
+    inner = data.get(head)
+    if isinstance(inner, dict) and tail in inner:
+        return True, inner.pop(tail)
+    return False, None
+
+
+def _put(data: dict, dotted: str, value: Any) -> None:
+    head, _, tail = dotted.partition(".")
+    if not tail:
+        data[head] = value
+        return
+    inner = data.get(head)
+    if inner is None:
+        inner = data[head] = {}
+    if not isinstance(inner, dict):
+        raise fail(head, inner, "must be a mapping of keys to values")
+    inner[tail] = value
+
+
+@dataclass
+class UavBlock:
+    """The ``uav`` block: the vehicle, its model and the product's own extra keys (e.g. ``start``)."""
+
+    uav: Uav
+    dynamics: str = "dubins"
+    extra: Optional[dict[str, Any]] = None
+
+
+def uav_block(data: Mapping[str, Any], default: Uav, extra: Sequence[str] = ()) -> UavBlock:
+    """``uav: {speed, min_turn_radius, altitude, dynamics}`` over ``default``; ``extra`` keys are
+    returned unparsed for the product."""
+    found = section(data, "uav", UAV_KEYS | set(extra))
+    uav = Uav(speed=default.speed, min_turn_radius=default.min_turn_radius, altitude=default.altitude)
+    for key in ("speed", "min_turn_radius", "altitude"):
+        if key in found:
+            setattr(uav, key, number(f"uav.{key}", found[key]))
+    uav.validate()
+    dynamics = found.get("dynamics", DYNAMICS[0])
+    if dynamics not in DYNAMICS:
+        raise fail("uav.dynamics", dynamics, "must be one of " + ", ".join(DYNAMICS))
+    return UavBlock(uav, dynamics, {key: found[key] for key in extra if key in found})
+
+
+def wind_block(data: Mapping[str, Any]) -> Wind:
+    """``wind: {east, north, gusts: {seed, intensity, length_scale}}`` (calm when absent). Whether
+    the wind is slower than the airspeed is the flight's check (WindField), made where both are known."""
+    found = section(data, "wind", {"east", "north", "gusts"})
+    gusts = None
+    if found.get("gusts") is not None:
+        g = found["gusts"]
+        if not isinstance(g, Mapping):
+            raise fail("wind.gusts", g, "must be {seed, intensity, length_scale}")
+        reject_unknown(g, {"seed", "intensity", "length_scale"}, "wind.gusts.", where=" in wind.gusts")
+        defaults = Gusts()
+        gusts = Gusts(seed=integer("wind.gusts.seed", g.get("seed", defaults.seed), 0, 2**64 - 1),
+                      intensity=number("wind.gusts.intensity", g.get("intensity", defaults.intensity), low=0.0),
+                      length_scale=positive("wind.gusts.length_scale", g.get("length_scale", defaults.length_scale)))
+    return Wind(east=number("wind.east", found.get("east", 0.0)), north=number("wind.north", found.get("north", 0.0)),
+                gusts=gusts)
+
+
+@dataclass
+class CameraBlock:
+    """The ``camera`` block: the full cone angle and the gimbal's range (degrees) and its mount."""
+
+    fov_deg: float
+    max_gimbal_deg: float
+    mount: str
+
+
+def camera_block(data: Mapping[str, Any], fov_deg: float, max_gimbal_deg: float,
+                 mounts: Sequence[str] = CAMERA_MOUNTS) -> CameraBlock:
+    """``camera: {fov_deg, max_gimbal_deg, mount}`` over the product's camera defaults; ``mounts``
+    are the mounts the product models (the first is its default)."""
+    found = section(data, "camera", {"fov_deg", "max_gimbal_deg", "mount"})
+    mount = found.get("mount", mounts[0])
+    if mount not in mounts:
+        raise fail("camera.mount", mount, "must be one of " + ", ".join(mounts))
+    return CameraBlock(number("camera.fov_deg", found.get("fov_deg", fov_deg)),
+                       number("camera.max_gimbal_deg", found.get("max_gimbal_deg", max_gimbal_deg)), mount)
+
+
+@dataclass
+class City:
+    """The ``city`` block: where the environment comes from (the demo city, a GeoJSON or a mesh
+    file, ``up`` its vertical axis) and, for the products that drive on it, a road path."""
+
+    kind: str = "demo"  # "demo", "geojson" or "mesh"
+    path: Optional[Path] = None
+    up: str = "z"
+    road: Optional[Path] = None
+
+    def load(self, origin: Optional[Georeference] = None) -> Environment:
+        """The environment; ``origin`` (the scenario's georeference) becomes ``env.origin`` and is what
+        a longitude/latitude GeoJSON is projected about (without it: the data's centre)."""
+        if self.kind == "demo" or self.path is None:
+            env = Environment.demo()
+            env.origin = origin
+            return env
+        return load_environment(self.path, self.up, self.kind, origin)
+
+    def describe(self) -> str:
+        return "demo city" if self.kind == "demo" else f"{self.kind} {self.path}"
+
+
+def city_block(data: Mapping[str, Any], base: Path, road: bool = False) -> Optional[City]:
+    """``city: {mesh | geojson | demo, up, road}``; None when absent. ``road`` (a CSV path the
+    product drives along) is accepted only for products that use one."""
+    if data.get("city") is None:
+        return None
+    found = section(data, "city", {"demo", "geojson", "mesh", "up"} | ({"road"} if road else set()))
+    sources = [key for key in ("demo", "geojson", "mesh") if found.get(key) not in (None, False)]
+    if len(sources) != 1:
+        raise fail("city", found, "give exactly one of demo: true, geojson: FILE, mesh: FILE")
+    kind = sources[0]
+    road_path = resolve_path(base, found["road"], "city.road") if found.get("road") is not None else None
+    if kind == "demo" and found["demo"] is not True:
+        raise fail("city.demo", found["demo"], "must be true")
+    if kind != "mesh" and "up" in found:
+        raise fail("city.up", found["up"], "only applies to city.mesh")
+    if kind == "demo":
+        return City(road=road_path)
+    up = found.get("up", "z")
+    if up not in ("y", "z"):
+        raise fail("city.up", up, 'must be "z" or "y"')
+    return City(kind, resolve_path(base, found[kind], f"city.{kind}"), up, road_path)
+
+
+def georeference_block(data: Mapping[str, Any]) -> Optional[Georeference]:
+    """``georeference: {lat, lon, alt}`` (degrees, degrees, metres above mean sea level); None when
+    absent."""
+    value = data.get("georeference")
+    if value is None:
+        return None
+    if not isinstance(value, Mapping):
+        raise fail("georeference", value, "must be {lat, lon, alt} (degrees, degrees, metres AMSL)")
+    reject_unknown(value, {"lat", "lon", "alt"}, "georeference.", where=" in georeference")
+    for key in ("lat", "lon"):
+        if key not in value:
+            raise fail(f"georeference.{key}", None, "is required (degrees)")
+    return Georeference(number("georeference.lat", value["lat"], low=-90.0, high=90.0),
+                        number("georeference.lon", value["lon"], low=-180.0, high=180.0),
+                        number("georeference.alt", value.get("alt", 0.0)))
+
+
+def origin_to_georeference(value: Any) -> Any:
+    """The old ``origin: [lat, lon(, alt)]`` as a ``georeference`` mapping (refused as before when
+    malformed)."""
+    reference = Georeference.from_value(value, "origin")
+    return {"lat": reference.lat, "lon": reference.lon, "alt": reference.alt}
+
