@@ -63,7 +63,8 @@ def test_origin_georeferences_the_environment(tmp_path: Path, capsys: pytest.Cap
     assert capsys.readouterr().out == ""
     # The spelling before the one schema still loads, with one line naming the new key.
     assert Scenario.from_dict({"origin": [35.2249, -80.8403, 230]}).origin == s.origin
-    assert capsys.readouterr().out == "vistrack: 'origin' is now 'georeference' (still read; see the docs' Scenario files)\n"
+    note = "vistrack: 'origin' is now 'georeference' (still read; see the docs' Scenario files)\n"
+    assert capsys.readouterr().out == note
     env = s.environment.load(s.origin)  # the demo city, now on the Earth
     assert env.origin == (35.2249, -80.8403, 230.0)
     assert Scenario.from_dict({}).environment.load().origin is None
