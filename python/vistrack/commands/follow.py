@@ -45,7 +45,7 @@ def run(args: argparse.Namespace) -> int:
     scenario = FollowScenario.load(args.scenario)
     city = args.city and scenario.city_available()
     if args.city and scenario.city is not None and not city:
-        print(f"city data not found ({scenario.city.map}): skipping the city runs")
+        print(f"city data not found ({scenario.city.describe()}): skipping the city runs")
     study = scenario.run(args.compensation, city, None if args.quiet else lambda name: print(f"{name} ...", flush=True))
     record = write_follow(study, args.out, scenario.description, options)
     modes = ", ".join(f"{k} {v:.0f} s" for k, v in record["time_in_mode_s"].items() if v > 0)
