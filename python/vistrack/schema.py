@@ -10,11 +10,11 @@ import numbers
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping, TypeVar
 
-from ._core import VistrackError
+from ._core import Planning, VistrackError
 from ._core import limits as _limits
 
-__all__ = ["absolute_tolerance", "apply_checks", "beta", "coordinate", "fail", "heading_gain", "integer", "length",
-           "number", "positive", "rate_margin", "relative_tolerance", "resolve_path", "section", "speed"]
+__all__ = ["absolute_tolerance", "apply_checks", "beta", "by_struct", "coordinate", "fail", "heading_gain", "integer",
+           "length", "number", "positive", "rate_margin", "relative_tolerance", "resolve_path", "section", "speed"]
 
 T = TypeVar("T")
 
@@ -84,12 +84,26 @@ def absolute_tolerance(key: str, value: Any) -> float:
     return number(key, value, low=_limits.MIN_ATOL, high=_limits.MAX_ATOL)
 
 
-def rate_margin(key: str, value: Any) -> float:
-    """A share of Lemma 5's radius rate v - v_g kept in reserve: [0, 1)."""
-    result = number(key, value)
-    if not 0.0 <= result < 1.0:
-        raise fail(key, value, "must be in [0, 1) (a fraction of v - v_g)")
-    return result
+def by_struct(make: Callable[[], Any], field: str) -> Callable[[str, Any], float]:
+    """A check of one number by its C++ parameter struct's own ``validate()`` (the range lives there
+    only): ``make()`` gives a valid struct, ``field`` is set to the value; the error names ``key``
+    (an option such as ``--rate-margin``, or a YAML key)."""
+
+    def check(key: str, value: Any) -> float:
+        result = number(key, value)
+        target = make()
+        setattr(target, field, result)
+        try:
+            target.validate()
+        except VistrackError as error:
+            raise fail(key, value, str(error).split(": ", 1)[-1]) from None
+        return result
+
+    return check
+
+
+# A share of Lemma 5's radius rate v - v_g kept in reserve: Planning.validate's [0, 1).
+rate_margin = by_struct(Planning, "rate_margin")
 
 
 def integer(key: str, value: Any, low: int, high: int) -> int:

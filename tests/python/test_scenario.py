@@ -82,7 +82,7 @@ def test_origin_georeferences_the_environment(tmp_path: Path, capsys: pytest.Cap
         ("uav: {speed: 4}\npoi: {speed: 5}", r"uav.speed = 4.0: must exceed poi.speed"),
         ("control: {direction: up}", r"control.direction = 'up': must be \"ccw\" or \"cw\""),
         ("planning: {max_depth: 99}", r"planning.max_depth = 99: must be an integer in \[0, 30\]"),
-        ("planning: {resolution_deg: 90}", r"planning.resolution_deg = 90: must be <= 30"),
+        ("planning: {resolution_deg: 90}", r"planning.resolution_deg = 90: must be in \[0.1, 30\] degrees"),
         ("planning: {rate_margin: 1}", r"planning.rate_margin = 1: must be in \[0, 1\)"),
         ("planning: {rate_margin: -0.1}", r"planning.rate_margin = -0.1: must be in \[0, 1\)"),
         ("poi: {route: [[0, 0, 1], [5, 5]]}", r"poi.route\[0\] = \[0, 0, 1\]: must be \[x, y\]"),

@@ -29,7 +29,7 @@ from vistrack.sweep.kinds import flatten
 # A cheap tracking case on the demo city (about 1.5 s): a 385 m straight street, 2-degree VVs.
 CHEAP_BASE: dict[str, Any] = {
     "name": "cheap",
-    "environment": {"demo": True},
+    "city": {"demo": True},
     "poi": {"route": [[-290, -210], [95, -210]], "speed": 5.0},
     "uav": {"speed": 20.0, "min_turn_radius": 15.0, "altitude": 200.0},
     "sensor": {"d_max": 300.0},
@@ -96,8 +96,8 @@ def test_grid_and_zip_cases() -> None:
     assert [(c.data["uav"]["altitude"], c.data["sensor"]["d_max"]) for c in zipped.cases()] == [
         (180, 250), (200, 300), (220, 350)]
     # A source key replaces the section's other source (the base reads its map from "demo").
-    mesh = SweepSpec.from_dict({"base": CHEAP_BASE, "parameters": {"environment.mesh": ["a.obj"]}}, "/tmp")
-    assert mesh.cases()[0].data["environment"] == {"mesh": "a.obj"}
+    mesh = SweepSpec.from_dict({"base": CHEAP_BASE, "parameters": {"city.mesh": ["a.obj"]}}, "/tmp")
+    assert mesh.cases()[0].data["city"] == {"mesh": "a.obj"}
 
 
 @pytest.mark.parametrize(("data", "message"), [
@@ -367,11 +367,11 @@ def test_a_failing_case_is_one_row(tmp_path: Path, capsys: pytest.CaptureFixture
     path.write_text(yaml.safe_dump(sweep, sort_keys=False))
     assert main(["sweep", str(path), "--out", str(tmp_path / "out"), "--scheduler", SERIAL, "--quiet"]) == 0
     printed = capsys.readouterr().out
-    assert "case 1 failed: sensor.d_max = -5.0" in printed
+    assert "case 1 failed: sensor.d_max = -5" in printed
     rows = read_results_table(tmp_path / "out" / "results.parquet")
     assert [row["run_status"] for row in rows] == ["ok", "failed"]
     good, bad = rows
-    assert bad["sensor.d_max"] == -5.0 and "sensor.d_max = -5.0" in bad["run_error"]
+    assert bad["sensor.d_max"] == -5.0 and "sensor.d_max = -5" in bad["run_error"]
     assert bad["simulation.visibility_fraction"] is None and bad["plan.samples"] is None
     assert good["run_error"] is None and 0.0 < good["simulation.visibility_fraction"] <= 1.0
     kept = [c for c in rows[0] if not c.startswith("run_")]

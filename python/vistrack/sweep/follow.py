@@ -58,7 +58,7 @@ def _base(value: Any, folder: Path) -> dict[str, Any]:
 
 
 def _keys(base: Mapping[str, Any]) -> set[str]:
-    keys = dotted_keys(base) | (TOP_KEYS - {"city", "description", "origin"})
+    keys = dotted_keys(base) | (TOP_KEYS - {"city", "description", "georeference"})
     return keys | {f"{section}.{name}" for section, names in _SECTIONS.items() for name in names}
 
 

@@ -3,7 +3,7 @@ without its report, on the worker's shared environment and orbit planner.
 
 Its base is a scenario (a file or a mapping, as ``vistrack run`` reads); a parameter sets any
 scenario key (``uav.altitude``, ``sensor.d_max``, ``planning.cutoff``, ``control.beta``, a whole
-section such as ``environment``...). Metrics are those of ``metrics.json`` flattened
+section such as ``city``...). Metrics are those of ``metrics.json`` flattened
 (``plan.initial_radius_m``, ``simulation.visibility_fraction``, ``baselines.40.visibility_fraction``),
 without timings; ``plan.volumes_computed`` depends on what the worker's VV cache already held, so
 it is run metadata (``run_volumes_computed``).
@@ -25,7 +25,7 @@ from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, flatten, regi
 __all__ = ["TRACKING"]
 
 # One source per section: setting one removes the others.
-_SOURCES = {"environment": ("demo", "geojson", "mesh"), "poi": ("path", "waypoints", "nodes", "route")}
+_SOURCES = {"city": ("demo", "geojson", "mesh"), "poi": ("path", "waypoints", "nodes", "route")}
 
 _METRICS = (
     "environment", "environment_triangles", "environment_max_height_m", "origin",
@@ -62,7 +62,7 @@ def _load_base(value: Any, folder: Path) -> dict[str, Any]:
 
 def _keys(base: Mapping[str, Any]) -> set[str]:
     keys = dotted_keys(base) | {f"{section}.{source}" for section, names in _SOURCES.items() for source in names}
-    return (keys | {"environment.up"}) - {"name"}
+    return (keys | {"city.up"}) - {"name"}
 
 
 def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
@@ -72,7 +72,7 @@ def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
         for other in _SOURCES[section]:
             if other != name:
                 result[section].pop(other, None)
-        if section == "environment" and name != "mesh":
+        if section == "city" and name != "mesh":
             result[section].pop("up", None)
     return result
 

@@ -43,23 +43,17 @@ from ..scenario_blocks import (
     upgrade,
 )
 from ..schema import (
-    absolute_tolerance,
     apply_checks,
     coordinate,
     fail,
-    heading_gain,
     integer,
     length,
     number,
-    positive,
-    rate_margin,
     reject_unknown,
-    relative_tolerance,
     resolve_path,
     section,
     speed,
 )
-from ..schema import beta as schema_beta
 
 __all__ = ["EnvironmentSpec", "PoiSpec", "ReportOptions", "Scenario", "default_scenario_text", "road_route"]
 
@@ -269,17 +263,17 @@ def _start(extra: Mapping[str, Any]) -> tuple[float, float, float] | None:
 def _sensor(section: dict[str, Any]) -> Sensor:
     sensor = Sensor()
     if "d_max" in section:
-        sensor.d_max = length("sensor.d_max", section["d_max"])
+        sensor.d_max = number("sensor.d_max", section["d_max"])
     band = section.get("altitude_band")
     if band is not None:
         if not isinstance(band, list) or len(band) != 2:
             raise fail("sensor.altitude_band", band, "must be [h_lo, h_hi] in metres, or null")
-        sensor.altitude_band = (coordinate("sensor.altitude_band[0]", band[0]),
-                                coordinate("sensor.altitude_band[1]", band[1]))
+        sensor.altitude_band = (number("sensor.altitude_band[0]", band[0]), number("sensor.altitude_band[1]", band[1]))
     sensor.validate()
     return sensor
 
 
+# Each section's values are parsed to their types here; the ranges are the C++ structs' validate().
 def _planning(section: dict[str, Any]) -> Planning:
     def locus(key: str, value: Any) -> str:
         if value not in ("smooth", "paper"):
@@ -287,16 +281,11 @@ def _planning(section: dict[str, Any]) -> Planning:
                                    'piecewise linear)')
         return value
 
+    numbers = ("spacing", "cutoff", "resolution_deg", "min_spacing", "rate_margin", "tracking_margin", "check_spacing",
+               "check_min_spacing", "turn_share")
     return apply_checks(Planning(), section, "planning", {
-        "spacing": length, "cutoff": lambda k, v: number(k, v, low=0.0, high=1e21, low_open=True),
-        "resolution_deg": lambda k, v: number(k, v, low=0.1, high=30.0),
-        "min_spacing": length,
-        "max_depth": lambda k, v: integer(k, v, 0, 30),
-        "rate_margin": rate_margin,
-        "locus": locus, "tracking_margin": lambda k, v: number(k, v, low=0.0, high=1e7),
-        "check_spacing": length, "check_min_spacing": length,
-        "turn_share": lambda k, v: number(k, v, low=0.0, low_open=True),
-        "max_volumes": lambda k, v: integer(k, v, 1, 10**12)})
+        **dict.fromkeys(numbers, number), "locus": locus,
+        "max_depth": lambda k, v: integer(k, v, 0, 30), "max_volumes": lambda k, v: integer(k, v, 1, 10**12)})
 
 
 def _control(section: dict[str, Any]) -> Control:
@@ -305,13 +294,12 @@ def _control(section: dict[str, Any]) -> Control:
             raise fail(key, value, 'must be "ccw" or "cw"')
         return value
 
-    return apply_checks(Control(), section, "control", {"beta": schema_beta, "k_psi": heading_gain,
-                                                  "direction": direction})
+    return apply_checks(Control(), section, "control", {"beta": number, "k_psi": number, "direction": direction})
 
 
 def _simulation(section: dict[str, Any]) -> SimulationOptions:
-    return apply_checks(SimulationOptions(), section, "simulation", {
-        "rtol": relative_tolerance, "atol": absolute_tolerance, "max_step": positive, "output_step": positive})
+    return apply_checks(SimulationOptions(), section, "simulation", dict.fromkeys(
+        ("rtol", "atol", "max_step", "output_step"), number))
 
 
 def _baselines(value: Any) -> list[float]:
