@@ -122,7 +122,7 @@ void bind_follow(py::module_& parent) {
 
   const FollowParameters defaults;
   py::class_<FollowParameters>(m, "FollowParameters",
-                               "The follow planner's settings (defaults in parameters.hpp). Angles in radians.")
+                               "The follow planner's settings (defaults from the C++ struct). Angles in radians.")
       .def(py::init([](double period, double turn_margin, double threshold, double hysteresis,
                        const std::string& loiter_pattern, double loiter_radius, Circulation loiter_direction,
                        double offset_distance, double offset_angle, const std::string& offset_reference,

@@ -328,7 +328,7 @@ void bind_orbit(py::module_& m) {
             py::gil_scoped_release release;
             return p.fixed(poi, spacing, resolution_deg, report, max_volumes);
           },
-          py::arg("poi"), py::arg("spacing"), py::arg("resolution_deg") = Planning{}.resolution_deg,
+          py::arg("poi"), py::arg("spacing"), py::arg("resolution_deg") = kDefaultResolutionDeg,
           py::arg("progress") = py::none(), py::arg("max_volumes") = Planning{}.max_volumes,
           "VVs every `spacing` m from each edge start plus every node, and the metric between neighbours; "
           "VistrackError before any work when that is more than max_volumes VVs.")

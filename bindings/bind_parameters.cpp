@@ -2,7 +2,11 @@
 
 #include "bindings.hpp"
 #include "vistrack/error.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/dubins_parameters.hpp"
+#include "vistrack/guidance_parameters.hpp"
+#include "vistrack/orbit_parameters.hpp"
+#include "vistrack/simulate_parameters.hpp"
+#include "vistrack/visibility_parameters.hpp"
 
 namespace py = pybind11;
 

@@ -203,7 +203,7 @@ void bind_visibility(py::module_& m) {
         return visibility_volume(scene, p, d_max, band, resolution_deg);
       },
       py::arg("scene"), py::arg("g"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
-      py::arg("resolution_deg") = Planning{}.resolution_deg,
+      py::arg("resolution_deg") = kDefaultResolutionDeg,
       "Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when "
       "given, on a grid of about resolution_deg degrees.");
   m.def(
@@ -230,7 +230,7 @@ void bind_visibility(py::module_& m) {
         return py::make_tuple(std::move(vv), d);
       },
       py::arg("scene"), py::arg("g"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
-      py::arg("resolution_deg") = Planning{}.resolution_deg, py::arg("parallel") = true,
+      py::arg("resolution_deg") = kDefaultResolutionDeg, py::arg("parallel") = true,
       "visibility_volume and where its time and rays went: (vv, {bounds_s, trace_s, refine_s, mesh_s, volume_s "
       "(seconds), rays_traced, rays_skipped (cell and corner rays traced / decided by the bounds alone), "
       "refine_rays, embree_s (seconds in Embree's rtcIntersect1M calls with their ray packing, per thread and "
@@ -243,7 +243,7 @@ void bind_visibility(py::module_& m) {
         return visibility_volumes(scene, pois, d_max, band, resolution_deg);
       },
       py::arg("scene"), py::arg("pois"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
-      py::arg("resolution_deg") = Planning{}.resolution_deg, "VVs for every row of pois (n, 3), in parallel over the points.");
+      py::arg("resolution_deg") = kDefaultResolutionDeg, "VVs for every row of pois (n, 3), in parallel over the points.");
   m.def("mesh_volume",
         [](const Points3& v, const Faces& f) {
           validate_triangle_mesh(v, f);

@@ -365,7 +365,7 @@ TEST(Guidance, InvalidInputsNameTheField) {
   control.direction = Circulation::Clockwise;
   const GuidanceGains from = GuidanceGains::from(uav, control);
   EXPECT_EQ(from.direction, Circulation::Clockwise);
-  // The gains' defaults are the Uav's and the Control's (parameters.hpp holds each once).
+  // The gains' defaults are the Uav's and the Control's (each default lives once, in its struct).
   const GuidanceGains defaults;
   const GuidanceGains derived = GuidanceGains::from(Uav{}, Control{});
   EXPECT_EQ(defaults.speed, derived.speed);

@@ -40,7 +40,7 @@
 #include "vistrack/flight.hpp"
 #include "vistrack/geometry.hpp"
 #include "vistrack/guidance.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/follow_parameters.hpp"
 
 namespace vistrack {
 
@@ -297,7 +297,7 @@ struct FollowRun {
   // Per update (1 Hz): the planner's state and the waypoint it issued at that time.
   std::vector<FollowTick> ticks;
   FollowMetrics metrics;
-  // The generated waypoints and when each was issued (issue 16 exports these).
+  // The generated waypoints and when each was issued (what a mission export needs).
   Points2 waypoints() const;
   std::vector<double> waypoint_times() const;
 };

@@ -27,7 +27,7 @@
 
 #include "vistrack/dubins.hpp"
 #include "vistrack/geometry.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/loiter_parameters.hpp"
 
 namespace vistrack {
 

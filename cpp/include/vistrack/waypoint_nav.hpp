@@ -36,7 +36,7 @@
 #include "vistrack/dubins.hpp"
 #include "vistrack/flight.hpp"
 #include "vistrack/geometry.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/waypoint_nav_parameters.hpp"
 
 namespace vistrack {
 

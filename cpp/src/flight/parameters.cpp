@@ -1,11 +1,11 @@
-// Validation of the flight layer's parameter structs (parameters.hpp) and the integration names.
+// Validation of the flight layer's parameter structs (flight_parameters.hpp) and the integration names.
 #include <algorithm>
 #include <cctype>
 
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
 #include "vistrack/flight.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/flight_parameters.hpp"
 
 namespace vistrack {
 
@@ -27,6 +27,11 @@ void FlightOptions::validate() const {
   if (max_time / dt > 1e8)
     detail::fail_field("max_time", max_time, "more than 1e8 steps of dt = " + detail::to_text(dt));
   require_tolerances(rtol, atol, "");
+}
+
+void PathFollowingGains::validate() const {
+  require_positive(lookahead_radii, "gains.lookahead_radii");
+  require_positive(heading_gain, "gains.heading_gain");
 }
 
 void LineFeedbackGains::validate() const {
