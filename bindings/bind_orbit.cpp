@@ -128,7 +128,7 @@ void bind_orbit(py::module_& m) {
       .def_readonly("bytes_per_volume", &WorkEstimate::bytes_per_volume, "Memory of one VV (bytes).")
       .def_property_readonly("bytes", &WorkEstimate::bytes, "Memory of all of them (bytes).")
       .def("__repr__", [](const WorkEstimate& w) {
-        return "WorkEstimate(volumes=" + detail::to_text(w.volumes) + ", bytes=" + detail::to_text(w.bytes()) + ")";
+        return Repr("WorkEstimate").add("volumes", w.volumes).add("bytes", w.bytes()).str();
       });
   m.def("volume_bytes", &volume_bytes, py::arg("resolution_deg"),
         "Memory of one VV on a grid of resolution_deg degrees (bytes; ~4.7 MB at 1 degree).");

@@ -319,7 +319,7 @@ TEST(Simulate, BadInputNamesTheField) {
   EXPECT_NE(error_message([&] { simulate(plan, uav, Vec3(std::nan(""), 0.0, 0.0), Control{}); }).find("x0[0]"),
             std::string::npos);
   // A direction is a Circulation: a bad one can only come from text, which names its field.
-  EXPECT_NE(error_message([&] { circulation_from_string("sideways", "control.direction"); }).find("control.direction"),
+  EXPECT_NE(error_message([&] { from_name<Circulation>("sideways", "control.direction"); }).find("control.direction"),
             std::string::npos);
   Uav slow = uav;
   slow.speed = 4.0;

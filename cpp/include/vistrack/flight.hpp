@@ -45,10 +45,6 @@
 
 namespace vistrack {
 
-std::string to_string(FlightIntegration integration);
-// "discrete" | "continuous" (case-insensitive); Error naming `field` otherwise.
-FlightIntegration flight_integration_from_string(const std::string& text,
-                                                 const std::string& field = "integration");
 
 // ---- Wind ------------------------------------------------------------------------------------
 //

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <optional>
 
+#include "vistrack/error.hpp"
+
 namespace vistrack {
 
 // Dryden turbulence on top of the constant wind (MIL-F-8785C, horizontal components; see
@@ -30,6 +32,14 @@ struct Wind {
 
 // How fly() advances the vehicle: the paper's discrete update, or Dormand-Prince 5(4).
 enum class FlightIntegration : std::uint8_t { Discrete = 0, Continuous = 1 };
+
+template <>
+struct EnumNames<FlightIntegration> {
+  static constexpr const char* field = "integration";
+  static constexpr EnumName<FlightIntegration> names[] = {
+      {"discrete", FlightIntegration::Discrete},
+      {"continuous", FlightIntegration::Continuous}};
+};
 
 struct FlightOptions {
   FlightIntegration integration = FlightIntegration::Discrete;

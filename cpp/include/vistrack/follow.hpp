@@ -116,11 +116,14 @@ class GroundVehicle {
 // ---- Loiter patterns (Fig. 3) ---------------------------------------------------------------------
 
 enum class FollowMode : std::uint8_t { Sinusoid = 0, Loiter = 1, Straight = 2 };
-std::string to_string(FollowMode mode);  // "sinusoid" | "loiter" | "straight"
-std::string to_string(LoiterPattern pattern);
-LoiterPattern loiter_pattern_from_string(const std::string& text, const std::string& field = "loiter_pattern");
-std::string to_string(OffsetReference reference);
-OffsetReference offset_reference_from_string(const std::string& text, const std::string& field = "offset_reference");
+template <>
+struct EnumNames<FollowMode> {
+  static constexpr const char* field = "mode";
+  static constexpr EnumName<FollowMode> names[] = {
+      {"sinusoid", FollowMode::Sinusoid},
+      {"loiter", FollowMode::Loiter},
+      {"straight", FollowMode::Straight}};
+};
 
 // A closed or endless curve about the loiter centre, by arc length s >= 0: the circle of radius
 // R, or the rose of Fig. 3 built from its description (waypoints along a line through the

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "vistrack/error.hpp"
 #include "vistrack/visibility_parameters.hpp"
 
 namespace vistrack {
@@ -26,8 +27,13 @@ enum class Locus : std::uint8_t {
   // The paper's: Algorithm 1's radii at the samples, piecewise linear between them, no check.
   paper = 1,
 };
-std::string to_string(Locus locus);                                        // "smooth" / "paper"
-Locus locus_from_string(const std::string& text, const std::string& field = "planning.locus");
+template <>
+struct EnumNames<Locus> {
+  static constexpr const char* field = "planning.locus";
+  static constexpr EnumName<Locus> names[] = {
+      {"smooth", Locus::smooth},
+      {"paper", Locus::paper}};
+};
 
 // Adaptive placement of visibility volumes (section IV.B) and the locus built on them (IV.C).
 struct Planning {

@@ -16,7 +16,14 @@ struct FuelWeights {
   void validate() const;
 };
 
-enum class NavigationMethod : std::uint8_t { Dubins = 0, Classical = 1 };  // "dwn", "wn"
+enum class NavigationMethod : std::uint8_t { Dubins = 0, Classical = 1 };
+template <>
+struct EnumNames<NavigationMethod> {
+  static constexpr const char* field = "method";
+  static constexpr EnumName<NavigationMethod> names[] = {
+      {"dwn", NavigationMethod::Dubins},
+      {"wn", NavigationMethod::Classical}};
+};
 
 // One navigation flight; the defaults are the paper's section 3 (R 0.7, v 0.8, dt 0.02, and the
 // gains g 0.1, h 5.25 of LineFeedbackGains).

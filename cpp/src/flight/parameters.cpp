@@ -1,7 +1,4 @@
-// Validation of the flight layer's parameter structs (flight_parameters.hpp) and the integration names.
-#include <algorithm>
-#include <cctype>
-
+// Validation of the flight layer's parameter structs (flight_parameters.hpp).
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
 #include "vistrack/flight.hpp"
@@ -37,18 +34,6 @@ void PathFollowingGains::validate() const {
 void LineFeedbackGains::validate() const {
   require_non_negative(g, "gains.g");
   require_non_negative(h, "gains.h");
-}
-
-std::string to_string(FlightIntegration integration) {
-  return integration == FlightIntegration::Continuous ? "continuous" : "discrete";
-}
-
-FlightIntegration flight_integration_from_string(const std::string& text, const std::string& field) {
-  std::string lower = text;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (lower == "discrete") return FlightIntegration::Discrete;
-  if (lower == "continuous") return FlightIntegration::Continuous;
-  detail::fail_field(field, text, "must be 'discrete' or 'continuous'");
 }
 
 }  // namespace vistrack

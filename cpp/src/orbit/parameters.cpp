@@ -1,4 +1,4 @@
-// Validation of the orbit planner's inputs (orbit_parameters.hpp) and the locus names.
+// Validation of the orbit planner's inputs (orbit_parameters.hpp).
 #include "vistrack/orbit_parameters.hpp"
 
 #include "vistrack/error.hpp"
@@ -28,14 +28,6 @@ void Planning::validate() const {
                        "must not exceed planning.check_spacing = " + detail::to_text(check_spacing));
   if (!(turn_share > 0.0 && turn_share < 1.0))
     detail::fail_field("planning.turn_share", turn_share, "must be in (0, 1) (a share of the free turn rate)");
-}
-
-std::string to_string(Locus locus) { return locus == Locus::paper ? "paper" : "smooth"; }
-
-Locus locus_from_string(const std::string& text, const std::string& field) {
-  if (text == "smooth") return Locus::smooth;
-  if (text == "paper") return Locus::paper;
-  detail::fail_field(field, "\"" + text + "\"", "must be \"smooth\" or \"paper\"");
 }
 
 }  // namespace vistrack
