@@ -93,15 +93,7 @@ void bind_flight(py::module_& parent) {
       .def_readonly("sigma_w", &DrydenLowAltitude::sigma_w, "vertical RMS intensity, m/s")
       .def_readonly("length_u", &DrydenLowAltitude::length_u, "longitudinal length scale, m")
       .def_readonly("length_v", &DrydenLowAltitude::length_u, "lateral length scale (= length_u), m")
-      .def_readonly("length_w", &DrydenLowAltitude::length_w, "vertical length scale (= altitude), m")
-      .def("__repr__", [](const DrydenLowAltitude& d) {
-        return Repr("DrydenLowAltitude")
-            .add("sigma_u", d.sigma_u)
-            .add("sigma_w", d.sigma_w)
-            .add("length_u", d.length_u)
-            .add("length_w", d.length_w)
-            .str();
-      });
+      .def_readonly("length_w", &DrydenLowAltitude::length_w, "vertical length scale (= altitude), m");
   m.def("dryden_low_altitude", &dryden_low_altitude, py::arg("altitude"), py::arg("wind_speed_20ft"),
       "MIL-F-8785C low-altitude intensities (m/s) and length scales (m) at altitude (m) for W20 (m/s).");
 

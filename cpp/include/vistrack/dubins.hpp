@@ -56,13 +56,8 @@ using CircleDirection = Circulation;
 template <>
 struct EnumNames<DubinsWord> {
   static constexpr const char* field = "word";
-  static constexpr EnumName<DubinsWord> names[] = {
-      {"LSL", DubinsWord::LSL},
-      {"LSR", DubinsWord::LSR},
-      {"RSL", DubinsWord::RSL},
-      {"RSR", DubinsWord::RSR},
-      {"RLR", DubinsWord::RLR},
-      {"LRL", DubinsWord::LRL}};
+  static constexpr EnumName<DubinsWord> names[] = {{"LSL", DubinsWord::LSL}, {"LSR", DubinsWord::LSR},
+      {"RSL", DubinsWord::RSL}, {"RSR", DubinsWord::RSR}, {"RLR", DubinsWord::RLR}, {"LRL", DubinsWord::LRL}};
 };
 std::array<DubinsSegment, 3> segment_types(DubinsWord word);
 

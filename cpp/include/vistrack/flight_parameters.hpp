@@ -36,8 +36,7 @@ enum class FlightIntegration : std::uint8_t { Discrete = 0, Continuous = 1 };
 template <>
 struct EnumNames<FlightIntegration> {
   static constexpr const char* field = "integration";
-  static constexpr EnumName<FlightIntegration> names[] = {
-      {"discrete", FlightIntegration::Discrete},
+  static constexpr EnumName<FlightIntegration> names[] = {{"discrete", FlightIntegration::Discrete},
       {"continuous", FlightIntegration::Continuous}};
 };
 

@@ -119,9 +119,7 @@ enum class FollowMode : std::uint8_t { Sinusoid = 0, Loiter = 1, Straight = 2 };
 template <>
 struct EnumNames<FollowMode> {
   static constexpr const char* field = "mode";
-  static constexpr EnumName<FollowMode> names[] = {
-      {"sinusoid", FollowMode::Sinusoid},
-      {"loiter", FollowMode::Loiter},
+  static constexpr EnumName<FollowMode> names[] = {{"sinusoid", FollowMode::Sinusoid}, {"loiter", FollowMode::Loiter},
       {"straight", FollowMode::Straight}};
 };
 

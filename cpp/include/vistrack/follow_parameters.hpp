@@ -13,9 +13,7 @@ enum class LoiterPattern : std::uint8_t { Circle = 0, Rose = 1 };
 template <>
 struct EnumNames<LoiterPattern> {
   static constexpr const char* field = "loiter_pattern";
-  static constexpr EnumName<LoiterPattern> names[] = {
-      {"circle", LoiterPattern::Circle},
-      {"rose", LoiterPattern::Rose}};
+  static constexpr EnumName<LoiterPattern> names[] = {{"circle", LoiterPattern::Circle}, {"rose", LoiterPattern::Rose}};
 };
 
 // "north": the offset is fixed to the map; "heading": it turns with the vehicle.
@@ -23,10 +21,8 @@ enum class OffsetReference : std::uint8_t { North = 0, Heading = 1 };
 template <>
 struct EnumNames<OffsetReference> {
   static constexpr const char* field = "offset_reference";
-  static constexpr EnumName<OffsetReference> names[] = {
-      {"north", OffsetReference::North},
-      {"heading", OffsetReference::Heading},
-      {"cardinal", OffsetReference::North},
+  static constexpr EnumName<OffsetReference> names[] = {{"north", OffsetReference::North},
+      {"heading", OffsetReference::Heading}, {"cardinal", OffsetReference::North},
       {"relative", OffsetReference::Heading}};
 };
 

@@ -29,12 +29,9 @@ constexpr int sign(Circulation circulation) { return circulation == Circulation:
 template <>
 struct EnumNames<Circulation> {
   static constexpr const char* field = "direction";
-  static constexpr EnumName<Circulation> names[] = {
-      {"ccw", Circulation::CounterClockwise},
-      {"cw", Circulation::Clockwise},
-      {"counterclockwise", Circulation::CounterClockwise},
-      {"counter-clockwise", Circulation::CounterClockwise},
-      {"anticlockwise", Circulation::CounterClockwise},
+  static constexpr EnumName<Circulation> names[] = {{"ccw", Circulation::CounterClockwise},
+      {"cw", Circulation::Clockwise}, {"counterclockwise", Circulation::CounterClockwise},
+      {"counter-clockwise", Circulation::CounterClockwise}, {"anticlockwise", Circulation::CounterClockwise},
       {"clockwise", Circulation::Clockwise}};
 };
 

@@ -35,11 +35,8 @@ enum class LoiterMethod : std::uint8_t { FlyThrough = 0, Tlpp = 1, Ldlpp = 2 };
 template <>
 struct EnumNames<LoiterMethod> {
   static constexpr const char* field = "method";
-  static constexpr EnumName<LoiterMethod> names[] = {
-      {"fly_through", LoiterMethod::FlyThrough},
-      {"tlpp", LoiterMethod::Tlpp},
-      {"ldlpp", LoiterMethod::Ldlpp},
-      {"fly-through", LoiterMethod::FlyThrough},
+  static constexpr EnumName<LoiterMethod> names[] = {{"fly_through", LoiterMethod::FlyThrough},
+      {"tlpp", LoiterMethod::Tlpp}, {"ldlpp", LoiterMethod::Ldlpp}, {"fly-through", LoiterMethod::FlyThrough},
       {"flythrough", LoiterMethod::FlyThrough}};
 };
 
@@ -50,9 +47,7 @@ constexpr int kExactOrderLimit = 9;
 template <>
 struct EnumNames<LoiterOrder> {
   static constexpr const char* field = "order";
-  static constexpr EnumName<LoiterOrder> names[] = {
-      {"given", LoiterOrder::Given},
-      {"best", LoiterOrder::Best}};
+  static constexpr EnumName<LoiterOrder> names[] = {{"given", LoiterOrder::Given}, {"best", LoiterOrder::Best}};
 };
 
 enum class SegmentKind : std::uint8_t { Line = 0, Arc = 1 };
@@ -65,18 +60,13 @@ enum class SegmentRole : std::uint8_t { Transit = 0, Entry = 1, Loiter = 2, Exit
 template <>
 struct EnumNames<SegmentKind> {
   static constexpr const char* field = "kind";
-  static constexpr EnumName<SegmentKind> names[] = {
-      {"line", SegmentKind::Line},
-      {"arc", SegmentKind::Arc}};
+  static constexpr EnumName<SegmentKind> names[] = {{"line", SegmentKind::Line}, {"arc", SegmentKind::Arc}};
 };
 template <>
 struct EnumNames<SegmentRole> {
   static constexpr const char* field = "role";
-  static constexpr EnumName<SegmentRole> names[] = {
-      {"transit", SegmentRole::Transit},
-      {"entry", SegmentRole::Entry},
-      {"loiter", SegmentRole::Loiter},
-      {"exit", SegmentRole::Exit}};
+  static constexpr EnumName<SegmentRole> names[] = {{"transit", SegmentRole::Transit}, {"entry", SegmentRole::Entry},
+      {"loiter", SegmentRole::Loiter}, {"exit", SegmentRole::Exit}};
 };
 
 // One piece of a plan. Headings are continuous along the plan (not wrapped).

@@ -30,9 +30,7 @@ enum class Locus : std::uint8_t {
 template <>
 struct EnumNames<Locus> {
   static constexpr const char* field = "planning.locus";
-  static constexpr EnumName<Locus> names[] = {
-      {"smooth", Locus::smooth},
-      {"paper", Locus::paper}};
+  static constexpr EnumName<Locus> names[] = {{"smooth", Locus::smooth}, {"paper", Locus::paper}};
 };
 
 // Adaptive placement of visibility volumes (section IV.B) and the locus built on them (IV.C).

@@ -65,9 +65,7 @@ enum class XorFrame { poi, world };
 template <>
 struct EnumNames<XorFrame> {
   static constexpr const char* field = "frame";
-  static constexpr EnumName<XorFrame> names[] = {
-      {"poi", XorFrame::poi},
-      {"world", XorFrame::world}};
+  static constexpr EnumName<XorFrame> names[] = {{"poi", XorFrame::poi}, {"world", XorFrame::world}};
 };
 
 // "radial": exact per direction on the meshes of two star VVs built over one sphere (what "mesh"
@@ -78,11 +76,8 @@ enum class XorMethod { automatic, radial, grid, mesh };
 template <>
 struct EnumNames<XorMethod> {
   static constexpr const char* field = "method";
-  static constexpr EnumName<XorMethod> names[] = {
-      {"auto", XorMethod::automatic},
-      {"radial", XorMethod::radial},
-      {"grid", XorMethod::grid},
-      {"mesh", XorMethod::mesh}};
+  static constexpr EnumName<XorMethod> names[] = {{"auto", XorMethod::automatic}, {"radial", XorMethod::radial},
+      {"grid", XorMethod::grid}, {"mesh", XorMethod::mesh}};
 };
 
 // The rotation xor_volume's mesh path applies in frame "poi" unless told otherwise (rad).

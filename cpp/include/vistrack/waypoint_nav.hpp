@@ -46,11 +46,8 @@ constexpr int kTurnCaseCount = 4;
 template <>
 struct EnumNames<TurnCase> {
   static constexpr const char* field = "case";
-  static constexpr EnumName<TurnCase> names[] = {
-      {"ccw-ccw", TurnCase::CcwCcw},
-      {"ccw-cw", TurnCase::CcwCw},
-      {"cw-ccw", TurnCase::CwCcw},
-      {"cw-cw", TurnCase::CwCw}};
+  static constexpr EnumName<TurnCase> names[] = {{"ccw-ccw", TurnCase::CcwCcw}, {"ccw-cw", TurnCase::CcwCw},
+      {"cw-ccw", TurnCase::CwCcw}, {"cw-cw", TurnCase::CwCw}};
 };
 
 // The horizon path of one case at one orientation theta. Lengths are arc lengths (length units).

@@ -20,8 +20,7 @@ enum class NavigationMethod : std::uint8_t { Dubins = 0, Classical = 1 };
 template <>
 struct EnumNames<NavigationMethod> {
   static constexpr const char* field = "method";
-  static constexpr EnumName<NavigationMethod> names[] = {
-      {"dwn", NavigationMethod::Dubins},
+  static constexpr EnumName<NavigationMethod> names[] = {{"dwn", NavigationMethod::Dubins},
       {"wn", NavigationMethod::Classical}};
 };
 

@@ -93,8 +93,6 @@ class DrydenLowAltitude:
     """
     MIL-F-8785C low-altitude turbulence at one altitude.
     """
-    def __repr__(self) -> str:
-        ...
     @property
     def length_u(self) -> float:
         """
