@@ -153,8 +153,8 @@ def main() -> int:
     for res in OURS_RESOLUTIONS:
         results = [serial_vv(g, res) for g in pois]
         volumes = np.array([v for v, _ in results])
-        rays = np.mean([c["rays_traced"] + c["rays_skipped"] + c["refine_rays"] for _, c in results])
-        embree = np.mean([c["rays_traced"] + c["refine_rays"] for _, c in results])
+        rays = np.mean([c.rays_traced + c.rays_skipped + c.refine_rays for _, c in results])
+        embree = np.mean([c.rays_traced + c.refine_rays for _, c in results])
         cpu, _ = cpu_and_wall(args.repeat, lambda res=res: [serial_vv(g, res) for g in pois])
         _, wall = cpu_and_wall(args.repeat,
                                lambda res=res: [vt.visibility_volume(scene, g, d_max, None, res) for g in pois])

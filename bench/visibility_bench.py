@@ -142,7 +142,9 @@ def main() -> int:
               f"{row['ratio_vv_vs_peer']:>5.1f}x")
     for res in (1.0, 0.5):
         costs = [_core.visibility_volume_cost(scene, p, args.d_max, None, res, False)[1] for p in pois]
-        total = {k: float(np.mean([c[k] for c in costs])) for k in costs[0]}
+        fields = ("bounds_s", "trace_s", "refine_s", "mesh_s", "volume_s", "rays_traced", "rays_skipped", "refine_rays",
+                  "embree_s")
+        total = {k: float(np.mean([getattr(c, k) for c in costs])) for k in fields}
         phases = ("bounds_s", "trace_s", "refine_s", "mesh_s", "volume_s")
         spent = sum(total[k] for k in phases)
         print(f"{res:g} deg, one VV on one thread: {spent * 1e3:.2f} ms = "

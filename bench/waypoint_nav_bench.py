@@ -129,10 +129,10 @@ def main() -> None:
 
     d_theta, d_length, same_case = [], [], 0
     for i, (theta, length, c) in enumerate(theirs):
-        d_length.append(ours["length"][i] - length)
-        if c == ours["case"][i]:
+        d_length.append(ours.length[i] - length)
+        if c == ours.case[i]:
             same_case += 1
-            d_theta.append(abs((ours["theta"][i] - theta + math.pi) % TWO_PI - math.pi))
+            d_theta.append(abs((ours.theta[i] - theta + math.pi) % TWO_PI - math.pi))
     d_theta_a, d_length_a = np.array(d_theta), np.array(d_length)
 
     route = read_route(HERE.parent / "examples" / "waypoints_paper.csv")

@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <map>
 #include <string>
 
 #include "bindings.hpp"
@@ -52,7 +53,6 @@ namespace vistrack::bindings {
 namespace {
 
 using Triple = Configuration;
-using InputArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 const Configuration& to_configuration(const Configuration& q) { return q; }
 py::tuple to_tuple(const Configuration& q) { return py::make_tuple(q.x, q.y, q.psi); }
@@ -104,9 +104,7 @@ void bind_dubins(py::module_& parent) {
       "Configurations are (x, y, psi), psi in rad counter-clockwise from +x; rho is the minimum turn "
       "radius. Snapping tolerance: eps = 1e-11 * (1 + max|coordinate| / rho) (see dubins.hpp).");
 
-  py::list words;
-  for (int k = 0; k < kDubinsWordCount; ++k) words.append(to_string(static_cast<DubinsWord>(k)));
-  m.attr("WORDS") = py::tuple(words);
+  m.attr("WORDS") = enum_names<DubinsWord>();
   m.attr("SNAP") = kDubinsSnap;
 
   py::class_<DubinsPath>(m, "DubinsPath", "One Dubins path: start, goal, turn radius, word and segment lengths.")
@@ -134,9 +132,11 @@ void bind_dubins(py::module_& parent) {
       .def("sample_at", &DubinsPath::sample_at, py::arg("arc_lengths"),
            "Array (n, 3) of (x, y, psi) at the given arc lengths (each in [0, length]).")
       .def("__repr__", [](const DubinsPath& p) {
-        return "DubinsPath(word='" + to_string(p.word) + "', length=" + detail::to_text(p.length) + ", segment_lengths=(" +
-               detail::to_text(p.segment_lengths[0]) + ", " + detail::to_text(p.segment_lengths[1]) + ", " +
-               detail::to_text(p.segment_lengths[2]) + "))";
+        return Repr("DubinsPath")
+            .add("word", p.word)
+            .add("length", p.length)
+            .add("segment_lengths", Vec3(p.segment_lengths[0], p.segment_lengths[1], p.segment_lengths[2]))
+            .str();
       });
 
   m.def(
@@ -156,8 +156,8 @@ void bind_dubins(py::module_& parent) {
       "Length of the shortest Dubins path (no path object; the batch kernel for one pair).");
   m.def(
       "path",
-      [](const Triple& q0, const Triple& q1, double rho, const std::string& word) {
-        return dubins_path(to_configuration(q0), to_configuration(q1), rho, dubins_word_from_string(word));
+      [](const Triple& q0, const Triple& q1, double rho, DubinsWord word) {
+        return dubins_path(to_configuration(q0), to_configuration(q1), rho, word);
       },
       py::arg("q0"), py::arg("q1"), py::arg("rho"), py::arg("word"),
       "The path of one given word ('LSL', ...); VistrackError when that word has no path.");
@@ -165,9 +165,9 @@ void bind_dubins(py::module_& parent) {
       "word_lengths",
       [](const Triple& q0, const Triple& q1, double rho) {
         const auto l = dubins_word_lengths(to_configuration(q0), to_configuration(q1), rho);
-        py::dict out;
-        for (int k = 0; k < kDubinsWordCount; ++k) out[py::str(to_string(static_cast<DubinsWord>(k)))] = l[static_cast<std::size_t>(k)];
-        return out;
+        std::map<std::string, double> lengths;
+        for (int k = 0; k < kDubinsWordCount; ++k) lengths[to_string(static_cast<DubinsWord>(k))] = l[static_cast<std::size_t>(k)];
+        return lengths;
       },
       py::arg("q0"), py::arg("q1"), py::arg("rho"), "Length of every word (inf where it does not exist), keyed by word.");
   m.def(

@@ -122,7 +122,7 @@ void bind_environment(py::module_& m) {
            },
            py::arg("point"), "Index of the node closest to a point (x, y) (lowest index on ties).")
       .def("__repr__", [](const RoadNetwork& r) {
-        return "RoadNetwork(" + std::to_string(r.nodes.size()) + " nodes, " + std::to_string(r.edges.size()) + " edges)";
+        return Repr("RoadNetwork").add("nodes", r.nodes.size()).add("edges", r.edges.size()).str();
       });
 
   py::class_<Environment>(m, "Environment",
@@ -227,8 +227,11 @@ void bind_environment(py::module_& m) {
           "unknown. Set by from_geojson (its origin argument, or the origin a longitude/latitude file was "
           "projected about); assignable (a tuple or a vistrack.Georeference). Not part of the fingerprint.")
       .def("__repr__", [](const Environment& e) {
-        return "Environment(" + std::to_string(e.num_buildings()) + " buildings, " + std::to_string(e.num_triangles()) +
-               " triangles, max height " + detail::to_text(e.max_height()) + " m)";
+        return Repr("Environment")
+            .add("buildings", e.num_buildings())
+            .add("triangles", e.num_triangles())
+            .add("max_height", e.max_height())
+            .str();
       });
 
   py::class_<PoiPath>(m, "PoiPath", "A point of interest moving at constant speed through waypoints.")

@@ -19,10 +19,6 @@ namespace vistrack::bindings {
 
 namespace {
 
-py::array_t<double> to_numpy(const std::vector<double>& values) {
-  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
-}
-
 py::array_t<double> columns(const std::vector<const std::vector<double>*>& cols) {
   const std::size_t n = cols.front()->size();
   py::array_t<double> out({static_cast<py::ssize_t>(n), static_cast<py::ssize_t>(cols.size())});
@@ -30,33 +26,6 @@ py::array_t<double> columns(const std::vector<const std::vector<double>*>& cols)
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < cols.size(); ++j)
       view(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j)) = (*cols[j])[i];
-  return out;
-}
-
-Configuration configuration(const std::tuple<double, double, double>& q) {
-  return {std::get<0>(q), std::get<1>(q), std::get<2>(q)};
-}
-
-py::dict terms_dict(const LineFeedbackTerms& t) {
-  py::dict d;
-  d["target_angle"] = t.target_angle;
-  d["cross_track"] = t.cross_track;
-  d["cross_track_step"] = t.cross_track_step;
-  d["reference_angle"] = t.reference_angle;
-  d["unsaturated"] = t.unsaturated;
-  d["turn"] = t.turn;
-  d["saturated"] = t.saturated;
-  return d;
-}
-
-std::vector<Vec2> points_from_array(const Points2& points, const std::string& field) {
-  std::vector<Vec2> out;
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    const Vec2 p = points.row(i).transpose();
-    require_finite(p.x(), field + "[" + std::to_string(i) + "][0]");
-    require_finite(p.y(), field + "[" + std::to_string(i) + "][1]");
-    out.push_back(p);
-  }
   return out;
 }
 
@@ -92,9 +61,12 @@ void bind_flight(py::module_& parent) {
                   "at 20 ft W20 (m/s; light 7.7, moderate 15.4, severe 23.2), in flight units: speeds divided by "
                   "speed_unit (m/s per unit), lengths by length_unit (m per unit).")
       .def("__repr__", [](const Gusts& g) {
-        return "Gusts(seed=" + std::to_string(g.seed) + ", intensity=" + detail::to_text(g.intensity) +
-               ", length_scale=" + detail::to_text(g.length_scale) + ", sample_step=" + detail::to_text(g.sample_step) +
-               ")";
+        return Repr("Gusts")
+            .add("seed", g.seed)
+            .add("intensity", g.intensity)
+            .add("length_scale", g.length_scale)
+            .add("sample_step", g.sample_step)
+            .str();
       });
 
   py::class_<Wind>(m, "Wind", "Wind the vehicle does not know: constant (east, north) plus optional Gusts.")
@@ -109,24 +81,20 @@ void bind_flight(py::module_& parent) {
       .def_readwrite("north", &Wind::north, "north component, speed units")
       .def_readwrite("gusts", &Wind::gusts, "Gusts or None")
       .def("__repr__", [](const Wind& w) {
-        return "Wind(east=" + detail::to_text(w.east) + ", north=" + detail::to_text(w.north) +
-               (w.gusts ? ", gusts=Gusts(seed=" + std::to_string(w.gusts->seed) + ", ...))" : std::string(")"));
+        Repr text("Wind");
+        text.add("east", w.east).add("north", w.north);
+        if (w.gusts) text.item("gusts=" + Repr("Gusts").add("seed", w.gusts->seed).item("...").str());
+        return text.str();
       });
 
-  m.def(
-      "dryden_low_altitude",
-      [](double altitude, double w20) {
-        const DrydenLowAltitude d = dryden_low_altitude(altitude, w20);
-        py::dict out;
-        out["sigma_u"] = d.sigma_u;
-        out["sigma_v"] = d.sigma_u;
-        out["sigma_w"] = d.sigma_w;
-        out["length_u"] = d.length_u;
-        out["length_v"] = d.length_u;
-        out["length_w"] = d.length_w;
-        return out;
-      },
-      py::arg("altitude"), py::arg("wind_speed_20ft"),
+  py::class_<DrydenLowAltitude>(m, "DrydenLowAltitude", "MIL-F-8785C low-altitude turbulence at one altitude.")
+      .def_readonly("sigma_u", &DrydenLowAltitude::sigma_u, "longitudinal RMS intensity, m/s")
+      .def_readonly("sigma_v", &DrydenLowAltitude::sigma_u, "lateral RMS intensity (= sigma_u), m/s")
+      .def_readonly("sigma_w", &DrydenLowAltitude::sigma_w, "vertical RMS intensity, m/s")
+      .def_readonly("length_u", &DrydenLowAltitude::length_u, "longitudinal length scale, m")
+      .def_readonly("length_v", &DrydenLowAltitude::length_u, "lateral length scale (= length_u), m")
+      .def_readonly("length_w", &DrydenLowAltitude::length_w, "vertical length scale (= altitude), m");
+  m.def("dryden_low_altitude", &dryden_low_altitude, py::arg("altitude"), py::arg("wind_speed_20ft"),
       "MIL-F-8785C low-altitude intensities (m/s) and length scales (m) at altitude (m) for W20 (m/s).");
 
   py::class_<WindField>(m, "WindField", "w(t) for one flight: the constant wind plus the precomputed gust series.")
@@ -151,6 +119,15 @@ void bind_flight(py::module_& parent) {
       .def_property_readonly("max_speed", &WindField::max_speed, "largest wind speed over the span")
       .def_property_readonly("has_gusts", &WindField::has_gusts, "whether gusts were generated");
 
+  py::class_<LineFeedbackTerms>(m, "LineFeedbackTerms", "Every term of the law (5) at one state.")
+      .def_readonly("target_angle", &LineFeedbackTerms::target_angle, "phi_T, rad")
+      .def_readonly("cross_track", &LineFeedbackTerms::cross_track, "s")
+      .def_readonly("cross_track_step", &LineFeedbackTerms::cross_track_step, "s_dot dt")
+      .def_readonly("reference_angle", &LineFeedbackTerms::reference_angle, "phi_R, rad")
+      .def_readonly("unsaturated", &LineFeedbackTerms::unsaturated, "phi_T + phi_R, rad")
+      .def_readonly("turn", &LineFeedbackTerms::turn, "psi_turn, clamped to +-psi_max, rad")
+      .def_readonly("saturated", &LineFeedbackTerms::saturated, "whether the clamp acted");
+
   py::class_<LineFeedback>(m, "LineFeedback",
                            "The paper's feedback law (5): psi_turn = clamp(phi_T + |g s + h s_dot dt| sign(phi_T), "
                            "+-v dt / R) towards the line whose end is the target; turn rate psi_turn / dt.")
@@ -164,13 +141,14 @@ void bind_flight(py::module_& parent) {
            "sign(phi_T) -> clamp(phi_T / psi_max, -1, 1) for continuous flight.")
       .def(
           "terms",
-          [](const LineFeedback& law, const std::tuple<double, double, double>& q, const Vec2& line_start,
-             const Vec2& target) { return terms_dict(law.terms(configuration(q), line_start, target)); },
+          [](const LineFeedback& law, const Pose& q, const Vec2& line_start, const Vec2& target) {
+            return law.terms(configuration(q), line_start, target);
+          },
           py::arg("state"), py::arg("line_start"), py::arg("target"),
-          "Every term of (5) at state (x, y, psi) for the line line_start -> target, as a dict.")
+          "Every term of (5) at state (x, y, psi) for the line line_start -> target (LineFeedbackTerms).")
       .def(
           "turn_rate",
-          [](const LineFeedback& law, const std::tuple<double, double, double>& q, const Vec2& line_start,
+          [](const LineFeedback& law, const Pose& q, const Vec2& line_start,
              const Vec2& target) { return law.turn_rate(configuration(q), line_start, target); },
           py::arg("state"), py::arg("line_start"), py::arg("target"), "psi_turn / dt, rad/s.")
       .def_property_readonly("max_turn", &LineFeedback::max_turn, "psi_max = v dt / R, rad per step")
@@ -185,7 +163,7 @@ void bind_flight(py::module_& parent) {
                              "A guidance law for fly(): turn-rate command and target from (x, y, psi) and t; its "
                              "stateful logic runs only after accepted steps.")
       .def("command",
-           [](const FlightGuidance& g, const std::tuple<double, double, double>& q, double t) {
+           [](const FlightGuidance& g, const Pose& q, double t) {
              const GuidanceCommand c = g.command(configuration(q), t);
              return py::make_tuple(c.turn_rate, py::make_tuple(c.target.x(), c.target.y()), c.target_index);
            },
@@ -198,8 +176,8 @@ void bind_flight(py::module_& parent) {
       "Classical waypoint navigation on the law (5): the line from the previous waypoint (the start for the "
       "first) to the active one; next waypoint when within waypoint_radius. finish_at_last=False holds at the "
       "last waypoint until add_waypoint() gives more (feed it from fly()'s on_step).")
-      .def(py::init([](const LineFeedback& law, const Points2& waypoints, double radius, bool finish_at_last) {
-             return WaypointFollower(law, points_from_array(waypoints, "waypoints"), radius, finish_at_last);
+      .def(py::init([](const LineFeedback& law, const InputArray& waypoints, double radius, bool finish_at_last) {
+             return WaypointFollower(law, to_points(waypoints, "waypoints"), radius, finish_at_last);
            }),
            py::arg("law"), py::arg("waypoints"), py::arg("waypoint_radius"), py::arg("finish_at_last") = true,
            "law: LineFeedback; waypoints: array (n, 2); waypoint_radius R_WP >= 0.")
@@ -208,11 +186,7 @@ void bind_flight(py::module_& parent) {
            "Append a waypoint usable from time available_from on (non-decreasing); allowed during flight.")
       .def_property_readonly(
           "waypoints",
-          [](const WaypointFollower& w) {
-            Points2 out(static_cast<Eigen::Index>(w.waypoints().size()), 2);
-            for (std::size_t i = 0; i < w.waypoints().size(); ++i) out.row(static_cast<Eigen::Index>(i)) = w.waypoints()[i];
-            return out;
-          },
+          [](const WaypointFollower& w) { return to_array(w.waypoints()); },
           "array (n, 2)")
       .def_property_readonly("active", &WaypointFollower::active, "index of the active waypoint")
       .def_property_readonly("accepted_at", [](const WaypointFollower& w) { return to_numpy(w.accepted_at()); },
@@ -251,9 +225,9 @@ void bind_flight(py::module_& parent) {
   const FlightOptions defaults;
   m.def(
       "fly",
-      [](FlightGuidance& guidance, const std::tuple<double, double, double>& start, double speed, double turn_radius,
-         std::optional<Wind> wind, double dt, double max_time, const std::string& integration, double t0,
-         std::optional<std::function<void(double, std::tuple<double, double, double>)>> on_step,
+      [](FlightGuidance& guidance, const Pose& start, double speed, double turn_radius,
+         std::optional<Wind> wind, double dt, double max_time, FlightIntegration integration, double t0,
+         std::optional<std::function<void(double, Pose)>> on_step,
          std::optional<std::function<void(std::size_t, std::size_t)>> progress, double rtol, double atol) {
         Uav vehicle;
         vehicle.speed = speed;
@@ -261,7 +235,7 @@ void bind_flight(py::module_& parent) {
         require_positive(speed, "speed");
         require_positive(turn_radius, "turn_radius");
         FlightOptions options;
-        options.integration = flight_integration_from_string(integration);
+        options.integration = integration;
         options.dt = dt;
         options.max_time = max_time;
         options.rtol = rtol;
@@ -284,7 +258,7 @@ void bind_flight(py::module_& parent) {
       },
       py::arg("guidance"), py::arg("start"), py::arg("speed"), py::arg("turn_radius"), py::arg("wind") = py::none(),
       py::arg("dt") = defaults.dt, py::arg("max_time") = defaults.max_time,
-      py::arg("integration") = to_string(defaults.integration), py::arg("t0") = 0.0, py::arg("on_step") = py::none(),
+      py::arg("integration") = defaults.integration, py::arg("t0") = 0.0, py::arg("on_step") = py::none(),
       py::arg("progress") = py::none(), py::arg("rtol") = defaults.rtol, py::arg("atol") = defaults.atol,
       "Fly the vehicle (speed v, turn_radius R) from start (x, y, psi) at t0 under the guidance until it is done or "
       "t0 + max_time. integration 'discrete' (the paper's update, step dt) or 'continuous' (Dormand-Prince, output "

@@ -17,30 +17,6 @@
 namespace py = pybind11;
 
 namespace vistrack::bindings {
-namespace {
-
-using InputArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-std::vector<double> to_vector(const InputArray& a, const std::string& field) {
-  if (a.ndim() != 1) throw Error(field + ": expected a 1-D array, got ndim = " + std::to_string(a.ndim()));
-  return std::vector<double>(a.data(), a.data() + a.shape(0));
-}
-
-Points2 to_points2(const InputArray& a, const std::string& field) {
-  if (a.ndim() != 2 || a.shape(1) != 2)
-    throw Error(field + ": expected an array of shape (n, 2), got ndim = " + std::to_string(a.ndim()));
-  Points2 p(a.shape(0), 2);
-  for (py::ssize_t i = 0; i < a.shape(0); ++i) p.row(i) << a.at(i, 0), a.at(i, 1);
-  return p;
-}
-
-FollowMode mode_from_string(const std::string& text) {
-  for (FollowMode m : {FollowMode::Sinusoid, FollowMode::Loiter, FollowMode::Straight})
-    if (to_string(m) == text) return m;
-  detail::fail_field("mode", text, "must be \"sinusoid\", \"loiter\" or \"straight\"");
-}
-
-}  // namespace
 
 void bind_follow(py::module_& parent) {
   py::module_ m = parent.def_submodule(
@@ -88,7 +64,7 @@ void bind_follow(py::module_& parent) {
                             "A ground vehicle as a piecewise-linear track (t, x, y): position interpolated, "
                             "velocity per segment, heading of the last moving segment.")
       .def(py::init([](const InputArray& t, const InputArray& xy) {
-             return GroundVehicle(to_vector(t, "track.t"), to_points2(xy, "track.xy"));
+             return GroundVehicle(to_values(t, "track.t"), to_array(to_points(xy, "track.xy")));
            }),
            py::arg("t"), py::arg("xy"), "Times (n,) strictly increasing and positions (n, 2).")
       .def_static("from_legs", &GroundVehicle::from_legs, py::arg("legs"), py::arg("start") = Vec2(0.0, 0.0),
@@ -97,7 +73,7 @@ void bind_follow(py::module_& parent) {
       .def_static(
           "along_path",
           [](const InputArray& path, const std::vector<VehicleLeg>& legs, double t0, double step) {
-            return GroundVehicle::along_path(to_points2(path, "path"), legs, t0, step);
+            return GroundVehicle::along_path(to_array(to_points(path, "path")), legs, t0, step);
           },
           py::arg("path"), py::arg("legs"), py::arg("t0") = 0.0, py::arg("step") = 0.1,
           "Along a road polyline (n, 2) with the legs' speed profile (their headings ignored).")
@@ -107,7 +83,7 @@ void bind_follow(py::module_& parent) {
       .def(
           "sample",
           [](const GroundVehicle& v, const InputArray& times) {
-            const std::vector<double> t = to_vector(times, "times");
+            const std::vector<double> t = to_values(times, "times");
             Points2 p(static_cast<Eigen::Index>(t.size()), 2);
             for (std::size_t i = 0; i < t.size(); ++i) p.row(static_cast<Eigen::Index>(i)) = v.position(t[i]).transpose();
             return p;
@@ -122,15 +98,15 @@ void bind_follow(py::module_& parent) {
 
   const FollowParameters defaults;
   py::class_<FollowParameters>(m, "FollowParameters",
-                               "The follow planner's settings (defaults in parameters.hpp). Angles in radians.")
+                               "The follow planner's settings (defaults from the C++ struct). Angles in radians.")
       .def(py::init([](double period, double turn_margin, double threshold, double hysteresis,
                        const std::string& loiter_pattern, double loiter_radius, Circulation loiter_direction,
                        double offset_distance, double offset_angle, const std::string& offset_reference,
                        bool wind_compensation, double update_period) {
              FollowParameters p{period, turn_margin, threshold, hysteresis,
-                                loiter_pattern_from_string(loiter_pattern, "follow.loiter_pattern"), loiter_radius,
+                                from_name<LoiterPattern>(loiter_pattern, "follow.loiter_pattern"), loiter_radius,
                                 loiter_direction, offset_distance, offset_angle,
-                                offset_reference_from_string(offset_reference, "follow.offset_reference"),
+                                from_name<OffsetReference>(offset_reference, "follow.offset_reference"),
                                 wind_compensation, update_period};
              p.validate();
              return p;
@@ -148,7 +124,7 @@ void bind_follow(py::module_& parent) {
       .def_readwrite("hysteresis", &FollowParameters::hysteresis, "full width of the band about the threshold")
       .def_property(
           "loiter_pattern", [](const FollowParameters& p) { return to_string(p.loiter_pattern); },
-          [](FollowParameters& p, const std::string& v) { p.loiter_pattern = loiter_pattern_from_string(v, "follow.loiter_pattern"); },
+          [](FollowParameters& p, const std::string& v) { p.loiter_pattern = from_name<LoiterPattern>(v, "follow.loiter_pattern"); },
           "'circle' or 'rose'")
       .def_readwrite("loiter_radius", &FollowParameters::loiter_radius, "m; 0: the smallest flyable")
       .def_readwrite("loiter_direction", &FollowParameters::loiter_direction, "'ccw' or 'cw'")
@@ -157,7 +133,7 @@ void bind_follow(py::module_& parent) {
       .def_property(
           "offset_reference", [](const FollowParameters& p) { return to_string(p.offset_reference); },
           [](FollowParameters& p, const std::string& v) {
-            p.offset_reference = offset_reference_from_string(v, "follow.offset_reference");
+            p.offset_reference = from_name<OffsetReference>(v, "follow.offset_reference");
           },
           "'north' (theta from east on the map) or 'heading' (theta from the vehicle's heading)")
       .def_readwrite("wind_compensation", &FollowParameters::wind_compensation, "plan in the air mass")
@@ -169,7 +145,7 @@ void bind_follow(py::module_& parent) {
                            "How a follow run is flown: integration ('discrete' | 'continuous'), step dt (s), "
                            "max_time (s, 0: until the track ends).")
       .def(py::init([](const std::string& integration, double dt, double max_time) {
-             FollowFlight f{flight_integration_from_string(integration, "flight.integration"), dt, max_time};
+             FollowFlight f{from_name<FlightIntegration>(integration, "flight.integration"), dt, max_time};
              f.validate();
              return f;
            }),
@@ -207,7 +183,7 @@ void bind_follow(py::module_& parent) {
       .def(
           "sample",
           [](const LoiterShape& s, const InputArray& arcs) {
-            const std::vector<double> a = to_vector(arcs, "arcs");
+            const std::vector<double> a = to_values(arcs, "arcs");
             Points2 p(static_cast<Eigen::Index>(a.size()), 2);
             for (std::size_t i = 0; i < a.size(); ++i) p.row(static_cast<Eigen::Index>(i)) = s.position(a[i]).transpose();
             return p;
@@ -259,8 +235,8 @@ void bind_follow(py::module_& parent) {
            "Desired position relative to the offset point tau s after the tick.")
       .def(
           "next_mode",
-          [](const FollowPlanner& p, const std::string& current, double sigma) {
-            return to_string(p.next_mode(mode_from_string(current), sigma));
+          [](const FollowPlanner& p, FollowMode current, double sigma) {
+            return p.next_mode(current, sigma);
           },
           py::arg("current"), py::arg("speed_ratio"), "The mode after `current` for sigma, with the hysteresis band.")
       .def_property_readonly("loiter_shape", &FollowPlanner::loiter_shape, "The loiter pattern in use.");

@@ -32,12 +32,6 @@ const Vec2& checked_point(const Vec2& point) {
 }
 }  // namespace
 
-Points2 ring_to_array(const Ring& ring) {
-  Points2 points(static_cast<Eigen::Index>(ring.size()), 2);
-  for (std::size_t i = 0; i < ring.size(); ++i) points.row(static_cast<Eigen::Index>(i)) = ring[i].transpose();
-  return points;
-}
-
 void bind_geometry(py::module_& m) {
   py::class_<Polygon>(m, "Polygon", "A simple polygon with optional holes, in metres.")
       .def(py::init([](const Points2& outer, const std::vector<Points2>& holes) {
@@ -48,13 +42,13 @@ void bind_geometry(py::module_& m) {
            }),
            py::arg("outer"), py::arg("holes") = std::vector<Points2>{},
            "outer: (n, 2) array; holes: list of (m, 2) arrays. A closing repeat is dropped.")
-      .def_property_readonly("outer", [](const Polygon& p) { return ring_to_array(p.outer); },
+      .def_property_readonly("outer", [](const Polygon& p) { return to_array(p.outer); },
                              "Outer ring (n, 2), without a closing repeat.")
       .def_property_readonly(
           "holes",
           [](const Polygon& p) {
             std::vector<Points2> holes;
-            for (const Ring& hole : p.holes) holes.push_back(ring_to_array(hole));
+            for (const Ring& hole : p.holes) holes.push_back(to_array(hole));
             return holes;
           },
           "Holes, each (m, 2).")
@@ -65,8 +59,7 @@ void bind_geometry(py::module_& m) {
            [](const Polygon& p, const Vec2& point) { return distance_to_boundary(p, checked_point(point)); },
            py::arg("point"), "Distance from a point to the nearest edge of any ring.")
       .def("__repr__", [](const Polygon& p) {
-        return "Polygon(" + std::to_string(p.outer.size()) + " vertices, " +
-               std::to_string(p.holes.size()) + " holes)";
+        return Repr("Polygon").add("vertices", p.outer.size()).add("holes", p.holes.size()).str();
       });
 
   m.def("wrap_to_pi", &wrap_to_pi, py::arg("angle"), "Angle wrapped to (-pi, pi]; VistrackError when not finite.");

@@ -17,30 +17,12 @@ namespace py = pybind11;
 namespace vistrack::bindings {
 namespace {
 
-using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
-
-std::vector<Vec2> points_from_array(const Array& a, const std::string& field) {
-  if (a.ndim() != 2 || a.shape(1) != 2)
-    throw Error(field + ": expected an array of shape (n, 2) (x, y per row), got ndim = " + std::to_string(a.ndim()) +
-                (a.ndim() >= 2 ? ", shape[1] = " + std::to_string(a.shape(1)) : std::string()));
-  std::vector<Vec2> points;
-  const auto view = a.unchecked<2>();
-  for (py::ssize_t i = 0; i < a.shape(0); ++i) points.emplace_back(view(i, 0), view(i, 1));
-  return points;
-}
-
-Points2 points_to_array(const std::vector<Vec2>& points) {
-  Points2 out(static_cast<Eigen::Index>(points.size()), 2);
-  for (std::size_t i = 0; i < points.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = points[i].transpose();
-  return out;
-}
-
 py::tuple pair(const Vec2& p) { return py::make_tuple(p.x(), p.y()); }
 
-LoiterProblem make_problem(const Array& aois, const Vec2& start, const Vec2& end, double turn_radius, double speed,
+LoiterProblem make_problem(const InputArray& aois, const Vec2& start, const Vec2& end, double turn_radius, double speed,
                            double aoi_radius, int turns) {
   LoiterProblem problem;
-  problem.aois = points_from_array(aois, "aois");
+  problem.aois = to_points(aois, "aois");
   problem.start = start;
   problem.end = end;
   problem.parameters = {turn_radius, speed, aoi_radius, turns};
@@ -54,14 +36,6 @@ LoiterCoverageOptions make_options(double threshold, double dt) {
   options.dt = dt;
   options.validate();
   return options;
-}
-
-py::array_t<double> vector_array(const std::vector<double>& values) {
-  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
-}
-
-py::array_t<int> int_array(const std::vector<int>& values) {
-  return py::array_t<int>(static_cast<py::ssize_t>(values.size()), values.data());
 }
 
 const char* const kProblemArgs =
@@ -80,8 +54,8 @@ void bind_loiter(py::module_& parent) {
   const LoiterParameters defaults;
   const LoiterCamera camera_defaults;
   const LoiterCoverageOptions coverage_defaults;
-  m.attr("METHODS") = py::make_tuple("fly_through", "tlpp", "ldlpp");
-  m.attr("ORDERS") = py::make_tuple("given", "best");
+  m.attr("METHODS") = enum_names<LoiterMethod>();
+  m.attr("ORDERS") = enum_names<LoiterOrder>();
   m.attr("EXACT_ORDER_LIMIT") = kExactOrderLimit;
   m.attr("STANDARD_GRAVITY") = kStandardGravity;
 
@@ -126,21 +100,19 @@ void bind_loiter(py::module_& parent) {
              return py::make_tuple(q.x, q.y, q.psi);
            }, py::arg("s"), "(x, y, psi) after arc length s along the segment.")
       .def("__repr__", [](const LoiterSegment& s) {
-        std::string text = "Segment(" + to_string(s.kind) + ", " + to_string(s.role) + ", length=" +
-                           detail::to_text(s.length);
-        if (s.kind == SegmentKind::Arc)
-          text += ", radius=" + detail::to_text(s.radius) + ", " + to_string(s.direction) +
-                  ", sweep=" + detail::to_text(s.sweep);
-        if (s.aoi >= 0) text += ", aoi=" + std::to_string(s.aoi);
-        return text + ")";
+        Repr text("Segment");
+        text.add("kind", s.kind).add("role", s.role).add("length", s.length);
+        if (s.kind == SegmentKind::Arc) text.add("radius", s.radius).add("direction", s.direction).add("sweep", s.sweep);
+        if (s.aoi >= 0) text.add("aoi", s.aoi);
+        return text.str();
       });
 
   py::class_<LoiterSamples>(m, "Samples", "A plan sampled in time.")
-      .def_property_readonly("t", [](const LoiterSamples& s) { return vector_array(s.t); }, "Times, s.")
+      .def_property_readonly("t", [](const LoiterSamples& s) { return to_numpy(s.t); }, "Times, s.")
       .def_readonly("poses", &LoiterSamples::poses, "(n, 3): x, y, psi (continuous).")
-      .def_property_readonly("turn_rate", [](const LoiterSamples& s) { return vector_array(s.turn_rate); },
+      .def_property_readonly("turn_rate", [](const LoiterSamples& s) { return to_numpy(s.turn_rate); },
                              "Turn rate of the segment each sample lies on, rad/s.")
-      .def_property_readonly("segment", [](const LoiterSamples& s) { return int_array(s.segment); },
+      .def_property_readonly("segment", [](const LoiterSamples& s) { return to_numpy(s.segment); },
                              "Index of that segment.");
 
   py::class_<LoiterPlan>(m, "Plan", "A loiter plan: the path as segments, its length and times.")
@@ -156,15 +128,15 @@ void bind_loiter(py::module_& parent) {
           },
           "Loiter direction of each AOI ('ccw' or 'cw'), indexed like aois.")
       .def_readonly("segments", &LoiterPlan::segments, "The path: list of Segment.")
-      .def_property_readonly("segment_offsets", [](const LoiterPlan& p) { return vector_array(p.segment_offsets); },
+      .def_property_readonly("segment_offsets", [](const LoiterPlan& p) { return to_numpy(p.segment_offsets); },
                              "Arc length at the start of each segment, m.")
       .def_readonly("length", &LoiterPlan::length, "Path length, m.")
       .def_readonly("flight_time", &LoiterPlan::flight_time, "length / speed, s.")
       .def_readonly("loiter_time", &LoiterPlan::loiter_time, "Time on the AOIs' loiter circles, s.")
       .def_readonly("transit_time", &LoiterPlan::transit_time, "Time off them, s (flight_time - loiter_time).")
-      .def_property_readonly("loiter_sweep", [](const LoiterPlan& p) { return vector_array(p.loiter_sweep); },
+      .def_property_readonly("loiter_sweep", [](const LoiterPlan& p) { return to_numpy(p.loiter_sweep); },
                              "Angle flown on each AOI's loiter circle, rad (indexed like aois).")
-      .def_property_readonly("aois", [](const LoiterPlan& p) { return points_to_array(p.problem.aois); },
+      .def_property_readonly("aois", [](const LoiterPlan& p) { return to_array(p.problem.aois); },
                              "(n, 2) AOI centres, m.")
       .def_property_readonly("start", [](const LoiterPlan& p) { return pair(p.problem.start); }, "(x, y), m.")
       .def_property_readonly("end", [](const LoiterPlan& p) { return pair(p.problem.end); }, "(x, y), m.")
@@ -182,9 +154,13 @@ void bind_loiter(py::module_& parent) {
       .def("sample_states", &LoiterPlan::sample_states, py::arg("dt") = 1.0, py::arg("include_end") = true,
            "Samples (t, poses, turn_rate, segment) at t = 0, dt, ...; include_end appends the end point.")
       .def("__repr__", [](const LoiterPlan& p) {
-        return "loiter.Plan(method='" + to_string(p.method) + "', aois=" + std::to_string(p.problem.aois.size()) +
-               ", length=" + detail::to_text(p.length) + ", flight_time=" + detail::to_text(p.flight_time) +
-               ", transit_time=" + detail::to_text(p.transit_time) + ")";
+        return Repr("loiter.Plan")
+            .add("method", p.method)
+            .add("aois", p.problem.aois.size())
+            .add("length", p.length)
+            .add("flight_time", p.flight_time)
+            .add("transit_time", p.transit_time)
+            .str();
       });
 
   py::class_<Footprint>(m, "Footprint", "A camera's ground footprint: an ellipse with axes along and across the heading.")
@@ -223,19 +199,20 @@ void bind_loiter(py::module_& parent) {
            }, py::arg("pose"), py::arg("tilt") = 0.0,
            "Ground footprint (an ellipse) at pose (x, y, psi) with the axis tilted `tilt` rad to the left.")
       .def("__repr__", [](const LoiterCamera& c) {
-        return "loiter.Camera(fov_deg=" + detail::to_text(c.fov_deg) + ", max_gimbal_deg=" +
-               detail::to_text(c.max_gimbal_deg) + ", altitude=" + detail::to_text(c.altitude) +
-               (c.levelled ? ")" : ", levelled=False)");
+        Repr text("loiter.Camera");
+        text.add("fov_deg", c.fov_deg).add("max_gimbal_deg", c.max_gimbal_deg).add("altitude", c.altitude);
+        if (!c.levelled) text.add("levelled", false);
+        return text.str();
       });
 
   py::class_<LoiterCoverage>(m, "Coverage", "Camera coverage of the AOIs along a path (section 4.1).")
       .def_readonly("time", &LoiterCoverage::time, "Covered time summed over the AOIs, s.")
-      .def_property_readonly("time_per_aoi", [](const LoiterCoverage& c) { return vector_array(c.time_per_aoi); },
+      .def_property_readonly("time_per_aoi", [](const LoiterCoverage& c) { return to_numpy(c.time_per_aoi); },
                              "Covered time of each AOI, s.")
       .def_readonly("area", &LoiterCoverage::area,
                     "The paper's 'AOI coverage (m^2)': the area of each covered AOI inside the footprint, summed "
                     "over time steps and AOIs, times dt (m^2 s; m^2 at the paper's 1 s).")
-      .def_property_readonly("area_per_aoi", [](const LoiterCoverage& c) { return vector_array(c.area_per_aoi); },
+      .def_property_readonly("area_per_aoi", [](const LoiterCoverage& c) { return to_numpy(c.area_per_aoi); },
                              "That sum for each AOI.")
       .def_property_readonly(
           "fraction",
@@ -245,66 +222,63 @@ void bind_loiter(py::module_& parent) {
             return out;
           },
           "(steps, AOIs): fraction of each AOI's disk in the footprint at each step.")
-      .def_property_readonly("pointed", [](const LoiterCoverage& c) { return int_array(c.pointed); },
+      .def_property_readonly("pointed", [](const LoiterCoverage& c) { return to_numpy(c.pointed); },
                              "Per step: the AOI the gimbal serves, -1 when none is in reach.")
-      .def_property_readonly("gimbal", [](const LoiterCoverage& c) { return vector_array(c.gimbal); },
+      .def_property_readonly("gimbal", [](const LoiterCoverage& c) { return to_numpy(c.gimbal); },
                              "Per step: gimbal roll, rad, positive to the left.")
-      .def_property_readonly("tilt", [](const LoiterCoverage& c) { return vector_array(c.tilt); },
+      .def_property_readonly("tilt", [](const LoiterCoverage& c) { return to_numpy(c.tilt); },
                              "Per step: the camera axis' tilt to the left of vertical, rad (Camera.tilt of bank and gimbal).")
-      .def_property_readonly("bank", [](const LoiterCoverage& c) { return vector_array(c.bank); },
+      .def_property_readonly("bank", [](const LoiterCoverage& c) { return to_numpy(c.bank); },
                              "Per step: bank angle of the coordinated turn, rad, positive to the left.")
       .def_readonly("steps", &LoiterCoverage::steps, "Number of time steps.");
 
   m.def(
       "plan",
-      [](const Array& aois, const std::string& method, const Vec2& start, const Vec2& end, double turn_radius,
-         double speed, double aoi_radius, int turns, const std::string& order) {
+      [](const InputArray& aois, LoiterMethod method, const Vec2& start, const Vec2& end, double turn_radius,
+         double speed, double aoi_radius, int turns, LoiterOrder order) {
         const LoiterProblem problem = make_problem(aois, start, end, turn_radius, speed, aoi_radius, turns);
-        const LoiterMethod which = loiter_method_from_string(method);
-        const LoiterOrder visiting = loiter_order_from_string(order);
         py::gil_scoped_release release;
-        return plan_loiter(problem, which, visiting);
+        return plan_loiter(problem, method, order);
       },
-      py::arg("aois"), py::arg("method") = "ldlpp", py::arg("start") = Vec2(0.0, 0.0), py::arg("end") = Vec2(0.0, 0.0),
+      py::arg("aois"), py::arg("method") = LoiterMethod::Ldlpp, py::arg("start") = Vec2(0.0, 0.0), py::arg("end") = Vec2(0.0, 0.0),
       py::arg("turn_radius") = defaults.turn_radius, py::arg("speed") = defaults.speed,
-      py::arg("aoi_radius") = defaults.aoi_radius, py::arg("turns") = defaults.turns, py::arg("order") = "given",
+      py::arg("aoi_radius") = defaults.aoi_radius, py::arg("turns") = defaults.turns, py::arg("order") = LoiterOrder::Given,
       (std::string("Plan a loiter mission. ") + kProblemArgs +
        " method: 'fly_through', 'tlpp' or 'ldlpp'; order: 'given' or 'best' (shortest plan: exact up to 9 AOIs, "
        "2-opt/or-opt above).")
           .c_str());
   m.def(
       "plan_in_order",
-      [](const Array& aois, const std::vector<int>& order, const std::string& method, const Vec2& start,
+      [](const InputArray& aois, const std::vector<int>& order, LoiterMethod method, const Vec2& start,
          const Vec2& end, double turn_radius, double speed, double aoi_radius, int turns) {
         const LoiterProblem problem = make_problem(aois, start, end, turn_radius, speed, aoi_radius, turns);
-        return plan_loiter_in_order(problem, loiter_method_from_string(method), order);
+        return plan_loiter_in_order(problem, method, order);
       },
-      py::arg("aois"), py::arg("order"), py::arg("method") = "ldlpp", py::arg("start") = Vec2(0.0, 0.0),
+      py::arg("aois"), py::arg("order"), py::arg("method") = LoiterMethod::Ldlpp, py::arg("start") = Vec2(0.0, 0.0),
       py::arg("end") = Vec2(0.0, 0.0), py::arg("turn_radius") = defaults.turn_radius,
       py::arg("speed") = defaults.speed, py::arg("aoi_radius") = defaults.aoi_radius,
       py::arg("turns") = defaults.turns, "Plan visiting the AOIs in this order (a permutation of 0..n-1).");
   m.def(
       "order_length",
-      [](const Array& aois, const std::vector<int>& order, const std::string& method, const Vec2& start,
+      [](const InputArray& aois, const std::vector<int>& order, LoiterMethod method, const Vec2& start,
          const Vec2& end, double turn_radius, double speed, double aoi_radius, int turns) {
         const LoiterProblem problem = make_problem(aois, start, end, turn_radius, speed, aoi_radius, turns);
-        return loiter_order_length(problem, loiter_method_from_string(method), order);
+        return loiter_order_length(problem, method, order);
       },
-      py::arg("aois"), py::arg("order"), py::arg("method") = "ldlpp", py::arg("start") = Vec2(0.0, 0.0),
+      py::arg("aois"), py::arg("order"), py::arg("method") = LoiterMethod::Ldlpp, py::arg("start") = Vec2(0.0, 0.0),
       py::arg("end") = Vec2(0.0, 0.0), py::arg("turn_radius") = defaults.turn_radius,
       py::arg("speed") = defaults.speed, py::arg("aoi_radius") = defaults.aoi_radius,
       py::arg("turns") = defaults.turns,
       "Path length of a visiting order (no validation of the order's geometry): inf when the method cannot fly it.");
   m.def(
       "best_order",
-      [](const Array& aois, const std::string& method, bool exact, const Vec2& start, const Vec2& end,
+      [](const InputArray& aois, LoiterMethod method, bool exact, const Vec2& start, const Vec2& end,
          double turn_radius, double speed, double aoi_radius, int turns) {
         const LoiterProblem problem = make_problem(aois, start, end, turn_radius, speed, aoi_radius, turns);
-        const LoiterMethod which = loiter_method_from_string(method);
         py::gil_scoped_release release;
-        return best_loiter_order(problem, which, exact);
+        return best_loiter_order(problem, method, exact);
       },
-      py::arg("aois"), py::arg("method") = "ldlpp", py::arg("exact") = true, py::arg("start") = Vec2(0.0, 0.0),
+      py::arg("aois"), py::arg("method") = LoiterMethod::Ldlpp, py::arg("exact") = true, py::arg("start") = Vec2(0.0, 0.0),
       py::arg("end") = Vec2(0.0, 0.0), py::arg("turn_radius") = defaults.turn_radius,
       py::arg("speed") = defaults.speed, py::arg("aoi_radius") = defaults.aoi_radius,
       py::arg("turns") = defaults.turns,
@@ -323,9 +297,9 @@ void bind_loiter(py::module_& parent) {
       "Coverage of a plan sampled every dt (t = 0, dt, ... up to the flight time), exact turn rates.");
   m.def(
       "sample_coverage",
-      [](const Points3& poses, const std::vector<double>& turn_rates, const Array& aois, double aoi_radius,
+      [](const Points3& poses, const std::vector<double>& turn_rates, const InputArray& aois, double aoi_radius,
          double speed, const LoiterCamera& camera, double threshold, double dt) {
-        const std::vector<Vec2> centers = points_from_array(aois, "aois");
+        const std::vector<Vec2> centers = to_points(aois, "aois");
         const LoiterCoverageOptions options = make_options(threshold, dt);
         py::gil_scoped_release release;
         return loiter_coverage(poses, turn_rates, centers, aoi_radius, speed, camera, options);

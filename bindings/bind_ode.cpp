@@ -33,9 +33,11 @@ void bind_ode(py::module_& m) {
       .def_readonly("accepted_steps", &OdeStatistics::accepted_steps, "accepted steps")
       .def_readonly("rejected_steps", &OdeStatistics::rejected_steps, "rejected trial steps")
       .def("__repr__", [](const OdeStatistics& s) {
-        return "OdeStatistics(rhs_evaluations=" + std::to_string(s.rhs_evaluations) +
-               ", accepted_steps=" + std::to_string(s.accepted_steps) +
-               ", rejected_steps=" + std::to_string(s.rejected_steps) + ")";
+        return Repr("OdeStatistics")
+            .add("rhs_evaluations", s.rhs_evaluations)
+            .add("accepted_steps", s.accepted_steps)
+            .add("rejected_steps", s.rejected_steps)
+            .str();
       });
 
   py::class_<PyOdeResult>(m, "OdeResult", "Solution of solve_ode.")

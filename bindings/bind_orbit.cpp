@@ -107,7 +107,7 @@ void bind_orbit(py::module_& m) {
       .def_readonly("bytes_per_volume", &WorkEstimate::bytes_per_volume, "Memory of one VV (bytes).")
       .def_property_readonly("bytes", &WorkEstimate::bytes, "Memory of all of them (bytes).")
       .def("__repr__", [](const WorkEstimate& w) {
-        return "WorkEstimate(volumes=" + detail::to_text(w.volumes) + ", bytes=" + detail::to_text(w.bytes()) + ")";
+        return Repr("WorkEstimate").add("volumes", w.volumes).add("bytes", w.bytes()).str();
       });
   m.def("volume_bytes", &volume_bytes, py::arg("resolution_deg"),
         "Memory of one VV on a grid of resolution_deg degrees (bytes; ~4.7 MB at 1 degree).");
@@ -307,7 +307,7 @@ void bind_orbit(py::module_& m) {
             py::gil_scoped_release release;
             return p.fixed(poi, spacing, resolution_deg, report, max_volumes);
           },
-          py::arg("poi"), py::arg("spacing"), py::arg("resolution_deg") = Planning{}.resolution_deg,
+          py::arg("poi"), py::arg("spacing"), py::arg("resolution_deg") = kDefaultResolutionDeg,
           py::arg("progress") = py::none(), py::arg("max_volumes") = Planning{}.max_volumes,
           "VVs every `spacing` m from each edge start plus every node, and the metric between neighbours; "
           "VistrackError before any work when that is more than max_volumes VVs.")

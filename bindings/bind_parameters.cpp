@@ -2,7 +2,11 @@
 
 #include "bindings.hpp"
 #include "vistrack/error.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/dubins_parameters.hpp"
+#include "vistrack/guidance_parameters.hpp"
+#include "vistrack/orbit_parameters.hpp"
+#include "vistrack/simulate_parameters.hpp"
+#include "vistrack/visibility_parameters.hpp"
 
 namespace py = pybind11;
 
@@ -23,8 +27,7 @@ void bind_parameters(py::module_& m) {
       .def_readwrite("altitude", &Uav::altitude, "h_UAV, m")
       .def("validate", &Uav::validate, "Raise VistrackError naming the first invalid field.")
       .def("__repr__", [](const Uav& u) {
-        return "Uav(speed=" + std::to_string(u.speed) + ", min_turn_radius=" +
-               std::to_string(u.min_turn_radius) + ", altitude=" + std::to_string(u.altitude) + ")";
+        return Repr("Uav").add("speed", u.speed).add("min_turn_radius", u.min_turn_radius).add("altitude", u.altitude).str();
       });
 
   const PoiMotion poi_defaults;
@@ -49,7 +52,7 @@ void bind_parameters(py::module_& m) {
            "d_max (m); altitude_band (h_lo, h_hi) in m or None for no band.")
       .def_readwrite("d_max", &Sensor::d_max, "maximum viewing distance, m")
       .def_readwrite("altitude_band", &Sensor::altitude_band, "(h_lo, h_hi) in m, or None")
-      .def("validate", &Sensor::validate, "Raise VistrackError naming the first invalid field.");
+      .def("validate", [](const Sensor& s) { s.validate(); }, "Raise VistrackError naming the first invalid field.");
 
   const Planning planning_defaults;
   py::class_<Planning>(m, "Planning", "Adaptive placement of visibility volumes (section IV.B).")
@@ -57,7 +60,7 @@ void bind_parameters(py::module_& m) {
                        int max_depth, double rate_margin, const std::string& locus, double tracking_margin,
                        double check_spacing, double check_min_spacing, double turn_share, std::size_t max_volumes) {
              return make_validated(Planning{spacing, cutoff, resolution_deg, min_spacing, max_depth, rate_margin,
-                                            max_volumes, locus_from_string(locus), tracking_margin, check_spacing,
+                                            max_volumes, from_name<Locus>(locus), tracking_margin, check_spacing,
                                             check_min_spacing, turn_share});
            }),
            py::kw_only(), py::arg("spacing") = planning_defaults.spacing,
@@ -88,7 +91,7 @@ void bind_parameters(py::module_& m) {
                      "about path length / min_spacing, ~4.7 MB each at 1 degree)")
       .def_property(
           "locus", [](const Planning& p) { return to_string(p.locus); },
-          [](Planning& p, const std::string& text) { p.locus = locus_from_string(text); },
+          [](Planning& p, const std::string& text) { p.locus = from_name<Locus>(text); },
           "'smooth': R(t) checked against MaxRadius along the whole path, tracking_margin inside it, C1 with "
           "bounded d2R/dt2 (default); 'paper': Algorithm 1's piecewise-linear R(t) through the samples")
       .def_readwrite("tracking_margin", &Planning::tracking_margin,

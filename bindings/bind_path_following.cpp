@@ -4,7 +4,6 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <array>
 #include <vector>
 
 #include "bindings.hpp"
@@ -31,6 +30,13 @@ std::vector<PathPiece> pieces_from_rows(const Rows5& rows) {
 void bind_path_following(py::module_& parent) {
   py::module_ m = parent.attr("flight").cast<py::module_>();
   const PathFollowingGains defaults;
+  py::class_<PathFollower::Tracking>(m, "PathTracking", "Where a state is relative to the path.")
+      .def_readonly("s", &PathFollower::Tracking::s, "progress along the path, m")
+      .def_readonly("piece", &PathFollower::Tracking::piece, "index of the piece")
+      .def_readonly("cross_track", &PathFollower::Tracking::cross_track, "m, positive to the left of the path")
+      .def_readonly("heading_error", &PathFollower::Tracking::heading_error, "psi - psi_path, wrapped, rad")
+      .def_readonly("along", &PathFollower::Tracking::along,
+                    "signed distance ahead of the path point (non-zero only at the ends), m");
   py::class_<PathFollower, FlightGuidance>(
       m, "PathFollower",
       "Follows a path of lines and arcs: cross-track and heading feedback with curvature feed-forward, "
@@ -46,19 +52,8 @@ void bind_path_following(py::module_& parent) {
            "pieces: (n, 5) rows x0, y0, heading, length, curvature (0 lines, +1/radius ccw, -1/radius cw), each "
            "starting where the one before ends; speed v and turn_radius R of the vehicle.")
       .def("track",
-           [](const PathFollower& f, const std::array<double, 3>& state) {
-             const PathFollower::Tracking t = f.track({state[0], state[1], state[2]});
-             py::dict d;
-             d["s"] = t.s;
-             d["piece"] = t.piece;
-             d["cross_track"] = t.cross_track;
-             d["heading_error"] = t.heading_error;
-             d["along"] = t.along;
-             return d;
-           },
-           py::arg("state"),
-           "Projection of (x, y, psi) near the current progress: s, piece, cross_track (left positive), "
-           "heading_error, along (beyond the end).")
+           [](const PathFollower& f, const Pose& state) { return f.track(configuration(state)); },
+           py::arg("state"), "Projection of (x, y, psi) near the current progress (PathTracking).")
       .def_property_readonly("progress", &PathFollower::progress, "Arc length reached, m.")
       .def_property_readonly("length", &PathFollower::length, "Path length, m.");
 }

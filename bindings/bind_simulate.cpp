@@ -15,10 +15,6 @@ namespace vistrack::bindings {
 
 namespace {
 
-py::array_t<double> to_numpy(const std::vector<double>& values) {
-  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
-}
-
 // A Python callable line_of_sight(from (n, 3), to (n, 3)) -> array (n,) of bools (or 0/1), called
 // with the GIL. Anything else (NaN, 0.5, a string) is an Error naming the sample: a cast to bool
 // would count NaN as visible.

@@ -20,13 +20,6 @@ py::array_t<double> per_cell(const VisibilityVolume& vv, const std::vector<doubl
   return out;
 }
 
-py::array_t<bool> to_bool_array(const std::vector<bool>& values) {
-  py::array_t<bool> out(static_cast<py::ssize_t>(values.size()));
-  bool* data = out.mutable_data();
-  for (std::size_t k = 0; k < values.size(); ++k) data[k] = values[k];
-  return out;
-}
-
 // str or os.PathLike (pathlib.Path) to a file name.
 std::string fspath(const py::object& path) { return py::module_::import("os").attr("fspath")(path).cast<std::string>(); }
 
@@ -124,9 +117,7 @@ void bind_visibility(py::module_& m) {
           "The VV stored in a binary VV file (save_binary or the VV cache). VistrackError naming the file when "
           "it is missing, unreadable, truncated, corrupt (checksum) or of another format version.")
       .def("__repr__", [](const VisibilityVolume& vv) {
-        return "VisibilityVolume(poi=(" + std::to_string(vv.poi.x()) + ", " + std::to_string(vv.poi.y()) + ", " +
-               std::to_string(vv.poi.z()) + "), volume=" + std::to_string(vv.volume) + ", faces=" +
-               std::to_string(vv.mesh.faces.rows()) + ")";
+        return Repr("VisibilityVolume").add("poi", vv.poi).add("volume", vv.volume).add("faces", vv.mesh.faces.rows()).str();
       });
 
   py::class_<VisibilityScene>(m, "VisibilityScene",
@@ -158,7 +149,7 @@ void bind_visibility(py::module_& m) {
               py::gil_scoped_release release;
               visible = s.line_of_sight(a, b);
             }
-            return to_bool_array(visible);
+            return to_numpy(visible);
           },
           py::arg("a"), py::arg("b"), "Bool array: segment a[k]-b[k] is unobstructed (occlusion rays).")
       .def("surface_height", &VisibilityScene::surface_height, py::arg("xy"),
@@ -189,7 +180,7 @@ void bind_visibility(py::module_& m) {
               py::gil_scoped_release release;
               visible = line_of_sight(env, a, b);
             }
-            return to_bool_array(visible);
+            return to_numpy(visible);
           },
           py::arg("a"), py::arg("b"),
           "Bool array: segment a[k]-b[k] ((n, 3) each) is unobstructed by obstacles and ground. Builds a "
@@ -203,9 +194,21 @@ void bind_visibility(py::module_& m) {
         return visibility_volume(scene, p, d_max, band, resolution_deg);
       },
       py::arg("scene"), py::arg("g"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
-      py::arg("resolution_deg") = Planning{}.resolution_deg,
+      py::arg("resolution_deg") = kDefaultResolutionDeg,
       "Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when "
       "given, on a grid of about resolution_deg degrees.");
+  py::class_<VolumeCost>(m, "VolumeCost", "Where one VV's time and rays went (for benchmarks).")
+      .def_readonly("bounds_s", &VolumeCost::bounds_s, "s: per-column bounds of the rays that can hit an obstacle")
+      .def_readonly("trace_s", &VolumeCost::trace_s, "s: cell and corner rays")
+      .def_readonly("refine_s", &VolumeCost::refine_s, "s: locating the jumps of r and refining the mesh there")
+      .def_readonly("mesh_s", &VolumeCost::mesh_s, "s: writing the mesh")
+      .def_readonly("volume_s", &VolumeCost::volume_s, "s: summing its volume")
+      .def_readonly("rays_traced", &VolumeCost::rays_traced, "cell and corner rays handed to Embree")
+      .def_readonly("rays_skipped", &VolumeCost::rays_skipped, "cell and corner rays decided by the bounds alone")
+      .def_readonly("refine_rays", &VolumeCost::refine_rays, "rays traced while refining")
+      .def_readonly("embree_s", &VolumeCost::embree_s,
+                    "s in Embree's rtcIntersect1M calls with their ray packing, per thread and summed over "
+                    "threads: within trace_s + refine_s when parallel=False");
   m.def(
       "visibility_volume_cost",
       [](const VisibilityScene& scene, const Eigen::VectorXd& g, double d_max, Band band, double resolution_deg,
@@ -217,24 +220,11 @@ void bind_visibility(py::module_& m) {
           py::gil_scoped_release release;
           vv = visibility_volume_with_cost(scene, p, d_max, band, resolution_deg, cost, parallel);
         }
-        py::dict d;
-        d["bounds_s"] = cost.bounds_s;
-        d["trace_s"] = cost.trace_s;
-        d["refine_s"] = cost.refine_s;
-        d["mesh_s"] = cost.mesh_s;
-        d["volume_s"] = cost.volume_s;
-        d["rays_traced"] = cost.rays_traced;
-        d["rays_skipped"] = cost.rays_skipped;
-        d["refine_rays"] = cost.refine_rays;
-        d["embree_s"] = cost.embree_s;
-        return py::make_tuple(std::move(vv), d);
+        return std::make_pair(std::move(vv), cost);
       },
       py::arg("scene"), py::arg("g"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
-      py::arg("resolution_deg") = Planning{}.resolution_deg, py::arg("parallel") = true,
-      "visibility_volume and where its time and rays went: (vv, {bounds_s, trace_s, refine_s, mesh_s, volume_s "
-      "(seconds), rays_traced, rays_skipped (cell and corner rays traced / decided by the bounds alone), "
-      "refine_rays, embree_s (seconds in Embree's rtcIntersect1M calls with their ray packing, per thread and "
-      "summed over threads: within trace_s + refine_s when parallel=False)}); parallel=False keeps it on the "
+      py::arg("resolution_deg") = kDefaultResolutionDeg, py::arg("parallel") = true,
+      "visibility_volume and where its time and rays went: (vv, VolumeCost); parallel=False keeps it on the "
       "calling thread (as in a batch).");
   m.def(
       "visibility_volumes",
@@ -243,7 +233,7 @@ void bind_visibility(py::module_& m) {
         return visibility_volumes(scene, pois, d_max, band, resolution_deg);
       },
       py::arg("scene"), py::arg("pois"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
-      py::arg("resolution_deg") = Planning{}.resolution_deg, "VVs for every row of pois (n, 3), in parallel over the points.");
+      py::arg("resolution_deg") = kDefaultResolutionDeg, "VVs for every row of pois (n, 3), in parallel over the points.");
   m.def("mesh_volume",
         [](const Points3& v, const Faces& f) {
           validate_triangle_mesh(v, f);

@@ -22,7 +22,7 @@ void bind_volume(py::module_& m) {
       .def_readonly("problem", &MeshCheck::problem, "First failed property, '' when valid.")
       .def_property_readonly("valid", &MeshCheck::valid)
       .def("__repr__", [](const MeshCheck& c) {
-        return c.valid() ? std::string("MeshCheck(valid)") : "MeshCheck(invalid: " + c.problem + ")";
+        return c.valid() ? Repr("MeshCheck").item("valid").str() : Repr("MeshCheck").add("problem", c.problem).str();
       });
 
   m.def(

@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -20,34 +21,16 @@ namespace vistrack::bindings {
 
 namespace {
 
-using Pose = std::tuple<double, double, double>;
 using Weights = std::pair<double, double>;
 
-Configuration configuration(const Pose& q) { return {std::get<0>(q), std::get<1>(q), std::get<2>(q)}; }
 FuelWeights fuel_weights(const Weights& w) { return {w.first, w.second}; }
 
-py::array_t<double> to_numpy(const std::vector<double>& values) {
-  return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
-}
-
-std::vector<Vec2> points(const Points2& array, const std::string& field) {
-  std::vector<Vec2> out;
-  for (Eigen::Index i = 0; i < array.rows(); ++i) {
-    const Vec2 p = array.row(i).transpose();
-    require_finite(p.x(), field + "[" + std::to_string(i) + "].x");
-    require_finite(p.y(), field + "[" + std::to_string(i) + "].y");
-    out.push_back(p);
-  }
-  return out;
-}
-
-NavigationMethod method_from_string(const std::string& text) {
-  if (text == "dwn") return NavigationMethod::Dubins;
-  if (text == "wn") return NavigationMethod::Classical;
-  detail::fail_field("method", text, "must be 'dwn' or 'wn'");
-}
-
-std::string method_name(NavigationMethod m) { return m == NavigationMethod::Dubins ? "dwn" : "wn"; }
+// turning_points' batch result: one entry per horizon.
+struct TurningPointBatch {
+  py::array_t<double> theta, length;
+  py::array_t<std::int32_t> turn_case;
+  Points2 point;
+};
 
 }  // namespace
 
@@ -76,19 +59,17 @@ void bind_waypoint_nav(py::module_& parent) {
       .def_readonly("last_straight", &HorizonPath::last_straight, "straight exit -> W_{n+1}")
       .def_readonly("length", &HorizonPath::length, "weighted length w_a arcs + w_s straights (inf if infeasible)")
       .def("__repr__", [](const HorizonPath& p) {
-        return "HorizonPath(case='" + to_string(p.turn_case) + "', theta=" + detail::to_text(p.theta) +
-               ", point=(" + detail::to_text(p.point.x()) + ", " + detail::to_text(p.point.y()) +
-               "), length=" + detail::to_text(p.length) + ")";
+        return Repr("HorizonPath").add("case", p.turn_case).add("theta", p.theta).add("point", p.point).add("length", p.length).str();
       });
 
   py::class_<TurningPoint, HorizonPath>(m, "TurningPoint", "The optimal horizon path over theta and the four cases.")
       .def_property_readonly(
           "case_lengths",
           [](const TurningPoint& t) {
-            py::dict d;
+            std::map<std::string, double> lengths;
             for (int c = 0; c < kTurnCaseCount; ++c)
-              d[py::str(to_string(static_cast<TurnCase>(c)))] = t.case_lengths[static_cast<std::size_t>(c)];
-            return d;
+              lengths[to_string(static_cast<TurnCase>(c))] = t.case_lengths[static_cast<std::size_t>(c)];
+            return lengths;
           },
           "best length found per case (exact for the winner; the others are refined only where they could win)")
       .def_readonly("evaluations", &TurningPoint::evaluations, "F(h) evaluations spent");
@@ -102,6 +83,11 @@ void bind_waypoint_nav(py::module_& parent) {
       py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
       "Turning point T_n over the horizon (pose C, W_n, W_{n+1}): minimises F = w_a L_a + w_s L_s over theta for "
       "the four cases; theta to 1e-12 rad.");
+  py::class_<TurningPointBatch>(m, "TurningPoints", "Turning points of many horizons, one row each.")
+      .def_readonly("theta", &TurningPointBatch::theta, "(n,) theta of each optimum, rad")
+      .def_readonly("length", &TurningPointBatch::length, "(n,) its weighted length")
+      .def_readonly("case", &TurningPointBatch::turn_case, "(n,) its turn case, indexing CASES")
+      .def_readonly("point", &TurningPointBatch::point, "(n, 2) the turning points T_n");
   m.def(
       "turning_points",
       [](const Points3& poses, const Points2& w_next, const Points2& w_after, double turn_radius,
@@ -124,25 +110,18 @@ void bind_waypoint_nav(py::module_& parent) {
             point.row(i) = tp.point.transpose();
           }
         }
-        py::dict out;
-        out["theta"] = to_numpy(theta);
-        out["length"] = to_numpy(length);
-        out["case"] = py::array_t<std::int32_t>(static_cast<py::ssize_t>(n), cases.data());
-        out["point"] = point;
-        return out;
+        return TurningPointBatch{to_numpy(theta), to_numpy(length), to_numpy(cases), std::move(point)};
       },
       py::arg("poses"), py::arg("w_next"), py::arg("w_after"), py::arg("turn_radius"),
       py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
-      "Batch of turning points, one thread, GIL released: poses (n, 3), w_next and w_after (n, 2) -> dict of "
-      "theta (n,), length (n,), case (n,) indexing CASES, point (n, 2).");
-  py::list case_names;
-  for (int c = 0; c < kTurnCaseCount; ++c) case_names.append(to_string(static_cast<TurnCase>(c)));
-  m.attr("CASES") = py::tuple(case_names);
+      "Batch of turning points, one thread, GIL released: poses (n, 3), w_next and w_after (n, 2) -> "
+      "TurningPoints.");
+  m.attr("CASES") = enum_names<TurnCase>();
   m.def(
       "horizon_path",
-      [](const Pose& pose, const Vec2& w_next, const Vec2& w_after, double turn_radius, const std::string& c,
+      [](const Pose& pose, const Vec2& w_next, const Vec2& w_after, double turn_radius, TurnCase c,
          double theta, const Weights& weights) {
-        return horizon_path(configuration(pose), w_next, w_after, turn_radius, turn_case_from_string(c), theta,
+        return horizon_path(configuration(pose), w_next, w_after, turn_radius, c, theta,
                             fuel_weights(weights));
       },
       py::arg("pose"), py::arg("w_next"), py::arg("w_after"), py::arg("turn_radius"), py::arg("case"),
@@ -150,9 +129,8 @@ void bind_waypoint_nav(py::module_& parent) {
       "The horizon path of one case at one theta.");
   m.def(
       "horizon_lengths",
-      [](const Pose& pose, const Vec2& w_next, const Vec2& w_after, double turn_radius, const std::string& c,
+      [](const Pose& pose, const Vec2& w_next, const Vec2& w_after, double turn_radius, TurnCase tc,
          const std::vector<double>& thetas, const Weights& weights) {
-        const TurnCase tc = turn_case_from_string(c);
         std::vector<double> out(thetas.size());
         for (std::size_t i = 0; i < thetas.size(); ++i)
           out[i] = horizon_path(configuration(pose), w_next, w_after, turn_radius, tc, thetas[i], fuel_weights(weights))
@@ -184,8 +162,8 @@ void bind_waypoint_nav(py::module_& parent) {
       m, "DubinsWaypointGuidance",
       "DWN as a flight guidance for vistrack.flight.fly: the law (5) to each turning point, the next one when it "
       "becomes unreachable; the last waypoint flown to directly.")
-      .def(py::init([](const LineFeedback& law, const Points2& waypoints, double turn_radius, const Weights& w) {
-             return DubinsWaypointGuidance(law, points(waypoints, "waypoints"), turn_radius, fuel_weights(w));
+      .def(py::init([](const LineFeedback& law, const InputArray& waypoints, double turn_radius, const Weights& w) {
+             return DubinsWaypointGuidance(law, to_points(waypoints, "waypoints"), turn_radius, fuel_weights(w));
            }),
            py::arg("law"), py::arg("waypoints"), py::arg("turn_radius"),
            py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight})
@@ -193,10 +171,9 @@ void bind_waypoint_nav(py::module_& parent) {
       .def_property_readonly(
           "turning_points",
           [](const DubinsWaypointGuidance& g) {
-            Points2 out(static_cast<Eigen::Index>(g.turning_points().size()), 2);
-            for (std::size_t i = 0; i < g.turning_points().size(); ++i)
-              out.row(static_cast<Eigen::Index>(i)) = g.turning_points()[i].path.point.transpose();
-            return out;
+            std::vector<Vec2> points;
+            for (const TurningPointRecord& record : g.turning_points()) points.push_back(record.path.point);
+            return to_array(points);
           },
           "(k, 2) every turning point planned so far");
 
@@ -211,7 +188,7 @@ void bind_waypoint_nav(py::module_& parent) {
   py::class_<NavigationResult>(m, "NavigationResult", "One WN or DWN flight and its metrics.")
       .def_readonly("trajectory", &NavigationResult::trajectory, "vistrack.flight.FlightTrajectory")
       .def_readonly("turning_points", &NavigationResult::turning_points, "TurningPointRecord list (DWN)")
-      .def_property_readonly("method", [](const NavigationResult& r) { return method_name(r.method); }, "'dwn' or 'wn'")
+      .def_readonly("method", &NavigationResult::method, "'dwn' or 'wn'")
       .def_readonly("waypoint_radius", &NavigationResult::waypoint_radius, "R_WP (WN)")
       .def_readonly("max_time", &NavigationResult::max_time, "time limit used, s")
       .def_property_readonly("miss_distances", [](const NavigationResult& r) { return to_numpy(r.metrics.miss_distances); },
@@ -244,34 +221,34 @@ void bind_waypoint_nav(py::module_& parent) {
   d["gains"] = py::make_tuple(defaults.gains.g, defaults.gains.h);
   d["weights"] = py::make_tuple(defaults.weights.arc, defaults.weights.straight);
   d["integration"] = to_string(defaults.integration);
-  d["method"] = method_name(defaults.method);
+  d["method"] = to_string(defaults.method);
   m.attr("DEFAULTS") = d;
 
   m.def(
       "navigate",
-      [](const Points2& waypoints, const Pose& start, const std::string& method, double turn_radius, double speed,
+      [](const InputArray& waypoints, const Pose& start, NavigationMethod method, double turn_radius, double speed,
          double dt, std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
-         std::optional<Wind> wind, const std::string& integration, std::optional<double> max_time) {
+         std::optional<Wind> wind, FlightIntegration integration, std::optional<double> max_time) {
         WaypointNavOptions o;
-        o.method = method_from_string(method);
+        o.method = method;
         o.turn_radius = turn_radius;
         o.speed = speed;
         o.dt = dt;
         o.gains = {gains.first, gains.second};
         o.waypoint_radius = waypoint_radius;
         o.weights = fuel_weights(weights);
-        o.integration = flight_integration_from_string(integration);
+        o.integration = integration;
         o.max_time = max_time;
-        const std::vector<Vec2> route = points(waypoints, "waypoints");
+        const std::vector<Vec2> route = to_points(waypoints, "waypoints");
         const Wind w = wind.value_or(Wind{});
         py::gil_scoped_release release;
         return navigate(route, configuration(start), o, w);
       },
-      py::arg("waypoints"), py::arg("start"), py::kw_only(), py::arg("method") = method_name(defaults.method),
+      py::arg("waypoints"), py::arg("start"), py::kw_only(), py::arg("method") = defaults.method,
       py::arg("turn_radius") = defaults.turn_radius, py::arg("speed") = defaults.speed, py::arg("dt") = defaults.dt,
       py::arg("gains") = std::make_pair(defaults.gains.g, defaults.gains.h), py::arg("waypoint_radius") = py::none(),
       py::arg("weights") = Weights{defaults.weights.arc, defaults.weights.straight}, py::arg("wind") = py::none(),
-      py::arg("integration") = to_string(defaults.integration), py::arg("max_time") = py::none(),
+      py::arg("integration") = defaults.integration, py::arg("max_time") = py::none(),
       "Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn'; returns NavigationResult. "
       "Releases the GIL.");
 }

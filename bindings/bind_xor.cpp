@@ -16,8 +16,8 @@ void bind_xor(py::module_& m) {
       "xor_volume",
       [](const VisibilityVolume& a, const VisibilityVolume& b, const std::string& frame, const std::string& method,
          double time_limit, std::optional<double> perturbation) {
-        const XorFrame f = parse_xor_frame(frame);
-        const XorMethod how = parse_xor_method(method);
+        const XorFrame f = from_name<XorFrame>(frame);
+        const XorMethod how = from_name<XorMethod>(method);
         MeshXorOptions options;
         options.time_limit = time_limit;
         options.perturbation = perturbation;

@@ -1,6 +1,6 @@
 // One bind_<area> function per area, each in bindings/bind_<area>.cpp, and the helpers they
-// share (bindings/helpers.cpp): the Circulation <-> "ccw"/"cw" conversion, progress callbacks,
-// file paths, validated keyword construction.
+// share (bindings/helpers.cpp): progress callbacks, file paths, validated keyword construction;
+// conversions of values (enums, arrays, points, reprs) are in convert.hpp.
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -9,29 +9,13 @@
 #include <functional>
 #include <string>
 
+#include "convert.hpp"
 #include "vistrack/geometry.hpp"
-
-// Circulation crosses the boundary as the strings "ccw" and "cw" (DESIGN.md, Conventions).
-namespace pybind11::detail {
-template <>
-struct type_caster<vistrack::Circulation> {
-  PYBIND11_TYPE_CASTER(vistrack::Circulation, const_name("str"));
-  bool load(handle source, bool) {
-    if (!isinstance<str>(source)) return false;
-    value = vistrack::circulation_from_string(source.cast<std::string>());  // Error names "direction"
-    return true;
-  }
-  static handle cast(vistrack::Circulation circulation, return_value_policy, handle) {
-    return str(vistrack::to_string(circulation)).release();
-  }
-};
-}  // namespace pybind11::detail
 
 namespace vistrack::bindings {
 
-// Rings cross the boundary as (n, 2) numpy arrays.
+// Rings cross the boundary as (n, 2) numpy arrays (to_array for the way back).
 Ring ring_from_array(const Points2& points, const std::string& field);
-Points2 ring_to_array(const Ring& ring);
 
 // A Python progress(done, total) callable, or None, as a C++ callback that takes the GIL to call
 // it (long calls run with the GIL released and report from their own thread).
@@ -61,6 +45,6 @@ void bind_flight(pybind11::module_& m);  // vistrack._core.flight, bindings/bind
 void bind_waypoint_nav(pybind11::module_& m);  // vistrack._core.waypoint_nav
 void bind_path_following(pybind11::module_& m);  // flight.PathFollower, bindings/bind_path_following.cpp
 void bind_loiter(pybind11::module_& m);  // loiter planners and coverage, bindings/bind_loiter.cpp
-void bind_follow(pybind11::module_& m);  // vistrack._core.follow (issue 15)
+void bind_follow(pybind11::module_& m);  // vistrack._core.follow
 
 }  // namespace vistrack::bindings

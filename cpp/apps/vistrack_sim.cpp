@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
     set("--max-step", options.max_step);
     set("--output-step", options.output_step);
     set("--fixed-step", fixed_step);
-    if (flags.count("--direction")) control.direction = vistrack::circulation_from_string(flags["--direction"], "--direction");
+    if (flags.count("--direction")) control.direction = vistrack::from_name<vistrack::Circulation>(flags["--direction"], "--direction");
 
     vistrack::Vec3 x0;
     if (flags.count("--x0")) {

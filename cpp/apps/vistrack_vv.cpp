@@ -21,7 +21,6 @@
 #include "vistrack/environment.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/orbit.hpp"
-#include "vistrack/parameters.hpp"
 #include "vistrack/visibility.hpp"
 #include "vistrack/volume.hpp"
 

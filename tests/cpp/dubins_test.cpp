@@ -362,8 +362,8 @@ TEST(DubinsErrors, NamesTheField) {
   EXPECT_NE(error_message([&] { dubins_shortest_path({0, 0, 0}, {1, 1, 0}, -1.0); }).find("rho = -1"), std::string::npos);
   EXPECT_NE(error_message([&] { dubins_shortest_path({0, nan, 0}, {1, 1, 0}, 1.0); }).find("q0.y"), std::string::npos);
   EXPECT_NE(error_message([&] { dubins_shortest_path({0, 0, 0}, {1, 1, nan}, 1.0); }).find("q1.psi"), std::string::npos);
-  EXPECT_NE(error_message([&] { dubins_word_from_string("LLL"); }).find("word"), std::string::npos);
-  EXPECT_NE(error_message([&] { circulation_from_string("up"); }).find("direction"), std::string::npos);
+  EXPECT_NE(error_message([&] { from_name<DubinsWord>("LLL"); }).find("word"), std::string::npos);
+  EXPECT_NE(error_message([&] { from_name<Circulation>("up"); }).find("direction"), std::string::npos);
   EXPECT_NE(error_message([&] { dubins_path({0, 0, 0}, {100, 0, 0}, 1.0, DubinsWord::LRL); }).find("word"),
             std::string::npos);
   const DubinsPath p = dubins_shortest_path({0, 0, 0}, {3, 0, 0}, 1.0);

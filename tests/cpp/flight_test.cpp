@@ -406,5 +406,5 @@ TEST(FlightWaypointFollower, BadInput) {
   expect_error_names([&] { fly(vehicle(1, 1), Wind{}, g, {0, 0, 0}, options(FlightIntegration::Discrete, 2.0, 10)); },
                      "dt");
   expect_error_names([&] { fly(vehicle(1, 1), Wind{}, g, {0, std::nan(""), 0}); }, "start.y");
-  expect_error_names([] { flight_integration_from_string("rk4"); }, "integration");
+  expect_error_names([] { from_name<FlightIntegration>("rk4"); }, "integration");
 }

@@ -252,8 +252,8 @@ TEST(FollowPlannerTest, ParametersNameTheField) {
   p = FollowParameters{};
   p.period = -1.0;
   EXPECT_NE(error_message([&] { p.validate(); }).find("follow.period = -1"), std::string::npos);
-  EXPECT_NE(error_message([&] { loiter_pattern_from_string("square", "follow.loiter_pattern"); })
-                .find("follow.loiter_pattern = square"), std::string::npos);
+  EXPECT_NE(error_message([&] { from_name<LoiterPattern>("square", "follow.loiter_pattern"); })
+                .find("follow.loiter_pattern = 'square'"), std::string::npos);
   const Uav bad{0.0, 50.0, 100.0};
   EXPECT_NE(error_message([&] { FollowPlanner(FollowParameters{}, bad); }).find("uav.speed = 0"), std::string::npos);
   const Uav uav{20.0, 50.0, 100.0};

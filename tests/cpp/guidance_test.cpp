@@ -356,16 +356,16 @@ TEST(Guidance, InvalidInputsNameTheField) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("gains.beta"), std::string::npos);
   }
-  EXPECT_THROW(circulation_from_string("up"), Error);
-  EXPECT_EQ(circulation_from_string("cw"), Circulation::Clockwise);
-  EXPECT_EQ(to_string(circulation_from_string("CCW")), "ccw");
+  EXPECT_THROW(from_name<Circulation>("up"), Error);
+  EXPECT_EQ(from_name<Circulation>("cw"), Circulation::Clockwise);
+  EXPECT_EQ(to_string(from_name<Circulation>("CCW")), "ccw");
   Uav uav;
   uav.min_turn_radius = 5.0;
   Control control;
   control.direction = Circulation::Clockwise;
   const GuidanceGains from = GuidanceGains::from(uav, control);
   EXPECT_EQ(from.direction, Circulation::Clockwise);
-  // The gains' defaults are the Uav's and the Control's (parameters.hpp holds each once).
+  // The gains' defaults are the Uav's and the Control's (each default lives once, in its struct).
   const GuidanceGains defaults;
   const GuidanceGains derived = GuidanceGains::from(Uav{}, Control{});
   EXPECT_EQ(defaults.speed, derived.speed);

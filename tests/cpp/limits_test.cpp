@@ -1,5 +1,5 @@
 // The valid ranges of vistrack/limits.hpp, checked where input enters each area, and the C++ side
-// of issue 18's reproducers: no input crashes, none comes back as NaN or inf, every refusal is a
+// of the hardening reproducers: no input crashes, none comes back as NaN or inf, every refusal is a
 // vistrack::Error naming the field, the value and the range. Then 10^6 random Dubins and
 // path-to-circle problems and 2 10^5 intercepts over the whole documented range: no NaN, every
 // endpoint reached.
@@ -24,7 +24,6 @@
 #include "vistrack/dubins.hpp"
 #include "vistrack/environment.hpp"
 #include "vistrack/flight.hpp"
-#include "vistrack/parameters.hpp"
 #include "vistrack/ode.hpp"
 #include "vistrack/orbit.hpp"
 #include "vistrack/simulate.hpp"

@@ -423,7 +423,7 @@ TEST(LoiterValidation, ErrorsNameTheField) {
   EXPECT_NE(with([](LoiterProblem& p) { p.parameters.turn_radius = -1.0; }).find("turn_radius"), std::string::npos);
   EXPECT_NE(with([](LoiterProblem& p) { p.aois[0].y() = std::nan(""); }).find("aois[0][1]"), std::string::npos);
   EXPECT_NE(with([](LoiterProblem& p) { p.start = Vec2(310.0, 300.0); }).find("start"), std::string::npos);
-  EXPECT_NE(error_message([] { loiter_method_from_string("spiral"); }).find("method"), std::string::npos);
+  EXPECT_NE(error_message([] { from_name<LoiterMethod>("spiral"); }).find("method"), std::string::npos);
   EXPECT_NE(error_message([&] { plan_loiter_in_order(good, LoiterMethod::Tlpp, {0, 0}); }).find("order[1]"),
             std::string::npos);
   LoiterProblem close_start = good;

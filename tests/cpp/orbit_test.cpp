@@ -642,5 +642,5 @@ TEST(LocusCheck, OldPlanFilesReadAsThePapersLocus) {
   EXPECT_DOUBLE_EQ(plan.radius_acceleration(12.0), 0.0);
   EXPECT_EQ(plan.knot_times(), plan.times);
   EXPECT_EQ(plan.orbits.radius_rates, (std::vector<double>{2.0, -1.0}));
-  EXPECT_THROW(vt::locus_from_string("smoothest"), vt::Error);
+  EXPECT_THROW(vt::from_name<vt::Locus>("smoothest"), vt::Error);
 }

@@ -35,9 +35,15 @@ OrbitPlan morphing_plan(const PoiPath& poi, const Uav& uav) {
   return plan;
 }
 
-TEST(Simulate, SegmentBoundariesAreThePlanSamplesAndPathNodes) {
+// The paper's first example: the default vehicle and control around a POI on a two-leg path at 5 m/s.
+class TwoLegPath : public ::testing::Test {
+ protected:
   const Uav uav;
+  const Control control;
   const PoiPath poi = two_leg_path(5.0);
+};
+
+TEST_F(TwoLegPath, SegmentBoundariesAreThePlanSamplesAndPathNodes) {
   const OrbitPlan plan = morphing_plan(poi, uav);
   const std::vector<double> b = segment_boundaries(plan);
   EXPECT_EQ(b.front(), 0.0);
@@ -47,11 +53,8 @@ TEST(Simulate, SegmentBoundariesAreThePlanSamplesAndPathNodes) {
   EXPECT_TRUE(std::is_sorted(b.begin(), b.end()));
 }
 
-TEST(Simulate, StartingOnTheOrbitStaysOnIt) {
+TEST_F(TwoLegPath, StartingOnTheOrbitStaysOnIt) {
   // On the orbit with psi = psi_d, the field's flow keeps r = R (r_dot - R_dot = -Phi' = 0).
-  const Uav uav;
-  const Control control;
-  const PoiPath poi = two_leg_path(5.0);
   const OrbitPlan plan = constant_radius_plan(poi, 150.0, uav);
   OrbitState orbit = orbit_state(plan, 0.0, 0.0);
   const Vec3 x0 = orbit_configuration(1.0, orbit, uav.speed, Circulation::CounterClockwise);
@@ -84,12 +87,9 @@ OrbitPlan smooth_plan(const PoiPath& poi, const Uav& uav) {
   return plan;
 }
 
-TEST(Simulate, SmoothReferenceRestartsAtItsKnotsAndIsFollowed) {
+TEST_F(TwoLegPath, SmoothReferenceRestartsAtItsKnotsAndIsFollowed) {
   // Started on the smooth orbit with psi = psi_d, the field's flow keeps r = R: the R_ddot
   // feed-forward of (85) is exact.
-  const Uav uav;
-  const Control control;
-  const PoiPath poi = two_leg_path(5.0);
   const OrbitPlan plan = smooth_plan(poi, uav);
   const std::vector<double> b = segment_boundaries(plan);
   for (double t : plan.reference.times)
@@ -145,10 +145,7 @@ TEST(Simulate, Lemma7ConvergenceFromOutsideTheOrbit) {
   }
 }
 
-TEST(Simulate, AdaptiveAgreesWithFineFixedSteps) {
-  const Uav uav;
-  const Control control;
-  const PoiPath poi = two_leg_path(5.0);
+TEST_F(TwoLegPath, AdaptiveAgreesWithFineFixedSteps) {
   const OrbitPlan plan = morphing_plan(poi, uav);
   SimulationOptions options;
   options.rtol = 1e-10;
@@ -233,9 +230,7 @@ TEST(Simulate, InvariantUnderRotationTranslationAndMirror) {
   }
 }
 
-TEST(Simulate, LineOfSightAtEverySample) {
-  const Uav uav;
-  const PoiPath poi = two_leg_path(5.0);
+TEST_F(TwoLegPath, LineOfSightAtEverySample) {
   const OrbitPlan plan = constant_radius_plan(poi, 150.0, uav);
   // An analytic occluder: visible only when the UAV is east of the POI.
   LineOfSight east = [](const Points3& from, const Points3& to) {
@@ -312,14 +307,12 @@ TEST(Simulate, VisibilityOnCharlotteMatchesBruteForce) {
   EXPECT_GT(*r.visibility_fraction, 0.0);
 }
 
-TEST(Simulate, BadInputNamesTheField) {
-  const Uav uav;
-  const PoiPath poi = two_leg_path(5.0);
+TEST_F(TwoLegPath, BadInputNamesTheField) {
   OrbitPlan plan = constant_radius_plan(poi, 150.0, uav);
   EXPECT_NE(error_message([&] { simulate(plan, uav, Vec3(std::nan(""), 0.0, 0.0), Control{}); }).find("x0[0]"),
             std::string::npos);
   // A direction is a Circulation: a bad one can only come from text, which names its field.
-  EXPECT_NE(error_message([&] { circulation_from_string("sideways", "control.direction"); }).find("control.direction"),
+  EXPECT_NE(error_message([&] { from_name<Circulation>("sideways", "control.direction"); }).find("control.direction"),
             std::string::npos);
   Uav slow = uav;
   slow.speed = 4.0;

@@ -255,7 +255,7 @@ TEST(WaypointNavTurningPoint, BadInput) {
   expect_error_names([] { turning_point({0, std::nan(""), 0}, {4, 0}, {8, 0}, 1.0); }, "pose.y");
   expect_error_names([] { turning_point({0, 0, 0}, {4, 0}, {4, 1e-12}, 1.0); }, "w_after");
   expect_error_names([] { turning_point({0, 0, 0}, {4, 0}, {8, 0}, 1.0, {0.0, 1.0}); }, "weights.arc");
-  expect_error_names([] { turn_case_from_string("left"); }, "case");
+  expect_error_names([] { from_name<TurnCase>("left"); }, "case");
 }
 
 // ---- reachability zone --------------------------------------------------------------------------

@@ -241,9 +241,9 @@ TEST(GridXor, RejectsDifferentGridsAndBadNames) {
   auto nan = uniform_vv(9, 18, 0, 1);
   nan.far[5] = std::nan("");
   EXPECT_THROW(vt::grid_xor_volume(nan, uniform_vv(9, 18, 0, 1)), vt::Error);
-  EXPECT_THROW(vt::parse_xor_frame("body"), vt::Error);
-  EXPECT_THROW(vt::parse_xor_method("fast"), vt::Error);
-  EXPECT_EQ(vt::parse_xor_frame("world"), vt::XorFrame::world);
+  EXPECT_THROW(vt::from_name<vt::XorFrame>("body"), vt::Error);
+  EXPECT_THROW(vt::from_name<vt::XorMethod>("fast"), vt::Error);
+  EXPECT_EQ(vt::from_name<vt::XorFrame>("world"), vt::XorFrame::world);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -361,5 +361,5 @@ TEST(RadialXor, FallsBackWhenTheMeshesDoNotShareASphere) {
   const vt::VisibilityVolume moved = vt::visibility_volume(scene, {5, 0, 0.5}, 150.0, std::nullopt, 3.0);
   ASSERT_TRUE(vt::shares_radial_mesh(low, moved));
   EXPECT_THROW(vt::xor_volume(low, moved, vt::XorFrame::world, vt::XorMethod::radial), vt::Error);
-  EXPECT_EQ(vt::parse_xor_method("radial"), vt::XorMethod::radial);
+  EXPECT_EQ(vt::from_name<vt::XorMethod>("radial"), vt::XorMethod::radial);
 }

@@ -54,11 +54,11 @@ def test_gust_series_is_seeded_and_has_the_intensity() -> None:
 
 def test_mil_f_8785c_gusts_in_flight_units() -> None:
     model = flight.dryden_low_altitude(50.0, 7.7)
-    assert model["sigma_w"] == pytest.approx(0.77)
-    assert model["length_u"] == pytest.approx(202.29, abs=0.01)
+    assert model.sigma_w == pytest.approx(0.77)
+    assert model.length_u == pytest.approx(202.29, abs=0.01)
     g = flight.Gusts.mil_f_8785c(50.0, 7.7, seed=5, length_unit=20.0, speed_unit=20.0)
-    assert g.intensity == pytest.approx(model["sigma_u"] / 20.0)
-    assert g.length_scale == pytest.approx(model["length_u"] / 20.0)
+    assert g.intensity == pytest.approx(model.sigma_u / 20.0)
+    assert g.length_scale == pytest.approx(model.length_u / 20.0)
     assert g.seed == 5
 
 
@@ -66,7 +66,7 @@ def test_line_feedback_terms() -> None:
     law = flight.LineFeedback(0.8, 0.7, 0.02, gains=(0.1, 5.25))
     assert law.max_turn == pytest.approx(0.8 * 0.02 / 0.7)
     t = law.terms((0.0, 0.0, 0.0), (0.0, -5.0), (0.0, 5.0))
-    assert t["saturated"] and t["turn"] == pytest.approx(law.max_turn)
+    assert t.saturated and t.turn == pytest.approx(law.max_turn)
     assert law.turn_rate((1.0, 0.0, 0.0), (0.0, 0.0), (5.0, 0.0)) == 0.0
 
 

@@ -15,10 +15,10 @@ from pathlib import Path
 
 from support.paths import REPO
 
-# Bottom to top. error/limits (the input ranges)/geometry/parameters are the base every area may
-# use; planners are peers of one another and may not include each other.
+# Bottom to top. error/limits (the input ranges)/geometry are the base every area may use;
+# planners are peers of one another and may not include each other.
 LEVELS = {
-    "error": 0, "limits": 0.5, "geometry": 1, "parameters": 2, "environment": 3, "dubins": 4, "visibility": 5,
+    "error": 0, "limits": 0.5, "geometry": 1, "environment": 3, "dubins": 4, "visibility": 5,
     "volume": 6,
     "orbit": 7, "guidance": 8, "ode": 9, "simulate": 10, "flight": 11,
     "waypoint_nav": 12, "loiter": 12, "follow": 12,
@@ -26,15 +26,21 @@ LEVELS = {
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.MULTILINE)
 
 
+def _area_of_header(stem: str) -> str:
+    """An area's parameter structs have their own header: orbit_parameters -> orbit."""
+    return stem.removesuffix("_parameters")
+
+
 def _area_of_include(name: str) -> str:
-    """"vistrack/orbit.hpp" -> orbit; "dubins/kernel.hpp" (a private header) -> dubins."""
+    """"vistrack/orbit.hpp" -> orbit; "vistrack/orbit_parameters.hpp" -> orbit; "dubins/kernel.hpp" (a private
+    header) -> dubins."""
     folder, _, file = name.partition("/")
-    return Path(file).stem if folder == "vistrack" else folder
+    return _area_of_header(Path(file).stem) if folder == "vistrack" else folder
 
 
 def _sources() -> list[tuple[Path, str]]:
     """(file, its area) for every public header and every source under cpp/src/<area>/."""
-    files = [(p, p.stem) for p in sorted((REPO / "cpp" / "include" / "vistrack").glob("*.hpp"))]
+    files = [(p, _area_of_header(p.stem)) for p in sorted((REPO / "cpp" / "include" / "vistrack").glob("*.hpp"))]
     for folder in sorted(p for p in (REPO / "cpp" / "src").iterdir() if p.is_dir()):
         files += [(p, folder.name) for p in sorted(folder.rglob("*")) if p.suffix in (".hpp", ".cpp")]
     return files

@@ -312,11 +312,11 @@ def test_volume_cost_accounts_for_every_ray_and_returns_the_same_vv(charlotte, c
         plain = vt.visibility_volume(charlotte_scene, g, 400.0, None, 1.0)
         assert vv.volume == plain.volume and np.array_equal(vv.faces, plain.faces) and np.array_equal(vv.far, plain.far)
         corners = 2 + (len(vv.mesh_row_sines) - 2) * vv.grid.num_azimuth
-        assert cost["rays_traced"] + cost["rays_skipped"] == vv.grid.size + corners
-        assert 0 < cost["rays_traced"] < vv.grid.size + corners and cost["refine_rays"] > 0
-        phases = [cost[k] for k in ("bounds_s", "trace_s", "refine_s", "mesh_s", "volume_s")]
+        assert cost.rays_traced + cost.rays_skipped == vv.grid.size + corners
+        assert 0 < cost.rays_traced < vv.grid.size + corners and cost.refine_rays > 0
+        phases = [cost.bounds_s, cost.trace_s, cost.refine_s, cost.mesh_s, cost.volume_s]
         assert all(p >= 0.0 for p in phases) and sum(phases) > 0.0
-        assert 0.0 < cost["embree_s"] <= cost["trace_s"] + cost["refine_s"]
+        assert 0.0 < cost.embree_s <= cost.trace_s + cost.refine_s
 
 
 _RETAINED = """

@@ -53,9 +53,12 @@ enum class DubinsSegment : std::uint8_t { Left = 0, Straight = 1, Right = 2 };
 // Travel direction on a circle (the one Circulation of geometry.hpp).
 using CircleDirection = Circulation;
 
-std::string to_string(DubinsWord word);
-// "LSL", ... (case-insensitive); vistrack::Error naming `field` otherwise.
-DubinsWord dubins_word_from_string(const std::string& text, const std::string& field = "word");
+template <>
+struct EnumNames<DubinsWord> {
+  static constexpr const char* field = "word";
+  static constexpr EnumName<DubinsWord> names[] = {{"LSL", DubinsWord::LSL}, {"LSR", DubinsWord::LSR},
+      {"RSL", DubinsWord::RSL}, {"RSR", DubinsWord::RSR}, {"RLR", DubinsWord::RLR}, {"LRL", DubinsWord::LRL}};
+};
 std::array<DubinsSegment, 3> segment_types(DubinsWord word);
 
 // One Dubins path: start, goal, turn radius, word and the three segment lengths (m).

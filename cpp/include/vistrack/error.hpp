@@ -1,11 +1,13 @@
 // The single error type of vistrack, and the checks that build its messages.
 #pragma once
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace vistrack {
 
@@ -44,6 +46,46 @@ template <class T>
 }
 
 }  // namespace detail
+
+// ---- Enum values by name -------------------------------------------------------------------
+// An enum that crosses the API by name (YAML, CLI, Python) specialises EnumNames beside its
+// declaration: `field`, how messages name the input by default, and `names`, its {name, value}
+// table. A value's first entry is its name; later entries for it are accepted spellings.
+template <class E>
+struct EnumName {
+  const char* name;
+  E value;
+};
+template <class E>
+struct EnumNames;
+
+template <class E, class = void>
+struct has_enum_names : std::false_type {};
+template <class E>
+struct has_enum_names<E, std::void_t<decltype(EnumNames<E>::names)>> : std::true_type {};
+
+template <class E, class = std::enable_if_t<has_enum_names<E>::value>>
+std::string to_string(E value) {
+  for (const EnumName<E>& entry : EnumNames<E>::names)
+    if (entry.value == value) return entry.name;
+  return "unknown";
+}
+
+// The value named `text` (any letter case); Error "field = 'text': must be one of 'a', 'b'" otherwise.
+template <class E>
+E from_name(const std::string& text, const std::string& field = EnumNames<E>::field) {
+  const auto lower = [](std::string t) {
+    for (char& ch : t) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    return t;
+  };
+  const std::string key = lower(text);
+  std::string allowed;
+  for (const EnumName<E>& entry : EnumNames<E>::names) {
+    if (lower(entry.name) == key) return entry.value;
+    if (to_string(entry.value) == entry.name) allowed += (allowed.empty() ? "'" : ", '") + std::string(entry.name) + "'";
+  }
+  detail::fail_field(field, "'" + text + "'", "must be one of " + allowed);
+}
 
 inline void require_finite(double value, const std::string& field) {
   if (!std::isfinite(value)) detail::fail_field(field, value, "must be a finite number");

@@ -40,14 +40,11 @@
 #include "vistrack/dubins.hpp"
 #include "vistrack/geometry.hpp"
 #include "vistrack/ode.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/dubins_parameters.hpp"
+#include "vistrack/flight_parameters.hpp"
 
 namespace vistrack {
 
-std::string to_string(FlightIntegration integration);
-// "discrete" | "continuous" (case-insensitive); Error naming `field` otherwise.
-FlightIntegration flight_integration_from_string(const std::string& text,
-                                                 const std::string& field = "integration");
 
 // ---- Wind ------------------------------------------------------------------------------------
 //
@@ -310,12 +307,13 @@ using FlightProgress = std::function<void(std::size_t done, std::size_t total)>;
 FlightTrajectory fly(const Uav& vehicle, const Wind& wind, FlightGuidance& guidance, const Configuration& start,
                      const FlightOptions& options = {}, double t0 = 0.0, const FlightCallback& on_step = {},
                      const FlightProgress& progress = {});
-// Same with a prepared wind field (its span must cover the flight).
+// Same with a wind field made for the vehicle's airspeed (WindField keeps the wind below it) whose span
+// covers the flight.
 FlightTrajectory fly(const Uav& vehicle, const WindField& wind, FlightGuidance& guidance, const Configuration& start,
                      const FlightOptions& options = {}, double t0 = 0.0, const FlightCallback& on_step = {},
                      const FlightProgress& progress = {});
 
-// ---- Path following (issue 14): a guidance that flies a path of lines and arcs ---------------
+// ---- Path following: a guidance that flies a path of lines and arcs ---------------
 //
 // PathFollower flies a given path of straight lines and circular arcs (the loiter plans; any
 // planner's lines and arcs).

@@ -40,7 +40,7 @@
 #include "vistrack/flight.hpp"
 #include "vistrack/geometry.hpp"
 #include "vistrack/guidance.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/follow_parameters.hpp"
 
 namespace vistrack {
 
@@ -116,11 +116,12 @@ class GroundVehicle {
 // ---- Loiter patterns (Fig. 3) ---------------------------------------------------------------------
 
 enum class FollowMode : std::uint8_t { Sinusoid = 0, Loiter = 1, Straight = 2 };
-std::string to_string(FollowMode mode);  // "sinusoid" | "loiter" | "straight"
-std::string to_string(LoiterPattern pattern);
-LoiterPattern loiter_pattern_from_string(const std::string& text, const std::string& field = "loiter_pattern");
-std::string to_string(OffsetReference reference);
-OffsetReference offset_reference_from_string(const std::string& text, const std::string& field = "offset_reference");
+template <>
+struct EnumNames<FollowMode> {
+  static constexpr const char* field = "mode";
+  static constexpr EnumName<FollowMode> names[] = {{"sinusoid", FollowMode::Sinusoid}, {"loiter", FollowMode::Loiter},
+      {"straight", FollowMode::Straight}};
+};
 
 // A closed or endless curve about the loiter centre, by arc length s >= 0: the circle of radius
 // R, or the rose of Fig. 3 built from its description (waypoints along a line through the
@@ -297,7 +298,7 @@ struct FollowRun {
   // Per update (1 Hz): the planner's state and the waypoint it issued at that time.
   std::vector<FollowTick> ticks;
   FollowMetrics metrics;
-  // The generated waypoints and when each was issued (issue 16 exports these).
+  // The generated waypoints and when each was issued (what a mission export needs).
   Points2 waypoints() const;
   std::vector<double> waypoint_times() const;
 };

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "vistrack/error.hpp"
+
 namespace vistrack {
 
 using Vec2 = Eigen::Vector2d;
@@ -24,9 +26,14 @@ enum class Circulation : std::uint8_t { CounterClockwise = 0, Clockwise = 1 };
 // +1 counter-clockwise, -1 clockwise: the sign of the turn rate along the circle.
 constexpr int sign(Circulation circulation) { return circulation == Circulation::Clockwise ? -1 : +1; }
 // "ccw" or "cw", the spelling at the Python boundary and in files.
-std::string to_string(Circulation circulation);
-// "ccw"/"counterclockwise"/"cw"/"clockwise" (case-insensitive); vistrack::Error naming `field`.
-Circulation circulation_from_string(const std::string& text, const std::string& field = "direction");
+template <>
+struct EnumNames<Circulation> {
+  static constexpr const char* field = "direction";
+  static constexpr EnumName<Circulation> names[] = {{"ccw", Circulation::CounterClockwise},
+      {"cw", Circulation::Clockwise}, {"counterclockwise", Circulation::CounterClockwise},
+      {"counter-clockwise", Circulation::CounterClockwise}, {"anticlockwise", Circulation::CounterClockwise},
+      {"clockwise", Circulation::Clockwise}};
+};
 
 // Angle in (-pi, pi]. Error for a non-finite angle (it has no direction).
 double wrap_to_pi(double angle);

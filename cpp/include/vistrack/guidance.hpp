@@ -11,7 +11,8 @@
 #pragma once
 
 #include "vistrack/geometry.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/dubins_parameters.hpp"
+#include "vistrack/guidance_parameters.hpp"
 
 namespace vistrack {
 
@@ -31,7 +32,7 @@ struct OrbitState {
 };
 
 // Parameters of the vector field and of the steering law: a Uav and a Control seen by the
-// guidance (the defaults are theirs, from parameters.hpp).
+// guidance (the defaults are theirs).
 struct GuidanceGains {
   double speed = Uav{}.speed;                      // v, UAV speed (m/s)
   double beta = Control{}.beta;                    // circulation / attraction parameter of a_1 (59)

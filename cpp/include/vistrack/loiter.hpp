@@ -27,22 +27,28 @@
 
 #include "vistrack/dubins.hpp"
 #include "vistrack/geometry.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/loiter_parameters.hpp"
 
 namespace vistrack {
 
 enum class LoiterMethod : std::uint8_t { FlyThrough = 0, Tlpp = 1, Ldlpp = 2 };
-// "fly_through", "tlpp", "ldlpp".
-std::string to_string(LoiterMethod method);
-// Those names (case-insensitive; "fly-through" too); Error naming `field` otherwise.
-LoiterMethod loiter_method_from_string(const std::string& text, const std::string& field = "method");
+template <>
+struct EnumNames<LoiterMethod> {
+  static constexpr const char* field = "method";
+  static constexpr EnumName<LoiterMethod> names[] = {{"fly_through", LoiterMethod::FlyThrough},
+      {"tlpp", LoiterMethod::Tlpp}, {"ldlpp", LoiterMethod::Ldlpp}, {"fly-through", LoiterMethod::FlyThrough},
+      {"flythrough", LoiterMethod::FlyThrough}};
+};
 
 // The visiting order: as given, or the one with the shortest plan (exact branch and bound up to
 // kExactOrderLimit AOIs, 2-opt and or-opt moves above).
 enum class LoiterOrder : std::uint8_t { Given = 0, Best = 1 };
 constexpr int kExactOrderLimit = 9;
-std::string to_string(LoiterOrder order);
-LoiterOrder loiter_order_from_string(const std::string& text, const std::string& field = "order");
+template <>
+struct EnumNames<LoiterOrder> {
+  static constexpr const char* field = "order";
+  static constexpr EnumName<LoiterOrder> names[] = {{"given", LoiterOrder::Given}, {"best", LoiterOrder::Best}};
+};
 
 enum class SegmentKind : std::uint8_t { Line = 0, Arc = 1 };
 // What a piece of the path is for. Transit: straight legs between AOIs (and from the start, to
@@ -51,8 +57,17 @@ enum class SegmentKind : std::uint8_t { Line = 0, Arc = 1 };
 // loiter circle (radius R). Exit: turns at r that leave it (Fly-Through's turn towards the next
 // POI, LDLPP's exit turn). Transit time is the time off the loiter circles.
 enum class SegmentRole : std::uint8_t { Transit = 0, Entry = 1, Loiter = 2, Exit = 3 };
-std::string to_string(SegmentKind kind);  // "line", "arc"
-std::string to_string(SegmentRole role);  // "transit", "entry", "loiter", "exit"
+template <>
+struct EnumNames<SegmentKind> {
+  static constexpr const char* field = "kind";
+  static constexpr EnumName<SegmentKind> names[] = {{"line", SegmentKind::Line}, {"arc", SegmentKind::Arc}};
+};
+template <>
+struct EnumNames<SegmentRole> {
+  static constexpr const char* field = "role";
+  static constexpr EnumName<SegmentRole> names[] = {{"transit", SegmentRole::Transit}, {"entry", SegmentRole::Entry},
+      {"loiter", SegmentRole::Loiter}, {"exit", SegmentRole::Exit}};
+};
 
 // One piece of a plan. Headings are continuous along the plan (not wrapped).
 struct LoiterSegment {

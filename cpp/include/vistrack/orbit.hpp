@@ -15,7 +15,8 @@
 
 #include "vistrack/environment.hpp"
 #include "vistrack/geometry.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/dubins_parameters.hpp"
+#include "vistrack/orbit_parameters.hpp"
 #include "vistrack/visibility.hpp"
 #include "vistrack/volume.hpp"
 
@@ -303,7 +304,7 @@ class OrbitPlanner {
   // cache_dir: folder of the on-disk VV cache (created when missing); empty for none.
   OrbitPlanner(const Environment& env, const Sensor& sensor, std::string cache_dir = "");
   Discretization adaptive(const PoiPath& poi, const Planning& planning, const ProgressFunction& progress = {});
-  Discretization fixed(const PoiPath& poi, double spacing, double resolution_deg = Planning{}.resolution_deg,
+  Discretization fixed(const PoiPath& poi, double spacing, double resolution_deg = kDefaultResolutionDeg,
                        const ProgressFunction& progress = {}, std::size_t max_volumes = Planning{}.max_volumes);
   VisibilityOrbitPlan plan(const PoiPath& poi, const Uav& uav, const Planning& planning,
                            const ProgressFunction& progress = {});

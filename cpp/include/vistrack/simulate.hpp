@@ -14,7 +14,7 @@
 #include "vistrack/guidance.hpp"
 #include "vistrack/ode.hpp"
 #include "vistrack/orbit.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/simulate_parameters.hpp"
 #include "vistrack/visibility.hpp"
 
 namespace vistrack {

@@ -16,7 +16,7 @@
 
 #include "vistrack/environment.hpp"
 #include "vistrack/geometry.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/visibility_parameters.hpp"
 
 namespace vistrack {
 
@@ -123,16 +123,16 @@ class VisibilityScene {
 // or inside an obstacle, d_max <= 0, NaN, or a band with h_lo >= h_hi.
 VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, double d_max,
                                    std::optional<std::pair<double, double>> altitude_band = std::nullopt,
-                                   double resolution_deg = Planning{}.resolution_deg);
+                                   double resolution_deg = kDefaultResolutionDeg);
 // Same, building a scene for this one call (prefer a shared VisibilityScene for many VVs).
 VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double d_max,
                                    std::optional<std::pair<double, double>> altitude_band = std::nullopt,
-                                   double resolution_deg = Planning{}.resolution_deg);
+                                   double resolution_deg = kDefaultResolutionDeg);
 // VVs for many POI positions (rows of `pois`), in parallel over the points (TBB).
 std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, const Points3& pois,
                                                  double d_max,
                                                  std::optional<std::pair<double, double>> altitude_band = std::nullopt,
-                                                 double resolution_deg = Planning{}.resolution_deg);
+                                                 double resolution_deg = kDefaultResolutionDeg);
 // Where one VV's time and rays go (for benchmarks): seconds per phase and ray counts.
 struct VolumeCost {
   double bounds_s = 0.0;  // per-column bounds of the rays that can hit an obstacle

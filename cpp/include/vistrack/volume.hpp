@@ -62,14 +62,23 @@ std::vector<Polygon> plane_visibility_polygon(const VisibilityVolume& vv, double
 // "poi": each VV is first translated by minus its own POI (as the paper's public implementation
 // does), so open terrain gives zero; "world": the VVs are compared where they are.
 enum class XorFrame { poi, world };
-XorFrame parse_xor_frame(const std::string& name);  // "poi" or "world", else Error
+template <>
+struct EnumNames<XorFrame> {
+  static constexpr const char* field = "frame";
+  static constexpr EnumName<XorFrame> names[] = {{"poi", XorFrame::poi}, {"world", XorFrame::world}};
+};
 
 // "radial": exact per direction on the meshes of two star VVs built over one sphere (what "mesh"
 // computes, without CGAL); "grid": per direction on the cell intervals; "mesh": CGAL
 // corefinement. "auto": radial when it applies (POI frame, shares_radial_mesh), else grid (POI
 // frame, shares_direction_grid), else mesh.
 enum class XorMethod { automatic, radial, grid, mesh };
-XorMethod parse_xor_method(const std::string& name);  // "auto", "radial", "grid" or "mesh", else Error
+template <>
+struct EnumNames<XorMethod> {
+  static constexpr const char* field = "method";
+  static constexpr EnumName<XorMethod> names[] = {{"auto", XorMethod::automatic}, {"radial", XorMethod::radial},
+      {"grid", XorMethod::grid}, {"mesh", XorMethod::mesh}};
+};
 
 // The rotation xor_volume's mesh path applies in frame "poi" unless told otherwise (rad).
 inline constexpr double kPoiFramePerturbation = 1e-6;

@@ -36,15 +36,19 @@
 #include "vistrack/dubins.hpp"
 #include "vistrack/flight.hpp"
 #include "vistrack/geometry.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/waypoint_nav_parameters.hpp"
 
 namespace vistrack {
 
 // Turn directions (first arc at C, arc around W_n), in the paper's order.
 enum class TurnCase : std::uint8_t { CcwCcw = 0, CcwCw = 1, CwCcw = 2, CwCw = 3 };
 constexpr int kTurnCaseCount = 4;
-std::string to_string(TurnCase c);  // "ccw-ccw", ...
-TurnCase turn_case_from_string(const std::string& text, const std::string& field = "case");
+template <>
+struct EnumNames<TurnCase> {
+  static constexpr const char* field = "case";
+  static constexpr EnumName<TurnCase> names[] = {{"ccw-ccw", TurnCase::CcwCcw}, {"ccw-cw", TurnCase::CcwCw},
+      {"cw-ccw", TurnCase::CwCcw}, {"cw-cw", TurnCase::CwCw}};
+};
 
 // The horizon path of one case at one orientation theta. Lengths are arc lengths (length units).
 struct HorizonPath {

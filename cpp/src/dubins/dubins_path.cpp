@@ -13,13 +13,6 @@
 namespace vistrack {
 namespace {
 
-constexpr std::array<const char*, kDubinsWordCount> kWordNames{"LSL", "LSR", "RSL", "RSR", "RLR", "LRL"};
-
-std::string upper(std::string text) {
-  for (char& ch : text) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-  return text;
-}
-
 DubinsPath make_path(const Configuration& q0, const Configuration& q1, double rho, DubinsWord word,
                      const detail::WordSegments& w) {
   DubinsPath path;
@@ -52,15 +45,6 @@ void advance(Configuration& q, DubinsSegment type, double distance, double rho) 
 
 void validate_dubins_problem(const Configuration& q0, const Configuration& q1, double rho) {
   detail::require_dubins_problem(q0, q1, rho);
-}
-
-std::string to_string(DubinsWord word) { return kWordNames[static_cast<std::size_t>(word)]; }
-
-DubinsWord dubins_word_from_string(const std::string& text, const std::string& field) {
-  const std::string key = upper(text);
-  for (std::size_t k = 0; k < kWordNames.size(); ++k)
-    if (key == kWordNames[k]) return static_cast<DubinsWord>(k);
-  detail::fail_field(field, "'" + text + "'", "unknown Dubins word (LSL, LSR, RSL, RSR, RLR, LRL)");
 }
 
 std::array<DubinsSegment, 3> segment_types(DubinsWord word) {

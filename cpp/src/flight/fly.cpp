@@ -222,36 +222,42 @@ class Flight {
   FlightTrajectory out_;
 };
 
-}  // namespace
-
-FlightTrajectory fly(const Uav& vehicle, const WindField& wind, FlightGuidance& guidance, const Configuration& start,
-                     const FlightOptions& options, double t0, const FlightCallback& on_step,
-                     const FlightProgress& progress) {
+void validate(const Uav& vehicle, const FlightOptions& options, const Configuration& start, double t0) {
   vehicle.validate();
   options.validate();
   require_coordinate(start.x, "start.x");
   require_coordinate(start.y, "start.y");
   require_angle(start.psi, "start.psi");
   require_finite(t0, "t0");
-  if (!(wind.max_speed() < vehicle.speed))
-    detail::fail_field("wind", wind.max_speed(), "the wind speed must stay below the airspeed " +
-                                                     detail::to_text(vehicle.speed));
   const double psi_max = vehicle.speed * options.dt / vehicle.min_turn_radius;
   if (options.integration == FlightIntegration::Discrete && psi_max > kPi / 2.0)
     detail::fail_field("dt", options.dt, "psi_max = v dt / R = " + detail::to_text(psi_max) + " rad exceeds pi/2");
+}
+
+FlightTrajectory fly_valid(const Uav& vehicle, const WindField& wind, FlightGuidance& guidance,
+                           const Configuration& start, const FlightOptions& options, double t0,
+                           const FlightCallback& on_step, const FlightProgress& progress) {
   guidance.start(start, t0);
   Flight flight(vehicle, wind, guidance, options, t0, on_step, progress);
   return options.integration == FlightIntegration::Discrete ? flight.discrete(start) : flight.continuous(start);
 }
 
+}  // namespace
+
+// The wind field checked its speed against the airspeed it was made for (WindField).
+FlightTrajectory fly(const Uav& vehicle, const WindField& wind, FlightGuidance& guidance, const Configuration& start,
+                     const FlightOptions& options, double t0, const FlightCallback& on_step,
+                     const FlightProgress& progress) {
+  validate(vehicle, options, start, t0);
+  return fly_valid(vehicle, wind, guidance, start, options, t0, on_step, progress);
+}
+
 FlightTrajectory fly(const Uav& vehicle, const Wind& wind, FlightGuidance& guidance, const Configuration& start,
                      const FlightOptions& options, double t0, const FlightCallback& on_step,
                      const FlightProgress& progress) {
-  vehicle.validate();
-  options.validate();
-  require_finite(t0, "t0");
+  validate(vehicle, options, start, t0);
   const WindField field(wind, vehicle.speed, t0, options.max_time + options.dt);
-  return fly(vehicle, field, guidance, start, options, t0, on_step, progress);
+  return fly_valid(vehicle, field, guidance, start, options, t0, on_step, progress);
 }
 
 }  // namespace vistrack

@@ -1,11 +1,8 @@
-// Validation of the flight layer's parameter structs (parameters.hpp) and the integration names.
-#include <algorithm>
-#include <cctype>
-
+// Validation of the flight layer's parameter structs (flight_parameters.hpp).
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
 #include "vistrack/flight.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/flight_parameters.hpp"
 
 namespace vistrack {
 
@@ -29,21 +26,14 @@ void FlightOptions::validate() const {
   require_tolerances(rtol, atol, "");
 }
 
+void PathFollowingGains::validate() const {
+  require_positive(lookahead_radii, "gains.lookahead_radii");
+  require_positive(heading_gain, "gains.heading_gain");
+}
+
 void LineFeedbackGains::validate() const {
   require_non_negative(g, "gains.g");
   require_non_negative(h, "gains.h");
-}
-
-std::string to_string(FlightIntegration integration) {
-  return integration == FlightIntegration::Continuous ? "continuous" : "discrete";
-}
-
-FlightIntegration flight_integration_from_string(const std::string& text, const std::string& field) {
-  std::string lower = text;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (lower == "discrete") return FlightIntegration::Discrete;
-  if (lower == "continuous") return FlightIntegration::Continuous;
-  detail::fail_field(field, text, "must be 'discrete' or 'continuous'");
 }
 
 }  // namespace vistrack

@@ -20,11 +20,6 @@ constexpr double kBehindRadii = 0.5;
 
 }  // namespace
 
-void PathFollowingGains::validate() const {
-  require_positive(lookahead_radii, "gains.lookahead_radii");
-  require_positive(heading_gain, "gains.heading_gain");
-}
-
 Configuration PathPiece::at(double s) const {
   if (curvature == 0.0) {
     const Vec2 p = start + s * direction(heading);

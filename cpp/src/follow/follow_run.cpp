@@ -65,17 +65,14 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   uav.validate();
   parameters.validate();
   options.validate();
-  true_wind.validate();
-  const Vec2 steady(true_wind.east, true_wind.north);
-  if (!(steady.norm() < uav.speed))
-    detail::fail_field("wind", detail::to_text(steady.x()) + ", " + detail::to_text(steady.y()),
-                       "the wind must be slower than the UAV's airspeed " + detail::to_text(uav.speed));
   const double t0 = vehicle.start_time();
   const double duration = options.flight.max_time > 0.0 ? options.flight.max_time : vehicle.end_time() - t0;
   const double period = parameters.update_period;
   if (!(duration / period <= 1e8))  // one tick per update: bound the work and the memory of the run
     detail::fail_field("follow.update_period", period,
                        "more than 1e8 planner updates over the " + detail::to_text(duration) + " s flight");
+  const WindField wind(true_wind, uav.speed, t0, duration);  // checks the wind against the airspeed
+  const Vec2 steady(true_wind.east, true_wind.north);
 
   const Configuration start = options.start
                                   ? Configuration{options.start->x(), options.start->y(), options.start->z()}
@@ -85,7 +82,6 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
                                           scheduled_offset(options.offset_schedule, parameters, t0);
                                       return at_start;
                                     }(), wind_estimate, steady, t0);
-  const WindField wind(true_wind, uav.speed, t0, duration);
   FollowPlanner planner(parameters, uav, wind_estimate);
   FollowRun run;
 

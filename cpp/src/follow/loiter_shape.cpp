@@ -11,44 +11,12 @@ namespace vistrack {
 
 namespace {
 
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
 Vec2 rotate(const Vec2& v, double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
   return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
 
 }  // namespace
-
-std::string to_string(FollowMode mode) {
-  switch (mode) {
-    case FollowMode::Sinusoid: return "sinusoid";
-    case FollowMode::Loiter: return "loiter";
-    case FollowMode::Straight: return "straight";
-  }
-  return "unknown";
-}
-
-std::string to_string(LoiterPattern pattern) { return pattern == LoiterPattern::Rose ? "rose" : "circle"; }
-
-std::string to_string(OffsetReference reference) { return reference == OffsetReference::North ? "north" : "heading"; }
-
-LoiterPattern loiter_pattern_from_string(const std::string& text, const std::string& field) {
-  const std::string t = lower(text);
-  if (t == "circle") return LoiterPattern::Circle;
-  if (t == "rose") return LoiterPattern::Rose;
-  detail::fail_field(field, text, "must be \"circle\" or \"rose\"");
-}
-
-OffsetReference offset_reference_from_string(const std::string& text, const std::string& field) {
-  const std::string t = lower(text);
-  if (t == "north" || t == "cardinal") return OffsetReference::North;
-  if (t == "heading" || t == "relative") return OffsetReference::Heading;
-  detail::fail_field(field, text, "must be \"north\" (fixed to the map) or \"heading\" (turns with the vehicle)");
-}
 
 void LoiterShape::validate() const {
   require_length(radius, "loiter_radius");

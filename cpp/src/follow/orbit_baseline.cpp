@@ -31,12 +31,10 @@ FollowRun orbit_follow(const GroundVehicle& vehicle, const Uav& uav, const Contr
   uav.validate();
   control.validate();
   options.validate();
-  true_wind.validate();
   require_positive(radius, "radius");
-  const Vec2 steady(true_wind.east, true_wind.north);
-  if (!(steady.norm() < uav.speed))
-    detail::fail_field("wind", detail::to_text(steady.x()) + ", " + detail::to_text(steady.y()),
-                       "the wind must be slower than the UAV's airspeed " + detail::to_text(uav.speed));
+  const double t0 = vehicle.start_time();
+  const double duration = options.flight.max_time > 0.0 ? options.flight.max_time : vehicle.end_time() - t0;
+  const WindField wind(true_wind, uav.speed, t0, duration);  // checks the wind against the airspeed
   if (!(uav.speed > vehicle.max_speed()))
     detail::fail_field("uav.speed", uav.speed,
                        "must exceed the vehicle's top speed " + detail::to_text(vehicle.max_speed()) +
@@ -44,8 +42,6 @@ FollowRun orbit_follow(const GroundVehicle& vehicle, const Uav& uav, const Contr
   const FollowPlanner offsets(parameters, uav);  // only its offset vector
   const GuidanceGains gains = GuidanceGains::from(uav, control);
   OrbitFollower guidance(vehicle, offsets, gains, radius);
-  const double t0 = vehicle.start_time();
-  const double duration = options.flight.max_time > 0.0 ? options.flight.max_time : vehicle.end_time() - t0;
 
   Configuration start;
   if (options.start) {
@@ -62,7 +58,7 @@ FollowRun orbit_follow(const GroundVehicle& vehicle, const Uav& uav, const Contr
   flight.integration = options.flight.integration;
   flight.dt = options.flight.dt;
   flight.max_time = duration;
-  const FlightTrajectory trajectory = fly(uav, WindField(true_wind, uav.speed, t0, duration), guidance, start, flight, t0);
+  const FlightTrajectory trajectory = fly(uav, wind, guidance, start, flight, t0);
 
   FollowRun run;
   const std::size_t n = trajectory.size();

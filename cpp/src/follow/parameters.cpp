@@ -1,10 +1,10 @@
-// Validation of the follow planner's parameters (each default lives in parameters.hpp).
+// Validation of the follow planner's parameters (follow_parameters.hpp) and of its camera.
 #include <cmath>
 
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
 #include "vistrack/follow.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/follow_parameters.hpp"
 
 namespace vistrack {
 

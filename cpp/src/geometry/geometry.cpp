@@ -12,19 +12,6 @@
 
 namespace vistrack {
 
-std::string to_string(Circulation circulation) {
-  return circulation == Circulation::Clockwise ? "cw" : "ccw";
-}
-
-Circulation circulation_from_string(const std::string& text, const std::string& field) {
-  std::string key = text;
-  for (char& ch : key) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  if (key == "cw" || key == "clockwise") return Circulation::Clockwise;
-  if (key == "ccw" || key == "counterclockwise" || key == "counter-clockwise" || key == "anticlockwise")
-    return Circulation::CounterClockwise;
-  detail::fail_field(field, "'" + text + "'", "unknown direction (use 'ccw' or 'cw')");
-}
-
 double wrap_to_pi(double angle) {
   if (!std::isfinite(angle)) detail::fail_field("angle", angle, "must be a finite number of radians");
   double wrapped = std::remainder(angle, kTwoPi);  // in [-pi, pi]

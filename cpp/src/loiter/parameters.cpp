@@ -5,7 +5,7 @@
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
 #include "vistrack/loiter.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/loiter_parameters.hpp"
 
 namespace vistrack {
 

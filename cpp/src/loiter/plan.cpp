@@ -13,11 +13,6 @@ namespace vistrack {
 
 namespace {
 
-std::string lower(std::string text) {
-  for (char& ch : text) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return text;
-}
-
 template <class Walker>
 void walk(const LoiterProblem& problem, const std::vector<int>& order, LoiterPlan& plan) {
   Walker walker(problem, detail::PathSink(&plan.segments), &plan.directions);
@@ -41,44 +36,6 @@ void require_permutation(const std::vector<int>& order, std::size_t n) {
 }
 
 }  // namespace
-
-std::string to_string(LoiterMethod method) {
-  switch (method) {
-    case LoiterMethod::FlyThrough: return "fly_through";
-    case LoiterMethod::Tlpp: return "tlpp";
-    case LoiterMethod::Ldlpp: return "ldlpp";
-  }
-  return "unknown";
-}
-
-LoiterMethod loiter_method_from_string(const std::string& text, const std::string& field) {
-  const std::string key = lower(text);
-  if (key == "fly_through" || key == "fly-through" || key == "flythrough") return LoiterMethod::FlyThrough;
-  if (key == "tlpp") return LoiterMethod::Tlpp;
-  if (key == "ldlpp") return LoiterMethod::Ldlpp;
-  detail::fail_field(field, "'" + text + "'", "unknown loiter method (fly_through, tlpp, ldlpp)");
-}
-
-std::string to_string(LoiterOrder order) { return order == LoiterOrder::Best ? "best" : "given"; }
-
-LoiterOrder loiter_order_from_string(const std::string& text, const std::string& field) {
-  const std::string key = lower(text);
-  if (key == "given") return LoiterOrder::Given;
-  if (key == "best") return LoiterOrder::Best;
-  detail::fail_field(field, "'" + text + "'", "unknown visiting order (given, best)");
-}
-
-std::string to_string(SegmentKind kind) { return kind == SegmentKind::Arc ? "arc" : "line"; }
-
-std::string to_string(SegmentRole role) {
-  switch (role) {
-    case SegmentRole::Transit: return "transit";
-    case SegmentRole::Entry: return "entry";
-    case SegmentRole::Loiter: return "loiter";
-    case SegmentRole::Exit: return "exit";
-  }
-  return "unknown";
-}
 
 Configuration LoiterSegment::at(double s) const {
   if (kind == SegmentKind::Line) {

@@ -235,7 +235,7 @@ Discretization fixed_discretization(const PoiPath& poi, double spacing, VolumeCa
                                     const MetricFunction& metric, const ProgressFunction& progress,
                                     std::size_t max_volumes) {
   // The grid of the cache is not known here: the estimate counts 1-degree VVs.
-  check_work(estimate_fixed_work(poi, spacing, Planning{}.resolution_deg), max_volumes, "max_volumes");
+  check_work(estimate_fixed_work(poi, spacing, kDefaultResolutionDeg), max_volumes, "max_volumes");
   return discretize(poi, spacing, std::numeric_limits<double>::infinity(), spacing, 0, cache, metric, progress);
 }
 

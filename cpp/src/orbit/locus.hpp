@@ -22,4 +22,13 @@ struct CheckProbe {
 // fills plan.check, plan.reference, plan.radii (R at the samples), feasible and infeasibility.
 void smooth_locus(VisibilityOrbitPlan& plan, const CheckProbe& probe);
 
+// plan_orbits and visible_disk_radius (orbit.hpp) for inputs validated where they entered the API
+// (OrbitPlanner checks its sensor once, at construction, and the Uav and Planning per plan).
+VisibilityOrbitPlan plan_orbits_of_valid(const PoiPath& poi, const Uav& uav, const Sensor& sensor,
+                                         const Planning& planning, VolumeCache& cache, const MetricFunction& metric,
+                                         const SliceFunction& slice, const ProgressFunction& progress,
+                                         const MaxRadiusFunction& check_max_radius);
+double visible_disk_radius_of_valid(const VisibilityScene& scene, const Vec3& poi, double altitude,
+                                    const Sensor& sensor, int azimuths = 360, int rings = 8);
+
 }  // namespace vistrack::detail

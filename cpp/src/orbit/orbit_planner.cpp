@@ -1,4 +1,5 @@
 // The orbit planner on a real environment: Embree scene, VV caches, POI-frame XOR metric, VP slicing.
+#include "locus.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/orbit.hpp"
 
@@ -15,7 +16,7 @@ double poi_frame_metric(const VisibilityVolume& a, const VisibilityVolume& b) {
 OrbitPlanner::OrbitPlanner(const Environment& env, const Sensor& sensor, std::string cache_dir)
     : scene_(env), sensor_(sensor), cache_dir_(std::move(cache_dir)) {
   sensor_.validate();
-  if (!cache_dir_.empty()) caches(Planning{}.resolution_deg);  // an unusable cache_dir fails here, at once
+  if (!cache_dir_.empty()) caches(kDefaultResolutionDeg);  // an unusable cache_dir fails here, at once
 }
 
 OrbitPlanner::Caches& OrbitPlanner::caches(double resolution_deg) {
@@ -60,10 +61,10 @@ VisibilityOrbitPlan OrbitPlanner::plan(const PoiPath& poi, const Uav& uav, const
   // The locus check probes the disk at h_UAV by line of sight (visible_disk_radius): about 20
   // times cheaper than a VV per point, within the VP mesh's error of the VV's MaxRadius.
   const MaxRadiusFunction check = [scene = scene_, sensor = sensor_, altitude = uav.altitude](const Vec3& g) {
-    return visible_disk_radius(scene, g, altitude, sensor);
+    return detail::visible_disk_radius_of_valid(scene, g, altitude, sensor);
   };
-  return plan_orbits(poi, uav, sensor_, planning, caches(planning.resolution_deg).memory, poi_frame_metric,
-                     plane_visibility_polygon, progress, check);
+  return detail::plan_orbits_of_valid(poi, uav, sensor_, planning, caches(planning.resolution_deg).memory,
+                                      poi_frame_metric, plane_visibility_polygon, progress, check);
 }
 
 std::size_t OrbitPlanner::cached_volumes() const {

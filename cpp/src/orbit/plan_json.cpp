@@ -182,7 +182,7 @@ VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
       plan.planning.rate_margin = p.value("rate_margin", 0.0);  // absent in files before it existed
       plan.planning.max_volumes = p.value("max_volumes", Planning{}.max_volumes);
       // Files before the smooth locus hold the paper's piecewise-linear one.
-      plan.planning.locus = locus_from_string(p.value("locus", std::string("paper")), "planning.locus");
+      plan.planning.locus = from_name<Locus>(p.value("locus", std::string("paper")), "planning.locus");
       plan.planning.tracking_margin = p.value("tracking_margin", Planning{}.tracking_margin);
       plan.planning.check_spacing = p.value("check_spacing", Planning{}.check_spacing);
       plan.planning.check_min_spacing = p.value("check_min_spacing", Planning{}.check_min_spacing);

@@ -22,9 +22,6 @@ detail::CheckProbe volume_probe(std::function<VolumePtr(const Vec3&, bool&)> vol
 VisibilityOrbitPlan plan_with_check(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
                                     Discretization samples, const SliceFunction& slice,
                                     const detail::CheckProbe& probe) {
-  uav.validate();
-  sensor.validate();
-  planning.validate();
   if (!slice) throw Error("plan_on_samples: slice function is empty");
   const std::size_t n = samples.times.size();
   if (n == 0 || samples.volumes.size() != n) detail::fail_field("samples", n, "need one VV per sample, at least one");
@@ -53,11 +50,19 @@ VisibilityOrbitPlan plan_with_check(const PoiPath& poi, const Uav& uav, const Se
   return plan;
 }
 
+void validate(const Uav& uav, const Sensor& sensor, const Planning& planning) {
+  uav.validate();
+  sensor.validate();
+  planning.validate();
+}
+
 }  // namespace
 
-VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
-                                VolumeCache& cache, const MetricFunction& metric, const SliceFunction& slice,
-                                const ProgressFunction& progress, const MaxRadiusFunction& check_max_radius) {
+VisibilityOrbitPlan detail::plan_orbits_of_valid(const PoiPath& poi, const Uav& uav, const Sensor& sensor,
+                                                 const Planning& planning, VolumeCache& cache,
+                                                 const MetricFunction& metric, const SliceFunction& slice,
+                                                 const ProgressFunction& progress,
+                                                 const MaxRadiusFunction& check_max_radius) {
   if (!(uav.speed > poi.speed()))
     detail::fail_field("uav.speed", uav.speed,
                        "must exceed the POI speed " + detail::to_text(poi.speed()) + " to orbit it (Lemma 5)");
@@ -73,9 +78,17 @@ VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor
                          slice, probe);
 }
 
+VisibilityOrbitPlan plan_orbits(const PoiPath& poi, const Uav& uav, const Sensor& sensor, const Planning& planning,
+                                VolumeCache& cache, const MetricFunction& metric, const SliceFunction& slice,
+                                const ProgressFunction& progress, const MaxRadiusFunction& check_max_radius) {
+  validate(uav, sensor, planning);
+  return detail::plan_orbits_of_valid(poi, uav, sensor, planning, cache, metric, slice, progress, check_max_radius);
+}
+
 VisibilityOrbitPlan plan_on_samples(const PoiPath& poi, const Uav& uav, const Sensor& sensor,
                                     const Planning& planning, Discretization samples, const SliceFunction& slice,
                                     const VolumeFunction& volume_at) {
+  validate(uav, sensor, planning);
   detail::CheckProbe probe;
   if (volume_at)
     probe = volume_probe(

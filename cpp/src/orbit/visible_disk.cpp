@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "locus.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/orbit.hpp"
 
@@ -16,6 +17,11 @@ double visible_disk_radius(const VisibilityScene& scene, const Vec3& poi, double
   require_finite(altitude, "altitude");
   if (azimuths < 8) detail::fail_field("azimuths", azimuths, "must be at least 8");
   if (rings < 1) detail::fail_field("rings", rings, "must be at least 1");
+  return detail::visible_disk_radius_of_valid(scene, poi, altitude, sensor, azimuths, rings);
+}
+
+double detail::visible_disk_radius_of_valid(const VisibilityScene& scene, const Vec3& poi, double altitude,
+                                            const Sensor& sensor, int azimuths, int rings) {
   const Vec3 g = scene.poi_on_surface(poi);
   if (sensor.altitude_band && !(altitude > sensor.altitude_band->first && altitude < sensor.altitude_band->second))
     return 0.0;  // the flight plane lies outside the feasible airspace: nothing visible there

@@ -32,14 +32,7 @@ constexpr double kBandTolerance = 1e-3;  // m: a POI this close to a band face c
 void validate(const VisibilityScene& scene, const Vec3& g, double d_max,
               const std::optional<std::pair<double, double>>& band, const std::string& g_field) {
   for (int k = 0; k < 3; ++k) require_coordinate(g[k], g_field + "[" + std::to_string(k) + "]");
-  require_length(d_max, "d_max");
-  if (band) {
-    require_coordinate(band->first, "altitude_band[0]");
-    require_coordinate(band->second, "altitude_band[1]");
-    if (!(band->first < band->second))
-      detail::fail_field("altitude_band", "(" + detail::to_text(band->first) + ", " + detail::to_text(band->second) + ")",
-                         "h_lo must be below h_hi");
-  }
+  Sensor{d_max, band}.validate("");
   if (g.z() < scene.ground_level() - 1e-9)
     detail::fail_field(g_field + "[2]", g.z(), "below the ground level " + detail::to_text(scene.ground_level()));
   if (scene.inside_obstacle(g))

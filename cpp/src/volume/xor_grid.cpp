@@ -41,20 +41,6 @@ Points3 translated(const Points3& vertices, const Vec3& offset) {
 
 }  // namespace
 
-XorFrame parse_xor_frame(const std::string& name) {
-  if (name == "poi") return XorFrame::poi;
-  if (name == "world") return XorFrame::world;
-  detail::fail_field("frame", name, "must be \"poi\" or \"world\"");
-}
-
-XorMethod parse_xor_method(const std::string& name) {
-  if (name == "auto") return XorMethod::automatic;
-  if (name == "radial") return XorMethod::radial;
-  if (name == "grid") return XorMethod::grid;
-  if (name == "mesh") return XorMethod::mesh;
-  detail::fail_field("method", name, "must be \"auto\", \"radial\", \"grid\" or \"mesh\"");
-}
-
 bool shares_direction_grid(const VisibilityVolume& a, const VisibilityVolume& b) {
   return a.grid.num_elevation > 0 && a.grid.num_azimuth > 0 &&
          a.grid.num_elevation == b.grid.num_elevation && a.grid.num_azimuth == b.grid.num_azimuth &&

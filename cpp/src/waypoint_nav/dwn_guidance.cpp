@@ -10,6 +10,10 @@ DubinsWaypointGuidance::DubinsWaypointGuidance(const LineFeedback& law, const st
   require_positive(turn_radius, "turn_radius");
   weights.validate();
   if (waypoints.empty()) detail::fail_field("waypoints", 0, "DWN needs at least one waypoint");
+  for (std::size_t k = 0; k < waypoints.size(); ++k) {
+    require_finite(waypoints[k].x(), "waypoints[" + std::to_string(k) + "].x");
+    require_finite(waypoints[k].y(), "waypoints[" + std::to_string(k) + "].y");
+  }
 }
 
 void DubinsWaypointGuidance::plan(const Configuration& state, double t) {

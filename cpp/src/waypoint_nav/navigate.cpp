@@ -29,8 +29,7 @@ void validate_route(const std::vector<Vec2>& waypoints, const Configuration& sta
 
 NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuration& start,
                           const WaypointNavOptions& options, const Wind& wind) {
-  options.validate();
-  wind.validate();
+  options.validate();  // the wind is checked by fly(), against the airspeed
   const double R = options.turn_radius;
   validate_route(waypoints, start, R);
 

@@ -1,9 +1,9 @@
-// Validation of waypoint_nav's parameter structs (parameters.hpp).
+// Validation of waypoint_nav's parameter structs (waypoint_nav_parameters.hpp).
 #include <cmath>
 
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
-#include "vistrack/parameters.hpp"
+#include "vistrack/waypoint_nav_parameters.hpp"
 
 namespace vistrack {
 

@@ -150,22 +150,6 @@ struct Bracket {  // samples i and i + 1 (cyclic: then b.h + 2 pi) of one case
 
 }  // namespace
 
-std::string to_string(TurnCase c) {
-  switch (c) {
-    case TurnCase::CcwCcw: return "ccw-ccw";
-    case TurnCase::CcwCw: return "ccw-cw";
-    case TurnCase::CwCcw: return "cw-ccw";
-    case TurnCase::CwCw: return "cw-cw";
-  }
-  return "?";
-}
-
-TurnCase turn_case_from_string(const std::string& text, const std::string& field) {
-  for (int k = 0; k < kTurnCaseCount; ++k)
-    if (to_string(static_cast<TurnCase>(k)) == text) return static_cast<TurnCase>(k);
-  detail::fail_field(field, text, "must be one of ccw-ccw, ccw-cw, cw-ccw, cw-cw");
-}
-
 namespace {
 
 // The path of case c with heading h at W_n, in world coordinates, from a prepared problem.

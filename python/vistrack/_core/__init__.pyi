@@ -14,7 +14,7 @@ from . import flight
 from . import waypoint_nav
 from . import loiter
 from . import follow
-__all__: list[str] = ['Ceiling', 'CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'LocusCheck', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RadiusProfile', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'SmoothRadiusLimits', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'WorkEstimate', 'check_closed_mesh', 'check_work', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'estimate_work', 'flight', 'follow', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'limits', 'loiter', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'smooth_radius', 'smooth_radius_violation', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volume_cost', 'visibility_volumes', 'visible_disk_radius', 'volume_bytes', 'waypoint_nav', 'wrap_to_pi', 'xor_volume']
+__all__: list[str] = ['Ceiling', 'CircularOrbits', 'Control', 'DirectionGrid', 'Discretization', 'Environment', 'GuidanceGains', 'LocusCheck', 'MeshCheck', 'OdeResult', 'OdeStatistics', 'OrbitPlan', 'OrbitPlanner', 'OrbitState', 'Planning', 'PoiMotion', 'PoiPath', 'Polygon', 'RadiusProfile', 'RoadNetwork', 'Sensor', 'SimulationOptions', 'SimulationResult', 'SmoothRadiusLimits', 'Steering', 'TuningResult', 'Uav', 'VectorField', 'VisibilityOrbitPlan', 'VisibilityScene', 'VisibilityVolume', 'VistrackError', 'VolumeCost', 'WorkEstimate', 'check_closed_mesh', 'check_work', 'circular_orbits', 'constant_radius_plan', 'dubins', 'epsilon_max', 'estimate_work', 'flight', 'follow', 'grid_xor_volume', 'lambda_max', 'lemma6_curvature_bound', 'lemma7_min_gain', 'limits', 'loiter', 'lyapunov_term', 'max_inscribed_radius', 'max_orbit_curvature', 'mesh_volume', 'mesh_xor_volume', 'min_feasible_radius', 'one_minus_cos_over_x', 'orbit_configuration', 'orbit_curvature', 'orbit_polar_rate', 'orbit_signed_curvature', 'plan_on_volumes', 'plan_orbits', 'plane_visibility_polygon', 'radial_error_rate', 'radial_xor_volume', 'sample_vector_field', 'segment_boundaries', 'shares_direction_grid', 'shares_radial_mesh', 'simulate', 'sinc', 'slice_mesh', 'smooth_radius', 'smooth_radius_violation', 'solve_ode', 'steering', 'tune_turn_rate', 'vector_field', 'visibility_volume', 'visibility_volume_cost', 'visibility_volumes', 'visible_disk_radius', 'volume_bytes', 'waypoint_nav', 'wrap_to_pi', 'xor_volume']
 class VistrackError(ValueError):
     pass
 class Polygon:
@@ -692,6 +692,55 @@ class VisibilityScene:
     def num_triangles(self) -> int:
         """
         Obstacle triangles in the BVH.
+        """
+class VolumeCost:
+    """
+    Where one VV's time and rays went (for benchmarks).
+    """
+    @property
+    def bounds_s(self) -> float:
+        """
+        s: per-column bounds of the rays that can hit an obstacle
+        """
+    @property
+    def embree_s(self) -> float:
+        """
+        s in Embree's rtcIntersect1M calls with their ray packing, per thread and summed over threads: within trace_s + refine_s when parallel=False
+        """
+    @property
+    def mesh_s(self) -> float:
+        """
+        s: writing the mesh
+        """
+    @property
+    def rays_skipped(self) -> int:
+        """
+        cell and corner rays decided by the bounds alone
+        """
+    @property
+    def rays_traced(self) -> int:
+        """
+        cell and corner rays handed to Embree
+        """
+    @property
+    def refine_rays(self) -> int:
+        """
+        rays traced while refining
+        """
+    @property
+    def refine_s(self) -> float:
+        """
+        s: locating the jumps of r and refining the mesh there
+        """
+    @property
+    def trace_s(self) -> float:
+        """
+        s: cell and corner rays
+        """
+    @property
+    def volume_s(self) -> float:
+        """
+        s: summing its volume
         """
 class MeshCheck:
     """
@@ -1780,9 +1829,9 @@ def visibility_volume(scene: VisibilityScene, g: typing.Annotated[numpy.typing.A
     """
     Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when given, on a grid of about resolution_deg degrees.
     """
-def visibility_volume_cost(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, parallel: bool = True) -> tuple[VisibilityVolume, dict]:
+def visibility_volume_cost(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, parallel: bool = True) -> tuple[VisibilityVolume, VolumeCost]:
     """
-    visibility_volume and where its time and rays went: (vv, {bounds_s, trace_s, refine_s, mesh_s, volume_s (seconds), rays_traced, rays_skipped (cell and corner rays traced / decided by the bounds alone), refine_rays, embree_s (seconds in Embree's rtcIntersect1M calls with their ray packing, per thread and summed over threads: within trace_s + refine_s when parallel=False)}); parallel=False keeps it on the calling thread (as in a batch).
+    visibility_volume and where its time and rays went: (vv, VolumeCost); parallel=False keeps it on the calling thread (as in a batch).
     """
 def visibility_volumes(scene: VisibilityScene, pois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> list[VisibilityVolume]:
     """

@@ -155,7 +155,7 @@ def shortest_path(q0: tuple[float, float, float], q1: tuple[float, float, float]
     """
     Shortest of the six Dubins words from q0 to q1.
     """
-def word_lengths(q0: tuple[float, float, float], q1: tuple[float, float, float], rho: typing.SupportsFloat | typing.SupportsIndex) -> dict:
+def word_lengths(q0: tuple[float, float, float], q1: tuple[float, float, float], rho: typing.SupportsFloat | typing.SupportsIndex) -> dict[str, float]:
     """
     Length of every word (inf where it does not exist), keyed by word.
     """

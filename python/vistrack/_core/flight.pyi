@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core
-__all__: list[str] = ['FlightGuidance', 'FlightTrajectory', 'Gusts', 'LineFeedback', 'PathFollower', 'WaypointFollower', 'Wind', 'WindField', 'dryden_low_altitude', 'fly']
+__all__: list[str] = ['DrydenLowAltitude', 'FlightGuidance', 'FlightTrajectory', 'Gusts', 'LineFeedback', 'LineFeedbackTerms', 'PathFollower', 'PathTracking', 'WaypointFollower', 'Wind', 'WindField', 'dryden_low_altitude', 'fly']
 class Gusts:
     """
     Dryden turbulence (MIL-F-8785C, horizontal): RMS intensity sigma_u = sigma_v (speed units), length scale L_u = L_v (length units), seed. Reproducible from the seed.
@@ -89,6 +89,40 @@ class Wind:
     @north.setter
     def north(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
+class DrydenLowAltitude:
+    """
+    MIL-F-8785C low-altitude turbulence at one altitude.
+    """
+    @property
+    def length_u(self) -> float:
+        """
+        longitudinal length scale, m
+        """
+    @property
+    def length_v(self) -> float:
+        """
+        lateral length scale (= length_u), m
+        """
+    @property
+    def length_w(self) -> float:
+        """
+        vertical length scale (= altitude), m
+        """
+    @property
+    def sigma_u(self) -> float:
+        """
+        longitudinal RMS intensity, m/s
+        """
+    @property
+    def sigma_v(self) -> float:
+        """
+        lateral RMS intensity (= sigma_u), m/s
+        """
+    @property
+    def sigma_w(self) -> float:
+        """
+        vertical RMS intensity, m/s
+        """
 class WindField:
     """
     w(t) for one flight: the constant wind plus the precomputed gust series.
@@ -116,6 +150,45 @@ class WindField:
         """
         s between gust samples (0 without gusts)
         """
+class LineFeedbackTerms:
+    """
+    Every term of the law (5) at one state.
+    """
+    @property
+    def cross_track(self) -> float:
+        """
+        s
+        """
+    @property
+    def cross_track_step(self) -> float:
+        """
+        s_dot dt
+        """
+    @property
+    def reference_angle(self) -> float:
+        """
+        phi_R, rad
+        """
+    @property
+    def saturated(self) -> bool:
+        """
+        whether the clamp acted
+        """
+    @property
+    def target_angle(self) -> float:
+        """
+        phi_T, rad
+        """
+    @property
+    def turn(self) -> float:
+        """
+        psi_turn, clamped to +-psi_max, rad
+        """
+    @property
+    def unsaturated(self) -> float:
+        """
+        phi_T + phi_R, rad
+        """
 class LineFeedback:
     """
     The paper's feedback law (5): psi_turn = clamp(phi_T + |g s + h s_dot dt| sign(phi_T), +-v dt / R) towards the line whose end is the target; turn rate psi_turn / dt.
@@ -124,9 +197,9 @@ class LineFeedback:
         """
         speed v, turn_radius R, law step dt (psi_max = v dt / R <= pi/2), gains (g, h); smooth_sign: sign(phi_T) -> clamp(phi_T / psi_max, -1, 1) for continuous flight.
         """
-    def terms(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], line_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> dict:
+    def terms(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], line_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> LineFeedbackTerms:
         """
-        Every term of (5) at state (x, y, psi) for the line line_start -> target, as a dict.
+        Every term of (5) at state (x, y, psi) for the line line_start -> target (LineFeedbackTerms).
         """
     def turn_rate(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], line_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> float:
         """
@@ -184,7 +257,7 @@ class WaypointFollower(FlightGuidance):
     """
     Classical waypoint navigation on the law (5): the line from the previous waypoint (the start for the first) to the active one; next waypoint when within waypoint_radius. finish_at_last=False holds at the last waypoint until add_waypoint() gives more (feed it from fly()'s on_step).
     """
-    def __init__(self, law: LineFeedback, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], waypoint_radius: typing.SupportsFloat | typing.SupportsIndex, finish_at_last: bool = True) -> None:
+    def __init__(self, law: LineFeedback, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], waypoint_radius: typing.SupportsFloat | typing.SupportsIndex, finish_at_last: bool = True) -> None:
         """
         law: LineFeedback; waypoints: array (n, 2); waypoint_radius R_WP >= 0.
         """
@@ -283,6 +356,35 @@ class FlightTrajectory:
         """
         y (n,)
         """
+class PathTracking:
+    """
+    Where a state is relative to the path.
+    """
+    @property
+    def along(self) -> float:
+        """
+        signed distance ahead of the path point (non-zero only at the ends), m
+        """
+    @property
+    def cross_track(self) -> float:
+        """
+        m, positive to the left of the path
+        """
+    @property
+    def heading_error(self) -> float:
+        """
+        psi - psi_path, wrapped, rad
+        """
+    @property
+    def piece(self) -> int:
+        """
+        index of the piece
+        """
+    @property
+    def s(self) -> float:
+        """
+        progress along the path, m
+        """
 class PathFollower(FlightGuidance):
     """
     Follows a path of lines and arcs: cross-track and heading feedback with curvature feed-forward, psi_d = psi_path - atan(e / (lookahead_radii R)), rate = v kappa cos(psi - psi_path) / (1 - kappa e) + heading_gain (v / R) wrap(psi_d - psi). Knows the heading, not the wind. Done at the path's end.
@@ -291,9 +393,9 @@ class PathFollower(FlightGuidance):
         """
         pieces: (n, 5) rows x0, y0, heading, length, curvature (0 lines, +1/radius ccw, -1/radius cw), each starting where the one before ends; speed v and turn_radius R of the vehicle.
         """
-    def track(self, state: typing.Annotated[collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], "FixedSize(3)"]) -> dict:
+    def track(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]) -> PathTracking:
         """
-        Projection of (x, y, psi) near the current progress: s, piece, cross_track (left positive), heading_error, along (beyond the end).
+        Projection of (x, y, psi) near the current progress (PathTracking).
         """
     @property
     def length(self) -> float:
@@ -305,7 +407,7 @@ class PathFollower(FlightGuidance):
         """
         Arc length reached, m.
         """
-def dryden_low_altitude(altitude: typing.SupportsFloat | typing.SupportsIndex, wind_speed_20ft: typing.SupportsFloat | typing.SupportsIndex) -> dict:
+def dryden_low_altitude(altitude: typing.SupportsFloat | typing.SupportsIndex, wind_speed_20ft: typing.SupportsFloat | typing.SupportsIndex) -> DrydenLowAltitude:
     """
     MIL-F-8785C low-altitude intensities (m/s) and length scales (m) at altitude (m) for W20 (m/s).
     """

@@ -115,7 +115,7 @@ class GroundVehicle:
         """
 class FollowParameters:
     """
-    The follow planner's settings (defaults in parameters.hpp). Angles in radians.
+    The follow planner's settings (defaults from the C++ struct). Angles in radians.
     """
     def __init__(self, *, period: typing.SupportsFloat | typing.SupportsIndex = 30.0, turn_margin: typing.SupportsFloat | typing.SupportsIndex = 1.25, threshold: typing.SupportsFloat | typing.SupportsIndex = 3.0, hysteresis: typing.SupportsFloat | typing.SupportsIndex = 0.5, loiter_pattern: str = 'circle', loiter_radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, loiter_direction: str = 'ccw', offset_distance: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_angle: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_reference: str = 'heading', wind_compensation: bool = True, update_period: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
         """

@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core.flight
-__all__: list[str] = ['CASES', 'DEFAULTS', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'TurningPoint', 'TurningPointRecord', 'horizon_lengths', 'horizon_path', 'navigate', 'reachability', 'turning_point', 'turning_points']
+__all__: list[str] = ['CASES', 'DEFAULTS', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'TurningPoint', 'TurningPointRecord', 'TurningPoints', 'horizon_lengths', 'horizon_path', 'navigate', 'reachability', 'turning_point', 'turning_points']
 class HorizonPath:
     """
     The horizon path C -> arc -> straight -> T_n -> arc through W_n -> straight -> W_{n+1}.
@@ -89,7 +89,7 @@ class TurningPoint(HorizonPath):
     The optimal horizon path over theta and the four cases.
     """
     @property
-    def case_lengths(self) -> dict:
+    def case_lengths(self) -> dict[str, float]:
         """
         best length found per case (exact for the winner; the others are refined only where they could win)
         """
@@ -98,11 +98,35 @@ class TurningPoint(HorizonPath):
         """
         F(h) evaluations spent
         """
+class TurningPoints:
+    """
+    Turning points of many horizons, one row each.
+    """
+    @property
+    def case(self) -> numpy.typing.NDArray[numpy.int32]:
+        """
+        (n,) its turn case, indexing CASES
+        """
+    @property
+    def length(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) its weighted length
+        """
+    @property
+    def point(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        (n, 2) the turning points T_n
+        """
+    @property
+    def theta(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n,) theta of each optimum, rad
+        """
 class DubinsWaypointGuidance(vistrack._core.flight.FlightGuidance):
     """
     DWN as a flight guidance for vistrack.flight.fly: the law (5) to each turning point, the next one when it becomes unreachable; the last waypoint flown to directly.
     """
-    def __init__(self, law: vistrack._core.flight.LineFeedback, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> None:
+    def __init__(self, law: vistrack._core.flight.LineFeedback, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> None:
         ...
     @property
     def active(self) -> int:
@@ -219,7 +243,7 @@ def horizon_path(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing
     """
     The horizon path of one case at one theta.
     """
-def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), wind: vistrack._core.flight.Wind | None = None, integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None) -> NavigationResult:
+def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), wind: vistrack._core.flight.Wind | None = None, integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None) -> NavigationResult:
     """
     Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn'; returns NavigationResult. Releases the GIL.
     """
@@ -231,9 +255,9 @@ def turning_point(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typin
     """
     Turning point T_n over the horizon (pose C, W_n, W_{n+1}): minimises F = w_a L_a + w_s L_s over theta for the four cases; theta to 1e-12 rad.
     """
-def turning_points(poses: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], w_next: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], w_after: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> dict:
+def turning_points(poses: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], w_next: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], w_after: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> TurningPoints:
     """
-    Batch of turning points, one thread, GIL released: poses (n, 3), w_next and w_after (n, 2) -> dict of theta (n,), length (n,), case (n,) indexing CASES, point (n, 2).
+    Batch of turning points, one thread, GIL released: poses (n, 3), w_next and w_after (n, 2) -> TurningPoints.
     """
 CASES: tuple = ('ccw-ccw', 'ccw-cw', 'cw-ccw', 'cw-cw')
 DEFAULTS: dict = {'turn_radius': 0.7, 'speed': 0.8, 'dt': 0.02, 'gains': (0.1, 5.25), 'weights': (1.0, 1.0), 'integration': 'discrete', 'method': 'dwn'}

@@ -1,27 +1,10 @@
-#include "vistrack/parameters.hpp"
+// Validation of the orbit planner's inputs (orbit_parameters.hpp).
+#include "vistrack/orbit_parameters.hpp"
 
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
 
 namespace vistrack {
-
-void Uav::validate() const {
-  require_speed(speed, "uav.speed");
-  require_length(min_turn_radius, "uav.min_turn_radius");
-  require_coordinate(altitude, "uav.altitude");
-}
-
-void Sensor::validate() const {
-  require_length(d_max, "sensor.d_max");
-  if (altitude_band) {
-    require_coordinate(altitude_band->first, "sensor.altitude_band[0]");
-    require_coordinate(altitude_band->second, "sensor.altitude_band[1]");
-    if (!(altitude_band->first < altitude_band->second))
-      detail::fail_field("sensor.altitude_band", detail::to_text(altitude_band->first) + ", " +
-                                                     detail::to_text(altitude_band->second),
-                         "the lower altitude must be below the upper one");
-  }
-}
 
 void Planning::validate() const {
   require_length(spacing, "planning.spacing");
@@ -45,25 +28,6 @@ void Planning::validate() const {
                        "must not exceed planning.check_spacing = " + detail::to_text(check_spacing));
   if (!(turn_share > 0.0 && turn_share < 1.0))
     detail::fail_field("planning.turn_share", turn_share, "must be in (0, 1) (a share of the free turn rate)");
-}
-
-std::string to_string(Locus locus) { return locus == Locus::paper ? "paper" : "smooth"; }
-
-Locus locus_from_string(const std::string& text, const std::string& field) {
-  if (text == "smooth") return Locus::smooth;
-  if (text == "paper") return Locus::paper;
-  detail::fail_field(field, "\"" + text + "\"", "must be \"smooth\" or \"paper\"");
-}
-
-void Control::validate() const {
-  require_beta(beta, "control.beta");
-  require_heading_gain(k_psi, "control.k_psi");
-}
-
-void SimulationOptions::validate() const {
-  require_tolerances(rtol, atol, "simulation.");
-  require_in_range(max_step, 1e-9, 1e9, "s", "simulation.max_step");
-  require_in_range(output_step, 1e-6, 1e9, "s", "simulation.output_step");
 }
 
 }  // namespace vistrack

@@ -1,0 +1,74 @@
+// The follow planner's parameters, with their defaults.
+// Each validate() throws Error naming the field and its allowed range (vistrack/limits.hpp).
+#pragma once
+
+#include <cstdint>
+
+#include "vistrack/flight_parameters.hpp"
+#include "vistrack/geometry.hpp"
+
+namespace vistrack {
+
+enum class LoiterPattern : std::uint8_t { Circle = 0, Rose = 1 };
+template <>
+struct EnumNames<LoiterPattern> {
+  static constexpr const char* field = "loiter_pattern";
+  static constexpr EnumName<LoiterPattern> names[] = {{"circle", LoiterPattern::Circle}, {"rose", LoiterPattern::Rose}};
+};
+
+// "north": the offset is fixed to the map; "heading": it turns with the vehicle.
+enum class OffsetReference : std::uint8_t { North = 0, Heading = 1 };
+template <>
+struct EnumNames<OffsetReference> {
+  static constexpr const char* field = "offset_reference";
+  static constexpr EnumName<OffsetReference> names[] = {{"north", OffsetReference::North},
+      {"heading", OffsetReference::Heading}, {"cardinal", OffsetReference::North},
+      {"relative", OffsetReference::Heading}};
+};
+
+// The follow planner's settings. Angles in radians; speeds are taken from the Uav (airspeed v,
+// minimum turn radius r_min, altitude of the camera).
+struct FollowParameters {
+  // Sinusoidal mode (section II). T, the time the vehicle takes to travel one period D = v_g T.
+  double period = 30.0;               // s
+  // The tightest planned turn is turn_margin * r_min: the period is raised where the sinusoid's
+  // peak curvature A' 2 pi / D would exceed 1 / (turn_margin r_min), and the loiter circle's
+  // radius follows Lemma 6 of the tracking paper with this radius.
+  double turn_margin = 1.25;
+  // Loiter above the threshold h_sigma of the speed ratio sigma = v_p / v_g, with a hysteresis
+  // band of this full width centred on it: loiter from sigma > h + band / 2, back to the
+  // sinusoid below h - band / 2.
+  double threshold = 3.0;             // h_sigma (the paper's ~3)
+  double hysteresis = 0.5;            // full band width, < threshold
+  LoiterPattern loiter_pattern = LoiterPattern::Circle;  // Fig. 3
+  // Circle: its radius. Rose: the largest distance from the centre. 0: the smallest flyable
+  // (circle: turn_margin r_min (1 + 1 / (h - band / 2))^2; rose: 3 times that turn radius).
+  double loiter_radius = 0.0;         // m
+  Circulation loiter_direction = Circulation::CounterClockwise;
+  // Offset vector (Fig. 3): distance L and angle theta. reference "north": theta is fixed to the
+  // map (radians counter-clockwise from east); "heading": counter-clockwise from the vehicle's
+  // heading (0 ahead, pi/2 to its left).
+  double offset_distance = 0.0;       // m
+  double offset_angle = 0.0;          // rad
+  OffsetReference offset_reference = OffsetReference::Heading;
+  // Wind compensation (section III): plan in the air mass with the wind estimate (see follow.hpp).
+  bool wind_compensation = true;
+  // Waypoints are generated every update_period (section V: 1 Hz), each one the desired position
+  // update_period later.
+  double update_period = 1.0;         // s
+  void validate() const;
+};
+
+// How a follow run is flown by the flight layer at step dt, steered by the
+// waypoint paper's feedback law (5) with its gains (LineFeedbackGains, given for the paper's
+// turn radius 0.7) rescaled to the UAV's r_min, since g and h multiply lengths.
+struct FollowFlight {
+  // The paper's discrete update, or Dormand-Prince (then updates happen at the first accepted
+  // step ending at or after each update time, at most dt late).
+  FlightIntegration integration = FlightIntegration::Discrete;
+  double dt = 0.02;        // s, flight step and law step
+  double max_time = 0.0;   // s after the start; 0: until the vehicle's track ends
+  void validate() const;
+};
+
+}  // namespace vistrack

@@ -1,0 +1,42 @@
+// Dubins waypoint navigation's parameters, with their defaults.
+// Each validate() throws Error naming the field and its allowed range (vistrack/limits.hpp).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "vistrack/flight_parameters.hpp"
+
+namespace vistrack {
+
+// Fuel per unit length (1): w_a on arcs, w_s on straights; w_a = w_s = 1 is the shortest path (2).
+struct FuelWeights {
+  double arc = 1.0;       // w_a
+  double straight = 1.0;  // w_s
+  void validate() const;
+};
+
+enum class NavigationMethod : std::uint8_t { Dubins = 0, Classical = 1 };
+template <>
+struct EnumNames<NavigationMethod> {
+  static constexpr const char* field = "method";
+  static constexpr EnumName<NavigationMethod> names[] = {{"dwn", NavigationMethod::Dubins},
+      {"wn", NavigationMethod::Classical}};
+};
+
+// One navigation flight; the defaults are the paper's section 3 (R 0.7, v 0.8, dt 0.02, and the
+// gains g 0.1, h 5.25 of LineFeedbackGains).
+struct WaypointNavOptions {
+  NavigationMethod method = NavigationMethod::Dubins;
+  double turn_radius = 0.7;   // R: the vehicle's minimum turn radius and DWN's turning circles
+  double speed = 0.8;         // v
+  double dt = 0.02;           // the law's step (and the discrete flight's)
+  LineFeedbackGains gains;
+  std::optional<double> waypoint_radius;  // WN's R_WP; unset: R. DWN has none (set: an Error)
+  FuelWeights weights;
+  FlightIntegration integration = FlightIntegration::Discrete;
+  std::optional<double> max_time;  // unset: 3 (route length + 2 pi R per waypoint) / v
+  void validate() const;
+};
+
+}  // namespace vistrack
