@@ -1,7 +1,7 @@
 // The valid range of every numeric input, decided from the physics and from what doubles (and
 // Embree's floats) resolve, in one place. Each range is checked once, where input enters the API
 // (parameter structs' validate(), loaders, the public functions of each area), and the error says
-// the range. README.md, "Hardening", lists the same table.
+// the range. docs/limits.md is generated from this comment and the constants below.
 //
 //   coordinates (x, y, z of POIs, waypoints, vertices, footprints, centres, starts)  |v| <= 1e7 m
 //   lengths (rho, r_min, radii, d_max, spacings, steps, heights)                   [1e-6, 1e7] m

@@ -2,7 +2,7 @@
 
 A scenario names the environment, the POI's path, the UAV, the sensor, the planning, control and
 simulation settings, and optional constant-radius baselines. Every numeric default comes from
-the C++ parameter structs (cpp/include/vistrack/parameters.hpp), the single place defaults live;
+the C++ parameter structs (cpp/include/vistrack/<area>_parameters.hpp), the single place defaults live;
 ``vistrack run --print-defaults`` prints a complete scenario with them.
 
 Relative paths inside a scenario file are resolved against the file's own folder.
