@@ -20,7 +20,7 @@ from typing import Any, Callable, Mapping, Optional, Sequence
 
 from ._core import Environment, Uav
 from .flight import Gusts, Wind
-from .georeference import Georeference
+from .georeference import Georeference, degrees
 from .io.mesh import load_environment
 from .schema import fail, integer, number, positive, reject_unknown, resolve_path, section
 
@@ -34,6 +34,7 @@ __all__ = [
     "camera_block",
     "city_block",
     "georeference_block",
+    "renamed",
     "uav_block",
     "upgrade",
     "wind_block",
@@ -57,9 +58,14 @@ class Rename:
     convert: Optional[Callable[[Any], Any]] = None
 
 
-def upgrade(data: Mapping[str, Any], renames: Sequence[Rename], announce: Callable[[str], None] = print) -> dict:
-    """``data`` with every old spelling moved to its new key (one line through ``announce`` for
-    each); a file giving both the old and the new key is refused, naming the old one."""
+def renamed(old: str, new: str) -> None:
+    """The one line on stdout saying that an old spelling was read as its new key."""
+    print(f"vistrack: '{old}' is now '{new}' (still read; see the docs' Scenario files)")
+
+
+def upgrade(data: Mapping[str, Any], renames: Sequence[Rename]) -> dict:
+    """``data`` with every old spelling moved to its new key (one line on stdout for each, by
+    :func:`renamed`); a file giving both the old and the new key is refused, naming the old one."""
     out = {key: dict(value) if isinstance(value, Mapping) else value for key, value in data.items()}
     for rename in renames:
         found, value = _pop(out, rename.old)
@@ -68,7 +74,7 @@ def upgrade(data: Mapping[str, Any], renames: Sequence[Rename], announce: Callab
         if _has(out, rename.new):
             raise fail(rename.old, value, f"renamed to {rename.new}: give only {rename.new}")
         _put(out, rename.new, rename.convert(value) if rename.convert else value)
-        announce(f"vistrack: '{rename.old}' is now '{rename.new}' (still read; see the docs' Scenario files)")
+        renamed(rename.old, rename.new)
     return out
 
 
@@ -108,8 +114,8 @@ class UavBlock:
     """The ``uav`` block: the vehicle, its model and the product's own extra keys (e.g. ``start``)."""
 
     uav: Uav
-    dynamics: str = "dubins"
-    extra: Optional[dict[str, Any]] = None
+    dynamics: str
+    extra: dict[str, Any]
 
 
 def uav_block(data: Mapping[str, Any], default: Uav, extra: Sequence[str] = ()) -> UavBlock:
@@ -132,7 +138,7 @@ def wind_block(data: Mapping[str, Any]) -> Wind:
     the wind is slower than the airspeed is the flight's check (WindField), made where both are known."""
     found = section(data, "wind", {"east", "north", "gusts"})
     gusts = None
-    if found.get("gusts") is not None:
+    if found.get("gusts") not in (None, False):  # false or null: no gusts
         g = found["gusts"]
         if not isinstance(g, Mapping):
             raise fail("wind.gusts", g, "must be {seed, intensity, length_scale}")
@@ -224,8 +230,8 @@ def georeference_block(data: Mapping[str, Any]) -> Optional[Georeference]:
     for key in ("lat", "lon"):
         if key not in value:
             raise fail(f"georeference.{key}", None, "is required (degrees)")
-    return Georeference(number("georeference.lat", value["lat"], low=-90.0, high=90.0),
-                        number("georeference.lon", value["lon"], low=-180.0, high=180.0),
+    return Georeference(degrees("georeference.lat", value["lat"], 90.0),
+                        degrees("georeference.lon", value["lon"], 180.0),
                         number("georeference.alt", value.get("alt", 0.0)))
 
 

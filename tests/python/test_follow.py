@@ -175,6 +175,26 @@ def test_bad_input_names_the_field(call, field: str) -> None:
         call()
 
 
+def test_old_follow_spellings(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Before the one schema: city.map still loads (a mesh, Y up by default) with one line naming
+    its new key; city.altitude, which was no rename, is refused; gusts: false means no gusts."""
+    legs = "vehicle: {legs: [{heading: east, speed: 5, duration: 10}]}\n"
+    path = tmp_path / "old.yaml"
+    path.write_text(legs + "city: {map: city.obj, road: road.csv}\nwind: {north: 3, gusts: false}\n")
+    scenario = FollowScenario.load(path)
+    assert scenario.city is not None and scenario.city.kind == "mesh" and scenario.city.up == "y"
+    assert scenario.city.path == tmp_path / "city.obj" and scenario.city.road == tmp_path / "road.csv"
+    assert scenario.wind.gusts is None and scenario.wind.north == 3.0
+    assert capsys.readouterr().out.startswith("vistrack: 'city.map' is now 'city.mesh' (still read;")
+    path.write_text(legs + "city: {map: city.geojson, road: road.csv}\n")
+    city = FollowScenario.load(path).city
+    assert city is not None and city.kind == "geojson"
+    path.write_text(legs + "city: {map: city.obj, road: road.csv, altitude: 300}\n")
+    refuses(lambda: FollowScenario.load(path), "city.altitude = 300", "the flight altitude is uav.altitude")
+    path.write_text(legs + "city: {mesh: city.obj}\n")
+    refuses(lambda: FollowScenario.load(path), "city = ", "road: a CSV path")
+
+
 def test_scenario_errors_name_the_key(tmp_path: Path) -> None:
     def load(text: str) -> FollowScenario:
         path = tmp_path / "s.yaml"

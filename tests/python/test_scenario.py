@@ -92,7 +92,7 @@ def test_origin_georeferences_the_environment(tmp_path: Path, capsys: pytest.Cap
         ("city: {demo: true, mesh: a.obj}", r"city = .*exactly one of"),
         ("environment: {demo: true, mesh: a.obj}", r"city = .*exactly one of"),  # the old spelling, renamed
         ("environment: {demo: true}\ncity: {demo: true}", r"environment = .*renamed to city: give only city"),
-        ("georeference: {lat: 95, lon: 0}", r"georeference.lat = 95: must be <= 90 and >= -90"),
+        ("georeference: {lat: 95, lon: 0}", r"georeference.lat = 95: must be in \[-90, 90\] degrees"),
         ("georeference: {lon: 0}", r"georeference.lat = None: is required"),
         ("georeference: [35, -80]", r"georeference = \[35, -80\]: must be \{lat, lon, alt\}"),
         ("poi: {waypoints: [[0, 0]]}", r"poi.waypoints = .*at least two"),

@@ -46,6 +46,7 @@ from ..scenario_blocks import (
     city_block,
     georeference_block,
     origin_to_georeference,
+    renamed,
     uav_block,
     upgrade,
     wind_block,
@@ -335,5 +336,5 @@ def _old_city_map(data: Mapping[str, Any]) -> Mapping[str, Any]:
     if kind == "mesh":
         new.setdefault("up", "y")
     new[kind] = path
-    print(f"vistrack: 'city.map' is now 'city.{kind}' (still read; see the docs' Scenario files)")
+    renamed("city.map", f"city.{kind}")
     return {**data, "city": new}

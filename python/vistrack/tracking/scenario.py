@@ -154,7 +154,7 @@ class Scenario:
         scenario.environment = city_block(data, base) or City()
         scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
         uav = uav_block(data, Uav(), extra=("start",))
-        scenario.uav, scenario.start = uav.uav, _start(uav.extra or {})
+        scenario.uav, scenario.start = uav.uav, _start(uav.extra)
         scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(section(
             data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin",
