@@ -40,7 +40,7 @@ struct Options {
   double d_max = Sensor{}.d_max;
   double altitude = Uav{}.altitude;
   std::optional<std::pair<double, double>> band;
-  double resolution = Planning{}.resolution_deg;
+  double resolution = kDefaultResolutionDeg;
   std::string out = "vistrack-out/volumes";
   bool meshes = true;
   bool check = false;

@@ -154,6 +154,15 @@ TEST(FlightWind, WindAtOrAboveAirspeedIsAnErrorNamingTheField) {
   expect_error_names([&] { WindField(wind, 0.8, 0.0, 100.0); }, "wind.east");
 }
 
+TEST(FlightWind, AFieldMadeForAFasterVehicleIsCheckedAgainstThisOne) {
+  Wind wind;
+  wind.north = 0.9;
+  const WindField field(wind, 2.0, 0.0, 10.0);  // fine for an airspeed of 2
+  ConstantTurn g(0.0);
+  expect_error_names([&] { fly(vehicle(0.8, 0.7), field, g, {0, 0, 0}); }, "wind");
+  EXPECT_NO_THROW(fly(vehicle(1.0, 0.7), field, g, {0, 0, 0}, options(FlightIntegration::Discrete, 0.1, 1.0)));
+}
+
 TEST(FlightWind, MilF8785cLowAltitudeByHand) {
   // h = 50 m = 164.04 ft: 0.177 + 0.000823 h = 0.31200; W20 = 7.7 m/s (light, 15 kt).
   const DrydenLowAltitude m = dryden_low_altitude(50.0, 7.7);

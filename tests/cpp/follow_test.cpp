@@ -426,5 +426,20 @@ TEST(FollowCamera, ConeBankAndGimbal) {
   EXPECT_NEAR(coordinated_bank(20.0, 20.0 / 50.0), std::atan(8.0 / 9.80665), 1e-15);
 }
 
+// The wind against the airspeed is the flight layer's one check (WindField): both runs reach it.
+TEST(FollowRuns, WindAtTheAirspeedIsAnErrorNamingTheWind) {
+  const GroundVehicle car = GroundVehicle::from_legs({VehicleLeg{0.0, 5.0, 20.0}});
+  Uav uav;
+  uav.speed = 20.0;
+  uav.min_turn_radius = 50.0;
+  Wind storm;
+  storm.north = 20.0;
+  const std::string planner = error_message([&] { follow(car, uav, FollowParameters{}, storm, Vec2::Zero()); });
+  EXPECT_EQ(planner.rfind("wind", 0), 0u) << planner;
+  const std::string orbit =
+      error_message([&] { orbit_follow(car, uav, Control{}, 100.0, FollowParameters{}, storm); });
+  EXPECT_EQ(orbit.rfind("wind", 0), 0u) << orbit;
+}
+
 }  // namespace
 }  // namespace vistrack

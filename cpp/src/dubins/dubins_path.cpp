@@ -1,6 +1,5 @@
 // Dubins shortest path over the six words, one given word, and evaluation along a path.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <limits>
 

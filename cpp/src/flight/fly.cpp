@@ -244,11 +244,15 @@ FlightTrajectory fly_valid(const Uav& vehicle, const WindField& wind, FlightGuid
 
 }  // namespace
 
-// The wind field checked its speed against the airspeed it was made for (WindField).
+// A field built beforehand was checked against the airspeed it was made for, which may not be this
+// vehicle's: its largest speed (O(1), kept by the field) is checked here once more.
 FlightTrajectory fly(const Uav& vehicle, const WindField& wind, FlightGuidance& guidance, const Configuration& start,
                      const FlightOptions& options, double t0, const FlightCallback& on_step,
                      const FlightProgress& progress) {
   validate(vehicle, options, start, t0);
+  if (!(wind.max_speed() < vehicle.speed))
+    detail::fail_field("wind", wind.max_speed(),
+                       "its largest speed must be below the airspeed " + detail::to_text(vehicle.speed) + " m/s");
   return fly_valid(vehicle, wind, guidance, start, options, t0, on_step, progress);
 }
 

@@ -1,6 +1,5 @@
 // Loiter patterns about the offset point (Fig. 3): the circle and the rose of rotating lines.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 #include "vistrack/error.hpp"

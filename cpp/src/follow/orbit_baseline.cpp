@@ -34,7 +34,6 @@ FollowRun orbit_follow(const GroundVehicle& vehicle, const Uav& uav, const Contr
   require_positive(radius, "radius");
   const double t0 = vehicle.start_time();
   const double duration = options.flight.max_time > 0.0 ? options.flight.max_time : vehicle.end_time() - t0;
-  const WindField wind(true_wind, uav.speed, t0, duration);  // checks the wind against the airspeed
   if (!(uav.speed > vehicle.max_speed()))
     detail::fail_field("uav.speed", uav.speed,
                        "must exceed the vehicle's top speed " + detail::to_text(vehicle.max_speed()) +
@@ -42,6 +41,8 @@ FollowRun orbit_follow(const GroundVehicle& vehicle, const Uav& uav, const Contr
   const FollowPlanner offsets(parameters, uav);  // only its offset vector
   const GuidanceGains gains = GuidanceGains::from(uav, control);
   OrbitFollower guidance(vehicle, offsets, gains, radius);
+  // After the cheap checks: the field precomputes its gusts, and checks the wind against the airspeed.
+  const WindField wind(true_wind, uav.speed, t0, duration);
 
   Configuration start;
   if (options.start) {

@@ -4,7 +4,6 @@
 #include <CGAL/Polygon_2.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <limits>
 

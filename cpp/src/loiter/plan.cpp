@@ -1,6 +1,5 @@
 // Plans: names, segment evaluation, assembly from a walker, sampling.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <numeric>
 

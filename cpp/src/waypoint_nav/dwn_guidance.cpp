@@ -1,5 +1,6 @@
 // DWN as a flight guidance: law (5) to the turning point, re-planned when it becomes unreachable.
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/waypoint_nav.hpp"
 
 namespace vistrack {
@@ -11,8 +12,8 @@ DubinsWaypointGuidance::DubinsWaypointGuidance(const LineFeedback& law, const st
   weights.validate();
   if (waypoints.empty()) detail::fail_field("waypoints", 0, "DWN needs at least one waypoint");
   for (std::size_t k = 0; k < waypoints.size(); ++k) {
-    require_finite(waypoints[k].x(), "waypoints[" + std::to_string(k) + "].x");
-    require_finite(waypoints[k].y(), "waypoints[" + std::to_string(k) + "].y");
+    require_coordinate(waypoints[k].x(), "waypoints[" + std::to_string(k) + "].x");
+    require_coordinate(waypoints[k].y(), "waypoints[" + std::to_string(k) + "].y");
   }
 }
 
