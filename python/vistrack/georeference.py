@@ -162,7 +162,8 @@ def project_lon_lat(lon_lat: np.ndarray, origin: Georeference | Sequence[float])
     return np.column_stack([east, north])
 
 
-_from_geojson = Environment.from_geojson  # the binding: it takes the projection as an argument
+# The binding (it takes the projection as an argument); __wrapped__ keeps a reload from wrapping the wrapper.
+_from_geojson = getattr(Environment.from_geojson, "__wrapped__", Environment.from_geojson)
 
 
 def _environment_from_geojson(path: Any, origin: Any = None,
@@ -170,5 +171,6 @@ def _environment_from_geojson(path: Any, origin: Any = None,
     return _from_geojson(path, origin, project)
 
 
+_environment_from_geojson.__wrapped__ = _from_geojson  # type: ignore[attr-defined]
 _environment_from_geojson.__doc__ = (_from_geojson.__doc__ or "").partition("\n\n")[2]  # without the signature line
 Environment.from_geojson = staticmethod(_environment_from_geojson)  # type: ignore[method-assign]

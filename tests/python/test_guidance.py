@@ -199,7 +199,7 @@ def test_gain_and_tolerance_ranges_are_the_same_everywhere() -> None:
     refuses(lambda: vt.lemma7_min_gain(20.0, lim.MAX_BETA * 2), "beta", "1000")
     for section, key, value in [("control", "beta", 2e3), ("control", "k_psi", 0.0), ("simulation", "rtol", 1e-14),
                                 ("simulation", "atol", 1e7), ("planning", "rate_margin", 1.0)]:
-        refuses(lambda s=section, k=key, v=value: vt.Scenario.from_dict({s: {k: v}}), f"{section}.{key} = {value:g}")
+        refuses(lambda s=section, k=key, v=value: vt.Scenario.from_dict({s: {k: v}}), f"{section}.{key} = {value:g}:")
     # The follow scenario's baseline controller and the beta sweep of `tune` take the same range.
     import yaml
 

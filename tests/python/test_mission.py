@@ -302,3 +302,33 @@ def test_mission_geojson(tmp_path) -> None:
     route = data["features"][1]["geometry"]
     assert route["type"] == "LineString" and route["coordinates"][0] == [m.home[1], m.home[0]]  # lon, lat
     assert route["coordinates"][1] == [m.items[1].lon, m.items[1].lat]
+
+
+def test_old_addresses_answer_every_moved_name() -> None:
+    """vistrack.io and vistrack.mission still answer the names that moved into the products, as the
+    very objects of their new homes."""
+    import importlib
+
+    import vistrack.io
+    import vistrack.mission
+
+    for package in (vistrack.io, vistrack.mission):
+        moved = package.__getattr__.moved  # type: ignore[attr-defined]
+        assert moved, package.__name__
+        for name, home in moved.items():
+            assert getattr(package, name) is getattr(importlib.import_module(home), name), (package.__name__, name)
+
+
+def test_attached_to_mission_takes_the_converters_parameters() -> None:
+    """The to_mission methods attached in Python restate their converters' signatures (for the
+    stubs); they must not drift apart."""
+    import inspect
+
+    from vistrack.loiter.to_mission import loiter_plan_mission
+    from vistrack.tracking.to_mission import orbit_plan_mission
+
+    def parameters(function: object) -> list[tuple[str, object, object]]:
+        return [(p.name, p.kind, p.default) for p in list(inspect.signature(function).parameters.values())[1:]]
+
+    assert parameters(vt.OrbitPlan.to_mission) == parameters(orbit_plan_mission)
+    assert parameters(vt.loiter.Plan.to_mission) == parameters(loiter_plan_mission)

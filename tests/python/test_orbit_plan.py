@@ -6,15 +6,11 @@ import numpy as np
 import pytest
 
 import vistrack as vt
-
-
-def square(half: float, center=(0.0, 0.0)) -> np.ndarray:
-    cx, cy = center
-    return np.array([[cx - half, cy - half], [cx + half, cy - half], [cx + half, cy + half], [cx - half, cy + half]])
+from support.cities import square
 
 
 def test_max_inscribed_radius_analytic() -> None:
-    poly = vt.Polygon(square(10.0), [square(1.0, center=(5.0, 0.0))])
+    poly = vt.Polygon(square(0.0, 0.0, 10.0), [square(5.0, 0.0, 1.0)])
     # Nearest boundary from the origin is the hole's left edge at x = 4.
     assert vt.max_inscribed_radius([poly], np.array([0.0, 0.0])) == pytest.approx(4.0)
     assert vt.max_inscribed_radius([poly], np.array([0.0, 8.0])) == pytest.approx(2.0)

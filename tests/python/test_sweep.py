@@ -367,11 +367,11 @@ def test_a_failing_case_is_one_row(tmp_path: Path, capsys: pytest.CaptureFixture
     path.write_text(yaml.safe_dump(sweep, sort_keys=False))
     assert main(["sweep", str(path), "--out", str(tmp_path / "out"), "--scheduler", SERIAL, "--quiet"]) == 0
     printed = capsys.readouterr().out
-    assert "case 1 failed: sensor.d_max = -5" in printed
+    assert "case 1 failed: sensor.d_max = -5:" in printed
     rows = read_results_table(tmp_path / "out" / "results.parquet")
     assert [row["run_status"] for row in rows] == ["ok", "failed"]
     good, bad = rows
-    assert bad["sensor.d_max"] == -5.0 and "sensor.d_max = -5" in bad["run_error"]
+    assert bad["sensor.d_max"] == -5.0 and "sensor.d_max = -5:" in bad["run_error"]
     assert bad["simulation.visibility_fraction"] is None and bad["plan.samples"] is None
     assert good["run_error"] is None and 0.0 < good["simulation.visibility_fraction"] <= 1.0
     kept = [c for c in rows[0] if not c.startswith("run_")]

@@ -21,7 +21,7 @@ offset point, for comparison; with a ``VisibilityScene`` both also report the li
 through the buildings.
 
 - ``simulation``: the API above; ``scenario``: follow scenarios from YAML and the runs
-  ``vistrack follow`` makes (``vistrack.follow_scenario``); ``files``: vehicle tracks, road paths,
+  ``vistrack follow`` makes (old address: ``vistrack.follow_scenario``); ``files``: vehicle tracks, road paths,
   trajectories as CSV; ``to_mission``: a run's waypoints as an autopilot mission.
 """
 

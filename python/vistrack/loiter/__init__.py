@@ -9,7 +9,7 @@ covered at a time step when at least 75 % of its disk lies in the footprint.
 - ``planning``: plans, coverage and their metrics (the API below)
 - ``scenario``: a scenario's settings, seeded random scenarios; ``files``: its YAML, plans as CSV
 - ``flying``: a plan flown through the flight layer in wind, and scored
-- ``study``: every method on a scenario, random studies at scale (``vistrack.loiter_study``)
+- ``study``: every method on a scenario, random studies at scale (old address: ``vistrack.loiter_study``)
 - ``to_mission``: a plan as an autopilot mission; ``methods`` attaches it as ``Plan.to_mission``
 
 >>> import vistrack as vt
