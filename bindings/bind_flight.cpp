@@ -1,4 +1,4 @@
-// vistrack._core.flight: the Dubins vehicle in wind flown by a guidance law (flight.hpp).
+// vistrack._core.flight: the vehicle (Dubins or roll model) in wind flown by a guidance law (flight.hpp).
 #include <pybind11/eigen.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -159,6 +159,21 @@ void bind_flight(py::module_& parent) {
                              "(g, h)")
       .def_property_readonly("smooth_sign", &LineFeedback::smooth_sign, "whether sign(phi_T) is smoothed");
 
+  py::class_<L1Line>(m, "L1Line",
+                     "L1 line tracking as ArduPlane flies a leg (Park, Deyst & How 2004; AP_L1_Control): lateral "
+                     "acceleration 4 damping^2 v^2 / L1 sin(eta) towards the point L1 = damping period v / pi ahead "
+                     "on the line; continuous in the state (no chatter).")
+      .def(py::init([](double speed, double period, double damping) { return L1Line(speed, L1Gains{period, damping}); }),
+           py::arg("speed"), py::arg("period") = L1Gains{}.period, py::arg("damping") = L1Gains{}.damping,
+           "speed v; period (s, ArduPlane NAVL1_PERIOD 17) and damping (NAVL1_DAMPING 0.75).")
+      .def(
+          "turn_rate",
+          [](const L1Line& law, const Pose& q, const Vec2& line_start, const Vec2& target) {
+            return law.turn_rate(configuration(q), line_start, target);
+          },
+          py::arg("state"), py::arg("line_start"), py::arg("target"), "Turn rate a / v, rad/s.")
+      .def_property_readonly("distance", &L1Line::distance, "L1, length units");
+
   py::class_<FlightGuidance>(m, "FlightGuidance",
                              "A guidance law for fly(): turn-rate command and target from (x, y, psi) and t; its "
                              "stateful logic runs only after accepted steps.")
@@ -181,6 +196,11 @@ void bind_flight(py::module_& parent) {
            }),
            py::arg("law"), py::arg("waypoints"), py::arg("waypoint_radius"), py::arg("finish_at_last") = true,
            "law: LineFeedback; waypoints: array (n, 2); waypoint_radius R_WP >= 0.")
+      .def(py::init([](const L1Line& law, const InputArray& waypoints, double radius, bool finish_at_last) {
+             return WaypointFollower(law, to_points(waypoints, "waypoints"), radius, finish_at_last);
+           }),
+           py::arg("law"), py::arg("waypoints"), py::arg("waypoint_radius"), py::arg("finish_at_last") = true,
+           "The same with each leg flown by L1 line tracking (law: L1Line).")
       .def("add_waypoint", &WaypointFollower::add_waypoint, py::arg("point"),
            py::arg("available_from") = -std::numeric_limits<double>::infinity(),
            "Append a waypoint usable from time available_from on (non-decreasing); allowed during flight.")
@@ -193,9 +213,32 @@ void bind_flight(py::module_& parent) {
                              "time each waypoint was accepted (NaN: not yet)")
       .def_property_readonly("waypoint_radius", &WaypointFollower::acceptance_radius, "R_WP");
 
+  py::class_<FlightSmoothness>(m, "FlightSmoothness", "How smoothly a flight banks (flight_smoothness).")
+      .def_readonly("bank_rms_deg", &FlightSmoothness::bank_rms_deg,
+                    "RMS of the bank about its moving mean over the window, degrees")
+      .def_readonly("roll_reversals_per_s", &FlightSmoothness::roll_reversals_per_s,
+                    "reversals of the bank (deadband: successive extrema that far apart) per second")
+      .def_readonly("roll_reversals", &FlightSmoothness::roll_reversals, "their count")
+      .def_readonly("max_roll_rate_deg_s", &FlightSmoothness::max_roll_rate_deg_s,
+                    "largest |bank change / time| between successive samples, deg/s")
+      .def("as_dict", [](const FlightSmoothness& s) {
+             py::dict d;
+             d["bank_rms_deg"] = s.bank_rms_deg;
+             d["roll_reversals_per_s"] = s.roll_reversals_per_s;
+             d["roll_reversals"] = s.roll_reversals;
+             d["max_roll_rate_deg_s"] = s.max_roll_rate_deg_s;
+             return d;
+           }, "The measures as a dict (metrics.json).")
+      .def("__repr__", [](const FlightSmoothness& s) {
+        return Repr("FlightSmoothness")
+            .add("bank_rms_deg", s.bank_rms_deg)
+            .add("roll_reversals_per_s", s.roll_reversals_per_s)
+            .add("max_roll_rate_deg_s", s.max_roll_rate_deg_s)
+            .str();
+      });
   py::class_<FlightTrajectory>(m, "FlightTrajectory",
-                               "One sample per output time: state, the turn rate applied from there, the active "
-                               "target and the wind.")
+                               "One sample per output time: state, the turn rate applied from there, the bank, the "
+                               "active target and the wind.")
       .def_property_readonly("t", [](const FlightTrajectory& f) { return to_numpy(f.t); }, "times (n,), s")
       .def_property_readonly("x", [](const FlightTrajectory& f) { return to_numpy(f.x); }, "x (n,)")
       .def_property_readonly("y", [](const FlightTrajectory& f) { return to_numpy(f.y); }, "y (n,)")
@@ -203,6 +246,16 @@ void bind_flight(py::module_& parent) {
                              "heading (n,), rad, as integrated (not wrapped)")
       .def_property_readonly("command", [](const FlightTrajectory& f) { return to_numpy(f.command); },
                              "turn rate applied from each sample (clamped to +-v/R), rad/s")
+      .def_property_readonly("bank", [](const FlightTrajectory& f) { return to_numpy(f.bank); },
+                             "bank (n,), rad, positive left wing down: the roll model's state, or the Dubins "
+                             "model's coordinated bank of the turn rate applied from each sample")
+      .def_property_readonly("bank_command", [](const FlightTrajectory& f) { return to_numpy(f.bank_command); },
+                             "the coordinated bank of the guidance's clamped turn-rate command (n,), rad")
+      .def("smoothness", [](const FlightTrajectory& f, double window, double deadband_deg) {
+             return flight_smoothness(f.t, f.bank, window, deadband_deg);
+           },
+           py::arg("window") = 5.0, py::arg("deadband_deg") = 1.0,
+           "How smoothly this flight banks (FlightSmoothness of its bank history).")
       .def_property_readonly("target", [](const FlightTrajectory& f) { return columns({&f.target_x, &f.target_y}); },
                              "active target (n, 2)")
       .def_property_readonly(
@@ -222,18 +275,49 @@ void bind_flight(py::module_& parent) {
       .def_readonly("statistics", &FlightTrajectory::statistics, "integrator work, vistrack.OdeStatistics (continuous flights)")
       .def("__len__", &FlightTrajectory::size);
 
+  m.def("flight_smoothness",
+        [](const Eigen::VectorXd& t, const Eigen::VectorXd& bank, double window, double deadband_deg) {
+          return flight_smoothness(std::vector<double>(t.data(), t.data() + t.size()),
+                                   std::vector<double>(bank.data(), bank.data() + bank.size()), window, deadband_deg);
+        },
+        py::arg("t"), py::arg("bank"), py::arg("window") = 5.0,
+        py::arg("deadband_deg") = 1.0,
+        "How smoothly a bank history (t in s, increasing; bank in rad) banks: bank_rms_deg about its moving mean "
+        "over a centred window (s), roll_reversals_per_s with a deadband (successive extrema at least deadband_deg "
+        "apart), max_roll_rate_deg_s between samples.");
+
+  m.def("coordinated_bank", &coordinated_bank, py::arg("speed"), py::arg("turn_rate"),
+        py::arg("gravity") = kStandardGravity,
+        "Bank of a coordinated turn, atan(v psi_dot / g), rad (positive left).");
+
+  py::class_<RollModel>(m, "RollModel",
+                        "The roll model of a Uav: bank command atan(v r / g) within +-phi_max, "
+                        "phi_dot = clamp((phi_c - phi) / tau, +-p_max), psi_dot = g tan(phi) / v.")
+      .def(py::init<const Uav&, double>(), py::arg("uav"), py::arg("gravity") = kStandardGravity,
+           "The model of uav (its speed, min_turn_radius, roll_time_constant, max_roll_rate_deg_s).")
+      .def_property_readonly("max_bank", &RollModel::max_bank, "phi_max = atan(v^2 / (g R)), rad")
+      .def_property_readonly("time_constant", &RollModel::time_constant, "tau, s")
+      .def_property_readonly("max_roll_rate", &RollModel::max_roll_rate, "p_max, rad/s")
+      .def("bank_command", &RollModel::bank_command, py::arg("turn_rate"), "atan(v r / g) within +-phi_max, rad")
+      .def("bank_rate", &RollModel::bank_rate, py::arg("bank"), py::arg("bank_command"),
+           "clamp((phi_c - phi) / tau, +-p_max), rad/s")
+      .def("turn_rate", &RollModel::turn_rate, py::arg("bank"), "g tan(phi) / v, rad/s")
+      .def("step", &RollModel::step, py::arg("bank"), py::arg("bank_command"), py::arg("dt"),
+           "The bank after dt with the command held (closed form), rad.");
+
   const FlightOptions defaults;
   m.def(
       "fly",
       [](FlightGuidance& guidance, const Pose& start, double speed, double turn_radius,
          std::optional<Wind> wind, double dt, double max_time, FlightIntegration integration, double t0,
          std::optional<std::function<void(double, Pose)>> on_step,
-         std::optional<std::function<void(std::size_t, std::size_t)>> progress, double rtol, double atol) {
-        Uav vehicle;
-        vehicle.speed = speed;
-        vehicle.min_turn_radius = turn_radius;
+         std::optional<std::function<void(std::size_t, std::size_t)>> progress, double rtol, double atol,
+         std::optional<Uav> uav) {
         require_positive(speed, "speed");
         require_positive(turn_radius, "turn_radius");
+        Uav vehicle = uav.value_or(Uav{});
+        vehicle.speed = speed;
+        vehicle.min_turn_radius = turn_radius;
         FlightOptions options;
         options.integration = integration;
         options.dt = dt;
@@ -260,7 +344,9 @@ void bind_flight(py::module_& parent) {
       py::arg("dt") = defaults.dt, py::arg("max_time") = defaults.max_time,
       py::arg("integration") = defaults.integration, py::arg("t0") = 0.0, py::arg("on_step") = py::none(),
       py::arg("progress") = py::none(), py::arg("rtol") = defaults.rtol, py::arg("atol") = defaults.atol,
-      "Fly the vehicle (speed v, turn_radius R) from start (x, y, psi) at t0 under the guidance until it is done or "
+      py::arg("uav") = py::none(),
+      "Fly the vehicle (speed v, turn_radius R; uav: a Uav whose dynamics and roll parameters to use, its speed and "
+      "radius replaced by these, None: the Dubins model) from start (x, y, psi) at t0 under the guidance until it is done or "
       "t0 + max_time. integration 'discrete' (the paper's update, step dt) or 'continuous' (Dormand-Prince, output "
       "every dt). on_step(t, state) runs after each accepted step (it may feed the guidance); progress(done, total) "
       "in per mille of max_time. Releases the GIL (callbacks take it).");

@@ -143,17 +143,25 @@ void bind_follow(py::module_& parent) {
   const FollowFlight flight_defaults;
   py::class_<FollowFlight>(m, "FollowFlight",
                            "How a follow run is flown: integration ('discrete' | 'continuous'), step dt (s), "
-                           "max_time (s, 0: until the track ends).")
-      .def(py::init([](const std::string& integration, double dt, double max_time) {
-             FollowFlight f{from_name<FlightIntegration>(integration, "flight.integration"), dt, max_time};
+                           "max_time (s, 0: until the track ends), guidance of each 1 s leg ('law5': the paper's "
+                           "law (5); 'l1': L1 line tracking, beyond the paper) and the L1 gains (period s, damping).")
+      .def(py::init([](const std::string& integration, double dt, double max_time, LegGuidance guidance,
+                       double l1_period, double l1_damping) {
+             FollowFlight f{from_name<FlightIntegration>(integration, "flight.integration"), dt, max_time, guidance,
+                            L1Gains{l1_period, l1_damping}};
              f.validate();
              return f;
            }),
            py::kw_only(), py::arg("integration") = to_string(flight_defaults.integration),
-           py::arg("dt") = flight_defaults.dt, py::arg("max_time") = flight_defaults.max_time)
+           py::arg("dt") = flight_defaults.dt, py::arg("max_time") = flight_defaults.max_time,
+           py::arg("guidance") = flight_defaults.guidance, py::arg("l1_period") = flight_defaults.l1.period,
+           py::arg("l1_damping") = flight_defaults.l1.damping)
       .def_property_readonly("integration", [](const FollowFlight& f) { return to_string(f.integration); })
       .def_readwrite("dt", &FollowFlight::dt, "s")
-      .def_readwrite("max_time", &FollowFlight::max_time, "s; 0: until the track ends");
+      .def_readwrite("max_time", &FollowFlight::max_time, "s; 0: until the track ends")
+      .def_readwrite("guidance", &FollowFlight::guidance, "'law5' or 'l1'")
+      .def_property_readonly("l1_period", [](const FollowFlight& f) { return f.l1.period; }, "L1 period, s")
+      .def_property_readonly("l1_damping", [](const FollowFlight& f) { return f.l1.damping; }, "L1 damping");
 
   const DownwardCamera camera_defaults;
   py::class_<DownwardCamera>(m, "DownwardCamera",
@@ -170,8 +178,6 @@ void bind_follow(py::module_& parent) {
       .def_readwrite("max_gimbal", &DownwardCamera::max_gimbal, "rad");
   m.def("camera_sees", &camera_sees, py::arg("camera"), py::arg("uav"), py::arg("psi"), py::arg("bank"),
         py::arg("target"), "Whether the ground point target (3,) is in the footprint of the camera at uav (3,).");
-  m.def("coordinated_bank", &coordinated_bank, py::arg("speed"), py::arg("turn_rate"),
-        "Bank angle atan(v psi_dot / g) of a coordinated turn, rad (positive left).");
 
   py::class_<LoiterShape>(m, "LoiterShape", "The loiter pattern about its centre by arc length (circle or rose).")
       .def_property_readonly("pattern", [](const LoiterShape& s) { return to_string(s.pattern); })

@@ -14,20 +14,37 @@ namespace vistrack::bindings {
 
 void bind_parameters(py::module_& m) {
   const Uav uav_defaults;
-  py::class_<Uav>(m, "Uav", "The Dubins vehicle: constant speed, minimum turn radius, altitude.")
-      .def(py::init([](double speed, double min_turn_radius, double altitude) {
-             return make_validated(Uav{speed, min_turn_radius, altitude});
+  py::class_<Uav>(m, "Uav",
+                  "The vehicle: constant speed, minimum turn radius, altitude, and how it turns: dynamics "
+                  "'dubins' (the turn rate follows the guidance at once, the papers' vehicle) or 'roll' (the bank "
+                  "a first-order, rate-limited state: Beard & McLain ch. 9; SI units only).")
+      .def(py::init([](double speed, double min_turn_radius, double altitude, DynamicsModel dynamics,
+                       double roll_time_constant, double max_roll_rate_deg_s) {
+             return make_validated(
+                 Uav{speed, min_turn_radius, altitude, dynamics, roll_time_constant, max_roll_rate_deg_s});
            }),
            py::kw_only(), py::arg("speed") = uav_defaults.speed,
            py::arg("min_turn_radius") = uav_defaults.min_turn_radius,
-           py::arg("altitude") = uav_defaults.altitude,
-           "speed v (m/s), min_turn_radius r_min (m), altitude h_UAV (m).")
+           py::arg("altitude") = uav_defaults.altitude, py::arg("dynamics") = uav_defaults.dynamics,
+           py::arg("roll_time_constant") = uav_defaults.roll_time_constant,
+           py::arg("max_roll_rate_deg_s") = uav_defaults.max_roll_rate_deg_s,
+           "speed v (m/s), min_turn_radius r_min (m), altitude h_UAV (m), dynamics 'dubins' or 'roll', the roll "
+           "model's time constant tau (s; ArduPlane RLL2SRV_TCONST 0.5) and maximum roll rate (deg/s; PX4 "
+           "FW_R_RMAX 70).")
       .def_readwrite("speed", &Uav::speed, "v, m/s")
       .def_readwrite("min_turn_radius", &Uav::min_turn_radius, "r_min, m")
       .def_readwrite("altitude", &Uav::altitude, "h_UAV, m")
+      .def_readwrite("dynamics", &Uav::dynamics, "'dubins' or 'roll'")
+      .def_readwrite("roll_time_constant", &Uav::roll_time_constant, "tau of the roll model, s")
+      .def_readwrite("max_roll_rate_deg_s", &Uav::max_roll_rate_deg_s, "the roll model's rate limit, deg/s")
       .def("validate", &Uav::validate, "Raise VistrackError naming the first invalid field.")
       .def("__repr__", [](const Uav& u) {
-        return Repr("Uav").add("speed", u.speed).add("min_turn_radius", u.min_turn_radius).add("altitude", u.altitude).str();
+        Repr text("Uav");
+        text.add("speed", u.speed).add("min_turn_radius", u.min_turn_radius).add("altitude", u.altitude);
+        text.add("dynamics", u.dynamics);
+        if (u.dynamics == DynamicsModel::Roll)
+          text.add("roll_time_constant", u.roll_time_constant).add("max_roll_rate_deg_s", u.max_roll_rate_deg_s);
+        return text.str();
       });
 
   const PoiMotion poi_defaults;

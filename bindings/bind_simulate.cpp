@@ -54,7 +54,12 @@ void bind_simulate(py::module_& m) {
       .def_property_readonly("heading_error", [](const SimulationResult& r) { return to_numpy(r.heading_error); },
                              "psi - psi_d wrapped to (-pi, pi], rad")
       .def_property_readonly("control", [](const SimulationResult& r) { return to_numpy(r.control); },
-                             "applied turn rate u_psi (clamped to +-v/r_min), rad/s")
+                             "turn rate u_psi commanded by (86) (clamped to +-v/r_min), rad/s; the Dubins "
+                             "vehicle flies it at once")
+      .def_property_readonly("turn_rate", [](const SimulationResult& r) { return to_numpy(r.turn_rate); },
+                             "turn rate flown: u_psi (dubins) or g tan(phi) / v (roll), rad/s")
+      .def_property_readonly("bank", [](const SimulationResult& r) { return to_numpy(r.bank); },
+                             "bank (n,), rad: the roll model's state, or the coordinated bank of u_psi (dubins)")
       .def_property_readonly("control_unsaturated",
                              [](const SimulationResult& r) { return to_numpy(r.control_unsaturated); },
                              "the steering law (86) before the clamp, rad/s")

@@ -1,7 +1,12 @@
-"""The flight layer: one Dubins vehicle in wind, flown by a guidance law. Every planner flies here.
+"""The flight layer: one vehicle in wind, flown by a guidance law. Every planner flies here.
 
 The vehicle has a constant airspeed ``speed`` (v), heading psi and turn rate bounded by v / R;
-its ground velocity is v (cos psi, sin psi) + w(t). The wind w(t) is ``Wind(east, north)`` plus
+its ground velocity is v (cos psi, sin psi) + w(t). ``Uav.dynamics`` chooses how it turns:
+``"dubins"`` follows the guidance's turn rate at once (the papers' vehicle), ``"roll"`` banks
+towards the coordinated bank of that rate with a first-order, rate-limited response
+(``RollModel``; Beard & McLain, *Small Unmanned Aircraft*, ch. 9) and turns at g tan(phi) / v;
+pass ``fly(..., uav=vt.Uav(dynamics="roll"))``. Every trajectory has its ``bank``, and
+``trajectory.smoothness()`` (``flight_smoothness``) says how it chatters. The wind w(t) is ``Wind(east, north)`` plus
 optional ``Gusts`` (Dryden turbulence of MIL-F-8785C, horizontal components, seeded and
 reproducible; ``Gusts.mil_f_8785c(altitude, wind_speed_20ft, seed)`` derives the intensity and
 length scale from the low-altitude model). The guidance never sees the wind.
@@ -9,7 +14,7 @@ length scale from the low-altitude model). The guidance never sees the wind.
 ``fly(guidance, start, speed, turn_radius, wind=..., dt=..., integration=...)`` flies with the
 paper's discrete update (``"discrete"``: psi_{i+1} = psi_i + psi_turn, |psi_turn| <= v dt / R) or
 Dormand-Prince 5(4) (``"continuous"``) and returns a ``FlightTrajectory`` of numpy arrays
-(``t``, ``x``, ``y``, ``psi``, ``command``, ``target``, ``target_index``, ``wind``; ``array`` is
+(``t``, ``x``, ``y``, ``psi``, ``command``, ``bank``, ``target``, ``target_index``, ``wind``; ``array`` is
 (n, 4) t, x, y, psi).
 
 Guidance laws: ``LineFeedback`` is the feedback law (5) of the Dubins waypoint navigation paper;
@@ -36,22 +41,32 @@ Gusts = _flight.Gusts
 Wind = _flight.Wind
 WindField = _flight.WindField
 LineFeedback = _flight.LineFeedback
+L1Line = _flight.L1Line
 FlightGuidance = _flight.FlightGuidance
 WaypointFollower = _flight.WaypointFollower
 PathFollower = _flight.PathFollower  # lines and arcs (flight.hpp, Path following; the loiter plans)
 FlightTrajectory = _flight.FlightTrajectory
 dryden_low_altitude = _flight.dryden_low_altitude
 fly = _flight.fly
+RollModel = _flight.RollModel
+FlightSmoothness = _flight.FlightSmoothness
+flight_smoothness = _flight.flight_smoothness
+coordinated_bank = _flight.coordinated_bank
 
 __all__ = [
     "FlightGuidance",
+    "FlightSmoothness",
     "FlightTrajectory",
     "Gusts",
+    "L1Line",
     "LineFeedback",
     "PathFollower",
+    "RollModel",
     "WaypointFollower",
     "Wind",
     "WindField",
+    "coordinated_bank",
     "dryden_low_altitude",
+    "flight_smoothness",
     "fly",
 ]

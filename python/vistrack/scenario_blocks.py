@@ -1,6 +1,7 @@
 """The blocks every scenario file shares, parsed in this one place (docs: Scenario files)::
 
-    uav:          {speed, min_turn_radius, altitude, dynamics}   # the flight altitude lives here only
+    uav:          {speed, min_turn_radius, altitude, dynamics,    # the flight altitude lives here only
+                   roll_time_constant, max_roll_rate_deg_s}      # dynamics: roll (default) | dubins
     wind:         {east, north, gusts: {seed, intensity, length_scale}}   # m/s, the direction it blows to
     camera:       {fov_deg, max_gimbal_deg, mount}                # mount: levelled | roll
     city:         {mesh | geojson | demo, up, road}               # the environment
@@ -26,6 +27,7 @@ from .schema import fail, integer, number, positive, reject_unknown, resolve_pat
 
 __all__ = [
     "CAMERA_MOUNTS",
+    "DEFAULT_DYNAMICS",
     "DYNAMICS",
     "CameraBlock",
     "City",
@@ -33,19 +35,26 @@ __all__ = [
     "UavBlock",
     "camera_block",
     "city_block",
+    "default_uav",
+    "dynamics_name",
     "georeference_block",
     "renamed",
     "uav_block",
+    "uav_dict",
     "upgrade",
     "wind_block",
 ]
 
-# The vehicle models a flight can use; "dubins" is the instant-turn vehicle every planner flies.
-DYNAMICS = ("dubins",)
+# The vehicle models a flight can use (vistrack.Uav.dynamics): "roll" banks with a first-order,
+# rate-limited response, as an aircraft does; "dubins" turns at once, the papers' vehicle.
+DYNAMICS = ("roll", "dubins")
+# Scenario files flown in metres fly the roll model unless they say otherwise.
+DEFAULT_DYNAMICS = "roll"
 # levelled: the gimbal angle is measured from the vertical (it also takes out the bank);
 # roll: a roll gimbal under the banked body, so the axis tilts by gimbal - bank.
 CAMERA_MOUNTS = ("levelled", "roll")
-UAV_KEYS = {"speed", "min_turn_radius", "altitude", "dynamics"}
+UAV_NUMBERS = ("speed", "min_turn_radius", "altitude", "roll_time_constant", "max_roll_rate_deg_s")
+UAV_KEYS = {*UAV_NUMBERS, "dynamics"}
 
 
 @dataclass(frozen=True)
@@ -111,26 +120,51 @@ def _put(data: dict, dotted: str, value: Any) -> None:
 
 @dataclass
 class UavBlock:
-    """The ``uav`` block: the vehicle, its model and the product's own extra keys (e.g. ``start``)."""
+    """The ``uav`` block: the vehicle (its ``dynamics`` included) and the product's own extra keys
+    (e.g. ``start``)."""
 
     uav: Uav
-    dynamics: str
     extra: dict[str, Any]
+
+    @property
+    def dynamics(self) -> str:
+        return str(self.uav.dynamics)
+
+
+def dynamics_name(value: Any) -> str:
+    """A vehicle model's name, checked: ``"roll"`` or ``"dubins"`` (any letter case)."""
+    if not isinstance(value, str) or value.lower() not in DYNAMICS:
+        raise fail("uav.dynamics", value, "must be one of " + ", ".join(DYNAMICS))
+    return value.lower()
+
+
+def default_uav(**numbers: float) -> Uav:
+    """A vehicle with the C++ defaults (or ``numbers``) and the scenario files' model,
+    :data:`DEFAULT_DYNAMICS`."""
+    return Uav(dynamics=DEFAULT_DYNAMICS, **numbers)
+
+
+def uav_dict(uav: Uav) -> dict[str, Any]:
+    """The ``uav`` block of a vehicle, every key (what --print-defaults shows)."""
+    out: dict[str, Any] = {key: getattr(uav, key) for key in ("speed", "min_turn_radius", "altitude")}
+    out["dynamics"] = str(uav.dynamics)
+    out.update({key: getattr(uav, key) for key in ("roll_time_constant", "max_roll_rate_deg_s")})
+    return out
 
 
 def uav_block(data: Mapping[str, Any], default: Uav, extra: Sequence[str] = ()) -> UavBlock:
-    """``uav: {speed, min_turn_radius, altitude, dynamics}`` over ``default``; ``extra`` keys are
-    returned unparsed for the product."""
+    """``uav: {speed, min_turn_radius, altitude, dynamics, roll_time_constant, max_roll_rate_deg_s}``
+    over ``default`` (its numbers; the model is :data:`DEFAULT_DYNAMICS` unless given); ``extra``
+    keys are returned unparsed for the product."""
     found = section(data, "uav", UAV_KEYS | set(extra))
-    uav = Uav(speed=default.speed, min_turn_radius=default.min_turn_radius, altitude=default.altitude)
-    for key in ("speed", "min_turn_radius", "altitude"):
+    uav = Uav(speed=default.speed, min_turn_radius=default.min_turn_radius, altitude=default.altitude,
+              roll_time_constant=default.roll_time_constant, max_roll_rate_deg_s=default.max_roll_rate_deg_s)
+    for key in UAV_NUMBERS:
         if key in found:
             setattr(uav, key, number(f"uav.{key}", found[key]))
+    uav.dynamics = dynamics_name(found.get("dynamics", DEFAULT_DYNAMICS))
     uav.validate()
-    dynamics = found.get("dynamics", DYNAMICS[0])
-    if dynamics not in DYNAMICS:
-        raise fail("uav.dynamics", dynamics, "must be one of " + ", ".join(DYNAMICS))
-    return UavBlock(uav, dynamics, {key: found[key] for key in extra if key in found})
+    return UavBlock(uav, {key: found[key] for key in extra if key in found})
 
 
 def wind_block(data: Mapping[str, Any]) -> Wind:

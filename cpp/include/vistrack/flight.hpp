@@ -4,14 +4,20 @@
 // Vehicle: constant airspeed v, heading psi, turn rate |psi_dot| <= v / R; ground velocity
 // v (cos psi, sin psi) + w(t). The wind w(t) is a constant plus optional Dryden gusts
 // (WindField). The guidance never sees the wind: it gets the state (x, y, psi) and the time.
+// Uav::dynamics chooses how the turn rate follows the guidance's command: at once (Dubins, the
+// papers' vehicle) or through the bank angle, a state with a first-order, rate-limited response
+// (Roll, RollModel below; the flight starts level).
 //
 // Two ways to fly (FlightOptions::integration):
 //  * Discrete, the paper's update (Silverberg & Xu 2019, section 3.1): at t_i the guidance gives a
 //    turn rate r_i; psi_{i+1} = psi_i + clamp(r_i, -v/R, v/R) dt (so |psi_turn| <= psi_max = v dt / R),
 //    then the position moves over the step with the new heading:
 //    p_{i+1} = p_i + dt (v (cos psi_{i+1}, sin psi_{i+1}) + w(t_i + dt/2)).
+//    With the roll model the bank is advanced first, by RollModel::step (the exact response over
+//    the step to the command held), and the step turns at the new bank's rate g tan(phi_{i+1}) / v.
 //  * Continuous: (x, y, psi)' = (v cos psi + w_e(t), v sin psi + w_n(t), clamp(r(q, t))) by the
-//    Dormand-Prince 5(4) of ode.hpp, steps no longer than dt, output every dt.
+//    Dormand-Prince 5(4) of ode.hpp, steps no longer than dt, output every dt. With the roll model
+//    the state is (x, y, psi, phi) and psi' = g tan(phi) / v, phi' = RollModel::bank_rate.
 //
 // Stateful guidance (switching waypoints) changes only between steps, never inside the trial
 // right-hand-side evaluations of a step: FlightGuidance::command is const, and fly() calls
@@ -35,6 +41,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "vistrack/dubins.hpp"
@@ -139,6 +146,35 @@ class NormalStream {
 std::vector<double> dryden_series(const DrydenFilter& filter, std::size_t n, NormalStream& noise);
 }  // namespace detail
 
+// ---- Vehicle model ---------------------------------------------------------------------------
+
+// Bank angle of a coordinated turn at speed v and turn rate psi_dot: atan(v psi_dot / g) (rad,
+// positive: left wing down, turning left).
+double coordinated_bank(double speed, double turn_rate, double gravity = kStandardGravity);
+
+// The roll model of Uav::dynamics (dubins_parameters.hpp) for one vehicle: a bank command from the
+// guidance's turn rate, the bank's response to it, and the turn rate the bank gives.
+class RollModel {
+ public:
+  explicit RollModel(const Uav& vehicle, double gravity = kStandardGravity);
+
+  double max_bank() const { return max_bank_; }  // phi_max = atan(v^2 / (g R))
+  double time_constant() const { return tau_; }
+  double max_roll_rate() const { return max_rate_; }  // rad/s
+  // phi_c = atan(v r / g), within +-phi_max (r within +-v/R gives exactly that range).
+  double bank_command(double turn_rate) const;
+  // phi_dot = clamp((phi_c - phi) / tau, -p_max, p_max).
+  double bank_rate(double bank, double bank_command) const;
+  // psi_dot = g tan(phi) / v.
+  double turn_rate(double bank) const;
+  // The bank after dt with the command held: the closed-form solution of phi_dot above (a ramp at
+  // p_max while |phi_c - phi| > p_max tau, then the exponential approach).
+  double step(double bank, double bank_command, double dt) const;
+
+ private:
+  double speed_, gravity_, tau_, max_rate_, max_bank_;
+};
+
 // ---- Guidance ---------------------------------------------------------------------------------
 
 // What a guidance answers at one state and time: the turn rate it asks for (rad/s; the vehicle
@@ -236,7 +272,30 @@ class LineFeedback {
   bool smooth_sign_ = false;
 };
 
-// Classical waypoint navigation (WN) on the law (5): fly the line from the previous waypoint
+// L1 line tracking, as ArduPlane flies a leg (Park, Deyst & How, "A New Nonlinear Guidance Logic
+// for Trajectory Tracking", 2004; ArduPilot's AP_L1_Control::update_waypoint). The reference point
+// lies on the line from line_start to target, L1 = damping * period * v / pi ahead; with eta the
+// angle from the velocity to it, the lateral acceleration is a = 4 damping^2 v^2 / L1 sin(eta)
+// and the turn rate a / v. eta = Nu1 + Nu2: Nu2 the angle from the velocity to the line's
+// direction, Nu1 = asin(-e / L1) (e the cross-track error, positive left; |sin Nu1| <= 0.7071,
+// capture at 45 degrees at most), |eta| <= pi/2. Far behind the line's start (farther than L1,
+// more than 45 degrees behind) it flies to the start; more than 3 v seconds past the target, to
+// the target. Like every guidance here it uses the airspeed vector (it does not know the wind).
+// Its command is continuous in the state: no chatter, one law for discrete and continuous flight.
+class L1Line {
+ public:
+  L1Line() = default;
+  explicit L1Line(double speed, const L1Gains& gains = {});
+  double turn_rate(const Configuration& q, const Vec2& line_start, const Vec2& target) const;
+  double distance() const { return distance_; }  // L1, length units
+  const L1Gains& gains() const { return gains_; }
+
+ private:
+  double speed_ = 1.0, distance_ = 1.0;
+  L1Gains gains_;
+};
+
+// Classical waypoint navigation (WN) on the law (5) (or L1Line): fly the line from the previous waypoint
 // (the start position for the first) to the active waypoint; switch to the next one when within
 // the acceptance radius R_WP. With finish_at_last the guidance is done at the last waypoint;
 // without, it keeps steering to the last accepted waypoint and goes on when more are added
@@ -244,6 +303,9 @@ class LineFeedback {
 class WaypointFollower : public FlightGuidance {
  public:
   WaypointFollower(const LineFeedback& law, const std::vector<Vec2>& waypoints, double acceptance_radius,
+                   bool finish_at_last = true);
+  // The same switching with each leg flown by L1 line tracking instead of the law (5).
+  WaypointFollower(const L1Line& law, const std::vector<Vec2>& waypoints, double acceptance_radius,
                    bool finish_at_last = true);
 
   // Append a waypoint, usable from time available_from on (-infinity: at once). Allowed during
@@ -262,14 +324,13 @@ class WaypointFollower : public FlightGuidance {
   std::size_t active() const { return active_; }   // index of the active waypoint
   const Vec2& line_start() const { return line_start_; }
   double acceptance_radius() const { return acceptance_radius_; }
-  const LineFeedback& law() const { return law_; }
   // Time each waypoint was accepted (NaN while not yet).
   const std::vector<double>& accepted_at() const { return accepted_at_; }
 
  private:
   bool next_available(double t) const;
 
-  LineFeedback law_;
+  std::variant<LineFeedback, L1Line> law_;
   std::vector<Vec2> waypoints_;
   std::vector<double> available_from_;
   std::vector<double> accepted_at_;
@@ -283,10 +344,14 @@ class WaypointFollower : public FlightGuidance {
 // ---- Flying -----------------------------------------------------------------------------------
 
 // One sample per output time: the state, the turn rate applied from there (rad/s, clamped;
-// at the last sample the command there), the active target and the wind at that time.
+// at the last sample the command there), the bank, the active target and the wind at that time.
+// The bank: with the roll model the state's; with the Dubins model the coordinated bank of the
+// turn rate applied from the sample (what the vehicle would bank to at once).
 struct FlightTrajectory {
   std::vector<double> t, x, y, psi;  // psi as integrated (not wrapped)
   std::vector<double> command;
+  std::vector<double> bank;          // rad, positive left wing down
+  std::vector<double> bank_command;  // rad: the coordinated bank of the guidance's clamped command
   std::vector<double> target_x, target_y;
   std::vector<int> target_index;
   std::vector<double> wind_east, wind_north;
@@ -297,10 +362,27 @@ struct FlightTrajectory {
   std::size_t size() const { return t.size(); }
 };
 
+// How smoothly a flight banks (issue 28's measures; a real aircraft does not chatter):
+//  * bank_rms_deg: RMS of the bank about its moving mean over a centred window (5 s), degrees;
+//  * roll_reversals_per_s: reversals of the bank with a deadband (1 degree: successive extrema at
+//    least that far apart, so rounding noise in a steady turn counts nothing), per second of flight;
+//  * max_roll_rate_deg_s: the largest |bank change / time| between successive samples.
+struct FlightSmoothness {
+  double bank_rms_deg = 0.0;
+  double roll_reversals_per_s = 0.0;
+  std::size_t roll_reversals = 0;
+  double max_roll_rate_deg_s = 0.0;
+};
+// t increasing (equal times allowed: their bank change is not a rate), bank in rad, same length.
+// Error naming the field on a length mismatch, fewer than 2 samples, non-finite values,
+// decreasing times, window <= 0 or deadband < 0.
+FlightSmoothness flight_smoothness(const std::vector<double>& t, const std::vector<double>& bank,
+                                   double window = 5.0, double deadband_deg = 1.0);
+
 using FlightCallback = std::function<void(double t, const Configuration& state)>;
 using FlightProgress = std::function<void(std::size_t done, std::size_t total)>;
 
-// Flies the vehicle (speed, min_turn_radius of `vehicle`) from `start` at time t0 under the
+// Flies the vehicle (speed, min_turn_radius and dynamics of `vehicle`) from `start` at time t0 under the
 // guidance until it is done or t0 + max_time. on_step runs after each accepted step (after
 // guidance.advance); progress gets (elapsed, total) in per mille of max_time. The guidance is
 // used by reference and left in its final state.

@@ -57,6 +57,14 @@ struct LineFeedbackGains {
   void validate() const;
 };
 
+// Gains of the L1 line tracker (L1Line, flight.hpp): ArduPlane's defaults NAVL1_PERIOD = 17 s and
+// NAVL1_DAMPING = 0.75 (libraries/AP_L1_Control); L1 = damping * period * v / pi.
+struct L1Gains {
+  double period = 17.0;   // s
+  double damping = 0.75;
+  void validate() const;
+};
+
 // Gains of PathFollower (flight.hpp, Path following), scaled by the vehicle so one set fits every size:
 // the cross-track correction steers at atan(e / (lookahead_radii R)) back to the path, the heading
 // loop closes at heading_gain v / R per radian. With these the linearised cross-track error is a

@@ -233,8 +233,6 @@ struct DownwardCamera {
   double max_gimbal = 25.0 * kPi / 180.0;  // rad
   void validate() const;
 };
-// Bank angle of a coordinated turn at speed v and turn rate psi_dot (rad, positive left).
-double coordinated_bank(double speed, double turn_rate);
 // Whether the ground point `target` (x, y, z) is inside the footprint of the camera on a UAV at
 // `uav` (x, y, z) with heading psi and bank (positive: left wing down).
 bool camera_sees(const DownwardCamera& camera, const Vec3& uav, double psi, double bank, const Vec3& target);
@@ -284,7 +282,7 @@ struct FollowRun {
   std::vector<double> t;
   Points3 state;                      // x, y, psi
   std::vector<double> turn_rate;      // applied, rad/s
-  std::vector<double> bank;           // coordinated-turn bank, rad
+  std::vector<double> bank;           // the flown bank (FlightTrajectory::bank), rad
   Points2 vehicle;                    // vehicle position
   Points2 offset_point;
   Points2 desired;                    // desired position

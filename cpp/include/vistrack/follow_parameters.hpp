@@ -62,12 +62,25 @@ struct FollowParameters {
 // How a follow run is flown by the flight layer at step dt, steered by the
 // waypoint paper's feedback law (5) with its gains (LineFeedbackGains, given for the paper's
 // turn radius 0.7) rescaled to the UAV's r_min, since g and h multiply lengths.
+// How a follow run flies each 1 s leg between the planner's waypoints: by the law (5), as the
+// paper's waypoint follower does, or by L1 line tracking (beyond the paper: ArduPlane's leg
+// guidance, continuous in the state, so the bank does not chatter).
+enum class LegGuidance : std::uint8_t { LineFeedback = 0, L1 = 1 };
+
+template <>
+struct EnumNames<LegGuidance> {
+  static constexpr const char* field = "flight.guidance";
+  static constexpr EnumName<LegGuidance> names[] = {{"law5", LegGuidance::LineFeedback}, {"l1", LegGuidance::L1}};
+};
+
 struct FollowFlight {
   // The paper's discrete update, or Dormand-Prince (then updates happen at the first accepted
   // step ending at or after each update time, at most dt late).
   FlightIntegration integration = FlightIntegration::Discrete;
   double dt = 0.02;        // s, flight step and law step
   double max_time = 0.0;   // s after the start; 0: until the vehicle's track ends
+  LegGuidance guidance = LegGuidance::LineFeedback;
+  L1Gains l1;              // guidance l1
   void validate() const;
 };
 

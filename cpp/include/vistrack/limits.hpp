@@ -15,6 +15,8 @@
 //   ODE tolerances: rtol                                                          [1e-13, 1]
 //                   atol (m, rad)                                                 [1e-15, 1e6]
 //   a Dubins problem's coordinates relative to its turn radius                     max|x, y| <= 1e6 rho
+//   roll model: time constant tau                                                  [1e-3, 60] s
+//               maximum roll rate                                                  [1e-3, 1e4] deg/s
 //
 // Why: 1e7 m is a local frame of 10,000 km (any city, any flight); beyond it float32 ray tracing
 // and the orbit planner's metre-scale steps lose their meaning. A length below 1e-6 m (1 µm) or
@@ -29,6 +31,8 @@
 // over a microsecond, both far past what a step of the integrator resolves. Below rtol 1e-13 a
 // double-precision step's error estimate is rounding noise (scipy's floor is 100 eps); below atol
 // 1e-15 the scaled error norm overflows near a zero state; an atol above 1e6 m accepts any state.
+// A roll time constant of a millisecond is an instant roll (the Dubins model), one of a minute no
+// aircraft that can still turn; 1e4 deg/s is beyond any airframe and keeps the rate limit finite.
 #pragma once
 
 #include <string>
@@ -53,6 +57,10 @@ inline constexpr double kMinRelativeTolerance = 1e-13;
 inline constexpr double kMaxRelativeTolerance = 1.0;
 inline constexpr double kMinAbsoluteTolerance = 1e-15;
 inline constexpr double kMaxAbsoluteTolerance = 1e6;
+inline constexpr double kMinRollTimeConstant = 1e-3;  // s
+inline constexpr double kMaxRollTimeConstant = 60.0;  // s
+inline constexpr double kMinRollRate = 1e-3;          // deg/s
+inline constexpr double kMaxRollRate = 1e4;           // deg/s
 
 // "[1e-06, 1e+07] m" style text of a range, for messages.
 std::string range_text(double low, double high, const std::string& unit);

@@ -158,8 +158,6 @@ double ldlpp_turn_angle(double aoi_radius, double turn_radius);
 
 // ---- Camera footprint and coverage ------------------------------------------------------------
 
-constexpr double kStandardGravity = 9.80665;
-
 // The footprint of a conic camera on flat ground: an ellipse. Its axes are along the heading
 // (semi_along) and across it (semi_across), its centre offset to the left of the nadir point.
 struct Footprint {

@@ -2,6 +2,8 @@
 // Each validate() throws Error naming the field and its allowed range (vistrack/limits.hpp).
 #pragma once
 
+#include "vistrack/dubins_parameters.hpp"
+
 namespace vistrack {
 
 // Wilhelm, Clem, Eberhart, "Direct Entry Minimal Path UAV Loitering Path Planning" (2017),
@@ -34,7 +36,7 @@ struct LoiterCamera {
 struct LoiterCoverageOptions {
   double threshold = 0.75;
   double dt = 1.0;          // s
-  double gravity = 9.80665; // m/s^2, for the bank angle of a coordinated turn
+  double gravity = kStandardGravity; // m/s^2, for the bank angle of a coordinated turn
   void validate() const;
 };
 

@@ -1,7 +1,10 @@
-// The closed loop of section VI: the Dubins vehicle (1) steered by (86) around the time-varying
+// The closed loop of section VI: the vehicle (1) steered by (86) around the time-varying
 // orbit of an OrbitPlan, integrated by Dormand-Prince 5(4) and restarted at every instant where
 // R_dot (the paper's locus), R_ddot (the smooth one) or the POI velocity jumps; optional
-// line-of-sight evaluation at every output sample.
+// line-of-sight evaluation at every output sample. Uav::dynamics chooses the vehicle: the turn
+// rate is (86)'s command at once (Dubins, the paper's), or the roll model of the flight layer
+// (flight.hpp) banks towards the coordinated bank of that command (the state gains phi, level at
+// the start) and turns at g tan(phi) / v.
 #pragma once
 
 #include <cstdint>
@@ -30,7 +33,9 @@ struct SimulationResult {
   std::vector<double> desired_heading_rate;  // dpsi_d/dt along the field (85)
   std::vector<double> radial_error;      // r - R
   std::vector<double> heading_error;     // psi - psi_d wrapped to (-pi, pi]
-  std::vector<double> control;           // u_psi applied (clamped to +-v / r_min)
+  std::vector<double> control;           // u_psi commanded by (86) (clamped to +-v / r_min)
+  std::vector<double> turn_rate;         // psi_dot flown: u_psi (Dubins) or g tan(phi) / v (roll)
+  std::vector<double> bank;              // rad: the roll model's state, or the coordinated bank of u_psi
   std::vector<double> control_unsaturated;  // (86) before the clamp
   Points3 poi;                           // (n, 3) POI position g(t) with the path's z
   std::vector<double> orbit_radius;      // R(t)
@@ -59,7 +64,7 @@ SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0,
 
 // The trajectory as CSV text, one sample per line, with the header
 // t,x,y,psi,psi_d,psi_d_rate,radial_error,heading_error,u_psi,u_psi_unsaturated,poi_x,poi_y,poi_z,
-// orbit_radius[,visible]. Full double precision.
+// orbit_radius,bank[,visible]. Full double precision.
 std::string trajectory_csv(const SimulationResult& result);
 
 // The same closed loop with the line of sight of an Embree scene at every sample: the UAV at

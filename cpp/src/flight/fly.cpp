@@ -1,5 +1,5 @@
-// fly(): the Dubins vehicle in wind under a FlightGuidance, discrete (the paper's update) or
-// continuous (Dormand-Prince 5(4) with switching located on the dense output).
+// fly(): the vehicle (Dubins or roll model) in wind under a FlightGuidance, discrete (the paper's
+// update) or continuous (Dormand-Prince 5(4) with switching located on the dense output).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,9 +13,11 @@ namespace vistrack {
 
 namespace {
 
-using State = OdeVector<3>;
-
-Configuration as_configuration(const State& y) { return {y[0], y[1], y[2]}; }
+// Continuous state: (x, y, psi) for the Dubins model, (x, y, psi, phi) for the roll model.
+template <int N>
+Configuration as_configuration(const OdeVector<N>& y) {
+  return {y[0], y[1], y[2]};
+}
 
 // Everything one flight shares between its two integrators.
 class Flight {
@@ -24,6 +26,8 @@ class Flight {
          double t0, const FlightCallback& on_step, const FlightProgress& progress)
       : v_(vehicle.speed),
         rate_limit_(vehicle.speed / vehicle.min_turn_radius),
+        roll_(vehicle.dynamics == DynamicsModel::Roll),
+        roll_model_(vehicle),
         wind_(wind),
         guidance_(guidance),
         options_(options),
@@ -38,19 +42,15 @@ class Flight {
     return std::clamp(rate, -rate_limit_, rate_limit_);
   }
 
-  void record(double t, const Configuration& q) {
+  // A sample of the continuous flight: the turn rate there is the command's (Dubins) or the
+  // bank's (roll).
+  template <int N>
+  void record(double t, const OdeVector<N>& y) {
+    const Configuration q = as_configuration(y);
     const GuidanceCommand c = guidance_.command(q, t);
-    const Vec2 w = wind_.at(t);
-    out_.t.push_back(t);
-    out_.x.push_back(q.x);
-    out_.y.push_back(q.y);
-    out_.psi.push_back(q.psi);
-    out_.command.push_back(clamp_rate(c.turn_rate));
-    out_.target_x.push_back(c.target.x());
-    out_.target_y.push_back(c.target.y());
-    out_.target_index.push_back(c.target_index);
-    out_.wind_east.push_back(w.x());
-    out_.wind_north.push_back(w.y());
+    const double rate = clamp_rate(c.turn_rate);
+    if constexpr (N == 4) push(t, q, roll_model_.turn_rate(y[3]), y[3], c);
+    else push(t, q, rate, c);
   }
 
   // After an accepted step: the guidance's stateful logic, then the caller's hook (which may
@@ -84,10 +84,18 @@ class Flight {
     reserve(std::min<std::size_t>(steps + 1, 1'000'000));
     Configuration q = start;
     double t = t0_;
+    double bank = 0.0;  // roll model: level at the start
     for (std::size_t k = 0; k < steps && !guidance_.done(); ++k) {
       const GuidanceCommand c = guidance_.command(q, t);
-      const double rate = clamp_rate(c.turn_rate);
-      push(t, q, rate, c);
+      double rate = clamp_rate(c.turn_rate);
+      if (roll_) {
+        const double bank_now = bank;
+        bank = roll_model_.step(bank, roll_model_.bank_command(rate), dt);
+        rate = roll_model_.turn_rate(bank);
+        push(t, q, rate, bank_now, c);
+      } else {
+        push(t, q, rate, c);
+      }
       q.psi += rate * dt;
       const Vec2 w = wind_.at(t + 0.5 * dt);
       q.x += dt * (v_ * std::cos(q.psi) + w.x());
@@ -95,13 +103,15 @@ class Flight {
       t = t0_ + static_cast<double>(k + 1) * dt;  // no drift from summing dt
       after_step(t, q);
     }
-    record(t, q);
+    if (roll_) record(t, OdeVector<4>(q.x, q.y, q.psi, bank));
+    else record(t, OdeVector<3>(q.x, q.y, q.psi));
     return finish(t);
   }
 
   FlightTrajectory continuous(const Configuration& start) {
     try {
-      return integrate(start);
+      if (roll_) return integrate<4>(OdeVector<4>(start.x, start.y, start.psi, 0.0));
+      return integrate<3>(OdeVector<3>(start.x, start.y, start.psi));
     } catch (const Error& e) {
       throw Error(std::string(e.what()) +
                   " (integration = continuous: a guidance whose command jumps back and forth, such as "
@@ -109,7 +119,9 @@ class Flight {
     }
   }
 
-  FlightTrajectory integrate(const Configuration& start) {
+  template <int N>
+  FlightTrajectory integrate(const OdeVector<N>& start) {
+    using State = OdeVector<N>;
     const double dt = options_.dt;
     OdeOptions ode;
     ode.rtol = options_.rtol;
@@ -119,27 +131,32 @@ class Flight {
     // fast instead of crawling.
     ode.max_steps = 100 * static_cast<std::size_t>(std::ceil(options_.max_time / dt)) + 1000;
     reserve(std::min<std::size_t>(static_cast<std::size_t>(options_.max_time / dt) + 2, 1'000'000));
-    State y(start.x, start.y, start.psi);
+    State y = start;
     double t = t0_;
-    record(t, start);
+    record(t, y);
     std::size_t next_output = 1;  // outputs at t0 + k dt
     auto rhs = [this](double time, const State& s, State& ds) {
       const double rate = clamp_rate(guidance_.command(as_configuration(s), time).turn_rate);
       const Vec2 w = wind_.at(time);
       ds[0] = v_ * std::cos(s[2]) + w.x();
       ds[1] = v_ * std::sin(s[2]) + w.y();
-      ds[2] = rate;
+      if constexpr (N == 4) {
+        ds[2] = roll_model_.turn_rate(s[3]);
+        ds[3] = roll_model_.bank_rate(s[3], roll_model_.bank_command(rate));
+      } else {
+        ds[2] = rate;
+      }
     };
     while (!guidance_.done() && t < t_end_) {
       // End the step sequence where the guidance changes by itself or the wind has a kink.
       double bound = t_end_;
       for (double change : {guidance_.next_change_time(t), wind_.next_sample_time(t)})
         if (change > t && change < bound) bound = change;
-      DormandPrince<3, decltype(rhs)> stepper(rhs, t, y, bound, ode);
+      DormandPrince<N, decltype(rhs)> stepper(rhs, t, y, bound, ode);
       double g_old = guidance_.switching_function(as_configuration(y), t);
       bool restart = false;
       while (!restart && stepper.step()) {
-        const DenseStep<3>& step = stepper.last_step();
+        const DenseStep<N>& step = stepper.last_step();
         double t_stop = step.t_new;
         const double g_new = guidance_.switching_function(as_configuration(step.y_new), step.t_new);
         bool event = g_old > 0.0 && g_new <= 0.0;
@@ -150,7 +167,7 @@ class Flight {
         while (true) {
           const double t_out = t0_ + static_cast<double>(next_output) * dt;
           if (t_out >= t_stop || t_out > t_end_) break;
-          record(t_out, as_configuration(step(t_out)));
+          record<N>(t_out, step(t_out));
           ++next_output;
         }
         t = t_stop;
@@ -158,21 +175,22 @@ class Flight {
         restart = after_step(t, as_configuration(y)) || event;
         const bool on_grid = t0_ + static_cast<double>(next_output) * dt == t;
         if (on_grid) ++next_output;
-        if ((event || on_grid) && out_.t.back() != t) record(t, as_configuration(y));
+        if ((event || on_grid) && out_.t.back() != t) record(t, y);
         if (guidance_.done()) break;
         g_old = guidance_.switching_function(as_configuration(y), t);
       }
       out_.statistics += stepper.statistics();
       if (!restart && stepper.finished() && bound == t_end_) break;
     }
-    if (out_.t.back() != t) record(t, as_configuration(y));
+    if (out_.t.back() != t) record(t, y);
     return finish(t);
   }
 
  private:
   // The earliest time in the step where the switching function is <= 0, to the last bit, by
   // bisection on the dense output (the right end of the bracket, so advance() sees the switch).
-  double first_nonpositive(const DenseStep<3>& step) const {
+  template <int N>
+  double first_nonpositive(const DenseStep<N>& step) const {
     double lo = step.t_old, hi = step.t_new;
     for (int k = 0; k < 200 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * std::abs(hi); ++k) {
       const double mid = 0.5 * (lo + hi);
@@ -184,19 +202,26 @@ class Flight {
   }
 
   void reserve(std::size_t n) {
-    for (auto* v : {&out_.t, &out_.x, &out_.y, &out_.psi, &out_.command, &out_.target_x, &out_.target_y,
-                    &out_.wind_east, &out_.wind_north})
+    for (auto* v : {&out_.t, &out_.x, &out_.y, &out_.psi, &out_.command, &out_.bank, &out_.bank_command,
+                    &out_.target_x, &out_.target_y, &out_.wind_east, &out_.wind_north})
       v->reserve(n);
     out_.target_index.reserve(n);
   }
 
+  // A Dubins sample: the bank is the coordinated bank of the rate applied from here.
   void push(double t, const Configuration& q, double rate, const GuidanceCommand& c) {
+    push(t, q, rate, coordinated_bank(v_, rate), c);
+  }
+
+  void push(double t, const Configuration& q, double rate, double bank, const GuidanceCommand& c) {
     const Vec2 w = wind_.at(t);
     out_.t.push_back(t);
     out_.x.push_back(q.x);
     out_.y.push_back(q.y);
     out_.psi.push_back(q.psi);
     out_.command.push_back(rate);
+    out_.bank.push_back(bank);
+    out_.bank_command.push_back(roll_model_.bank_command(clamp_rate(c.turn_rate)));
     out_.target_x.push_back(c.target.x());
     out_.target_y.push_back(c.target.y());
     out_.target_index.push_back(c.target_index);
@@ -212,6 +237,8 @@ class Flight {
   }
 
   double v_, rate_limit_;
+  bool roll_;
+  RollModel roll_model_;
   const WindField& wind_;
   FlightGuidance& guidance_;
   FlightOptions options_;

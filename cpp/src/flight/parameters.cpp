@@ -31,6 +31,11 @@ void PathFollowingGains::validate() const {
   require_positive(heading_gain, "gains.heading_gain");
 }
 
+void L1Gains::validate() const {
+  require_in_range(period, 1e-3, 1e4, "s", "gains.period");
+  require_in_range(damping, 1e-3, 10.0, "", "gains.damping");
+}
+
 void LineFeedbackGains::validate() const {
   require_non_negative(g, "gains.g");
   require_non_negative(h, "gains.h");

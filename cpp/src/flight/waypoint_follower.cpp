@@ -1,4 +1,5 @@
-// Classical waypoint navigation: the law (5) to the active waypoint, switching inside R_WP.
+// Classical waypoint navigation: the law (5) (or L1 line tracking) to the active waypoint,
+// switching inside R_WP.
 #include <cmath>
 #include <limits>
 
@@ -9,6 +10,13 @@ namespace vistrack {
 
 WaypointFollower::WaypointFollower(const LineFeedback& law, const std::vector<Vec2>& waypoints,
                                    double acceptance_radius, bool finish_at_last)
+    : law_(law), acceptance_radius_(acceptance_radius), finish_at_last_(finish_at_last) {
+  require_non_negative(acceptance_radius, "waypoint_radius");
+  for (const Vec2& w : waypoints) add_waypoint(w);
+}
+
+WaypointFollower::WaypointFollower(const L1Line& law, const std::vector<Vec2>& waypoints, double acceptance_radius,
+                                   bool finish_at_last)
     : law_(law), acceptance_radius_(acceptance_radius), finish_at_last_(finish_at_last) {
   require_non_negative(acceptance_radius, "waypoint_radius");
   for (const Vec2& w : waypoints) add_waypoint(w);
@@ -47,7 +55,7 @@ GuidanceCommand WaypointFollower::command(const Configuration& state, double) co
   GuidanceCommand c;
   c.target = waypoints_[active_];
   c.target_index = static_cast<int>(active_);
-  c.turn_rate = law_.turn_rate(state, line_start_, c.target);
+  c.turn_rate = std::visit([&](const auto& law) { return law.turn_rate(state, line_start_, c.target); }, law_);
   return c;
 }
 

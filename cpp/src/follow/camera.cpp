@@ -8,16 +8,6 @@
 
 namespace vistrack {
 
-namespace {
-constexpr double kGravity = 9.80665;  // m/s^2
-}
-
-double coordinated_bank(double speed, double turn_rate) {
-  require_finite(speed, "speed");
-  require_finite(turn_rate, "turn_rate");
-  return std::atan(speed * turn_rate / kGravity);
-}
-
 bool camera_sees(const DownwardCamera& camera, const Vec3& uav, double psi, double bank, const Vec3& target) {
   const Vec3 left(-std::sin(psi), std::cos(psi), 0.0);
   const Vec3 up(0.0, 0.0, 1.0);

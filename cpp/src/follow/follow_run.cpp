@@ -89,6 +89,7 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   gains.g *= kPaperTurnRadius / uav.min_turn_radius;
   gains.h *= kPaperTurnRadius / uav.min_turn_radius;
   const LineFeedback law(uav.speed, uav.min_turn_radius, options.flight.dt, gains);
+  const L1Line l1(uav.speed, options.flight.l1);
 
   // The planner's update at t with the scheduled offset and its rate over the next update.
   const auto plan = [&](double t, const Vec2& p, double psi) {
@@ -107,7 +108,9 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   };
   const Vec2 start_position(start.x, start.y);
   plan(t0, start_position, start.psi);
-  WaypointFollower follower(law, {run.ticks.back().waypoint}, kSwitchAtOnce, /*finish_at_last=*/false);
+  WaypointFollower follower = options.flight.guidance == LegGuidance::L1
+                                  ? WaypointFollower(l1, {run.ticks.back().waypoint}, kSwitchAtOnce, false)
+                                  : WaypointFollower(law, {run.ticks.back().waypoint}, kSwitchAtOnce, false);
 
   // Every update_period: observe, plan, issue the next waypoint (available at once).
   double next_update = t0 + period;

@@ -57,7 +57,7 @@ void score_follow_run(FollowRun& run, const Uav& uav, const DownwardCamera& came
   const std::size_t n = run.t.size();
   FollowMetrics& m = run.metrics;
   m = FollowMetrics{};
-  run.bank.assign(n, 0.0);
+  // run.bank is the flight's (size_run_samples): the camera looks from the bank flown.
   run.in_view.assign(n, 0);
   run.tracking_error.assign(n, 0.0);
   run.along_track_lag.assign(n, 0.0);
@@ -91,7 +91,6 @@ void score_follow_run(FollowRun& run, const Uav& uav, const DownwardCamera& came
     const Vec2 vehicle = row(run.vehicle, i);
     const Vec2 desired = row(run.desired, i);
 
-    run.bank[i] = coordinated_bank(uav.speed, run.turn_rate[i]);
     run.in_view[i] = camera_sees(camera, Vec3(p.x(), p.y(), uav.altitude), run.state(static_cast<Eigen::Index>(i), 2),
                                  run.bank[i], Vec3(vehicle.x(), vehicle.y(), 0.0))
                          ? 1

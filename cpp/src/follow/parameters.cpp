@@ -30,6 +30,7 @@ void FollowParameters::validate() const {
 void FollowFlight::validate() const {
   require_positive(dt, "flight.dt");
   require_non_negative(max_time, "flight.max_time");
+  l1.validate();
 }
 
 void DownwardCamera::validate() const {

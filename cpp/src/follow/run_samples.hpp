@@ -5,12 +5,13 @@
 
 namespace vistrack::detail {
 
-// Copies the flight's times and turn-rate commands into run and sizes the per-sample arrays that
+// Copies the flight's times, turn rates and bank into run and sizes the per-sample arrays that
 // the caller fills (state, vehicle, offset point, desired position, target, wind).
 inline void size_run_samples(FollowRun& run, const FlightTrajectory& trajectory) {
   const auto n = static_cast<Eigen::Index>(trajectory.size());
   run.t = trajectory.t;
   run.turn_rate = trajectory.command;
+  run.bank = trajectory.bank;
   run.state.resize(n, 3);
   run.vehicle.resize(n, 2);
   run.offset_point.resize(n, 2);

@@ -1,4 +1,5 @@
-// Closed-loop simulation of section VI: the Dubins vehicle (1) under the steering law (86).
+// Closed-loop simulation of section VI: the vehicle (1) under the steering law (86), turning at
+// once (Dubins) or through its bank (the flight layer's roll model).
 #include "vistrack/simulate.hpp"
 
 #include <algorithm>
@@ -6,6 +7,7 @@
 #include <string>
 
 #include "vistrack/error.hpp"
+#include "vistrack/flight.hpp"
 #include "vistrack/limits.hpp"
 
 namespace vistrack {
@@ -67,8 +69,11 @@ std::vector<double> output_times(double t0, double t1, double step) {
   return times;
 }
 
+// The integrated state: (x, y, psi), and the bank phi with the roll model (N = 4).
+template <int N>
 SimulationResult closed_loop(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
                              const SimulationOptions& options, double fixed_step) {
+  using State = OdeVector<N>;
   uav.validate();
   control.validate();
   options.validate();
@@ -84,6 +89,7 @@ SimulationResult closed_loop(const OrbitPlan& plan, const Uav& uav, const Vec3& 
     detail::fail_field(fixed_step > 0.0 ? "fixed_step" : "simulation.max_step", smallest_step,
                        "takes more than 1e8 steps over the plan's " + detail::to_text(span) + " s");
   const GuidanceGains gains = GuidanceGains::from(uav, control);
+  const RollModel roll(uav);
 
   const std::vector<double> boundaries = segment_boundaries(plan);
   const std::vector<double> outputs = output_times(boundaries.front(), boundaries.back(), options.output_step);
@@ -96,12 +102,13 @@ SimulationResult closed_loop(const OrbitPlan& plan, const Uav& uav, const Vec3& 
 
   SimulationResult result;
   result.restart_times = boundaries;
-  std::vector<Vec3> states;
+  std::vector<State> states;
   std::vector<double> sample_segment;  // segment start each sample was produced in
   states.reserve(outputs.size());
   result.t.reserve(outputs.size());
 
-  Vec3 y = x0;
+  State y = State::Zero();  // the roll model starts level
+  y.template head<3>() = x0;
   auto next_output = outputs.begin();
   for (std::size_t i = 0; i + 1 < boundaries.size(); ++i) {
     const double a = boundaries[i];
@@ -114,7 +121,7 @@ SimulationResult closed_loop(const OrbitPlan& plan, const Uav& uav, const Vec3& 
     const double radius_rate = plan.radius_rate(a);
     const double radius_acceleration = plan.radius_acceleration(a);
     const double v = uav.speed;
-    auto rhs = [&](double t, const Vec3& q, Vec3& dq) {
+    auto rhs = [&](double t, const State& q, State& dq) {
       OrbitState orbit;
       const double dt = t - a;
       orbit.center = g_a + g_dot * dt;
@@ -126,14 +133,20 @@ SimulationResult closed_loop(const OrbitPlan& plan, const Uav& uav, const Vec3& 
       const double s = std::sin(q[2]);
       dq[0] = v * c;  // (1)
       dq[1] = v * s;
-      dq[2] = steering_command(q, c, s, orbit, gains);
+      const double command = steering_command(q.template head<3>(), c, s, orbit, gains);
+      if constexpr (N == 4) {
+        dq[2] = roll.turn_rate(q[3]);
+        dq[3] = roll.bank_rate(q[3], roll.bank_command(command));
+      } else {
+        dq[2] = command;
+      }
     };
     // Samples in this segment, and always its end b: the state there starts the next segment.
     std::vector<double> t_eval;
     while (next_output != outputs.end() && *next_output <= b) t_eval.push_back(*next_output++);
     const bool end_is_output = !t_eval.empty() && t_eval.back() == b;
     if (!end_is_output) t_eval.push_back(b);
-    const OdeResult<3> segment = solve_ode<3>(rhs, a, b, y, ode, t_eval);
+    const OdeResult<N> segment = solve_ode<N>(rhs, a, b, y, ode, t_eval);
     y = segment.y.back();
     const std::size_t kept = end_is_output ? segment.t.size() : segment.t.size() - 1;
     for (std::size_t k = 0; k < kept; ++k) {
@@ -154,11 +167,21 @@ SimulationResult closed_loop(const OrbitPlan& plan, const Uav& uav, const Vec3& 
   result.control.resize(n);
   result.control_unsaturated.resize(n);
   result.orbit_radius.resize(n);
+  result.bank.resize(n);
+  result.turn_rate.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const auto row = static_cast<Eigen::Index>(k);
     const OrbitState orbit = orbit_state(plan, sample_segment[k], result.t[k]);
-    const Steering s = steering(states[k], orbit, gains);
-    result.state.row(row) = states[k].transpose();
+    const Vec3 q = states[k].template head<3>();
+    const Steering s = steering(q, orbit, gains);
+    result.state.row(row) = q.transpose();
+    if constexpr (N == 4) {
+      result.bank[k] = states[k][3];
+      result.turn_rate[k] = roll.turn_rate(states[k][3]);
+    } else {
+      result.bank[k] = coordinated_bank(uav.speed, s.command);
+      result.turn_rate[k] = s.command;
+    }
     result.poi.row(row) = plan.poi.position(result.t[k]).transpose();
     result.desired_heading[k] = s.field.heading;
     result.desired_heading_rate[k] = s.field.heading_rate;
@@ -208,6 +231,12 @@ OrbitState orbit_state(const OrbitPlan& plan, double segment_start, double t) {
 
 namespace {
 
+SimulationResult closed_loop_for(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
+                                 const SimulationOptions& options, double fixed_step) {
+  if (uav.dynamics == DynamicsModel::Roll) return closed_loop<4>(plan, uav, x0, control, options, fixed_step);
+  return closed_loop<3>(plan, uav, x0, control, options, fixed_step);
+}
+
 // The scene's occlusion-ray line of sight as a LineOfSight.
 LineOfSight scene_line_of_sight(const VisibilityScene& scene) {
   return [scene](const Points3& from, const Points3& to) {
@@ -241,7 +270,7 @@ void evaluate_visibility(SimulationResult& result, double uav_z, const LineOfSig
 SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0, const Control& control,
                           const SimulationOptions& options, const LineOfSight& line_of_sight,
                           double fixed_step) {
-  SimulationResult result = closed_loop(plan, uav, x0, control, options, fixed_step);
+  SimulationResult result = closed_loop_for(plan, uav, x0, control, options, fixed_step);
   if (line_of_sight) evaluate_visibility(result, uav.altitude, line_of_sight);
   return result;
 }
@@ -253,7 +282,7 @@ SimulationResult simulate(const OrbitPlan& plan, const Uav& uav, const Vec3& x0,
   if (!(uav.altitude > scene.ground_level()))
     detail::fail_field("uav.altitude", uav.altitude,
                        "the flight plane must lie above the ground level " + detail::to_text(scene.ground_level()));
-  SimulationResult result = closed_loop(plan, uav, x0, control, options, fixed_step);
+  SimulationResult result = closed_loop_for(plan, uav, x0, control, options, fixed_step);
   evaluate_visibility(result, uav.altitude, scene_line_of_sight(scene));
   return result;
 }

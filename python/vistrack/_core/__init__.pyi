@@ -52,11 +52,11 @@ class Polygon:
         """
 class Uav:
     """
-    The Dubins vehicle: constant speed, minimum turn radius, altitude.
+    The vehicle: constant speed, minimum turn radius, altitude, and how it turns: dynamics 'dubins' (the turn rate follows the guidance at once, the papers' vehicle) or 'roll' (the bank a first-order, rate-limited state: Beard & McLain ch. 9; SI units only).
     """
-    def __init__(self, *, speed: typing.SupportsFloat | typing.SupportsIndex = 20.0, min_turn_radius: typing.SupportsFloat | typing.SupportsIndex = 50.0, altitude: typing.SupportsFloat | typing.SupportsIndex = 300.0) -> None:
+    def __init__(self, *, speed: typing.SupportsFloat | typing.SupportsIndex = 20.0, min_turn_radius: typing.SupportsFloat | typing.SupportsIndex = 50.0, altitude: typing.SupportsFloat | typing.SupportsIndex = 300.0, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0) -> None:
         """
-        speed v (m/s), min_turn_radius r_min (m), altitude h_UAV (m).
+        speed v (m/s), min_turn_radius r_min (m), altitude h_UAV (m), dynamics 'dubins' or 'roll', the roll model's time constant tau (s; ArduPlane RLL2SRV_TCONST 0.5) and maximum roll rate (deg/s; PX4 FW_R_RMAX 70).
         """
     def __repr__(self) -> str:
         ...
@@ -73,12 +73,36 @@ class Uav:
     def altitude(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
+    def dynamics(self) -> str:
+        """
+        'dubins' or 'roll'
+        """
+    @dynamics.setter
+    def dynamics(self, arg0: str) -> None:
+        ...
+    @property
+    def max_roll_rate_deg_s(self) -> float:
+        """
+        the roll model's rate limit, deg/s
+        """
+    @max_roll_rate_deg_s.setter
+    def max_roll_rate_deg_s(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
     def min_turn_radius(self) -> float:
         """
         r_min, m
         """
     @min_turn_radius.setter
     def min_turn_radius(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def roll_time_constant(self) -> float:
+        """
+        tau of the roll model, s
+        """
+    @roll_time_constant.setter
+    def roll_time_constant(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def speed(self) -> float:
@@ -1555,9 +1579,14 @@ class SimulationResult:
         The trajectory as CSV text (header t,x,y,psi,psi_d,psi_d_rate,radial_error,heading_error,u_psi,u_psi_unsaturated,poi_x,poi_y,poi_z,orbit_radius[,visible]), as vistrack_sim writes it.
         """
     @property
+    def bank(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        bank (n,), rad: the roll model's state, or the coordinated bank of u_psi (dubins)
+        """
+    @property
     def control(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        applied turn rate u_psi (clamped to +-v/r_min), rad/s
+        turn rate u_psi commanded by (86) (clamped to +-v/r_min), rad/s; the Dubins vehicle flies it at once
         """
     @property
     def control_unsaturated(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -1613,6 +1642,11 @@ class SimulationResult:
     def t(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         output times (n,), s
+        """
+    @property
+    def turn_rate(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        turn rate flown: u_psi (dubins) or g tan(phi) / v (roll), rad/s
         """
     @property
     def visibility_fraction(self) -> float | None:

@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core
-__all__: list[str] = ['DrydenLowAltitude', 'FlightGuidance', 'FlightTrajectory', 'Gusts', 'LineFeedback', 'LineFeedbackTerms', 'PathFollower', 'PathTracking', 'WaypointFollower', 'Wind', 'WindField', 'dryden_low_altitude', 'fly']
+__all__: list[str] = ['DrydenLowAltitude', 'FlightGuidance', 'FlightSmoothness', 'FlightTrajectory', 'Gusts', 'L1Line', 'LineFeedback', 'LineFeedbackTerms', 'PathFollower', 'PathTracking', 'RollModel', 'WaypointFollower', 'Wind', 'WindField', 'coordinated_bank', 'dryden_low_altitude', 'flight_smoothness', 'fly']
 class Gusts:
     """
     Dryden turbulence (MIL-F-8785C, horizontal): RMS intensity sigma_u = sigma_v (speed units), length scale L_u = L_v (length units), seed. Reproducible from the seed.
@@ -235,6 +235,23 @@ class LineFeedback:
         """
         R
         """
+class L1Line:
+    """
+    L1 line tracking as ArduPlane flies a leg (Park, Deyst & How 2004; AP_L1_Control): lateral acceleration 4 damping^2 v^2 / L1 sin(eta) towards the point L1 = damping period v / pi ahead on the line; continuous in the state (no chatter).
+    """
+    def __init__(self, speed: typing.SupportsFloat | typing.SupportsIndex, period: typing.SupportsFloat | typing.SupportsIndex = 17.0, damping: typing.SupportsFloat | typing.SupportsIndex = 0.75) -> None:
+        """
+        speed v; period (s, ArduPlane NAVL1_PERIOD 17) and damping (NAVL1_DAMPING 0.75).
+        """
+    def turn_rate(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], line_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> float:
+        """
+        Turn rate a / v, rad/s.
+        """
+    @property
+    def distance(self) -> float:
+        """
+        L1, length units
+        """
 class FlightGuidance:
     """
     A guidance law for fly(): turn-rate command and target from (x, y, psi) and t; its stateful logic runs only after accepted steps.
@@ -257,9 +274,15 @@ class WaypointFollower(FlightGuidance):
     """
     Classical waypoint navigation on the law (5): the line from the previous waypoint (the start for the first) to the active one; next waypoint when within waypoint_radius. finish_at_last=False holds at the last waypoint until add_waypoint() gives more (feed it from fly()'s on_step).
     """
+    @typing.overload
     def __init__(self, law: LineFeedback, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], waypoint_radius: typing.SupportsFloat | typing.SupportsIndex, finish_at_last: bool = True) -> None:
         """
         law: LineFeedback; waypoints: array (n, 2); waypoint_radius R_WP >= 0.
+        """
+    @typing.overload
+    def __init__(self, law: L1Line, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], waypoint_radius: typing.SupportsFloat | typing.SupportsIndex, finish_at_last: bool = True) -> None:
+        """
+        The same with each leg flown by L1 line tracking (law: L1Line).
         """
     def add_waypoint(self, point: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], available_from: typing.SupportsFloat | typing.SupportsIndex = ...) -> None:
         """
@@ -285,16 +308,60 @@ class WaypointFollower(FlightGuidance):
         """
         array (n, 2)
         """
+class FlightSmoothness:
+    """
+    How smoothly a flight banks (flight_smoothness).
+    """
+    def __repr__(self) -> str:
+        ...
+    def as_dict(self) -> dict:
+        """
+        The measures as a dict (metrics.json).
+        """
+    @property
+    def bank_rms_deg(self) -> float:
+        """
+        RMS of the bank about its moving mean over the window, degrees
+        """
+    @property
+    def max_roll_rate_deg_s(self) -> float:
+        """
+        largest |bank change / time| between successive samples, deg/s
+        """
+    @property
+    def roll_reversals(self) -> int:
+        """
+        their count
+        """
+    @property
+    def roll_reversals_per_s(self) -> float:
+        """
+        reversals of the bank (deadband: successive extrema that far apart) per second
+        """
 class FlightTrajectory:
     """
-    One sample per output time: state, the turn rate applied from there, the active target and the wind.
+    One sample per output time: state, the turn rate applied from there, the bank, the active target and the wind.
     """
     def __len__(self) -> int:
         ...
+    def smoothness(self, window: typing.SupportsFloat | typing.SupportsIndex = 5.0, deadband_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> FlightSmoothness:
+        """
+        How smoothly this flight banks (FlightSmoothness of its bank history).
+        """
     @property
     def array(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, 4): t, x, y, psi
+        """
+    @property
+    def bank(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        bank (n,), rad, positive left wing down: the roll model's state, or the Dubins model's coordinated bank of the turn rate applied from each sample
+        """
+    @property
+    def bank_command(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        the coordinated bank of the guidance's clamped turn-rate command (n,), rad
         """
     @property
     def command(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -356,6 +423,45 @@ class FlightTrajectory:
         """
         y (n,)
         """
+class RollModel:
+    """
+    The roll model of a Uav: bank command atan(v r / g) within +-phi_max, phi_dot = clamp((phi_c - phi) / tau, +-p_max), psi_dot = g tan(phi) / v.
+    """
+    def __init__(self, uav: vistrack._core.Uav, gravity: typing.SupportsFloat | typing.SupportsIndex = 9.80665) -> None:
+        """
+        The model of uav (its speed, min_turn_radius, roll_time_constant, max_roll_rate_deg_s).
+        """
+    def bank_command(self, turn_rate: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        atan(v r / g) within +-phi_max, rad
+        """
+    def bank_rate(self, bank: typing.SupportsFloat | typing.SupportsIndex, bank_command: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        clamp((phi_c - phi) / tau, +-p_max), rad/s
+        """
+    def step(self, bank: typing.SupportsFloat | typing.SupportsIndex, bank_command: typing.SupportsFloat | typing.SupportsIndex, dt: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        The bank after dt with the command held (closed form), rad.
+        """
+    def turn_rate(self, bank: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        g tan(phi) / v, rad/s
+        """
+    @property
+    def max_bank(self) -> float:
+        """
+        phi_max = atan(v^2 / (g R)), rad
+        """
+    @property
+    def max_roll_rate(self) -> float:
+        """
+        p_max, rad/s
+        """
+    @property
+    def time_constant(self) -> float:
+        """
+        tau, s
+        """
 class PathTracking:
     """
     Where a state is relative to the path.
@@ -407,11 +513,19 @@ class PathFollower(FlightGuidance):
         """
         Arc length reached, m.
         """
+def coordinated_bank(speed: typing.SupportsFloat | typing.SupportsIndex, turn_rate: typing.SupportsFloat | typing.SupportsIndex, gravity: typing.SupportsFloat | typing.SupportsIndex = 9.80665) -> float:
+    """
+    Bank of a coordinated turn, atan(v psi_dot / g), rad (positive left).
+    """
 def dryden_low_altitude(altitude: typing.SupportsFloat | typing.SupportsIndex, wind_speed_20ft: typing.SupportsFloat | typing.SupportsIndex) -> DrydenLowAltitude:
     """
     MIL-F-8785C low-altitude intensities (m/s) and length scales (m) at altitude (m) for W20 (m/s).
     """
-def fly(guidance: FlightGuidance, start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, wind: Wind | None = None, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, max_time: typing.SupportsFloat | typing.SupportsIndex = 3600.0, integration: str = 'discrete', t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, on_step: collections.abc.Callable[[float, tuple[float, float, float]], None] | None = None, progress: collections.abc.Callable[[int, int], None] | None = None, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-09, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-12) -> FlightTrajectory:
+def flight_smoothness(t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], bank: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], window: typing.SupportsFloat | typing.SupportsIndex = 5.0, deadband_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> FlightSmoothness:
     """
-    Fly the vehicle (speed v, turn_radius R) from start (x, y, psi) at t0 under the guidance until it is done or t0 + max_time. integration 'discrete' (the paper's update, step dt) or 'continuous' (Dormand-Prince, output every dt). on_step(t, state) runs after each accepted step (it may feed the guidance); progress(done, total) in per mille of max_time. Releases the GIL (callbacks take it).
+    How smoothly a bank history (t in s, increasing; bank in rad) banks: bank_rms_deg about its moving mean over a centred window (s), roll_reversals_per_s with a deadband (successive extrema at least deadband_deg apart), max_roll_rate_deg_s between samples.
+    """
+def fly(guidance: FlightGuidance, start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, wind: Wind | None = None, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, max_time: typing.SupportsFloat | typing.SupportsIndex = 3600.0, integration: str = 'discrete', t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, on_step: collections.abc.Callable[[float, tuple[float, float, float]], None] | None = None, progress: collections.abc.Callable[[int, int], None] | None = None, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-09, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-12, uav: vistrack._core.Uav | None = None) -> FlightTrajectory:
+    """
+    Fly the vehicle (speed v, turn_radius R; uav: a Uav whose dynamics and roll parameters to use, its speed and radius replaced by these, None: the Dubins model) from start (x, y, psi) at t0 under the guidance until it is done or t0 + max_time. integration 'discrete' (the paper's update, step dt) or 'continuous' (Dormand-Prince, output every dt). on_step(t, state) runs after each accepted step (it may feed the guidance); progress(done, total) in per mille of max_time. Releases the GIL (callbacks take it).
     """

@@ -8,7 +8,7 @@ import numpy.typing
 import typing
 import vistrack._core
 import vistrack._core.flight
-__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'VehicleLeg', 'along_track_rate', 'arc_length', 'camera_sees', 'coordinated_bank', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_slope', 'speed_ratio']
+__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'VehicleLeg', 'along_track_rate', 'arc_length', 'camera_sees', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_slope', 'speed_ratio']
 class VehicleLeg:
     """
     One leg of a route: heading (rad from east), speed at its start and end (m/s, linear in between; 0 and 0 is a stop), duration (s).
@@ -223,9 +223,9 @@ class FollowParameters:
         ...
 class FollowFlight:
     """
-    How a follow run is flown: integration ('discrete' | 'continuous'), step dt (s), max_time (s, 0: until the track ends).
+    How a follow run is flown: integration ('discrete' | 'continuous'), step dt (s), max_time (s, 0: until the track ends), guidance of each 1 s leg ('law5': the paper's law (5); 'l1': L1 line tracking, beyond the paper) and the L1 gains (period s, damping).
     """
-    def __init__(self, *, integration: str = 'discrete', dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, max_time: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, *, integration: str = 'discrete', dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, max_time: typing.SupportsFloat | typing.SupportsIndex = 0.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0, l1_damping: typing.SupportsFloat | typing.SupportsIndex = 0.75) -> None:
         ...
     @property
     def dt(self) -> float:
@@ -236,8 +236,26 @@ class FollowFlight:
     def dt(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
+    def guidance(self) -> str:
+        """
+        'law5' or 'l1'
+        """
+    @guidance.setter
+    def guidance(self, arg0: str) -> None:
+        ...
+    @property
     def integration(self) -> str:
         ...
+    @property
+    def l1_damping(self) -> float:
+        """
+        L1 damping
+        """
+    @property
+    def l1_period(self) -> float:
+        """
+        L1 period, s
+        """
     @property
     def max_time(self) -> float:
         """
@@ -622,10 +640,6 @@ def arc_length(x: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], ampli
 def camera_sees(camera: DownwardCamera, uav: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], psi: typing.SupportsFloat | typing.SupportsIndex, bank: typing.SupportsFloat | typing.SupportsIndex, target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"]) -> bool:
     """
     Whether the ground point target (3,) is in the footprint of the camera at uav (3,).
-    """
-def coordinated_bank(speed: typing.SupportsFloat | typing.SupportsIndex, turn_rate: typing.SupportsFloat | typing.SupportsIndex) -> float:
-    """
-    Bank angle atan(v psi_dot / g) of a coordinated turn, rad (positive left).
     """
 def follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] | None = None, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0, offset_schedule: collections.abc.Sequence[tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]] = []) -> FollowRun:
     """

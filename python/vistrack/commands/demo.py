@@ -9,12 +9,15 @@ from typing import Any
 from ..tracking.scenario import Scenario
 from .output import add_report_arguments, output_folder, report_options
 from .run import run_scenario
+from .types import add_dynamics_argument
 
 DEFAULT_OUT = Path("vistrack-out") / "demo"
 
 
 def main(args: argparse.Namespace) -> int:
     scenario = Scenario.demo()
+    if args.dynamics is not None:
+        scenario.uav.dynamics = args.dynamics
     scenario.report = report_options(args, scenario.report)
     return run_scenario(scenario, output_folder(args.out), args.cache, args.quiet)
 
@@ -28,6 +31,7 @@ def register(subparsers: Any) -> None:
                     "trajectory.gif, figures, JSON, CSV) and prints where it is.")
     parser.add_argument("--out", default=str(DEFAULT_OUT), help=f"report folder (default: ./{DEFAULT_OUT})")
     parser.add_argument("--cache", default=None, help="visibility-volume cache folder (off by default)")
+    add_dynamics_argument(parser)
     parser.add_argument("--quiet", action="store_true", help="no progress output")
     add_report_arguments(parser)
     parser.set_defaults(func=main)

@@ -19,7 +19,7 @@ from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
 from .output import add_report_arguments, report_options
-from .types import number
+from .types import add_dynamics_argument, number
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -31,6 +31,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--no-compensation", dest="compensation", action="store_false", default=None,
                         help="plan without the wind estimate (the paper's Fig. 6)")
     parser.add_argument("--no-city", dest="city", action="store_false", help="skip the city runs")
+    add_dynamics_argument(parser)
     parser.add_argument("--export-tolerance", type=number("--export-tolerance", 0.0, 1e7), default=1.0, metavar="M",
                         help="--export keeps the 1 Hz waypoints Douglas-Peucker needs at this tolerance "
                              "(default 1 m; 0: every waypoint)")
@@ -43,6 +44,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     options = report_options(args)
     scenario = FollowScenario.load(args.scenario)
+    if args.dynamics is not None:
+        scenario.uav.dynamics = args.dynamics
     city = args.city and scenario.city_available()
     if args.city and scenario.city is not None and not city:
         print(f"city data not found ({scenario.city.describe()}): skipping the city runs")

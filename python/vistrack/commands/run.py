@@ -10,7 +10,7 @@ from typing import Any
 from ..tracking.scenario import Scenario, default_scenario_text
 from .export import add_export_arguments, check_exports, export_plan
 from .output import add_report_arguments, output_folder, report_options
-from .types import UsageError, count
+from .types import UsageError, add_dynamics_argument, count
 
 
 def register(subparsers: Any) -> None:
@@ -29,6 +29,7 @@ def register(subparsers: Any) -> None:
                         help="allow plans that may need up to this many VVs (default: the scenario's "
                              "planning.max_volumes, else 20000; ~4.7 MB each at 1 degree)")
     add_export_arguments(parser)
+    add_dynamics_argument(parser)
     parser.add_argument("--quiet", action="store_true", help="no progress output")
     parser.add_argument("--print-defaults", action="store_true",
                         help="print a complete scenario with every default and exit")
@@ -75,6 +76,8 @@ def main(args: argparse.Namespace) -> int:
         scenario.origin = args.origin
     if args.max_volumes is not None:
         scenario.planning.max_volumes = args.max_volumes
+    if args.dynamics is not None:
+        scenario.uav.dynamics = args.dynamics
     scenario.report = report_options(args, scenario.report)
     check_exports(args.export, scenario.origin, scenario.environment.path)
     out = output_folder(args.out if args.out else Path("vistrack-out") / scenario.name)

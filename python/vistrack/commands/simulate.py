@@ -14,11 +14,12 @@ from pathlib import Path
 from .. import _core, schema
 from ..io import load_environment, read_plan
 from ..report.simulation import write_simulation
+from ..scenario_blocks import DEFAULT_DYNAMICS, uav_dict
 from ..tracking.metrics import CONVERGE_AFTER
 from ..tracking.pipeline import simulate_with_baselines, start_on_orbit
 from .lists import configuration
 from .output import output_folder
-from .types import checked, coordinate, length, number, speed
+from .types import add_dynamics_argument, checked, coordinate, length, number, speed
 
 
 def fixed_step(key: str, value: object) -> float:
@@ -32,8 +33,8 @@ def fixed_step(key: str, value: object) -> float:
 def register(subparsers: argparse._SubParsersAction) -> None:
     p = subparsers.add_parser(
         "simulate", help="closed-loop simulation of the UAV around an orbit plan",
-        description="The Dubins UAV steered by the guidance law (86) around the plan's time-varying orbit "
-        "(section VI). Writes trajectory.csv, metrics.json, trajectory.png and errors.png.")
+        description="The UAV (roll or Dubins model) steered by the guidance law (86) around the plan's "
+        "time-varying orbit (section VI). Writes trajectory.csv, metrics.json, trajectory.png and errors.png.")
     uav, control, options = _core.Uav(), _core.Control(), _core.SimulationOptions()
     p.add_argument("--plan", required=True, help="orbit plan JSON (vistrack orbits writes plan.json)")
     p.add_argument("--out", default="simulate_out", help="output folder (created)")
@@ -42,6 +43,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--speed", type=speed("--speed"), default=uav.speed, help="UAV speed v, m/s")
     p.add_argument("--min-turn-radius", type=length("--min-turn-radius"), default=uav.min_turn_radius, help="r_min, m")
     p.add_argument("--altitude", type=coordinate("--altitude"), default=uav.altitude, help="h_UAV, m")
+    add_dynamics_argument(p, DEFAULT_DYNAMICS)
     p.add_argument("--beta", type=checked("--beta", schema.beta), default=control.beta,
                    help="beta of the vector field, 1/m")
     p.add_argument("--k-psi", type=checked("--k-psi", schema.heading_gain), default=control.k_psi,
@@ -68,7 +70,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     output_folder(args.out)
     plan = read_plan(args.plan, "--plan")
-    uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude)
+    uav = _core.Uav(speed=args.speed, min_turn_radius=args.min_turn_radius, altitude=args.altitude,
+                    dynamics=args.dynamics)
     control = _core.Control(beta=args.beta, k_psi=args.k_psi, direction=args.direction)
     options = _core.SimulationOptions(rtol=args.rtol, atol=args.atol, max_step=args.max_step,
                                       output_step=args.output_step)
@@ -77,7 +80,7 @@ def run(args: argparse.Namespace) -> int:
     x0 = args.x0 if args.x0 is not None else start_on_orbit(plan, control.direction)
     runs = simulate_with_baselines(plan, x0, uav, control, options, scene, args.baseline_radius, args.fixed_step)
     header = {"plan": str(args.plan), "x0": [float(v) for v in x0],
-              "uav": {"speed": uav.speed, "min_turn_radius": uav.min_turn_radius, "altitude": uav.altitude},
+              "uav": uav_dict(uav),
               "control": {"beta": control.beta, "k_psi": control.k_psi, "direction": control.direction},
               "lemma7_min_gain": _core.lemma7_min_gain(uav.speed, control.beta)}
     summary = write_simulation(Path(args.out), runs, env, header, args.converge_after,

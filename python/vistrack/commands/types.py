@@ -9,7 +9,7 @@ from typing import Any, Callable
 from .. import schema
 from .._core import VistrackError
 
-__all__ = ["UsageError", "checked", "coordinate", "count", "length", "number", "speed"]
+__all__ = ["UsageError", "add_dynamics_argument", "checked", "coordinate", "count", "length", "number", "speed"]
 
 
 class UsageError(VistrackError):
@@ -71,3 +71,14 @@ def count(flag: str, low: int, high: int) -> Callable[[str], int]:
         return schema.integer(key, value, low, high)
 
     return checked(flag, parse, numeric=False)
+
+
+def add_dynamics_argument(parser: argparse.ArgumentParser, default: str | None = None) -> None:
+    """``--dynamics roll|dubins``: the vehicle model every flight of the command uses (None: the
+    scenario's ``uav.dynamics``, whose default is roll)."""
+    from ..scenario_blocks import DYNAMICS
+
+    parser.add_argument("--dynamics", choices=DYNAMICS, default=default,
+                        help="vehicle model: roll (the bank a first-order, rate-limited state) or dubins (the "
+                             "turn rate at once, the papers' vehicle); default: "
+                             + (default or "the scenario's uav.dynamics, else roll"))

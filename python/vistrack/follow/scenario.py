@@ -7,7 +7,7 @@ counter-clockwise from east unless a compass word is given)::
 
     description: text
     georeference: {lat, lon, alt} # where local (0, 0) lies on the Earth (--export), WGS84
-    uav: {speed: 21, min_turn_radius: 50, altitude: 200, dynamics: dubins}
+    uav: {speed: 21, min_turn_radius: 50, altitude: 200, dynamics: roll}   # dubins: the paper's vehicle
     vehicle:                      # one of legs (with start), track, or path (with legs)
       start: [0, 0]
       legs: [{heading: south, speed: 10, duration: 300, end_speed: 10}]   # or heading_deg: -90
@@ -18,7 +18,8 @@ counter-clockwise from east unless a compass word is given)::
     wind: {east: 0, north: 10, gusts: {seed, intensity, length_scale}}  # the true wind (towards)
     wind_estimate: {east: 0, north: 10}      # what the planner compensates (default: the true wind)
     camera: {fov_deg: 74, max_gimbal_deg: 25, mount: roll}
-    flight: {dt: 0.02, integration: discrete, max_time: 0}
+    flight: {dt: 0.02, integration: discrete, max_time: 0, guidance: l1, l1_period: 17, l1_damping: 0.75}
+                                  # guidance law5: each 1 s leg by the paper's law (5)
     baseline: {radius: 0, beta: 0.025, k_psi: 20, direction: ccw}   # radius 0: Lemma 6; false: none
     city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude
 
@@ -48,6 +49,7 @@ from ..scenario_blocks import (
     origin_to_georeference,
     renamed,
     uav_block,
+    uav_dict,
     upgrade,
     wind_block,
 )
@@ -75,6 +77,10 @@ TOP_KEYS = {"description", "georeference", "uav", "vehicle", "follow", "offset",
             "flight", "baseline", "city"}
 # Spellings from before the one scenario schema, still read (city.map: see _old_city_map).
 RENAMES = (Rename("origin", "georeference", origin_to_georeference),)
+# How scenario files fly each 1 s leg unless they say: L1 line tracking (beyond the paper; "law5"
+# flies the paper's law (5), the C++ default).
+LEG_GUIDANCE = ("l1", "law5")
+DEFAULT_LEG_GUIDANCE = "l1"
 # The follow examples' UAV, where the file gives none.
 DEFAULT_UAV = Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
 
@@ -124,12 +130,19 @@ class FollowScenario:
         defaults = DownwardCamera()
         c = camera_block(data, math.degrees(defaults.fov), math.degrees(defaults.max_gimbal), mounts=("roll",))
         camera = DownwardCamera(fov=math.radians(c.fov_deg), max_gimbal=math.radians(c.max_gimbal_deg))
-        f = section(data, "flight", {"dt", "integration", "max_time"})
+        f = section(data, "flight", {"dt", "integration", "max_time", "guidance", "l1_period", "l1_damping"})
         integration = f.get("integration", "discrete")
         if integration not in ("discrete", "continuous"):
             raise fail("flight.integration", integration, 'must be "discrete" or "continuous"')
-        flight = FollowFlight(integration=integration, dt=positive("flight.dt", f.get("dt", 0.02)),
-                              max_time=number("flight.max_time", f.get("max_time", 0.0), low=0.0))
+        guidance = f.get("guidance", DEFAULT_LEG_GUIDANCE)
+        if guidance not in LEG_GUIDANCE:
+            raise fail("flight.guidance", guidance, "must be one of " + ", ".join(LEG_GUIDANCE))
+        d = FollowFlight()
+        flight = FollowFlight(integration=integration, dt=positive("flight.dt", f.get("dt", d.dt)),
+                              max_time=number("flight.max_time", f.get("max_time", d.max_time), low=0.0),
+                              guidance=guidance,
+                              l1_period=positive("flight.l1_period", f.get("l1_period", d.l1_period)),
+                              l1_damping=positive("flight.l1_damping", f.get("l1_damping", d.l1_damping)))
         radius, control = _baseline(data)
         return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
@@ -199,6 +212,7 @@ class FollowStudy:
     def metrics(self) -> dict[str, Any]:
         """metrics.json: the planner's run at the top level, then the baseline and the city runs."""
         out = dict(self.follow.metrics)
+        out["uav"] = uav_dict(self.scenario.uav)
         out["wind_compensation"] = bool(self.parameters.wind_compensation)
         out["updates"] = len(self.follow.ticks)
         if self.baseline is not None:

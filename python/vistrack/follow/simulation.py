@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any, Optional, Sequence
 import numpy as np
 
 from .._core import Control, Uav, VisibilityScene, VistrackError
+from .._core import flight as _flight
 from .._core import follow as _follow
 from ..flight import Wind
 from ..schema import length
@@ -33,7 +34,7 @@ VehicleLeg = _follow.VehicleLeg
 along_track_rate = _follow.along_track_rate
 arc_length = _follow.arc_length
 camera_sees = _follow.camera_sees
-coordinated_bank = _follow.coordinated_bank
+coordinated_bank = _flight.coordinated_bank  # one formula, the flight layer's
 phase_at_arc = _follow.phase_at_arc
 sinusoid_amplitude = _follow.sinusoid_amplitude
 sinusoid_slope = _follow.sinusoid_slope
@@ -139,6 +140,8 @@ class FollowResult:
             "mean_vehicle_distance_m": m.mean_vehicle_distance,
             "mean_offset_distance_m": m.mean_offset_distance,
             "centre_offset_m": [float(v) for v in m.mean_offset_error],
+            "smoothness": _flight.flight_smoothness(self.run.t, self.run.bank).as_dict() if len(self.run.t) >= 2
+            else None,
         }
         if self.line_of_sight is not None:
             weights = np.diff(self.t, append=self.t[-1])  # each sample holds until the next

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from .. import flight
-from .._core import VistrackError
+from .._core import Uav, VistrackError
 from .planning import Coverage, FlightTrajectory, Plan, Wind, coverage, threshold_value
 from .scenario import Scenario
 
@@ -26,18 +26,21 @@ def path_pieces(plan: Plan) -> np.ndarray:
 
 
 def fly(plan: Plan, wind: Wind | tuple[float, float] | None = None, dt: float = 0.05,
-        integration: str = "discrete", lookahead_radii: float = 1.0, heading_gain: float = 3.0) -> FlightTrajectory:
-    """Fly the plan through the flight layer: a ``PathFollower`` on its lines and arcs, the Dubins
-    vehicle of the plan's speed and turn radius, in a wind the guidance does not know (``Wind`` or
-    (east, north) m/s). Starts at the plan's start on its first heading; ends at its end point (or
-    after three times the planned flight time plus 10 minutes)."""
+        integration: str = "discrete", lookahead_radii: float = 1.0, heading_gain: float = 3.0,
+        uav: Uav | None = None) -> FlightTrajectory:
+    """Fly the plan through the flight layer: a ``PathFollower`` on its lines and arcs, the vehicle
+    of the plan's speed and turn radius (its model and roll parameters from ``uav``; None: the
+    Dubins model), in a wind the guidance does not know (``Wind`` or (east, north) m/s). Starts at
+    the plan's start on its first heading; ends at its end point (or after three times the planned
+    flight time plus 10 minutes). The trajectory's turn rates are the flown ones, so its coverage
+    sees the bank flown."""
     if wind is not None and not isinstance(wind, flight.Wind):
         east, north = wind
         wind = flight.Wind(east=float(east), north=float(north))
     follower = flight.PathFollower(path_pieces(plan), plan.speed, plan.turn_radius, lookahead_radii, heading_gain)
     start = plan.at_time(0.0)
     return flight.fly(follower, start, plan.speed, plan.turn_radius, wind=wind, dt=dt,
-                      max_time=3.0 * plan.flight_time + 600.0, integration=integration)
+                      max_time=3.0 * plan.flight_time + 600.0, integration=integration, uav=uav)
 
 
 def flown_samples(trajectory: FlightTrajectory, dt: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
@@ -91,6 +94,7 @@ def fly_and_score(scenario: Scenario, plan: Plan, wind: tuple[float, float], pla
         "loiter_coverage_lost": planned_loiter - flown_loiter,
         "max_cross_track_m": float(np.max(cross_track)),
         "rms_cross_track_m": float(np.sqrt(np.mean(cross_track ** 2))),
+        "smoothness": trajectory.smoothness().as_dict() if len(trajectory) >= 2 else None,
     }
     if keep_trajectory:
         record["_trajectory"] = np.column_stack([trajectory.x, trajectory.y])

@@ -58,3 +58,19 @@ def map_credit(map_path: str | Path) -> str:
     if "charlotte" in str(map_path).lower():
         text += " (buildings © OpenStreetMap contributors, ODbL)"
     return text
+
+
+def plot_bank(ax: Any, t: Any, bank: Any, label: str = "bank flown") -> None:
+    """The bank angle (rad, positive left) against time on ``ax``, in degrees, with its smoothness
+    (vistrack.flight.flight_smoothness) in the legend."""
+    from ..flight import flight_smoothness
+
+    t, bank = np.asarray(t, float), np.asarray(bank, float)
+    text = label
+    if t.size >= 2:
+        s = flight_smoothness(t, bank)
+        text += (f" (RMS {s.bank_rms_deg:.1f} deg about its 5 s mean, {s.roll_reversals_per_s:.2f} reversals/s, "
+                 f"max {s.max_roll_rate_deg_s:.0f} deg/s)")
+    ax.plot(t, np.degrees(bank), color="tab:purple", lw=1, label=text)
+    ax.set_ylabel("bank (deg)")
+    ax.legend(fontsize=7, loc="upper right")

@@ -12,7 +12,7 @@ import numpy as np
 from .._core import Environment
 from ..follow import MODES, FollowResult, speed_ratio
 from .city import plot_buildings
-from .common import OSM_CREDIT, add_credit, pyplot, save_figure
+from .common import OSM_CREDIT, add_credit, plot_bank, pyplot, save_figure
 
 MODE_COLORS = {"sinusoid": "tab:blue", "loiter": "tab:orange", "straight": "tab:red"}
 
@@ -62,9 +62,9 @@ def figure_paths(result: FollowResult, path: str | Path, title: str = "") -> Pat
 
 def figure_scores(result: FollowResult, threshold: float, hysteresis: float, path: str | Path, title: str = "") -> Path:
     """Over time: speed ratio with the threshold's band, mode, tracking error and lag, and when the
-    camera (and the line of sight) sees the vehicle."""
+    camera (and the line of sight) sees the vehicle, and the bank flown (the camera's tilt)."""
     plt = pyplot()
-    fig, axes = plt.subplots(4, 1, figsize=(9.0, 9.0), sharex=True, constrained_layout=True)
+    fig, axes = plt.subplots(5, 1, figsize=(9.0, 11.0), sharex=True, constrained_layout=True)
     ticks = result.ticks
     t_ticks = np.array([k.t for k in ticks])
     sigma = np.array([min(k.speed_ratio, 1e6) for k in ticks])
@@ -92,8 +92,9 @@ def figure_scores(result: FollowResult, threshold: float, hysteresis: float, pat
         ax.fill_between(result.t, 0, -result.line_of_sight.astype(float), step="post", alpha=0.5, color="tab:purple",
                         label="line of sight (below)")
     ax.set_yticks([])
-    ax.set_xlabel("t (s)")
     ax.legend(fontsize=7, loc="upper right")
+    plot_bank(axes[4], result.t, result.run.bank)
+    axes[4].set_xlabel("t (s)")
     axes[0].set_title(title, fontsize=10)
     return save_figure(fig, path)
 

@@ -12,7 +12,7 @@ import numpy as np
 
 from .._core import Environment, OrbitPlan, SimulationResult, VisibilityOrbitPlan
 from .city import plot_buildings
-from .common import OSM_CREDIT, add_credit, evenly_spaced_indices, pyplot, save_figure
+from .common import OSM_CREDIT, add_credit, evenly_spaced_indices, plot_bank, pyplot, save_figure
 
 Run = tuple[str, Union[OrbitPlan, VisibilityOrbitPlan], SimulationResult]  # (label, plan, result)
 
@@ -66,11 +66,11 @@ def figure_trajectory(runs: Sequence[Run], env: Optional[Environment], path: str
 
 def figure_errors(result: SimulationResult, path: str | Path, window: Optional[float] = None, title: str = "",
                   max_turn_rate: Optional[float] = None) -> Path:
-    """Figure 11 style: radial error, heading and its error, and control against time."""
+    """Figure 11 style: radial error, heading and its error, control and the bank flown against time."""
     plt = pyplot()
     t = np.asarray(result.t)
     keep = t <= (t[0] + window) if window else np.ones_like(t, bool)
-    fig, axes = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
+    fig, axes = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
     axes[0].plot(t[keep], np.asarray(result.radial_error)[keep], color="tab:blue")
     axes[0].set_ylabel("radial error r - R (m)")
     psi = (np.asarray(result.state)[:, 2] + math.pi) % (2 * math.pi) - math.pi
@@ -88,7 +88,8 @@ def figure_errors(result: SimulationResult, path: str | Path, window: Optional[f
         for sign in (1, -1):
             axes[2].axhline(sign * max_turn_rate, color="0.4", ls=":", lw=1)
     axes[2].set_ylabel("control u_psi (rad/s)")
-    axes[2].set_xlabel("time (s)")
+    plot_bank(axes[3], t[keep], np.asarray(result.bank)[keep])
+    axes[3].set_xlabel("time (s)")
     for t_restart in np.asarray(result.restart_times)[1:-1]:
         if t_restart <= t[keep][-1]:
             for ax in axes:

@@ -64,3 +64,18 @@ class Document:
             else:
                 lines.append(block)
         return "\n".join(lines) + "\n"
+
+
+def vehicle_line(uav: dict, smoothness: dict | None) -> str:
+    """The vehicle model a flight used and how smoothly it banked (the ``uav`` and ``smoothness``
+    entries of metrics.json), as one summary line."""
+    if uav.get("dynamics") == "roll":
+        model = (f"roll model (bank a state: time constant {uav['roll_time_constant']:g} s, at most "
+                 f"{uav['max_roll_rate_deg_s']:g} deg/s)")
+    else:
+        model = "Dubins model (the turn rate follows the command at once, the papers' vehicle)"
+    if not smoothness:
+        return f"Vehicle: {model}"
+    return (f"Vehicle: {model}; bank {smoothness['bank_rms_deg']:.1f} deg RMS about its 5 s mean, "
+            f"{smoothness['roll_reversals_per_s']:.2f} roll reversals/s, largest roll rate "
+            f"{smoothness['max_roll_rate_deg_s']:.0f} deg/s")

@@ -18,7 +18,8 @@ from ..plotting.common import OSM_CREDIT
 from ..plotting.follow import figure_compare, figure_paths, figure_scores
 from ..plotting.motion import Line, MotionScene, Overlay, Sight, Track
 from ..report_options import ReportOptions
-from .document import Document, Heading, Picture, Table
+from ..scenario_blocks import uav_dict
+from .document import Document, Heading, Picture, Table, vehicle_line
 from .media import write_media
 
 PLANNER = "sinusoid planner (the paper)"
@@ -134,7 +135,8 @@ def _document(study: FollowStudy, title: str, files: Sequence[str]) -> Document:
     summary = [f"UAV {s.uav.speed:g} m/s at {s.uav.altitude:g} m, turn radius {s.uav.min_turn_radius:g} m; camera "
                f"{math.degrees(s.camera.fov):.0f} deg on a +-{math.degrees(s.camera.max_gimbal):.0f} deg gimbal",
                f"Wind {s.wind.east:g} east, {s.wind.north:g} north ({wind:.3g} m/s); {len(study.follow.ticks)} "
-               "updates at 1 Hz"]
+               "updates at 1 Hz",
+               vehicle_line(uav_dict(s.uav), study.follow.metrics["smoothness"])]
     blocks: list[Any] = [Heading("Runs"),
                          Table(["run", "mean tracking error (m)", "max (m)", "along-track lag (m)", "mode switches",
                                 "time in mode", "camera sees the vehicle (%)", "line of sight (%)", "both (%)"], rows)]

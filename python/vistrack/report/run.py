@@ -26,7 +26,7 @@ from ..progress import Stages
 from ..tracking.pipeline import METRIC_SPACINGS, compute
 from ..tracking.result import RunResult
 from ..tracking.scenario import Scenario
-from .document import Block, Document, Heading, Picture, Table
+from .document import Block, Document, Heading, Picture, Table, vehicle_line
 from .media import write_media
 
 # Most VV meshes written into a report (evenly picked along the path).
@@ -171,7 +171,8 @@ def _document(result: RunResult, pictures: list[Picture]) -> Document:
                f"Locus: {locus_line(plan)}",
                f"Simulation: {sim['duration_s']:.2f} s; POI in line of sight "
                f"{percent(sim['visibility_fraction'])} of the samples; largest |radial error| after "
-               f"settling (after {sim['converge_after_s']:g} s) {sim['radial_error_after_max_abs_m']:.2f} m"]
+               f"settling (after {sim['converge_after_s']:g} s) {sim['radial_error_after_max_abs_m']:.2f} m",
+               vehicle_line(m["uav"], sim.get("smoothness"))]
     blocks: list[Block] = []
     if m["baselines"]:
         rows = [["visibility-informed R(t)", percent(sim["visibility_fraction"])]]

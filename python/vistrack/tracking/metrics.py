@@ -8,6 +8,7 @@ from typing import Any, Sequence, Union
 import numpy as np
 
 from .._core import Discretization, OrbitPlanner, Planning, PoiPath, SimulationResult, VisibilityOrbitPlan
+from ..flight import flight_smoothness
 from ..progress import Progress
 
 __all__ = ["CONVERGE_AFTER", "locus_summary", "metric_along_path", "plan_summary", "simulation_metrics"]
@@ -43,6 +44,7 @@ def simulation_metrics(result: SimulationResult, converge_after: float = CONVERG
         "orbit_radius_first_m": float(result.orbit_radius[0]),
         "orbit_radius_last_m": float(result.orbit_radius[-1]),
         "visibility_fraction": None if result.visibility_fraction is None else float(result.visibility_fraction),
+        "smoothness": flight_smoothness(t, np.asarray(result.bank)).as_dict() if len(t) >= 2 else None,
     }
 
 

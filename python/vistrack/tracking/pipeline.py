@@ -31,6 +31,7 @@ from .._core import (
     simulate,
 )
 from ..progress import Stages
+from ..scenario_blocks import uav_dict
 from .metrics import locus_summary, simulation_metrics
 from .result import RunResult
 from .scenario import Scenario
@@ -129,6 +130,7 @@ def _metrics(result: RunResult) -> dict[str, Any]:
         "environment_max_height_m": float(result.env.max_height),
         "origin": None if result.env.origin is None else list(result.env.origin),
         "poi": {"length_m": result.poi.length, "duration_s": result.poi.duration, "speed_mps": result.poi.speed},
+        "uav": uav_dict(s.uav),
         "plan": {
             "samples": len(plan.times),
             "volumes_computed": int(plan.volumes_computed),

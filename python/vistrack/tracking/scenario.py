@@ -37,9 +37,11 @@ from ..scenario_blocks import (
     City,
     Rename,
     city_block,
+    default_uav,
     georeference_block,
     origin_to_georeference,
     uav_block,
+    uav_dict,
     upgrade,
 )
 from ..schema import (
@@ -102,7 +104,7 @@ class Scenario:
 
     environment: City = field(default_factory=City)
     poi: PoiSpec = field(default_factory=PoiSpec)
-    uav: Uav = field(default_factory=Uav)
+    uav: Uav = field(default_factory=default_uav)  # the roll model (scenario_blocks.DEFAULT_DYNAMICS)
     start: tuple[float, float, float] | None = None  # UAV start (x, y, psi); None: on the orbit
     sensor: Sensor = field(default_factory=Sensor)
     planning: Planning = field(default_factory=Planning)
@@ -153,7 +155,7 @@ class Scenario:
         scenario.origin = georeference_block(data)
         scenario.environment = city_block(data, base) or City()
         scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
-        uav = uav_block(data, Uav(), extra=("start",))
+        uav = uav_block(data, default_uav(), extra=("start",))
         scenario.uav, scenario.start = uav.uav, _start(uav.extra)
         scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(section(
@@ -193,9 +195,7 @@ class Scenario:
             "georeference": None if origin is None else {"lat": origin.lat, "lon": origin.lon, "alt": origin.alt},
             "city": env,
             "poi": poi,
-            "uav": {"speed": self.uav.speed, "min_turn_radius": self.uav.min_turn_radius,
-                    "altitude": self.uav.altitude,
-                    "start": list(self.start) if self.start is not None else None},
+            "uav": {**uav_dict(self.uav), "start": list(self.start) if self.start is not None else None},
             "sensor": {"d_max": self.sensor.d_max, "altitude_band": list(band) if band else None},
             "planning": {"spacing": self.planning.spacing, "cutoff": self.planning.cutoff,
                          "resolution_deg": self.planning.resolution_deg,

@@ -1,0 +1,86 @@
+"""Issue 28's tables: every planner's example flights with both vehicle models, the papers'
+(Dubins: the turn rate at once; the follow legs by the law (5)) and the practitioner's (the roll
+model; the follow legs by L1 line tracking), with their camera or visibility figures and how
+smoothly they bank (roll reversals per second with a 1-degree deadband, largest roll rate).
+
+    VISTRACK_BUILD_DIR=build/dev python3 bench/vehicle_models.py [--no-tracking]
+
+Prints markdown tables (docs/vehicle.md quotes them).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+if os.environ.get("VISTRACK_BUILD_DIR"):
+    sys.path.insert(0, str(REPO / "tests" / "python"))
+    import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
+
+import numpy as np  # noqa: E402
+
+import vistrack as vt  # noqa: E402
+from vistrack import follow  # noqa: E402
+from vistrack.follow_scenario import FollowScenario  # noqa: E402
+
+MODELS = (("dubins", "law5"), ("roll", "l1"), ("roll", "law5"), ("dubins", "l1"))
+FOLLOW_CASES = (("parked vehicle (Fig. 8's loiter)", None, True), ("Fig. 5 straight", "follow_straight.yaml", True),
+                ("Fig. 7 wind, compensated", "follow_wind.yaml", True), ("Fig. 8 stop", "follow_stop.yaml", True),
+                ("Fig. 9 truck", "follow_truck.yaml", True))
+
+
+def smooth(t: np.ndarray, bank: np.ndarray) -> str:
+    s = vt.flight.flight_smoothness(t, bank)
+    return f"{s.roll_reversals_per_s:.2f} | {s.max_roll_rate_deg_s:.0f}"
+
+
+def follow_table() -> None:
+    print("| run | vehicle, legs | camera sees the vehicle | roll reversals /s | max roll rate (deg/s) |")
+    print("|---|---|---|---|---|")
+    for name, file, compensation in FOLLOW_CASES:
+        for dynamics, guidance in MODELS:
+            if file is None:
+                uav = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0, dynamics=dynamics)
+                parked = follow.GroundVehicle.from_legs([follow.VehicleLeg(0.0, 0.0, 300.0)], (0.0, 0.0))
+                result = follow.simulate(parked, uav, flight=follow.FollowFlight(guidance=guidance))
+            else:
+                scenario = FollowScenario.load(REPO / "examples" / file)
+                scenario.uav.dynamics = dynamics
+                scenario.flight.guidance = guidance
+                result = scenario.run(compensation, False, None).follow
+            m = result.metrics
+            print(f"| {name} | {dynamics}, {guidance} | {100 * m['camera_fraction']:.1f} % | "
+                  f"{smooth(result.t, np.asarray(result.run.bank))} |")
+
+
+def tracking_table() -> None:
+    from vistrack.tracking.pipeline import compute
+
+    print("| scenario | vehicle | POI visible | roll reversals /s | max roll rate (deg/s) | seconds |")
+    print("|---|---|---|---|---|---|")
+    for name, scenario in (("demo", vt.Scenario.demo()),
+                           ("campus", vt.Scenario.load(REPO / "examples" / "campus_flight_test.yaml"))):
+        for dynamics in ("dubins", "roll"):
+            scenario.uav.dynamics = dynamics
+            start = time.perf_counter()
+            sim = compute(scenario).simulation
+            print(f"| {name} | {dynamics} | {100 * sim.visibility_fraction:.1f} % | "
+                  f"{smooth(np.asarray(sim.t), np.asarray(sim.bank))} | {time.perf_counter() - start:.1f} |")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--no-tracking", action="store_true")
+    args = parser.parse_args()
+    follow_table()
+    print()
+    if not args.no_tracking:
+        tracking_table()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,156 @@
+"""The vehicle model switch (Uav.dynamics): the Dubins model's flights bit-identical to those before
+the roll model existed, the roll model's bank within its limits in every planner's flight, the
+smoothness measures, the scenario key and the command-line flag."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import vistrack as vt
+from support.cli import NO_MEDIA
+from vistrack import follow
+from vistrack.scenario_blocks import uav_block
+
+ROLL = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0, dynamics="roll")
+DUBINS = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0, dynamics="dubins")
+
+
+def _digest(trajectory: vt.flight.FlightTrajectory) -> str:
+    h = hashlib.sha256()
+    for a in (trajectory.t, trajectory.x, trajectory.y, trajectory.psi, trajectory.command):
+        h.update(np.ascontiguousarray(np.asarray(a, dtype=np.float64)).tobytes())
+    return h.hexdigest()[:16]
+
+
+# sha256 prefixes of these flights computed by the build before the roll model (b6fed75), with
+# the same inputs: the Dubins model must fly them bit for bit as it did.
+BEFORE_THE_ROLL_MODEL = {
+    "dwn-discrete": "0c4887db5a097d19", "wn-discrete": "df04b30b1bf5683b", "fly-discrete": "5a405b99ff8afd53",
+    "dwn-continuous": "dd975548cf7569a7", "wn-continuous": "8192b5f5c6a74e5e", "fly-continuous": "c03d266055d8fc70",
+}
+
+
+def _flights() -> dict[str, vt.flight.FlightTrajectory]:
+    route = np.array([[5.0, 0.0], [8.0, 4.0], [3.0, 6.0], [0.0, 2.0]])
+    gusts = vt.flight.Gusts(seed=7, intensity=0.05, length_scale=3.0)
+    out = {}
+    for integration in ("discrete", "continuous"):
+        for method in ("dwn", "wn"):
+            flown = vt.waypoint_nav.fly(route, start=(0.0, 0.0, 0.0), method=method,
+                                        wind=vt.flight.Wind(0.03, 0.08, gusts), integration=integration)
+            out[f"{method}-{integration}"] = flown.flight
+        law = vt.flight.LineFeedback(speed=20.0, turn_radius=50.0, dt=0.02, smooth_sign=integration == "continuous")
+        wn = vt.flight.WaypointFollower(law, [[400, 0], [400, 400], [0, 400]], waypoint_radius=50.0)
+        out[f"fly-{integration}"] = vt.flight.fly(wn, start=(0, 0, 0), speed=20.0, turn_radius=50.0,
+                                                  wind=vt.flight.Wind(3.0, -2.0), dt=0.02, integration=integration,
+                                                  max_time=400.0)
+    return out
+
+
+def test_dubins_flights_are_bit_identical_to_before_the_roll_model() -> None:
+    assert {name: _digest(t) for name, t in _flights().items()} == BEFORE_THE_ROLL_MODEL
+
+
+def test_roll_model_bank_stays_within_its_limits_under_law_5() -> None:
+    law = vt.flight.LineFeedback(speed=20.0, turn_radius=50.0, dt=0.02)
+    uav = vt.Uav(speed=20.0, min_turn_radius=50.0, dynamics="roll")
+    model = vt.flight.RollModel(uav)
+    wn = vt.flight.WaypointFollower(law, [[400, 0], [400, 400], [0, 400]], waypoint_radius=50.0)
+    flown = vt.flight.fly(wn, start=(0, 0, 0), speed=20.0, turn_radius=50.0, wind=vt.flight.Wind(3.0, -2.0),
+                          max_time=400.0, uav=uav)
+    bank = np.asarray(flown.bank)
+    assert np.max(np.abs(bank)) <= model.max_bank * (1 + 1e-12)
+    assert np.max(np.abs(np.diff(bank))) / 0.02 <= model.max_roll_rate * (1 + 1e-9)
+    # The turn rate flown is the bank's: g tan(phi) / v, one step behind the bank it reached.
+    assert np.allclose(np.asarray(flown.command)[:-1], 9.80665 * np.tan(bank[1:]) / 20.0, rtol=0, atol=1e-12)
+    smooth = flown.smoothness()
+    assert smooth.max_roll_rate_deg_s <= 70.0 * (1 + 1e-9)
+    dubins = vt.flight.fly(vt.flight.WaypointFollower(law, [[400, 0], [400, 400], [0, 400]], waypoint_radius=50.0),
+                           start=(0, 0, 0), speed=20.0, turn_radius=50.0, wind=vt.flight.Wind(3.0, -2.0),
+                           max_time=400.0)
+    assert dubins.smoothness().max_roll_rate_deg_s > 10 * smooth.max_roll_rate_deg_s
+
+
+def test_smoothness_of_a_sine_by_hand() -> None:
+    t = np.linspace(0.0, 20.0, 20001)
+    bank = np.radians(5.0) * np.sin(2 * math.pi * 0.25 * t)  # 4 s period: extrema every 2 s
+    s = vt.flight.flight_smoothness(t, bank)
+    assert s.roll_reversals == 10  # rising from 0, it turns at every extremum: 1, 3, ..., 19 s
+    assert s.max_roll_rate_deg_s == pytest.approx(5.0 * 2 * math.pi * 0.25, rel=1e-5)
+    assert set(s.as_dict()) == {"bank_rms_deg", "roll_reversals_per_s", "roll_reversals", "max_roll_rate_deg_s"}
+    with pytest.raises(vt.VistrackError, match=r"bank = 1: must have as many samples as t \(2\)"):
+        vt.flight.flight_smoothness([0.0, 1.0], [0.0])
+
+
+def test_uav_dynamics_is_checked_by_name() -> None:
+    assert vt.Uav(dynamics="ROLL").dynamics == "roll"
+    with pytest.raises(vt.VistrackError, match=r"uav.dynamics = 'jet': must be one of 'dubins', 'roll'"):
+        vt.Uav(dynamics="jet")
+    with pytest.raises(vt.VistrackError, match=r"uav.roll_time_constant = 0:"):
+        vt.Uav(roll_time_constant=0.0)
+    assert "dynamics='roll'" in repr(ROLL) and "roll_time_constant=0.5" in repr(ROLL)
+
+
+def test_scenario_files_fly_the_roll_model_unless_they_say_dubins() -> None:
+    assert uav_block({}, vt.Uav()).uav.dynamics == "roll"
+    block = uav_block({"uav": {"dynamics": "dubins", "roll_time_constant": 0.3}}, vt.Uav())
+    assert block.uav.dynamics == "dubins" and block.uav.roll_time_constant == 0.3
+    with pytest.raises(vt.VistrackError, match=r"uav.max_roll_rate_deg_s = -1: must be a finite number in"):
+        uav_block({"uav": {"max_roll_rate_deg_s": -1}}, vt.Uav())
+    assert vt.Scenario().uav.dynamics == "roll"
+    assert vt.Scenario().to_dict()["uav"]["dynamics"] == "roll"
+
+
+def _parked(seconds: float = 240.0) -> follow.GroundVehicle:
+    return follow.GroundVehicle.from_legs([follow.VehicleLeg(0.0, 0.0, seconds)], (0.0, 0.0))
+
+
+def test_circling_a_parked_vehicle_keeps_it_in_the_camera_with_the_roll_model() -> None:
+    """Issue 28: the Dubins model's chattering bank throws the camera off a parked vehicle much of
+    the time; the roll model flies the same plan and keeps it in view at least 95 % of the time."""
+    roll = follow.simulate(_parked(), ROLL, flight=follow.FollowFlight(guidance="l1"))
+    dubins = follow.simulate(_parked(), DUBINS)  # the paper's: each 1 s leg by the law (5)
+    assert dubins.metrics["camera_fraction"] < 0.7
+    assert roll.metrics["camera_fraction"] >= 0.95
+    s = vt.flight.flight_smoothness(roll.run.t, roll.run.bank)
+    assert s.roll_reversals_per_s <= 1.0
+    assert s.max_roll_rate_deg_s <= 70.0 * (1 + 1e-9)
+
+
+def test_tracking_closed_loop_flies_the_roll_model_in_rk45() -> None:
+    poi = vt.PoiPath(np.array([[0.0, 0.0, 0.0], [600.0, 0.0, 0.0]]), 5.0)
+    out = {}
+    for uav in (ROLL, DUBINS):
+        plan = vt.constant_radius_plan(poi, 150.0, uav)
+        res = vt.simulate(plan, uav, np.array([150.0, 0.0, math.pi / 2]), vt.Control())
+        assert np.asarray(res.state).shape[1] == 3
+        out[str(uav.dynamics)] = res
+    roll, dubins = out["roll"], out["dubins"]
+    model = vt.flight.RollModel(ROLL)
+    assert np.max(np.abs(roll.bank)) <= model.max_bank * (1 + 1e-9)
+    assert roll.bank[0] == 0.0  # starts level
+    # Both settle on the orbit; the roll model lags the Dubins vehicle a little.
+    late = np.asarray(roll.t) > 60
+    assert np.max(np.abs(np.asarray(roll.radial_error)[late])) < 2.0
+    assert np.max(np.abs(np.asarray(dubins.radial_error)[late])) < 2.0
+    assert np.allclose(dubins.bank, np.arctan(21.0 * np.asarray(dubins.control) / 9.80665))
+    assert np.allclose(roll.turn_rate, 9.80665 * np.tan(roll.bank) / 21.0)
+
+
+def test_dynamics_flag_overrides_the_scenario(tmp_path: Path) -> None:
+    from vistrack.cli import main
+
+    scenario = Path(__file__).resolve().parents[2] / "examples" / "follow_stop.yaml"
+    for model in ("dubins", "roll"):
+        out = tmp_path / model
+        assert main(["follow", str(scenario), "--out", str(out), "--no-city", "--quiet", "--dynamics", model,
+                     *NO_MEDIA]) == 0
+        metrics = json.loads((out / "metrics.json").read_text())
+        assert metrics["uav"]["dynamics"] == model
+        assert metrics["smoothness"]["max_roll_rate_deg_s"] >= 0
