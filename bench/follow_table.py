@@ -3,7 +3,7 @@ as Fig. 7's scenario without compensation), each flown by the paper's planner an
 vector-field baseline, and again on a Charlotte road with line of sight through the buildings.
 Prints markdown tables; with --figures DIR also draws the README's figures.
 
-    VISTRACK_BUILD_DIR=build/dev python3 bench/follow_table.py [--figures docs/figures] [--no-city]
+    VISTRACK_BUILD_DIR=build/dev python3 bench/follow_table.py [--figures docs/figures] [--no-city] [--vehicle roll]
 
 Charlotte geometry © OpenStreetMap contributors (ODbL).
 """
@@ -62,15 +62,24 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--figures", type=Path, help="folder for the README's figures")
     parser.add_argument("--no-city", dest="city", action="store_false")
+    parser.add_argument("--vehicle", choices=("paper", "roll"), default="paper",
+                        help="paper: the Dubins vehicle, each 1 s leg by the law (5) (the paper's numbers); roll: the "
+                             "scenario files' default, the roll model with L1 legs (docs/vehicle.md)")
     args = parser.parse_args()
+
+    def load(path: Path) -> FollowScenario:
+        scenario = FollowScenario.load(path)
+        scenario.uav.dynamics, scenario.flight.guidance = ("dubins", "law5") if args.vehicle == "paper" else ("roll", "l1")
+        return scenario
+
     studies = []
     for name, file, compensation in CASES:
-        scenario = FollowScenario.load(REPO / "examples" / file)
+        scenario = load(REPO / "examples" / file)
         study = scenario.run(compensation, city=False)
         # The same speeds on a Charlotte road, at the city file's altitude (Fig. 6 only in the open).
         city_file = REPO / "examples" / file.replace(".yaml", "_city.yaml")
         if args.city and compensation and city_file.is_file():
-            in_city = FollowScenario.load(city_file)
+            in_city = load(city_file)
             if in_city.city_available():
                 city_study = in_city.run(compensation, city=True)
                 study.city_follow, study.city_baseline = city_study.city_follow, city_study.city_baseline

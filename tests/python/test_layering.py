@@ -20,7 +20,7 @@ from support.paths import REPO
 LEVELS = {
     "error": 0, "limits": 0.5, "geometry": 1, "environment": 3, "dubins": 4, "visibility": 5,
     "volume": 6,
-    "orbit": 7, "guidance": 8, "ode": 9, "simulate": 10, "flight": 11,
+    "vehicle": 4.5, "orbit": 7, "guidance": 8, "ode": 9, "simulate": 10, "flight": 11,
     "waypoint_nav": 12, "loiter": 12, "follow": 12,
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.MULTILINE)

@@ -6,7 +6,7 @@
 // (WindField). The guidance never sees the wind: it gets the state (x, y, psi) and the time.
 // Uav::dynamics chooses how the turn rate follows the guidance's command: at once (Dubins, the
 // papers' vehicle) or through the bank angle, a state with a first-order, rate-limited response
-// (Roll, RollModel below; the flight starts level).
+// (Roll, RollModel of vehicle.hpp; the flight starts level).
 //
 // Two ways to fly (FlightOptions::integration):
 //  * Discrete, the paper's update (Silverberg & Xu 2019, section 3.1): at t_i the guidance gives a
@@ -49,6 +49,7 @@
 #include "vistrack/ode.hpp"
 #include "vistrack/dubins_parameters.hpp"
 #include "vistrack/flight_parameters.hpp"
+#include "vistrack/vehicle.hpp"
 
 namespace vistrack {
 
@@ -145,35 +146,6 @@ class NormalStream {
 // n stationary samples of one component, one sample per filter step.
 std::vector<double> dryden_series(const DrydenFilter& filter, std::size_t n, NormalStream& noise);
 }  // namespace detail
-
-// ---- Vehicle model ---------------------------------------------------------------------------
-
-// Bank angle of a coordinated turn at speed v and turn rate psi_dot: atan(v psi_dot / g) (rad,
-// positive: left wing down, turning left).
-double coordinated_bank(double speed, double turn_rate, double gravity = kStandardGravity);
-
-// The roll model of Uav::dynamics (dubins_parameters.hpp) for one vehicle: a bank command from the
-// guidance's turn rate, the bank's response to it, and the turn rate the bank gives.
-class RollModel {
- public:
-  explicit RollModel(const Uav& vehicle, double gravity = kStandardGravity);
-
-  double max_bank() const { return max_bank_; }  // phi_max = atan(v^2 / (g R))
-  double time_constant() const { return tau_; }
-  double max_roll_rate() const { return max_rate_; }  // rad/s
-  // phi_c = atan(v r / g), within +-phi_max (r within +-v/R gives exactly that range).
-  double bank_command(double turn_rate) const;
-  // phi_dot = clamp((phi_c - phi) / tau, -p_max, p_max).
-  double bank_rate(double bank, double bank_command) const;
-  // psi_dot = g tan(phi) / v.
-  double turn_rate(double bank) const;
-  // The bank after dt with the command held: the closed-form solution of phi_dot above (a ramp at
-  // p_max while |phi_c - phi| > p_max tau, then the exponential approach).
-  double step(double bank, double bank_command, double dt) const;
-
- private:
-  double speed_, gravity_, tau_, max_rate_, max_bank_;
-};
 
 // ---- Guidance ---------------------------------------------------------------------------------
 

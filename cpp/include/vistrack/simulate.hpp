@@ -2,8 +2,7 @@
 // orbit of an OrbitPlan, integrated by Dormand-Prince 5(4) and restarted at every instant where
 // R_dot (the paper's locus), R_ddot (the smooth one) or the POI velocity jumps; optional
 // line-of-sight evaluation at every output sample. Uav::dynamics chooses the vehicle: the turn
-// rate is (86)'s command at once (Dubins, the paper's), or the roll model of the flight layer
-// (flight.hpp) banks towards the coordinated bank of that command (the state gains phi, level at
+// rate is (86)'s command at once (Dubins, the paper's), or the roll model (vehicle.hpp) banks towards the coordinated bank of that command (the state gains phi, level at
 // the start) and turns at g tan(phi) / v.
 #pragma once
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "vistrack/error.hpp"
-#include "vistrack/flight.hpp"
+#include "vistrack/vehicle.hpp"
 #include "vistrack/limits.hpp"
 
 namespace vistrack {

@@ -1,10 +1,11 @@
-// The vehicle's roll model (flight.hpp, Vehicle model): the bank as a first-order, rate-limited
+// The roll model (vehicle.hpp): the bank as a first-order, rate-limited
 // response to the coordinated bank of the guidance's turn rate.
 #include <algorithm>
 #include <cmath>
 
 #include "vistrack/error.hpp"
-#include "vistrack/flight.hpp"
+#include "vistrack/geometry.hpp"
+#include "vistrack/vehicle.hpp"
 
 namespace vistrack {
 
