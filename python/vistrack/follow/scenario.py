@@ -62,6 +62,7 @@ from .simulation import (
     GroundVehicle,
     VehicleLeg,
     baseline,
+    default_uav,
     simulate,
 )
 
@@ -75,8 +76,8 @@ TOP_KEYS = {"description", "georeference", "uav", "vehicle", "follow", "offset",
             "flight", "baseline", "city"}
 # Spellings from before the one scenario schema, still read (city.map: see _old_city_map).
 RENAMES = (Rename("origin", "georeference", origin_to_georeference),)
-# The follow examples' UAV, where the file gives none.
-DEFAULT_UAV = Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
+# The UAV where the file gives none: the C++ follower's (kFollowUav).
+DEFAULT_UAV = default_uav()
 
 CityRoad = City  # the scenario's city block with its road (the name predates the one schema)
 
@@ -87,8 +88,7 @@ class FollowScenario:
 
     vehicle: GroundVehicle
     legs: list[VehicleLeg] = field(default_factory=list)
-    uav: Uav = field(default_factory=lambda: Uav(speed=DEFAULT_UAV.speed, min_turn_radius=DEFAULT_UAV.min_turn_radius,
-                                                 altitude=DEFAULT_UAV.altitude))
+    uav: Uav = field(default_factory=default_uav)
     parameters: FollowParameters = field(default_factory=FollowParameters)
     offset_schedule: list[tuple[float, float, float]] = field(default_factory=list)
     wind: Wind = field(default_factory=Wind)
@@ -111,7 +111,7 @@ class FollowScenario:
     def from_mapping(cls, data: Mapping[str, Any], base: Path, path: Optional[Path] = None) -> "FollowScenario":
         data = upgrade(_old_city_map(data), RENAMES)
         reject_unknown(data, TOP_KEYS)
-        uav = uav_block(data, DEFAULT_UAV).uav
+        uav = uav_block(data, default_uav()).uav
         vehicle, legs = _vehicle(data, base)
         parameters = _parameters(data)
         schedule = _offset_schedule(data)
@@ -124,12 +124,12 @@ class FollowScenario:
         defaults = DownwardCamera()
         c = camera_block(data, math.degrees(defaults.fov), math.degrees(defaults.max_gimbal), mounts=("roll",))
         camera = DownwardCamera(fov=math.radians(c.fov_deg), max_gimbal=math.radians(c.max_gimbal_deg))
-        f = section(data, "flight", {"dt", "integration", "max_time"})
-        integration = f.get("integration", "discrete")
+        f, fd = section(data, "flight", {"dt", "integration", "max_time"}), FollowFlight()
+        integration = f.get("integration", fd.integration)
         if integration not in ("discrete", "continuous"):
             raise fail("flight.integration", integration, 'must be "discrete" or "continuous"')
-        flight = FollowFlight(integration=integration, dt=positive("flight.dt", f.get("dt", 0.02)),
-                              max_time=number("flight.max_time", f.get("max_time", 0.0), low=0.0))
+        flight = FollowFlight(integration=integration, dt=positive("flight.dt", f.get("dt", fd.dt)),
+                              max_time=number("flight.max_time", f.get("max_time", fd.max_time), low=0.0))
         radius, control = _baseline(data)
         return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
@@ -279,8 +279,10 @@ def _parameters(data: Mapping[str, Any]) -> FollowParameters:
             values[name] = str(f[name])
     try:
         return FollowParameters(wind_compensation=compensation,
-                                offset_distance=number("offset.distance", o.get("distance", 0.0), low=0.0),
-                                offset_angle=math.radians(number("offset.angle_deg", o.get("angle_deg", 0.0))),
+                                offset_distance=number("offset.distance", o.get("distance", d.offset_distance),
+                                                       low=0.0),
+                                offset_angle=math.radians(number("offset.angle_deg",
+                                                                 o.get("angle_deg", math.degrees(d.offset_angle)))),
                                 offset_reference=str(o.get("reference", d.offset_reference)), **values)
     except ValueError as error:  # the core names the field (follow.hysteresis, ...)
         raise type(error)(str(error).replace("direction =", "follow.loiter_direction =", 1)) from None
