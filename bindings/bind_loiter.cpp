@@ -60,8 +60,8 @@ void bind_loiter(py::module_& parent) {
   m.attr("STANDARD_GRAVITY") = kStandardGravity;
 
   py::class_<LoiterParameters>(m, "Parameters",
-                               "The vehicle and the loiters of a plan (section 4.1: Raven RQ-11B, r = 46 m at 12 m/s, "
-                               "R = r, one loiter); the defaults of plan() and a loiter scenario.")
+                               "The vehicle and the loiters of a plan; the defaults (section 4.1's Raven RQ-11B, R = r, "
+                               "one loiter) are those of plan() and of a loiter scenario.")
       .def(py::init([](double turn_radius, double speed, double aoi_radius, int turns) {
              return make_validated(LoiterParameters{turn_radius, speed, aoi_radius, turns});
            }),

@@ -224,8 +224,8 @@ void bind_waypoint_nav(py::module_& parent) {
 
   const WaypointNavOptions defaults;
   py::class_<WaypointNavOptions>(m, "Options",
-                                 "One navigation flight's settings; the defaults are the paper's section 3 (R 0.7, "
-                                 "v 0.8, dt 0.02, gains g 0.1, h 5.25) and those of navigate() and fly().")
+                                 "One navigation flight's settings; the defaults (the paper's section 3) are those of "
+                                 "navigate() and fly().")
       .def(py::init([](NavigationMethod method, double turn_radius, double speed, double dt,
                        std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
                        FlightIntegration integration, std::optional<double> max_time) {

@@ -166,18 +166,18 @@ def test_old_loiter_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> None:
     height and mount in camera, the wind by speed and direction: still read, one line on stdout
     each, into the cases the new spelling gives."""
     aois = [[300.0, 200.0], [600.0, 500.0]]
-    old = {"kind": "loiter", "base": {"aois": aois, "turn_radius": 40.0, "speed": 15.0,
+    old = {"kind": "loiter", "base": {"aois": aois, "turn_radius": 45.0, "speed": 13.0,
                                       "camera": {"altitude": 80.0, "levelled": False},
                                       "wind": {"speed": 4.0, "direction_deg": 0.0}},
-           "parameters": {"speed": [14.0, 15.0], "camera.levelled": [True, False], "camera.altitude": [70.0],
+           "parameters": {"speed": [12.0, 13.0], "camera.levelled": [True, False], "camera.altitude": [70.0],
                           "wind": [{"speed": 0.0}, {"speed": 4.0, "direction_deg": 0.0}]}}
     spec = SweepSpec.from_dict(old)
     assert set(capsys.readouterr().out.splitlines()) == {
         note("turn_radius", "uav.min_turn_radius"), note("speed", "uav.speed"), note("camera.altitude", "uav.altitude"),
         note("camera.levelled", "camera.mount"), note("wind.speed, wind.direction_deg", "wind.east, wind.north")}
-    new = {"kind": "loiter", "base": {"aois": aois, "uav": {"min_turn_radius": 40.0, "speed": 15.0, "altitude": 80.0},
+    new = {"kind": "loiter", "base": {"aois": aois, "uav": {"min_turn_radius": 45.0, "speed": 13.0, "altitude": 80.0},
                                       "camera": {"mount": "roll"}, "wind": {"east": 4.0, "north": 0.0}},
-           "parameters": {"uav.speed": [14.0, 15.0], "camera.mount": ["levelled", "roll"], "uav.altitude": [70.0],
+           "parameters": {"uav.speed": [12.0, 13.0], "camera.mount": ["levelled", "roll"], "uav.altitude": [70.0],
                           "wind": [{"east": 0.0, "north": 0.0}, {"east": 4.0, "north": 0.0}]}}
     again = SweepSpec.from_dict(new)
     assert capsys.readouterr().out == ""
@@ -188,7 +188,7 @@ def test_old_loiter_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> None:
     assert without_run_columns(rows) == without_run_columns(vt.sweep.run_cases(again.cases(), SERIAL))
     # The body-mounted camera sees less than the levelled one, at the same plan.
     by = {(row["uav.speed"], row["camera.mount"], row["wind"]["east"]): row for row in rows}
-    assert by[(15.0, "roll", 0.0)]["coverage_time_s"] < by[(15.0, "levelled", 0.0)]["coverage_time_s"]
+    assert by[(13.0, "roll", 0.0)]["coverage_time_s"] < by[(13.0, "levelled", 0.0)]["coverage_time_s"]
     with pytest.raises(vt.VistrackError, match=r"parameters\.camera = .*camera\.altitude is now uav\.altitude"):
         SweepSpec.from_dict({"kind": "loiter", "base": {"aois": aois}, "parameters": {"camera": [{"altitude": 70}]}})
 

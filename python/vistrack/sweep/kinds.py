@@ -17,7 +17,7 @@ from typing import Any, Callable, Mapping, Optional
 
 from .._core import RoadNetwork, VistrackError
 from ..io import read_yaml_mapping
-from ..schema import fail, number, resolve_path
+from ..schema import fail, resolve_path
 from .resources import Resources
 
 __all__ = ["KINDS", "CaseContext", "CaseKind", "CaseOutput", "dotted_keys", "flatten", "get_kind", "register_kind",

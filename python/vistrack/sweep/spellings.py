@@ -10,8 +10,8 @@ from __future__ import annotations
 import math
 from typing import Any, Callable, Mapping, Sequence
 
-from ..schema import fail, number
 from ..scenario_blocks import Rename, renamed, upgrade
+from ..schema import fail, number
 from .kinds import set_dotted
 
 __all__ = ["POLAR", "WindUpgrade", "gust_seed", "polar_wind", "silent", "upgrade_base", "upgrade_parameter"]
