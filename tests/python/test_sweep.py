@@ -20,7 +20,7 @@ import yaml
 import vistrack as vt
 from support.build_tree import dask_preload_arguments
 from support.paths import REPO, SHARED_DATA
-from support.sweeps import without_run_columns
+from support.sweeps import assert_same_sweep, renamed_note, without_run_columns
 from vistrack.cli import main
 from vistrack.io import read_results_table, read_roads, read_route, write_results_table
 from vistrack.sweep import SERIAL, SweepSpec
@@ -463,16 +463,13 @@ def test_waypoint_gusts_take_the_paper_model_and_the_case_seed() -> None:
     assert rows[0]["duration"] != rows[1]["duration"]
 
 
-def note(old: str, new: str) -> str:
-    return f"vistrack: '{old}' is now '{new}' (still read; see the docs' Scenario files)"
+POLAR_NOTE = renamed_note("wind.speed, wind.direction_deg", "wind.east, wind.north")
+OLD_WAYPOINT_NOTES = {renamed_note("turn_radius", "uav.min_turn_radius"), renamed_note("speed", "uav.speed"),
+                      POLAR_NOTE, renamed_note("wind.gusts: SEED", "wind.gusts: {seed: SEED}"),
+                      renamed_note("wind.gusts: true", "wind.gusts: {}")}
 
 
-POLAR_NOTE = note("wind.speed, wind.direction_deg", "wind.east, wind.north")
-OLD_WAYPOINT_NOTES = {note("turn_radius", "uav.min_turn_radius"), note("speed", "uav.speed"), POLAR_NOTE,
-                      note("wind.gusts: SEED", "wind.gusts: {seed: SEED}"), note("wind.gusts: true", "wind.gusts: {}")}
-
-
-def test_old_waypoint_sweep_spellings(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_old_waypoint_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> None:
     """Before the one schema: the vehicle at the top level, the wind by speed and direction, gusts as
     true or a seed. They still load, one line on stdout each, into the cases the new spelling gives."""
     route = str(REPO / "examples" / "waypoints_paper.csv")
@@ -493,11 +490,7 @@ def test_old_waypoint_sweep_spellings(tmp_path: Path, capsys: pytest.CaptureFixt
                           "wind.gusts": [{"seed": 7}, {}]}}
     again = SweepSpec.from_dict(new)
     assert capsys.readouterr().out == ""
-    assert spec.base == again.base and spec.parameters == again.parameters
-    assert [case.data for case in spec.cases()] == [case.data for case in again.cases()]
-    rows = vt.sweep.run_cases(spec.cases(), SERIAL)
-    assert all(row["run_status"] == "ok" for row in rows), [row["run_error"] for row in rows]
-    assert without_run_columns(rows) == without_run_columns(vt.sweep.run_cases(again.cases(), SERIAL))
+    assert_same_sweep(spec, again)
     # The old polar keys varied one at a time: the case's wind becomes components when it runs.
     polar = SweepSpec.from_dict({"kind": "waypoints", "base": {"route": route},
                                  "parameters": {"wind.speed": [0.05], "wind.direction_deg": [180.0]}})

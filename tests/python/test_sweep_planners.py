@@ -14,7 +14,7 @@ import pytest
 
 import vistrack as vt
 from support.paths import EXAMPLES
-from support.sweeps import without_run_columns
+from support.sweeps import assert_same_sweep, renamed_note, without_run_columns
 from vistrack.follow_scenario import FollowScenario
 from vistrack.sweep import SERIAL, SweepSpec
 from vistrack.sweep.kinds import flatten
@@ -157,10 +157,6 @@ def test_bad_bases_name_the_key(kind: str, base: dict[str, Any], message: str) -
     assert message in str(error.value) and str(error.value).startswith("base: ")
 
 
-def note(old: str, new: str) -> str:
-    return f"vistrack: '{old}' is now '{new}' (still read; see the docs' Scenario files)"
-
-
 def test_old_loiter_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> None:
     """Before the one schema the loiter base spelled the vehicle at the top level, the camera's
     height and mount in camera, the wind by speed and direction: still read, one line on stdout
@@ -173,19 +169,16 @@ def test_old_loiter_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> None:
                           "wind": [{"speed": 0.0}, {"speed": 4.0, "direction_deg": 0.0}]}}
     spec = SweepSpec.from_dict(old)
     assert set(capsys.readouterr().out.splitlines()) == {
-        note("turn_radius", "uav.min_turn_radius"), note("speed", "uav.speed"), note("camera.altitude", "uav.altitude"),
-        note("camera.levelled", "camera.mount"), note("wind.speed, wind.direction_deg", "wind.east, wind.north")}
+        renamed_note("turn_radius", "uav.min_turn_radius"), renamed_note("speed", "uav.speed"),
+        renamed_note("camera.altitude", "uav.altitude"), renamed_note("camera.levelled", "camera.mount"),
+        renamed_note("wind.speed, wind.direction_deg", "wind.east, wind.north")}
     new = {"kind": "loiter", "base": {"aois": aois, "uav": {"min_turn_radius": 45.0, "speed": 13.0, "altitude": 80.0},
                                       "camera": {"mount": "roll"}, "wind": {"east": 4.0, "north": 0.0}},
            "parameters": {"uav.speed": [12.0, 13.0], "camera.mount": ["levelled", "roll"], "uav.altitude": [70.0],
                           "wind": [{"east": 0.0, "north": 0.0}, {"east": 4.0, "north": 0.0}]}}
     again = SweepSpec.from_dict(new)
     assert capsys.readouterr().out == ""
-    assert spec.base == again.base and spec.parameters == again.parameters
-    assert [case.data for case in spec.cases()] == [case.data for case in again.cases()]
-    rows = vt.sweep.run_cases(spec.cases(), SERIAL)
-    assert all(row["run_status"] == "ok" for row in rows), [row["run_error"] for row in rows]
-    assert without_run_columns(rows) == without_run_columns(vt.sweep.run_cases(again.cases(), SERIAL))
+    rows = assert_same_sweep(spec, again)
     # The body-mounted camera sees less than the levelled one, at the same plan.
     by = {(row["uav.speed"], row["camera.mount"], row["wind"]["east"]): row for row in rows}
     assert by[(13.0, "roll", 0.0)]["coverage_time_s"] < by[(13.0, "levelled", 0.0)]["coverage_time_s"]
