@@ -20,8 +20,8 @@ from ..io import read_yaml_mapping
 from ..schema import fail, resolve_path
 from .resources import Resources
 
-__all__ = ["KINDS", "CaseContext", "CaseKind", "CaseOutput", "dotted_keys", "flatten", "get_kind", "register_kind",
-           "set_dotted"]
+__all__ = ["KINDS", "CaseContext", "CaseKind", "CaseOutput", "dotted_keys", "flatten", "get_kind", "overlay",
+           "register_kind", "set_dotted"]
 
 Metrics = dict[str, Any]
 
@@ -134,6 +134,14 @@ def read_base(value: Any, folder: Path, what: str) -> tuple[dict[str, Any], Path
     if isinstance(value, Mapping):
         return copy.deepcopy(dict(value)), folder
     raise fail("base", value, f"must be {what} or a YAML file of one")
+
+
+def overlay(base: dict[str, Any], given: Mapping[str, Any]) -> None:
+    """Set ``given``'s keys in ``base``; a block (mapping) given where ``base`` has one keeps the
+    base's other keys."""
+    for key, value in given.items():
+        both = isinstance(base.get(key), dict) and isinstance(value, Mapping)
+        base[key] = {**base[key], **value} if both else value
 
 
 def set_dotted(data: Mapping[str, Any], key: str, value: Any) -> dict[str, Any]:

@@ -55,6 +55,7 @@ from .kinds import (
     CaseOutput,
     dotted_keys,
     flatten,
+    overlay,
     read_base,
     register_kind,
     set_case_value,
@@ -81,10 +82,8 @@ def _defaults() -> dict[str, Any]:
     p, camera, cover, calm = loiter.Parameters(), loiter.Camera(), loiter.CoverageOptions(), Wind()
     return {"method": "ldlpp", "order": "given", "turns": p.turns, "aoi_radius": p.aoi_radius,
             "uav": {"speed": p.speed, "min_turn_radius": p.turn_radius, "altitude": camera.altitude},
-            "start": [0.0, 0.0], "end": [0.0, 0.0],
-            "camera": {"fov_deg": camera.fov_deg, "max_gimbal_deg": camera.max_gimbal_deg,
-                       "mount": CAMERA_MOUNTS[0] if camera.levelled else CAMERA_MOUNTS[1]},
-            "threshold": cover.threshold, "dt": cover.dt, "wind": {"east": calm.east, "north": calm.north}}
+            "start": [0.0, 0.0], "end": [0.0, 0.0], "camera": _camera(camera), "threshold": cover.threshold,
+            "dt": cover.dt, "wind": {"east": calm.east, "north": calm.north}}
 
 
 def _from_file(scenario: loiter.Scenario) -> dict[str, Any]:
@@ -93,8 +92,13 @@ def _from_file(scenario: loiter.Scenario) -> dict[str, Any]:
     return {"aois": scenario.aois.tolist(), "start": list(scenario.start), "end": list(scenario.end),
             "uav": {"speed": scenario.speed, "min_turn_radius": scenario.turn_radius, "altitude": camera.altitude},
             "aoi_radius": scenario.aoi_radius, "turns": scenario.turns, "threshold": scenario.threshold,
-            "dt": scenario.dt, "camera": {"fov_deg": camera.fov_deg, "max_gimbal_deg": camera.max_gimbal_deg,
-                                          "mount": CAMERA_MOUNTS[0] if camera.levelled else CAMERA_MOUNTS[1]}}
+            "dt": scenario.dt, "camera": _camera(camera)}
+
+
+def _camera(camera: loiter.Camera) -> dict[str, Any]:
+    """A camera as the camera block (its height is uav.altitude)."""
+    return {"fov_deg": camera.fov_deg, "max_gimbal_deg": camera.max_gimbal_deg,
+            "mount": CAMERA_MOUNTS[0] if camera.levelled else CAMERA_MOUNTS[1]}
 
 
 def _base(value: Any, folder: Path) -> dict[str, Any]:
@@ -104,10 +108,7 @@ def _base(value: Any, folder: Path) -> dict[str, Any]:
     full = _defaults()
     if data.get("scenario") is not None:  # the file's AOIs and settings, read once
         full.update(_from_file(read_loiter_scenario(resolve_path(folder, data["scenario"], "scenario"))))
-    for key, given in data.items():  # a block given in part keeps the other keys it had
-        if key != "scenario":
-            both = isinstance(full.get(key), dict) and isinstance(given, Mapping)
-            full[key] = {**full[key], **given} if both else given
+    overlay(full, {k: v for k, v in data.items() if k != "scenario"})  # a block given in part keeps the rest
     if sum(full.get(k) is not None for k in _SOURCES) != 1:
         raise fail("aois", {k: full.get(k) for k in ("scenario", *_SOURCES)},
                    "give exactly one of scenario: FILE, aois: [[x, y], ...], random: {count, seed}")

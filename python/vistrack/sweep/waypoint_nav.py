@@ -52,6 +52,7 @@ from .kinds import (
     CaseKind,
     CaseOutput,
     dotted_keys,
+    overlay,
     read_base,
     register_kind,
     set_case_value,
@@ -89,10 +90,7 @@ def _defaults(data: Mapping[str, Any], folder: Path) -> dict[str, Any]:
                             "uav": {"speed": d.speed, "min_turn_radius": d.turn_radius}, "dt": d.dt,
                             "gains": list(d.gains), "weights": list(d.weights), "integration": d.integration,
                             "max_time": None, "wind": {"east": calm.east, "north": calm.north, "gusts": None}}
-    for key in _SETTINGS:  # a block given in part keeps the defaults of its other keys
-        if key in data:
-            both = isinstance(full[key], dict) and isinstance(data[key], Mapping)
-            full[key] = {**full[key], **data[key]} if both else data[key]
+    overlay(full, {k: v for k, v in data.items() if k in _SETTINGS})  # a block given in part keeps the rest
     sources = [k for k in _SOURCES if data.get(k) is not None]
     if len(sources) != 1:
         raise fail("route", {k: data.get(k) for k in _SOURCES},
