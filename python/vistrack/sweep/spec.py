@@ -188,7 +188,7 @@ def _parameters(data: Any, kind: CaseKind, base: Mapping[str, Any], seed: int) -
     parameters: dict[str, list[Any]] = {}
     for position, (key, value) in enumerate(data.items()):
         values = _values(f"parameters.{key}", value, np.random.SeedSequence(seed, spawn_key=(0, position)))
-        if kind.upgrade_parameter is not None:  # an old spelling as the new one (a line on stdout)
+        if kind.upgrade_parameter is not None and isinstance(key, str):  # an old spelling as the new one
             key, values = kind.upgrade_parameter(key, values)
         if key in parameters:
             raise fail(f"parameters.{key}", value, "given twice (once in its old spelling)")
