@@ -96,6 +96,12 @@ void bind_follow(py::module_& parent) {
       .def_property_readonly("end_time", &GroundVehicle::end_time, "s")
       .def_property_readonly("max_speed", &GroundVehicle::max_speed, "Largest segment speed (m/s).");
 
+  const auto follow_uav = py::repr(py::cast(kFollowUav)).cast<std::string>();  // Uav is bound by now
+  m.def("default_uav", [] { return kFollowUav; },
+        ("The follower's vehicle where a scenario gives none, as a new " + follow_uav +
+         " (the paper's UAV flies at 20-23 m/s).")
+            .c_str());
+
   const FollowParameters defaults;
   py::class_<FollowParameters>(m, "FollowParameters",
                                "The follow planner's settings (defaults from the C++ struct). Angles in radians.")

@@ -38,9 +38,9 @@ LoiterCoverageOptions make_options(double threshold, double dt) {
   return options;
 }
 
-const char* const kProblemArgs =
-    "aois: (n, 2) AOI centres (POIs), m; start, end: (x, y), m; turn_radius r (m), speed v (m/s), "
-    "aoi_radius R >= r (m), turns: full loiters per AOI (>= 1).";
+const char* const kParameterArgs =
+    "turn_radius r (m), speed v (m/s), aoi_radius R >= r (m), turns: full loiters per AOI (>= 1).";
+const std::string kProblemArgs = std::string("aois: (n, 2) AOI centres (POIs), m; start, end: (x, y), m; ") + kParameterArgs;
 
 }  // namespace
 
@@ -58,6 +58,45 @@ void bind_loiter(py::module_& parent) {
   m.attr("ORDERS") = enum_names<LoiterOrder>();
   m.attr("EXACT_ORDER_LIMIT") = kExactOrderLimit;
   m.attr("STANDARD_GRAVITY") = kStandardGravity;
+
+  py::class_<LoiterParameters>(m, "Parameters",
+                               "The vehicle and the loiters of a plan; the defaults (section 4.1's Raven RQ-11B, R = r, "
+                               "one loiter) are those of plan() and of a loiter scenario.")
+      .def(py::init([](double turn_radius, double speed, double aoi_radius, int turns) {
+             return make_validated(LoiterParameters{turn_radius, speed, aoi_radius, turns});
+           }),
+           py::kw_only(), py::arg("turn_radius") = defaults.turn_radius, py::arg("speed") = defaults.speed,
+           py::arg("aoi_radius") = defaults.aoi_radius, py::arg("turns") = defaults.turns, kParameterArgs)
+      .def_readwrite("turn_radius", &LoiterParameters::turn_radius, "r: the aircraft's minimum turn radius, m.")
+      .def_readwrite("speed", &LoiterParameters::speed, "v: constant airspeed, m/s.")
+      .def_readwrite("aoi_radius", &LoiterParameters::aoi_radius, "R >= r: the loiter circle about each AOI, m.")
+      .def_readwrite("turns", &LoiterParameters::turns, "Full loiters flown around each AOI (at least 1).")
+      .def("validate", &LoiterParameters::validate, "Raise VistrackError naming the first invalid field.")
+      .def("__repr__", [](const LoiterParameters& p) {
+        return Repr("loiter.Parameters")
+            .add("turn_radius", p.turn_radius)
+            .add("speed", p.speed)
+            .add("aoi_radius", p.aoi_radius)
+            .add("turns", p.turns)
+            .str();
+      });
+
+  py::class_<LoiterCoverageOptions>(m, "CoverageOptions",
+                                    "Section 4.1's coverage rule: an AOI is covered at a time step when at least "
+                                    "`threshold` of its disk lies in the footprint; steps dt apart (the paper: 1 s).")
+      .def(py::init([](double threshold, double dt, double gravity) {
+             return make_validated(LoiterCoverageOptions{threshold, dt, gravity});
+           }),
+           py::kw_only(), py::arg("threshold") = coverage_defaults.threshold, py::arg("dt") = coverage_defaults.dt,
+           py::arg("gravity") = coverage_defaults.gravity,
+           "threshold: a fraction in (0, 1]; dt (s); gravity (m/s^2) for the bank of a coordinated turn.")
+      .def_readwrite("threshold", &LoiterCoverageOptions::threshold, "Share of an AOI's disk in view to count, (0, 1].")
+      .def_readwrite("dt", &LoiterCoverageOptions::dt, "Time step, s.")
+      .def_readwrite("gravity", &LoiterCoverageOptions::gravity, "m/s^2, for the bank angle of a coordinated turn.")
+      .def("validate", &LoiterCoverageOptions::validate, "Raise VistrackError naming the first invalid field.")
+      .def("__repr__", [](const LoiterCoverageOptions& o) {
+        return Repr("loiter.CoverageOptions").add("threshold", o.threshold).add("dt", o.dt).add("gravity", o.gravity).str();
+      });
 
   py::class_<LoiterSegment>(m, "Segment",
                             "One piece of a plan: a line or an arc (radius r for turns, R around an AOI).")

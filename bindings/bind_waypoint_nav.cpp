@@ -25,6 +25,15 @@ using Weights = std::pair<double, double>;
 
 FuelWeights fuel_weights(const Weights& w) { return {w.first, w.second}; }
 
+// navigate()'s and Options' keyword arguments as the struct (not validated: the callee does).
+WaypointNavOptions navigation_options(NavigationMethod method, double turn_radius, double speed, double dt,
+                                      std::pair<double, double> gains, std::optional<double> waypoint_radius,
+                                      const Weights& weights, FlightIntegration integration,
+                                      std::optional<double> max_time) {
+  return {method, turn_radius, speed, dt, {gains.first, gains.second}, waypoint_radius, fuel_weights(weights),
+          integration, max_time};
+}
+
 // turning_points' batch result: one entry per horizon.
 struct TurningPointBatch {
   py::array_t<double> theta, length;
@@ -214,31 +223,57 @@ void bind_waypoint_nav(py::module_& parent) {
                              "sum of v dt (w_s + (w_a - w_s) |r| / (v/R))");
 
   const WaypointNavOptions defaults;
-  py::dict d;
-  d["turn_radius"] = defaults.turn_radius;
-  d["speed"] = defaults.speed;
-  d["dt"] = defaults.dt;
-  d["gains"] = py::make_tuple(defaults.gains.g, defaults.gains.h);
-  d["weights"] = py::make_tuple(defaults.weights.arc, defaults.weights.straight);
-  d["integration"] = to_string(defaults.integration);
-  d["method"] = to_string(defaults.method);
-  m.attr("DEFAULTS") = d;
+  py::class_<WaypointNavOptions>(m, "Options",
+                                 "One navigation flight's settings; the defaults (the paper's section 3) are those of "
+                                 "navigate() and fly().")
+      .def(py::init([](NavigationMethod method, double turn_radius, double speed, double dt,
+                       std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
+                       FlightIntegration integration, std::optional<double> max_time) {
+             return make_validated(navigation_options(method, turn_radius, speed, dt, gains, waypoint_radius, weights,
+                                                      integration, max_time));
+           }),
+           py::kw_only(), py::arg("method") = defaults.method, py::arg("turn_radius") = defaults.turn_radius,
+           py::arg("speed") = defaults.speed, py::arg("dt") = defaults.dt,
+           py::arg("gains") = std::make_pair(defaults.gains.g, defaults.gains.h), py::arg("waypoint_radius") = py::none(),
+           py::arg("weights") = Weights{defaults.weights.arc, defaults.weights.straight},
+           py::arg("integration") = defaults.integration, py::arg("max_time") = py::none(),
+           "method 'dwn' or 'wn'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP "
+           "(None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + "
+           "2 pi R per waypoint) / v).")
+      .def_readwrite("method", &WaypointNavOptions::method, "'dwn' or 'wn'")
+      .def_readwrite("turn_radius", &WaypointNavOptions::turn_radius, "R: minimum turn radius and DWN's turning circles")
+      .def_readwrite("speed", &WaypointNavOptions::speed, "v")
+      .def_readwrite("dt", &WaypointNavOptions::dt, "the law's step (and the discrete flight's)")
+      .def_property(
+          "gains", [](const WaypointNavOptions& o) { return std::make_pair(o.gains.g, o.gains.h); },
+          [](WaypointNavOptions& o, std::pair<double, double> gains) { o.gains = {gains.first, gains.second}; },
+          "(g, h) of the feedback law (5)")
+      .def_readwrite("waypoint_radius", &WaypointNavOptions::waypoint_radius, "WN's R_WP; None: R (DWN has none)")
+      .def_property(
+          "weights", [](const WaypointNavOptions& o) { return Weights{o.weights.arc, o.weights.straight}; },
+          [](WaypointNavOptions& o, const Weights& weights) { o.weights = fuel_weights(weights); },
+          "(w_a, w_s): fuel per unit length on arcs and straights")
+      .def_readwrite("integration", &WaypointNavOptions::integration, "'discrete' (the paper's) or 'continuous'")
+      .def_readwrite("max_time", &WaypointNavOptions::max_time, "time limit, s; None: from the route")
+      .def("validate", &WaypointNavOptions::validate, "Raise VistrackError naming the first invalid field.")
+      .def("__repr__", [](const WaypointNavOptions& o) {
+        Repr text("waypoint_nav.Options");
+        text.add("method", o.method).add("turn_radius", o.turn_radius).add("speed", o.speed).add("dt", o.dt);
+        text.add("gains", Vec2(o.gains.g, o.gains.h));
+        if (o.waypoint_radius) text.add("waypoint_radius", *o.waypoint_radius);
+        text.add("weights", Vec2(o.weights.arc, o.weights.straight));
+        text.add("integration", o.integration);
+        if (o.max_time) text.add("max_time", *o.max_time);
+        return text.str();
+      });
 
   m.def(
       "navigate",
       [](const InputArray& waypoints, const Pose& start, NavigationMethod method, double turn_radius, double speed,
          double dt, std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
          std::optional<Wind> wind, FlightIntegration integration, std::optional<double> max_time) {
-        WaypointNavOptions o;
-        o.method = method;
-        o.turn_radius = turn_radius;
-        o.speed = speed;
-        o.dt = dt;
-        o.gains = {gains.first, gains.second};
-        o.waypoint_radius = waypoint_radius;
-        o.weights = fuel_weights(weights);
-        o.integration = integration;
-        o.max_time = max_time;
+        const WaypointNavOptions o = navigation_options(method, turn_radius, speed, dt, gains, waypoint_radius, weights,
+                                                        integration, max_time);
         const std::vector<Vec2> route = to_points(waypoints, "waypoints");
         const Wind w = wind.value_or(Wind{});
         py::gil_scoped_release release;

@@ -72,9 +72,10 @@ def renamed(old: str, new: str) -> None:
     print(f"vistrack: '{old}' is now '{new}' (still read; see the docs' Scenario files)")
 
 
-def upgrade(data: Mapping[str, Any], renames: Sequence[Rename]) -> dict:
+def upgrade(data: Mapping[str, Any], renames: Sequence[Rename], note: Callable[[str, str], None] = renamed) -> dict:
     """``data`` with every old spelling moved to its new key (one line on stdout for each, by
-    :func:`renamed`); a file giving both the old and the new key is refused, naming the old one."""
+    :func:`renamed`, or passed to ``note``); a file giving both the old and the new key is refused,
+    naming the old one."""
     out = {key: dict(value) if isinstance(value, Mapping) else value for key, value in data.items()}
     for rename in renames:
         found, value = _pop(out, rename.old)
@@ -83,7 +84,7 @@ def upgrade(data: Mapping[str, Any], renames: Sequence[Rename]) -> dict:
         if _has(out, rename.new):
             raise fail(rename.old, value, f"renamed to {rename.new}: give only {rename.new}")
         _put(out, rename.new, rename.convert(value) if rename.convert else value)
-        renamed(rename.old, rename.new)
+        note(rename.old, rename.new)
     return out
 
 

@@ -245,6 +245,13 @@ TEST(FollowPlannerTest, HysteresisBandSuppressesChattering) {
   EXPECT_GT(switches, 1);
 }
 
+// A follow scenario without a uav block flies the follower's default vehicle: a valid one.
+TEST(FollowPlannerTest, DefaultUavIsValid) {
+  static_assert(kFollowUav.speed > 0.0 && kFollowUav.min_turn_radius > 0.0);
+  EXPECT_NO_THROW(kFollowUav.validate());
+  EXPECT_NO_THROW(FollowPlanner(FollowParameters{}, kFollowUav));
+}
+
 TEST(FollowPlannerTest, ParametersNameTheField) {
   FollowParameters p;
   p.hysteresis = 3.5;

@@ -20,7 +20,7 @@ import yaml
 import vistrack as vt
 from support.build_tree import dask_preload_arguments
 from support.paths import REPO, SHARED_DATA
-from support.sweeps import without_run_columns
+from support.sweeps import assert_same_sweep, renamed_note, without_run_columns
 from vistrack.cli import main
 from vistrack.io import read_results_table, read_roads, read_route, write_results_table
 from vistrack.sweep import SERIAL, SweepSpec
@@ -412,10 +412,10 @@ def test_waypoint_sweep_equals_fly(tmp_path: Path) -> None:
     route_file = REPO / "examples" / "waypoints_paper.csv"
     spec = SweepSpec.from_dict({"name": "wp", "kind": "waypoints",
                                 "base": {"route": str(route_file), "wind": {"east": 0.0, "north": 0.08}},
-                                "parameters": {"method": ["dwn", "wn"], "turn_radius": [0.7, -1.0]}})
+                                "parameters": {"method": ["dwn", "wn"], "uav.min_turn_radius": [0.7, -1.0]}})
     result = vt.sweep.run(spec, SERIAL, out=tmp_path, figures=False)
     assert [row["run_status"] for row in result.rows] == ["ok", "failed", "ok", "failed"]
-    assert "turn_radius = -1.0" in result.rows[1]["run_error"]
+    assert "uav.min_turn_radius = -1: must be" in result.rows[1]["run_error"]
     route = read_route(route_file)
     for row in (result.rows[0], result.rows[2]):
         flight = vt.waypoint_nav.fly(route, method=row["method"], wind=vt.flight.Wind(east=0.0, north=0.08))
@@ -429,7 +429,8 @@ def test_waypoint_sweep_equals_fly(tmp_path: Path) -> None:
 def test_waypoint_sweep_pairs_methods_on_seeded_random_routes(tmp_path: Path) -> None:
     spec = SweepSpec.from_dict({"kind": "waypoints", "seed": 5,
                                 "base": {"random_route": {"count": 4, "legs": [4, 8]},
-                                         "wind": {"speed": 0.1, "direction_deg": 30.0, "gusts": 11}},
+                                         "wind": {"east": 0.1 * math.cos(math.radians(30.0)),
+                                                  "north": 0.1 * math.sin(math.radians(30.0)), "gusts": {"seed": 11}}},
                                 "parameters": {"random_route.seed": [1, 2], "method": ["dwn", "wn"]}})
     rows = vt.sweep.run(spec, SERIAL, out=tmp_path, figures=False).rows
     assert all(row["run_status"] == "ok" for row in rows), [row["run_error"] for row in rows]
@@ -447,16 +448,76 @@ def test_waypoint_sweep_pairs_methods_on_seeded_random_routes(tmp_path: Path) ->
     assert without_run_columns(first) == without_run_columns(vt.sweep.run_cases(own.cases(), SERIAL))
 
 
+def test_waypoint_gusts_take_the_paper_model_and_the_case_seed() -> None:
+    """A gusts block given in part: the paper's gust model for the rest, the case's seed without one."""
+    route = [[0.0, 0.0], [5.0, 0.0], [5.0, 5.0]]
+    spec = SweepSpec.from_dict({"kind": "waypoints", "base": {"waypoints": route},
+                                "parameters": {"wind.gusts": [{}, {"seed": 3, "intensity": 0.01}]}})
+    cases = spec.cases()
+    rows = vt.sweep.run_cases(cases, SERIAL)
+    paper = vt.waypoint_nav.paper_gusts(cases[0].seed)
+    mine = vt.flight.Gusts(seed=3, intensity=0.01, length_scale=paper.length_scale)
+    for row, gusts in zip(rows, (paper, mine)):
+        expected = vt.waypoint_nav.fly(route, wind=vt.flight.Wind(gusts=gusts)).metrics()
+        assert (row["max_miss_over_R"], row["duration"]) == (expected["max_miss_over_R"], expected["duration"])
+    assert rows[0]["duration"] != rows[1]["duration"]
+
+
+POLAR_NOTE = renamed_note("wind.speed, wind.direction_deg", "wind.east, wind.north")
+OLD_WAYPOINT_NOTES = {renamed_note("turn_radius", "uav.min_turn_radius"), renamed_note("speed", "uav.speed"),
+                      POLAR_NOTE, renamed_note("wind.gusts: SEED", "wind.gusts: {seed: SEED}"),
+                      renamed_note("wind.gusts: true", "wind.gusts: {}")}
+
+
+def test_old_waypoint_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> None:
+    """Before the one schema: the vehicle at the top level, the wind by speed and direction, gusts as
+    true or a seed. They still load, one line on stdout each, into the cases the new spelling gives."""
+    route = str(REPO / "examples" / "waypoints_paper.csv")
+    old = {"kind": "waypoints", "seed": 3,
+           "base": {"route": route, "turn_radius": 0.6, "speed": 0.9,
+                    "wind": {"speed": 0.05, "direction_deg": 0.0, "gusts": 7}},
+           "parameters": {"turn_radius": [0.6, 0.65], "wind": [{"speed": 0.0, "gusts": False},
+                                                               {"speed": 0.05, "direction_deg": 180.0, "gusts": True}],
+                          "wind.gusts": [7, True]}}
+    spec = SweepSpec.from_dict(old)
+    assert set(capsys.readouterr().out.splitlines()) == OLD_WAYPOINT_NOTES
+    west = {"east": 0.05 * math.cos(math.pi), "north": 0.05 * math.sin(math.pi)}
+    new = {"kind": "waypoints", "seed": 3,
+           "base": {"route": route, "uav": {"min_turn_radius": 0.6, "speed": 0.9},
+                    "wind": {"east": 0.05, "north": 0.0, "gusts": {"seed": 7}}},
+           "parameters": {"uav.min_turn_radius": [0.6, 0.65],
+                          "wind": [{"east": 0.0, "north": 0.0, "gusts": False}, {**west, "gusts": {}}],
+                          "wind.gusts": [{"seed": 7}, {}]}}
+    again = SweepSpec.from_dict(new)
+    assert capsys.readouterr().out == ""
+    assert_same_sweep(spec, again)
+    # The old polar keys varied one at a time: the case's wind becomes components when it runs.
+    polar = SweepSpec.from_dict({"kind": "waypoints", "base": {"route": route},
+                                 "parameters": {"wind.speed": [0.05], "wind.direction_deg": [180.0]}})
+    assert capsys.readouterr().out.splitlines() == [POLAR_NOTE] * 2
+    case = polar.cases()[0]
+    flown = vt.sweep.run_cases([case], SERIAL)[0]
+    wind = vt.flight.Wind(**west)
+    expected = vt.waypoint_nav.fly(read_route(Path(route)), wind=wind).metrics()
+    assert flown["max_miss_over_R"] == expected["max_miss_over_R"] and flown["duration"] == expected["duration"]
+    with pytest.raises(vt.VistrackError, match=r"parameters\.uav\.speed = .*given twice"):
+        SweepSpec.from_dict({"kind": "waypoints", "base": {"route": route},
+                             "parameters": {"speed": [0.8], "uav.speed": [0.9]}})
+
+
 @pytest.mark.parametrize(("base", "message"), [
     ({"waypoints": [[0, 0], [1, 0]], "route": "x.csv"}, "give exactly one of route"),
     ({"waypoints": [[0, 0], [1, 0]], "colour": 1}, "colour = 1: unknown key"),
     ({"waypoints": [[0, 0], [1, 0]], "method": "fast"}, "method = 'fast'"),
-    ({"waypoints": [[0, 0], [1, 0]], "wind": {"gale": 3}}, "wind = {'gale': 3}"),
+    ({"waypoints": [[0, 0], [1, 0]], "wind": {"gale": 3}}, "wind.gale = 3: unknown key"),
+    ({"waypoints": [[0, 0], [1, 0]], "uav": {"speed": 0}}, "uav.speed = 0: must be"),
+    ({"waypoints": [[0, 0], [1, 0]], "wind": {"gusts": {"seed": -1}}}, "wind.gusts.seed = -1"),
+    ({"waypoints": [[0, 0], [1, 0]], "wind": {"speed": 1, "east": 1}}, "not both"),
     ({"route": "missing.csv"}, "route = "),
 ])
 def test_bad_waypoint_bases_name_the_key(base: dict[str, Any], message: str) -> None:
     with pytest.raises(vt.VistrackError) as error:
-        SweepSpec.from_dict({"kind": "waypoints", "base": base, "parameters": {"speed": [0.8]}})
+        SweepSpec.from_dict({"kind": "waypoints", "base": base, "parameters": {"uav.speed": [0.8]}})
     assert message in str(error.value)
 
 

@@ -14,7 +14,7 @@ import pytest
 
 import vistrack as vt
 from support.paths import EXAMPLES
-from support.sweeps import without_run_columns
+from support.sweeps import assert_same_sweep, renamed_note, without_run_columns
 from vistrack.follow_scenario import FollowScenario
 from vistrack.sweep import SERIAL, SweepSpec
 from vistrack.sweep.kinds import flatten
@@ -39,7 +39,7 @@ def loiter_alone(count: int, seed: int, method: str, wind: tuple[float, float]) 
 
 LOITER_SWEEP = {"kind": "loiter", "base": {"random": {"count": 4, "seed": 0}},
                 "parameters": {"random.seed": [1, 2], "method": ["fly_through", "tlpp", "ldlpp"],
-                               "wind": [{"east": 0.0, "north": 0.0}, {"speed": 5.0, "direction_deg": 90.0}]}}
+                               "wind": [{"east": 0.0, "north": 0.0}, {"east": 0.0, "north": 5.0}]}}
 
 
 def test_loiter_sweep_equals_each_case_alone(tmp_path: Path) -> None:
@@ -48,7 +48,7 @@ def test_loiter_sweep_equals_each_case_alone(tmp_path: Path) -> None:
     assert [row["run_status"] for row in result.rows] == ["ok"] * 12, result.failed
     for case, row in zip(spec.cases(), result.rows):
         p = case.parameters
-        wind = (0.0, 0.0) if "speed" not in p["wind"] else (5.0 * math.cos(math.radians(90.0)), 5.0)
+        wind = (p["wind"]["east"], p["wind"]["north"])
         expected = loiter_alone(4, p["random.seed"], p["method"], wind)
         assert {k: row[k] for k in expected} == expected
         assert ("flown.coverage_time_s" in row and row["flown.coverage_time_s"] is not None) == (wind != (0.0, 0.0))
@@ -155,6 +155,43 @@ def test_bad_bases_name_the_key(kind: str, base: dict[str, Any], message: str) -
         parameter = "dt" if kind == "loiter" else "wind.east"
         SweepSpec.from_dict({"kind": kind, "base": base, "parameters": {parameter: [1]}})
     assert message in str(error.value) and str(error.value).startswith("base: ")
+
+
+def test_old_loiter_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> None:
+    """Before the one schema the loiter base spelled the vehicle at the top level, the camera's
+    height and mount in camera, the wind by speed and direction: still read, one line on stdout
+    each, into the cases the new spelling gives."""
+    aois = [[300.0, 200.0], [600.0, 500.0]]
+    old = {"kind": "loiter", "base": {"aois": aois, "turn_radius": 45.0, "speed": 13.0,
+                                      "camera": {"altitude": 80.0, "levelled": False},
+                                      "wind": {"speed": 4.0, "direction_deg": 0.0}},
+           "parameters": {"speed": [12.0, 13.0], "camera.levelled": [True, False], "camera.altitude": [70.0],
+                          "wind": [{"speed": 0.0}, {"speed": 4.0, "direction_deg": 0.0}]}}
+    spec = SweepSpec.from_dict(old)
+    assert set(capsys.readouterr().out.splitlines()) == {
+        renamed_note("turn_radius", "uav.min_turn_radius"), renamed_note("speed", "uav.speed"),
+        renamed_note("camera.altitude", "uav.altitude"), renamed_note("camera.levelled", "camera.mount"),
+        renamed_note("wind.speed, wind.direction_deg", "wind.east, wind.north")}
+    new = {"kind": "loiter", "base": {"aois": aois, "uav": {"min_turn_radius": 45.0, "speed": 13.0, "altitude": 80.0},
+                                      "camera": {"mount": "roll"}, "wind": {"east": 4.0, "north": 0.0}},
+           "parameters": {"uav.speed": [12.0, 13.0], "camera.mount": ["levelled", "roll"], "uav.altitude": [70.0],
+                          "wind": [{"east": 0.0, "north": 0.0}, {"east": 4.0, "north": 0.0}]}}
+    again = SweepSpec.from_dict(new)
+    assert capsys.readouterr().out == ""
+    rows = assert_same_sweep(spec, again)
+    # The body-mounted camera sees less than the levelled one, at the same plan.
+    by = {(row["uav.speed"], row["camera.mount"], row["wind"]["east"]): row for row in rows}
+    assert by[(13.0, "roll", 0.0)]["coverage_time_s"] < by[(13.0, "levelled", 0.0)]["coverage_time_s"]
+    with pytest.raises(vt.VistrackError, match=r"parameters\.camera = .*camera\.altitude is now uav\.altitude"):
+        SweepSpec.from_dict({"kind": "loiter", "base": {"aois": aois}, "parameters": {"camera": [{"altitude": 70}]}})
+
+
+def test_loiter_base_blocks_take_the_file_key_by_key() -> None:
+    """Keys given beside a scenario file win one by one, inside a block too."""
+    spec = SweepSpec.from_dict({"kind": "loiter", "base": {"scenario": str(EXAMPLES / "loiter_6aoi.yaml"),
+                                                           "uav": {"speed": 15.0}},
+                                "parameters": {"method": ["tlpp"]}})
+    assert spec.base["uav"] == {"speed": 15.0, "min_turn_radius": 46.0, "altitude": 61.0}
 
 
 def test_parameters_are_keys_of_the_kind() -> None:

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 
+#include "vistrack/dubins_parameters.hpp"
 #include "vistrack/flight_parameters.hpp"
 #include "vistrack/geometry.hpp"
 
@@ -25,6 +26,10 @@ struct EnumNames<OffsetReference> {
       {"heading", OffsetReference::Heading}, {"cardinal", OffsetReference::North},
       {"relative", OffsetReference::Heading}};
 };
+
+// The follower's vehicle where a scenario gives none: the paper's UAV flies at 20-23 m/s; 200 m
+// above open ground.
+inline constexpr Uav kFollowUav{21.0, 50.0, 200.0};
 
 // The follow planner's settings. Angles in radians; speeds are taken from the Uav (airspeed v,
 // minimum turn radius r_min, altitude of the camera).

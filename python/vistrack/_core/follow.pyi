@@ -8,7 +8,7 @@ import numpy.typing
 import typing
 import vistrack._core
 import vistrack._core.flight
-__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'VehicleLeg', 'along_track_rate', 'arc_length', 'camera_sees', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_slope', 'speed_ratio']
+__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'VehicleLeg', 'along_track_rate', 'arc_length', 'camera_sees', 'default_uav', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_slope', 'speed_ratio']
 class VehicleLeg:
     """
     One leg of a route: heading (rad from east), speed at its start and end (m/s, linear in between; 0 and 0 is a stop), duration (s).
@@ -640,6 +640,10 @@ def arc_length(x: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], ampli
 def camera_sees(camera: DownwardCamera, uav: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], psi: typing.SupportsFloat | typing.SupportsIndex, bank: typing.SupportsFloat | typing.SupportsIndex, target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"]) -> bool:
     """
     Whether the ground point target (3,) is in the footprint of the camera at uav (3,).
+    """
+def default_uav() -> vistrack._core.Uav:
+    """
+    The follower's vehicle where a scenario gives none, as a new Uav(speed=21, min_turn_radius=50, altitude=200, dynamics='dubins') (the paper's UAV flies at 20-23 m/s).
     """
 def follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] | None = None, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0, offset_schedule: collections.abc.Sequence[tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]] = []) -> FollowRun:
     """

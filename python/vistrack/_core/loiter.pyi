@@ -8,7 +8,91 @@ import numpy.typing
 import typing
 import vistrack.georeference
 import vistrack.mission.model
-__all__: list[str] = ['Camera', 'Coverage', 'EXACT_ORDER_LIMIT', 'Footprint', 'METHODS', 'ORDERS', 'Plan', 'STANDARD_GRAVITY', 'Samples', 'Segment', 'bank_angle', 'best_order', 'ellipse_disk_area', 'entry_angle', 'entry_distance', 'order_length', 'plan', 'plan_coverage', 'plan_in_order', 'sample_coverage', 'turn_angle']
+__all__: list[str] = ['Camera', 'Coverage', 'CoverageOptions', 'EXACT_ORDER_LIMIT', 'Footprint', 'METHODS', 'ORDERS', 'Parameters', 'Plan', 'STANDARD_GRAVITY', 'Samples', 'Segment', 'bank_angle', 'best_order', 'ellipse_disk_area', 'entry_angle', 'entry_distance', 'order_length', 'plan', 'plan_coverage', 'plan_in_order', 'sample_coverage', 'turn_angle']
+class Parameters:
+    """
+    The vehicle and the loiters of a plan; the defaults (section 4.1's Raven RQ-11B, R = r, one loiter) are those of plan() and of a loiter scenario.
+    """
+    def __init__(self, *, turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsInt | typing.SupportsIndex = 1) -> None:
+        """
+        turn_radius r (m), speed v (m/s), aoi_radius R >= r (m), turns: full loiters per AOI (>= 1).
+        """
+    def __repr__(self) -> str:
+        ...
+    def validate(self) -> None:
+        """
+        Raise VistrackError naming the first invalid field.
+        """
+    @property
+    def aoi_radius(self) -> float:
+        """
+        R >= r: the loiter circle about each AOI, m.
+        """
+    @aoi_radius.setter
+    def aoi_radius(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def speed(self) -> float:
+        """
+        v: constant airspeed, m/s.
+        """
+    @speed.setter
+    def speed(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def turn_radius(self) -> float:
+        """
+        r: the aircraft's minimum turn radius, m.
+        """
+    @turn_radius.setter
+    def turn_radius(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def turns(self) -> int:
+        """
+        Full loiters flown around each AOI (at least 1).
+        """
+    @turns.setter
+    def turns(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+class CoverageOptions:
+    """
+    Section 4.1's coverage rule: an AOI is covered at a time step when at least `threshold` of its disk lies in the footprint; steps dt apart (the paper: 1 s).
+    """
+    def __init__(self, *, threshold: typing.SupportsFloat | typing.SupportsIndex = 0.75, dt: typing.SupportsFloat | typing.SupportsIndex = 1.0, gravity: typing.SupportsFloat | typing.SupportsIndex = 9.80665) -> None:
+        """
+        threshold: a fraction in (0, 1]; dt (s); gravity (m/s^2) for the bank of a coordinated turn.
+        """
+    def __repr__(self) -> str:
+        ...
+    def validate(self) -> None:
+        """
+        Raise VistrackError naming the first invalid field.
+        """
+    @property
+    def dt(self) -> float:
+        """
+        Time step, s.
+        """
+    @dt.setter
+    def dt(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def gravity(self) -> float:
+        """
+        m/s^2, for the bank angle of a coordinated turn.
+        """
+    @gravity.setter
+    def gravity(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def threshold(self) -> float:
+        """
+        Share of an AOI's disk in view to count, (0, 1].
+        """
+    @threshold.setter
+    def threshold(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
 class Segment:
     """
     One piece of a plan: a line or an arc (radius r for turns, R around an AOI).

@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core.flight
-__all__: list[str] = ['CASES', 'DEFAULTS', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'TurningPoint', 'TurningPointRecord', 'TurningPoints', 'horizon_lengths', 'horizon_path', 'navigate', 'reachability', 'turning_point', 'turning_points']
+__all__: list[str] = ['CASES', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'Options', 'TurningPoint', 'TurningPointRecord', 'TurningPoints', 'horizon_lengths', 'horizon_path', 'navigate', 'reachability', 'turning_point', 'turning_points']
 class HorizonPath:
     """
     The horizon path C -> arc -> straight -> T_n -> arc through W_n -> straight -> W_{n+1}.
@@ -235,6 +235,92 @@ class NavigationResult:
         """
         R_WP (WN)
         """
+class Options:
+    """
+    One navigation flight's settings; the defaults (the paper's section 3) are those of navigate() and fly().
+    """
+    def __init__(self, *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None) -> None:
+        """
+        method 'dwn' or 'wn'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP (None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + 2 pi R per waypoint) / v).
+        """
+    def __repr__(self) -> str:
+        ...
+    def validate(self) -> None:
+        """
+        Raise VistrackError naming the first invalid field.
+        """
+    @property
+    def dt(self) -> float:
+        """
+        the law's step (and the discrete flight's)
+        """
+    @dt.setter
+    def dt(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def gains(self) -> tuple[float, float]:
+        """
+        (g, h) of the feedback law (5)
+        """
+    @gains.setter
+    def gains(self, arg1: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]) -> None:
+        ...
+    @property
+    def integration(self) -> str:
+        """
+        'discrete' (the paper's) or 'continuous'
+        """
+    @integration.setter
+    def integration(self, arg0: str) -> None:
+        ...
+    @property
+    def max_time(self) -> float | None:
+        """
+        time limit, s; None: from the route
+        """
+    @max_time.setter
+    def max_time(self, arg0: typing.SupportsFloat | typing.SupportsIndex | None) -> None:
+        ...
+    @property
+    def method(self) -> str:
+        """
+        'dwn' or 'wn'
+        """
+    @method.setter
+    def method(self, arg0: str) -> None:
+        ...
+    @property
+    def speed(self) -> float:
+        """
+        v
+        """
+    @speed.setter
+    def speed(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def turn_radius(self) -> float:
+        """
+        R: minimum turn radius and DWN's turning circles
+        """
+    @turn_radius.setter
+    def turn_radius(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def waypoint_radius(self) -> float | None:
+        """
+        WN's R_WP; None: R (DWN has none)
+        """
+    @waypoint_radius.setter
+    def waypoint_radius(self, arg0: typing.SupportsFloat | typing.SupportsIndex | None) -> None:
+        ...
+    @property
+    def weights(self) -> tuple[float, float]:
+        """
+        (w_a, w_s): fuel per unit length on arcs and straights
+        """
+    @weights.setter
+    def weights(self, arg1: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]) -> None:
+        ...
 def horizon_lengths(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], w_next: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], w_after: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, case: str, thetas: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> numpy.typing.NDArray[numpy.float64]:
     """
     F(theta) of one case at each theta (inf where the path does not exist).
@@ -260,4 +346,3 @@ def turning_points(poses: typing.Annotated[numpy.typing.ArrayLike, numpy.float64
     Batch of turning points, one thread, GIL released: poses (n, 3), w_next and w_after (n, 2) -> TurningPoints.
     """
 CASES: tuple = ('ccw-ccw', 'ccw-cw', 'cw-ccw', 'cw-cw')
-DEFAULTS: dict = {'turn_radius': 0.7, 'speed': 0.8, 'dt': 0.02, 'gains': (0.1, 5.25), 'weights': (1.0, 1.0), 'integration': 'discrete', 'method': 'dwn'}

@@ -49,6 +49,7 @@ from .simulation import (
     camera_footprint,
     camera_sees,
     coordinated_bank,
+    default_uav,
     line_of_sight,
     phase_at_arc,
     simulate,
@@ -61,6 +62,6 @@ __all__ = [
     "MODES", "CityRoad", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowScenario", "FollowStudy", "FollowTick", "GroundVehicle",
     "LoiterShape", "VehicleLeg", "along_track_rate", "arc_length", "baseline", "baseline_radius", "camera_footprint",
-    "camera_sees", "coordinated_bank", "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude",
+    "camera_sees", "coordinated_bank", "default_uav", "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude",
     "sinusoid_slope", "speed_ratio",
 ]

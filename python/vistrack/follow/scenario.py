@@ -64,6 +64,7 @@ from .simulation import (
     GroundVehicle,
     VehicleLeg,
     baseline,
+    default_uav,
     simulate,
 )
 
@@ -81,8 +82,8 @@ RENAMES = (Rename("origin", "georeference", origin_to_georeference),)
 # flies the paper's law (5), the C++ default).
 LEG_GUIDANCE = ("l1", "law5")
 DEFAULT_LEG_GUIDANCE = "l1"
-# The follow examples' UAV, where the file gives none.
-DEFAULT_UAV = Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
+# The UAV where the file gives none: the C++ follower's (kFollowUav).
+DEFAULT_UAV = default_uav()
 
 CityRoad = City  # the scenario's city block with its road (the name predates the one schema)
 
@@ -93,8 +94,7 @@ class FollowScenario:
 
     vehicle: GroundVehicle
     legs: list[VehicleLeg] = field(default_factory=list)
-    uav: Uav = field(default_factory=lambda: Uav(speed=DEFAULT_UAV.speed, min_turn_radius=DEFAULT_UAV.min_turn_radius,
-                                                 altitude=DEFAULT_UAV.altitude))
+    uav: Uav = field(default_factory=default_uav)
     parameters: FollowParameters = field(default_factory=FollowParameters)
     offset_schedule: list[tuple[float, float, float]] = field(default_factory=list)
     wind: Wind = field(default_factory=Wind)
@@ -117,7 +117,7 @@ class FollowScenario:
     def from_mapping(cls, data: Mapping[str, Any], base: Path, path: Optional[Path] = None) -> "FollowScenario":
         data = upgrade(_old_city_map(data), RENAMES)
         reject_unknown(data, TOP_KEYS)
-        uav = uav_block(data, DEFAULT_UAV).uav
+        uav = uav_block(data, default_uav()).uav
         vehicle, legs = _vehicle(data, base)
         parameters = _parameters(data)
         schedule = _offset_schedule(data)
@@ -130,19 +130,19 @@ class FollowScenario:
         defaults = DownwardCamera()
         c = camera_block(data, math.degrees(defaults.fov), math.degrees(defaults.max_gimbal), mounts=("roll",))
         camera = DownwardCamera(fov=math.radians(c.fov_deg), max_gimbal=math.radians(c.max_gimbal_deg))
-        f = section(data, "flight", {"dt", "integration", "max_time", "guidance", "l1_period", "l1_damping"})
-        integration = f.get("integration", "discrete")
+        f, fd = section(data, "flight", {"dt", "integration", "max_time", "guidance", "l1_period", "l1_damping"}), \
+            FollowFlight()
+        integration = f.get("integration", fd.integration)
         if integration not in ("discrete", "continuous"):
             raise fail("flight.integration", integration, 'must be "discrete" or "continuous"')
         guidance = f.get("guidance", DEFAULT_LEG_GUIDANCE)
         if guidance not in LEG_GUIDANCE:
             raise fail("flight.guidance", guidance, "must be one of " + ", ".join(LEG_GUIDANCE))
-        d = FollowFlight()
-        flight = FollowFlight(integration=integration, dt=positive("flight.dt", f.get("dt", d.dt)),
-                              max_time=number("flight.max_time", f.get("max_time", d.max_time), low=0.0),
+        flight = FollowFlight(integration=integration, dt=positive("flight.dt", f.get("dt", fd.dt)),
+                              max_time=number("flight.max_time", f.get("max_time", fd.max_time), low=0.0),
                               guidance=guidance,
-                              l1_period=positive("flight.l1_period", f.get("l1_period", d.l1_period)),
-                              l1_damping=positive("flight.l1_damping", f.get("l1_damping", d.l1_damping)))
+                              l1_period=positive("flight.l1_period", f.get("l1_period", fd.l1_period)),
+                              l1_damping=positive("flight.l1_damping", f.get("l1_damping", fd.l1_damping)))
         radius, control = _baseline(data)
         return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
@@ -293,8 +293,10 @@ def _parameters(data: Mapping[str, Any]) -> FollowParameters:
             values[name] = str(f[name])
     try:
         return FollowParameters(wind_compensation=compensation,
-                                offset_distance=number("offset.distance", o.get("distance", 0.0), low=0.0),
-                                offset_angle=math.radians(number("offset.angle_deg", o.get("angle_deg", 0.0))),
+                                offset_distance=number("offset.distance", o.get("distance", d.offset_distance),
+                                                       low=0.0),
+                                offset_angle=math.radians(number("offset.angle_deg",
+                                                                 o.get("angle_deg", math.degrees(d.offset_angle)))),
                                 offset_reference=str(o.get("reference", d.offset_reference)), **values)
     except ValueError as error:  # the core names the field (follow.hysteresis, ...)
         raise type(error)(str(error).replace("direction =", "follow.loiter_direction =", 1)) from None

@@ -35,6 +35,7 @@ along_track_rate = _follow.along_track_rate
 arc_length = _follow.arc_length
 camera_sees = _follow.camera_sees
 coordinated_bank = _flight.coordinated_bank  # one formula, the flight layer's
+default_uav = _follow.default_uav  # a new Uav: the follower's where a scenario gives none
 phase_at_arc = _follow.phase_at_arc
 sinusoid_amplitude = _follow.sinusoid_amplitude
 sinusoid_slope = _follow.sinusoid_slope
@@ -46,7 +47,7 @@ __all__ = [
     "MODES", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowTick", "GroundVehicle", "LoiterShape", "VehicleLeg",
     "along_track_rate", "arc_length", "baseline", "baseline_radius", "camera_footprint", "camera_sees",
-    "coordinated_bank",
+    "coordinated_bank", "default_uav",
     "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_slope", "speed_ratio",
 ]
 

@@ -6,7 +6,8 @@ Wilhelm, Clem, Eberhart, *Direct Entry Minimal Path UAV Loitering Path Planning*
 paper's coverage metric: a conic 74-degree camera on a +-25 degree roll gimbal; an AOI counts as
 covered at a time step when at least 75 % of its disk lies in the footprint.
 
-- ``planning``: plans, coverage and their metrics (the API below)
+- ``planning``: plans, coverage and their metrics (the API below); every default is section
+  4.1's, from the bound C++ structs ``Parameters``, ``CoverageOptions`` and ``Camera``
 - ``scenario``: a scenario's settings, seeded random scenarios; ``files``: its YAML, plans as CSV
 - ``flying``: a plan flown through the flight layer in wind, and scored
 - ``study``: every method on a scenario, random studies at scale (old address: ``vistrack.loiter_study``)
@@ -39,8 +40,10 @@ from .planning import (
     ORDERS,
     Camera,
     Coverage,
+    CoverageOptions,
     FlightTrajectory,
     Footprint,
+    Parameters,
     Plan,
     Samples,
     Segment,
@@ -75,8 +78,10 @@ __all__ = [
     "ORDERS",
     "Camera",
     "Coverage",
+    "CoverageOptions",
     "FlightTrajectory",
     "Footprint",
+    "Parameters",
     "Plan",
     "Samples",
     "Scenario",

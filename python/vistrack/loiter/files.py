@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any, Mapping
 
 import numpy as np
 
@@ -10,10 +11,10 @@ from .. import schema
 from .._core import Uav
 from ..io.text import read_yaml_mapping
 from ..scenario_blocks import Rename, camera_block, georeference_block, origin_to_georeference, uav_block, upgrade
-from .planning import Camera, Coverage, Plan
+from .planning import Camera, Coverage, CoverageOptions, Parameters, Plan
 from .scenario import Scenario
 
-__all__ = ["RENAMES", "load_scenario", "read_loiter_scenario", "write_loiter_samples_csv"]
+__all__ = ["RENAMES", "load_scenario", "read_loiter_scenario", "vehicle_and_camera", "write_loiter_samples_csv"]
 
 # Spellings from before the one scenario schema, still read.
 RENAMES = (Rename("origin", "georeference", origin_to_georeference), Rename("turn_radius", "uav.min_turn_radius"),
@@ -33,13 +34,8 @@ def read_loiter_scenario(path: str | Path) -> Scenario:
     if not isinstance(raw_aois, list) or not raw_aois:
         raise schema.fail("aois", raw_aois, "must be a non-empty list of [x, y] AOI centres")
     aois = np.array([schema.pair(f"aois[{i}]", a) for i, a in enumerate(raw_aois)], dtype=float)
-    defaults, camera_defaults = Scenario(aois=np.zeros((0, 2))), Camera()
-    uav = uav_block(data, Uav(speed=defaults.speed, min_turn_radius=defaults.turn_radius,
-                              altitude=camera_defaults.altitude)).uav
-    mount = camera_block(data, camera_defaults.fov_deg, camera_defaults.max_gimbal_deg)
-    # The camera's height above the AOIs' ground plane is the flight altitude.
-    camera = Camera(mount.fov_deg, mount.max_gimbal_deg, uav.altitude, mount.mount == "levelled")
-    camera.validate()
+    defaults, coverage_defaults = Parameters(), CoverageOptions()
+    uav, camera = vehicle_and_camera(data)
     paper = data.get("paper") or {}
     if not isinstance(paper, dict):
         raise schema.fail("paper", paper, "must map a method to its Table 1 numbers")
@@ -58,9 +54,9 @@ def read_loiter_scenario(path: str | Path) -> Scenario:
         aoi_radius=schema.positive("aoi_radius", data.get("aoi_radius", defaults.aoi_radius)),
         turns=schema.integer("turns", data.get("turns", defaults.turns), 1, 1000),
         camera=camera,
-        threshold=schema.number("threshold", data.get("threshold", defaults.threshold), low=0.0, high=1.0,
+        threshold=schema.number("threshold", data.get("threshold", coverage_defaults.threshold), low=0.0, high=1.0,
                                 low_open=True),
-        dt=schema.positive("dt", data.get("dt", defaults.dt)),
+        dt=schema.positive("dt", data.get("dt", coverage_defaults.dt)),
         paper=paper_numbers,
         origin=georeference_block(data),
     )
@@ -69,8 +65,19 @@ def read_loiter_scenario(path: str | Path) -> Scenario:
     return scenario
 
 
+def vehicle_and_camera(data: Mapping[str, Any]) -> tuple[Uav, Camera]:
+    """The ``uav`` and ``camera`` blocks of a loiter file or sweep base, over section 4.1's defaults
+    (the bound ``Parameters`` and ``Camera``); the camera's height above the AOIs' ground plane is
+    the flight altitude."""
+    defaults, camera_defaults = Parameters(), Camera()
+    uav = uav_block(data, Uav(speed=defaults.speed, min_turn_radius=defaults.turn_radius,
+                              altitude=camera_defaults.altitude)).uav
+    mount = camera_block(data, camera_defaults.fov_deg, camera_defaults.max_gimbal_deg)
+    return uav, Camera(mount.fov_deg, mount.max_gimbal_deg, uav.altitude, mount.mount == "levelled")
+
+
 def write_loiter_samples_csv(path: str | Path, plan: Plan, coverage: Coverage, dt: float,
-                             threshold: float = 0.75) -> Path:
+                             threshold: float = CoverageOptions().threshold) -> Path:
     """The plan sampled every dt (as the coverage was): t, x, y, psi, turn rate, segment role, the AOI
     most in view, the gimbal angle and the AOIs covered at that step."""
     samples = plan.sample_states(dt, False)

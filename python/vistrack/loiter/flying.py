@@ -7,10 +7,12 @@ import numpy as np
 
 from .. import flight
 from .._core import Uav, VistrackError
-from .planning import Coverage, FlightTrajectory, Plan, Wind, coverage, threshold_value
+from .planning import Coverage, CoverageOptions, FlightTrajectory, Plan, Wind, coverage, threshold_value
 from .scenario import Scenario
 
 __all__ = ["flown_samples", "fly", "fly_and_score", "loiter_coverage_fraction", "path_pieces"]
+
+_COVERAGE = CoverageOptions()  # the defaults: the bound C++ struct's
 
 
 def path_pieces(plan: Plan) -> np.ndarray:
@@ -26,24 +28,27 @@ def path_pieces(plan: Plan) -> np.ndarray:
 
 
 def fly(plan: Plan, wind: Wind | tuple[float, float] | None = None, dt: float = 0.05,
-        integration: str = "discrete", lookahead_radii: float = 1.0, heading_gain: float = 3.0,
-        uav: Uav | None = None) -> FlightTrajectory:
+        integration: str = "discrete", lookahead_radii: float | None = None,
+        heading_gain: float | None = None, uav: Uav | None = None) -> FlightTrajectory:
     """Fly the plan through the flight layer: a ``PathFollower`` on its lines and arcs, the vehicle
     of the plan's speed and turn radius (its model and roll parameters from ``uav``; None: the
     Dubins model), in a wind the guidance does not know (``Wind`` or (east, north) m/s). Starts at
     the plan's start on its first heading; ends at its end point (or after three times the planned
-    flight time plus 10 minutes). The trajectory's turn rates are the flown ones, so its coverage
-    sees the bank flown."""
+    flight time plus 10 minutes). ``lookahead_radii`` and ``heading_gain``: the follower's gains
+    (None: ``PathFollower``'s defaults). The trajectory's turn rates are the flown ones, so its
+    coverage sees the bank flown."""
     if wind is not None and not isinstance(wind, flight.Wind):
         east, north = wind
         wind = flight.Wind(east=float(east), north=float(north))
-    follower = flight.PathFollower(path_pieces(plan), plan.speed, plan.turn_radius, lookahead_radii, heading_gain)
+    gains = {name: value for name, value in (("lookahead_radii", lookahead_radii), ("heading_gain", heading_gain))
+             if value is not None}
+    follower = flight.PathFollower(path_pieces(plan), plan.speed, plan.turn_radius, **gains)
     start = plan.at_time(0.0)
     return flight.fly(follower, start, plan.speed, plan.turn_radius, wind=wind, dt=dt,
                       max_time=3.0 * plan.flight_time + 600.0, integration=integration, uav=uav)
 
 
-def flown_samples(trajectory: FlightTrajectory, dt: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
+def flown_samples(trajectory: FlightTrajectory, dt: float = _COVERAGE.dt) -> tuple[np.ndarray, np.ndarray]:
     """A flown trajectory every ``dt`` (whole multiples of its output step): (n, 4) rows x, y, psi and
     the turn rate applied there (the input of :func:`coverage`), and the index of the path piece
     (plan segment) being flown at each."""
@@ -57,7 +62,8 @@ def flown_samples(trajectory: FlightTrajectory, dt: float = 1.0) -> tuple[np.nda
     return rows, np.asarray(trajectory.target_index)[keep]
 
 
-def loiter_coverage_fraction(plan: Plan, segments: np.ndarray, cov: Coverage, threshold: float = 0.75) -> float:
+def loiter_coverage_fraction(plan: Plan, segments: np.ndarray, cov: Coverage,
+                             threshold: float = _COVERAGE.threshold) -> float:
     """Of the time steps spent on a loiter segment (by the index of the segment flown at each), the
     fraction at which that loiter's AOI counts as covered."""
     threshold = threshold_value(threshold)

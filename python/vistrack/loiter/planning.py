@@ -19,6 +19,8 @@ Samples = _loiter.Samples
 Camera = _loiter.Camera
 Footprint = _loiter.Footprint
 Coverage = _loiter.Coverage
+Parameters = _loiter.Parameters
+CoverageOptions = _loiter.CoverageOptions
 Wind = _flight.Wind
 FlightTrajectory = _flight.FlightTrajectory
 METHODS: tuple[str, ...] = tuple(_loiter.METHODS)
@@ -38,6 +40,9 @@ Points = Union[Sequence[Sequence[float]], np.ndarray]
 
 # Section 4.1: AOIs inside an 800 x 800 m square, start and end at the origin (a corner of it).
 AREA_SIZE = 800.0
+# The defaults below are the bound C++ structs' (loiter_parameters.hpp), in one place.
+_PLAN = Parameters()
+_COVERAGE = CoverageOptions()
 
 
 def _points(aois: Points) -> np.ndarray:
@@ -61,8 +66,8 @@ def _point(value: Point, key: str) -> tuple[float, float]:
 
 
 def plan(aois: Points, method: str = "ldlpp", start: Point = (0.0, 0.0), end: Point = (0.0, 0.0),
-         turn_radius: float = 46.0, speed: float = 12.0, aoi_radius: float = 46.0, turns: int = 1,
-         order: str = "given") -> Plan:
+         turn_radius: float = _PLAN.turn_radius, speed: float = _PLAN.speed,
+         aoi_radius: float = _PLAN.aoi_radius, turns: int = _PLAN.turns, order: str = "given") -> Plan:
     """Plan a loiter mission over the AOI centres ``aois`` (n, 2).
 
     ``method``: "fly_through", "tlpp" or "ldlpp"; ``order``: "given" or "best" (the visiting order
@@ -74,8 +79,9 @@ def plan(aois: Points, method: str = "ldlpp", start: Point = (0.0, 0.0), end: Po
 
 
 def plan_in_order(aois: Points, order: Sequence[int], method: str = "ldlpp", start: Point = (0.0, 0.0),
-                  end: Point = (0.0, 0.0), turn_radius: float = 46.0, speed: float = 12.0,
-                  aoi_radius: float = 46.0, turns: int = 1) -> Plan:
+                  end: Point = (0.0, 0.0), turn_radius: float = _PLAN.turn_radius,
+                  speed: float = _PLAN.speed, aoi_radius: float = _PLAN.aoi_radius,
+                  turns: int = _PLAN.turns) -> Plan:
     """Plan visiting the AOIs in ``order`` (a permutation of their indices)."""
     return _loiter.plan_in_order(_points(aois), list(order), method, _point(start, "start"), _point(end, "end"),
                                  turn_radius, speed, aoi_radius, turns)
@@ -90,7 +96,8 @@ def turn_rates_from_headings(headings: np.ndarray, dt: float) -> np.ndarray:
 
 
 def coverage(plan_or_samples: Plan | np.ndarray, aois: Points | None = None, camera: Camera | None = None,
-             threshold: float = 0.75, dt: float = 1.0, *, speed: float | None = None,
+             threshold: float = _COVERAGE.threshold, dt: float = _COVERAGE.dt, *,
+             speed: float | None = None,
              aoi_radius: float | None = None, turn_rates: np.ndarray | None = None) -> Coverage:
     """Camera coverage of the AOIs (section 4.1) along a plan, or along poses sampled every ``dt``.
 
@@ -123,7 +130,8 @@ def coverage(plan_or_samples: Plan | np.ndarray, aois: Points | None = None, cam
         else:
             rates = turn_rates_from_headings(array[:, 2], dt)
     return _loiter.sample_coverage(poses, list(np.asarray(rates, dtype=float)), _points(aois),
-                                   46.0 if aoi_radius is None else aoi_radius, 12.0 if speed is None else speed,
+                                   _PLAN.aoi_radius if aoi_radius is None else aoi_radius,
+                                   _PLAN.speed if speed is None else speed,
                                    camera, threshold, dt)
 
 
@@ -155,7 +163,8 @@ def loiter_circles(plan: Plan) -> list[dict[str, object]]:
     return circles
 
 
-def metrics(plan: Plan, cov: Coverage | None = None, dt: float = 1.0, threshold: float = 0.75) -> dict[str, object]:
+def metrics(plan: Plan, cov: Coverage | None = None, dt: float = _COVERAGE.dt,
+            threshold: float = _COVERAGE.threshold) -> dict[str, object]:
     """Plan (and coverage) numbers as a JSON-ready dictionary; times in s and min."""
     threshold = threshold_value(threshold)
     out: dict[str, object] = {
@@ -179,7 +188,8 @@ def threshold_value(threshold: float) -> float:
     return float(threshold)
 
 
-def coverage_by_role(plan: Plan, cov: Coverage, dt: float = 1.0, threshold: float = 0.75) -> dict[str, dict[str, int]]:
+def coverage_by_role(plan: Plan, cov: Coverage, dt: float = _COVERAGE.dt,
+                     threshold: float = _COVERAGE.threshold) -> dict[str, dict[str, int]]:
     """For each segment role, the time steps (dt apart, as ``cov`` was computed) the plan spends on
     it and how many of them have some AOI covered."""
     threshold = threshold_value(threshold)

@@ -9,9 +9,11 @@ import numpy as np
 
 from .._core import VistrackError
 from ..georeference import Georeference
-from .planning import AREA_SIZE, Camera, Coverage, Plan, Point, coverage, plan
+from .planning import AREA_SIZE, Camera, Coverage, CoverageOptions, Parameters, Plan, Point, coverage, plan
 
 __all__ = ["Scenario", "random_aois", "random_scenario"]
+
+_PLAN, _COVERAGE = Parameters(), CoverageOptions()  # the defaults: the bound C++ structs'
 
 
 @dataclass
@@ -26,13 +28,13 @@ class Scenario:
     name: str = "scenario"
     start: tuple[float, float] = (0.0, 0.0)
     end: tuple[float, float] = (0.0, 0.0)
-    turn_radius: float = 46.0
-    speed: float = 12.0
-    aoi_radius: float = 46.0
-    turns: int = 1
+    turn_radius: float = _PLAN.turn_radius
+    speed: float = _PLAN.speed
+    aoi_radius: float = _PLAN.aoi_radius
+    turns: int = _PLAN.turns
     camera: Camera = field(default_factory=Camera)
-    threshold: float = 0.75
-    dt: float = 1.0
+    threshold: float = _COVERAGE.threshold
+    dt: float = _COVERAGE.dt
     paper: dict[str, dict[str, float]] = field(default_factory=dict)
     origin: Georeference | None = None  # where local (0, 0) lies on the Earth (mission export)
 
@@ -43,7 +45,6 @@ class Scenario:
     def coverage(self, plan_or_samples: Plan | np.ndarray) -> Coverage:
         return coverage(plan_or_samples, self.aois, self.camera, self.threshold, self.dt, speed=self.speed,
                         aoi_radius=self.aoi_radius)
-
 
 
 def random_aois(count: int, rng: np.random.Generator, size: float = AREA_SIZE, separation: float = 160.0,

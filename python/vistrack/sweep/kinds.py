@@ -11,18 +11,17 @@ from __future__ import annotations
 
 import copy
 import fnmatch
-import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Mapping, Optional
 
 from .._core import RoadNetwork, VistrackError
 from ..io import read_yaml_mapping
-from ..schema import fail, number, resolve_path
+from ..schema import fail, resolve_path
 from .resources import Resources
 
-__all__ = ["KINDS", "CaseContext", "CaseKind", "CaseOutput", "dotted_keys", "flatten", "get_kind", "register_kind",
-           "set_dotted"]
+__all__ = ["KINDS", "CaseContext", "CaseKind", "CaseOutput", "dotted_keys", "flatten", "get_kind", "overlay",
+           "register_kind", "set_dotted"]
 
 Metrics = dict[str, Any]
 
@@ -61,6 +60,8 @@ class CaseKind:
     - ``figure_metrics``: the metrics drawn by default in the summary figures.
     - ``roads(base, folder)``: the base map's road network (for ``routes`` without a road file).
     - ``route_key``: the dotted key a road route's [[x, y], ...] points are written to.
+    - ``upgrade_parameter(key, values)``: a varied key spelled before the one scenario schema, and
+      its values, as the new key and values (:mod:`vistrack.sweep.spellings`).
     """
 
     name: str
@@ -73,6 +74,7 @@ class CaseKind:
     apply: Optional[Callable[[dict[str, Any], str, Any], dict[str, Any]]] = None
     roads: Optional[Callable[[Mapping[str, Any], Path], RoadNetwork]] = None
     route_key: Optional[str] = None
+    upgrade_parameter: Optional[Callable[[str, list[Any]], tuple[str, list[Any]]]] = None
 
     def set(self, data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
         """``data`` with ``key`` set to ``value`` (a copy)."""
@@ -122,16 +124,6 @@ def set_case_value(data: Mapping[str, Any], key: str, value: Any, sources: tuple
     return result
 
 
-def wind_components(value: Mapping[str, Any]) -> tuple[float, float]:
-    """(east, north) m/s of a ``wind`` mapping given as {east, north} or {speed, direction_deg}
-    (direction the wind blows towards, degrees counter-clockwise from east)."""
-    if "speed" in value or "direction_deg" in value:
-        speed = number("wind.speed", value.get("speed", 0.0), low=0.0)
-        angle = math.radians(number("wind.direction_deg", value.get("direction_deg", 0.0)))
-        return speed * math.cos(angle), speed * math.sin(angle)
-    return number("wind.east", value.get("east", 0.0)), number("wind.north", value.get("north", 0.0))
-
-
 def read_base(value: Any, folder: Path, what: str) -> tuple[dict[str, Any], Path]:
     """A kind's ``base``: a mapping (copied) or the path of a YAML file of one (relative to
     ``folder``); with the folder its relative paths resolve against. VistrackError naming ``base``
@@ -142,6 +134,14 @@ def read_base(value: Any, folder: Path, what: str) -> tuple[dict[str, Any], Path
     if isinstance(value, Mapping):
         return copy.deepcopy(dict(value)), folder
     raise fail("base", value, f"must be {what} or a YAML file of one")
+
+
+def overlay(base: dict[str, Any], given: Mapping[str, Any]) -> None:
+    """Set ``given``'s keys in ``base``; a block (mapping) given where ``base`` has one keeps the
+    base's other keys."""
+    for key, value in given.items():
+        both = isinstance(base.get(key), dict) and isinstance(value, Mapping)
+        base[key] = {**base[key], **value} if both else value
 
 
 def set_dotted(data: Mapping[str, Any], key: str, value: Any) -> dict[str, Any]:

@@ -3,7 +3,9 @@
 layer in a wind the guidance does not know (:func:`vistrack.loiter.fly_and_score`): what ``vistrack
 loiter`` does per method and scenario.
 
-Its base is a mapping (inline or a YAML file); missing keys take section 4.1's values::
+Its base is a mapping (inline or a YAML file) in a loiter scenario's schema (the shared ``uav``,
+``camera`` and ``wind`` blocks); missing keys take section 4.1's values (the bound
+``vt.loiter.Parameters``, ``CoverageOptions`` and ``Camera``)::
 
     scenario: loiter_6aoi.yaml      # a loiter scenario file (its AOIs and settings), or
     aois: [[x, y], ...]             # AOI centres (m), or
@@ -12,18 +14,20 @@ Its base is a mapping (inline or a YAML file); missing keys take section 4.1's v
     method: ldlpp                   # fly_through | tlpp | ldlpp
     order: given                    # given | best (the visiting order with the shortest plan)
     turns: 1                        # full loiters per AOI
-    turn_radius: 46.0               # r (m)
     aoi_radius: 46.0                # R (m), >= r
-    speed: 12.0                     # m/s
+    uav: {speed: 12.0, min_turn_radius: 46.0, altitude: 61.0}   # v, r and the camera's height
     start: [0, 0]
     end: [0, 0]
-    camera: {fov_deg: 74.0, max_gimbal_deg: 25.0, altitude: 61.0}
+    camera: {fov_deg: 74.0, max_gimbal_deg: 25.0, mount: levelled}
     threshold: 0.75                 # share of an AOI's disk in the footprint to count as covered
     dt: 1.0                         # coverage time step (s)
-    wind: {east: 0, north: 0}       # or {speed, direction_deg}; not calm: also fly the plan in it
+    wind: {east: 0, north: 0}       # not calm: also fly the plan in it
 
-A ``scenario`` file's AOIs and settings are read once into the base (keys given beside it win).
-To compare methods on the same random layouts, vary ``random.seed`` and ``method`` together.
+A ``scenario`` file's AOIs and settings are read once into the base (keys given beside it win, one
+by one inside a block). To compare methods on the same random layouts, vary ``random.seed`` and
+``method`` together. Spellings from before the one schema still load, one line on stdout each:
+``turn_radius``, ``speed``, ``camera.altitude``, ``camera.levelled`` (as in a loiter scenario file)
+and ``wind: {speed, direction_deg}`` (now ``east``, ``north``).
 
 Metrics: the plan's (``vt.loiter.metrics`` without its lists: ``length_m``, ``flight_time_s``,
 ``transit_time_s``, ``loiter_time_s``, ``coverage_time_s``, ``coverage_area_m2``,
@@ -41,28 +45,30 @@ from typing import Any, Mapping
 import numpy as np
 
 from .. import loiter
-from ..loiter.files import read_loiter_scenario
-from ..schema import boolean, fail, integer, number, pair, positive, reject_unknown, resolve_path
+from ..flight import Wind
+from ..loiter.files import RENAMES, read_loiter_scenario, vehicle_and_camera
+from ..scenario_blocks import CAMERA_MOUNTS, wind_block
+from ..schema import fail, integer, number, pair, positive, reject_unknown, resolve_path
 from .kinds import (
     CaseContext,
     CaseKind,
     CaseOutput,
     dotted_keys,
     flatten,
+    overlay,
     read_base,
     register_kind,
     set_case_value,
-    wind_components,
 )
+from .spellings import polar_wind, silent, upgrade_base, upgrade_parameter
 
 __all__ = ["LOITER"]
 
 _SOURCES = ("aois", "random")
-_SETTINGS = ("method", "order", "turns", "turn_radius", "aoi_radius", "speed", "start", "end", "camera",
-             "threshold", "dt", "wind")
-_FROM_FILE = ("aois", "start", "end", "turn_radius", "speed", "aoi_radius", "turns", "threshold", "dt")
-_CAMERA = ("fov_deg", "max_gimbal_deg", "altitude", "levelled")
-_WIND = ("east", "north", "speed", "direction_deg")
+_SETTINGS = ("method", "order", "turns", "aoi_radius", "uav", "start", "end", "camera", "threshold", "dt", "wind")
+_UAV = ("speed", "min_turn_radius", "altitude")
+_CAMERA = ("fov_deg", "max_gimbal_deg", "mount")
+_WIND = ("east", "north")
 _RANDOM = ("count", "seed")
 _FLOWN = ("finished", "flight_time_s", "coverage_time_s", "coverage_area_m2", "loiter_covered_fraction",
           "planned_loiter_covered_fraction", "loiter_coverage_lost", "max_cross_track_m", "rms_cross_track_m")
@@ -72,27 +78,37 @@ _METRICS = ("method", "aois", "length_m", "flight_time_s", "flight_time_min", "t
 
 
 def _defaults() -> dict[str, Any]:
-    camera = loiter.Camera()
-    return {"method": "ldlpp", "order": "given", "turns": 1, "turn_radius": 46.0, "aoi_radius": 46.0, "speed": 12.0,
-            "start": [0.0, 0.0], "end": [0.0, 0.0],
-            "camera": {"fov_deg": camera.fov_deg, "max_gimbal_deg": camera.max_gimbal_deg,
-                       "altitude": camera.altitude, "levelled": camera.levelled},
-            "threshold": 0.75, "dt": 1.0, "wind": {"east": 0.0, "north": 0.0}}
+    """Section 4.1's case: every value from the bound C++ structs."""
+    p, camera, cover, calm = loiter.Parameters(), loiter.Camera(), loiter.CoverageOptions(), Wind()
+    return {"method": "ldlpp", "order": "given", "turns": p.turns, "aoi_radius": p.aoi_radius,
+            "uav": {"speed": p.speed, "min_turn_radius": p.turn_radius, "altitude": camera.altitude},
+            "start": [0.0, 0.0], "end": [0.0, 0.0], "camera": _camera(camera), "threshold": cover.threshold,
+            "dt": cover.dt, "wind": {"east": calm.east, "north": calm.north}}
+
+
+def _from_file(scenario: loiter.Scenario) -> dict[str, Any]:
+    """A loiter scenario file's AOIs and settings, as base keys."""
+    camera = scenario.camera
+    return {"aois": scenario.aois.tolist(), "start": list(scenario.start), "end": list(scenario.end),
+            "uav": {"speed": scenario.speed, "min_turn_radius": scenario.turn_radius, "altitude": camera.altitude},
+            "aoi_radius": scenario.aoi_radius, "turns": scenario.turns, "threshold": scenario.threshold,
+            "dt": scenario.dt, "camera": _camera(camera)}
+
+
+def _camera(camera: loiter.Camera) -> dict[str, Any]:
+    """A camera as the camera block (its height is uav.altitude)."""
+    return {"fov_deg": camera.fov_deg, "max_gimbal_deg": camera.max_gimbal_deg,
+            "mount": CAMERA_MOUNTS[0] if camera.levelled else CAMERA_MOUNTS[1]}
 
 
 def _base(value: Any, folder: Path) -> dict[str, Any]:
     data, folder = read_base(value, folder, "a loiter mapping")
-    allowed = ("scenario", *_SOURCES, *_SETTINGS)
-    reject_unknown(data, allowed)
+    data = upgrade_base(data, RENAMES, polar_wind)
+    reject_unknown(data, ("scenario", *_SOURCES, *_SETTINGS))
     full = _defaults()
     if data.get("scenario") is not None:  # the file's AOIs and settings, read once
-        scenario = read_loiter_scenario(resolve_path(folder, data["scenario"], "scenario"))
-        full.update({"aois": scenario.aois.tolist(), "start": list(scenario.start), "end": list(scenario.end),
-                     "turn_radius": scenario.turn_radius, "speed": scenario.speed, "aoi_radius": scenario.aoi_radius,
-                     "turns": scenario.turns, "threshold": scenario.threshold, "dt": scenario.dt,
-                     "camera": {"fov_deg": scenario.camera.fov_deg, "max_gimbal_deg": scenario.camera.max_gimbal_deg,
-                                "altitude": scenario.camera.altitude}})
-    full.update({k: v for k, v in data.items() if k != "scenario"})
+        full.update(_from_file(read_loiter_scenario(resolve_path(folder, data["scenario"], "scenario"))))
+    overlay(full, {k: v for k, v in data.items() if k != "scenario"})  # a block given in part keeps the rest
     if sum(full.get(k) is not None for k in _SOURCES) != 1:
         raise fail("aois", {k: full.get(k) for k in ("scenario", *_SOURCES)},
                    "give exactly one of scenario: FILE, aois: [[x, y], ...], random: {count, seed}")
@@ -101,18 +117,26 @@ def _base(value: Any, folder: Path) -> dict[str, Any]:
 
 
 def _keys(base: Mapping[str, Any]) -> set[str]:
-    return (dotted_keys(base) | set(_SOURCES) | {f"camera.{k}" for k in _CAMERA} | {f"wind.{k}" for k in _WIND}
-            | {f"random.{k}" for k in _RANDOM})
+    return (dotted_keys(base) | set(_SOURCES) | {f"uav.{k}" for k in _UAV} | {f"camera.{k}" for k in _CAMERA}
+            | {f"wind.{k}" for k in _WIND} | {f"random.{k}" for k in _RANDOM}
+            | {"wind.speed", "wind.direction_deg"})  # the old polar wind, turned into east, north
 
 
 def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
     return set_case_value(data, key, value, _SOURCES)
 
 
+def _parameter(key: str, values: list[Any]) -> tuple[str, list[Any]]:
+    return upgrade_parameter(key, values, RENAMES, polar_wind)
+
+
 def _wind(value: Any) -> tuple[float, float]:
-    if not isinstance(value, Mapping) or set(value) - set(_WIND):
-        raise fail("wind", value, "must be {east, north} or {speed, direction_deg} in m/s")
-    return wind_components(value)
+    if not isinstance(value, Mapping):
+        raise fail("wind", value, "must be {east, north} in m/s")
+    wind = wind_block({"wind": polar_wind(value, silent)})
+    if wind.gusts is not None:
+        raise fail("wind.gusts", value.get("gusts"), "a loiter case flies in a constant wind")
+    return wind.east, wind.north
 
 
 def _scenario(data: Mapping[str, Any], seed: int) -> tuple[loiter.Scenario, str, str, tuple[float, float]]:
@@ -122,18 +146,10 @@ def _scenario(data: Mapping[str, Any], seed: int) -> tuple[loiter.Scenario, str,
         raise fail("method", method, "must be " + ", ".join(loiter.METHODS))
     if order not in loiter.ORDERS:
         raise fail("order", order, "must be " + ", ".join(loiter.ORDERS))
-    camera_data = data["camera"]
-    if not isinstance(camera_data, Mapping) or set(camera_data) - set(_CAMERA):
-        raise fail("camera", camera_data, "must be {fov_deg, max_gimbal_deg, altitude, levelled}")
-    defaults = loiter.Camera()
-    camera = loiter.Camera(fov_deg=positive("camera.fov_deg", camera_data.get("fov_deg", defaults.fov_deg)),
-                           max_gimbal_deg=number("camera.max_gimbal_deg",
-                                                 camera_data.get("max_gimbal_deg", defaults.max_gimbal_deg), low=0.0),
-                           altitude=positive("camera.altitude", camera_data.get("altitude", defaults.altitude)),
-                           levelled=boolean("camera.levelled", camera_data.get("levelled", defaults.levelled)))
+    uav, camera = vehicle_and_camera(data)
     settings: dict[str, Any] = {
         "start": pair("start", data["start"]), "end": pair("end", data["end"]),
-        "turn_radius": positive("turn_radius", data["turn_radius"]), "speed": positive("speed", data["speed"]),
+        "turn_radius": uav.min_turn_radius, "speed": uav.speed,
         "aoi_radius": positive("aoi_radius", data["aoi_radius"]), "turns": integer("turns", data["turns"], 1, 1000),
         "camera": camera, "dt": positive("dt", data["dt"]),
         "threshold": number("threshold", data["threshold"], low=0.0, high=1.0, low_open=True),
@@ -182,4 +198,5 @@ LOITER = register_kind(CaseKind(
     description="Fly-Through, TLPP or LDLPP loiter plan over AOIs, camera coverage, flown in wind (vistrack loiter)",
     load_base=_base, keys=_keys, run=_run, apply=_apply, metric_names=_METRICS,
     figure_metrics=("flight_time_s", "transit_time_s", "coverage_time_s", "coverage_per_aoi_s"),
+    upgrade_parameter=_parameter,
 ))

@@ -187,11 +187,16 @@ def _parameters(data: Any, kind: CaseKind, base: Mapping[str, Any], seed: int) -
     allowed = kind.keys(base)
     parameters: dict[str, list[Any]] = {}
     for position, (key, value) in enumerate(data.items()):
+        values = _values(f"parameters.{key}", value, np.random.SeedSequence(seed, spawn_key=(0, position)))
+        if kind.upgrade_parameter is not None and isinstance(key, str):  # an old spelling as the new one
+            key, values = kind.upgrade_parameter(key, values)
+        if key in parameters:
+            raise fail(f"parameters.{key}", value, "given twice (once in its old spelling)")
         if key not in allowed:
             close = difflib.get_close_matches(str(key), sorted(allowed), n=3)
             hint = f"; did you mean {', '.join(close)}?" if close else ""
             raise fail(f"parameters.{key}", value, f"not a key of a {kind.name} case{hint}")
-        parameters[key] = _values(f"parameters.{key}", value, np.random.SeedSequence(seed, spawn_key=(0, position)))
+        parameters[key] = values
     return parameters
 
 

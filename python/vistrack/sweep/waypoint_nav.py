@@ -2,8 +2,9 @@
 waypoint navigation (WN) over a route (:func:`vistrack.waypoint_nav.fly`, what ``vistrack
 waypoints`` flies per method), in a wind the guidance does not know.
 
-Its base is a mapping (inline or a YAML file) of :func:`~vistrack.waypoint_nav.fly`'s settings;
-missing keys take the paper's defaults (``vt.waypoint_nav.DEFAULTS``)::
+Its base is a mapping (inline or a YAML file) of :func:`~vistrack.waypoint_nav.fly`'s settings in
+the shared ``uav`` and ``wind`` blocks; missing keys take the paper's defaults
+(``vt.waypoint_nav.Options``)::
 
     route: waypoints_paper.csv      # CSV x,y; or waypoints: [[x, y], ...];
                                     # or random_route: {count: 6, legs: [4, 10], seed: 0} (legs in
@@ -11,15 +12,19 @@ missing keys take the paper's defaults (``vt.waypoint_nav.DEFAULTS``)::
     start: null                     # [x, y, psi]; null: at the first waypoint, heading to the second
     method: dwn                     # dwn | wn
     waypoint_radius: null           # WN's R_WP (null: R)
-    turn_radius: 0.7
-    speed: 0.8
+    uav: {speed: 0.8, min_turn_radius: 0.7}     # v and R (the flight is planar: no altitude used)
     dt: 0.02
     gains: [0.1, 5.25]
     weights: [1.0, 1.0]
     integration: discrete           # discrete | continuous
     max_time: null
-    wind: {east: 0.0, north: 0.0, gusts: false}   # or {speed, direction_deg}; gusts: true (Dryden
-                                                  # gusts seeded by the case's seed) or a seed
+    wind: {east: 0.0, north: 0.0, gusts: null}  # gusts: {seed, intensity, length_scale} (Dryden);
+                                                # missing keys: the paper's gust model
+                                                # (vt.waypoint_nav.paper_gusts) seeded by the case
+
+Spellings from before the one schema still load, one line on stdout each: ``turn_radius`` and
+``speed`` (now ``uav.min_turn_radius``, ``uav.speed``), ``wind: {speed, direction_deg}`` (now
+``east``, ``north``), ``gusts: true`` (now ``{}``) and ``gusts: SEED`` (now ``{seed: SEED}``).
 
 To fly several methods or winds over the same random route and gusts, vary ``random_route.seed``
 (and give ``wind.gusts`` a seed) as parameters: cases without them draw from their own seeds.
@@ -37,48 +42,55 @@ from typing import Any, Mapping
 import numpy as np
 
 from .. import waypoint_nav as wn
+from .._core import Uav
 from ..flight import Wind
 from ..io import read_route
+from ..scenario_blocks import Rename, uav_block, wind_block
 from ..schema import fail, integer, number, pair, positive, reject_unknown, resolve_path
 from .kinds import (
     CaseContext,
     CaseKind,
     CaseOutput,
     dotted_keys,
+    overlay,
     read_base,
     register_kind,
     set_case_value,
-    wind_components,
 )
+from .spellings import gust_seed, silent, upgrade_base, upgrade_parameter
 
-__all__ = ["WAYPOINTS"]
+__all__ = ["RENAMES", "WAYPOINTS"]
 
 _SOURCES = ("route", "waypoints", "random_route")
-_SETTINGS = ("start", "method", "waypoint_radius", "turn_radius", "speed", "dt", "gains", "weights", "integration",
-             "max_time", "wind")
-_WIND = ("east", "north", "speed", "direction_deg", "gusts")
+_SETTINGS = ("start", "method", "waypoint_radius", "uav", "dt", "gains", "weights", "integration", "max_time", "wind")
+_UAV = ("speed", "min_turn_radius")
+_WIND = ("east", "north", "gusts")
+_GUSTS = ("seed", "intensity", "length_scale")
 _RANDOM = ("count", "legs", "seed")
 _METRICS = ("method", "label", "waypoint_radius", "waypoints", "route_length", "max_miss_over_R",
             "mean_miss_over_R", "all_reached", "finished", "swirls", "overshoot", "overshoot_over_R", "undershoot",
             "undershoot_over_R", "path_length", "path_ratio", "duration", "fuel")
+# Spellings from before the one scenario schema, still read (and wind's, by spellings.gust_seed).
+RENAMES = (Rename("turn_radius", "uav.min_turn_radius"), Rename("speed", "uav.speed"))
 
 
 def _base(value: Any, folder: Path) -> dict[str, Any]:
     data, folder = read_base(value, folder, "a waypoint-navigation mapping")
-    full = _defaults(data, folder)
+    full = _defaults(upgrade_base(data, RENAMES, gust_seed), folder)
     _flight_inputs(full, folder, seed=0)  # validates the base
     return full
 
 
 def _defaults(data: Mapping[str, Any], folder: Path) -> dict[str, Any]:
-    """The base with every setting present (the paper's defaults) and file paths absolute."""
+    """The base with every setting present (the paper's defaults: the bound Options') and file
+    paths absolute."""
     reject_unknown(data, (*_SOURCES, *_SETTINGS))
-    d = wn.DEFAULTS
-    full: dict[str, Any] = {"start": None, "method": d["method"], "waypoint_radius": None,
-                            "turn_radius": d["turn_radius"], "speed": d["speed"], "dt": d["dt"],
-                            "gains": list(d["gains"]), "weights": list(d["weights"]), "integration": d["integration"],
-                            "max_time": None, "wind": {"east": 0.0, "north": 0.0, "gusts": False}}
-    full.update({k: v for k, v in data.items() if k in _SETTINGS})
+    d, calm = wn.Options(), Wind()
+    full: dict[str, Any] = {"start": None, "method": d.method, "waypoint_radius": None,
+                            "uav": {"speed": d.speed, "min_turn_radius": d.turn_radius}, "dt": d.dt,
+                            "gains": list(d.gains), "weights": list(d.weights), "integration": d.integration,
+                            "max_time": None, "wind": {"east": calm.east, "north": calm.north, "gusts": None}}
+    overlay(full, {k: v for k, v in data.items() if k in _SETTINGS})  # a block given in part keeps the rest
     sources = [k for k in _SOURCES if data.get(k) is not None]
     if len(sources) != 1:
         raise fail("route", {k: data.get(k) for k in _SOURCES},
@@ -89,11 +101,17 @@ def _defaults(data: Mapping[str, Any], folder: Path) -> dict[str, Any]:
 
 
 def _keys(base: Mapping[str, Any]) -> set[str]:
-    return dotted_keys(base) | set(_SOURCES) | {f"wind.{k}" for k in _WIND} | {f"random_route.{k}" for k in _RANDOM}
+    return (dotted_keys(base) | set(_SOURCES) | {f"uav.{k}" for k in _UAV} | {f"wind.{k}" for k in _WIND}
+            | {f"wind.gusts.{k}" for k in _GUSTS} | {f"random_route.{k}" for k in _RANDOM}
+            | {"wind.speed", "wind.direction_deg"})  # the old polar wind, turned into east, north
 
 
 def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
     return set_case_value(data, key, value, _SOURCES)
+
+
+def _parameter(key: str, values: list[Any]) -> tuple[str, list[Any]]:
+    return upgrade_parameter(key, values, RENAMES, gust_seed)
 
 
 def _route(data: Mapping[str, Any], folder: Path, seed: int, turn_radius: float) -> np.ndarray:
@@ -114,21 +132,24 @@ def _route(data: Mapping[str, Any], folder: Path, seed: int, turn_radius: float)
 
 
 def _wind(value: Any, seed: int) -> Wind:
-    if not isinstance(value, Mapping) or set(value) - set(_WIND):
-        raise fail("wind", value, "must be {east, north} or {speed, direction_deg}, with gusts: false/true/seed")
-    east, north = wind_components(value)
-    gusts = value.get("gusts", False)
-    if gusts is False or gusts is None:
-        return Wind(east=east, north=north)
-    gust_seed = seed if gusts is True else integer("wind.gusts", gusts, 0, 2**63 - 1)
-    return Wind(east=east, north=north, gusts=wn.paper_gusts(gust_seed))
+    """The shared wind block; gusts given in part take the rest from the paper's gust model, seeded
+    by the case (a wind varied by the old wind.speed or direction_deg is turned into components)."""
+    if not isinstance(value, Mapping):
+        raise fail("wind", value, "must be {east, north, gusts}")
+    wind = gust_seed(value, silent)
+    if isinstance(wind.get("gusts"), Mapping):
+        paper = wn.paper_gusts(seed)
+        model = {"seed": paper.seed, "intensity": paper.intensity, "length_scale": paper.length_scale}
+        wind["gusts"] = {**model, **wind["gusts"]}
+    return wind_block({"wind": wind})
 
 
 def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np.ndarray, dict[str, Any]]:
     """The route and fly()'s keyword arguments, validated (errors name the key and the value)."""
-    turn_radius = positive("turn_radius", data["turn_radius"])
+    defaults = wn.Options()
+    uav = uav_block(data, Uav(speed=defaults.speed, min_turn_radius=defaults.turn_radius)).uav
     options: dict[str, Any] = {
-        "method": data["method"], "turn_radius": turn_radius, "speed": positive("speed", data["speed"]),
+        "method": data["method"], "turn_radius": uav.min_turn_radius, "speed": uav.speed,
         "dt": positive("dt", data["dt"]), "gains": pair("gains", data["gains"], "a pair [a, b]"),
         "weights": pair("weights", data["weights"], "a pair [a, b]"), "integration": data["integration"],
         "wind": _wind(data["wind"], seed),
@@ -146,7 +167,7 @@ def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np
         if not isinstance(start, list) or len(start) != 3:
             raise fail("start", start, "must be [x, y, psi] or null")
         options["start"] = tuple(number(f"start[{i}]", c) for i, c in enumerate(start))
-    return _route(data, folder, seed, turn_radius), options
+    return _route(data, folder, seed, uav.min_turn_radius), options
 
 
 def _run(data: dict[str, Any], context: CaseContext) -> CaseOutput:
@@ -166,4 +187,5 @@ WAYPOINTS = register_kind(CaseKind(
     load_base=_base, keys=_keys, run=_run, apply=_apply, metric_names=_METRICS,
     figure_metrics=("max_miss_over_R", "mean_miss_over_R", "swirls", "overshoot_over_R", "path_ratio", "duration"),
     route_key="waypoints",  # routes of a road file (routes.roads) become the waypoints
+    upgrade_parameter=_parameter,
 ))

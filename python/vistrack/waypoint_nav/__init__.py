@@ -19,8 +19,8 @@ reachability zone; the last waypoint is flown to directly.
 - ``navigation``: the API above; ``study``: the Monte Carlo; routes come in as CSV
   (:func:`vistrack.io.read_route`).
 
-Defaults are the paper's section 3: R = 0.7, v = 0.8, dt = 0.02, gains g = 0.1, h = 5.25
-(``DEFAULTS``, read from the C++ parameters).
+Defaults are the paper's section 3 (R = 0.7, v = 0.8, dt = 0.02, gains g = 0.1, h = 5.25), from
+the bound C++ struct :class:`Options` (``DEFAULTS``: the same as a dict).
 """
 
 from __future__ import annotations
@@ -33,6 +33,7 @@ from .navigation import (
     DubinsWaypointGuidance,
     HorizonPath,
     NavigationFlight,
+    Options,
     TurningPoint,
     default_start,
     fly,
@@ -57,6 +58,7 @@ __all__ = [
     "HorizonPath",
     "MonteCarlo",
     "NavigationFlight",
+    "Options",
     "TurningPoint",
     "default_start",
     "fly",

@@ -19,11 +19,12 @@ from ..mission.model import Mission
 
 __all__ = [
     "CASES", "DEFAULTS", "PAPER_GUST_MODEL", "PAPER_RADII", "DubinsWaypointGuidance", "HorizonPath",
-    "NavigationFlight", "TurningPoint", "fly", "horizon_lengths", "horizon_path", "paper_flights",
+    "NavigationFlight", "Options", "TurningPoint", "fly", "horizon_lengths", "horizon_path", "paper_flights",
     "paper_gusts", "reachability", "theta_against_weight", "turning_point", "turning_points",
 ]
 
 HorizonPath = _wn.HorizonPath
+Options = _wn.Options
 TurningPoint = _wn.TurningPoint
 DubinsWaypointGuidance = _wn.DubinsWaypointGuidance
 turning_point = _wn.turning_point
@@ -33,7 +34,10 @@ horizon_path = _wn.horizon_path
 horizon_lengths = _wn.horizon_lengths
 reachability = _wn.reachability
 
-DEFAULTS: dict[str, Any] = dict(_wn.DEFAULTS)
+_OPTIONS = Options()  # every default below: the bound C++ struct's (the paper's section 3)
+# The same as a mapping, for the callers that read one (a copy: changing it changes no default).
+DEFAULTS: dict[str, Any] = {name: getattr(_OPTIONS, name)
+                            for name in ("turn_radius", "speed", "dt", "gains", "weights", "integration", "method")}
 # The waypoint radii of the paper's Figures 11 and 12, in units of R.
 PAPER_RADII: tuple[float, ...] = (0.1, 0.5, 1.0)
 # Gusts for the paper's units: MIL-F-8785C low altitude, light turbulence (W20 = 15 kt = 7.7 m/s)
@@ -173,16 +177,16 @@ class NavigationFlight:
 def fly(
     waypoints: Points,
     start: Optional[Sequence[float]] = None,
-    method: str = DEFAULTS["method"],
-    turn_radius: float = DEFAULTS["turn_radius"],
-    speed: float = DEFAULTS["speed"],
-    dt: float = DEFAULTS["dt"],
-    gains: tuple[float, float] = DEFAULTS["gains"],
+    method: str = _OPTIONS.method,
+    turn_radius: float = _OPTIONS.turn_radius,
+    speed: float = _OPTIONS.speed,
+    dt: float = _OPTIONS.dt,
+    gains: tuple[float, float] = _OPTIONS.gains,
     waypoint_radius: Optional[float] = None,
     wind: Optional[Wind] = None,
     max_time: Optional[float] = None,
-    weights: tuple[float, float] = DEFAULTS["weights"],
-    integration: str = DEFAULTS["integration"],
+    weights: tuple[float, float] = _OPTIONS.weights,
+    integration: str = _OPTIONS.integration,
 ) -> NavigationFlight:
     """Fly a route with DWN (``method="dwn"``) or WN (``"wn"``).
 
@@ -238,7 +242,7 @@ def paper_flights(waypoints: Points, wind: Optional[Wind] = None, radii: Sequenc
     for method in methods:
         if method not in ("dwn", "wn"):
             raise VistrackError(f"method = {method!r}: must be 'dwn' or 'wn'")
-    R = float(options.get("turn_radius", DEFAULTS["turn_radius"]))
+    R = float(options.get("turn_radius", _OPTIONS.turn_radius))
     flights = []
     if "dwn" in methods:
         flights.append(fly(waypoints, method="dwn", wind=wind, **options))

@@ -10,7 +10,7 @@ import numpy as np
 
 from .._core import VistrackError
 from ..flight import Wind
-from .navigation import DEFAULTS, PAPER_GUST_MODEL, PAPER_RADII, paper_flights, paper_gusts
+from .navigation import PAPER_GUST_MODEL, PAPER_RADII, Options, paper_flights, paper_gusts
 
 __all__ = ["MonteCarlo", "monte_carlo", "random_route"]
 
@@ -76,8 +76,9 @@ def monte_carlo(runs: int = 200, seed: int = 0, waypoints: int = 6, wind_fractio
     if not 0.0 <= wind_fraction[0] <= wind_fraction[1] < 1.0:
         raise VistrackError(f"wind_fraction = {tuple(wind_fraction)}: need 0 <= low <= high < 1 (fractions of v)")
     model = {**PAPER_GUST_MODEL, **(gust_model or {})}
-    R = float(options.get("turn_radius", DEFAULTS["turn_radius"]))
-    v = float(options.get("speed", DEFAULTS["speed"]))
+    defaults = Options()
+    R = float(options.get("turn_radius", defaults.turn_radius))
+    v = float(options.get("speed", defaults.speed))
     rows: list[dict[str, Any]] = []
     total = runs * 2
     for k in range(runs):
