@@ -43,14 +43,16 @@ void bind_path_following(py::module_& parent) {
       "psi_d = psi_path - atan(e / (lookahead_radii R)), rate = v kappa cos(psi - psi_path) / (1 - kappa e) + "
       "heading_gain (v / R) wrap(psi_d - psi). Knows the heading, not the wind. Done at the path's end.")
       .def(py::init([](const Rows5& pieces, double speed, double turn_radius, double lookahead_radii,
-                       double heading_gain) {
-             PathFollowingGains gains{lookahead_radii, heading_gain};
+                       double heading_gain, double anticipation) {
+             PathFollowingGains gains{lookahead_radii, heading_gain, anticipation};
              return PathFollower(pieces_from_rows(pieces), speed, turn_radius, gains);
            }),
            py::arg("pieces"), py::arg("speed"), py::arg("turn_radius"),
            py::arg("lookahead_radii") = defaults.lookahead_radii, py::arg("heading_gain") = defaults.heading_gain,
+           py::arg("anticipation") = defaults.anticipation,
            "pieces: (n, 5) rows x0, y0, heading, length, curvature (0 lines, +1/radius ccw, -1/radius cw), each "
-           "starting where the one before ends; speed v and turn_radius R of the vehicle.")
+           "starting where the one before ends; speed v and turn_radius R of the vehicle; anticipation (s): the "
+           "curvature feed-forward reads the path v * anticipation ahead (a banking vehicle's roll lag; 0: none).")
       .def("track",
            [](const PathFollower& f, const Pose& state) { return f.track(configuration(state)); },
            py::arg("state"), "Projection of (x, y, psi) near the current progress (PathTracking).")

@@ -379,3 +379,16 @@ TEST(Guidance, InvalidInputsNameTheField) {
 
 }  // namespace
 }  // namespace vistrack
+
+TEST(GuidanceGainsFrom, RollModelCapsTheHeadingGainAtHalfTheRollBandwidth) {
+  using namespace vistrack;
+  Uav uav;
+  Control control;
+  control.k_psi = 20.0;
+  EXPECT_EQ(GuidanceGains::from(uav, control).k_psi, 20.0);  // Dubins: the paper's gain
+  uav.dynamics = DynamicsModel::Roll;
+  uav.roll_time_constant = 0.5;
+  EXPECT_EQ(GuidanceGains::from(uav, control).k_psi, 1.0);   // 1 / (2 tau)
+  control.k_psi = 0.3;
+  EXPECT_EQ(GuidanceGains::from(uav, control).k_psi, 0.3);   // a gain already below it stays
+}

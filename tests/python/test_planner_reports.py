@@ -137,7 +137,8 @@ def test_loiter_in_wind_animates_the_flown_path(tmp_path: Path) -> None:
     names = [t.get("name") for t in figure["data"]]
     assert "wind 6.3 m/s" in names
     scenario = vt.loiter.load_scenario(LOITER)
-    rows, _ = vt.loiter.flown_samples(vt.loiter.fly(scenario.plan("ldlpp"), (6.0, -2.0)), scenario.dt)
+    rows, _ = vt.loiter.flown_samples(vt.loiter.fly(scenario.plan("ldlpp"), (6.0, -2.0), uav=scenario.uav()),
+                                      scenario.dt)
     t = scenario.dt * np.arange(len(rows))
     plan = columns(out / "path_ldlpp.csv")
     assert len(rows) != len(plan["t"])  # the wind changed the flight: not the plan's samples

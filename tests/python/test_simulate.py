@@ -99,8 +99,11 @@ def test_cli_simulate_and_tune(tmp_path):
     for name in ("trajectory.csv", "trajectory_R120.csv", "metrics.json", "trajectory.png", "errors.png"):
         assert (out / name).stat().st_size > 0, name
     data = np.genfromtxt(out / "trajectory.csv", delimiter=",", names=True)
-    direct = vt.simulate(plan, uav, np.array([0.0, 100.0, -math.pi]), vt.Control())
+    # vistrack simulate flies the roll model unless --dynamics dubins.
+    roll = vt.Uav(speed=uav.speed, min_turn_radius=uav.min_turn_radius, altitude=uav.altitude, dynamics="roll")
+    direct = vt.simulate(plan, roll, np.array([0.0, 100.0, -math.pi]), vt.Control())
     np.testing.assert_allclose(data["x"], direct.state[:, 0], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(data["bank"], direct.bank, rtol=0, atol=1e-12)
     np.testing.assert_allclose(data["radial_error"], direct.radial_error, atol=1e-9)
     metrics = json.loads((out / "metrics.json").read_text())
     assert metrics["visibility orbit"]["samples"] == len(direct.t)

@@ -16,6 +16,7 @@ import vistrack as vt
 from support.paths import EXAMPLES
 from support.sweeps import assert_same_sweep, renamed_note, without_run_columns
 from vistrack.follow_scenario import FollowScenario
+from vistrack.scenario_blocks import uav_dict
 from vistrack.sweep import SERIAL, SweepSpec
 from vistrack.sweep.kinds import flatten
 
@@ -32,7 +33,7 @@ def loiter_alone(count: int, seed: int, method: str, wind: tuple[float, float]) 
                     "min_coverage_per_aoi_s": float(min(coverage.time_per_aoi))})
     if wind != (0.0, 0.0):
         flown = vt.loiter.fly_and_score(scenario, plan, wind, planned=coverage)
-        metrics.update({f"flown.{k}": v for k, v in flown.items() if not isinstance(v, (list, np.ndarray))
+        metrics.update({f"flown.{k}": v for k, v in flatten(flown).items() if not isinstance(v, (list, np.ndarray))
                         and not k.startswith(("planned_flight", "planned_coverage", "_"))})
     return metrics
 
@@ -96,9 +97,10 @@ def follow_alone(period: float, scale: float, compensation: bool) -> dict[str, A
     legs = [vt.follow.VehicleLeg(math.pi / 2, 10.0 * scale, 60.0), vt.follow.VehicleLeg(0.0, 4.0 * scale, 40.0,
                                                                                        8.0 * scale)]
     vehicle = vt.follow.GroundVehicle.from_legs(legs)
-    uav = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
+    # What a scenario file flies unless it says otherwise: the roll model, L1 legs.
+    uav = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0, dynamics="roll")
     parameters = vt.follow.FollowParameters(period=period, wind_compensation=compensation)
-    run = vt.follow.simulate(vehicle, uav, parameters, wind=(0.0, 5.0))
+    run = vt.follow.simulate(vehicle, uav, parameters, wind=(0.0, 5.0), flight=vt.follow.FollowFlight(guidance="l1"))
     base = vt.follow.baseline(vehicle, uav, parameters=parameters, wind=(0.0, 5.0))
     out = {k: v for k, v in flatten(run.metrics).items() if k not in ("strategy", "centre_offset_m")}
     out.update({f"baseline.{k}": v for k, v in flatten(base.metrics).items()
@@ -106,6 +108,7 @@ def follow_alone(period: float, scale: float, compensation: bool) -> dict[str, A
     out["centre_offset_east_m"], out["centre_offset_north_m"] = run.metrics["centre_offset_m"]
     out["baseline.centre_offset_east_m"], out["baseline.centre_offset_north_m"] = base.metrics["centre_offset_m"]
     out["updates"], out["wind_compensation"] = len(run.ticks), compensation
+    out.update({f"uav.{k}": v for k, v in uav_dict(uav).items()})
     return out
 
 
@@ -191,7 +194,8 @@ def test_loiter_base_blocks_take_the_file_key_by_key() -> None:
     spec = SweepSpec.from_dict({"kind": "loiter", "base": {"scenario": str(EXAMPLES / "loiter_6aoi.yaml"),
                                                            "uav": {"speed": 15.0}},
                                 "parameters": {"method": ["tlpp"]}})
-    assert spec.base["uav"] == {"speed": 15.0, "min_turn_radius": 46.0, "altitude": 61.0}
+    assert spec.base["uav"] == {"speed": 15.0, "min_turn_radius": 46.0, "altitude": 61.0, "dynamics": "roll",
+                                "roll_time_constant": 0.5, "max_roll_rate_deg_s": 70.0}
 
 
 def test_parameters_are_keys_of_the_kind() -> None:

@@ -72,6 +72,9 @@ struct L1Gains {
 struct PathFollowingGains {
   double lookahead_radii = 1.0;
   double heading_gain = 3.0;
+  // s: the curvature feed-forward reads the path this long ahead (v times it in length), so a
+  // banking vehicle starts its roll before an arc rather than its roll time constant late; 0: none.
+  double anticipation = 0.0;
   void validate() const;
 };
 

@@ -36,7 +36,7 @@ struct OrbitState {
 struct GuidanceGains {
   double speed = Uav{}.speed;                      // v, UAV speed (m/s)
   double beta = Control{}.beta;                    // circulation / attraction parameter of a_1 (59)
-  double k_psi = Control{}.k_psi;                  // heading gain of (86)
+  double k_psi = Control{}.k_psi;                  // heading gain of (86); from(): at most 1 / (2 tau) on the roll model
   Circulation direction = Control{}.direction;
   double max_turn_rate = Uav{}.speed / Uav{}.min_turn_radius;  // v / r_min; the command is clamped to it
   void validate() const;

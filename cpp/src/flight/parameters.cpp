@@ -29,6 +29,7 @@ void FlightOptions::validate() const {
 void PathFollowingGains::validate() const {
   require_positive(lookahead_radii, "gains.lookahead_radii");
   require_positive(heading_gain, "gains.heading_gain");
+  require_in_range(anticipation, 0.0, limits::kMaxRollTimeConstant, "s", "gains.anticipation");
 }
 
 void L1Gains::validate() const {

@@ -97,11 +97,13 @@ PathFollower::Tracking PathFollower::track(const Configuration& state) const {
 
 double PathFollower::switching_function(const Configuration& state, double /*t*/) const {
   // The next piece boundary ahead of the progress: crossing it changes the curvature feed-forward.
+  // With anticipation the feed-forward changes that far before the boundary.
   const std::size_t k = piece_at(progress_);
-  const double boundary = k + 1 < pieces_.size() ? offsets_[k + 1] : length_;
   const Tracking tr = track(state);
   if (k + 1 == pieces_.size()) return tr.along < 0.0 || tr.s < length_ ? 1.0 : -1.0;
-  return boundary - tr.s;
+  const double boundary = offsets_[k + 1];
+  const double lead = gains_.anticipation * speed_;
+  return tr.s < boundary - lead ? boundary - lead - tr.s : boundary - tr.s;
 }
 
 void PathFollower::start(const Configuration& state, double /*t*/) {
@@ -117,8 +119,11 @@ GuidanceCommand PathFollower::command(const Configuration& state, double /*t*/) 
   const double path_heading = state.psi - tr.heading_error;
   const double lookahead = gains_.lookahead_radii * turn_radius_;
   const double desired = path_heading - std::atan(tr.cross_track / lookahead);
-  const double feed_forward = speed_ * piece.curvature * std::cos(tr.heading_error) /
-                              std::max(0.2, 1.0 - piece.curvature * tr.cross_track);
+  const double curvature = gains_.anticipation > 0.0
+                               ? pieces_[piece_at(std::min(tr.s + gains_.anticipation * speed_, length_))].curvature
+                               : piece.curvature;
+  const double feed_forward = speed_ * curvature * std::cos(tr.heading_error) /
+                              std::max(0.2, 1.0 - curvature * tr.cross_track);
   const double feedback = gains_.heading_gain * speed_ / turn_radius_ * wrap_to_pi(desired - state.psi);
   GuidanceCommand c;
   c.turn_rate = feed_forward + feedback;

@@ -48,6 +48,10 @@ GuidanceGains GuidanceGains::from(const Uav& uav, const Control& control) {
   gains.speed = uav.speed;
   gains.beta = control.beta;
   gains.k_psi = control.k_psi;
+  // A banking vehicle turns only as fast as its roll loop: the heading loop of (86) closes at most
+  // at half the roll loop's bandwidth 1 / tau (a cascade; the paper's k_psi = 20 /s assumes an
+  // instant turn and makes the bank oscillate at the roll loop's limit).
+  if (uav.dynamics == DynamicsModel::Roll) gains.k_psi = std::min(gains.k_psi, 0.5 / uav.roll_time_constant);
   gains.direction = control.direction;
   gains.max_turn_rate = uav.speed / uav.min_turn_radius;  // u_psi,max = v / r_min (2)
   return gains;

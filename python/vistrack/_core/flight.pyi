@@ -495,9 +495,9 @@ class PathFollower(FlightGuidance):
     """
     Follows a path of lines and arcs: cross-track and heading feedback with curvature feed-forward, psi_d = psi_path - atan(e / (lookahead_radii R)), rate = v kappa cos(psi - psi_path) / (1 - kappa e) + heading_gain (v / R) wrap(psi_d - psi). Knows the heading, not the wind. Done at the path's end.
     """
-    def __init__(self, pieces: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 5]"], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, lookahead_radii: typing.SupportsFloat | typing.SupportsIndex = 1.0, heading_gain: typing.SupportsFloat | typing.SupportsIndex = 3.0) -> None:
+    def __init__(self, pieces: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 5]"], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, lookahead_radii: typing.SupportsFloat | typing.SupportsIndex = 1.0, heading_gain: typing.SupportsFloat | typing.SupportsIndex = 3.0, anticipation: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         """
-        pieces: (n, 5) rows x0, y0, heading, length, curvature (0 lines, +1/radius ccw, -1/radius cw), each starting where the one before ends; speed v and turn_radius R of the vehicle.
+        pieces: (n, 5) rows x0, y0, heading, length, curvature (0 lines, +1/radius ccw, -1/radius cw), each starting where the one before ends; speed v and turn_radius R of the vehicle; anticipation (s): the curvature feed-forward reads the path v * anticipation ahead (a banking vehicle's roll lag; 0: none).
         """
     def track(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]) -> PathTracking:
         """

@@ -23,7 +23,7 @@ from ..report import loiter as report
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_missions
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
-from .types import UsageError, count, length
+from .types import UsageError, add_dynamics_argument, count, length
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -46,6 +46,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="also fly every plan in winds of these speeds (m/s) from 8 directions")
     p.add_argument("--altitude", type=length("--altitude"),
                    help="mission altitude for --export, m (default: the camera's, 61 m)")
+    add_dynamics_argument(p)
     add_export_arguments(p)
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     add_report_arguments(p)
@@ -72,6 +73,8 @@ def run(args: argparse.Namespace) -> int:
         if not args.scenarios:
             raise UsageError("scenarios: give at least one scenario file, or --random N")
         scenarios = [loiter.load_scenario(path) for path in args.scenarios]
+        for scenario in scenarios:
+            scenario.dynamics = args.dynamics or scenario.dynamics
         rows, written = [], []
         for scenario in scenarios:
             runs = loiter_study.evaluate(scenario, args.method, args.order, winds)

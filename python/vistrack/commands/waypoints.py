@@ -20,7 +20,7 @@ from ..report.waypoint_nav import write_waypoints
 from .export import add_export_arguments, export_mission
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
-from .types import coordinate, count, length, number, speed
+from .types import UsageError, add_dynamics_argument, coordinate, count, length, number, speed
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -53,12 +53,17 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                         help="mission altitude for --export, m (default 60)")
     add_export_arguments(parser)
     add_report_arguments(parser)
+    add_dynamics_argument(parser, "dubins")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--out", type=Path, default=Path("waypoints_out"), help="output folder")
     parser.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.dynamics != "dubins":
+        # The roll model needs g in m/s^2; this command flies the paper's dimensionless units.
+        raise UsageError(f"--dynamics = {args.dynamics}: the waypoint paper's dimensionless units fly the Dubins "
+                         "vehicle only (the roll model needs a route in metres)")
     route = read_route(args.route, "ROUTE")
     output_folder(args.out)  # a file there is an error now, not after the flights
     east, north = args.wind

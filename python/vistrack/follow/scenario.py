@@ -41,6 +41,7 @@ from ..flight import Wind
 from ..georeference import Georeference
 from ..io.text import read_yaml_mapping
 from ..scenario_blocks import (
+    DEFAULT_DYNAMICS,
     City,
     Rename,
     camera_block,
@@ -85,6 +86,12 @@ DEFAULT_LEG_GUIDANCE = "l1"
 # The UAV where the file gives none: the C++ follower's (kFollowUav).
 DEFAULT_UAV = default_uav()
 
+def _with_default_dynamics(uav: Uav) -> Uav:
+    """The follower's vehicle flying the scenario files' model (scenario_blocks.DEFAULT_DYNAMICS)."""
+    uav.dynamics = DEFAULT_DYNAMICS
+    return uav
+
+
 CityRoad = City  # the scenario's city block with its road (the name predates the one schema)
 
 
@@ -94,7 +101,7 @@ class FollowScenario:
 
     vehicle: GroundVehicle
     legs: list[VehicleLeg] = field(default_factory=list)
-    uav: Uav = field(default_factory=default_uav)
+    uav: Uav = field(default_factory=lambda: _with_default_dynamics(default_uav()))
     parameters: FollowParameters = field(default_factory=FollowParameters)
     offset_schedule: list[tuple[float, float, float]] = field(default_factory=list)
     wind: Wind = field(default_factory=Wind)

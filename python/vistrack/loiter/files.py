@@ -59,6 +59,9 @@ def read_loiter_scenario(path: str | Path) -> Scenario:
         dt=schema.positive("dt", data.get("dt", coverage_defaults.dt)),
         paper=paper_numbers,
         origin=georeference_block(data),
+        dynamics=str(uav.dynamics),
+        roll_time_constant=uav.roll_time_constant,
+        max_roll_rate_deg_s=uav.max_roll_rate_deg_s,
     )
     # The planner's own checks (overlapping circles, R < r, start inside a circle) name the key.
     scenario.plan("tlpp")

@@ -42,6 +42,8 @@ def fly(plan: Plan, wind: Wind | tuple[float, float] | None = None, dt: float = 
         wind = flight.Wind(east=float(east), north=float(north))
     gains = {name: value for name, value in (("lookahead_radii", lookahead_radii), ("heading_gain", heading_gain))
              if value is not None}
+    if uav is not None and str(uav.dynamics) == "roll":
+        gains["anticipation"] = uav.roll_time_constant  # start the roll before an arc, not tau late
     follower = flight.PathFollower(path_pieces(plan), plan.speed, plan.turn_radius, **gains)
     start = plan.at_time(0.0)
     return flight.fly(follower, start, plan.speed, plan.turn_radius, wind=wind, dt=dt,
@@ -82,7 +84,7 @@ def fly_and_score(scenario: Scenario, plan: Plan, wind: tuple[float, float], pla
     scenario's camera against the plan: flight time, covered time (total and per AOI), the share of
     the loiter time with the AOI covered, and how far the path was blown off the plan."""
     planned = planned if planned is not None else scenario.coverage(plan)
-    trajectory = fly(plan, wind)
+    trajectory = fly(plan, wind, uav=scenario.uav())
     samples, segments = flown_samples(trajectory, scenario.dt)
     flown = coverage(samples, scenario.aois, scenario.camera, scenario.threshold, scenario.dt, speed=scenario.speed,
                      aoi_radius=scenario.aoi_radius)

@@ -7,13 +7,14 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._core import VistrackError
+from .._core import Uav, VistrackError
 from ..georeference import Georeference
+from ..scenario_blocks import DEFAULT_DYNAMICS
 from .planning import AREA_SIZE, Camera, Coverage, CoverageOptions, Parameters, Plan, Point, coverage, plan
 
 __all__ = ["Scenario", "random_aois", "random_scenario"]
 
-_PLAN, _COVERAGE = Parameters(), CoverageOptions()  # the defaults: the bound C++ structs'
+_PLAN, _COVERAGE, _VEHICLE = Parameters(), CoverageOptions(), Uav()  # the defaults: the bound C++ structs'
 
 
 @dataclass
@@ -37,6 +38,15 @@ class Scenario:
     dt: float = _COVERAGE.dt
     paper: dict[str, dict[str, float]] = field(default_factory=dict)
     origin: Georeference | None = None  # where local (0, 0) lies on the Earth (mission export)
+    dynamics: str = DEFAULT_DYNAMICS    # the flown vehicle's model (uav.dynamics)
+    roll_time_constant: float = _VEHICLE.roll_time_constant   # s, the roll model's
+    max_roll_rate_deg_s: float = _VEHICLE.max_roll_rate_deg_s
+
+    def uav(self) -> Uav:
+        """The vehicle that flies the plans: the scenario's speed, turn radius, camera altitude and model."""
+        return Uav(speed=self.speed, min_turn_radius=self.turn_radius, altitude=self.camera.altitude,
+                   dynamics=self.dynamics, roll_time_constant=self.roll_time_constant,
+                   max_roll_rate_deg_s=self.max_roll_rate_deg_s)
 
     def plan(self, method: str, order: str = "given") -> Plan:
         return plan(self.aois, method, self.start, self.end, self.turn_radius, self.speed, self.aoi_radius,

@@ -76,7 +76,7 @@ def flown_states(scenario: loiter.Scenario, plan: loiter.Plan, planned: loiter.C
     if wind is None:
         samples = plan.sample_states(scenario.dt, False)
         return np.asarray(samples.t, dtype=float), np.asarray(samples.poses, dtype=float), planned
-    rows, _ = loiter.flown_samples(loiter.fly(plan, wind), scenario.dt)
+    rows, _ = loiter.flown_samples(loiter.fly(plan, wind, uav=scenario.uav()), scenario.dt)
     return scenario.dt * np.arange(len(rows)), rows[:, :3], scenario.coverage(rows)
 
 

@@ -42,8 +42,10 @@ _SECTIONS = {
 _RUN_METRICS = ("duration_s", "mean_tracking_error_m", "max_tracking_error_m", "along_track_lag_m",
                 "max_along_track_lag_m", "final_along_track_lag_m", "mode_switches", "time_capturing_s",
                 "time_in_mode_s.sinusoid", "time_in_mode_s.loiter", "time_in_mode_s.straight", "camera_fraction",
-                "mean_vehicle_distance_m", "mean_offset_distance_m", "centre_offset_east_m", "centre_offset_north_m")
-_METRICS = (*_RUN_METRICS, "wind_compensation", "updates", *(f"baseline.{m}" for m in _RUN_METRICS),
+                "mean_vehicle_distance_m", "mean_offset_distance_m", "centre_offset_east_m", "centre_offset_north_m",
+                "smoothness.bank_rms_deg", "smoothness.roll_reversals_per_s", "smoothness.roll_reversals",
+                "smoothness.max_roll_rate_deg_s")
+_METRICS = (*_RUN_METRICS, "wind_compensation", "updates", "uav.*", *(f"baseline.{m}" for m in _RUN_METRICS),
             "baseline.radius_m")
 
 

@@ -47,7 +47,7 @@ import numpy as np
 from .. import loiter
 from ..flight import Wind
 from ..loiter.files import RENAMES, read_loiter_scenario, vehicle_and_camera
-from ..scenario_blocks import CAMERA_MOUNTS, wind_block
+from ..scenario_blocks import CAMERA_MOUNTS, uav_dict, wind_block
 from ..schema import fail, integer, number, pair, positive, reject_unknown, resolve_path
 from .kinds import (
     CaseContext,
@@ -74,7 +74,7 @@ _FLOWN = ("finished", "flight_time_s", "coverage_time_s", "coverage_area_m2", "l
           "planned_loiter_covered_fraction", "loiter_coverage_lost", "max_cross_track_m", "rms_cross_track_m")
 _METRICS = ("method", "aois", "length_m", "flight_time_s", "flight_time_min", "transit_time_s", "loiter_time_s",
             "coverage_time_s", "coverage_area_m2", "coverage_per_aoi_s", "min_coverage_per_aoi_s",
-            "steps_by_role.*", *(f"flown.{name}" for name in _FLOWN))
+            "steps_by_role.*", *(f"flown.{name}" for name in _FLOWN), "flown.smoothness.*")
 
 
 def _defaults() -> dict[str, Any]:
@@ -90,7 +90,7 @@ def _from_file(scenario: loiter.Scenario) -> dict[str, Any]:
     """A loiter scenario file's AOIs and settings, as base keys."""
     camera = scenario.camera
     return {"aois": scenario.aois.tolist(), "start": list(scenario.start), "end": list(scenario.end),
-            "uav": {"speed": scenario.speed, "min_turn_radius": scenario.turn_radius, "altitude": camera.altitude},
+            "uav": uav_dict(scenario.uav()),
             "aoi_radius": scenario.aoi_radius, "turns": scenario.turns, "threshold": scenario.threshold,
             "dt": scenario.dt, "camera": _camera(camera)}
 
@@ -149,7 +149,8 @@ def _scenario(data: Mapping[str, Any], seed: int) -> tuple[loiter.Scenario, str,
     uav, camera = vehicle_and_camera(data)
     settings: dict[str, Any] = {
         "start": pair("start", data["start"]), "end": pair("end", data["end"]),
-        "turn_radius": uav.min_turn_radius, "speed": uav.speed,
+        "turn_radius": uav.min_turn_radius, "speed": uav.speed, "dynamics": str(uav.dynamics),
+        "roll_time_constant": uav.roll_time_constant, "max_roll_rate_deg_s": uav.max_roll_rate_deg_s,
         "aoi_radius": positive("aoi_radius", data["aoi_radius"]), "turns": integer("turns", data["turns"], 1, 1000),
         "camera": camera, "dt": positive("dt", data["dt"]),
         "threshold": number("threshold", data["threshold"], low=0.0, high=1.0, low_open=True),
@@ -185,6 +186,7 @@ def run_loiter_case(scenario: loiter.Scenario, method: str, order: str = "given"
     if wind != (0.0, 0.0):
         flown = loiter.fly_and_score(scenario, plan, wind, planned=coverage, keep_trajectory=False)
         metrics.update({f"flown.{name}": flown[name] for name in _FLOWN})
+        metrics.update({f"flown.{name}": value for name, value in flatten({"smoothness": flown["smoothness"]}).items()})
     return metrics
 
 
