@@ -3,7 +3,8 @@
 model; the follow legs by L1 line tracking), with their camera or visibility figures and how
 smoothly they bank (roll reversals per second with a 1-degree deadband, largest roll rate).
 
-    VISTRACK_BUILD_DIR=build/dev python3 bench/vehicle_models.py [--no-tracking]
+    VISTRACK_BUILD_DIR=build/dev python3 bench/vehicle_models.py [--no-tracking] [--no-follow]
+        [--tracking demo campus paper_slow paper_small]
 
 Prints markdown tables (docs/vehicle.md quotes them).
 """
@@ -57,13 +58,15 @@ def follow_table() -> None:
                   f"{smooth(result.t, np.asarray(result.run.bank))} |")
 
 
-def tracking_table() -> None:
+def tracking_table(names: list[str]) -> None:
     from vistrack.tracking.pipeline import compute
 
     print("| scenario | vehicle | POI visible | roll reversals /s | max roll rate (deg/s) | seconds |")
     print("|---|---|---|---|---|---|")
-    for name, scenario in (("demo", vt.Scenario.demo()),
-                           ("campus", vt.Scenario.load(REPO / "examples" / "campus_flight_test.yaml"))):
+    files = {"demo": None, "campus": "campus_flight_test.yaml", "paper_slow": "charlotte_paper_slow.yaml",
+             "paper_small": "charlotte_paper_small.yaml"}
+    for name in names:
+        scenario = vt.Scenario.demo() if files[name] is None else vt.Scenario.load(REPO / "examples" / files[name])
         for dynamics in ("dubins", "roll"):
             scenario.uav.dynamics = dynamics
             start = time.perf_counter()
@@ -75,11 +78,15 @@ def tracking_table() -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--no-tracking", action="store_true")
+    parser.add_argument("--no-follow", action="store_true")
+    parser.add_argument("--tracking", nargs="+", default=["demo", "campus", "paper_slow", "paper_small"],
+                        choices=["demo", "campus", "paper_slow", "paper_small"])
     args = parser.parse_args()
-    follow_table()
-    print()
+    if not args.no_follow:
+        follow_table()
+        print()
     if not args.no_tracking:
-        tracking_table()
+        tracking_table(args.tracking)
 
 
 if __name__ == "__main__":

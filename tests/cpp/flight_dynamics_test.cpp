@@ -12,6 +12,7 @@
 
 #include "vistrack/error.hpp"
 #include "vistrack/flight.hpp"
+#include "flight_setup.hpp"
 
 using namespace vistrack;
 
@@ -58,22 +59,13 @@ double brute_force_rms_deg(const std::vector<double>& t, const std::vector<doubl
   return std::sqrt(squares / static_cast<double>(t.size())) / kDeg;
 }
 
+using flight_setup::options;
+
 Uav roll_uav(double speed = 20.0, double radius = 50.0, double tau = 0.5, double rate_deg = 70.0) {
-  Uav uav;
-  uav.speed = speed;
-  uav.min_turn_radius = radius;
-  uav.dynamics = DynamicsModel::Roll;
+  Uav uav = flight_setup::vehicle(speed, radius, DynamicsModel::Roll);
   uav.roll_time_constant = tau;
   uav.max_roll_rate_deg_s = rate_deg;
   return uav;
-}
-
-FlightOptions options(FlightIntegration integration, double dt, double max_time) {
-  FlightOptions o;
-  o.integration = integration;
-  o.dt = dt;
-  o.max_time = max_time;
-  return o;
 }
 
 // phi_dot = bank_rate(phi, c) by explicit midpoint steps of 1e-5 s: an oracle independent of step().

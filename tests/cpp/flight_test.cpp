@@ -12,6 +12,7 @@
 
 #include "vistrack/error.hpp"
 #include "vistrack/flight.hpp"
+#include "flight_setup.hpp"
 
 using namespace vistrack;
 
@@ -37,20 +38,8 @@ class ConstantTurn : public FlightGuidance {
   bool done_ = false;
 };
 
-Uav vehicle(double speed, double radius) {
-  Uav uav;
-  uav.speed = speed;
-  uav.min_turn_radius = radius;
-  return uav;
-}
-
-FlightOptions options(FlightIntegration integration, double dt, double max_time) {
-  FlightOptions o;
-  o.integration = integration;
-  o.dt = dt;
-  o.max_time = max_time;
-  return o;
-}
+using flight_setup::options;
+using flight_setup::vehicle;
 
 void expect_error_names(const std::function<void()>& call, const std::string& field) {
   try {
