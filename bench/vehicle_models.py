@@ -75,6 +75,36 @@ def tracking_table(names: list[str]) -> None:
                   f"{smooth(np.asarray(sim.t), np.asarray(sim.bank))} | {time.perf_counter() - start:.1f} |")
 
 
+def loiter_table() -> None:
+    from vistrack import loiter
+
+    print("| LDLPP over four AOIs, calm | vehicle | max cross-track (m) | covered (s) | planned (s) | "
+          "roll reversals /s | max roll rate (deg/s) |")
+    print("|---|---|---|---|---|---|---|")
+    scenario = loiter.Scenario(aois=np.array([[200.0, 200.0], [500.0, 200.0], [500.0, 500.0], [200.0, 500.0]]))
+    plan = scenario.plan("ldlpp")
+    for dynamics, anticipation in (("dubins", None), ("roll", 0.0), ("roll", None)):
+        scenario.dynamics = dynamics
+        uav = scenario.uav()
+        if anticipation is None:
+            r = loiter.fly_and_score(scenario, plan, (0.0, 0.0), keep_trajectory=False)
+            cross, covered, smooth = r["max_cross_track_m"], r["coverage_time_s"], r["smoothness"]
+        else:  # the roll model without the follower's anticipation
+            pieces = loiter.path_pieces(plan)
+            follower = vt.flight.PathFollower(pieces, plan.speed, plan.turn_radius, anticipation=anticipation)
+            flown = vt.flight.fly(follower, plan.at_time(0.0), plan.speed, plan.turn_radius, dt=0.05,
+                                  max_time=3 * plan.flight_time + 600, uav=uav)
+            samples, _ = loiter.flown_samples(flown, scenario.dt)
+            covered = scenario.coverage(samples).time
+            dense = plan.sample(1.0 / plan.speed)[:, :2]
+            cross = float(np.max(np.min(np.hypot(np.asarray(flown.x)[:, None] - dense[None, :, 0],
+                                                 np.asarray(flown.y)[:, None] - dense[None, :, 1]), axis=1)))
+            smooth = flown.smoothness().as_dict()
+        label = dynamics + ("" if anticipation is None else ", no anticipation")
+        print(f"| | {label} | {cross:.1f} | {covered:.0f} | {scenario.coverage(plan).time:.0f} | "
+              f"{smooth['roll_reversals_per_s']:.2f} | {smooth['max_roll_rate_deg_s']:.0f} |")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--no-tracking", action="store_true")
@@ -84,6 +114,9 @@ def main() -> None:
     args = parser.parse_args()
     if not args.no_follow:
         follow_table()
+        print()
+    if not args.no_follow:
+        loiter_table()
         print()
     if not args.no_tracking:
         tracking_table(args.tracking)
