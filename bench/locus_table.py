@@ -52,6 +52,7 @@ def dense_check(planner: vt.OrbitPlanner, plan: vt.VisibilityOrbitPlan, scenario
 
 def one(name: str, locus: str, dense: bool) -> dict[str, str]:
     scenario = Scenario.load(REPO / EXAMPLES[name])
+    scenario.uav.dynamics = "dubins"  # the paper's vehicle; the roll model's rows: bench/vehicle_models.py
     scenario.planning.locus = locus
     env = scenario.environment.load(scenario.origin)
     planner = vt.OrbitPlanner(env, scenario.sensor)
