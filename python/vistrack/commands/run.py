@@ -48,7 +48,11 @@ def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool, 
     plan, sim = m["plan"], m["simulation"]
     status = "feasible" if plan["feasible"] else "INFEASIBLE"
     print(f"{scenario.name}: {plan['samples']} orbit samples ({status}), R {plan['initial_radius_m']:.1f} -> "
-          f"{plan['final_radius_m']:.1f} m; POI visible {percent(sim['visibility_fraction'])} of the time")
+          f"{plan['final_radius_m']:.1f} m; POI visible {percent(sim['visibility_fraction'])} of the time "
+          f"({m['uav']['dynamics']} model)")
+    other = m.get("other_model")
+    if other:
+        print(f"  the same plan on the {other['dynamics']} model: visible {percent(other['visibility_fraction'])}")
     for radius, baseline in m["baselines"].items():
         print(f"  constant R = {radius} m: visible {percent(baseline['visibility_fraction'])}")
     cache = m.get("volume_cache")

@@ -174,11 +174,12 @@ def _document(result: RunResult, pictures: list[Picture]) -> Document:
                f"settling (after {sim['converge_after_s']:g} s) {sim['radial_error_after_max_abs_m']:.2f} m",
                vehicle_line(m["uav"], sim.get("smoothness"))]
     blocks: list[Block] = []
-    if m["baselines"]:
-        rows = [["visibility-informed R(t)", percent(sim["visibility_fraction"])]]
-        rows += [[f"constant R = {b['radius_m']:g} m", percent(b["visibility_fraction"])]
-                 for b in m["baselines"].values()]
-        blocks.append(Table(["orbit", "visibility"], rows))
+    rows = [[f"visibility-informed R(t), {m['uav']['dynamics']} model", percent(sim["visibility_fraction"])]]
+    other = m.get("other_model")
+    if other:
+        rows.append([f"visibility-informed R(t), {other['dynamics']} model", percent(other["visibility_fraction"])])
+    rows += [[f"constant R = {b['radius_m']:g} m", percent(b["visibility_fraction"])] for b in m["baselines"].values()]
+    blocks.append(Table(["orbit", "visibility"], rows))
     blocks.append("Files: `metrics.json`, `plan.json`, `trajectory.csv`, `volumes/*.ply`.")
     blocks += pictures
     blocks += [Heading("Timings"), Table(["stage", "seconds"], [[k, f"{v:.3f}"] for k, v in m["timings_s"].items()])]

@@ -42,7 +42,7 @@ _METRICS = (
     "simulation.converge_after_s", "simulation.radial_error_after_mean_m", "simulation.radial_error_after_max_abs_m",
     "simulation.heading_error_after_max_abs_rad", "simulation.control_max_abs", "simulation.saturated_fraction",
     "simulation.orbit_radius_first_m", "simulation.orbit_radius_last_m", "simulation.visibility_fraction",
-    "simulation.smoothness.*", "uav.*",
+    "simulation.smoothness.*", "uav.*", "other_model.*",
     "baselines.*.radius_m", "baselines.*.visibility_fraction",
 )
 

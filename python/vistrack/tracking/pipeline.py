@@ -84,18 +84,29 @@ def compute(scenario: Scenario, *, quiet: bool = True, cache_dir: str | Path | N
     x0 = np.asarray(scenario.start) if scenario.start is not None else start_on_orbit(plan, scenario.control.direction)
     loop = (scenario.uav, scenario.control, scenario.simulation, planner.scene)
     simulation = stages.run("closed-loop simulation", closed_loop, plan, x0, *loop)
+    # The same plan flown on the other vehicle model: the report shows both (the papers' Dubins
+    # vehicle, the roll model).
+    other = other_model(scenario.uav)
+    other_run = stages.run(f"closed loop, {other.dynamics} model", closed_loop, plan, x0, other, *loop[1:])
     baselines = {}
     for radius in scenario.baselines:
         baseline = constant_radius_plan(poi, radius, scenario.uav)
         baselines[radius] = stages.run(f"baseline R = {radius:g} m", closed_loop, baseline,
                                        start_on_orbit(baseline, scenario.control.direction), *loop)
-    result = RunResult(scenario, env, poi, plan, simulation, planner, baselines, metric_runs)
+    result = RunResult(scenario, env, poi, plan, simulation, planner, baselines, metric_runs, other_run)
     result.timings = stages.timings
     result.metrics = _metrics(result)
     if cache_dir is not None:
         result.metrics["volume_cache"] = {"folder": str(cache_dir), "hits": planner.disk_hits,
                                           "misses": planner.disk_misses}
     return result
+
+
+def other_model(uav: Uav) -> Uav:
+    """The same vehicle on the other model (roll <-> dubins)."""
+    return Uav(speed=uav.speed, min_turn_radius=uav.min_turn_radius, altitude=uav.altitude,
+               dynamics="dubins" if str(uav.dynamics) == "roll" else "roll",
+               roll_time_constant=uav.roll_time_constant, max_roll_rate_deg_s=uav.max_roll_rate_deg_s)
 
 
 def closed_loop(plan: AnyPlan, x0: np.ndarray, uav: Uav, control: Control, options: SimulationOptions,
@@ -146,6 +157,10 @@ def _metrics(result: RunResult) -> dict[str, Any]:
             **locus_summary(plan),
         },
         "simulation": simulation_metrics(result.simulation),
+        "other_model": None if result.other_model is None else {
+            "dynamics": "dubins" if str(s.uav.dynamics) == "roll" else "roll",
+            "visibility_fraction": result.other_model.visibility_fraction,
+            "smoothness": simulation_metrics(result.other_model)["smoothness"]},
         "baselines": {f"{r:g}": {"radius_m": r, "visibility_fraction": b.visibility_fraction}
                       for r, b in result.baselines.items()},
         "timings_s": {k: round(v, 4) for k, v in result.timings.items()},

@@ -24,6 +24,7 @@ class RunResult:
     planner: OrbitPlanner
     baselines: dict[float, SimulationResult] = field(default_factory=dict)
     metric_runs: dict[str, Union[Discretization, VisibilityOrbitPlan]] = field(default_factory=dict)
+    other_model: Optional[SimulationResult] = None  # the same plan flown on the other vehicle model
     metrics: dict[str, Any] = field(default_factory=dict)
     out: Optional[Path] = None
     files: list[Path] = field(default_factory=list)
