@@ -186,6 +186,22 @@ void bind_flight(py::module_& parent) {
       .def_property_readonly("done", &FlightGuidance::done, "True once there is nothing more to fly")
       .def_property_readonly("revision", &FlightGuidance::revision, "counts changes of the active target");
 
+  py::class_<CurveL1, FlightGuidance>(
+      m, "CurveL1",
+      "L1 guidance on a curve (Park, Deyst & How 2004): the reference point is where the circle of radius "
+      "L1 = damping period v / pi about the vehicle leaves the path ahead of its closest point; turn rate "
+      "4 damping^2 v / L1 sin(eta). The path (a polyline) may be replaced during flight (set_path from on_step).")
+      .def(py::init([](double speed, const InputArray& path, double period, double damping) {
+             return CurveL1(speed, to_points(path, "path"), L1Gains{period, damping});
+           }),
+           py::arg("speed"), py::arg("path"), py::arg("period") = L1Gains{}.period,
+           py::arg("damping") = L1Gains{}.damping, "speed v; path: array (n, 2); period (s) and damping of L1.")
+      .def("set_path", [](CurveL1& g, const InputArray& path) { g.set_path(to_points(path, "path")); },
+           py::arg("path"), "Replace the path (array (n, 2), n >= 1; one point: fly to it).")
+      .def("reference_point", &CurveL1::reference_point, py::arg("position"), "The L1 reference point, (2,).")
+      .def_property_readonly("distance", &CurveL1::distance, "L1, length units")
+      .def_property_readonly("path", [](const CurveL1& g) { return to_array(g.path()); }, "array (n, 2)");
+
   py::class_<WaypointFollower, FlightGuidance>(
       m, "WaypointFollower",
       "Classical waypoint navigation on the law (5): the line from the previous waypoint (the start for the "

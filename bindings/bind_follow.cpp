@@ -233,6 +233,7 @@ void bind_follow(py::module_& parent) {
       .def_readonly("capturing", &FollowTick::capturing, "holding the entry point until the UAV is close")
       .def_readonly("offset_vector", &FollowTick::offset_vector, "O - vehicle, m")
       .def_readonly("offset_point", &FollowTick::offset_point, "O, m")
+      .def_readonly("offset_velocity", &FollowTick::offset_velocity, "O's velocity, m/s")
       .def_readonly("waypoint", &FollowTick::waypoint, "the waypoint issued at t, m");
 
   py::class_<FollowPlanner>(m, "FollowPlanner", "The 1 Hz follow planner of sections II-V.")
@@ -243,6 +244,14 @@ void bind_follow(py::module_& parent) {
       .def("offset_vector", &FollowPlanner::offset_vector, py::arg("vehicle_heading"), "O - vehicle for that heading.")
       .def("set_offset", &FollowPlanner::set_offset, py::arg("distance"), py::arg("angle"),
            "Change the offset's distance (m) and angle (rad) from the next update on.")
+      .def(
+          "planned_path",
+          [](const FollowPlanner& p, const FollowTick& tick, double horizon, double step) {
+            return to_array(p.planned_path(tick, horizon, step));
+          },
+          py::arg("tick"), py::arg("horizon"), py::arg("step"),
+          "The planned ground path from the tick on, (n, 2): O + O_dot tau + relative_position(tick, tau) at "
+          "tau = 0, step, ..., horizon (what flight.guidance l1 flies).")
       .def("relative_position", &FollowPlanner::relative_position, py::arg("tick"), py::arg("tau"),
            "Desired position relative to the offset point tau s after the tick.")
       .def(

@@ -42,6 +42,7 @@ Wind = _flight.Wind
 WindField = _flight.WindField
 LineFeedback = _flight.LineFeedback
 L1Line = _flight.L1Line
+CurveL1 = _flight.CurveL1
 FlightGuidance = _flight.FlightGuidance
 WaypointFollower = _flight.WaypointFollower
 PathFollower = _flight.PathFollower  # lines and arcs (flight.hpp, Path following; the loiter plans)
@@ -54,6 +55,7 @@ flight_smoothness = _flight.flight_smoothness
 coordinated_bank = _flight.coordinated_bank
 
 __all__ = [
+    "CurveL1",
     "FlightGuidance",
     "FlightSmoothness",
     "FlightTrajectory",

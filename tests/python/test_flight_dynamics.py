@@ -154,3 +154,40 @@ def test_dynamics_flag_overrides_the_scenario(tmp_path: Path) -> None:
         metrics = json.loads((out / "metrics.json").read_text())
         assert metrics["uav"]["dynamics"] == model
         assert metrics["smoothness"]["max_roll_rate_deg_s"] >= 0
+
+
+def test_curve_l1_from_python() -> None:
+    l1 = vt.flight.CurveL1(20.0, np.array([[0.0, 0.0], [100.0, 0.0]]), period=8.0)
+    assert l1.distance == pytest.approx(0.75 * 8.0 * 20.0 / math.pi)
+    ref = l1.reference_point(np.array([50.0, -10.0]))
+    assert ref[1] == pytest.approx(0.0) and ref[0] == pytest.approx(50.0 + math.sqrt(l1.distance ** 2 - 100.0))
+    l1.set_path(np.array([[3.0, 4.0]]))
+    assert np.allclose(l1.reference_point(np.zeros(2)), [3.0, 4.0])
+    with pytest.raises(vt.VistrackError, match=r"path\[0\]\.x = nan"):
+        l1.set_path(np.array([[math.nan, 0.0]]))
+
+
+def test_follow_flies_the_planned_curve_with_l1() -> None:
+    """flight.guidance l1 flies the planner's path (renewed each update) instead of 1 s legs: on the
+    straight run the UAV stays within metres of the planned sinusoid and its bank is smooth."""
+    car = follow.GroundVehicle.from_legs([follow.VehicleLeg(-math.pi / 2, 10.0, 300.0)], (0.0, 0.0))
+    curve = follow.simulate(car, ROLL, follow.FollowParameters(period=30.0), flight=follow.FollowFlight(guidance="l1"))
+    legs = follow.simulate(car, ROLL, follow.FollowParameters(period=30.0), flight=follow.FollowFlight(guidance="law5"))
+    assert curve.metrics["mean_tracking_error_m"] < 2.0
+    assert curve.metrics["smoothness"]["roll_reversals_per_s"] < 0.1
+    assert legs.metrics["smoothness"]["roll_reversals_per_s"] > 1.0
+
+
+def test_planned_path_starts_at_the_desired_position_and_passes_the_waypoint() -> None:
+    """planned_path(tick, ...) is the curve the waypoint is sampled from: at tau = 0 the desired
+    position, at tau = update_period the tick's waypoint."""
+    planner = follow.FollowPlanner(follow.FollowParameters(period=30.0), ROLL)
+    tick = planner.update(0.0, follow.FollowObservation(vehicle_position=np.zeros(2),
+                                                        vehicle_velocity=np.array([0.0, -10.0]),
+                                                        vehicle_heading=-math.pi / 2, uav_position=np.zeros(2),
+                                                        uav_heading=-math.pi / 2))
+    path = planner.planned_path(tick, 1.0, 0.25)
+    assert path.shape == (5, 2)
+    assert np.allclose(path[-1], tick.waypoint, atol=1e-9)
+    assert np.allclose(path[0], tick.offset_point + planner.relative_position(tick, 0.0), atol=1e-9)
+    assert np.allclose(tick.offset_velocity, [0.0, -10.0])

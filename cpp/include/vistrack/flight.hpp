@@ -267,6 +267,34 @@ class L1Line {
   L1Gains gains_;
 };
 
+// L1 guidance on a curve (Park, Deyst & How 2004): the reference point is where the circle of
+// radius L1 = damping * period * v / pi about the vehicle leaves the path ahead of the vehicle's
+// closest point (beyond the path's end, along its last direction); farther than L1 from the path,
+// the closest point itself. Turn rate 4 damping^2 v / L1 sin(eta), eta the angle from the
+// airspeed vector to the reference point, |eta| <= pi/2. The path is a polyline that may be
+// replaced during flight (set_path from fly()'s on_step: the follow planner's planned path at
+// each update); the guidance is never done by itself.
+class CurveL1 : public FlightGuidance {
+ public:
+  CurveL1(double speed, const std::vector<Vec2>& path, const L1Gains& gains = {});
+  // At least one point (one: fly to it), within the coordinate range; consecutive duplicates are dropped.
+  void set_path(const std::vector<Vec2>& path);
+
+  void start(const Configuration&, double) override {}
+  GuidanceCommand command(const Configuration& state, double t) const override;
+  void advance(const Configuration&, double) override {}
+  bool done() const override { return false; }
+
+  Vec2 reference_point(const Vec2& position) const;
+  double distance() const { return distance_; }  // L1
+  const std::vector<Vec2>& path() const { return path_; }
+
+ private:
+  double speed_ = 1.0, distance_ = 1.0;
+  L1Gains gains_;
+  std::vector<Vec2> path_;
+};
+
 // Classical waypoint navigation (WN) on the law (5) (or L1Line): fly the line from the previous waypoint
 // (the start position for the first) to the active waypoint; switch to the next one when within
 // the acceptance radius R_WP. With finish_at_last the guidance is done at the last waypoint;

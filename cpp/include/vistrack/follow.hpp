@@ -174,6 +174,7 @@ struct FollowTick {
   bool capturing = false;       // holding the entry point until the UAV is within one update's flight
   Vec2 offset_vector = Vec2::Zero();   // O - vehicle at t
   Vec2 offset_point = Vec2::Zero();    // O at t
+  Vec2 offset_velocity = Vec2::Zero(); // O's velocity at t (the vehicle's plus the offset's rate)
   Vec2 waypoint = Vec2::Zero();        // the desired position update_period later, predicted
 };
 
@@ -194,6 +195,9 @@ class FollowPlanner {
   // The desired position relative to the offset point, tau >= 0 seconds after `tick` (the
   // pattern of the tick's mode with its parameters held), and its velocity in the planning frame.
   Vec2 relative_position(const FollowTick& tick, double tau) const;
+  // The planned ground path from the tick on: O + O_dot tau + relative_position(tick, tau) at
+  // tau = 0, step, ..., horizon (the vehicle predicted at its current velocity, as the waypoint is).
+  std::vector<Vec2> planned_path(const FollowTick& tick, double horizon, double step) const;
   // The loiter shape in use and the speed ratio below which the planner enters the sinusoid.
   const LoiterShape& loiter_shape() const { return loiter_; }
   const FollowParameters& parameters() const { return parameters_; }

@@ -1,9 +1,13 @@
-// L1 line tracking (flight.hpp): ArduPlane's leg guidance on the airspeed vector.
+// L1 guidance (flight.hpp): ArduPlane's leg tracking (L1Line) and Park's law on a curve (CurveL1),
+// both on the airspeed vector.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 #include "vistrack/error.hpp"
 #include "vistrack/flight.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
@@ -49,6 +53,72 @@ double L1Line::turn_rate(const Configuration& q, const Vec2& line_start, const V
   eta = std::clamp(eta, -0.5 * kPi, 0.5 * kPi);
   const double lateral_acceleration = 4.0 * gains_.damping * gains_.damping * speed_ * speed_ / distance_ * std::sin(eta);
   return lateral_acceleration / speed_;
+}
+
+namespace {
+
+// The largest u >= 0 with |a + u d - p| = r, given |a - p| <= r (the circle is left at u).
+double leave_circle(const Vec2& a, const Vec2& d, const Vec2& p, double r) {
+  const Vec2 f = a - p;
+  const double qa = d.squaredNorm(), qb = 2.0 * f.dot(d), qc = f.squaredNorm() - r * r;
+  const double disc = std::max(0.0, qb * qb - 4.0 * qa * qc);
+  return (-qb + std::sqrt(disc)) / (2.0 * qa);
+}
+
+}  // namespace
+
+CurveL1::CurveL1(double speed, const std::vector<Vec2>& path, const L1Gains& gains) : speed_(speed), gains_(gains) {
+  require_positive(speed, "speed");
+  gains.validate();
+  distance_ = gains.damping * gains.period * speed / kPi;
+  set_path(path);
+}
+
+void CurveL1::set_path(const std::vector<Vec2>& path) {
+  std::vector<Vec2> points;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    require_coordinate(path[k].x(), "path[" + std::to_string(k) + "].x");
+    require_coordinate(path[k].y(), "path[" + std::to_string(k) + "].y");
+    if (points.empty() || (path[k] - points.back()).norm() > 1e-9 * (1.0 + path[k].norm())) points.push_back(path[k]);
+  }
+  if (points.empty()) detail::fail_field("path", path.size(), "needs at least one point");
+  path_ = std::move(points);
+  touch();
+}
+
+Vec2 CurveL1::reference_point(const Vec2& p) const {
+  if (path_.size() == 1) return path_.front();  // a held point: fly to it
+  // The closest point of the path.
+  std::size_t best = 0;
+  double best_u = 0.0, best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k + 1 < path_.size(); ++k) {
+    const Vec2 d = path_[k + 1] - path_[k];
+    const double u = std::clamp((p - path_[k]).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    const double distance = (path_[k] + u * d - p).norm();
+    if (distance < best_distance) best = k, best_u = u, best_distance = distance;
+  }
+  const Vec2 closest = path_[best] + best_u * (path_[best + 1] - path_[best]);
+  if (best_distance >= distance_) return closest;
+  // Walk ahead to where the path leaves the circle of radius L1.
+  Vec2 a = closest;
+  for (std::size_t k = best; k + 1 < path_.size(); ++k) {
+    const Vec2 b = path_[k + 1];
+    if ((b - p).norm() >= distance_) return a + std::min(1.0, leave_circle(a, b - a, p, distance_)) * (b - a);
+    a = b;
+  }
+  const Vec2 last = path_.back() - path_[path_.size() - 2];
+  return a + leave_circle(a, last.normalized(), p, distance_) * last.normalized();
+}
+
+GuidanceCommand CurveL1::command(const Configuration& state, double) const {
+  const Vec2 p(state.x, state.y);
+  const Vec2 velocity = speed_ * Vec2(std::cos(state.psi), std::sin(state.psi));
+  const Vec2 reference = reference_point(p);
+  const double eta = std::clamp(angle_to(velocity, reference - p), -0.5 * kPi, 0.5 * kPi);
+  GuidanceCommand c;
+  c.turn_rate = 4.0 * gains_.damping * gains_.damping * speed_ / distance_ * std::sin(eta);
+  c.target = reference;
+  return c;
 }
 
 }  // namespace vistrack

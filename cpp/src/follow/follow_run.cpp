@@ -89,7 +89,6 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   gains.g *= kPaperTurnRadius / uav.min_turn_radius;
   gains.h *= kPaperTurnRadius / uav.min_turn_radius;
   const LineFeedback law(uav.speed, uav.min_turn_radius, options.flight.dt, gains);
-  const L1Line l1(uav.speed, options.flight.l1);
 
   // The planner's update at t with the scheduled offset and its rate over the next update.
   const auto plan = [&](double t, const Vec2& p, double psi) {
@@ -108,23 +107,29 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   };
   const Vec2 start_position(start.x, start.y);
   plan(t0, start_position, start.psi);
-  WaypointFollower follower = options.flight.guidance == LegGuidance::L1
-                                  ? WaypointFollower(l1, {run.ticks.back().waypoint}, kSwitchAtOnce, false)
-                                  : WaypointFollower(law, {run.ticks.back().waypoint}, kSwitchAtOnce, false);
+  // The paper's: one waypoint a second, each leg by the law (5). L1: the planned path itself, three
+  // L1 distances ahead, renewed at every update.
+  const bool curve = options.flight.guidance == LegGuidance::L1;
+  const double horizon = 3.0 * options.flight.l1.damping * options.flight.l1.period / kPi + 2.0 * period;
+  const auto planned = [&] { return planner.planned_path(run.ticks.back(), horizon, 0.25); };
+  WaypointFollower follower(law, {run.ticks.back().waypoint}, kSwitchAtOnce, /*finish_at_last=*/false);
+  CurveL1 path_follower(uav.speed, planned(), options.flight.l1);
+  FlightGuidance& guidance = curve ? static_cast<FlightGuidance&>(path_follower) : follower;
 
   // Every update_period: observe, plan, issue the next waypoint (available at once).
   double next_update = t0 + period;
   const auto on_step = [&](double t, const Configuration& q) {
     if (t < next_update - 1e-9 || t >= vehicle.end_time() - 1e-9) return;  // no update once the track ends
     plan(t, Vec2(q.x, q.y), q.psi);
-    follower.add_waypoint(run.ticks.back().waypoint, t);
+    if (curve) path_follower.set_path(planned());
+    else follower.add_waypoint(run.ticks.back().waypoint, t);
     while (next_update <= t + 1e-9) next_update += period;
   };
   FlightOptions flight;
   flight.integration = options.flight.integration;
   flight.dt = options.flight.dt;
   flight.max_time = duration;
-  const FlightTrajectory trajectory = fly(uav, wind, follower, start, flight, t0, on_step);
+  const FlightTrajectory trajectory = fly(uav, wind, guidance, start, flight, t0, on_step);
 
   // Per sample: the vehicle, the offset point and the desired position of the current update.
   const std::size_t n = trajectory.size();

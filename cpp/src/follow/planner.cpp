@@ -183,6 +183,18 @@ Vec2 FollowPlanner::relative_position(const FollowTick& tick, double tau) const 
   return Vec2::Zero();
 }
 
+std::vector<Vec2> FollowPlanner::planned_path(const FollowTick& tick, double horizon, double step) const {
+  require_positive(horizon, "horizon");
+  require_positive(step, "step");
+  std::vector<Vec2> path;
+  const auto n = static_cast<std::size_t>(std::ceil(horizon / step));
+  for (std::size_t k = 0; k <= n; ++k) {
+    const double tau = std::min(horizon, static_cast<double>(k) * step);
+    path.push_back(tick.offset_point + tick.offset_velocity * tau + relative_position(tick, tau));
+  }
+  return path;
+}
+
 FollowTick FollowPlanner::update(double t, const FollowObservation& o) {
   require_finite(t, "t");
   if (has_previous_ && !(t > previous_.t))
@@ -244,6 +256,7 @@ FollowTick FollowPlanner::update(double t, const FollowObservation& o) {
   // The waypoint: the desired position one update later, with the vehicle predicted at its
   // current velocity and heading.
   const double dt = parameters_.update_period;
+  tick.offset_velocity = offset_velocity;
   tick.waypoint = tick.offset_point + offset_velocity * dt + relative_position(tick, dt);
   previous_ = tick;
   has_previous_ = true;

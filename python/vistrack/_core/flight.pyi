@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core
-__all__: list[str] = ['DrydenLowAltitude', 'FlightGuidance', 'FlightSmoothness', 'FlightTrajectory', 'Gusts', 'L1Line', 'LineFeedback', 'LineFeedbackTerms', 'PathFollower', 'PathTracking', 'RollModel', 'WaypointFollower', 'Wind', 'WindField', 'coordinated_bank', 'dryden_low_altitude', 'flight_smoothness', 'fly']
+__all__: list[str] = ['CurveL1', 'DrydenLowAltitude', 'FlightGuidance', 'FlightSmoothness', 'FlightTrajectory', 'Gusts', 'L1Line', 'LineFeedback', 'LineFeedbackTerms', 'PathFollower', 'PathTracking', 'RollModel', 'WaypointFollower', 'Wind', 'WindField', 'coordinated_bank', 'dryden_low_altitude', 'flight_smoothness', 'fly']
 class Gusts:
     """
     Dryden turbulence (MIL-F-8785C, horizontal): RMS intensity sigma_u = sigma_v (speed units), length scale L_u = L_v (length units), seed. Reproducible from the seed.
@@ -269,6 +269,32 @@ class FlightGuidance:
     def revision(self) -> int:
         """
         counts changes of the active target
+        """
+class CurveL1(FlightGuidance):
+    """
+    L1 guidance on a curve (Park, Deyst & How 2004): the reference point is where the circle of radius L1 = damping period v / pi about the vehicle leaves the path ahead of its closest point; turn rate 4 damping^2 v / L1 sin(eta). The path (a polyline) may be replaced during flight (set_path from on_step).
+    """
+    def __init__(self, speed: typing.SupportsFloat | typing.SupportsIndex, path: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period: typing.SupportsFloat | typing.SupportsIndex = 17.0, damping: typing.SupportsFloat | typing.SupportsIndex = 0.75) -> None:
+        """
+        speed v; path: array (n, 2); period (s) and damping of L1.
+        """
+    def reference_point(self, position: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        The L1 reference point, (2,).
+        """
+    def set_path(self, path: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> None:
+        """
+        Replace the path (array (n, 2), n >= 1; one point: fly to it).
+        """
+    @property
+    def distance(self) -> float:
+        """
+        L1, length units
+        """
+    @property
+    def path(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        array (n, 2)
         """
 class WaypointFollower(FlightGuidance):
     """

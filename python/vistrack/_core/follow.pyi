@@ -225,7 +225,7 @@ class FollowFlight:
     """
     How a follow run is flown: integration ('discrete' | 'continuous'), step dt (s), max_time (s, 0: until the track ends), guidance of each 1 s leg ('law5': the paper's law (5); 'l1': L1 line tracking, beyond the paper) and the L1 gains (period s, damping).
     """
-    def __init__(self, *, integration: str = 'discrete', dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, max_time: typing.SupportsFloat | typing.SupportsIndex = 0.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0, l1_damping: typing.SupportsFloat | typing.SupportsIndex = 0.75) -> None:
+    def __init__(self, *, integration: str = 'discrete', dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, max_time: typing.SupportsFloat | typing.SupportsIndex = 0.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 8.0, l1_damping: typing.SupportsFloat | typing.SupportsIndex = 0.75) -> None:
         ...
     @property
     def dt(self) -> float:
@@ -406,6 +406,11 @@ class FollowTick:
         O - vehicle, m
         """
     @property
+    def offset_velocity(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        O's velocity, m/s
+        """
+    @property
     def period(self) -> float:
         """
         s
@@ -460,6 +465,10 @@ class FollowPlanner:
     def offset_vector(self, vehicle_heading: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
         """
         O - vehicle for that heading.
+        """
+    def planned_path(self, tick: FollowTick, horizon: typing.SupportsFloat | typing.SupportsIndex, step: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
+        """
+        The planned ground path from the tick on, (n, 2): O + O_dot tau + relative_position(tick, tau) at tau = 0, step, ..., horizon (what flight.guidance l1 flies).
         """
     def relative_position(self, tick: FollowTick, tau: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
         """
