@@ -191,3 +191,28 @@ def test_planned_path_starts_at_the_desired_position_and_passes_the_waypoint() -
     assert np.allclose(path[-1], tick.waypoint, atol=1e-9)
     assert np.allclose(path[0], tick.offset_point + planner.relative_position(tick, 0.0), atol=1e-9)
     assert np.allclose(tick.offset_velocity, [0.0, -10.0])
+
+
+def test_sweeps_take_the_vehicle_model(tmp_path: Path) -> None:
+    import csv
+
+    import yaml
+
+    from vistrack.cli import main
+
+    base = {"uav": {"speed": 21.0, "min_turn_radius": 50.0, "altitude": 200.0},
+            "vehicle": {"legs": [{"heading": "north", "speed": 10.0, "duration": 30.0}]}}
+    sweep = tmp_path / "follow.yaml"
+    sweep.write_text(yaml.safe_dump({"kind": "follow", "base": base, "parameters": {"follow.period": [30.0]}}))
+    for model in ("dubins", "roll"):
+        out = tmp_path / model
+        assert main(["sweep", str(sweep), "--out", str(out), "--workers", "1", "--no-figures", "--quiet",
+                     "--dynamics", model]) == 0
+        with open(out / "results.csv", newline="") as f:
+            rows = list(csv.DictReader(f))
+        assert [row["uav.dynamics"] for row in rows] == [model]
+    # Waypoint sweeps fly the paper's dimensionless units: roll is refused, naming the key.
+    with pytest.raises(vt.VistrackError, match=r"base: uav.dynamics = 'roll': the waypoint paper's dimensionless"):
+        vt.sweep.SweepSpec.from_dict({"kind": "waypoints", "base": {"waypoints": [[0, 0], [5, 0]],
+                                                                    "uav": {"dynamics": "roll"}},
+                                      "parameters": {"method": ["wn"]}})

@@ -7,7 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from ..sweep import SERIAL, SweepSpec, run
-from .types import UsageError, count
+from .types import UsageError, add_dynamics_argument, count
 
 
 def register(subparsers: Any) -> None:
@@ -26,6 +26,7 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--workers", type=count("--workers", 1, 1024), default=None, metavar="N",
                         help="LocalCluster worker processes (default: one per core); not with --scheduler")
     parser.add_argument("--no-figures", action="store_true", help="write the table only")
+    add_dynamics_argument(parser)
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.set_defaults(func=main)
 
@@ -34,6 +35,11 @@ def main(args: argparse.Namespace) -> int:
     if args.workers is not None and args.scheduler is not None:
         raise UsageError(f"--workers = {args.workers}: only applies without --scheduler (a LocalCluster)")
     spec = SweepSpec.load(args.sweep)
+    if args.dynamics is not None:  # every case's vehicle model (a uav.dynamics parameter still wins)
+        if spec.kind.name == "waypoints" and args.dynamics != "dubins":
+            raise UsageError(f"--dynamics = {args.dynamics}: waypoint sweeps fly the paper's dimensionless units, "
+                             "the Dubins vehicle only")
+        spec.base = spec.kind.set(spec.base, "uav.dynamics", args.dynamics)
     print(f"{spec.name}: {spec.case_count} {spec.kind.name} cases over {', '.join(spec.parameters)} "
           f"({spec.combine})", flush=True)
     result = run(spec, args.scheduler, args.workers, out=Path(args.out) if args.out else None,

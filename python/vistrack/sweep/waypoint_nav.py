@@ -148,6 +148,10 @@ def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np
     """The route and fly()'s keyword arguments, validated (errors name the key and the value)."""
     defaults = wn.Options()
     uav = uav_block(data, Uav(speed=defaults.speed, min_turn_radius=defaults.turn_radius)).uav
+    given = data.get("uav", {}).get("dynamics") if isinstance(data.get("uav"), Mapping) else None
+    if given is not None and str(uav.dynamics) != "dubins":
+        # The roll model needs g in m/s^2; these flights are in the paper's dimensionless units.
+        raise fail("uav.dynamics", given, "the waypoint paper's dimensionless units fly the Dubins vehicle only")
     options: dict[str, Any] = {
         "method": data["method"], "turn_radius": uav.min_turn_radius, "speed": uav.speed,
         "dt": positive("dt", data["dt"]), "gains": pair("gains", data["gains"], "a pair [a, b]"),
