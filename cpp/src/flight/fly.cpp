@@ -48,9 +48,8 @@ class Flight {
   void record(double t, const OdeVector<N>& y) {
     const Configuration q = as_configuration(y);
     const GuidanceCommand c = guidance_.command(q, t);
-    const double rate = clamp_rate(c.turn_rate);
     if constexpr (N == 4) push(t, q, roll_model_.turn_rate(y[3]), y[3], c);
-    else push(t, q, rate, c);
+    else push(t, q, clamp_rate(c.turn_rate), c);
   }
 
   // After an accepted step: the guidance's stateful logic, then the caller's hook (which may
