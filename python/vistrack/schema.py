@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 import numbers
+import re
 from pathlib import Path
 from typing import Any, Callable, Iterable, Mapping, TypeVar
 
@@ -14,7 +15,8 @@ from ._core import Planning, VistrackError
 from ._core import limits as _limits
 
 __all__ = ["absolute_tolerance", "apply_checks", "beta", "by_struct", "coordinate", "fail", "heading_gain", "integer",
-           "length", "number", "positive", "rate_margin", "relative_tolerance", "resolve_path", "section", "speed"]
+           "length", "number", "output_name", "positive", "rate_margin", "relative_tolerance", "resolve_path",
+           "section", "speed"]
 
 T = TypeVar("T")
 
@@ -139,6 +141,15 @@ def section(data: Mapping[str, Any], name: str, allowed: set[str]) -> dict[str, 
         raise fail(name, found, "must be a mapping of keys to values")
     reject_unknown(found, allowed, f"{name}.", where=f" in {name}")
     return dict(found)
+
+
+def output_name(key: str, value: Any) -> str:
+    """A name from a file that becomes a path component under --out (a scenario's or sweep's name):
+    letters, digits, '_', '-' and '.' only, so it can never climb out of the output folder."""
+    if not isinstance(value, str) or not re.fullmatch(r"[\w.-]+", value) or set(value) == {"."}:
+        raise fail(key, value, "must be a non-empty name of letters, digits, '_', '-' or '.' "
+                               "(it names the output folder)")
+    return value
 
 
 def resolve_path(base: Path, value: Any, key: str) -> Path:

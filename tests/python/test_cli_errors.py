@@ -64,3 +64,17 @@ def test_new_commands_bad_invocations_are_one_line(args: list[str], status: int,
     argv = [a.format(route=route, file=file, out=tmp_path / "out", binary=binary) for a in args]
     one_line_error(argv, capsys, status, fragment)
     assert file.read_text() == "keep\n"
+
+
+@pytest.mark.parametrize("name", ["../../x", "/tmp/x", "a/b", ".."])
+def test_loiter_scenario_names_stay_inside_out(name: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Issue 29: a loiter scenario's ``name: ../../x`` wrote its report outside --out (two scenarios
+    write to --out/<name>); names are now checked as the tracking and sweep names are."""
+    work = tmp_path / "a" / "b"
+    work.mkdir(parents=True)
+    bad, good = work / "bad.yaml", work / "good.yaml"
+    bad.write_text(f"name: {name!r}\naois: [[300, 300]]\n")
+    good.write_text("aois: [[300, 300]]\n")
+    before = sorted(tmp_path.rglob("*"))
+    one_line_error(["loiter", str(good), str(bad), "--out", str(work / "out")], capsys, 1, "name = ")
+    assert sorted(p for p in tmp_path.rglob("*") if "out" not in p.parts) == before

@@ -46,7 +46,7 @@ def read_loiter_scenario(path: str | Path) -> Scenario:
                                    for name, value in numbers.items()} for method, numbers in paper.items()}
     scenario = Scenario(
         aois=aois,
-        name=str(data.get("name", Path(path).stem)),
+        name=schema.output_name("name", data["name"]) if "name" in data else Path(path).stem,
         start=schema.pair("start", data.get("start", [0.0, 0.0])),
         end=schema.pair("end", data.get("end", [0.0, 0.0])),
         turn_radius=uav.min_turn_radius,

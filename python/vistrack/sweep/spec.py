@@ -30,7 +30,6 @@ from __future__ import annotations
 import difflib
 import itertools
 import math
-import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping, Optional
@@ -39,7 +38,7 @@ import numpy as np
 
 from .._core import RoadNetwork, VistrackError
 from ..io import read_roads, read_yaml_mapping
-from ..schema import fail, integer, number, reject_unknown, resolve_path
+from ..schema import fail, integer, number, output_name, reject_unknown, resolve_path
 from .kinds import CaseKind, get_kind
 
 __all__ = ["MAX_CASES", "Case", "Route", "SweepSpec"]
@@ -110,7 +109,7 @@ class SweepSpec:
             base = kind.load_base(data["base"], folder)
         except VistrackError as error:
             raise VistrackError(f"base: {error}") from None
-        spec = cls(kind, base, folder, name=_name(data.get("name", default_name)))
+        spec = cls(kind, base, folder, name=output_name("name", data.get("name", default_name)))
         spec.seed = integer("seed", data.get("seed", 0), 0, 2**63 - 1)
         spec.combine = data.get("combine", "grid")
         if spec.combine not in ("grid", "zip"):
@@ -170,13 +169,6 @@ class SweepSpec:
 def case_seed(seed: int, index: int) -> int:
     """The seed handed to case ``index`` (independent streams from one sweep seed)."""
     return int(np.random.SeedSequence(seed, spawn_key=(1, index)).generate_state(1)[0])
-
-
-def _name(value: Any) -> str:
-    if not isinstance(value, str) or not re.fullmatch(r"[\w.-]+", value) or set(value) == {"."}:
-        raise fail("name", value, "must be a non-empty name of letters, digits, '_', '-' or '.' "
-                                  "(it names the output folder)")
-    return value
 
 
 def _parameters(data: Any, kind: CaseKind, base: Mapping[str, Any], seed: int) -> dict[str, list[Any]]:

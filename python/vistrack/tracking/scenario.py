@@ -10,7 +10,6 @@ Relative paths inside a scenario file are resolved against the file's own folder
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping, Sequence
@@ -51,6 +50,7 @@ from ..schema import (
     integer,
     length,
     number,
+    output_name,
     reject_unknown,
     resolve_path,
     section,
@@ -147,11 +147,7 @@ class Scenario:
         reject_unknown(data, cls.SECTIONS, noun="section")
         scenario = cls()
         if "name" in data:
-            name = data["name"]
-            if not isinstance(name, str) or not re.fullmatch(r"[\w.-]+", name) or set(name) == {"."}:
-                raise fail("name", name, "must be a non-empty name of letters, digits, '_', '-' or '.' "
-                                          "(it names the output folder)")
-            scenario.name = data["name"]
+            scenario.name = output_name("name", data["name"])
         scenario.origin = georeference_block(data)
         scenario.environment = city_block(data, base) or City()
         scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
