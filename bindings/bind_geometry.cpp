@@ -70,7 +70,7 @@ void bind_geometry(py::module_& m) {
       "|v| <= MAX_COORDINATE m, lengths in [MIN_LENGTH, MAX_LENGTH] m, speeds in [MIN_SPEED, MAX_SPEED] m/s, "
       "angles |a| <= MAX_ANGLE rad, volumes in (0, MAX_VOLUME] m^3, threads in [0, MAX_THREADS], the guidance gains "
       "beta in [MIN_GAIN, MAX_BETA] 1/m and k_psi in [MIN_GAIN, MAX_HEADING_GAIN] 1/s, and ODE tolerances rtol in "
-      "[MIN_RTOL, MAX_RTOL] and atol in [MIN_ATOL, MAX_ATOL].");
+      "[MIN_RTOL, MAX_RTOL] and atol in [MIN_ATOL, MAX_ATOL]; input files of at most MAX_INPUT_BYTES bytes.");
   ranges.attr("MAX_COORDINATE") = limits::kMaxCoordinate;
   ranges.attr("MIN_LENGTH") = limits::kMinLength;
   ranges.attr("MAX_LENGTH") = limits::kMaxLength;
@@ -86,6 +86,7 @@ void bind_geometry(py::module_& m) {
   ranges.attr("MAX_RTOL") = limits::kMaxRelativeTolerance;
   ranges.attr("MIN_ATOL") = limits::kMinAbsoluteTolerance;
   ranges.attr("MAX_ATOL") = limits::kMaxAbsoluteTolerance;
+  ranges.attr("MAX_INPUT_BYTES") = limits::kMaxInputFileBytes;
 }
 
 }  // namespace vistrack::bindings

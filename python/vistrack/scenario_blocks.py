@@ -224,7 +224,7 @@ class City:
             env = Environment.demo()
             env.origin = origin
             return env
-        return load_environment(self.path, self.up, self.kind, origin)
+        return load_environment(self.path, self.up, self.kind, origin, key=f"city.{self.kind}")
 
     def describe(self) -> str:
         return "demo city" if self.kind == "demo" else f"{self.kind} {self.path}"

@@ -5,6 +5,7 @@ VistrackError of the form "key = value: what is allowed", naming the key as the 
 
 from __future__ import annotations
 
+import errno
 import math
 import numbers
 import re
@@ -157,7 +158,13 @@ def resolve_path(base: Path, value: Any, key: str) -> Path:
     if not isinstance(value, (str, Path)) or not str(value):
         raise fail(key, value, "must be a file path")
     path = Path(value).expanduser()
-    return (path if path.is_absolute() else base / path).resolve()
+    try:
+        return (path if path.is_absolute() else base / path).resolve()
+    except RuntimeError:  # Path.resolve's "Symlink loop" (an OSError from Python 3.13)
+        raise fail(key, value, "cannot be resolved (a symlink loop)") from None
+    except OSError as error:
+        reason = "a symlink loop" if error.errno == errno.ELOOP else error.strerror
+        raise fail(key, value, f"cannot be resolved ({reason})") from None
 
 
 def apply_checks(target: T, section: Mapping[str, Any], prefix: str,

@@ -54,3 +54,72 @@ def test_numbers_too_long_for_python_are_refused(tmp_path: Path) -> None:
     mission.write_text(f'{{"fileType": {digits}}}')
     refuses(lambda: vt.mission.load(mission), "too long")
     refuses(lambda: schema.number("poi.speed", 10**400), "poi.speed = 'an integer of 401 digits'", "finite")
+
+
+def test_symlink_loops_in_a_scenario_name_the_key(tmp_path: Path) -> None:
+    """Issue 29: a symlink loop as any path inside a scenario was ``RuntimeError: Symlink loop``
+    (from Path.resolve); now the one resolver names the key."""
+    from vistrack.scenario import Scenario
+
+    loop = tmp_path / "loop.csv"
+    loop.symlink_to(loop)
+    scenario = tmp_path / "loop.yaml"
+    scenario.write_text("city: {mesh: loop.csv}\n")
+    refuses(lambda: Scenario.load(scenario), "city.mesh", "symlink loop")
+    scenario.write_text("poi: {path: loop.csv}\n")
+    refuses(lambda: Scenario.load(scenario), "poi.path", "symlink loop")
+    refuses(lambda: Scenario.load(loop), "scenario", "symlink loop")
+
+
+def test_input_files_must_be_regular_files(tmp_path: Path) -> None:
+    """Issue 29: a FIFO blocked every reader forever and /dev/zero was read until memory ran out;
+    every reader now refuses what is not a regular file before opening it, and files above
+    MAX_INPUT_BYTES (1 GiB) unread."""
+    import os
+
+    from vistrack.io import read_route
+    from vistrack.io.text import MAX_INPUT_BYTES, read_text
+
+    assert MAX_INPUT_BYTES == vt._core.limits.MAX_INPUT_BYTES == 2**30
+    fifo = tmp_path / "route.fifo"
+    os.mkfifo(fifo)
+    refuses(lambda: read_route(fifo, "route"), "route = ", "route.fifo", "a FIFO")
+    refuses(lambda: vt.PoiPath.from_csv(str(fifo), 1.0), "path", "not a regular")
+    refuses(lambda: read_route("/dev/zero", "route"), "/dev/zero", "a character device")
+    refuses(lambda: vt.Environment.from_mesh("/dev/zero"), "/dev/zero", "not a regular")
+    refuses(lambda: read_text(tmp_path, "scenario"), "is a folder")
+    big = tmp_path / "big.csv"
+    with big.open("wb") as stream:  # sparse: no disk used
+        stream.truncate(MAX_INPUT_BYTES + 1)
+    refuses(lambda: read_route(big, "route"), "big.csv", "above the limit")
+    refuses(lambda: vt.PoiPath.from_csv(str(big), 1.0), "big.csv", "above the limit")
+
+
+@pytest.mark.parametrize("special", ["fifo", "/dev/zero", "loop"])
+def test_waypoints_refuses_special_route_files_promptly(special: str, tmp_path: Path,
+                                                        capsys: pytest.CaptureFixture[str]) -> None:
+    """Issue 29: ``vistrack waypoints FIFO`` hung and ``vistrack waypoints /dev/zero`` read until
+    memory ran out; both, and a symlink loop, are now a one-line error with exit status 1."""
+    import os
+    import signal
+
+    from support.cli import one_line_error
+
+    route = tmp_path / "route.csv"
+    if special == "fifo":
+        os.mkfifo(route)
+    elif special == "loop":
+        route.symlink_to(route)
+    else:
+        route = Path(special)
+
+    def hung(signum: int, frame: object) -> None:
+        raise TimeoutError("vistrack waypoints blocked on the route file")
+
+    previous = signal.signal(signal.SIGALRM, hung)
+    signal.alarm(20)
+    try:
+        one_line_error(["waypoints", str(route), "--out", str(tmp_path / "out")], capsys, 1, "ROUTE = ", str(route))
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)

@@ -17,6 +17,7 @@
 //   a Dubins problem's coordinates relative to its turn radius                     max|x, y| <= 1e6 rho
 //   roll model: time constant tau                                                  [1e-3, 60] s
 //               maximum roll rate                                                  [1e-3, 1e4] deg/s
+//   input files (meshes, maps, routes, scenarios, plans; regular files only)        <= 1 GiB
 //
 // Why: 1e7 m is a local frame of 10,000 km (any city, any flight); beyond it float32 ray tracing
 // and the orbit planner's metre-scale steps lose their meaning. A length below 1e-6 m (1 µm) or
@@ -33,6 +34,8 @@
 // 1e-15 the scaled error norm overflows near a zero state; an atol above 1e6 m accepts any state.
 // A roll time constant of a millisecond is an instant roll (the Dubins model), one of a minute no
 // aircraft that can still turn; 1e4 deg/s is beyond any airframe and keeps the rate limit finite.
+// 1 GiB of input is generous for a city mesh (the Charlotte OBJ is 0.7 MB) and a scenario,
+// route or plan is kilobytes; a larger file (or /dev/zero, a FIFO) is refused before it is read.
 #pragma once
 
 #include <string>
@@ -61,6 +64,7 @@ inline constexpr double kMinRollTimeConstant = 1e-3;  // s
 inline constexpr double kMaxRollTimeConstant = 60.0;  // s
 inline constexpr double kMinRollRate = 1e-3;          // deg/s
 inline constexpr double kMaxRollRate = 1e4;           // deg/s
+inline constexpr int kMaxInputFileBytes = 1073741824;  // bytes (1 GiB)
 
 // "[1e-06, 1e+07] m" style text of a range, for messages.
 std::string range_text(double low, double high, const std::string& unit);
@@ -82,8 +86,9 @@ void require_heading_gain(double value, const std::string& field);  // [1e-9, 1e
 void require_tolerances(double rtol, double atol, const std::string& prefix);
 
 // Every loader opens its file through this: Error "field = path: ..." for a missing path, a
-// folder or anything else that is not a regular file (a folder opens as an empty stream on
-// POSIX, which would read as "the file is empty").
+// symlink loop, a folder (opens as an empty stream on POSIX, read as "the file is empty"),
+// anything else that is not a regular file (a FIFO blocks, /dev/zero never ends) or a file above
+// kMaxInputFileBytes.
 void require_regular_file(const std::string& path, const std::string& field, const std::string& kind);
 
 namespace detail {

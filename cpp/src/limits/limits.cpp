@@ -2,6 +2,7 @@
 #include "vistrack/limits.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <sstream>
 
@@ -58,9 +59,16 @@ void require_regular_file(const std::string& path, const std::string& field, con
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
   if (path.empty()) detail::fail_field(field, "''", "no " + kind + " file given");
+  if (error == std::errc::too_many_symbolic_link_levels)
+    detail::fail_field(field, path, "cannot read the " + kind + " file (a symlink loop)");
   if (!fs::exists(status)) detail::fail_field(field, path, "no such " + kind + " file");
   if (fs::is_directory(status)) detail::fail_field(field, path, "is a folder, not a " + kind + " file");
   if (!fs::is_regular_file(status)) detail::fail_field(field, path, "is not a regular " + kind + " file");
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (!error && size > static_cast<std::uintmax_t>(limits::kMaxInputFileBytes))
+    detail::fail_field(field, path, "the " + kind + " file has " + std::to_string(size) +
+                                        " bytes, above the limit of " + std::to_string(limits::kMaxInputFileBytes) +
+                                        " bytes for an input file");
 }
 
 std::string detail::printable(const std::string& text, bool quote) {

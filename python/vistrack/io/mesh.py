@@ -6,6 +6,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Optional
 
 from .._core import Environment
+from .text import input_file
 
 if TYPE_CHECKING:
     from ..georeference import Georeference
@@ -16,13 +17,13 @@ GEOJSON_SUFFIXES = (".geojson", ".json")
 
 
 def load_environment(path: str | Path, up: str = "z", kind: Optional[str] = None,
-                     origin: Georeference | None = None) -> Environment:
+                     origin: Georeference | None = None, key: str = "--map") -> Environment:
     """A city from a file: GeoJSON 2.5D footprints or any triangle mesh (OBJ, PLY, STL, OFF), whose
     up axis is ``up`` ("z", or "y" for Y-up files such as the Charlotte and campus OBJ exports,
     where north is -Z). ``kind`` "geojson" or "mesh"; by default from the suffix
     (``.geojson``/``.json`` are GeoJSON). ``origin`` becomes ``env.origin``; a longitude/latitude
-    GeoJSON is projected about it (without it: about the data's centre)."""
-    text = str(path)
+    GeoJSON is projected about it (without it: about the data's centre). Errors name ``key``."""
+    text = str(input_file(path, key))  # the C++ loaders check again; this names the key
     if kind is None:
         kind = "geojson" if Path(text).suffix.lower() in GEOJSON_SUFFIXES else "mesh"
     if kind == "geojson":
