@@ -548,3 +548,43 @@ def test_a_registered_kind_runs_through_the_sweep(tmp_path: Path) -> None:
     assert rows[0]["run_note"] == 3 and type(result.rows[0]["square"]) is float
     assert rows[2]["draw"] == np.random.default_rng(spec.cases()[2].seed).uniform()
     assert (tmp_path / "figures" / "x.png").is_file()
+
+
+@pytest.mark.sanitize
+def test_non_finite_metrics_are_empty_with_a_note(tmp_path: Path) -> None:
+    """Issue 29: a NaN or infinite metric went into results.csv as nan/inf and into sweep.json and
+    rows.jsonl as bare NaN/Infinity (not JSON); now the cell is empty and run_not_finite says why."""
+    from vistrack.sweep import CaseKind, CaseOutput, register_kind
+    from vistrack.sweep.kinds import KINDS, dotted_keys
+
+    def run(data: dict[str, Any], context: vt.sweep.CaseContext) -> CaseOutput:
+        bad = {0: 2.0, 1: float("nan"), 2: math.inf}[data["x"]]
+        return CaseOutput({"value": np.float64(bad) if data["x"] else 1.0, "pair": [1.0, bad]}, {"score": bad})
+
+    register_kind(CaseKind(name="nan_toy", description="NaN", load_base=lambda value, folder: dict(value),
+                           keys=dotted_keys, run=run, metric_names=("value", "pair"), figure_metrics=("value",)))
+    try:
+        spec = SweepSpec.from_dict({"kind": "nan_toy", "base": {"x": 0}, "parameters": {"x": [0, 1, 2]}})
+        vt.sweep.run(spec, SERIAL, out=tmp_path)
+    finally:
+        del KINDS["nan_toy"]
+
+    def strict(text: str) -> Any:
+        return json.loads(text, parse_constant=lambda name: pytest.fail(f"{name} in a results file"))
+
+    lines = (tmp_path / "rows.jsonl").read_text().splitlines()
+    rows = sorted((strict(line) for line in lines), key=lambda r: r["case"])
+    strict((tmp_path / "sweep.json").read_text())
+    assert [r["value"] for r in rows] == [1.0, None, None]
+    assert rows[1]["pair"] == [1.0, None] and rows[1]["run_score"] is None
+    assert rows[1]["run_not_finite"] == "NaN or infinity, written empty: value, pair, run_score"
+    assert "run_not_finite" not in rows[0]
+    import csv
+
+    with (tmp_path / "results.csv").open(newline="") as stream:
+        cells = [cell.lower() for line in csv.reader(stream) for cell in line]
+    assert not {"nan", "inf", "-inf", "infinity"} & set(cells)
+    assert not any("nan" in c or "inf" in c for c in cells if c.startswith("["))
+    table = read_results_table(tmp_path / "results.parquet")
+    assert [r["value"] for r in table] == [1.0, None, None]
+    assert all(r["run_status"] == "ok" for r in table)

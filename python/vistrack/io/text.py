@@ -133,6 +133,7 @@ def read_yaml_mapping(path: str | Path, key: str) -> dict[str, Any]:
 
 
 def append_json_line(data: Any, path: str | Path) -> None:
-    """One JSON document as one line at the end of a file (rows of a sweep as they arrive)."""
+    """One JSON document as one line at the end of a file (rows of a sweep as they arrive); NaN
+    and infinity are refused (ValueError), as JSON has no spelling for them."""
     with Path(path).open("a", encoding="utf-8") as stream:
-        stream.write(json.dumps(data) + "\n")
+        stream.write(json.dumps(data, allow_nan=False) + "\n")

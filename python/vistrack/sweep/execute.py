@@ -12,6 +12,7 @@ from __future__ import annotations
 import fnmatch
 import itertools
 import logging
+import math
 import os
 import socket
 import time
@@ -76,12 +77,42 @@ def run_case(case: Case) -> Row:
         status, error, meta = "ok", None, {k: _plain(v) for k, v in output.meta.items()}
     except Exception as exc:  # a failed case is a row, whatever it raised
         status, error, meta = "failed", _describe(exc), {}
+    row, nonfinite = finite_row(row)
+    meta, more = finite_row(meta)
     resources.cases_run += 1
     row.update({"run_status": status, "run_error": error, "run_worker": _worker_name(),
                 "run_wall_s": time.perf_counter() - began, "run_cpu_s": time.process_time() - cpu,
                 "run_seed": case.seed})
     row.update({f"run_{key}": value for key, value in meta.items()})
+    if nonfinite or more:  # why those cells are empty (JSON and CSV have no NaN)
+        row["run_not_finite"] = "NaN or infinity, written empty: " + ", ".join(
+            [*nonfinite, *(f"run_{k}" for k in more)])
     return row
+
+
+def finite_row(row: Mapping[str, Any]) -> tuple[Row, list[str]]:
+    """``row`` with every NaN or infinity (also inside lists and mappings) as None, and the keys
+    that held one: the results files stay valid JSON and CSV, and the note says why a value is empty."""
+    def clean(value: Any) -> tuple[Any, bool]:
+        if isinstance(value, float) and not math.isfinite(value):
+            return None, True
+        if isinstance(value, (list, tuple)):
+            items = [clean(v) for v in value]
+            if any(bad for _, bad in items):
+                return [v for v, _ in items], True
+        elif isinstance(value, Mapping):
+            pairs = {k: clean(v) for k, v in value.items()}
+            if any(bad for _, bad in pairs.values()):
+                return {k: v for k, (v, _) in pairs.items()}, True
+        return value, False
+
+    out: Row = {}
+    bad: list[str] = []
+    for key, value in row.items():
+        out[key], found = clean(value)
+        if found:
+            bad.append(str(key))
+    return out, bad
 
 
 def run(spec: Union[SweepSpec, str, Path, Mapping[str, Any]], scheduler: Optional[str] = None,
@@ -231,7 +262,7 @@ def _write(result: SweepResult, figures: bool) -> None:
                "columns": result.columns}
     result.files = write_results_table(result.rows, result.columns, result.out,
                                        metadata={"name": spec.name, "kind": spec.kind.name, "seed": spec.seed})
-    result.files.append(write_json(summary, result.out / "sweep.json"))
+    result.files.append(write_json(finite_row(summary)[0], result.out / "sweep.json"))
     result.files.append(result.out / "rows.jsonl")
     if figures:
         chosen = spec.metrics or spec.kind.figure_metrics
