@@ -42,8 +42,8 @@ void bind_flight(py::module_& parent) {
   py::class_<Gusts>(m, "Gusts",
                     "Dryden turbulence (MIL-F-8785C, horizontal): RMS intensity sigma_u = sigma_v (speed units), "
                     "length scale L_u = L_v (length units), seed. Reproducible from the seed.")
-      .def(py::init([](std::uint64_t seed, double intensity, double length_scale, double sample_step) {
-             Gusts g{seed, intensity, length_scale, sample_step};
+      .def(py::init([](const AnyInteger& seed, double intensity, double length_scale, double sample_step) {
+             Gusts g{integer<std::uint64_t>(seed, "seed"), intensity, length_scale, sample_step};
              g.validate();
              return g;
            }),
@@ -51,11 +51,19 @@ void bind_flight(py::module_& parent) {
            py::arg("length_scale") = gust_defaults.length_scale, py::arg("sample_step") = gust_defaults.sample_step,
            "seed; intensity sigma (speed units); length_scale L (length units); sample_step (s) of the "
            "precomputed series, 0: L / (20 V).")
-      .def_readwrite("seed", &Gusts::seed, "random seed")
+      .def_property(
+          "seed", [](const Gusts& g) { return g.seed; },
+          [](Gusts& g, const AnyInteger& seed) { g.seed = integer<std::uint64_t>(seed, "seed"); }, "random seed")
       .def_readwrite("intensity", &Gusts::intensity, "sigma_u = sigma_v, speed units")
       .def_readwrite("length_scale", &Gusts::length_scale, "L_u = L_v, length units")
       .def_readwrite("sample_step", &Gusts::sample_step, "s between precomputed samples; 0: L / (20 V)")
-      .def_static("mil_f_8785c", &mil_f_8785c_gusts, py::arg("altitude"), py::arg("wind_speed_20ft"),
+      .def_static(
+          "mil_f_8785c",
+          [](double altitude, double wind_speed_20ft, const AnyInteger& seed, double length_unit, double speed_unit) {
+            return mil_f_8785c_gusts(altitude, wind_speed_20ft, integer<std::uint64_t>(seed, "seed"), length_unit,
+                                     speed_unit);
+          },
+          py::arg("altitude"), py::arg("wind_speed_20ft"),
                   py::arg("seed") = 0, py::arg("length_unit") = 1.0, py::arg("speed_unit") = 1.0,
                   "Gusts of the MIL-F-8785C low-altitude model at `altitude` (m, 3.05-304.8) for the wind speed "
                   "at 20 ft W20 (m/s; light 7.7, moderate 15.4, severe 23.2), in flight units: speeds divided by "

@@ -20,12 +20,12 @@ namespace {
 py::tuple pair(const Vec2& p) { return py::make_tuple(p.x(), p.y()); }
 
 LoiterProblem make_problem(const InputArray& aois, const Vec2& start, const Vec2& end, double turn_radius, double speed,
-                           double aoi_radius, int turns) {
+                           double aoi_radius, const AnyInteger& turns) {
   LoiterProblem problem;
   problem.aois = to_points(aois, "aois");
   problem.start = start;
   problem.end = end;
-  problem.parameters = {turn_radius, speed, aoi_radius, turns};
+  problem.parameters = {turn_radius, speed, aoi_radius, integer<int>(turns, "turns")};
   problem.validate();
   return problem;
 }
@@ -62,15 +62,18 @@ void bind_loiter(py::module_& parent) {
   py::class_<LoiterParameters>(m, "Parameters",
                                "The vehicle and the loiters of a plan; the defaults (section 4.1's Raven RQ-11B, R = r, "
                                "one loiter) are those of plan() and of a loiter scenario.")
-      .def(py::init([](double turn_radius, double speed, double aoi_radius, int turns) {
-             return make_validated(LoiterParameters{turn_radius, speed, aoi_radius, turns});
+      .def(py::init([](double turn_radius, double speed, double aoi_radius, const AnyInteger& turns) {
+             return make_validated(LoiterParameters{turn_radius, speed, aoi_radius, integer<int>(turns, "turns")});
            }),
            py::kw_only(), py::arg("turn_radius") = defaults.turn_radius, py::arg("speed") = defaults.speed,
            py::arg("aoi_radius") = defaults.aoi_radius, py::arg("turns") = defaults.turns, kParameterArgs)
       .def_readwrite("turn_radius", &LoiterParameters::turn_radius, "r: the aircraft's minimum turn radius, m.")
       .def_readwrite("speed", &LoiterParameters::speed, "v: constant airspeed, m/s.")
       .def_readwrite("aoi_radius", &LoiterParameters::aoi_radius, "R >= r: the loiter circle about each AOI, m.")
-      .def_readwrite("turns", &LoiterParameters::turns, "Full loiters flown around each AOI (at least 1).")
+      .def_property(
+          "turns", [](const LoiterParameters& p) { return p.turns; },
+          [](LoiterParameters& p, const AnyInteger& turns) { p.turns = integer<int>(turns, "turns"); },
+          "Full loiters flown around each AOI (at least 1).")
       .def("validate", &LoiterParameters::validate, "Raise VistrackError naming the first invalid field.")
       .def("__repr__", [](const LoiterParameters& p) {
         return Repr("loiter.Parameters")
@@ -274,7 +277,7 @@ void bind_loiter(py::module_& parent) {
   m.def(
       "plan",
       [](const InputArray& aois, LoiterMethod method, const Vec2& start, const Vec2& end, double turn_radius,
-         double speed, double aoi_radius, int turns, LoiterOrder order) {
+         double speed, double aoi_radius, const AnyInteger& turns, LoiterOrder order) {
         const LoiterProblem problem = make_problem(aois, start, end, turn_radius, speed, aoi_radius, turns);
         py::gil_scoped_release release;
         return plan_loiter(problem, method, order);
@@ -289,7 +292,7 @@ void bind_loiter(py::module_& parent) {
   m.def(
       "plan_in_order",
       [](const InputArray& aois, const std::vector<int>& order, LoiterMethod method, const Vec2& start,
-         const Vec2& end, double turn_radius, double speed, double aoi_radius, int turns) {
+         const Vec2& end, double turn_radius, double speed, double aoi_radius, const AnyInteger& turns) {
         const LoiterProblem problem = make_problem(aois, start, end, turn_radius, speed, aoi_radius, turns);
         return plan_loiter_in_order(problem, method, order);
       },
@@ -300,7 +303,7 @@ void bind_loiter(py::module_& parent) {
   m.def(
       "order_length",
       [](const InputArray& aois, const std::vector<int>& order, LoiterMethod method, const Vec2& start,
-         const Vec2& end, double turn_radius, double speed, double aoi_radius, int turns) {
+         const Vec2& end, double turn_radius, double speed, double aoi_radius, const AnyInteger& turns) {
         const LoiterProblem problem = make_problem(aois, start, end, turn_radius, speed, aoi_radius, turns);
         return loiter_order_length(problem, method, order);
       },
@@ -312,7 +315,7 @@ void bind_loiter(py::module_& parent) {
   m.def(
       "best_order",
       [](const InputArray& aois, LoiterMethod method, bool exact, const Vec2& start, const Vec2& end,
-         double turn_radius, double speed, double aoi_radius, int turns) {
+         double turn_radius, double speed, double aoi_radius, const AnyInteger& turns) {
         const LoiterProblem problem = make_problem(aois, start, end, turn_radius, speed, aoi_radius, turns);
         py::gil_scoped_release release;
         return best_loiter_order(problem, method, exact);

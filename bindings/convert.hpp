@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <tuple>
 #include <type_traits>
@@ -14,6 +15,16 @@
 #include "vistrack/dubins.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/geometry.hpp"
+#include "vistrack/limits.hpp"
+
+namespace vistrack::bindings {
+// An argument typed int in the signature but taken as given (any object), so that integer()
+// range-checks it: pybind's own conversion raises a TypeError naming no field for a negative
+// seed, 2**64 or 1e300.
+struct AnyInteger {
+  pybind11::object value;
+};
+}  // namespace vistrack::bindings
 
 // Every enum with an EnumNames table (vistrack/error.hpp) crosses the boundary as its name, a
 // str; an unknown name is a VistrackError naming the field and the allowed names.
@@ -31,9 +42,38 @@ struct type_caster<E, std::enable_if_t<vistrack::has_enum_names<E>::value>> {
   }
   static handle cast(E value, return_value_policy, handle) { return str(vistrack::to_string(value)).release(); }
 };
+template <>
+struct type_caster<vistrack::bindings::AnyInteger> {
+  PYBIND11_TYPE_CASTER(vistrack::bindings::AnyInteger, const_name("typing.SupportsIndex"));
+  bool load(handle source, bool) {
+    value.value = reinterpret_borrow<object>(source);
+    return true;
+  }
+  static handle cast(const vistrack::bindings::AnyInteger& given, return_value_policy, handle) {
+    return given.value.inc_ref();
+  }
+};
 }  // namespace pybind11::detail
 
 namespace vistrack::bindings {
+
+// `given` as a T in [low, high] (an int or numpy integer; not a bool, a float or text); else
+// VistrackError "field = value: must be an integer in [low, high]".
+template <class T>
+T integer(const AnyInteger& given, const std::string& field, T low = std::numeric_limits<T>::min(),
+          T high = std::numeric_limits<T>::max()) {
+  namespace py = pybind11;
+  const py::handle value = given.value;
+  const std::string allowed = "must be an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]";
+  const auto fail = [&] {
+    detail::fail_field(field, detail::printable(py::repr(value).cast<std::string>(), false), allowed);
+  };
+  if (!value || PyBool_Check(value.ptr()) || !PyIndex_Check(value.ptr())) fail();
+  const auto number = py::reinterpret_steal<py::int_>(PyNumber_Index(value.ptr()));
+  if (!number) throw py::error_already_set();
+  if (number < py::int_(low) || number > py::int_(high)) fail();
+  return number.cast<T>();
+}
 
 // Any array-like of float64, C order (what numpy gives after a cast).
 using InputArray = pybind11::array_t<double, pybind11::array::c_style | pybind11::array::forcecast>;

@@ -11,6 +11,7 @@
 
 #include "vistrack/error.hpp"
 #include "vistrack/follow.hpp"
+#include "vistrack/limits.hpp"
 
 namespace vistrack {
 
@@ -85,6 +86,13 @@ double sinusoid_slope(double speed_ratio) {
   if (!std::isfinite(speed_ratio) || !(speed_ratio >= 1.0))
     detail::fail_field("speed_ratio", speed_ratio,
                        "must be a finite number >= 1 (below 1 the vehicle outruns the UAV: no sinusoid is slow enough)");
+  // v_p / v_g of two speeds in the speed range [1e-6, 1e4] m/s; far beyond, Boost's elliptic
+  // integrals overflow (a Boost ValueError naming no field).
+  constexpr double kMaxRatio = limits::kMaxSpeed / limits::kMinSpeed;
+  if (speed_ratio > kMaxRatio)
+    detail::fail_field("speed_ratio", speed_ratio,
+                       "must be at most " + detail::to_text(kMaxRatio) + " (the ratio of the largest to the smallest "
+                       "speed)");
   if (speed_ratio == 1.0) return 0.0;
   const double sigma = speed_ratio;
   // Bracket: Jensen gives sigma <= sqrt(1 + a^2/2); sqrt(1 + x^2) >= max(x, (1 + x)/sqrt 2) gives

@@ -13,11 +13,11 @@ class Gusts:
     Dryden turbulence (MIL-F-8785C, horizontal): RMS intensity sigma_u = sigma_v (speed units), length scale L_u = L_v (length units), seed. Reproducible from the seed.
     """
     @staticmethod
-    def mil_f_8785c(altitude: typing.SupportsFloat | typing.SupportsIndex, wind_speed_20ft: typing.SupportsFloat | typing.SupportsIndex, seed: typing.SupportsInt | typing.SupportsIndex = 0, length_unit: typing.SupportsFloat | typing.SupportsIndex = 1.0, speed_unit: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> Gusts:
+    def mil_f_8785c(altitude: typing.SupportsFloat | typing.SupportsIndex, wind_speed_20ft: typing.SupportsFloat | typing.SupportsIndex, seed: typing.SupportsIndex = 0, length_unit: typing.SupportsFloat | typing.SupportsIndex = 1.0, speed_unit: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> Gusts:
         """
         Gusts of the MIL-F-8785C low-altitude model at `altitude` (m, 3.05-304.8) for the wind speed at 20 ft W20 (m/s; light 7.7, moderate 15.4, severe 23.2), in flight units: speeds divided by speed_unit (m/s per unit), lengths by length_unit (m per unit).
         """
-    def __init__(self, *, seed: typing.SupportsInt | typing.SupportsIndex = 0, intensity: typing.SupportsFloat | typing.SupportsIndex = 1.0, length_scale: typing.SupportsFloat | typing.SupportsIndex = 200.0, sample_step: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+    def __init__(self, *, seed: typing.SupportsIndex = 0, intensity: typing.SupportsFloat | typing.SupportsIndex = 1.0, length_scale: typing.SupportsFloat | typing.SupportsIndex = 200.0, sample_step: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         """
         seed; intensity sigma (speed units); length_scale L (length units); sample_step (s) of the precomputed series, 0: L / (20 V).
         """
@@ -53,7 +53,7 @@ class Gusts:
         random seed
         """
     @seed.setter
-    def seed(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+    def seed(self, arg1: typing.SupportsIndex) -> None:
         ...
 class Wind:
     """

@@ -13,7 +13,7 @@ class Parameters:
     """
     The vehicle and the loiters of a plan; the defaults (section 4.1's Raven RQ-11B, R = r, one loiter) are those of plan() and of a loiter scenario.
     """
-    def __init__(self, *, turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsInt | typing.SupportsIndex = 1) -> None:
+    def __init__(self, *, turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsIndex = 1) -> None:
         """
         turn_radius r (m), speed v (m/s), aoi_radius R >= r (m), turns: full loiters per AOI (>= 1).
         """
@@ -53,7 +53,7 @@ class Parameters:
         Full loiters flown around each AOI (at least 1).
         """
     @turns.setter
-    def turns(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+    def turns(self, arg1: typing.SupportsIndex) -> None:
         ...
 class CoverageOptions:
     """
@@ -462,7 +462,7 @@ def bank_angle(speed: typing.SupportsFloat | typing.SupportsIndex, turn_rate: ty
     """
     Bank of a coordinated turn, atan(v psi_dot / g), rad, positive to the left.
     """
-def best_order(aois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], method: str = 'ldlpp', exact: bool = True, start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., end: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsInt | typing.SupportsIndex = 1) -> list[int]:
+def best_order(aois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], method: str = 'ldlpp', exact: bool = True, start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., end: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsIndex = 1) -> list[int]:
     """
     The visiting order with the shortest plan: exact branch and bound (at most 12 AOIs) or the 2-opt heuristic.
     """
@@ -478,11 +478,11 @@ def entry_distance(aoi_radius: typing.SupportsFloat | typing.SupportsIndex, turn
     """
     LDLPP's D_Entry = (R + r) cos(alpha_ED) (15), m.
     """
-def order_length(aois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], order: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex], method: str = 'ldlpp', start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., end: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsInt | typing.SupportsIndex = 1) -> float:
+def order_length(aois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], order: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex], method: str = 'ldlpp', start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., end: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsIndex = 1) -> float:
     """
     Path length of a visiting order (no validation of the order's geometry): inf when the method cannot fly it.
     """
-def plan(aois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], method: str = 'ldlpp', start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., end: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsInt | typing.SupportsIndex = 1, order: str = 'given') -> Plan:
+def plan(aois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], method: str = 'ldlpp', start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., end: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsIndex = 1, order: str = 'given') -> Plan:
     """
     Plan a loiter mission. aois: (n, 2) AOI centres (POIs), m; start, end: (x, y), m; turn_radius r (m), speed v (m/s), aoi_radius R >= r (m), turns: full loiters per AOI (>= 1). method: 'fly_through', 'tlpp' or 'ldlpp'; order: 'given' or 'best' (shortest plan: exact up to 9 AOIs, 2-opt/or-opt above).
     """
@@ -490,7 +490,7 @@ def plan_coverage(plan: Plan, camera: Camera = ..., threshold: typing.SupportsFl
     """
     Coverage of a plan sampled every dt (t = 0, dt, ... up to the flight time), exact turn rates.
     """
-def plan_in_order(aois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], order: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex], method: str = 'ldlpp', start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., end: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsInt | typing.SupportsIndex = 1) -> Plan:
+def plan_in_order(aois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], order: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex], method: str = 'ldlpp', start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., end: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., turn_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, speed: typing.SupportsFloat | typing.SupportsIndex = 12.0, aoi_radius: typing.SupportsFloat | typing.SupportsIndex = 46.0, turns: typing.SupportsIndex = 1) -> Plan:
     """
     Plan visiting the AOIs in this order (a permutation of 0..n-1).
     """
