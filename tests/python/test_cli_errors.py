@@ -78,3 +78,11 @@ def test_loiter_scenario_names_stay_inside_out(name: str, tmp_path: Path, capsys
     before = sorted(tmp_path.rglob("*"))
     one_line_error(["loiter", str(good), str(bad), "--out", str(work / "out")], capsys, 1, "name = ")
     assert sorted(p for p in tmp_path.rglob("*") if "out" not in p.parts) == before
+
+
+def test_sweep_tls_scheduler_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Issue 29: ``--scheduler tls://...`` printed ``TypeError: TLS expects a ssl_context``."""
+    sweep = tmp_path / "sweep.yaml"
+    sweep.write_text("kind: loiter\nbase: {aois: [[300, 300]]}\nparameters: {method: [tlpp, ldlpp]}\n")
+    one_line_error(["sweep", str(sweep), "--out", str(tmp_path / "out"), "--quiet", "--scheduler",
+                    "tls://127.0.0.1:1"], capsys, 1, "scheduler = tls://127.0.0.1:1", "cannot connect")

@@ -206,8 +206,10 @@ def _execute(cases: list[Case], scheduler: Optional[str], n_workers: Optional[in
     try:
         try:
             client = Client(address, timeout="20s")
-        except (OSError, TimeoutError, ValueError) as error:
-            raise VistrackError(f"scheduler = {scheduler}: cannot connect ({error})") from None
+        except (OSError, TimeoutError, ValueError, TypeError) as error:
+            # TypeError: distributed's "TLS expects a ssl_context" for tls:// without Dask's TLS settings.
+            hint = "; tls:// needs distributed.comm.tls in the Dask config" if isinstance(error, TypeError) else ""
+            raise VistrackError(f"scheduler = {scheduler}: cannot connect ({error}{hint})") from None
         with client:
             try:
                 client.wait_for_workers(1, timeout=60)
