@@ -60,14 +60,18 @@ def read_bytes(path: str | Path, key: str, max_bytes: int = MAX_INPUT_BYTES) -> 
         reason = "a symlink loop" if error.errno == errno.ELOOP else error.strerror
         raise VistrackError(f"{key} = {path}: cannot read the file ({reason})") from None
     with os.fdopen(fd, "rb") as stream:
-        _check_stat(os.fstat(fd), key, path, max_bytes)
-        try:
-            data = stream.read(max_bytes + 1)
+        info = os.fstat(fd)
+        _check_stat(info, key, path, max_bytes)
+        data = bytearray()
+        try:  # its size (a read of max_bytes would allocate that much), then on while it grows
+            while chunk := stream.read(min(max_bytes + 1 - len(data), max(info.st_size + 1 - len(data), 1 << 20))):
+                data += chunk
+                if len(data) > max_bytes:
+                    raise VistrackError(f"{key} = {path}: the file has more than {max_bytes} bytes, the limit for "
+                                        "an input file")
         except OSError as error:
             raise VistrackError(f"{key} = {path}: cannot read the file ({error.strerror})") from None
-    if len(data) > max_bytes:  # grew since the check
-        raise VistrackError(f"{key} = {path}: the file has more than {max_bytes} bytes, the limit for an input file")
-    return data
+    return bytes(data)
 
 
 def read_text(path: str | Path, key: str) -> str:
