@@ -68,7 +68,8 @@ void bind_geometry(py::module_& m) {
       "limits",
       "The valid range of every numeric input (vistrack/limits.hpp; README, Hardening): coordinates "
       "|v| <= MAX_COORDINATE m, lengths in [MIN_LENGTH, MAX_LENGTH] m, speeds in [MIN_SPEED, MAX_SPEED] m/s, "
-      "angles |a| <= MAX_ANGLE rad, volumes in (0, MAX_VOLUME] m^3, threads in [0, MAX_THREADS], the guidance gains "
+      "angles |a| <= MAX_ANGLE rad, origin altitudes |alt| <= MAX_ALTITUDE m, volumes in (0, MAX_VOLUME] m^3, "
+      "threads in [0, MAX_THREADS], the guidance gains "
       "beta in [MIN_GAIN, MAX_BETA] 1/m and k_psi in [MIN_GAIN, MAX_HEADING_GAIN] 1/s, and ODE tolerances rtol in "
       "[MIN_RTOL, MAX_RTOL] and atol in [MIN_ATOL, MAX_ATOL]; input files of at most MAX_INPUT_BYTES bytes.");
   ranges.attr("MAX_COORDINATE") = limits::kMaxCoordinate;
@@ -77,6 +78,7 @@ void bind_geometry(py::module_& m) {
   ranges.attr("MIN_SPEED") = limits::kMinSpeed;
   ranges.attr("MAX_SPEED") = limits::kMaxSpeed;
   ranges.attr("MAX_ANGLE") = limits::kMaxAngle;
+  ranges.attr("MAX_ALTITUDE") = limits::kMaxAltitude;
   ranges.attr("MAX_VOLUME") = limits::kMaxVolume;
   ranges.attr("MAX_THREADS") = limits::kMaxThreads;
   ranges.attr("MIN_GAIN") = limits::kMinGain;

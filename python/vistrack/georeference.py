@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any, Callable, Optional
 import numpy as np
 
 from ._core import Environment
+from ._core import limits as _limits
 from .schema import fail, number
 
 if TYPE_CHECKING:
@@ -37,7 +38,8 @@ def _topocentric(lat: float, lon: float, alt: float) -> Transformer:
         f"+step +proj=topocentric +ellps=WGS84 +lat_0={lat!r} +lon_0={lon!r} +h_0={alt!r}")
 
 
-def _array(key: str, value: Any, low: float | None = None, high: float | None = None) -> np.ndarray:
+def _array(key: str, value: Any, low: float | None = None, high: float | None = None,
+           unit: str = "degrees") -> np.ndarray:
     """A float array of finite values in [low, high]; VistrackError naming key[i] otherwise."""
     try:
         array = np.asarray(value, dtype=float)
@@ -51,7 +53,7 @@ def _array(key: str, value: Any, low: float | None = None, high: float | None = 
     if bad.any():
         index = np.unravel_index(int(np.argmax(bad)), array.shape) if array.ndim else ()
         name = key + "".join(f"[{i}]" for i in index)
-        allowed = "must be finite" if low is None else f"must be in [{low:g}, {high:g}] degrees"
+        allowed = "must be finite" if low is None else f"must be in [{low:g}, {high:g}] {unit}"
         raise fail(name, float(array[index]), allowed)
     return array
 
@@ -62,6 +64,17 @@ def degrees(key: str, value: Any, limit: float) -> float:
     if not -limit <= result <= limit:
         raise fail(key, value, f"must be in [-{limit:g}, {limit:g}] degrees")
     return result
+
+
+def _altitude(key: str, value: Any) -> float:
+    """An origin altitude in metres: |alt| <= MAX_ALTITUDE (100 km, the edge of space; at 1e20 m
+    every waypoint came out at lat/lon 1e-18)."""
+    return number(key, value, low=-_limits.MAX_ALTITUDE, high=_limits.MAX_ALTITUDE)
+
+
+def _local(key: str, value: Any) -> np.ndarray:
+    """Local map-plane coordinates in metres: |v| <= MAX_COORDINATE (1e7 m)."""
+    return _array(key, value, -_limits.MAX_COORDINATE, _limits.MAX_COORDINATE, "m")
 
 
 def _result(*arrays: np.ndarray) -> tuple[Any, ...]:
@@ -90,7 +103,7 @@ class Georeference:
     def __post_init__(self) -> None:
         object.__setattr__(self, "lat", degrees("lat", self.lat, 90.0))
         object.__setattr__(self, "lon", degrees("lon", self.lon, 180.0))
-        object.__setattr__(self, "alt", number("alt", self.alt))
+        object.__setattr__(self, "alt", _altitude("alt", self.alt))
 
     @classmethod
     def from_value(cls, value: Georeference | Sequence[float], key: str = "origin") -> Georeference:
@@ -101,7 +114,7 @@ class Georeference:
             raise fail(key, value, "must be [lat, lon] or [lat, lon, alt] (degrees, degrees, metres AMSL)")
         lat = degrees(f"{key}[0]", value[0], 90.0)
         lon = degrees(f"{key}[1]", value[1], 180.0)
-        alt = number(f"{key}[2]", value[2]) if len(value) == 3 else 0.0
+        alt = _altitude(f"{key}[2]", value[2]) if len(value) == 3 else 0.0
         return cls(lat, lon, alt)
 
     @classmethod
@@ -139,7 +152,7 @@ class Georeference:
         point above (east, north) along the origin's up axis that lies at the origin's height
         (Newton on the height; each step shrinks the error by 1 - cos of the angle between the
         two verticals, about 1e-6 at 10 km: two or three steps)."""
-        east, north = np.broadcast_arrays(_array("east", east), _array("north", north))
+        east, north = np.broadcast_arrays(_local("east", east), _local("north", north))
         up = np.zeros_like(east)
         for _ in range(10):
             lat, lon, alt = (np.asarray(v) for v in self.geodetic(east, north, up))

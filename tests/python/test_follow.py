@@ -209,6 +209,13 @@ def test_scenario_errors_name_the_key(tmp_path: Path) -> None:
     too_windy = load("uav: {speed: 20}\nwind: {north: 25}\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}")
     with pytest.raises(vt.VistrackError, match=r"^wind = "):
         too_windy.run(city=False)
+    # Angles are limited to |a| <= 1e9 rad (5.73e10 degrees); 1e300 degrees was accepted.
+    with pytest.raises(vt.VistrackError,
+                       match=r"^vehicle\.legs\[0\]\.heading_deg = '1e300': must be <= 5\.72958e\+10 and >= -5\.7"):
+        load("vehicle: {legs: [{heading_deg: 1e300, speed: 5, duration: 10}]}")
+    # A period of 1e300 s flew a straight line 1 km off with tracking error 0: (0, 3600] s.
+    with pytest.raises(vt.VistrackError, match=r"^follow\.period = 1e\+300: must be a finite number in \(0, 3600\] s$"):
+        load("follow: {period: 1e300}\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}").run(city=False)
     with pytest.raises(vt.VistrackError, match=r"^follow\.hysteresis = 4"):
         load("follow: {hysteresis: 4}\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}")
     track = tmp_path / "track.csv"

@@ -115,6 +115,28 @@ def test_bad_conversion_input_names_the_point() -> None:
         Georeference.from_value("x")
 
 
+@pytest.mark.sanitize
+def test_origin_altitude_and_local_coordinates_are_bounded(tmp_path) -> None:
+    """An origin at 1e20 m put every waypoint at lat/lon 1e-18 (at 1e300 the message said
+    `up = nan`); to_latlon(1e8, 0) returned a position: |alt| <= 1e5 m, |east, north| <= 1e7 m."""
+    with pytest.raises(vt.VistrackError, match=r"^alt = 1e\+20: must be <= 100000 and >= -100000$"):
+        Georeference(0.0, 0.0, 1e20)
+    with pytest.raises(vt.VistrackError, match=r"^origin\[2\] = 1e\+300: must be <= 100000 and >= -100000$"):
+        Georeference.from_value([0.0, 0.0, 1e300])
+    with pytest.raises(vt.VistrackError, match=r"^east = 100000000\.0: must be in \[-1e\+07, 1e\+07\] m$"):
+        CHARLOTTE.to_latlon(1e8, 0.0)
+    path = tmp_path / "m.geojson"
+    path.write_text(json.dumps({"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {"height": 5},
+         "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 10], [0, 10]]]}}]}))
+    with pytest.raises(vt.VistrackError, match=r"^origin(\.altitude|\[2\]) = 1e\+20: must be"):
+        vt.Environment.from_geojson(path, origin=(0.0, 0.0, 1e20))
+    env = vt.Environment.from_geojson(path, origin=CHARLOTTE)
+    with pytest.raises(vt.VistrackError, match=r"^origin\.altitude = -1e\+20: must be a finite number in"):
+        env.origin = (0.0, 0.0, -1e20)
+    assert Georeference(0.0, 0.0, 1e5).alt == 1e5
+
+
 def test_georeference_pickles_and_compares() -> None:
     import pickle
 

@@ -340,3 +340,12 @@ def test_loiter_refuses_far_aois_too_many_and_nan_thresholds() -> None:
     plan = vt.loiter.plan(AOIS)
     refuses(lambda: vt.loiter.metrics(plan, threshold=math.nan), "threshold = nan")
     refuses(lambda: vt.loiter.fly(plan, wind=(1e300, 0.0)), "wind.east = 1e+300")
+
+
+def test_loiter_coverage_refuses_altitudes_and_steps_beyond_the_limits() -> None:
+    """An altitude of 1e300 m covered every AOI fully and a dt of 1e300 s gave coverage 0: the
+    altitude is a length ([1e-6, 1e7] m), dt a time step ((0, 3600] s)."""
+    plan = vt.loiter.plan(AOIS)
+    refuses(lambda: vt.loiter.coverage(plan, dt=1e300), "dt = 1e+300", "(0, 3600] s")
+    refuses(lambda: vt.loiter.Camera(74.0, 25.0, 1e300, True), "camera.altitude = 1e+300", "[1e-06, 1e+07] m")
+    refuses(lambda: vt.loiter.CoverageOptions(dt=7200.0), "dt = 7200", "(0, 3600] s")

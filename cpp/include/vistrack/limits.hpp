@@ -7,7 +7,9 @@
 //   lengths (rho, r_min, radii, d_max, spacings, steps, heights)                   [1e-6, 1e7] m
 //   speeds (v, v_g, pursuer, target)                                               [1e-6, 1e4] m/s
 //   angles (headings, polar angles; unwrapped headings allowed)                    |a| <= 1e9 rad
+//   a georeference's origin altitude (metres above mean sea level)                 |alt| <= 1e5 m
 //   times                                                                         finite
+//   time steps and periods (loiter dt, follow.period)                              (0, 3600] s
 //   volumes (d_cutoff)                                                            (0, 1e21] m^3
 //   threads                                                                        [0, 1024]
 //   guidance gains: beta (vector field, 1/m)                                       [1e-9, 1e3]
@@ -34,6 +36,10 @@
 // 1e-15 the scaled error norm overflows near a zero state; an atol above 1e6 m accepts any state.
 // A roll time constant of a millisecond is an instant roll (the Dubins model), one of a minute no
 // aircraft that can still turn; 1e4 deg/s is beyond any airframe and keeps the rate limit finite.
+// An origin 100 km above or below sea level is past the edge of space; beyond it the tangent plane
+// about it no longer describes the ground (an origin at 1e20 m put every waypoint at lat/lon 1e-18).
+// A step or a period of an hour is longer than any loiter or follow flight's feature (a larger
+// dt skipped the whole flight: coverage 0; a follow period of 1e300 s flew a straight line).
 // 1 GiB of input is generous for a city mesh (the Charlotte OBJ is 0.7 MB) and a scenario,
 // route or plan is kilobytes; a larger file (or /dev/zero, a FIFO) is refused before it is read.
 #pragma once
@@ -50,6 +56,7 @@ inline constexpr double kMaxLength = 1e7;      // m
 inline constexpr double kMinSpeed = 1e-6;      // m/s
 inline constexpr double kMaxSpeed = 1e4;       // m/s
 inline constexpr double kMaxAngle = 1e9;       // rad
+inline constexpr double kMaxAltitude = 1e5;    // m (a georeference's origin)
 inline constexpr double kMaxVolume = 1e21;     // m^3 (kMaxLength cubed)
 inline constexpr int kMaxThreads = 1024;
 inline constexpr double kMaxCoordinateOverRho = 1e6;
@@ -64,6 +71,7 @@ inline constexpr double kMinRollTimeConstant = 1e-3;  // s
 inline constexpr double kMaxRollTimeConstant = 60.0;  // s
 inline constexpr double kMinRollRate = 1e-3;          // deg/s
 inline constexpr double kMaxRollRate = 1e4;           // deg/s
+inline constexpr double kMaxTimeStep = 3600.0;        // s (loiter dt, follow.period)
 inline constexpr int kMaxInputFileBytes = 1073741824;  // bytes (1 GiB)
 
 // "[1e-06, 1e+07] m" style text of a range, for messages.
@@ -79,6 +87,7 @@ void require_coordinate(double value, const std::string& field);  // |v| <= 1e7 
 void require_length(double value, const std::string& field);      // [1e-6, 1e7] m
 void require_speed(double value, const std::string& field);       // [1e-6, 1e4] m/s
 void require_angle(double value, const std::string& field);       // |a| <= 1e9 rad
+void require_time_step(double value, const std::string& field);   // (0, 3600] s
 void require_threads(int value, const std::string& field);        // [0, 1024]
 void require_beta(double value, const std::string& field);          // [1e-9, 1e3] 1/m
 void require_heading_gain(double value, const std::string& field);  // [1e-9, 1e6] 1/s

@@ -48,7 +48,7 @@ void validate_geodetic_point(const GeodeticPoint& point, const std::string& fiel
     detail::fail_field(field + ".latitude", point.latitude, "must be in [-90, 90] degrees");
   if (!(point.longitude >= -180.0 && point.longitude <= 180.0))
     detail::fail_field(field + ".longitude", point.longitude, "must be in [-180, 180] degrees");
-  require_finite(point.altitude, field + ".altitude");
+  require_in_range(point.altitude, -limits::kMaxAltitude, limits::kMaxAltitude, "m", field + ".altitude");
 }
 
 void Environment::set_origin(const std::optional<GeodeticPoint>& origin) {

@@ -9,7 +9,7 @@
 namespace vistrack {
 
 void FollowParameters::validate() const {
-  require_positive(period, "follow.period");
+  require_time_step(period, "follow.period");
   if (!(turn_margin >= 1.0) || !std::isfinite(turn_margin))
     detail::fail_field("follow.turn_margin", turn_margin, "must be a finite number >= 1 (a multiple of r_min)");
   if (!(threshold > 1.0) || !std::isfinite(threshold))

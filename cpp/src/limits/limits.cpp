@@ -19,6 +19,11 @@ void require_in_range(double value, double low, double high, const std::string& 
     detail::fail_field(field, value, "must be a finite number in " + limits::range_text(low, high, unit));
 }
 
+void require_time_step(double value, const std::string& field) {
+  if (!(value > 0.0 && value <= limits::kMaxTimeStep))  // NaN fails both
+    detail::fail_field(field, value, "must be a finite number in (0, " + detail::to_text(limits::kMaxTimeStep) + "] s");
+}
+
 void require_coordinate(double value, const std::string& field) {
   require_in_range(value, -limits::kMaxCoordinate, limits::kMaxCoordinate, "m (coordinates)", field);
 }

@@ -35,12 +35,12 @@ void LoiterCamera::validate() const {
   if (!(0.5 * fov_deg + max_gimbal_deg < 90.0))
     detail::fail_field("camera.max_gimbal_deg", max_gimbal_deg,
                        "plus half the field of view must stay below 90 degrees (the footprint would not be bounded)");
-  require_positive(altitude, "camera.altitude");
+  require_length(altitude, "camera.altitude");
 }
 
 void LoiterCoverageOptions::validate() const {
   if (!(threshold > 0.0 && threshold <= 1.0)) detail::fail_field("threshold", threshold, "must be in (0, 1]");
-  require_positive(dt, "dt");
+  require_time_step(dt, "dt");
   require_positive(gravity, "gravity");
 }
 

@@ -37,6 +37,7 @@ from typing import Any, Callable, Mapping, Optional
 import numpy as np
 
 from .._core import Control, Environment, Uav, VisibilityScene
+from .._core import limits as _limits
 from ..flight import Wind
 from ..georeference import Georeference
 from ..io.text import read_yaml_mapping
@@ -249,7 +250,9 @@ def _heading(key: str, leg: Mapping[str, Any]) -> float:
         if not isinstance(word, str) or word.lower() not in HEADINGS:
             raise fail(f"{key}.heading", word, f"must be one of {', '.join(HEADINGS)} (or use heading_deg)")
         return HEADINGS[word.lower()]
-    return math.radians(number(f"{key}.heading_deg", leg.get("heading_deg", 0.0)))
+    # The angle limit (|a| <= MAX_ANGLE rad), in the degrees the key is given in.
+    limit = math.degrees(_limits.MAX_ANGLE)
+    return math.radians(number(f"{key}.heading_deg", leg.get("heading_deg", 0.0), low=-limit, high=limit))
 
 
 def _legs(items: Any) -> list[VehicleLeg]:
