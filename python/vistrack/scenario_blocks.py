@@ -35,7 +35,6 @@ __all__ = [
     "UavBlock",
     "camera_block",
     "city_block",
-    "default_uav",
     "dynamics_name",
     "georeference_block",
     "renamed",
@@ -43,6 +42,7 @@ __all__ = [
     "uav_dict",
     "upgrade",
     "wind_block",
+    "with_dynamics",
 ]
 
 # The vehicle models a flight can use (vistrack.Uav.dynamics): "roll" banks with a first-order,
@@ -139,18 +139,19 @@ def dynamics_name(value: Any) -> str:
     return value.lower()
 
 
-def default_uav(**numbers: float) -> Uav:
-    """A vehicle with the C++ defaults (or ``numbers``) and the scenario files' model,
-    :data:`DEFAULT_DYNAMICS`."""
-    return Uav(dynamics=DEFAULT_DYNAMICS, **numbers)
-
-
 def uav_dict(uav: Uav) -> dict[str, Any]:
-    """The ``uav`` block of a vehicle, every key (what --print-defaults shows)."""
+    """The ``uav`` block of a vehicle, every key (what --print-defaults shows; also ``Uav``'s
+    keyword arguments, so ``Uav(**uav_dict(u))`` is a copy)."""
     out: dict[str, Any] = {key: getattr(uav, key) for key in ("speed", "min_turn_radius", "altitude")}
     out["dynamics"] = str(uav.dynamics)
     out.update({key: getattr(uav, key) for key in ("roll_time_constant", "max_roll_rate_deg_s")})
     return out
+
+
+def with_dynamics(uav: Uav, dynamics: str = DEFAULT_DYNAMICS) -> Uav:
+    """A copy of ``uav`` on the model ``dynamics`` (by default the scenario files',
+    :data:`DEFAULT_DYNAMICS`)."""
+    return Uav(**{**uav_dict(uav), "dynamics": dynamics})
 
 
 def uav_block(data: Mapping[str, Any], default: Uav, extra: Sequence[str] = ()) -> UavBlock:
@@ -158,8 +159,7 @@ def uav_block(data: Mapping[str, Any], default: Uav, extra: Sequence[str] = ()) 
     over ``default`` (its numbers; the model is :data:`DEFAULT_DYNAMICS` unless given); ``extra``
     keys are returned unparsed for the product."""
     found = section(data, "uav", UAV_KEYS | set(extra))
-    uav = Uav(speed=default.speed, min_turn_radius=default.min_turn_radius, altitude=default.altitude,
-              roll_time_constant=default.roll_time_constant, max_roll_rate_deg_s=default.max_roll_rate_deg_s)
+    uav = Uav(**uav_dict(default))
     for key in UAV_NUMBERS:
         if key in found:
             setattr(uav, key, number(f"uav.{key}", found[key]))

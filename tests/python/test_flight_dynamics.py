@@ -153,7 +153,9 @@ def test_dynamics_flag_overrides_the_scenario(tmp_path: Path) -> None:
                      *NO_MEDIA]) == 0
         metrics = json.loads((out / "metrics.json").read_text())
         assert metrics["uav"]["dynamics"] == model
-        assert metrics["smoothness"]["max_roll_rate_deg_s"] >= 0
+        rate = metrics["smoothness"]["max_roll_rate_deg_s"]
+        # The Dubins vehicle's bank jumps where the command does; the roll model's never passes its limit.
+        assert rate > 500.0 if model == "dubins" else rate <= 70.0 * (1 + 1e-9)
 
 
 def test_curve_l1_from_python() -> None:

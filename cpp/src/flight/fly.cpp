@@ -48,8 +48,9 @@ class Flight {
   void record(double t, const OdeVector<N>& y) {
     const Configuration q = as_configuration(y);
     const GuidanceCommand c = guidance_.command(q, t);
-    if constexpr (N == 4) push(t, q, roll_model_.turn_rate(y[3]), y[3], c);
-    else push(t, q, clamp_rate(c.turn_rate), c);
+    const double bank_command = roll_model_.bank_command(clamp_rate(c.turn_rate));
+    if constexpr (N == 4) push(t, q, roll_model_.turn_rate(y[3]), y[3], bank_command, c);
+    else push(t, q, clamp_rate(c.turn_rate), bank_command, bank_command, c);
   }
 
   // After an accepted step: the guidance's stateful logic, then the caller's hook (which may
@@ -87,13 +88,14 @@ class Flight {
     for (std::size_t k = 0; k < steps && !guidance_.done(); ++k) {
       const GuidanceCommand c = guidance_.command(q, t);
       double rate = clamp_rate(c.turn_rate);
+      const double bank_command = roll_model_.bank_command(rate);
       if (roll_) {
         const double bank_now = bank;
-        bank = roll_model_.step(bank, roll_model_.bank_command(rate), dt);
+        bank = roll_model_.step(bank, bank_command, dt);
         rate = roll_model_.turn_rate(bank);
-        push(t, q, rate, bank_now, c);
+        push(t, q, rate, bank_now, bank_command, c);
       } else {
-        push(t, q, rate, c);
+        push(t, q, rate, bank_command, bank_command, c);  // the Dubins vehicle banks at once
       }
       q.psi += rate * dt;
       const Vec2 w = wind_.at(t + 0.5 * dt);
@@ -207,12 +209,10 @@ class Flight {
     out_.target_index.reserve(n);
   }
 
-  // A Dubins sample: the bank is the coordinated bank of the rate applied from here.
-  void push(double t, const Configuration& q, double rate, const GuidanceCommand& c) {
-    push(t, q, rate, coordinated_bank(v_, rate), c);
-  }
-
-  void push(double t, const Configuration& q, double rate, double bank, const GuidanceCommand& c) {
+  // One sample; bank_command is the coordinated bank of the guidance's clamped command (with the
+  // Dubins model also the bank).
+  void push(double t, const Configuration& q, double rate, double bank, double bank_command,
+            const GuidanceCommand& c) {
     const Vec2 w = wind_.at(t);
     out_.t.push_back(t);
     out_.x.push_back(q.x);
@@ -220,7 +220,7 @@ class Flight {
     out_.psi.push_back(q.psi);
     out_.command.push_back(rate);
     out_.bank.push_back(bank);
-    out_.bank_command.push_back(roll_model_.bank_command(clamp_rate(c.turn_rate)));
+    out_.bank_command.push_back(bank_command);
     out_.target_x.push_back(c.target.x());
     out_.target_y.push_back(c.target.y());
     out_.target_index.push_back(c.target_index);

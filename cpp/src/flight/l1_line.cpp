@@ -18,13 +18,22 @@ double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(
 // The signed angle from a to b, positive counter-clockwise.
 double angle_to(const Vec2& a, const Vec2& b) { return std::atan2(cross(a, b), a.dot(b)); }
 
-}  // namespace
-
-L1Line::L1Line(double speed, const L1Gains& gains) : speed_(speed), gains_(gains) {
+// L1 = damping * period * v / pi, after checking v and the gains.
+double l1_distance(double speed, const L1Gains& gains) {
   require_positive(speed, "speed");
   gains.validate();
-  distance_ = gains.damping * gains.period * speed / kPi;
+  return gains.damping * gains.period * speed / kPi;
 }
+
+// The turn rate a / v of the lateral acceleration a = 4 damping^2 v^2 / L1 sin(eta), |eta| <= pi/2.
+double l1_turn_rate(double eta, double speed, double distance, const L1Gains& gains) {
+  return 4.0 * gains.damping * gains.damping * speed / distance * std::sin(std::clamp(eta, -0.5 * kPi, 0.5 * kPi));
+}
+
+}  // namespace
+
+L1Line::L1Line(double speed, const L1Gains& gains)
+    : speed_(speed), distance_(l1_distance(speed, gains)), gains_(gains) {}
 
 double L1Line::turn_rate(const Configuration& q, const Vec2& line_start, const Vec2& target) const {
   const Vec2 p(q.x, q.y);
@@ -50,9 +59,7 @@ double L1Line::turn_rate(const Configuration& q, const Vec2& line_start, const V
       eta = std::asin(sine_capture) + angle_to(velocity, along);
     }
   }
-  eta = std::clamp(eta, -0.5 * kPi, 0.5 * kPi);
-  const double lateral_acceleration = 4.0 * gains_.damping * gains_.damping * speed_ * speed_ / distance_ * std::sin(eta);
-  return lateral_acceleration / speed_;
+  return l1_turn_rate(eta, speed_, distance_, gains_);
 }
 
 namespace {
@@ -67,10 +74,8 @@ double leave_circle(const Vec2& a, const Vec2& d, const Vec2& p, double r) {
 
 }  // namespace
 
-CurveL1::CurveL1(double speed, const std::vector<Vec2>& path, const L1Gains& gains) : speed_(speed), gains_(gains) {
-  require_positive(speed, "speed");
-  gains.validate();
-  distance_ = gains.damping * gains.period * speed / kPi;
+CurveL1::CurveL1(double speed, const std::vector<Vec2>& path, const L1Gains& gains)
+    : speed_(speed), distance_(l1_distance(speed, gains)), gains_(gains) {
   set_path(path);
 }
 
@@ -114,9 +119,8 @@ GuidanceCommand CurveL1::command(const Configuration& state, double) const {
   const Vec2 p(state.x, state.y);
   const Vec2 velocity = speed_ * Vec2(std::cos(state.psi), std::sin(state.psi));
   const Vec2 reference = reference_point(p);
-  const double eta = std::clamp(angle_to(velocity, reference - p), -0.5 * kPi, 0.5 * kPi);
   GuidanceCommand c;
-  c.turn_rate = 4.0 * gains_.damping * gains_.damping * speed_ / distance_ * std::sin(eta);
+  c.turn_rate = l1_turn_rate(angle_to(velocity, reference - p), speed_, distance_, gains_);
   c.target = reference;
   return c;
 }

@@ -1,8 +1,10 @@
 // A follow run: the planner's 1 Hz waypoints flown by the flight layer's waypoint follower.
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "vistrack/error.hpp"
 #include "vistrack/flight.hpp"
@@ -112,17 +114,19 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   const bool curve = options.flight.guidance == LegGuidance::L1;
   const double horizon = 3.0 * options.flight.l1.damping * options.flight.l1.period / kPi + 2.0 * period;
   const auto planned = [&] { return planner.planned_path(run.ticks.back(), horizon, 0.25); };
-  WaypointFollower follower(law, {run.ticks.back().waypoint}, kSwitchAtOnce, /*finish_at_last=*/false);
-  CurveL1 path_follower(uav.speed, planned(), options.flight.l1);
-  FlightGuidance& guidance = curve ? static_cast<FlightGuidance&>(path_follower) : follower;
+  std::optional<WaypointFollower> follower;
+  std::optional<CurveL1> path_follower;
+  if (curve) path_follower.emplace(uav.speed, planned(), options.flight.l1);
+  else follower.emplace(law, std::vector<Vec2>{run.ticks.back().waypoint}, kSwitchAtOnce, false);
+  FlightGuidance& guidance = curve ? static_cast<FlightGuidance&>(*path_follower) : *follower;
 
   // Every update_period: observe, plan, issue the next waypoint (available at once).
   double next_update = t0 + period;
   const auto on_step = [&](double t, const Configuration& q) {
     if (t < next_update - 1e-9 || t >= vehicle.end_time() - 1e-9) return;  // no update once the track ends
     plan(t, Vec2(q.x, q.y), q.psi);
-    if (curve) path_follower.set_path(planned());
-    else follower.add_waypoint(run.ticks.back().waypoint, t);
+    if (curve) path_follower->set_path(planned());
+    else follower->add_waypoint(run.ticks.back().waypoint, t);
     while (next_update <= t + 1e-9) next_update += period;
   };
   FlightOptions flight;

@@ -18,7 +18,7 @@ counter-clockwise from east unless a compass word is given)::
     wind: {east: 0, north: 10, gusts: {seed, intensity, length_scale}}  # the true wind (towards)
     wind_estimate: {east: 0, north: 10}      # what the planner compensates (default: the true wind)
     camera: {fov_deg: 74, max_gimbal_deg: 25, mount: roll}
-    flight: {dt: 0.02, integration: discrete, max_time: 0, guidance: l1, l1_period: 17, l1_damping: 0.75}
+    flight: {dt: 0.02, integration: discrete, max_time: 0, guidance: l1, l1_period: 8, l1_damping: 0.75}
                                   # guidance law5: each 1 s leg by the paper's law (5)
     baseline: {radius: 0, beta: 0.025, k_psi: 20, direction: ccw}   # radius 0: Lemma 6; false: none
     city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude
@@ -42,7 +42,6 @@ from ..flight import Wind
 from ..georeference import Georeference
 from ..io.text import read_yaml_mapping
 from ..scenario_blocks import (
-    DEFAULT_DYNAMICS,
     City,
     Rename,
     camera_block,
@@ -54,6 +53,7 @@ from ..scenario_blocks import (
     uav_dict,
     upgrade,
     wind_block,
+    with_dynamics,
 )
 from ..schema import beta as schema_beta
 from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
@@ -80,18 +80,12 @@ TOP_KEYS = {"description", "georeference", "uav", "vehicle", "follow", "offset",
             "flight", "baseline", "city"}
 # Spellings from before the one scenario schema, still read (city.map: see _old_city_map).
 RENAMES = (Rename("origin", "georeference", origin_to_georeference),)
-# How scenario files fly each 1 s leg unless they say: L1 line tracking (beyond the paper; "law5"
-# flies the paper's law (5), the C++ default).
+# How scenario files fly the plan unless they say: its planned path by L1 guidance (beyond the
+# paper); "law5" flies each 1 s leg by the paper's law (5), the C++ default.
 LEG_GUIDANCE = ("l1", "law5")
 DEFAULT_LEG_GUIDANCE = "l1"
 # The UAV where the file gives none: the C++ follower's (kFollowUav).
 DEFAULT_UAV = default_uav()
-
-def _with_default_dynamics(uav: Uav) -> Uav:
-    """The follower's vehicle flying the scenario files' model (scenario_blocks.DEFAULT_DYNAMICS)."""
-    uav.dynamics = DEFAULT_DYNAMICS
-    return uav
-
 
 CityRoad = City  # the scenario's city block with its road (the name predates the one schema)
 
@@ -102,13 +96,13 @@ class FollowScenario:
 
     vehicle: GroundVehicle
     legs: list[VehicleLeg] = field(default_factory=list)
-    uav: Uav = field(default_factory=lambda: _with_default_dynamics(default_uav()))
+    uav: Uav = field(default_factory=lambda: with_dynamics(default_uav()))  # as a file without a uav block
     parameters: FollowParameters = field(default_factory=FollowParameters)
     offset_schedule: list[tuple[float, float, float]] = field(default_factory=list)
     wind: Wind = field(default_factory=Wind)
     wind_estimate: Optional[tuple[float, float]] = None
     camera: DownwardCamera = field(default_factory=DownwardCamera)
-    flight: FollowFlight = field(default_factory=FollowFlight)
+    flight: FollowFlight = field(default_factory=lambda: FollowFlight(guidance=DEFAULT_LEG_GUIDANCE))
     baseline_radius: Optional[float] = None  # None: Lemma 6 (vt.follow.baseline_radius)
     baseline_control: Optional[Control] = field(default_factory=Control)  # None: no baseline
     city: Optional[City] = None

@@ -30,8 +30,9 @@ from .._core import (
     constant_radius_plan,
     simulate,
 )
+from ..flight import flight_smoothness
 from ..progress import Stages
-from ..scenario_blocks import uav_dict
+from ..scenario_blocks import uav_dict, with_dynamics
 from .metrics import locus_summary, simulation_metrics
 from .result import RunResult
 from .scenario import Scenario
@@ -104,9 +105,7 @@ def compute(scenario: Scenario, *, quiet: bool = True, cache_dir: str | Path | N
 
 def other_model(uav: Uav) -> Uav:
     """The same vehicle on the other model (roll <-> dubins)."""
-    return Uav(speed=uav.speed, min_turn_radius=uav.min_turn_radius, altitude=uav.altitude,
-               dynamics="dubins" if str(uav.dynamics) == "roll" else "roll",
-               roll_time_constant=uav.roll_time_constant, max_roll_rate_deg_s=uav.max_roll_rate_deg_s)
+    return with_dynamics(uav, "dubins" if str(uav.dynamics) == "roll" else "roll")
 
 
 def closed_loop(plan: AnyPlan, x0: np.ndarray, uav: Uav, control: Control, options: SimulationOptions,
@@ -158,9 +157,9 @@ def _metrics(result: RunResult) -> dict[str, Any]:
         },
         "simulation": simulation_metrics(result.simulation),
         "other_model": None if result.other_model is None else {
-            "dynamics": "dubins" if str(s.uav.dynamics) == "roll" else "roll",
+            "dynamics": str(other_model(s.uav).dynamics),
             "visibility_fraction": result.other_model.visibility_fraction,
-            "smoothness": simulation_metrics(result.other_model)["smoothness"]},
+            "smoothness": flight_smoothness(result.other_model.t, result.other_model.bank).as_dict()},
         "baselines": {f"{r:g}": {"radius_m": r, "visibility_fraction": b.visibility_fraction}
                       for r, b in result.baselines.items()},
         "timings_s": {k: round(v, 4) for k, v in result.timings.items()},

@@ -36,12 +36,12 @@ from ..scenario_blocks import (
     City,
     Rename,
     city_block,
-    default_uav,
     georeference_block,
     origin_to_georeference,
     uav_block,
     uav_dict,
     upgrade,
+    with_dynamics,
 )
 from ..schema import (
     apply_checks,
@@ -104,7 +104,7 @@ class Scenario:
 
     environment: City = field(default_factory=City)
     poi: PoiSpec = field(default_factory=PoiSpec)
-    uav: Uav = field(default_factory=default_uav)  # the roll model (scenario_blocks.DEFAULT_DYNAMICS)
+    uav: Uav = field(default_factory=lambda: with_dynamics(Uav()))  # the scenario files' model (roll)
     start: tuple[float, float, float] | None = None  # UAV start (x, y, psi); None: on the orbit
     sensor: Sensor = field(default_factory=Sensor)
     planning: Planning = field(default_factory=Planning)
@@ -151,7 +151,7 @@ class Scenario:
         scenario.origin = georeference_block(data)
         scenario.environment = city_block(data, base) or City()
         scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
-        uav = uav_block(data, default_uav(), extra=("start",))
+        uav = uav_block(data, Uav(), extra=("start",))
         scenario.uav, scenario.start = uav.uav, _start(uav.extra)
         scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(section(
