@@ -173,15 +173,18 @@ void bind_orbit(py::module_& m) {
            py::arg("t"), "The ceiling at every element of t.");
   m.def(
       "smooth_radius",
-      [](const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing, int passes) {
+      [](const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing, int passes,
+         double smoothing) {
         py::gil_scoped_release release;
-        return smooth_radius(ceiling, limits, knot_spacing, passes);
+        return smooth_radius(ceiling, limits, knot_spacing, passes, smoothing);
       },
       py::arg("ceiling"), py::arg("limits"), py::arg("knot_spacing") = 0.0, py::arg("passes") = 2,
-      "The C1 quadratic spline on uniform knots (knot_spacing; <= 0: picked from the d2R/dt2 bound) with the "
-      "largest integral of R(t) under the ceiling that obeys `limits`: a banded linear program solved by a "
-      "log-barrier interior point method, re-solved passes - 1 times with the d2R/dt2 budget of the radii "
-      "reached. A RadiusProfile.");
+      py::arg("smoothing") = Planning{}.radius_smoothing,
+      "The C1 quadratic spline on uniform knots (knot_spacing; <= 0: picked from the d2R/dt2 bound) under the "
+      "ceiling that obeys `limits` with the largest integral of R(t) less the d2R/dt2 penalty "
+      "(smoothing / 2) (top / A^2) integral of (d2R/dt2)^2 (top: the ceiling's largest value, A: the d2R/dt2 "
+      "bound there; smoothing 0: the largest integral, a banded linear program): a log-barrier interior "
+      "point method, re-solved passes - 1 times with the d2R/dt2 budget of the radii reached. A RadiusProfile.");
   m.def("smooth_radius_violation", &smooth_radius_violation, py::arg("profile"), py::arg("limits"),
         "Why a smooth RadiusProfile breaks `limits` (|dR/dt| at a knot, |d2R/dt2| on a segment against the bound at "
         "its smallest R), or '' when it keeps them all.");

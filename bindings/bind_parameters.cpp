@@ -75,10 +75,11 @@ void bind_parameters(py::module_& m) {
   py::class_<Planning>(m, "Planning", "Adaptive placement of visibility volumes (section IV.B).")
       .def(py::init([](double spacing, double cutoff, double resolution_deg, double min_spacing,
                        int max_depth, double rate_margin, const std::string& locus, double tracking_margin,
-                       double check_spacing, double check_min_spacing, double turn_share, std::size_t max_volumes) {
+                       double check_spacing, double check_min_spacing, double turn_share, std::size_t max_volumes,
+                       double radius_smoothing) {
              return make_validated(Planning{spacing, cutoff, resolution_deg, min_spacing, max_depth, rate_margin,
                                             max_volumes, from_name<Locus>(locus), tracking_margin, check_spacing,
-                                            check_min_spacing, turn_share});
+                                            check_min_spacing, turn_share, radius_smoothing});
            }),
            py::kw_only(), py::arg("spacing") = planning_defaults.spacing,
            py::arg("cutoff") = planning_defaults.cutoff,
@@ -92,10 +93,11 @@ void bind_parameters(py::module_& m) {
            py::arg("check_min_spacing") = planning_defaults.check_min_spacing,
            py::arg("turn_share") = planning_defaults.turn_share,
            py::arg("max_volumes") = planning_defaults.max_volumes,
+           py::arg("radius_smoothing") = planning_defaults.radius_smoothing,
            "spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin; "
            "locus 'smooth' (checked between samples, C1, the default) or 'paper' (Algorithm 1, piecewise linear); "
            "tracking_margin (m), check_spacing and check_min_spacing (m), turn_share (smooth locus only); "
-           "max_volumes (the largest worst-case VV count a plan may ask for).")
+           "max_volumes (the largest worst-case VV count a plan may ask for); radius_smoothing (smooth locus only).")
       .def_readwrite("spacing", &Planning::spacing, "initial spacing of VVs along the path, m")
       .def_readwrite("cutoff", &Planning::cutoff, "d_cutoff, m^3")
       .def_readwrite("resolution_deg", &Planning::resolution_deg, "VV ray grid step, degrees")
@@ -119,6 +121,9 @@ void bind_parameters(py::module_& m) {
                      "smooth locus: the check halves intervals where R(t) touches its bound down to this (m)")
       .def_readwrite("turn_share", &Planning::turn_share,
                      "smooth locus: share of the turn rate Lemma 6 leaves free that d2R/dt2 may use, in (0, 1)")
+      .def_readwrite("radius_smoothing", &Planning::radius_smoothing,
+                     "smooth locus, beyond the paper: weight of the d2R/dt2 penalty (holding the largest d2R/dt2 "
+                     "costs radius_smoothing / 2 of the ceiling's top radius); 0 = the largest-area R(t)")
       .def("validate", &Planning::validate, "Raise VistrackError naming the first invalid field.");
 
   const Control control_defaults;

@@ -89,7 +89,7 @@ def test_smooth_radius_is_the_optimum_highs_finds(seed: int) -> None:
     ceiling = vt.Ceiling(list(breaks), list(starts), list(ends))
     limits = vt.SmoothRadiusLimits(uav_speed=20.0, poi_speed=5.0, min_turn_radius=50.0, max_rate=15.0, turn_share=0.5)
     h = 0.25
-    ours = vt.smooth_radius(ceiling, limits, knot_spacing=h, passes=1)
+    ours = vt.smooth_radius(ceiling, limits, knot_spacing=h, passes=1, smoothing=0.0)
     a, b, w, h = lp_of(ceiling, limits, h)
     c = controls_of(ours, h)
     assert (a @ c <= b + 1e-9).all()  # strictly inside, as interior point iterates are
@@ -100,10 +100,77 @@ def test_smooth_radius_is_the_optimum_highs_finds(seed: int) -> None:
     assert -best.fun - w @ c == pytest.approx(0.0, abs=0.012 * duration)
     assert vt.smooth_radius_violation(ours, limits) == ""
     # A second pass may only raise R (its d2R/dt2 budget comes from the radii reached).
-    again = vt.smooth_radius(ceiling, limits, knot_spacing=h, passes=2)
+    again = vt.smooth_radius(ceiling, limits, knot_spacing=h, passes=2, smoothing=0.0)
     t = np.linspace(breaks[0], breaks[-1], 2001)
     assert (again.radius_at(t) >= ours.radius_at(t) - 2e-3 * 200).all()
     assert (again.radius_at(t) <= ceiling.at(t) + 1e-9).all()
+
+
+def penalty_of(ceiling: vt.Ceiling, limits: vt.SmoothRadiusLimits, h: float, n: int, smoothing: float) -> np.ndarray:
+    """The documented d2R/dt2 penalty as a matrix P with penalty = 1/2 |P c|^2: the integral of
+    (d2R/dt2)^2 weighted by smoothing top / A^2 (top: the ceiling's largest value, A: the d2R/dt2
+    bound there)."""
+    values = np.r_[ceiling.starts, ceiling.ends]
+    v, vg, rmin = limits.uav_speed, limits.poi_speed, limits.min_turn_radius
+    a_top = limits.max_acceleration(max(values.max(), 1.05 * rmin * (1 + vg / v) ** 2), 0.0)
+    top = max(1.0, abs(values.min()), abs(values.max()))
+    p = np.zeros((n, n + 2))
+    for i in range(n):
+        p[i, i:i + 3] = np.array([1.0, -2.0, 1.0]) / h**2 * math.sqrt(h)
+    return p * math.sqrt(smoothing * top / a_top**2)
+
+
+@pytest.mark.parametrize("seed", [4, 5])
+def test_smoothed_radius_is_the_optimum_of_its_quadratic_program(seed: int) -> None:
+    """With the d2R/dt2 penalty: the same rows, the objective less 1/2 |P c|^2, against scipy's
+    trust-region interior point method from HiGHS's (feasible) linear-program optimum."""
+    scipy_optimize = pytest.importorskip("scipy.optimize")
+    rng = np.random.default_rng(seed)
+    breaks = np.cumsum(np.r_[0.0, rng.uniform(0.5, 3.0, 6)])
+    starts = rng.uniform(90.0, 200.0, 6)
+    ceiling = vt.Ceiling(list(breaks), list(starts), list(starts))
+    limits = vt.SmoothRadiusLimits(uav_speed=20.0, poi_speed=5.0, min_turn_radius=50.0, max_rate=15.0, turn_share=0.5)
+    smoothing = vt.Planning().radius_smoothing
+    assert smoothing > 0.0
+    ours = vt.smooth_radius(ceiling, limits, knot_spacing=0.25, passes=1, smoothing=smoothing)
+    a, b, w, h = lp_of(ceiling, limits, 0.25)
+    p = penalty_of(ceiling, limits, h, len(w) - 2, smoothing)
+    c = controls_of(ours, h)
+    assert (a @ c <= b + 1e-9).all()
+
+    def objective(x: np.ndarray) -> float:
+        return float(-w @ x + 0.5 * np.sum((p @ x) ** 2))
+
+    start = scipy_optimize.linprog(-w, A_ub=a, b_ub=b, bounds=(None, None), method="highs").x
+    best = scipy_optimize.minimize(
+        objective, start, jac=lambda x: -w + p.T @ (p @ x), hess=lambda x: p.T @ p, method="trust-constr",
+        constraints=[scipy_optimize.LinearConstraint(a, -np.inf, b)], options={"gtol": 1e-10, "maxiter": 5000})
+    assert (a @ best.x <= b + 1e-6).all()
+    duration = breaks[-1] - breaks[0]
+    # Within the barrier's duality gap (the mean of R within about 1 cm): neither method beats the other.
+    assert objective(c) <= objective(best.x) + 0.012 * duration
+    assert objective(best.x) <= objective(c) + 0.012 * duration
+    # The penalty is what it claims: without it the same rows give a larger integral of R and more
+    # d2R/dt2 (the zig-zag it removes).
+    plain = controls_of(vt.smooth_radius(ceiling, limits, knot_spacing=0.25, passes=1, smoothing=0.0), h)
+    assert w @ plain >= w @ c - 1e-6 * duration
+    assert np.sum((p @ plain) ** 2) > np.sum((p @ c) ** 2)
+
+
+def test_smoothing_removes_the_zig_zag_of_the_largest_area_radius() -> None:
+    """A flat ceiling leaves the largest-area R free to alternate dR/dt at every knot (the same
+    integral); the penalty picks the straight one: d2R/dt2 nearly 0 away from the ends."""
+    ceiling = vt.Ceiling([0.0, 20.0], [150.0], [150.0])
+    limits = vt.SmoothRadiusLimits(uav_speed=20.0, poi_speed=5.0, min_turn_radius=50.0, max_rate=15.0)
+    smooth = vt.smooth_radius(ceiling, limits, smoothing=vt.Planning().radius_smoothing)
+    rates = np.asarray(smooth.rates)
+    middle = rates[len(rates) // 4: -len(rates) // 4]
+    assert np.abs(middle).max() < 1e-3
+    assert np.asarray(smooth.radii).min() > 150.0 - 0.1
+    with pytest.raises(vt.VistrackError, match="smoothing"):
+        vt.smooth_radius(ceiling, limits, smoothing=-1.0)
+    with pytest.raises(vt.VistrackError, match="planning.radius_smoothing"):
+        vt.Planning(radius_smoothing=float("nan"))
 
 
 def test_radius_at_is_what_the_closed_loop_follows() -> None:

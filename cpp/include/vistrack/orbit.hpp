@@ -159,14 +159,17 @@ struct Ceiling {
 
 // The largest smooth R(t) under a ceiling: of the C1 quadratic splines on uniform knots over
 // [breaks.front(), breaks.back()] that obey `limits` and stay under the ceiling, the one with the
-// largest integral of R, by a log-barrier interior point method on the spline's control points (a
+// largest integral of R (less the penalty below), by a log-barrier interior point method on the spline's control points (a
 // banded linear program, solved to 1 cm of the optimal mean R), re-solved passes - 1 times with
 // each segment's R_lo raised to the previous solution (so the d2R/dt2 bound of larger radii is
 // used). knot_spacing <= 0 picks one from the d2R/dt2 bound.
 // A ceiling under r_min (1 + v_g/v)^2 gives a profile that the caller must report infeasible (R
 // there is below Lemma 6's bound).
+// smoothing > 0 (Planning::radius_smoothing) subtracts the penalty (smoothing / 2) (top / A^2)
+// integral of (d2R/dt2)^2 from the integral (top: the ceiling's largest value; A: the d2R/dt2 bound
+// there): a banded quadratic program, solved by the same method.
 RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing = 0.0,
-                            int passes = 2);
+                            int passes = 2, double smoothing = Planning{}.radius_smoothing);
 // Why a smooth profile breaks `limits` (|dR/dt| at a knot, or |d2R/dt2| on a segment against the
 // bound at the segment's smallest R), or "" when it keeps them all.
 std::string smooth_radius_violation(const RadiusProfile& profile, const SmoothRadiusLimits& limits);

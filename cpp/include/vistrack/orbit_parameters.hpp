@@ -60,6 +60,13 @@ struct Planning {
   // Share of the turn rate that Lemma 6 leaves free on the orbit, v / r_min - v (1 + v_g/v)^2 / R,
   // that the feed-forward of d2R/dt2 may use; the rest stays for the feedback terms of (86).
   double turn_share = 0.5;
+  // Beyond the paper: the smooth locus maximises the mean R less a d2R/dt2 penalty, so that it does
+  // not zig-zag where the ceiling leaves the largest-area R free (dR/dt flipping sign every knot,
+  // d2R/dt2 swinging +-3 m/s^2 every 0.19 s on the demo: its feed-forward made a roll-limited
+  // aircraft reverse its bank 1.15 times a second). Holding the largest d2R/dt2 the turn budget
+  // allows costs radius_smoothing / 2 of the ceiling's top radius; 0 = the largest-area R (the
+  // plain linear program). 0.3: bench/vehicle_models.py and docs/vehicle.md.
+  double radius_smoothing = 0.3;
   void validate() const;
 };
 

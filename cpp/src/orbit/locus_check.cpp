@@ -159,7 +159,7 @@ void smooth_locus(VisibilityOrbitPlan& plan, const CheckProbe& probe) {
       }
     }
     // One pass while refining; the last round adds the pass with the larger d2R/dt2 budgets.
-    profile = smooth_radius(ceiling, limits, 0.0, 1);
+    profile = smooth_radius(ceiling, limits, 0.0, 1, planning.radius_smoothing);
     check.rounds = round;
     if (!refine || round >= kMaxRounds) break;
     std::vector<double> middles;
@@ -172,7 +172,7 @@ void smooth_locus(VisibilityOrbitPlan& plan, const CheckProbe& probe) {
     if (middles.empty()) break;
     measure(middles);
   }
-  profile = smooth_radius(ceiling, limits, 0.0, 2);
+  profile = smooth_radius(ceiling, limits, 0.0, 2, planning.radius_smoothing);
 
   // The check's record.
   const RadiusProfile paper{samples.times, plan.orbits.radii, {}};

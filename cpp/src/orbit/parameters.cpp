@@ -28,6 +28,7 @@ void Planning::validate() const {
                        "must not exceed planning.check_spacing = " + detail::to_text(check_spacing));
   if (!(turn_share > 0.0 && turn_share < 1.0))
     detail::fail_field("planning.turn_share", turn_share, "must be in (0, 1) (a share of the free turn rate)");
+  require_in_range(radius_smoothing, 0.0, 1e3, "", "planning.radius_smoothing");
 }
 
 }  // namespace vistrack

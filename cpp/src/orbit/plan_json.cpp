@@ -109,6 +109,7 @@ std::string to_json(const VisibilityOrbitPlan& plan) {
                      {"locus", to_string(plan.planning.locus)}, {"tracking_margin", plan.planning.tracking_margin},
                      {"check_spacing", plan.planning.check_spacing},
                      {"check_min_spacing", plan.planning.check_min_spacing}, {"turn_share", plan.planning.turn_share},
+                     {"radius_smoothing", plan.planning.radius_smoothing},
                      {"max_volumes", plan.planning.max_volumes}};
   out["orbit_radii"] = plan.orbits.radii;  // Algorithm 1's, at the samples (radii: the reference there)
   const Discretization& samples = plan.samples;
@@ -187,6 +188,8 @@ VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
       plan.planning.check_spacing = p.value("check_spacing", Planning{}.check_spacing);
       plan.planning.check_min_spacing = p.value("check_min_spacing", Planning{}.check_min_spacing);
       plan.planning.turn_share = p.value("turn_share", Planning{}.turn_share);
+      // Files before the penalty hold the largest-area locus.
+      plan.planning.radius_smoothing = p.value("radius_smoothing", 0.0);
       plan.planning.validate();
     }
     Discretization& samples = plan.samples;

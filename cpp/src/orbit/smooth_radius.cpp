@@ -1,7 +1,8 @@
 // A smooth reference R(t) under a ceiling (beyond the paper): of the C1 quadratic splines that the
 // vehicle can fly (Lemma 5's rate bound, a d2R/dt2 bound from the turn-rate limit) and that stay
 // under the ceiling, the one with the largest integral of R. A banded linear program on the
-// spline's control points, solved by a log-barrier interior point method with banded Newton steps.
+// spline's control points, solved by a log-barrier interior point method with banded Newton steps;
+// with a penalty on d2R/dt2 (Planning::radius_smoothing) a banded quadratic program, the same way.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -129,12 +130,13 @@ double slack(const Row& row, const std::vector<double>& c) {
   return s;
 }
 
-// Maximises w . c subject to rows, from a strictly feasible c, by the log-barrier method: each
-// centring minimises -t w.c - sum log(slack) by Newton steps with a backtracking (Armijo) line
+// Maximises w . c - (penalty_weight / 2) sum over penalties of (a . c)^2 subject to rows, from a
+// strictly feasible c, by the log-barrier method: each centring minimises
+// t (-w.c + penalty) - sum log(slack) by Newton steps with a backtracking (Armijo) line
 // search that keeps every slack positive, and t grows until the duality gap rows / t is below
 // gap. c is updated in place and stays strictly feasible.
-void barrier_lp(const std::vector<Row>& rows, const std::vector<double>& w, std::vector<double>& c, double t,
-                double gap) {
+void barrier_lp(const std::vector<Row>& rows, const std::vector<double>& w, const std::vector<Row>& penalties,
+                double penalty_weight, std::vector<double>& c, double t, double gap) {
   const std::size_t n = c.size();
   const double m = static_cast<double>(rows.size());
   std::vector<double> grad(n), step(n), trial(n), slacks(rows.size()), moves(rows.size());
@@ -142,6 +144,13 @@ void barrier_lp(const std::vector<Row>& rows, const std::vector<double>& w, std:
     for (int newton = 0; newton < 100; ++newton) {
       Band hessian(n);
       for (std::size_t i = 0; i < n; ++i) grad[i] = -t * w[i];
+      // The quadratic term t (weight / 2) sum (a . c)^2 over the penalty rows.
+      for (const Row& row : penalties) {
+        const double value = -slack(row, c);  // b = 0: a . c
+        for (std::size_t p = 0; p < 3; ++p)
+          if (row.a[p] != 0.0) grad[row.first + p] += t * penalty_weight * value * row.a[p];
+        hessian.add(row, t * penalty_weight);
+      }
       for (std::size_t k = 0; k < rows.size(); ++k) {
         const Row& row = rows[k];
         const double s = slacks[k] = slack(row, c);
@@ -171,10 +180,23 @@ void barrier_lp(const std::vector<Row>& rows, const std::vector<double>& w, std:
         moves[k] = move / slacks[k];
         if (moves[k] > 0.0) alpha_max = std::min(alpha_max, 1.0 / moves[k]);
       }
+      // Along the step each penalty row's value a . c changes by a . step.
+      double quadratic_first = 0.0, quadratic_second = 0.0;
+      for (const Row& row : penalties) {
+        double value = 0.0, move = 0.0;
+        for (std::size_t p = 0; p < 3; ++p) {
+          value += row.a[p] * c[row.first + p];
+          move += row.a[p] * step[row.first + p];
+        }
+        quadratic_first += value * move;
+        quadratic_second += move * move;
+      }
+      quadratic_first *= t * penalty_weight;
+      quadratic_second *= 0.5 * t * penalty_weight;
       double alpha = std::min(1.0, 0.99 * alpha_max);
       bool accepted = false;
       for (int k = 0; k < 60 && !accepted; ++k, alpha *= 0.5) {
-        double change = alpha * linear;
+        double change = alpha * (linear + quadratic_first) + alpha * alpha * quadratic_second;
         for (double r : moves) change -= std::log1p(-alpha * r);
         accepted = change <= -0.25 * alpha * decrement;
         if (accepted)
@@ -210,7 +232,8 @@ std::vector<Chord> rate_chords(const SmoothRadiusLimits& limits) {
 
 }  // namespace
 
-RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing, int passes) {
+RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& limits, double knot_spacing, int passes,
+                            double smoothing) {
   if (passes < 1) detail::fail_field("passes", passes, "must be at least 1");
   limits.validate();
   ceiling.validate();
@@ -263,6 +286,18 @@ RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& li
     w[i + 2] += h / 6.0;
   }
 
+  // The d2R/dt2 penalty: one row per interval, d2R/dt2 sqrt(h) (its square is the integral of
+  // (d2R/dt2)^2 there), weighted so that d2R/dt2 = a_top held for a unit time costs smoothing / 2 of
+  // the top radius (scale) in the integral of R; the weight scales as length / acceleration^2, so
+  // the same smoothing means the same on any city and vehicle.
+  if (!(smoothing >= 0.0 && smoothing <= 1e3)) detail::fail_field("smoothing", smoothing, "must be in [0, 1e3]");
+  const double weight = a_top > 0.0 ? smoothing * scale / (a_top * a_top) : 0.0;
+  std::vector<Row> penalties;
+  if (weight > 0.0)
+    for (std::size_t i = 0; i < n; ++i) {
+      const double row_scale = std::sqrt(h) / (h * h);
+      penalties.push_back(Row{i, {row_scale, -2.0 * row_scale, row_scale}, 0.0});
+    }
   // Start strictly inside: constant R below every ceiling, dR/dt = d2R/dt2 = 0.
   const double delta = 1e-3 * scale;
   std::vector<double> c(controls, c_min - bulge - delta);
@@ -292,7 +327,7 @@ RadiusProfile smooth_radius(const Ceiling& ceiling, const SmoothRadiusLimits& li
       rows.push_back(Row{i, {0.0, -0.5, -0.5}, -floor[i]});  // R(knot i+1) >= floor
     }
     // Duality gap: the mean of R within 1 cm of the optimum.
-    barrier_lp(rows, w, c, t_barrier, 1e-2 * (t1 - t0));
+    barrier_lp(rows, w, penalties, weight, c, t_barrier, 1e-2 * (t1 - t0));
     t_barrier = static_cast<double>(rows.size()) / (1.0 * (t1 - t0));  // warm start near the optimum
     // Raise each interval's floor to what R reached, so the next pass may use the larger budget.
     for (std::size_t i = 0; i < n; ++i)

@@ -162,9 +162,9 @@ class Planning:
     """
     Adaptive placement of visibility volumes (section IV.B).
     """
-    def __init__(self, *, spacing: typing.SupportsFloat | typing.SupportsIndex = 20.0, cutoff: typing.SupportsFloat | typing.SupportsIndex = 20000000.0, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_depth: typing.SupportsInt | typing.SupportsIndex = 8, rate_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0, locus: str = 'smooth', tracking_margin: typing.SupportsFloat | typing.SupportsIndex = 1.0, check_spacing: typing.SupportsFloat | typing.SupportsIndex = 10.0, check_min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, turn_share: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_volumes: typing.SupportsInt | typing.SupportsIndex = 20000) -> None:
+    def __init__(self, *, spacing: typing.SupportsFloat | typing.SupportsIndex = 20.0, cutoff: typing.SupportsFloat | typing.SupportsIndex = 20000000.0, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, max_depth: typing.SupportsInt | typing.SupportsIndex = 8, rate_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0, locus: str = 'smooth', tracking_margin: typing.SupportsFloat | typing.SupportsIndex = 1.0, check_spacing: typing.SupportsFloat | typing.SupportsIndex = 10.0, check_min_spacing: typing.SupportsFloat | typing.SupportsIndex = 1.0, turn_share: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_volumes: typing.SupportsInt | typing.SupportsIndex = 20000, radius_smoothing: typing.SupportsFloat | typing.SupportsIndex = 0.3) -> None:
         """
-        spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin; locus 'smooth' (checked between samples, C1, the default) or 'paper' (Algorithm 1, piecewise linear); tracking_margin (m), check_spacing and check_min_spacing (m), turn_share (smooth locus only); max_volumes (the largest worst-case VV count a plan may ask for).
+        spacing (m), cutoff d_cutoff (m^3), resolution_deg, min_spacing (m), max_depth, rate_margin; locus 'smooth' (checked between samples, C1, the default) or 'paper' (Algorithm 1, piecewise linear); tracking_margin (m), check_spacing and check_min_spacing (m), turn_share (smooth locus only); max_volumes (the largest worst-case VV count a plan may ask for); radius_smoothing (smooth locus only).
         """
     def validate(self) -> None:
         """
@@ -225,6 +225,14 @@ class Planning:
         """
     @min_spacing.setter
     def min_spacing(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def radius_smoothing(self) -> float:
+        """
+        smooth locus, beyond the paper: weight of the d2R/dt2 penalty (holding the largest d2R/dt2 costs radius_smoothing / 2 of the ceiling's top radius); 0 = the largest-area R(t)
+        """
+    @radius_smoothing.setter
+    def radius_smoothing(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def rate_margin(self) -> float:
@@ -1835,9 +1843,9 @@ def slice_mesh(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64,
     """
     Polygons (with holes) where the plane z = altitude cuts a closed mesh (CGAL Polygon_mesh_slicer).
     """
-def smooth_radius(ceiling: Ceiling, limits: SmoothRadiusLimits, knot_spacing: typing.SupportsFloat | typing.SupportsIndex = 0.0, passes: typing.SupportsInt | typing.SupportsIndex = 2) -> RadiusProfile:
+def smooth_radius(ceiling: Ceiling, limits: SmoothRadiusLimits, knot_spacing: typing.SupportsFloat | typing.SupportsIndex = 0.0, passes: typing.SupportsInt | typing.SupportsIndex = 2, smoothing: typing.SupportsFloat | typing.SupportsIndex = 0.3) -> RadiusProfile:
     """
-    The C1 quadratic spline on uniform knots (knot_spacing; <= 0: picked from the d2R/dt2 bound) with the largest integral of R(t) under the ceiling that obeys `limits`: a banded linear program solved by a log-barrier interior point method, re-solved passes - 1 times with the d2R/dt2 budget of the radii reached. A RadiusProfile.
+    The C1 quadratic spline on uniform knots (knot_spacing; <= 0: picked from the d2R/dt2 bound) under the ceiling that obeys `limits` with the largest integral of R(t) less the d2R/dt2 penalty (smoothing / 2) (top / A^2) integral of (d2R/dt2)^2 (top: the ceiling's largest value, A: the d2R/dt2 bound there; smoothing 0: the largest integral, a banded linear program): a log-barrier interior point method, re-solved passes - 1 times with the d2R/dt2 budget of the radii reached. A RadiusProfile.
     """
 def smooth_radius_violation(profile: RadiusProfile, limits: SmoothRadiusLimits) -> str:
     """

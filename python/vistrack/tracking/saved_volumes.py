@@ -83,5 +83,5 @@ def plan_from_volumes(folder: str | Path, poi: _core.PoiPath, uav: _core.Uav,
                               resolution_deg=360.0 / volumes[0].grid.num_azimuth, rate_margin=base.rate_margin,
                               locus=base.locus, tracking_margin=base.tracking_margin,
                               check_spacing=base.check_spacing, check_min_spacing=base.check_min_spacing,
-                              turn_share=base.turn_share)
+                              turn_share=base.turn_share, radius_smoothing=base.radius_smoothing)
     return _core.plan_on_volumes(poi, uav, recorded, arc_lengths, volumes)

@@ -157,7 +157,7 @@ class Scenario:
         scenario.planning = _planning(section(
             data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin",
                                "locus", "tracking_margin", "check_spacing", "check_min_spacing", "turn_share",
-                               "max_volumes"}))
+                               "radius_smoothing", "max_volumes"}))
         scenario.control = _control(section(data, "control", {"beta", "k_psi", "direction"}))
         scenario.simulation = _simulation(section(
             data, "simulation", {"rtol", "atol", "max_step", "output_step"}))
@@ -201,6 +201,7 @@ class Scenario:
                          "check_spacing": self.planning.check_spacing,
                          "check_min_spacing": self.planning.check_min_spacing,
                          "turn_share": self.planning.turn_share,
+                         "radius_smoothing": self.planning.radius_smoothing,
                          "max_volumes": self.planning.max_volumes},
             "control": {"beta": self.control.beta, "k_psi": self.control.k_psi,
                         "direction": self.control.direction},
@@ -278,7 +279,7 @@ def _planning(section: dict[str, Any]) -> Planning:
         return value
 
     numbers = ("spacing", "cutoff", "resolution_deg", "min_spacing", "rate_margin", "tracking_margin", "check_spacing",
-               "check_min_spacing", "turn_share")
+               "check_min_spacing", "turn_share", "radius_smoothing")
     return apply_checks(Planning(), section, "planning", {
         **dict.fromkeys(numbers, number), "locus": locus,
         "max_depth": lambda k, v: integer(k, v, 0, 30), "max_volumes": lambda k, v: integer(k, v, 1, 10**12)})
