@@ -3,7 +3,7 @@
 model; the follow legs by L1 line tracking), with their camera or visibility figures and how
 smoothly they bank (roll reversals per second with a 1-degree deadband, largest roll rate).
 
-    VISTRACK_BUILD_DIR=build/dev python3 bench/vehicle_models.py [--no-tracking] [--no-follow]
+    VISTRACK_BUILD_DIR=build/dev python3 bench/vehicle_models.py [--no-tracking] [--no-follow] [--no-waypoints]
         [--tracking demo campus paper_slow paper_small]
 
 Prints markdown tables (docs/vehicle.md quotes them).
@@ -116,10 +116,37 @@ def loiter_table() -> None:
               f"{smooth['roll_reversals_per_s']:.2f} | {smooth['max_roll_rate_deg_s']:.0f} |")
 
 
+def waypoint_table() -> None:
+    """The waypoint paper's route at 75 m per unit (examples/waypoints_metres.csv) flown by the
+    default vehicle (20 m/s, R 50 m): each method with the law (5) and with L1 (8 s), on both models,
+    in calm air and in a wind of 0.1 v from the south (the air moving north)."""
+    from vistrack import waypoint_nav as wn
+    from vistrack.io import read_route
+
+    route = read_route(REPO / "examples" / "waypoints_metres.csv")
+    uav = vt.Uav()
+    R, v = uav.min_turn_radius, uav.speed
+    print("| flight | wind (m/s) | vehicle, legs | max miss (R) | all reached | swirls | time (s) | "
+          "roll reversals /s | max roll rate (deg/s) |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for method, radius in (("dwn", None), ("wn", 0.1 * R), ("wn", R)):
+        for north in (0.0, 0.1 * v):
+            for dynamics, guidance in MODELS:
+                f = wn.fly(route, method=method, waypoint_radius=radius, turn_radius=R, speed=v, dynamics=dynamics,
+                           guidance=guidance, gains=vt.flight.paper_gains(R), l1_period=8.0,
+                           wind=vt.flight.Wind(north=north))
+                # The flight stops at the last waypoint by construction: the misses before it.
+                miss = float(np.max(f.miss_distances[:-1])) / R
+                print(f"| {f.label} | {north:g} | {dynamics}, {guidance} | {miss:.3f} | "
+                      f"{'yes' if f.all_reached else 'no'} | {f.swirls} | {f.duration:.1f} | "
+                      f"{smooth(np.asarray(f.flight.t), np.asarray(f.flight.bank))} |")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--no-tracking", action="store_true")
     parser.add_argument("--no-follow", action="store_true")
+    parser.add_argument("--no-waypoints", action="store_true")
     parser.add_argument("--tracking", nargs="+", default=["demo", "campus", "paper_slow", "paper_small"],
                         choices=["demo", "campus", "paper_slow", "paper_small"])
     args = parser.parse_args()
@@ -130,6 +157,9 @@ def main() -> None:
         print()
     if not args.no_follow:
         loiter_table()
+        print()
+    if not args.no_waypoints:
+        waypoint_table()
         print()
     if not args.no_tracking:
         tracking_table(args.tracking)

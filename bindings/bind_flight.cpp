@@ -136,6 +136,16 @@ void bind_flight(py::module_& parent) {
       .def_readonly("turn", &LineFeedbackTerms::turn, "psi_turn, clamped to +-psi_max, rad")
       .def_readonly("saturated", &LineFeedbackTerms::saturated, "whether the clamp acted");
 
+  m.def(
+      "paper_gains",
+      [](double turn_radius) {
+        const LineFeedbackGains gains = LineFeedbackGains::for_turn_radius(turn_radius);
+        return std::make_pair(gains.g, gains.h);
+      },
+      py::arg("turn_radius"),
+      "The law (5)'s gains (g, h) for turn radius R: the paper's (0.1, 5.25), given for its R = 0.7, scaled by "
+      "0.7 / R (both multiply lengths).");
+
   py::class_<LineFeedback>(m, "LineFeedback",
                            "The paper's feedback law (5): psi_turn = clamp(phi_T + |g s + h s_dot dt| sign(phi_T), "
                            "+-v dt / R) towards the line whose end is the target; turn rate psi_turn / dt.")

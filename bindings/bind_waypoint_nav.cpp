@@ -29,9 +29,25 @@ FuelWeights fuel_weights(const Weights& w) { return {w.first, w.second}; }
 WaypointNavOptions navigation_options(NavigationMethod method, double turn_radius, double speed, double dt,
                                       std::pair<double, double> gains, std::optional<double> waypoint_radius,
                                       const Weights& weights, FlightIntegration integration,
-                                      std::optional<double> max_time) {
-  return {method, turn_radius, speed, dt, {gains.first, gains.second}, waypoint_radius, fuel_weights(weights),
-          integration, max_time};
+                                      std::optional<double> max_time, DynamicsModel dynamics,
+                                      double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
+                                      double l1_period) {
+  WaypointNavOptions o;
+  o.method = method;
+  o.turn_radius = turn_radius;
+  o.speed = speed;
+  o.dt = dt;
+  o.gains = {gains.first, gains.second};
+  o.waypoint_radius = waypoint_radius;
+  o.weights = fuel_weights(weights);
+  o.integration = integration;
+  o.max_time = max_time;
+  o.dynamics = dynamics;
+  o.roll_time_constant = roll_time_constant;
+  o.max_roll_rate_deg_s = max_roll_rate_deg_s;
+  o.guidance = guidance;
+  o.l1.period = l1_period;
+  return o;
 }
 
 // turning_points' batch result: one entry per horizon.
@@ -176,6 +192,12 @@ void bind_waypoint_nav(py::module_& parent) {
            }),
            py::arg("law"), py::arg("waypoints"), py::arg("turn_radius"),
            py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight})
+      .def(py::init([](const L1Line& law, const InputArray& waypoints, double turn_radius, const Weights& w) {
+             return DubinsWaypointGuidance(law, to_points(waypoints, "waypoints"), turn_radius, fuel_weights(w));
+           }),
+           py::arg("law"), py::arg("waypoints"), py::arg("turn_radius"),
+           py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
+           "The same with each leg to a turning point flown by L1 line tracking (law: L1Line).")
       .def_property_readonly("active", &DubinsWaypointGuidance::active, "index of the waypoint being approached")
       .def_property_readonly(
           "turning_points",
@@ -228,18 +250,26 @@ void bind_waypoint_nav(py::module_& parent) {
                                  "navigate() and fly().")
       .def(py::init([](NavigationMethod method, double turn_radius, double speed, double dt,
                        std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
-                       FlightIntegration integration, std::optional<double> max_time) {
+                       FlightIntegration integration, std::optional<double> max_time, DynamicsModel dynamics,
+                       double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
+                       double l1_period) {
              return make_validated(navigation_options(method, turn_radius, speed, dt, gains, waypoint_radius, weights,
-                                                      integration, max_time));
+                                                      integration, max_time, dynamics, roll_time_constant,
+                                                      max_roll_rate_deg_s, guidance, l1_period));
            }),
            py::kw_only(), py::arg("method") = defaults.method, py::arg("turn_radius") = defaults.turn_radius,
            py::arg("speed") = defaults.speed, py::arg("dt") = defaults.dt,
            py::arg("gains") = std::make_pair(defaults.gains.g, defaults.gains.h), py::arg("waypoint_radius") = py::none(),
            py::arg("weights") = Weights{defaults.weights.arc, defaults.weights.straight},
            py::arg("integration") = defaults.integration, py::arg("max_time") = py::none(),
+           py::arg("dynamics") = defaults.dynamics, py::arg("roll_time_constant") = defaults.roll_time_constant,
+           py::arg("max_roll_rate_deg_s") = defaults.max_roll_rate_deg_s, py::arg("guidance") = defaults.guidance,
+           py::arg("l1_period") = defaults.l1.period,
            "method 'dwn' or 'wn'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP "
            "(None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + "
-           "2 pi R per waypoint) / v).")
+           "2 pi R per waypoint) / v); dynamics 'dubins' or 'roll' (metres and seconds) with the roll model's "
+           "roll_time_constant (s) and max_roll_rate_deg_s; guidance 'law5' (the paper's law (5) with gains) or "
+           "'l1' (L1 line tracking, period l1_period s, damping 0.75) on every leg.")
       .def_readwrite("method", &WaypointNavOptions::method, "'dwn' or 'wn'")
       .def_readwrite("turn_radius", &WaypointNavOptions::turn_radius, "R: minimum turn radius and DWN's turning circles")
       .def_readwrite("speed", &WaypointNavOptions::speed, "v")
@@ -255,6 +285,15 @@ void bind_waypoint_nav(py::module_& parent) {
           "(w_a, w_s): fuel per unit length on arcs and straights")
       .def_readwrite("integration", &WaypointNavOptions::integration, "'discrete' (the paper's) or 'continuous'")
       .def_readwrite("max_time", &WaypointNavOptions::max_time, "time limit, s; None: from the route")
+      .def_readwrite("dynamics", &WaypointNavOptions::dynamics,
+                     "'dubins' (the paper's) or 'roll' (the roll model: route in metres, speed in m/s)")
+      .def_readwrite("roll_time_constant", &WaypointNavOptions::roll_time_constant, "roll model: tau, s")
+      .def_readwrite("guidance", &WaypointNavOptions::guidance,
+                     "'law5' (the paper's law (5)) or 'l1' (L1 line tracking) on every leg")
+      .def_property(
+          "l1_period", [](const WaypointNavOptions& o) { return o.l1.period; },
+          [](WaypointNavOptions& o, double period) { o.l1.period = period; }, "guidance l1: the L1 period, s")
+      .def_readwrite("max_roll_rate_deg_s", &WaypointNavOptions::max_roll_rate_deg_s, "roll model: p_max, deg/s")
       .def("validate", &WaypointNavOptions::validate, "Raise VistrackError naming the first invalid field.")
       .def("__repr__", [](const WaypointNavOptions& o) {
         Repr text("waypoint_nav.Options");
@@ -264,6 +303,10 @@ void bind_waypoint_nav(py::module_& parent) {
         text.add("weights", Vec2(o.weights.arc, o.weights.straight));
         text.add("integration", o.integration);
         if (o.max_time) text.add("max_time", *o.max_time);
+        text.add("dynamics", o.dynamics).add("guidance", o.guidance);
+        if (o.guidance == LegGuidance::L1) text.add("l1_period", o.l1.period);
+        if (o.dynamics == DynamicsModel::Roll)
+          text.add("roll_time_constant", o.roll_time_constant).add("max_roll_rate_deg_s", o.max_roll_rate_deg_s);
         return text.str();
       });
 
@@ -271,9 +314,12 @@ void bind_waypoint_nav(py::module_& parent) {
       "navigate",
       [](const InputArray& waypoints, const Pose& start, NavigationMethod method, double turn_radius, double speed,
          double dt, std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
-         std::optional<Wind> wind, FlightIntegration integration, std::optional<double> max_time) {
+         std::optional<Wind> wind, FlightIntegration integration, std::optional<double> max_time,
+         DynamicsModel dynamics, double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
+         double l1_period) {
         const WaypointNavOptions o = navigation_options(method, turn_radius, speed, dt, gains, waypoint_radius, weights,
-                                                        integration, max_time);
+                                                        integration, max_time, dynamics, roll_time_constant,
+                                                        max_roll_rate_deg_s, guidance, l1_period);
         const std::vector<Vec2> route = to_points(waypoints, "waypoints");
         const Wind w = wind.value_or(Wind{});
         py::gil_scoped_release release;
@@ -284,8 +330,11 @@ void bind_waypoint_nav(py::module_& parent) {
       py::arg("gains") = std::make_pair(defaults.gains.g, defaults.gains.h), py::arg("waypoint_radius") = py::none(),
       py::arg("weights") = Weights{defaults.weights.arc, defaults.weights.straight}, py::arg("wind") = py::none(),
       py::arg("integration") = defaults.integration, py::arg("max_time") = py::none(),
-      "Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn'; returns NavigationResult. "
-      "Releases the GIL.");
+      py::arg("dynamics") = defaults.dynamics, py::arg("roll_time_constant") = defaults.roll_time_constant,
+      py::arg("max_roll_rate_deg_s") = defaults.max_roll_rate_deg_s, py::arg("guidance") = defaults.guidance,
+      py::arg("l1_period") = defaults.l1.period,
+      "Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' "
+      "vehicle, each leg by 'law5' or 'l1'; returns NavigationResult. Releases the GIL.");
 }
 
 }  // namespace vistrack::bindings

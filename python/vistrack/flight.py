@@ -53,6 +53,7 @@ RollModel = _flight.RollModel
 FlightSmoothness = _flight.FlightSmoothness
 flight_smoothness = _flight.flight_smoothness
 coordinated_bank = _flight.coordinated_bank
+paper_gains = _flight.paper_gains
 
 __all__ = [
     "CurveL1",
@@ -71,4 +72,5 @@ __all__ = [
     "dryden_low_altitude",
     "flight_smoothness",
     "fly",
+    "paper_gains",
 ]

@@ -169,7 +169,7 @@ def test_smoothing_removes_the_zig_zag_of_the_largest_area_radius() -> None:
     assert np.asarray(smooth.radii).min() > 150.0 - 0.1
     with pytest.raises(vt.VistrackError, match="smoothing"):
         vt.smooth_radius(ceiling, limits, smoothing=-1.0)
-    with pytest.raises(vt.VistrackError, match="planning.radius_smoothing"):
+    with pytest.raises(vt.VistrackError, match=r"planning\.radius_smoothing"):
         vt.Planning(radius_smoothing=float("nan"))
 
 

@@ -180,7 +180,7 @@ def test_read_route_errors(tmp_path: Path) -> None:
 def test_cli_waypoints(tmp_path: Path) -> None:
     out = tmp_path / "wp"
     before = ROUTE.read_bytes()
-    assert main(["waypoints", str(ROUTE), "--method", "both", "--wind", "0,0.08", "--gusts", "3",
+    assert main(["waypoints", str(ROUTE), "--paper-units", "--method", "both", "--wind", "0,0.08", "--gusts", "3",
                  "--figure-weights", "--monte-carlo", "2", "--quiet", "--out", str(out)]) == 0
     assert ROUTE.read_bytes() == before
     record = json.loads((out / "metrics.json").read_text())
@@ -217,15 +217,16 @@ def test_dwn_mission_carries_the_turning_points_and_pymavlink_reads_it(tmp_path:
 
 def test_cli_report_and_export(tmp_path: Path) -> None:
     out = tmp_path / "wp"
-    assert main(["waypoints", str(ROUTE), "--quiet", "--out", str(out), "--frames", "12", "--origin",
+    assert main(["waypoints", str(ROUTE), "--paper-units", "--quiet", "--out", str(out), "--frames", "12", "--origin",
                  "35.2249,-80.8403", "--export", str(out / "route.plan")]) == 0
     for name in ("report.md", "report.html", "trajectory.gif", "route.plan"):
         assert (out / name).stat().st_size > 500, name
     assert "trajectory.gif" in (out / "report.md").read_text()
     plan = json.loads((out / "route.plan").read_text())
     assert plan["fileType"] == "Plan" and len(plan["mission"]["items"]) >= 5
-    assert main(["waypoints", str(ROUTE), "--quiet", "--out", str(tmp_path / "x"), "--export",
+    assert main(["waypoints", str(ROUTE), "--paper-units", "--quiet", "--out", str(tmp_path / "x"), "--export",
                  str(tmp_path / "x.plan")]) == 2  # no origin to georeference the route
+    assert not (tmp_path / "x").exists()  # refused before any output
 
 
 def test_cli_bad_route_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -261,3 +262,91 @@ def test_waypoint_navigation_refuses_far_or_missing_waypoints() -> None:
     refuses(lambda: wn.turning_point((0.0, 0.0, 0.0), (9e6, 0.0), (9e6, 5.0), 1.0), "turn_radius = 1",
             "at most 1e6 turn radii")
     assert np.all(np.isfinite(wn.reachability((0.0, 0.0, 1e9), np.array([[1e7, -1e7], [0.0, 0.0]]), 1e-6)))
+
+
+# ---------------------------------------------------------------------------------------------
+# Routes in metres on the roll model (issue 28): the practitioner's default of the CLI.
+
+METRES = REPO / "examples" / "waypoints_metres.csv"
+
+
+def test_metres_example_is_the_paper_route_at_75_m_per_unit(route: np.ndarray) -> None:
+    np.testing.assert_array_equal(read_route(METRES), 75.0 * route)
+
+
+def test_paper_gains_scale_with_the_turn_radius() -> None:
+    assert vt.flight.paper_gains(0.7) == pytest.approx(wn.DEFAULTS["gains"], rel=1e-15)
+    g, h = vt.flight.paper_gains(50.0)
+    assert (g, h) == pytest.approx((0.1 * 0.7 / 50.0, 5.25 * 0.7 / 50.0), rel=1e-15)
+    # The law (5) is then the paper's at its proportions: a route scaled with R gives the same
+    # flight on the Dubins vehicle when time is scaled too (same v dt / R per step).
+    paper = wn.fly(read_route(ROUTE), method="wn", waypoint_radius=0.35)
+    scaled = wn.fly(75.0 * read_route(ROUTE), method="wn", waypoint_radius=75.0 * 0.35, turn_radius=75.0 * 0.7,
+                    speed=75.0 * 0.8, gains=vt.flight.paper_gains(75.0 * 0.7))
+    np.testing.assert_allclose(scaled.trajectory[:, 1:3] / 75.0, paper.trajectory[:, 1:3], atol=1e-9)
+
+
+@pytest.mark.parametrize("method, radius", [("dwn", None), ("wn", 5.0), ("wn", 50.0)])
+def test_roll_model_flies_a_metre_route_smoothly_with_l1(method: str, radius: float | None) -> None:
+    uav = vt.Uav()
+    route = read_route(METRES)
+    flight = wn.fly(route, method=method, waypoint_radius=radius, turn_radius=uav.min_turn_radius, speed=uav.speed,
+                    dynamics="roll", guidance="l1", l1_period=8.0, wind=vt.flight.Wind(north=2.0))
+    assert flight.all_reached and flight.finished and flight.swirls == 0
+    smooth = flight.flight.smoothness()
+    assert smooth.roll_reversals_per_s < 1.0
+    assert smooth.max_roll_rate_deg_s <= uav.max_roll_rate_deg_s * (1 + 1e-9)
+    bank = np.asarray(flight.flight.bank)
+    assert np.abs(bank).max() <= math.atan(uav.speed**2 / (9.80665 * uav.min_turn_radius)) + 1e-12
+    # The same flight on the Dubins vehicle turns at once: its command jumps where the roll model ramps.
+    dubins = wn.fly(route, method=method, waypoint_radius=radius, turn_radius=uav.min_turn_radius, speed=uav.speed,
+                    dynamics="dubins", guidance="l1", l1_period=8.0, wind=vt.flight.Wind(north=2.0))
+    assert dubins.flight.smoothness().max_roll_rate_deg_s > 5 * uav.max_roll_rate_deg_s
+
+
+def test_law5_flies_on_the_roll_model_too_and_chatters_more_than_l1() -> None:
+    route = read_route(METRES)
+    common = {"turn_radius": 50.0, "speed": 20.0, "dynamics": "roll", "integration": "continuous"}
+    law5 = wn.fly(route, method="wn", waypoint_radius=5.0, gains=vt.flight.paper_gains(50.0), guidance="law5",
+                  **common)
+    l1 = wn.fly(route, method="wn", waypoint_radius=5.0, guidance="l1", **common)
+    assert law5.all_reached and l1.all_reached
+    assert law5.flight.smoothness().roll_reversals_per_s > 2 * l1.flight.smoothness().roll_reversals_per_s
+    with pytest.raises(VistrackError, match="guidance"):
+        wn.fly(route, guidance="pid", **common)
+    with pytest.raises(VistrackError, match="roll_time_constant"):
+        wn.fly(route, roll_time_constant=-1.0, **common)
+
+
+def test_options_carry_the_vehicle_model() -> None:
+    options = wn.Options(dynamics="roll", guidance="l1", l1_period=12.0)
+    assert (str(options.dynamics), str(options.guidance), options.l1_period) == ("roll", "l1", 12.0)
+    assert "dynamics='roll'" in repr(options) and "l1_period=12" in repr(options)
+    assert str(wn.Options().dynamics) == "dubins" and str(wn.Options().guidance) == "law5"
+
+
+def test_cli_flies_metres_on_the_roll_model_by_default(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "m"
+    assert main(["waypoints", str(METRES), "--quiet", "--out", str(out), "--frames", "4", "--wind", "0,2",
+                 "--gusts", "3"]) == 0
+    printed = capsys.readouterr().out
+    assert "roll vehicle, legs by l1, R = 50, v = 20 (metres, m/s)" in printed
+    record = json.loads((out / "metrics.json").read_text())
+    settings = record["settings"]
+    assert (settings["units"], settings["dynamics"], settings["guidance"]) == ("metres", "roll", "l1")
+    assert settings["turn_radius"] == 50.0 and settings["speed"] == 20.0
+    for flight in record["flights"]:
+        assert flight["all_reached"] and flight["swirls"] == 0
+        assert flight["smoothness"]["roll_reversals_per_s"] < 1.0
+
+
+def test_cli_route_units_are_checked_before_any_output(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from support.cli import one_line_error
+
+    out = tmp_path / "o"
+    one_line_error(["waypoints", str(ROUTE), "--out", str(out)], capsys, 2, "ROUTE", "--paper-units")
+    one_line_error(["waypoints", str(METRES), "--paper-units", "--out", str(out)], capsys, 2, "ROUTE",
+                   "drop --paper-units")
+    one_line_error(["waypoints", str(ROUTE), "--paper-units", "--dynamics", "roll", "--out", str(out)], capsys, 2,
+                   "--dynamics = roll")
+    assert not out.exists()

@@ -50,11 +50,25 @@ struct FlightOptions {
   void validate() const;
 };
 
+// The lateral law that flies a leg or a path: the waypoint paper's feedback law (5), or L1
+// guidance (beyond the papers: Park's law as autopilots fly it, continuous in the state, so the
+// bank does not chatter as behind the saturated law (5)).
+enum class LegGuidance : std::uint8_t { LineFeedback = 0, L1 = 1 };
+
+template <>
+struct EnumNames<LegGuidance> {
+  static constexpr const char* field = "guidance";
+  static constexpr EnumName<LegGuidance> names[] = {{"law5", LegGuidance::LineFeedback}, {"l1", LegGuidance::L1}};
+};
+
 // Gains of the illustrative feedback law (5) of the Dubins waypoint navigation paper (section 3.1).
 struct LineFeedbackGains {
   double g = 0.1;    // on the cross-track distance s
   double h = 5.25;   // on its change over one law step, s_dot dt
   void validate() const;
+  // The paper's gains (given for its turn radius 0.7) for turn radius R: g and h multiply lengths,
+  // so both scale by 0.7 / R (a flight in metres flies the paper's law at its proportions).
+  static LineFeedbackGains for_turn_radius(double turn_radius);
 };
 
 // Gains of the L1 line tracker (L1Line, flight.hpp): ArduPlane's defaults NAVL1_PERIOD = 17 s and

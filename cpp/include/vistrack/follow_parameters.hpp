@@ -67,18 +67,9 @@ struct FollowParameters {
 // How a follow run is flown by the flight layer at step dt, steered by the
 // waypoint paper's feedback law (5) with its gains (LineFeedbackGains, given for the paper's
 // turn radius 0.7) rescaled to the UAV's r_min, since g and h multiply lengths.
-// How a follow run flies the plan: one waypoint a second, each 1 s leg by the law (5), as the
-// paper does; or the planned path itself (FollowPlanner::planned_path, renewed at every update)
-// by L1 guidance on the curve (beyond the paper: Park's law as autopilots fly it, continuous in
-// the state, so the bank does not chatter).
-enum class LegGuidance : std::uint8_t { LineFeedback = 0, L1 = 1 };
-
-template <>
-struct EnumNames<LegGuidance> {
-  static constexpr const char* field = "flight.guidance";
-  static constexpr EnumName<LegGuidance> names[] = {{"law5", LegGuidance::LineFeedback}, {"l1", LegGuidance::L1}};
-};
-
+// How a follow run flies the plan (LegGuidance, flight_parameters.hpp): one waypoint a second,
+// each 1 s leg by the law (5), as the paper does; or the planned path itself
+// (FollowPlanner::planned_path, renewed at every update) by L1 guidance on the curve.
 struct FollowFlight {
   // The paper's discrete update, or Dormand-Prince (then updates happen at the first accepted
   // step ending at or after each update time, at most dt late).

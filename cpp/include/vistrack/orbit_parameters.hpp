@@ -50,8 +50,8 @@ struct Planning {
   Locus locus = Locus::smooth;
   // Smooth locus only. R(t) stays this far inside MaxRadius, so that the flown path, which
   // leaves the reference by the tracking error, stays in the visibility polygon too (m; the
-  // closed loop's largest radial error after capture on the examples: 0.12 m campus and
-  // paper_small, 0.9 m demo, 1.06 m paper_slow; bench/locus_table.py).
+  // closed loop's largest radial error after capture on the examples: 0.08 m campus, 0.17 m
+  // paper_small, 0.8 m demo, 1.14 m paper_slow; bench/locus_table.py).
   double tracking_margin = 1.0;
   // The locus check computes MaxRadius every check_spacing m of POI travel (plus at the samples),
   // then halves the intervals where R(t) touches the bound down to check_min_spacing (m).

@@ -32,6 +32,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include <variant>
 
 #include "vistrack/dubins.hpp"
 #include "vistrack/flight.hpp"
@@ -106,6 +107,9 @@ class DubinsWaypointGuidance : public FlightGuidance {
  public:
   DubinsWaypointGuidance(const LineFeedback& law, const std::vector<Vec2>& waypoints, double turn_radius,
                          const FuelWeights& weights = {});
+  // The same with each leg to a turning point flown by L1 line tracking instead of the law (5).
+  DubinsWaypointGuidance(const L1Line& law, const std::vector<Vec2>& waypoints, double turn_radius,
+                         const FuelWeights& weights = {});
 
   void start(const Configuration& state, double t) override;
   GuidanceCommand command(const Configuration& state, double t) const override;
@@ -118,8 +122,9 @@ class DubinsWaypointGuidance : public FlightGuidance {
 
  private:
   void plan(const Configuration& state, double t);
+  void check() const;
 
-  LineFeedback law_;
+  std::variant<LineFeedback, L1Line> law_;
   std::vector<Vec2> waypoints_;
   double turn_radius_;
   FuelWeights weights_;

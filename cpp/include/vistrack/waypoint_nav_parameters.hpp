@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "vistrack/dubins_parameters.hpp"
 #include "vistrack/flight_parameters.hpp"
 
 namespace vistrack {
@@ -36,7 +37,18 @@ struct WaypointNavOptions {
   FuelWeights weights;
   FlightIntegration integration = FlightIntegration::Discrete;
   std::optional<double> max_time;  // unset: 3 (route length + 2 pi R per waypoint) / v
+  // The vehicle model (Uav::dynamics): the paper's instant turn, or the roll model with these
+  // parameters, which needs the route in metres and seconds (it uses g).
+  DynamicsModel dynamics = DynamicsModel::Dubins;
+  // The law that flies each leg (to DWN's turning point, or WN's line to its waypoint): the
+  // paper's law (5) with `gains`, or L1 line tracking with `l1`.
+  LegGuidance guidance = LegGuidance::LineFeedback;
+  L1Gains l1;
+  double roll_time_constant = Uav{}.roll_time_constant;     // tau, s
+  double max_roll_rate_deg_s = Uav{}.max_roll_rate_deg_s;   // p_max, deg/s
   void validate() const;
+  // The vehicle flown: speed v, r_min = R, the model and its roll parameters.
+  Uav vehicle() const;
 };
 
 }  // namespace vistrack

@@ -42,4 +42,13 @@ void LineFeedbackGains::validate() const {
   require_non_negative(h, "gains.h");
 }
 
+LineFeedbackGains LineFeedbackGains::for_turn_radius(double turn_radius) {
+  require_length(turn_radius, "turn_radius");
+  constexpr double kPaperTurnRadius = 0.7;  // section 3 of the waypoint paper
+  LineFeedbackGains gains;
+  gains.g *= kPaperTurnRadius / turn_radius;
+  gains.h *= kPaperTurnRadius / turn_radius;
+  return gains;
+}
+
 }  // namespace vistrack

@@ -19,8 +19,6 @@ namespace {
 // the planner issues it: it always flies the newest leg (previous waypoint -> newest), never
 // back to a stale one.
 constexpr double kSwitchAtOnce = std::numeric_limits<double>::max();
-// The waypoint paper's gains are for its turn radius 0.7; g and h multiply lengths.
-constexpr double kPaperTurnRadius = 0.7;
 
 FollowObservation observe(const GroundVehicle& vehicle, double t, const Vec2& uav, double psi) {
   FollowObservation o;
@@ -87,10 +85,8 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   FollowPlanner planner(parameters, uav, wind_estimate);
   FollowRun run;
 
-  LineFeedbackGains gains;
-  gains.g *= kPaperTurnRadius / uav.min_turn_radius;
-  gains.h *= kPaperTurnRadius / uav.min_turn_radius;
-  const LineFeedback law(uav.speed, uav.min_turn_radius, options.flight.dt, gains);
+  const LineFeedback law(uav.speed, uav.min_turn_radius, options.flight.dt,
+                         LineFeedbackGains::for_turn_radius(uav.min_turn_radius));
 
   // The planner's update at t with the scheduled offset and its rate over the next update.
   const auto plan = [&](double t, const Vec2& p, double psi) {

@@ -1,4 +1,4 @@
-// DWN as a flight guidance: law (5) to the turning point, re-planned when it becomes unreachable.
+// DWN as a flight guidance: law (5) (or L1) to the turning point, re-planned when it becomes unreachable.
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
 #include "vistrack/waypoint_nav.hpp"
@@ -8,12 +8,22 @@ namespace vistrack {
 DubinsWaypointGuidance::DubinsWaypointGuidance(const LineFeedback& law, const std::vector<Vec2>& waypoints,
                                                double turn_radius, const FuelWeights& weights)
     : law_(law), waypoints_(waypoints), turn_radius_(turn_radius), weights_(weights) {
-  require_positive(turn_radius, "turn_radius");
-  weights.validate();
-  if (waypoints.empty()) detail::fail_field("waypoints", 0, "DWN needs at least one waypoint");
-  for (std::size_t k = 0; k < waypoints.size(); ++k) {
-    require_coordinate(waypoints[k].x(), "waypoints[" + std::to_string(k) + "].x");
-    require_coordinate(waypoints[k].y(), "waypoints[" + std::to_string(k) + "].y");
+  check();
+}
+
+DubinsWaypointGuidance::DubinsWaypointGuidance(const L1Line& law, const std::vector<Vec2>& waypoints,
+                                               double turn_radius, const FuelWeights& weights)
+    : law_(law), waypoints_(waypoints), turn_radius_(turn_radius), weights_(weights) {
+  check();
+}
+
+void DubinsWaypointGuidance::check() const {
+  require_positive(turn_radius_, "turn_radius");
+  weights_.validate();
+  if (waypoints_.empty()) detail::fail_field("waypoints", 0, "DWN needs at least one waypoint");
+  for (std::size_t k = 0; k < waypoints_.size(); ++k) {
+    require_coordinate(waypoints_[k].x(), "waypoints[" + std::to_string(k) + "].x");
+    require_coordinate(waypoints_[k].y(), "waypoints[" + std::to_string(k) + "].y");
   }
 }
 
@@ -58,7 +68,7 @@ GuidanceCommand DubinsWaypointGuidance::command(const Configuration& state, doub
   GuidanceCommand c;
   c.target = target_;
   c.target_index = static_cast<int>(active_);
-  c.turn_rate = law_.turn_rate(state, line_start_, target_);
+  c.turn_rate = std::visit([&](const auto& law) { return law.turn_rate(state, line_start_, target_); }, law_);
   return c;
 }
 

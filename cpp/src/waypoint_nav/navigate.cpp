@@ -41,21 +41,24 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
       3.0 * (route + kTwoPi * R * static_cast<double>(waypoints.size())) / options.speed);
 
   // Continuous flight smooths sign(phi_T) (see LineFeedback).
-  const LineFeedback law(options.speed, R, options.dt, options.gains,
-                         options.integration == FlightIntegration::Continuous);
+  const LineFeedback law5(options.speed, R, options.dt, options.gains,
+                          options.integration == FlightIntegration::Continuous);
+  const L1Line l1(options.speed, options.l1);
   std::unique_ptr<FlightGuidance> guidance;
   DubinsWaypointGuidance* dwn = nullptr;
   if (options.method == NavigationMethod::Dubins) {
-    auto g = std::make_unique<DubinsWaypointGuidance>(law, waypoints, R, options.weights);
+    auto g = options.guidance == LegGuidance::L1
+                 ? std::make_unique<DubinsWaypointGuidance>(l1, waypoints, R, options.weights)
+                 : std::make_unique<DubinsWaypointGuidance>(law5, waypoints, R, options.weights);
     dwn = g.get();
     guidance = std::move(g);
   } else {
     result.waypoint_radius = options.waypoint_radius.value_or(R);
-    guidance = std::make_unique<WaypointFollower>(law, waypoints, result.waypoint_radius);
+    guidance = options.guidance == LegGuidance::L1
+                   ? std::make_unique<WaypointFollower>(l1, waypoints, result.waypoint_radius)
+                   : std::make_unique<WaypointFollower>(law5, waypoints, result.waypoint_radius);
   }
-  Uav vehicle;
-  vehicle.speed = options.speed;
-  vehicle.min_turn_radius = R;
+  const Uav vehicle = options.vehicle();
   FlightOptions flight;
   flight.integration = options.integration;
   flight.dt = options.dt;

@@ -27,6 +27,20 @@ void WaypointNavOptions::validate() const {
     require_non_negative(*waypoint_radius, "waypoint_radius");
   }
   if (max_time) require_positive(*max_time, "max_time");
+  l1.validate();
+  require_in_range(roll_time_constant, limits::kMinRollTimeConstant, limits::kMaxRollTimeConstant, "s",
+                   "roll_time_constant");
+  require_in_range(max_roll_rate_deg_s, limits::kMinRollRate, limits::kMaxRollRate, "deg/s", "max_roll_rate_deg_s");
+}
+
+Uav WaypointNavOptions::vehicle() const {
+  Uav uav;
+  uav.speed = speed;
+  uav.min_turn_radius = turn_radius;
+  uav.dynamics = dynamics;
+  uav.roll_time_constant = roll_time_constant;
+  uav.max_roll_rate_deg_s = max_roll_rate_deg_s;
+  return uav;
 }
 
 }  // namespace vistrack

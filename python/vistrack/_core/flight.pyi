@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core
-__all__: list[str] = ['CurveL1', 'DrydenLowAltitude', 'FlightGuidance', 'FlightSmoothness', 'FlightTrajectory', 'Gusts', 'L1Line', 'LineFeedback', 'LineFeedbackTerms', 'PathFollower', 'PathTracking', 'RollModel', 'WaypointFollower', 'Wind', 'WindField', 'coordinated_bank', 'dryden_low_altitude', 'flight_smoothness', 'fly']
+__all__: list[str] = ['CurveL1', 'DrydenLowAltitude', 'FlightGuidance', 'FlightSmoothness', 'FlightTrajectory', 'Gusts', 'L1Line', 'LineFeedback', 'LineFeedbackTerms', 'PathFollower', 'PathTracking', 'RollModel', 'WaypointFollower', 'Wind', 'WindField', 'coordinated_bank', 'dryden_low_altitude', 'flight_smoothness', 'fly', 'paper_gains']
 class Gusts:
     """
     Dryden turbulence (MIL-F-8785C, horizontal): RMS intensity sigma_u = sigma_v (speed units), length scale L_u = L_v (length units), seed. Reproducible from the seed.
@@ -554,4 +554,8 @@ def flight_smoothness(t: typing.Annotated[numpy.typing.ArrayLike, numpy.float64,
 def fly(guidance: FlightGuidance, start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, wind: Wind | None = None, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, max_time: typing.SupportsFloat | typing.SupportsIndex = 3600.0, integration: str = 'discrete', t0: typing.SupportsFloat | typing.SupportsIndex = 0.0, on_step: collections.abc.Callable[[float, tuple[float, float, float]], None] | None = None, progress: collections.abc.Callable[[int, int], None] | None = None, rtol: typing.SupportsFloat | typing.SupportsIndex = 1e-09, atol: typing.SupportsFloat | typing.SupportsIndex = 1e-12, uav: vistrack._core.Uav | None = None) -> FlightTrajectory:
     """
     Fly the vehicle (speed v, turn_radius R; uav: a Uav whose dynamics and roll parameters to use, its speed and radius replaced by these, None: the Dubins model) from start (x, y, psi) at t0 under the guidance until it is done or t0 + max_time. integration 'discrete' (the paper's update, step dt) or 'continuous' (Dormand-Prince, output every dt). on_step(t, state) runs after each accepted step (it may feed the guidance); progress(done, total) in per mille of max_time. Releases the GIL (callbacks take it).
+    """
+def paper_gains(turn_radius: typing.SupportsFloat | typing.SupportsIndex) -> tuple[float, float]:
+    """
+    The law (5)'s gains (g, h) for turn radius R: the paper's (0.1, 5.25), given for its R = 0.7, scaled by 0.7 / R (both multiply lengths).
     """

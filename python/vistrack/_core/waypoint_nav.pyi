@@ -126,8 +126,14 @@ class DubinsWaypointGuidance(vistrack._core.flight.FlightGuidance):
     """
     DWN as a flight guidance for vistrack.flight.fly: the law (5) to each turning point, the next one when it becomes unreachable; the last waypoint flown to directly.
     """
+    @typing.overload
     def __init__(self, law: vistrack._core.flight.LineFeedback, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> None:
         ...
+    @typing.overload
+    def __init__(self, law: vistrack._core.flight.L1Line, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> None:
+        """
+        The same with each leg to a turning point flown by L1 line tracking (law: L1Line).
+        """
     @property
     def active(self) -> int:
         """
@@ -239,9 +245,9 @@ class Options:
     """
     One navigation flight's settings; the defaults (the paper's section 3) are those of navigate() and fly().
     """
-    def __init__(self, *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None) -> None:
+    def __init__(self, *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0) -> None:
         """
-        method 'dwn' or 'wn'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP (None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + 2 pi R per waypoint) / v).
+        method 'dwn' or 'wn'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP (None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + 2 pi R per waypoint) / v); dynamics 'dubins' or 'roll' (metres and seconds) with the roll model's roll_time_constant (s) and max_roll_rate_deg_s; guidance 'law5' (the paper's law (5) with gains) or 'l1' (L1 line tracking, period l1_period s, damping 0.75) on every leg.
         """
     def __repr__(self) -> str:
         ...
@@ -258,6 +264,14 @@ class Options:
     def dt(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
+    def dynamics(self) -> str:
+        """
+        'dubins' (the paper's) or 'roll' (the roll model: route in metres, speed in m/s)
+        """
+    @dynamics.setter
+    def dynamics(self, arg0: str) -> None:
+        ...
+    @property
     def gains(self) -> tuple[float, float]:
         """
         (g, h) of the feedback law (5)
@@ -266,12 +280,36 @@ class Options:
     def gains(self, arg1: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]) -> None:
         ...
     @property
+    def guidance(self) -> str:
+        """
+        'law5' (the paper's law (5)) or 'l1' (L1 line tracking) on every leg
+        """
+    @guidance.setter
+    def guidance(self, arg0: str) -> None:
+        ...
+    @property
     def integration(self) -> str:
         """
         'discrete' (the paper's) or 'continuous'
         """
     @integration.setter
     def integration(self, arg0: str) -> None:
+        ...
+    @property
+    def l1_period(self) -> float:
+        """
+        guidance l1: the L1 period, s
+        """
+    @l1_period.setter
+    def l1_period(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_roll_rate_deg_s(self) -> float:
+        """
+        roll model: p_max, deg/s
+        """
+    @max_roll_rate_deg_s.setter
+    def max_roll_rate_deg_s(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def max_time(self) -> float | None:
@@ -288,6 +326,14 @@ class Options:
         """
     @method.setter
     def method(self, arg0: str) -> None:
+        ...
+    @property
+    def roll_time_constant(self) -> float:
+        """
+        roll model: tau, s
+        """
+    @roll_time_constant.setter
+    def roll_time_constant(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def speed(self) -> float:
@@ -329,9 +375,9 @@ def horizon_path(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing
     """
     The horizon path of one case at one theta.
     """
-def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), wind: vistrack._core.flight.Wind | None = None, integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None) -> NavigationResult:
+def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), wind: vistrack._core.flight.Wind | None = None, integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0) -> NavigationResult:
     """
-    Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn'; returns NavigationResult. Releases the GIL.
+    Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' vehicle, each leg by 'law5' or 'l1'; returns NavigationResult. Releases the GIL.
     """
 def reachability(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
     """

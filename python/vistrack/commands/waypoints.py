@@ -2,22 +2,27 @@
 (WN) over a route (CSV x,y; the flight starts at the first waypoint heading to the second).
 
 Writes metrics.json, one trajectory CSV per flight, the DWN turning points and paths.png (the
-paper's Figures 11/12: WN dashed at each waypoint radius, DWN solid). Defaults are the paper's
-section 3 (R 0.7, v 0.8, dt 0.02, g 0.1, h 5.25; WN radii 0.1R, 0.5R, R). --figure-weights adds
-Figure 10, --monte-carlo N the seeded Monte Carlo over random routes and winds.
+paper's Figures 11/12: WN dashed at each waypoint radius, DWN solid). The route is in metres
+and the vehicle is the roll model (20 m/s, R 50 m, each leg flown by L1 line tracking) unless
+--paper-units asks for the paper's section 3 (dimensionless: R 0.7, v 0.8, dt 0.02, law (5) with
+g 0.1, h 5.25, the Dubins vehicle). WN radii 0.1R, 0.5R, R. --figure-weights adds Figure 10,
+--monte-carlo N the seeded Monte Carlo over random routes and winds.
 """
-
 from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import Any
+
+import numpy as np
 
 from .. import waypoint_nav as wn
-from ..flight import Wind
+from .._core import Uav
+from ..flight import Wind, paper_gains
 from ..io import read_route
 from ..progress import Progress
 from ..report.waypoint_nav import write_waypoints
-from .export import add_export_arguments, export_mission
+from .export import add_export_arguments, export_georeference, export_mission
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
 from .types import UsageError, add_dynamics_argument, coordinate, count, length, number, speed
@@ -27,21 +32,31 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     d = wn.DEFAULTS
     parser = subparsers.add_parser("waypoints", help="Dubins waypoint navigation against classical WN (Figs. 10-12)",
                                    description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("route", type=Path, help="route CSV with columns x,y")
+    parser.add_argument("route", type=Path, help="route CSV with columns x,y (metres; the paper's units with "
+                                                 "--paper-units)")
+    parser.add_argument("--paper-units", action="store_true",
+                        help="the paper's dimensionless units and settings (R 0.7, v 0.8, law (5), Dubins vehicle)")
     parser.add_argument("--method", choices=["dwn", "wn", "both"], default="both", help="default both")
-    parser.add_argument("--waypoint-radius", type=positive_numbers("--waypoint-radius", "0.07,0.35,0.7"),
-                        help="WN radii, comma-separated (default 0.1R,0.5R,R)")
-    parser.add_argument("--wind", type=finite_numbers("--wind", 2, "0,0.08", 1e4), default=[0.0, 0.0],
-                        help="constant wind east,north (default 0,0)")
+    parser.add_argument("--waypoint-radius", type=positive_numbers("--waypoint-radius", "5,25,50"),
+                        help="WN radii in route units, comma-separated (default 0.1R,0.5R,R)")
+    parser.add_argument("--wind", type=finite_numbers("--wind", 2, "0,2", 1e4), default=[0.0, 0.0],
+                        help="constant wind east,north: the velocity of the air, pointing where it blows to "
+                             "(route units per second; default 0,0)")
     parser.add_argument("--gusts", type=count("--gusts", 0, 2**63 - 1), metavar="SEED",
                         help="add Dryden gusts with this seed (light turbulence, MIL-F-8785C, see vt.waypoint_nav)")
-    parser.add_argument("--turn-radius", type=length("--turn-radius"), default=d["turn_radius"],
-                        help=f"R (default {d['turn_radius']})")
-    parser.add_argument("--speed", type=speed("--speed"), default=d["speed"], help=f"v (default {d['speed']})")
+    parser.add_argument("--turn-radius", type=length("--turn-radius"),
+                        help=f"R (default {Uav().min_turn_radius:g} m; {d['turn_radius']} with --paper-units)")
+    parser.add_argument("--speed", type=speed("--speed"),
+                        help=f"v (default {Uav().speed:g} m/s; {d['speed']} with --paper-units)")
     parser.add_argument("--dt", type=number("--dt", 0.0, 3600.0, low_open=True), default=d["dt"],
                         help=f"step (default {d['dt']})")
-    parser.add_argument("--gains", type=finite_numbers("--gains", 2, "0.1,5.25"), default=list(d["gains"]),
-                        help="g,h (default the paper's 0.1,5.25)")
+    parser.add_argument("--guidance", choices=["l1", "law5"],
+                        help="the law on each leg: l1 (L1 line tracking) or law5 (the paper's law (5)); default l1, "
+                             "law5 with --paper-units")
+    parser.add_argument("--l1-period", type=number("--l1-period", 0.0, 3600.0, low_open=True), default=L1_PERIOD,
+                        help=f"guidance l1: the L1 period, s (default {L1_PERIOD:g}, as the follow runs fly)")
+    parser.add_argument("--gains", type=finite_numbers("--gains", 2, "0.1,5.25"),
+                        help="law (5)'s g,h (default the paper's 0.1,5.25, scaled by 0.7 / R in metres)")
     parser.add_argument("--integration", choices=["discrete", "continuous"], default=d["integration"])
     parser.add_argument("--figure-weights", action="store_true", help="also Figure 10 (theta against w_a)")
     parser.add_argument("--monte-carlo", type=count("--monte-carlo", 1, 100000), metavar="N",
@@ -50,42 +65,77 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--monte-carlo-wind", type=finite_numbers("--monte-carlo-wind", 2, "0,0.2"),
                         default=[0.0, 0.2], help="Monte Carlo wind speeds, fractions of v (default 0,0.2)")
     parser.add_argument("--altitude", type=coordinate("--altitude"), default=60.0,
-                        help="mission altitude for --export, m (default 60)")
+                        help="flight altitude for --export and the gusts in metres, m (default 60)")
     add_export_arguments(parser)
     add_report_arguments(parser)
-    add_dynamics_argument(parser, "dubins")
+    add_dynamics_argument(parser, None)
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--out", type=Path, default=Path("waypoints_out"), help="output folder")
     parser.set_defaults(func=run)
 
 
+# The follow runs' L1 period (FollowFlight.l1): L1 = 0.75 * 8 * v / pi = 38 m at 20 m/s, under R = 50 m.
+L1_PERIOD = 8.0
+
+
+def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any]:
+    """The keyword arguments of :func:`wn.fly` the flags ask for, in metres or the paper's units,
+    after checking that the route's scale fits them (UsageError before any output)."""
+    d = wn.DEFAULTS
+    paper = args.paper_units
+    R = args.turn_radius if args.turn_radius is not None else (d["turn_radius"] if paper else Uav().min_turn_radius)
+    v = args.speed if args.speed is not None else (d["speed"] if paper else Uav().speed)
+    dynamics = args.dynamics or ("dubins" if paper else "roll")
+    if paper and dynamics != "dubins":
+        # The roll model needs g in m/s^2; the paper's units are dimensionless.
+        raise UsageError(f"--dynamics = {dynamics}: the waypoint paper's dimensionless units (--paper-units) fly the "
+                         "Dubins vehicle only (the roll model needs a route in metres)")
+    longest = float(np.max(np.linalg.norm(np.diff(route, axis=0), axis=1)))
+    if not paper and longest < 2.0 * R:
+        raise UsageError(f"ROUTE = {args.route}: its longest leg is {longest:.4g} m, under 2 R = {2 * R:.4g} m: "
+                         "a route in the paper's units? pass --paper-units")
+    if paper and longest > 100.0 * R:
+        raise UsageError(f"ROUTE = {args.route}: its longest leg is {longest:.4g} = {longest / R:.4g} R with "
+                         f"--paper-units (R = {R:g}): a route in metres? drop --paper-units")
+    gains = tuple(args.gains) if args.gains is not None else (tuple(d["gains"]) if paper else paper_gains(R))
+    return {"turn_radius": R, "speed": v, "dt": args.dt, "integration": args.integration, "gains": gains,
+            "dynamics": dynamics, "roll_time_constant": Uav().roll_time_constant,
+            "max_roll_rate_deg_s": Uav().max_roll_rate_deg_s, "guidance": args.guidance or ("law5" if paper else "l1"),
+            "l1_period": args.l1_period}
+
+
 def run(args: argparse.Namespace) -> int:
-    if args.dynamics != "dubins":
-        # The roll model needs g in m/s^2; this command flies the paper's dimensionless units.
-        raise UsageError(f"--dynamics = {args.dynamics}: the waypoint paper's dimensionless units fly the Dubins "
-                         "vehicle only (the roll model needs a route in metres)")
     route = read_route(args.route, "ROUTE")
+    options = flight_options(args, route)
+    if args.export:
+        export_georeference(args.export, args.origin, None, None)  # no origin: an error before any output
     output_folder(args.out)  # a file there is an error now, not after the flights
     east, north = args.wind
-    wind = Wind(east=east, north=north, gusts=None if args.gusts is None else wn.paper_gusts(args.gusts))
-    R = args.turn_radius
+    # Gusts: the paper's reading of its units (1 = 20 m, 1 s), or metres at the flight altitude.
+    model = None if args.paper_units else {"altitude": args.altitude, "length_unit": 1.0, "speed_unit": 1.0}
+    wind = Wind(east=east, north=north, gusts=None if args.gusts is None else wn.paper_gusts(args.gusts, model))
+    R = options["turn_radius"]
     radii = wn.PAPER_RADII if args.waypoint_radius is None else [r / R for r in args.waypoint_radius]
     methods = ("dwn", "wn") if args.method == "both" else (args.method,)
-    options = {"turn_radius": R, "speed": args.speed, "dt": args.dt, "integration": args.integration,
-               "gains": tuple(args.gains)}
     flights = wn.paper_flights(route, wind=wind, radii=radii, methods=methods, **options)
     weights = wn.theta_against_weight() if args.figure_weights else None
     mc = None
     if args.monte_carlo:
         with Progress("Monte Carlo", not args.quiet, unit="flight pair") as bar:
             mc = wn.monte_carlo(args.monte_carlo, args.seed, wind_fraction=tuple(args.monte_carlo_wind), radii=radii,
-                                progress=bar, **options)
-    settings = {**options, "wind": [east, north], "gusts_seed": args.gusts, "radii_over_R": list(radii)}
+                                gust_model=model, progress=bar, **options)
+    settings = {**options, "units": "paper" if args.paper_units else "metres", "wind": [east, north],
+                "gusts_seed": args.gusts, "radii_over_R": list(radii)}
     write_waypoints(args.out, flights, wind, str(args.route), settings, weights, mc, report_options(args))
     # The mission carries DWN's turning points when DWN flew, else the first WN flight's waypoints.
-    export_mission(args.export, lambda ref: flights[0].to_mission(ref, args.altitude, speed=args.speed), args.origin)
+    export_mission(args.export, lambda ref: flights[0].to_mission(ref, args.altitude, speed=options["speed"]),
+                   args.origin)
+    print(f"{options['dynamics']} vehicle, legs by {options['guidance']}, R = {R:g}, v = {options['speed']:g}"
+          + ("" if args.paper_units else " (metres, m/s)"))
     for f in flights:
+        smooth = f.flight.smoothness()
         print(f"{f.label:>14}: max miss {f.miss_distances.max() / R:.3f} R, overshoot {f.overshoot / R:.3f} R, "
-              f"swirls {f.swirls}, path {f.path_length:.3f}, time {f.duration:.2f}, all reached {f.all_reached}")
+              f"swirls {f.swirls}, path {f.path_length:.4g}, time {f.duration:.4g}, all reached {f.all_reached}, "
+              f"{smooth.roll_reversals_per_s:.2f} roll reversals/s")
     print(f"-> {args.out}")
     return 0

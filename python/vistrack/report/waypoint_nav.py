@@ -15,7 +15,7 @@ from ..plotting.motion import Line, MotionScene, Track
 from ..plotting.waypoint_nav import figure_monte_carlo, figure_paths, figure_theta_weight
 from ..report_options import ReportOptions
 from ..waypoint_nav import MonteCarlo, NavigationFlight
-from .document import Document, Heading, Picture, Table
+from .document import Document, Heading, Picture, Table, vehicle_line
 from .media import write_media
 
 TRACK_COLORS = ("tab:red", "tab:blue", "tab:orange", "tab:purple", "tab:brown", "tab:olive")
@@ -75,13 +75,20 @@ def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Option
 def _document(flights: Sequence[NavigationFlight], record: dict[str, Any], route_name: str) -> Document:
     R = flights[0].turn_radius
     rows = [[f.label, f"{f.miss_distances.max() / R:.3f}", f"{f.overshoot / R:.3f}", str(f.swirls),
-             f"{f.path_length:.3f}", f"{f.duration:.2f}", "yes" if f.all_reached else "no"] for f in flights]
+             f"{f.path_length:.4g}", f"{f.duration:.4g}", "yes" if f.all_reached else "no",
+             f"{f.flight.smoothness().roll_reversals_per_s:.2f}"] for f in flights]
     blocks: list[Any] = [Heading("Flights"),
                          Table(["flight", "max miss (R)", "overshoot (R)", "swirls", "path length", "time",
-                                "all reached"], rows)]
+                                "all reached", "roll reversals/s"], rows)]
     titles = {"paths.png": "Paths (Figures 11/12)", "fig10_theta_weight.png": "Figure 10: theta against w_a",
               "monte_carlo.png": "Monte Carlo over random routes and winds"}
     blocks += [Picture(name, titles.get(name, name)) for name in record["figures"]]
-    summary = [f"Route {route_name}: {len(flights[0].waypoints)} waypoints, turn radius R = {R:g}",
-               f"Wind {record['settings']['wind']} (unknown to the guidance)"]
+    settings = record["settings"]
+    units = "metres and m/s" if settings.get("units") == "metres" else "the paper's dimensionless units"
+    summary = [f"Route {route_name}: {len(flights[0].waypoints)} waypoints, turn radius R = {R:g}, speed "
+               f"{settings['speed']:g}, in {units}; each leg flown by {settings.get('guidance', 'law5')}",
+               vehicle_line({"dynamics": settings.get("dynamics", "dubins"),
+                             "roll_time_constant": settings.get("roll_time_constant"),
+                             "max_roll_rate_deg_s": settings.get("max_roll_rate_deg_s")}, None),
+               f"Wind {settings['wind']} (unknown to the guidance)"]
     return Document("vistrack report: waypoint navigation", summary, blocks)

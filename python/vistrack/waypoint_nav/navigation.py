@@ -171,6 +171,7 @@ class NavigationFlight:
             "duration": self.duration,
             "fuel": self.fuel,
             "turning_points": self.turning_points.tolist(),
+            "smoothness": self.flight.smoothness().as_dict() if len(self.flight.t) >= 2 else None,
         }
 
 
@@ -187,6 +188,11 @@ def fly(
     max_time: Optional[float] = None,
     weights: tuple[float, float] = _OPTIONS.weights,
     integration: str = _OPTIONS.integration,
+    dynamics: str = str(_OPTIONS.dynamics),
+    roll_time_constant: float = _OPTIONS.roll_time_constant,
+    max_roll_rate_deg_s: float = _OPTIONS.max_roll_rate_deg_s,
+    guidance: str = str(_OPTIONS.guidance),
+    l1_period: float = _OPTIONS.l1_period,
 ) -> NavigationFlight:
     """Fly a route with DWN (``method="dwn"``) or WN (``"wn"``).
 
@@ -208,7 +214,8 @@ def fly(
     try:
         result = _wn.navigate(flown, pose, method=method, turn_radius=turn_radius, speed=speed, dt=dt, gains=gains,
                               waypoint_radius=waypoint_radius, weights=weights, wind=wind, integration=integration,
-                              max_time=max_time)
+                              max_time=max_time, dynamics=dynamics, roll_time_constant=roll_time_constant,
+                              max_roll_rate_deg_s=max_roll_rate_deg_s, guidance=guidance, l1_period=l1_period)
     except VistrackError as error:
         if start is not None:
             raise
