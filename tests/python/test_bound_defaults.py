@@ -77,7 +77,8 @@ def test_bound_parameter_structs_validate_and_print() -> None:
         vt.loiter.CoverageOptions(threshold=1.5)
     o = vt.waypoint_nav.Options(method="wn", waypoint_radius=0.35)
     assert repr(o) == ("waypoint_nav.Options(method='wn', turn_radius=0.7, speed=0.8, dt=0.02, gains=(0.1, 5.25), "
-                       "waypoint_radius=0.35, weights=(1, 1), integration='discrete', dynamics='dubins', guidance='law5')")
+                       "waypoint_radius=0.35, weights=(1, 1), integration='discrete', dynamics='dubins', "
+                       "guidance='law5')")
     o.method = "dwn"
     with pytest.raises(vt.VistrackError, match=r"^waypoint_radius = 0.35: DWN has no waypoint radius"):
         o.validate()
