@@ -338,6 +338,8 @@ def test_cli_flies_metres_on_the_roll_model_by_default(tmp_path: Path, capsys: p
     for flight in record["flights"]:
         assert flight["all_reached"] and flight["swirls"] == 0
         assert flight["smoothness"]["roll_reversals_per_s"] < 1.0
+    assert "bank.png" in record["figures"] and (out / "bank.png").stat().st_size > 10_000
+    assert "Bank flown" in (out / "report.md").read_text() and "roll reversals/s" in (out / "report.md").read_text()
 
 
 def test_cli_route_units_are_checked_before_any_output(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

@@ -12,7 +12,7 @@ import numpy as np
 from .._core.flight import Wind
 from .._core.waypoint_nav import HorizonPath
 from ..waypoint_nav import MonteCarlo, NavigationFlight
-from .common import pyplot, save_figure
+from .common import plot_bank, pyplot, save_figure
 
 DWN_STYLE = {"color": "tab:blue", "lw": 1.6, "ls": "-"}
 WN_STYLE = {"color": "tab:orange", "lw": 1.4, "ls": "--"}
@@ -80,6 +80,18 @@ def figure_paths(flights: Sequence[NavigationFlight], path: Path, title: str = "
         ax.legend(loc="best", fontsize=7)
     fig.suptitle(f"{title} ({_wind_text(wind)})" if title else _wind_text(wind))
     return save_figure(fig, path, dpi=130)
+
+
+def figure_bank(flights: Sequence[NavigationFlight], path: Path) -> Path:
+    """The bank flown against time, one panel per flight, with its smoothness in the legend."""
+    plt = pyplot()
+    fig, axes = plt.subplots(len(flights), 1, figsize=(8.0, 1.9 * len(flights) + 0.6), sharex=True, squeeze=False,
+                             constrained_layout=True)
+    for ax, flight in zip(axes[:, 0], flights):
+        plot_bank(ax, flight.flight.t, flight.flight.bank, label=flight.label)
+        ax.grid(True, alpha=0.3)
+    axes[-1, 0].set_xlabel("t (s)")
+    return save_figure(fig, path, dpi=110)
 
 
 def figure_theta_weight(data: dict[str, Any], path: Path) -> Path:

@@ -12,7 +12,7 @@ import numpy as np
 from .._core.flight import Wind
 from ..io import write_flight, write_json, write_route
 from ..plotting.motion import Line, MotionScene, Track
-from ..plotting.waypoint_nav import figure_monte_carlo, figure_paths, figure_theta_weight
+from ..plotting.waypoint_nav import figure_bank, figure_monte_carlo, figure_paths, figure_theta_weight
 from ..report_options import ReportOptions
 from ..waypoint_nav import MonteCarlo, NavigationFlight
 from .document import Document, Heading, Picture, Table, vehicle_line
@@ -55,6 +55,7 @@ def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Option
             entry["turning_points_file"] = write_route(flight.turning_points, out / "turning_points_dwn.csv").name
         record["flights"].append(entry)
     record["figures"].append(figure_paths(flights, out / "paths.png", "DWN against WN", wind).name)
+    record["figures"].append(figure_bank(flights, out / "bank.png").name)
     if weights is not None:
         record["figure10"] = {"arc_weights": weights["arc_weights"].tolist(), "thetas": weights["thetas"].tolist(),
                               "cases": weights["cases"], "theta_range_deg": weights["theta_range_deg"]}
@@ -80,7 +81,8 @@ def _document(flights: Sequence[NavigationFlight], record: dict[str, Any], route
     blocks: list[Any] = [Heading("Flights"),
                          Table(["flight", "max miss (R)", "overshoot (R)", "swirls", "path length", "time",
                                 "all reached", "roll reversals/s"], rows)]
-    titles = {"paths.png": "Paths (Figures 11/12)", "fig10_theta_weight.png": "Figure 10: theta against w_a",
+    titles = {"paths.png": "Paths (Figures 11/12)", "bank.png": "Bank flown",
+              "fig10_theta_weight.png": "Figure 10: theta against w_a",
               "monte_carlo.png": "Monte Carlo over random routes and winds"}
     blocks += [Picture(name, titles.get(name, name)) for name in record["figures"]]
     settings = record["settings"]
