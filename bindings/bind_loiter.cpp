@@ -54,7 +54,10 @@ void bind_loiter(py::module_& parent) {
   const LoiterParameters defaults;
   const LoiterCamera camera_defaults;
   const LoiterCoverageOptions coverage_defaults;
-  m.attr("METHODS") = enum_names<LoiterMethod>();
+  // The printed planners; beyond the paper, the ones that choose their loiter directions.
+  m.attr("METHODS") = py::make_tuple(to_string(LoiterMethod::FlyThrough), to_string(LoiterMethod::Tlpp),
+                                     to_string(LoiterMethod::Ldlpp));
+  m.attr("BEYOND_PAPER_METHODS") = py::make_tuple(to_string(LoiterMethod::TlppBest), to_string(LoiterMethod::LdlppBest));
   m.attr("ORDERS") = enum_names<LoiterOrder>();
   m.attr("EXACT_ORDER_LIMIT") = kExactOrderLimit;
   m.attr("STANDARD_GRAVITY") = kStandardGravity;

@@ -255,7 +255,7 @@ def test_cli_writes_figures_metrics_and_paths(tmp_path: Path) -> None:
                  *NO_MEDIA]) == 0
     assert EXAMPLES[0].read_bytes() == source  # input untouched
     metrics = json.loads((tmp_path / "one" / "metrics.json").read_text())
-    assert [m["method"] for m in metrics["methods"]] == list(loiter.METHODS)
+    assert [m["method"] for m in metrics["methods"]] == list(loiter.ALL_METHODS)
     assert all(m["best_flight_time_s"] <= m["flight_time_s"] + 1e-9 for m in metrics["methods"])
     for method in loiter.METHODS:
         lines = (tmp_path / "one" / f"path_{method}.csv").read_text().splitlines()
@@ -266,7 +266,7 @@ def test_cli_writes_figures_metrics_and_paths(tmp_path: Path) -> None:
     assert "| TLPP |" in (tmp_path / "two" / "table.md").read_text()
     assert (tmp_path / "two" / "fig14_comparison.png").exists()
     assert main(["loiter", "--random", "6", "--seed", "1", "--out", str(tmp_path / "random"), "--quiet"]) == 0
-    assert len(json.loads((tmp_path / "random" / "random.json").read_text())["records"]) == 18
+    assert len(json.loads((tmp_path / "random" / "random.json").read_text())["records"]) == 6 * len(loiter.ALL_METHODS)
 
 
 def test_cli_errors_are_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -349,3 +349,101 @@ def test_loiter_coverage_refuses_altitudes_and_steps_beyond_the_limits() -> None
     refuses(lambda: vt.loiter.coverage(plan, dt=1e300), "dt = 1e+300", "(0, 3600] s")
     refuses(lambda: vt.loiter.Camera(74.0, 25.0, 1e300, True), "camera.altitude = 1e+300", "[1e-06, 1e+07] m")
     refuses(lambda: vt.loiter.CoverageOptions(dt=7200.0), "dt = 7200", "(0, 3600] s")
+
+
+# ---------------------------------------------------------------------------------------------
+# Beyond the paper: the loiter directions chosen (issue 33).
+
+def _layouts(count: int, seed: int) -> list[loiter.Scenario]:
+    return [loiter.random_scenario(3 + k % 6, seed + k) for k in range(count)]
+
+
+def _mirrored(scenario: loiter.Scenario) -> loiter.Scenario:
+    flip = np.array([-1.0, 1.0])
+    return loiter.Scenario(aois=np.asarray(scenario.aois) * flip, start=tuple(np.asarray(scenario.start) * flip),
+                           end=tuple(np.asarray(scenario.end) * flip))
+
+
+def _contiguous(plan: loiter.Plan) -> None:
+    for a, b in zip(plan.segments, plan.segments[1:]):
+        np.testing.assert_allclose(b.start, a.end, atol=1e-7)
+        assert b.start_heading == pytest.approx(a.end_heading, abs=1e-9)
+
+
+@pytest.mark.parametrize("seed", [11, 12])
+def test_per_aoi_ldlpp_loiters_the_shorter_way_at_every_aoi(seed: int) -> None:
+    for scenario in _layouts(12, 100 * seed):
+        printed, chosen = scenario.plan("ldlpp"), scenario.plan("ldlpp_best")
+        _contiguous(chosen)
+        assert chosen.method == "ldlpp_best" and printed.method == "ldlpp"
+        printed_sweep, chosen_sweep = np.asarray(printed.loiter_sweep), np.asarray(chosen.loiter_sweep)
+        assert (chosen_sweep <= printed_sweep + 1e-12).all()
+        # The transit is the same either way: the plans differ by R times the loiter saved.
+        saved = scenario.aoi_radius * float(np.sum(printed_sweep - chosen_sweep))
+        assert chosen.length == pytest.approx(printed.length - saved, rel=1e-12, abs=1e-6)
+        for k, direction in enumerate(chosen.directions):
+            assert (str(direction) == "cw") == (chosen_sweep[k] < printed_sweep[k] - 1e-12)
+
+
+def test_per_aoi_ldlpp_over_one_aoi_is_the_shorter_of_the_layout_and_its_mirror_image() -> None:
+    """An independent oracle: mirroring the layout mirrors the printed plan (its clockwise twin)."""
+    rng = np.random.default_rng(5)
+    for _ in range(40):
+        aoi = rng.uniform(150.0, 700.0, 2)
+        start, end = tuple(rng.uniform(-200.0, 0.0, 2)), tuple(rng.uniform(800.0, 1000.0, 2))
+        scenario = loiter.Scenario(aois=np.array([aoi]), start=start, end=end)
+        mirror = _mirrored(scenario).plan("ldlpp").length
+        assert scenario.plan("ldlpp_best").length == pytest.approx(min(scenario.plan("ldlpp").length, mirror),
+                                                                   rel=1e-12)
+
+
+def test_tlpp_with_both_first_directions_keeps_the_shorter() -> None:
+    shorter = 0
+    for scenario in _layouts(24, 7):
+        printed, chosen = scenario.plan("tlpp"), scenario.plan("tlpp_best")
+        _contiguous(chosen)
+        assert chosen.length <= printed.length * (1 + 1e-12)
+        first = chosen.order[0]
+        if chosen.directions[first] == printed.directions[first]:
+            assert chosen.length == pytest.approx(printed.length, rel=1e-12)
+        else:
+            assert chosen.length < printed.length
+            shorter += 1
+        # TLPP's directions alternate along the visiting order.
+        flown = [str(chosen.directions[k]) for k in chosen.order]
+        assert all(a != b for a, b in zip(flown, flown[1:]))
+    assert shorter > 0  # the printed rule does pick the longer plan on some layouts
+
+
+@pytest.mark.parametrize("order", ["given", "best"])
+def test_best_is_never_slower_than_any_method(order: str) -> None:
+    for scenario in _layouts(6, 300):
+        plans = {m: scenario.plan(m, order) for m in loiter.ALL_METHODS}
+        best = scenario.plan("best", order)
+        assert best.method in loiter.ALL_METHODS
+        assert best.flight_time == min(p.flight_time for p in plans.values())
+        assert plans["ldlpp_best"].flight_time <= plans["ldlpp"].flight_time * (1 + 1e-12)
+        by_coverage = scenario.plan("best", order, objective="coverage")
+        assert scenario.coverage(by_coverage).time == max(scenario.coverage(p).time for p in plans.values())
+    with pytest.raises(vt.VistrackError, match="objective"):
+        loiter.plan([(300.0, 300.0)], "best", objective="area")
+
+
+def test_best_plans_a_layout_ldlpp_cannot_fly(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from vistrack.cli import main
+
+    aois = [(300.0, 300.0), (400.0, 300.0)]  # 100 m apart: LDLPP needs 2 D_Entry = 159.3 m
+    with pytest.raises(vt.VistrackError, match="LDLPP needs"):
+        loiter.plan(aois, "ldlpp")
+    best = loiter.plan(aois, "best")
+    assert best.method in ("fly_through", "tlpp", "tlpp_best")
+    scenario = tmp_path / "close.yaml"
+    scenario.write_text("name: close\naois: [[300, 300], [400, 300]]\n")
+    assert main(["loiter", str(scenario), "--out", str(tmp_path / "o"), "--quiet", *NO_MEDIA]) == 0
+    out = capsys.readouterr().out
+    assert "close ldlpp: skipped, cannot fly this layout: " in out and "close tlpp: " in out
+    metrics = json.loads((tmp_path / "o" / "metrics.json").read_text())
+    assert "ldlpp" not in [m["method"] for m in metrics["methods"]]
+    assert main(["loiter", str(scenario), "--method", "ldlpp", "ldlpp_best", "--out", str(tmp_path / "p"),
+                 "--quiet", *NO_MEDIA]) == 1
+    assert "no method given can fly" in capsys.readouterr().err

@@ -12,6 +12,9 @@
 //  * LDLPP (3.3): transit on the line between POIs, a CW entry turn from D_Entry (15), a CCW
 //    loiter of at least `turns` full circles until the exit point, a CW exit turn onto the line to
 //    the next POI.
+// Beyond the paper: LdlppBest mirrors LDLPP at every AOI where that loiters less (a CCW entry
+// turn, a CW loiter, a CCW exit; the transit is the same either way, so each AOI chooses alone);
+// TlppBest plans TLPP with each first direction and keeps the shorter.
 // Every AOI is circled at least `turns` times. The printed equations' slips are fixed where they
 // are implemented (src/loiter/tangents.cpp, ldlpp.cpp) and tested against the printed forms.
 //
@@ -31,12 +34,16 @@
 
 namespace vistrack {
 
-enum class LoiterMethod : std::uint8_t { FlyThrough = 0, Tlpp = 1, Ldlpp = 2 };
+// The printed planners, and beyond the paper: LDLPP with each AOI's loiter direction chosen
+// (the printed one always loiters counter-clockwise), TLPP with both first directions tried (the
+// printed rule picks the longer plan in most random layouts).
+enum class LoiterMethod : std::uint8_t { FlyThrough = 0, Tlpp = 1, Ldlpp = 2, TlppBest = 3, LdlppBest = 4 };
 template <>
 struct EnumNames<LoiterMethod> {
   static constexpr const char* field = "method";
   static constexpr EnumName<LoiterMethod> names[] = {{"fly_through", LoiterMethod::FlyThrough},
-      {"tlpp", LoiterMethod::Tlpp}, {"ldlpp", LoiterMethod::Ldlpp}, {"fly-through", LoiterMethod::FlyThrough},
+      {"tlpp", LoiterMethod::Tlpp}, {"ldlpp", LoiterMethod::Ldlpp}, {"tlpp_best", LoiterMethod::TlppBest},
+      {"ldlpp_best", LoiterMethod::LdlppBest}, {"fly-through", LoiterMethod::FlyThrough},
       {"flythrough", LoiterMethod::FlyThrough}};
 };
 

@@ -38,10 +38,13 @@ double ldlpp_turn_angle(double aoi_radius, double turn_radius) {
 
 namespace detail {
 
-LdlppWalker::LdlppWalker(const LoiterProblem& problem, PathSink sink, std::vector<Circulation>* directions)
+LdlppWalker::LdlppWalker(const LoiterProblem& problem, PathSink sink, std::vector<Circulation>* directions,
+                         bool choose_direction)
     : WalkerBase(problem, sink, directions),
       entry_distance_(ldlpp_entry_distance(R_, r_)),
-      turn_angle_(ldlpp_turn_angle(R_, r_)) {}
+      turn_angle_(ldlpp_turn_angle(R_, r_)),
+      choose_direction_(choose_direction),
+      along_in_(Vec2::UnitX()) {}
 
 double LdlppWalker::per_aoi_minimum(const LoiterProblem& problem) {
   // The entry and exit turns count as transit in the order search's bound (they lie between circles).
@@ -85,28 +88,50 @@ bool LdlppWalker::finish() {
   return true;
 }
 
-// Transit to S, then the clockwise entry turn onto the loiter circle.
+// Transit to S. The entry turn is drawn on leaving, once the line out (and with it the loiter
+// direction that loiters less) is known.
 void LdlppWalker::enter(int aoi, const Vec2& along) {
-  const Vec2& center = poi(aoi);
-  const Vec2 turn_start = center - entry_distance_ * along;
-  const Vec2 turn_center = turn_start + r_ * right_of(along);
-  sink_.line(position_, turn_start, SegmentRole::Transit, -1);
-  sink_.arc(turn_center, r_, Circulation::Clockwise, turn_start, turn_angle_, SegmentRole::Entry, aoi);
-  entry_ = center + R_ * (turn_center - center).normalized();
+  sink_.line(position_, poi(aoi) - entry_distance_ * along, SegmentRole::Transit, -1);
+  along_in_ = along;
   pending_ = aoi;
-  record_direction(aoi, Circulation::CounterClockwise);
 }
 
-// The loiter until the exit point, then the clockwise exit turn onto the line `along` from the POI.
+// The visit of the pending AOI loitering in `direction`: counter-clockwise as printed (turns
+// clockwise, their centres right of the lines), clockwise its mirror image about each line.
+LdlppWalker::Visit LdlppWalker::plan_visit(const Vec2& along_out, Circulation direction) const {
+  const Vec2& center = poi(pending_);
+  const auto turn_center = [&](const Vec2& point, const Vec2& along) {
+    return Vec2(point + r_ * (direction == Circulation::CounterClockwise ? right_of(along) : left_of(along)));
+  };
+  Visit v;
+  v.entry_center = turn_center(center - entry_distance_ * along_in_, along_in_);
+  v.entry = center + R_ * (v.entry_center - center).normalized();
+  v.exit_center = turn_center(center + entry_distance_ * along_out, along_out);
+  v.exit = center + R_ * (v.exit_center - center).normalized();
+  v.sweep = loiter_sweep_ + sweep_between(center, v.entry, v.exit, direction);
+  return v;
+}
+
+// The entry turn, the loiter until the exit point, then the exit turn onto the line `along` from
+// the POI.
 void LdlppWalker::leave(const Vec2& along) {
   const Vec2& center = poi(pending_);
-  const Vec2 turn_end = center + entry_distance_ * along;
-  const Vec2 turn_center = turn_end + r_ * right_of(along);
-  const Vec2 exit = center + R_ * (turn_center - center).normalized();
-  const double sweep = loiter_sweep_ + sweep_between(center, entry_, exit, Circulation::CounterClockwise);
-  sink_.arc(center, R_, Circulation::CounterClockwise, entry_, sweep, SegmentRole::Loiter, pending_);
-  sink_.arc(turn_center, r_, Circulation::Clockwise, exit, turn_angle_, SegmentRole::Exit, pending_);
-  position_ = turn_end;
+  Circulation direction = Circulation::CounterClockwise;
+  Visit v = plan_visit(along, direction);
+  if (choose_direction_) {
+    const Visit mirrored = plan_visit(along, Circulation::Clockwise);
+    if (mirrored.sweep < v.sweep - 1e-12) {
+      v = mirrored;
+      direction = Circulation::Clockwise;
+    }
+  }
+  const Circulation turn = opposite(direction);
+  sink_.arc(v.entry_center, r_, turn, center - entry_distance_ * along_in_, turn_angle_, SegmentRole::Entry,
+            pending_);
+  sink_.arc(center, R_, direction, v.entry, v.sweep, SegmentRole::Loiter, pending_);
+  sink_.arc(v.exit_center, r_, turn, v.exit, turn_angle_, SegmentRole::Exit, pending_);
+  record_direction(pending_, direction);
+  position_ = center + entry_distance_ * along;
 }
 
 }  // namespace detail

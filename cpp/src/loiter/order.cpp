@@ -184,6 +184,8 @@ double loiter_order_length(const LoiterProblem& problem, LoiterMethod method, co
     case LoiterMethod::FlyThrough: return order_length<detail::FlyThroughWalker>(problem, order);
     case LoiterMethod::Tlpp: return order_length<detail::TlppWalker>(problem, order);
     case LoiterMethod::Ldlpp: return order_length<detail::LdlppWalker>(problem, order);
+    case LoiterMethod::TlppBest: return order_length<detail::TlppBothWalker>(problem, order);
+    case LoiterMethod::LdlppBest: return order_length<detail::LdlppBestWalker>(problem, order);
   }
   return kInfinity;
 }
@@ -197,6 +199,8 @@ std::vector<int> best_loiter_order(const LoiterProblem& problem, LoiterMethod me
     case LoiterMethod::FlyThrough: return best_order<detail::FlyThroughWalker>(problem, exact);
     case LoiterMethod::Tlpp: return best_order<detail::TlppWalker>(problem, exact);
     case LoiterMethod::Ldlpp: return best_order<detail::LdlppWalker>(problem, exact);
+    case LoiterMethod::TlppBest: return best_order<detail::TlppBothWalker>(problem, exact);
+    case LoiterMethod::LdlppBest: return best_order<detail::LdlppBestWalker>(problem, exact);
   }
   return {};
 }

@@ -12,12 +12,26 @@ namespace vistrack {
 
 namespace {
 
-template <class Walker>
-void walk(const LoiterProblem& problem, const std::vector<int>& order, LoiterPlan& plan) {
-  Walker walker(problem, detail::PathSink(&plan.segments), &plan.directions);
+template <class Walker, class... Options>
+void walk(const LoiterProblem& problem, const std::vector<int>& order, LoiterPlan& plan, Options... options) {
+  Walker walker(problem, detail::PathSink(&plan.segments), &plan.directions, options...);
   for (const int aoi : order)
     if (!walker.visit(aoi)) walker.failure().raise(problem);
   if (!walker.finish()) walker.failure().raise(problem);
+}
+
+double total_length(const std::vector<LoiterSegment>& segments) {
+  double length = 0.0;
+  for (const LoiterSegment& s : segments) length += s.length;
+  return length;
+}
+
+// TlppBest: TLPP with each first direction; the shorter plan (counter-clockwise on a tie).
+void walk_tlpp_best(const LoiterProblem& problem, const std::vector<int>& order, LoiterPlan& plan) {
+  LoiterPlan clockwise = plan;
+  walk<detail::TlppWalker>(problem, order, plan, Circulation::CounterClockwise);
+  walk<detail::TlppWalker>(problem, order, clockwise, Circulation::Clockwise);
+  if (total_length(clockwise.segments) < total_length(plan.segments) * (1.0 - 1e-12)) plan = std::move(clockwise);
 }
 
 void require_permutation(const std::vector<int>& order, std::size_t n) {
@@ -62,6 +76,8 @@ LoiterPlan plan_loiter_in_order(const LoiterProblem& problem, LoiterMethod metho
     case LoiterMethod::FlyThrough: walk<detail::FlyThroughWalker>(problem, order, plan); break;
     case LoiterMethod::Tlpp: walk<detail::TlppWalker>(problem, order, plan); break;
     case LoiterMethod::Ldlpp: walk<detail::LdlppWalker>(problem, order, plan); break;
+    case LoiterMethod::TlppBest: walk_tlpp_best(problem, order, plan); break;
+    case LoiterMethod::LdlppBest: walk<detail::LdlppWalker>(problem, order, plan, true); break;
   }
   plan.segment_offsets.reserve(plan.segments.size());
   plan.loiter_sweep.assign(problem.aois.size(), 0.0);

@@ -7,6 +7,8 @@
 // then on round to the departure point of the inner tangent to the next circle (eqs. 8-12), the
 // straight tangent, and the entry there. From the last AOI the departure is the tangent point of
 // the line through the end point.
+#include <algorithm>
+
 #include "loiter/tangents.hpp"
 #include "loiter/walkers.hpp"
 
@@ -14,6 +16,15 @@ namespace vistrack::detail {
 
 TlppWalker::TlppWalker(const LoiterProblem& problem, PathSink sink, std::vector<Circulation>* directions)
     : WalkerBase(problem, sink, directions) {}
+
+TlppWalker::TlppWalker(const LoiterProblem& problem, PathSink sink, std::vector<Circulation>* directions,
+                       Circulation first_direction)
+    : WalkerBase(problem, sink, directions), forced_(true), first_direction_(first_direction) {}
+
+TlppBothWalker::TlppBothWalker(const LoiterProblem& problem, PathSink sink)
+    : ccw_(problem, sink, nullptr, Circulation::CounterClockwise), cw_(problem, sink, nullptr, Circulation::Clockwise) {}
+
+double TlppBothWalker::length() const { return std::min(ccw_.length(), cw_.length()); }
 
 double TlppWalker::per_aoi_minimum(const LoiterProblem& problem) {
   return kTwoPi * problem.parameters.turns * problem.parameters.aoi_radius;
@@ -52,7 +63,7 @@ void TlppWalker::enter_first(const Vec2& next) {
   const Vec2 ccw = entry_tangent_point(problem_->start, center, R_, Circulation::CounterClockwise);
   const Vec2 cw = entry_tangent_point(problem_->start, center, R_, Circulation::Clockwise);
   // After the full loiters the aircraft is back at its entry point with the entry heading.
-  direction_ = towards(ccw, heading_of(tangent_direction(center, ccw, Circulation::CounterClockwise)), cw,
+  direction_ = forced_ ? first_direction_ : towards(ccw, heading_of(tangent_direction(center, ccw, Circulation::CounterClockwise)), cw,
                        heading_of(tangent_direction(center, cw, Circulation::Clockwise)), next);
   entry_ = direction_ == Circulation::CounterClockwise ? ccw : cw;
   record_direction(pending_, direction_);

@@ -68,6 +68,9 @@ class FlyThroughWalker : public WalkerBase {
 class TlppWalker : public WalkerBase {
  public:
   TlppWalker(const LoiterProblem& problem, PathSink sink, std::vector<Circulation>* directions = nullptr);
+  // The first AOI's direction given instead of the printed rule (TlppBest tries both).
+  TlppWalker(const LoiterProblem& problem, PathSink sink, std::vector<Circulation>* directions,
+             Circulation first_direction);
   bool visit(int aoi);
   bool finish();
   static double per_aoi_minimum(const LoiterProblem& problem);
@@ -79,21 +82,56 @@ class TlppWalker : public WalkerBase {
   bool first_ = true;  // the pending AOI is the first: its entry waits for the direction
   Vec2 entry_;         // where the pending AOI's loiter starts
   Circulation direction_ = Circulation::CounterClockwise;
+  bool forced_ = false;  // first_direction_ given
+  Circulation first_direction_ = Circulation::CounterClockwise;
+};
+
+// TlppBest in the order search: both first directions walked side by side, without a path; the
+// shorter counts (the plan itself is the shorter of the two TlppWalker plans).
+class TlppBothWalker {
+ public:
+  explicit TlppBothWalker(const LoiterProblem& problem, PathSink sink = PathSink());
+  bool visit(int aoi) { return ccw_.visit(aoi) && cw_.visit(aoi); }
+  bool finish() { return ccw_.finish() && cw_.finish(); }
+  double length() const;
+  const WalkFailure& failure() const { return ccw_.failure(); }
+  static double per_aoi_minimum(const LoiterProblem& problem) { return TlppWalker::per_aoi_minimum(problem); }
+
+ private:
+  TlppWalker ccw_, cw_;
 };
 
 class LdlppWalker : public WalkerBase {
  public:
-  LdlppWalker(const LoiterProblem& problem, PathSink sink, std::vector<Circulation>* directions = nullptr);
+  // choose_direction: each AOI loitered in the direction that loiters less (LdlppBest); else
+  // counter-clockwise, as printed.
+  LdlppWalker(const LoiterProblem& problem, PathSink sink, std::vector<Circulation>* directions = nullptr,
+              bool choose_direction = false);
   bool visit(int aoi);
   bool finish();
   static double per_aoi_minimum(const LoiterProblem& problem);
 
  private:
+  // The entry and exit turns, loiter and exit point at the pending AOI for a loiter direction.
+  struct Visit {
+    Vec2 entry_center, entry, exit, exit_center;
+    double sweep;
+  };
+  Visit plan_visit(const Vec2& along_out, Circulation direction) const;
   void enter(int aoi, const Vec2& along);
   void leave(const Vec2& along);
 
   double entry_distance_, turn_angle_;
-  Vec2 entry_;  // where the pending AOI's loiter starts
+  bool choose_direction_;
+  Vec2 along_in_;  // the line the pending AOI is entered along (its entry turn is drawn on leaving)
+};
+
+// LdlppBest for the order search (the walkers are built from (problem, sink)).
+class LdlppBestWalker : public LdlppWalker {
+ public:
+  explicit LdlppBestWalker(const LoiterProblem& problem, PathSink sink = PathSink(),
+                           std::vector<Circulation>* directions = nullptr)
+      : LdlppWalker(problem, sink, directions, true) {}
 };
 
 }  // namespace vistrack::detail

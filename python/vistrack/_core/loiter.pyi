@@ -8,7 +8,7 @@ import numpy.typing
 import typing
 import vistrack.georeference
 import vistrack.mission.model
-__all__: list[str] = ['Camera', 'Coverage', 'CoverageOptions', 'EXACT_ORDER_LIMIT', 'Footprint', 'METHODS', 'ORDERS', 'Parameters', 'Plan', 'STANDARD_GRAVITY', 'Samples', 'Segment', 'bank_angle', 'best_order', 'ellipse_disk_area', 'entry_angle', 'entry_distance', 'order_length', 'plan', 'plan_coverage', 'plan_in_order', 'sample_coverage', 'turn_angle']
+__all__: list[str] = ['BEYOND_PAPER_METHODS', 'Camera', 'Coverage', 'CoverageOptions', 'EXACT_ORDER_LIMIT', 'Footprint', 'METHODS', 'ORDERS', 'Parameters', 'Plan', 'STANDARD_GRAVITY', 'Samples', 'Segment', 'bank_angle', 'best_order', 'ellipse_disk_area', 'entry_angle', 'entry_distance', 'order_length', 'plan', 'plan_coverage', 'plan_in_order', 'sample_coverage', 'turn_angle']
 class Parameters:
     """
     The vehicle and the loiters of a plan; the defaults (section 4.1's Raven RQ-11B, R = r, one loiter) are those of plan() and of a loiter scenario.
@@ -502,6 +502,7 @@ def turn_angle(aoi_radius: typing.SupportsFloat | typing.SupportsIndex, turn_rad
     """
     Heading change of LDLPP's entry and exit turns, pi/2 - alpha_ED, rad.
     """
+BEYOND_PAPER_METHODS: tuple = ('tlpp_best', 'ldlpp_best')
 EXACT_ORDER_LIMIT: int = 9
 METHODS: tuple = ('fly_through', 'tlpp', 'ldlpp')
 ORDERS: tuple = ('given', 'best')

@@ -17,6 +17,7 @@ from functools import partial
 from pathlib import Path
 
 from .. import loiter
+from .._core import VistrackError
 from ..loiter import study as loiter_study
 from ..progress import Progress
 from ..report import loiter as report
@@ -36,8 +37,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="seed of the random scenarios (default 0)")
     p.add_argument("--aois", type=count("--aois", 1, 10000), nargs="+", default=list(range(4, 10)),
                    help="AOI counts the random scenarios cycle through (default 4 5 6 7 8 9)")
-    p.add_argument("--method", nargs="+", choices=loiter.METHODS, default=list(loiter.METHODS),
-                   help="methods (default all three)")
+    p.add_argument("--method", nargs="+", choices=loiter.PLAN_METHODS, default=list(loiter.ALL_METHODS),
+                   help="methods (default the paper's three and, beyond the paper, tlpp_best and ldlpp_best; "
+                        "best: the fastest of them all)")
     p.add_argument("--order", choices=loiter.ORDERS, default="given",
                    help="'best' also plans the best visiting order and reports the time saved")
     p.add_argument("--wind", action="append", default=[], metavar="E,N", type=finite_numbers("--wind", 2, "5,0", 1e4),
@@ -75,9 +77,15 @@ def run(args: argparse.Namespace) -> int:
         scenarios = [loiter.load_scenario(path) for path in args.scenarios]
         for scenario in scenarios:
             scenario.dynamics = args.dynamics or scenario.dynamics
-        rows, written = [], []
+        rows, written, planned = [], [], 0
         for scenario in scenarios:
-            runs = loiter_study.evaluate(scenario, args.method, args.order, winds)
+            refused: dict[str, str] = {}
+            runs = loiter_study.evaluate(scenario, args.method, args.order, winds, refused)
+            for method, reason in refused.items():
+                print(f"{scenario.name} {method}: skipped, cannot fly this layout: {reason}")
+            if not runs:
+                continue
+            planned += 1
             folder = args.out if len(scenarios) == 1 else args.out / scenario.name
             written += report.write_scenario(folder, scenario, runs, options, given[0] if given else None)
             rows += [run.record(scenario) for run in runs]
@@ -88,6 +96,9 @@ def run(args: argparse.Namespace) -> int:
                 if run.best_plan is not None:
                     line += f"; best order {run.best_plan.flight_time / 60:.2f} min"
                 print(line)
+        if not planned:
+            raise VistrackError("--method: no method given can fly " + ("this layout" if len(scenarios) == 1 else
+                                                                         "any of these layouts"))
         if winds and len(scenarios) == 1:
             print(report.wind_markdown(loiter_study.wind_summary(rows)), end="")
         if len(scenarios) > 1:
@@ -97,7 +108,12 @@ def run(args: argparse.Namespace) -> int:
         scenario = (loiter.load_scenario(args.scenarios[0]) if args.scenarios
                     else next(loiter_study.random_scenarios(1, args.seed, args.aois)))
         altitude = scenario.camera.altitude if args.altitude is None else args.altitude
-        plans = {method: scenario.plan(method, args.order) for method in args.method}
+        plans = {}
+        for method in args.method:
+            try:
+                plans[method] = scenario.plan(method, args.order)
+            except VistrackError:
+                continue  # skipped above with its reason
         export_missions(args.export, {m: partial(p.to_mission, altitude=altitude) for m, p in plans.items()},
                         args.origin or scenario.origin, DEFAULT_EXPORT_ORIGIN)
     print(f"{len(written)} files in {args.out}")

@@ -33,11 +33,15 @@ from .flying import (
     path_pieces,
 )
 from .planning import (
+    ALL_METHODS,
     AREA_SIZE,
+    BEYOND_PAPER_METHODS,
     EXACT_ORDER_LIMIT,
     METHOD_NAMES,
     METHODS,
+    OBJECTIVES,
     ORDERS,
+    PLAN_METHODS,
     Camera,
     Coverage,
     CoverageOptions,
@@ -71,11 +75,15 @@ from .scenario import (
 )
 
 __all__ = [
+    "ALL_METHODS",
     "AREA_SIZE",
+    "BEYOND_PAPER_METHODS",
     "EXACT_ORDER_LIMIT",
     "METHODS",
     "METHOD_NAMES",
+    "OBJECTIVES",
     "ORDERS",
+    "PLAN_METHODS",
     "Camera",
     "Coverage",
     "CoverageOptions",

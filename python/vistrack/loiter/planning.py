@@ -23,8 +23,15 @@ Parameters = _loiter.Parameters
 CoverageOptions = _loiter.CoverageOptions
 Wind = _flight.Wind
 FlightTrajectory = _flight.FlightTrajectory
-METHODS: tuple[str, ...] = tuple(_loiter.METHODS)
-METHOD_NAMES = {"fly_through": "Fly-Through", "tlpp": "TLPP", "ldlpp": "LDLPP"}
+METHODS: tuple[str, ...] = tuple(_loiter.METHODS)  # the paper's printed planners
+# Beyond the paper: TLPP with both first directions tried, LDLPP with each AOI's loiter direction
+# chosen; "best" plans every method and keeps the best plan (plan.method says which).
+BEYOND_PAPER_METHODS: tuple[str, ...] = tuple(_loiter.BEYOND_PAPER_METHODS)
+ALL_METHODS: tuple[str, ...] = METHODS + BEYOND_PAPER_METHODS
+PLAN_METHODS: tuple[str, ...] = (*ALL_METHODS, "best")
+OBJECTIVES: tuple[str, ...] = ("time", "coverage")
+METHOD_NAMES = {"fly_through": "Fly-Through", "tlpp": "TLPP", "ldlpp": "LDLPP", "tlpp_best": "TLPP best-first*",
+                "ldlpp_best": "LDLPP per-AOI*", "best": "best*"}
 ORDERS: tuple[str, ...] = tuple(_loiter.ORDERS)
 EXACT_ORDER_LIMIT: int = _loiter.EXACT_ORDER_LIMIT
 entry_angle = _loiter.entry_angle
@@ -67,15 +74,37 @@ def _point(value: Point, key: str) -> tuple[float, float]:
 
 def plan(aois: Points, method: str = "ldlpp", start: Point = (0.0, 0.0), end: Point = (0.0, 0.0),
          turn_radius: float = _PLAN.turn_radius, speed: float = _PLAN.speed,
-         aoi_radius: float = _PLAN.aoi_radius, turns: int = _PLAN.turns, order: str = "given") -> Plan:
+         aoi_radius: float = _PLAN.aoi_radius, turns: int = _PLAN.turns, order: str = "given", *,
+         objective: str = "time", camera: Camera | None = None, threshold: float = _COVERAGE.threshold,
+         dt: float = _COVERAGE.dt) -> Plan:
     """Plan a loiter mission over the AOI centres ``aois`` (n, 2).
 
-    ``method``: "fly_through", "tlpp" or "ldlpp"; ``order``: "given" or "best" (the visiting order
-    with the shortest plan: exact branch and bound up to 9 AOIs, 2-opt / or-opt above). Returns a
-    :class:`Plan` with ``flight_time``, ``transit_time``, ``length``, ``segments`` and ``sample(dt)``.
+    ``method``: the paper's "fly_through", "tlpp" or "ldlpp"; beyond the paper "tlpp_best" (both
+    first directions tried), "ldlpp_best" (each AOI's loiter direction chosen) and "best" (every
+    method that can fly the layout; the fastest plan with ``objective="time"``, the most covered
+    seconds with ``"coverage"`` (``camera``, ``threshold``, ``dt`` as :func:`coverage`); ties go
+    to the printed methods; ``plan.method`` says which). ``order``: "given" or "best" (the
+    visiting order with the shortest plan: exact branch and bound up to 9 AOIs, 2-opt / or-opt
+    above). Returns a :class:`Plan` with ``flight_time``, ``transit_time``, ``length``,
+    ``segments`` and ``sample(dt)``.
     """
-    return _loiter.plan(_points(aois), method, _point(start, "start"), _point(end, "end"), turn_radius, speed,
-                        aoi_radius, turns, order)
+    if objective not in OBJECTIVES:
+        raise VistrackError(f"objective = {objective!r}: must be one of " + ", ".join(OBJECTIVES))
+    args = (_points(aois), _point(start, "start"), _point(end, "end"), turn_radius, speed, aoi_radius, turns, order)
+    if method != "best":
+        return _loiter.plan(args[0], method, *args[1:])
+    plans, refusals = [], []
+    for candidate in ALL_METHODS:
+        try:
+            plans.append(_loiter.plan(args[0], candidate, *args[1:]))
+        except VistrackError as error:
+            refusals.append(f"{candidate}: {error}")
+    if not plans:
+        raise VistrackError("method = 'best': no method can fly this layout (" + "; ".join(refusals) + ")")
+    if objective == "time":
+        return min(plans, key=lambda p: p.flight_time)  # min keeps the first of equals: the printed ones
+    scores = [coverage(p, camera=camera, threshold=threshold, dt=dt).time for p in plans]
+    return plans[int(np.argmax(scores))]
 
 
 def plan_in_order(aois: Points, order: Sequence[int], method: str = "ldlpp", start: Point = (0.0, 0.0),

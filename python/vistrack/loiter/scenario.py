@@ -48,9 +48,9 @@ class Scenario:
                    dynamics=self.dynamics, roll_time_constant=self.roll_time_constant,
                    max_roll_rate_deg_s=self.max_roll_rate_deg_s)
 
-    def plan(self, method: str, order: str = "given") -> Plan:
+    def plan(self, method: str, order: str = "given", objective: str = "time") -> Plan:
         return plan(self.aois, method, self.start, self.end, self.turn_radius, self.speed, self.aoi_radius,
-                    self.turns, order)
+                    self.turns, order, objective=objective, camera=self.camera, threshold=self.threshold, dt=self.dt)
 
     def coverage(self, plan_or_samples: Plan | np.ndarray) -> Coverage:
         return coverage(plan_or_samples, self.aois, self.camera, self.threshold, self.dt, speed=self.speed,

@@ -10,6 +10,7 @@ from typing import Any
 
 import numpy as np
 
+from .._core import VistrackError
 from .flying import fly_and_score
 from .planning import METHOD_NAMES, METHODS, Coverage, Plan, metrics
 from .scenario import Scenario, random_aois
@@ -49,12 +50,20 @@ class MethodRun:
 
 
 def evaluate(scenario: Scenario, methods: Sequence[str] = METHODS, order: str = "given",
-             winds: Sequence[tuple[float, float]] = ()) -> list[MethodRun]:
+             winds: Sequence[tuple[float, float]] = (), refused: dict[str, str] | None = None) -> list[MethodRun]:
     """Plan and score each method; ``order="best"`` adds the best visiting order; ``winds`` flies
-    each plan in those constant (east, north) winds and scores the flown paths."""
+    each plan in those constant (east, north) winds and scores the flown paths. With ``refused``,
+    a method that cannot fly the layout is skipped and its reason stored there by method (LDLPP
+    needs room for its turns); without, its VistrackError is raised."""
     runs = []
     for method in methods:
-        plan = scenario.plan(method)
+        try:
+            plan = scenario.plan(method)
+        except VistrackError as error:
+            if refused is None:
+                raise
+            refused[method] = str(error)
+            continue
         run = MethodRun(method, plan, scenario.coverage(plan))
         if order == "best":
             run.best_plan = scenario.plan(method, "best")

@@ -14,7 +14,8 @@ import numpy as np
 from .common import pyplot, save_figure
 
 ROLE_COLORS = {"transit": "tab:blue", "entry": "tab:orange", "loiter": "tab:green", "exit": "tab:red"}
-METHOD_COLORS = {"fly_through": "tab:red", "tlpp": "tab:blue", "ldlpp": "tab:green"}
+METHOD_COLORS = {"fly_through": "tab:red", "tlpp": "tab:blue", "ldlpp": "tab:green", "tlpp_best": "tab:cyan",
+                 "ldlpp_best": "tab:olive", "best": "tab:purple"}
 METHOD_NAMES = {"fly_through": "Fly-Through", "tlpp": "TLPP", "ldlpp": "LDLPP"}  # as vistrack.loiter.METHOD_NAMES
 
 
