@@ -19,6 +19,7 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
 from vistrack import loiter  # noqa: E402
+from vistrack.loiter.study import PAPER_AREA_PER_SECOND  # noqa: E402
 
 ROLES = ("transit", "entry", "loiter", "exit")
 
@@ -45,14 +46,14 @@ def main() -> None:
                 paper = scenario.paper.get(method, {})
                 times.append(f"{paper.get('flight_time_min', float('nan')):.2f} / {plan.flight_time / 60:.2f}")
                 areas.append(f"{paper.get('coverage_m2', float('nan')) / 1e3:.0f} / {cov.area / 1e3:.0f}")
-                covered.append(f"{cov.time:.0f}")
+                covered.append(f"{paper.get('coverage_m2', float('nan')) / PAPER_AREA_PER_SECOND:.0f} / {cov.time:.0f}")
                 for role, steps in loiter.coverage_by_role(plan, cov, scenario.dt, scenario.threshold).items():
                     roles[method][role][0] += steps["steps"]
                     roles[method][role][1] += steps["covered_steps"]
             name = loiter.METHOD_NAMES[method]
             print(f"| {name} | flight time (min) | " + " | ".join(times) + " |")
-            print("| | coverage (10^3 m^2) | " + " | ".join(areas) + " |")
-            print("| | covered time, ours (s) | " + " | ".join(covered) + " |")
+            print("| | covered time (s) | " + " | ".join(covered) + " |")
+            print("| | coverage (10^3 m^2 s; the paper's m^2) | " + " | ".join(areas) + " |")
         print(f"\nCovered share of the time on each kind of segment ({title}), six scenarios:\n")
         print("| | " + " | ".join(ROLES) + " |")
         print("|---|" + "---|" * len(ROLES))

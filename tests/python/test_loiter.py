@@ -447,3 +447,25 @@ def test_best_plans_a_layout_ldlpp_cannot_fly(tmp_path: Path, capsys: pytest.Cap
     assert main(["loiter", str(scenario), "--method", "ldlpp", "ldlpp_best", "--out", str(tmp_path / "p"),
                  "--quiet", *NO_MEDIA]) == 1
     assert "no method given can fly" in capsys.readouterr().err
+
+
+def test_report_says_the_units_and_the_papers_numbers_per_scenario(tmp_path: Path) -> None:
+    """Issue 33: coverage in covered seconds beside the paper's (its m^2 over the 6,669.56 m^2 it
+    counts per covered second), the camera mount in metrics.json, AOIs numbered from 0 everywhere,
+    the coverage and gimbal timeline."""
+    from vistrack.cli import main
+    from vistrack.loiter.study import PAPER_AREA_PER_SECOND
+
+    assert PAPER_AREA_PER_SECOND == pytest.approx(6669.56, abs=0.01)
+    four = REPO / "examples" / "loiter_4aoi.yaml"
+    assert main(["loiter", str(four), "--out", str(tmp_path / "o"), "--quiet", *NO_MEDIA]) == 0
+    metrics = json.loads((tmp_path / "o" / "metrics.json").read_text())
+    assert metrics["camera"]["mount"] == "levelled"
+    rows = {m["method"]: m for m in metrics["methods"]}
+    assert rows["tlpp"]["paper_covered_time_s"] == pytest.approx(131.0, abs=1e-6)  # 873,713 m^2 in Table 1
+    assert rows["ldlpp"]["paper_covered_time_s"] == pytest.approx(140.0, abs=1e-3)  # Table 1 rounds to 1 m^2
+    assert "coverage_area_m2s" in rows["ldlpp"] and "coverage_area_m2" not in rows["ldlpp"]
+    report = (tmp_path / "o" / "report.md").read_text()
+    assert "| paper: covered time (s) |" in report and "| 131.0 |" in report and "10^3 m^2 s" in report
+    assert "timeline.png" in report and (tmp_path / "o" / "timeline.png").stat().st_size > 10_000
+    assert "numbered from 0" in report

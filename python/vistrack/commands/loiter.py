@@ -92,7 +92,7 @@ def run(args: argparse.Namespace) -> int:
             for run in runs:
                 line = (f"{scenario.name} {run.method}: {run.plan.flight_time / 60:.2f} min, transit "
                         f"{run.plan.transit_time:.0f} s, covered {run.coverage.time:.0f} s, "
-                        f"area {run.coverage.area:.0f} m^2")
+                        f"area {run.coverage.area:.0f} m^2 s")
                 if run.best_plan is not None:
                     line += f"; best order {run.best_plan.flight_time / 60:.2f} min"
                 print(line)

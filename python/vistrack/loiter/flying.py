@@ -97,7 +97,7 @@ def fly_and_score(scenario: Scenario, plan: Plan, wind: tuple[float, float], pla
         "flight_time_s": float(trajectory.end_time), "planned_flight_time_s": plan.flight_time,
         "coverage_time_s": flown.time, "planned_coverage_time_s": planned.time,
         "coverage_time_per_aoi_s": [float(t) for t in flown.time_per_aoi],
-        "coverage_area_m2": flown.area, "planned_coverage_area_m2": planned.area,
+        "coverage_area_m2s": flown.area, "planned_coverage_area_m2s": planned.area,
         "loiter_covered_fraction": flown_loiter, "planned_loiter_covered_fraction": planned_loiter,
         "loiter_coverage_lost": planned_loiter - flown_loiter,
         "max_cross_track_m": float(np.max(cross_track)),

@@ -205,7 +205,7 @@ def metrics(plan: Plan, cov: Coverage | None = None, dt: float = _COVERAGE.dt,
     if cov is not None:
         out.update({
             "coverage_time_s": cov.time, "coverage_time_per_aoi_s": [float(t) for t in cov.time_per_aoi],
-            "coverage_area_m2": cov.area, "steps_by_role": coverage_by_role(plan, cov, dt, threshold),
+            "coverage_area_m2s": cov.area, "steps_by_role": coverage_by_role(plan, cov, dt, threshold),
         })
     return out
 

@@ -15,7 +15,13 @@ from .flying import fly_and_score
 from .planning import METHOD_NAMES, METHODS, Coverage, Plan, metrics
 from .scenario import Scenario, random_aois
 
-__all__ = ["MethodRun", "evaluate", "random_scenarios", "random_study", "summary", "wind_directions", "wind_summary"]
+# The AOI area the paper's Table 1 counts per covered second (m^2): its TLPP and LDLPP coverages are
+# whole multiples of it (873,713 = 131 x 6,669.56; pi x 46.076^2, close to but not the AOI's
+# pi x 46^2 = 6,647.6), so coverage / this is the paper's covered time in seconds.
+PAPER_AREA_PER_SECOND = 873713.0 / 131.0
+
+__all__ = ["PAPER_AREA_PER_SECOND", "MethodRun", "evaluate", "random_scenarios", "random_study", "summary",
+           "wind_directions", "wind_summary"]
 
 
 @dataclass
@@ -38,6 +44,8 @@ class MethodRun:
         if paper:
             row["paper_flight_time_min"] = paper.get("flight_time_min")
             row["paper_coverage_m2"] = paper.get("coverage_m2")
+            if paper.get("coverage_m2") is not None:
+                row["paper_covered_time_s"] = paper["coverage_m2"] / PAPER_AREA_PER_SECOND
         if self.best_plan is not None and self.best_coverage is not None:
             row["best_order"] = list(self.best_plan.order)
             row["best_flight_time_s"] = self.best_plan.flight_time

@@ -11,12 +11,12 @@ from typing import Any
 
 import numpy as np
 
+from ..loiter.planning import METHOD_NAMES
 from .common import pyplot, save_figure
 
 ROLE_COLORS = {"transit": "tab:blue", "entry": "tab:orange", "loiter": "tab:green", "exit": "tab:red"}
 METHOD_COLORS = {"fly_through": "tab:red", "tlpp": "tab:blue", "ldlpp": "tab:green", "tlpp_best": "tab:cyan",
                  "ldlpp_best": "tab:olive", "best": "tab:purple"}
-METHOD_NAMES = {"fly_through": "Fly-Through", "tlpp": "TLPP", "ldlpp": "LDLPP"}  # as vistrack.loiter.METHOD_NAMES
 
 
 def _segment_points(segment: Any, step: float = 2.0) -> np.ndarray:
@@ -25,13 +25,14 @@ def _segment_points(segment: Any, step: float = 2.0) -> np.ndarray:
 
 
 def draw_plan(ax: Any, plan: Any, coverage: Any = None, title: str | None = None, legend: bool = True) -> None:
-    """A plan on its AOIs: the AOI disks, the path coloured by role, start/end, visiting order."""
+    """A plan on its AOIs: the AOI disks, the path coloured by role, start/end, visiting order. AOIs are
+    labelled by their index (as in tables, metrics.json and errors) and their place in the order."""
     aois = np.asarray(plan.aois)
     circle = np.linspace(0.0, 2.0 * math.pi, 200)
     for i, (x, y) in enumerate(aois):
         ax.fill(x + plan.aoi_radius * np.cos(circle), y + plan.aoi_radius * np.sin(circle), color="0.85", zorder=0)
         rank = list(plan.order).index(i) + 1
-        label = f"{rank}"
+        label = f"AOI {i}\nvisit {rank}"
         if coverage is not None:
             label += f"\n{coverage.time_per_aoi[i]:.0f} s"
         ax.text(x, y, label, ha="center", va="center", fontsize=7, zorder=5)
@@ -94,7 +95,7 @@ def scenarios_figure(plans: Sequence[Any], names: Sequence[str], path: Path) -> 
 def comparison_figure(rows: Sequence[Mapping[str, Any]], path: Path) -> Path:
     """Coverage and transit time per method and scenario, ours beside the paper's (Figure 14).
 
-    ``rows``: one per (scenario, method) with keys scenario, aois, method, coverage_area_m2,
+    ``rows``: one per (scenario, method) with keys scenario, aois, method, coverage_area_m2s,
     transit_time_s, flight_time_min and optionally paper_coverage_m2, paper_flight_time_min."""
     plt = pyplot()
     scenarios = sorted({(r["aois"], r["scenario"]) for r in rows})
@@ -102,7 +103,7 @@ def comparison_figure(rows: Sequence[Mapping[str, Any]], path: Path) -> Path:
     fig, axes = plt.subplots(3, 1, figsize=(9.0, 10.0), constrained_layout=True)
     width = 0.8 / len(methods)
     x = np.arange(len(scenarios))
-    panels = [("coverage_area_m2", "paper_coverage_m2", 1e-6, "AOI coverage (10^6 m^2)"),
+    panels = [("coverage_time_s", "paper_covered_time_s", 1.0, "AOI covered time (s; the paper's m^2 / 6,669.56)"),
               ("flight_time_min", "paper_flight_time_min", 1.0, "flight time (min)"),
               ("transit_time_s", None, 1.0, "transit time (s)")]
     for ax, (key, paper_key, scale, label) in zip(axes, panels):
@@ -157,6 +158,37 @@ def distribution_figure(records: Sequence[Mapping[str, Any]], path: Path) -> Pat
     fig.suptitle(f"{len(records) // max(1, len(methods))} random scenarios (boxes: quartiles, whiskers: 1.5 IQR)",
                  fontsize=10)
     return save_figure(fig, path)
+
+
+def timeline_figure(runs: Sequence[Any], threshold: float, dt: float, path: Path, name: str = "") -> Path:
+    """Coverage and gimbal over time, one row of panels per method: which AOI is covered at each
+    step (AOI index against time, a mark where at least ``threshold`` of it is in the footprint),
+    and the gimbal and bank angles (degrees, positive left)."""
+    plt = pyplot()
+    fig, axes = plt.subplots(len(runs), 2, figsize=(12.0, 2.2 * len(runs) + 0.6), squeeze=False,
+                             constrained_layout=True)
+    for (ax_cov, ax_angle), run in zip(axes, runs):
+        cov = run.coverage
+        fraction = np.asarray(cov.fraction)
+        t = np.arange(fraction.shape[0]) * dt
+        color = METHOD_COLORS.get(run.method, "0.3")
+        for aoi in range(fraction.shape[1]):
+            covered = fraction[:, aoi] >= threshold
+            ax_cov.plot(t[covered], np.full(int(covered.sum()), aoi), "|", color=color, ms=8)
+        ax_cov.set_yticks(range(fraction.shape[1]))
+        ax_cov.set_ylabel("AOI covered")
+        ax_cov.set_title(f"{METHOD_NAMES.get(run.method, run.method)}: {cov.time:.0f} s covered", fontsize=9)
+        ax_angle.plot(t, np.degrees(np.asarray(cov.gimbal)), color=color, lw=1, label="gimbal")
+        ax_angle.plot(t, np.degrees(np.asarray(cov.bank)), color="0.5", lw=0.8, ls="--", label="bank")
+        ax_angle.set_ylabel("angle (deg)")
+        ax_angle.legend(fontsize=7, loc="upper right")
+        for ax in (ax_cov, ax_angle):
+            ax.grid(True, alpha=0.3)
+    axes[-1, 0].set_xlabel("t (s)")
+    axes[-1, 1].set_xlabel("t (s)")
+    if name:
+        fig.suptitle(f"{name}: coverage and gimbal over time")
+    return save_figure(fig, path, dpi=110)
 
 
 def wind_figure(plan: Any, flights: Sequence[tuple[str, np.ndarray]], path: Path, title: str = "") -> Path:

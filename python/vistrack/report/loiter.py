@@ -15,7 +15,7 @@ from .. import loiter
 from ..io import write_json
 from ..loiter import METHOD_NAMES
 from ..loiter.files import write_loiter_samples_csv
-from ..loiter.study import MethodRun, summary, wind_summary
+from ..loiter.study import PAPER_AREA_PER_SECOND, MethodRun, summary, wind_summary
 from ..plotting import loiter as figures
 from ..plotting.motion import Line, MotionScene, Overlay, Track, circle_ring, ellipse_ring, sampled
 from ..report_options import ReportOptions
@@ -37,7 +37,8 @@ def write_scenario(out: Path, scenario: loiter.Scenario, runs: Sequence[MethodRu
         "aoi_radius": scenario.aoi_radius, "turns": scenario.turns, "threshold": scenario.threshold,
         "dt": scenario.dt, "camera": {"fov_deg": scenario.camera.fov_deg,
                                       "max_gimbal_deg": scenario.camera.max_gimbal_deg,
-                                      "altitude": scenario.camera.altitude},
+                                      "altitude": scenario.camera.altitude,
+                                      "mount": "levelled" if scenario.camera.levelled else "roll"},
         "methods": [run.record(scenario) for run in runs],
         "loiters": {run.method: loiter.loiter_circles(run.plan) for run in runs},
         "segments": {run.method: loiter.segment_records(run.plan) for run in runs},
@@ -48,6 +49,8 @@ def write_scenario(out: Path, scenario: loiter.Scenario, runs: Sequence[MethodRu
     plans = {run.method: run.plan for run in runs}
     written.append(figures.methods_figure(plans, {run.method: run.coverage for run in runs},
                                           out / "plans.png", scenario.name))
+    written.append(figures.timeline_figure(runs, scenario.threshold, scenario.dt, out / "timeline.png",
+                                           scenario.name))
     best = {run.method: run.best_plan for run in runs if run.best_plan is not None}
     if best:
         written.append(figures.methods_figure(best, {run.method: run.best_coverage for run in runs
@@ -124,19 +127,34 @@ def scenario_document(scenario: loiter.Scenario, runs: Sequence[MethodRun], file
                " ".join(str(int(i)) for i in run.plan.order)]
         if run.best_plan is not None:
             row.append(f"{run.best_plan.flight_time / 60:.2f}")
+        if scenario.paper:
+            paper = scenario.paper.get(run.method, {})
+            minutes, area = paper.get("flight_time_min"), paper.get("coverage_m2")
+            row += ["-" if minutes is None else f"{minutes:.2f}",
+                    "-" if area is None else f"{area / PAPER_AREA_PER_SECOND:.1f}"]
         rows.append(row)
-    header = ["method", "flight time (min)", "transit (s)", "covered time (s)", "coverage (10^3 m^2)", "order"]
+    header = ["method", "flight time (min)", "transit (s)", "covered time (s)", "coverage (10^3 m^2 s)", "order"]
     if any(run.best_plan is not None for run in runs):
         header.append("best order (min)")
+    if scenario.paper:
+        header += ["paper: flight time (min)", "paper: covered time (s)"]
     cam = scenario.camera
     summary_lines = [f"{len(scenario.aois)} AOIs of radius {scenario.aoi_radius:g} m, turn radius "
                      f"{scenario.turn_radius:g} m, {scenario.speed:g} m/s, start {tuple(scenario.start)}, end "
                      f"{tuple(scenario.end)}",
                      f"Camera {cam.fov_deg:g} deg on a +-{cam.max_gimbal_deg:g} deg roll gimbal at {cam.altitude:g} m; "
                      f"an AOI is covered when {100 * scenario.threshold:.0f} % of it is in view, steps of "
-                     f"{scenario.dt:g} s"]
+                     f"{scenario.dt:g} s; the camera " + ("levelled (the gimbal angle from the vertical, as the paper)"
+                                                         if cam.levelled else
+                                                         "on the banked body (the gimbal angle from the wings)"),
+                     "Coverage: covered time is the seconds an AOI is covered, summed over AOIs; coverage in m^2 s "
+                     "adds, every step, the area of each covered AOI in view, times the step. The paper labels its "
+                     "coverage m^2; its TLPP and LDLPP values are whole multiples of 6,669.56 m^2, the area it counts "
+                     "per covered second, so its covered time is that value / 6,669.56",
+                     "AOIs are numbered from 0 in the order of the scenario file, everywhere; * beyond the paper"]
     blocks: list[Any] = [Heading("Methods"), Table(header, rows)]
-    titles = {"plans.png": "Plans (the paper's Figures 6, 9, 12)", "plans_best_order.png": "Plans in the best order"}
+    titles = {"plans.png": "Plans (the paper's Figures 6, 9, 12)", "timeline.png": "Coverage and gimbal over time",
+              "plans_best_order.png": "Plans in the best order"}
     blocks += [Picture(name, titles[name]) for name in titles if name in files]
     blocks += [Picture(f"wind_{run.method}.png", f"{METHOD_NAMES[run.method]} flown in unknown wind")
                for run in runs if f"wind_{run.method}.png" in files]
@@ -147,7 +165,9 @@ def scenario_document(scenario: loiter.Scenario, runs: Sequence[MethodRun], file
 
 
 def table_markdown(rows: Sequence[dict[str, Any]]) -> str:
-    """Table 1 beside ours: flight time (min) and AOI coverage (10^3 m^2) per method and size."""
+    """Table 1 beside ours: flight time (min) and AOI coverage per method and size, in covered
+    seconds (the paper's m^2 over the area it counts per covered second, PAPER_AREA_PER_SECOND) and
+    in 10^3 m^2 s (the paper's unit label says m^2)."""
     sizes = sorted({int(r["aois"]) for r in rows})
     lines = ["| method | | " + " | ".join(f"{n} AOIs" for n in sizes) + " |",
              "|---|---|" + "---|" * len(sizes)]
@@ -161,9 +181,10 @@ def table_markdown(rows: Sequence[dict[str, Any]]) -> str:
         name = METHOD_NAMES[method]
         lines.append(f"| {name} | flight time, paper (min) | {cells('paper_flight_time_min', 1.0, 2)} |")
         lines.append(f"| | flight time, ours (min) | {cells('flight_time_min', 1.0, 2)} |")
-        lines.append(f"| | coverage, paper (10^3 m^2) | {cells('paper_coverage_m2', 1e-3, 0)} |")
-        lines.append(f"| | coverage, ours (10^3 m^2) | {cells('coverage_area_m2', 1e-3, 0)} |")
+        lines.append(f"| | covered time, paper (s) | {cells('paper_covered_time_s', 1.0, 1)} |")
         lines.append(f"| | covered time, ours (s) | {cells('coverage_time_s', 1.0, 0)} |")
+        lines.append(f"| | coverage, paper (10^3 m^2 s) | {cells('paper_coverage_m2', 1e-3, 0)} |")
+        lines.append(f"| | coverage, ours (10^3 m^2 s) | {cells('coverage_area_m2s', 1e-3, 0)} |")
         lines.append(f"| | transit time, ours (s) | {cells('transit_time_s', 1.0, 0)} |")
         if all("best_flight_time_s" in by_size[n] for n in sizes):
             lines.append(f"| | best order, ours (min) | {cells('best_flight_time_s', 1 / 60.0, 2)} |")

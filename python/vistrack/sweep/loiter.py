@@ -30,7 +30,7 @@ by one inside a block). To compare methods on the same random layouts, vary ``ra
 and ``wind: {speed, direction_deg}`` (now ``east``, ``north``).
 
 Metrics: the plan's (``vt.loiter.metrics`` without its lists: ``length_m``, ``flight_time_s``,
-``transit_time_s``, ``loiter_time_s``, ``coverage_time_s``, ``coverage_area_m2``,
+``transit_time_s``, ``loiter_time_s``, ``coverage_time_s``, ``coverage_area_m2s``,
 ``steps_by_role.<role>.steps|covered_steps``), ``aois``, ``coverage_per_aoi_s`` and
 ``min_coverage_per_aoi_s``; with wind, the flown path's as ``flown.*`` (``flown.flight_time_s``,
 ``flown.coverage_time_s``, ``flown.loiter_covered_fraction``, ``flown.loiter_coverage_lost``,
@@ -70,10 +70,10 @@ _UAV = ("speed", "min_turn_radius", "altitude")
 _CAMERA = ("fov_deg", "max_gimbal_deg", "mount")
 _WIND = ("east", "north")
 _RANDOM = ("count", "seed")
-_FLOWN = ("finished", "flight_time_s", "coverage_time_s", "coverage_area_m2", "loiter_covered_fraction",
+_FLOWN = ("finished", "flight_time_s", "coverage_time_s", "coverage_area_m2s", "loiter_covered_fraction",
           "planned_loiter_covered_fraction", "loiter_coverage_lost", "max_cross_track_m", "rms_cross_track_m")
 _METRICS = ("method", "aois", "length_m", "flight_time_s", "flight_time_min", "transit_time_s", "loiter_time_s",
-            "coverage_time_s", "coverage_area_m2", "coverage_per_aoi_s", "min_coverage_per_aoi_s",
+            "coverage_time_s", "coverage_area_m2s", "coverage_per_aoi_s", "min_coverage_per_aoi_s",
             "steps_by_role.*", *(f"flown.{name}" for name in _FLOWN), "flown.smoothness.*")
 
 

@@ -1,0 +1,45 @@
+"""The units of ``vistrack waypoints``: the flight settings its flags ask for, in metres (the
+default aircraft on the roll model, L1 legs) or in the waypoint paper's dimensionless units
+(--paper-units: its section 3, the Dubins vehicle and law (5)), after checking that the route's
+scale fits them."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+import numpy as np
+
+from .. import waypoint_nav as wn
+from .._core import Uav
+from ..flight import paper_gains
+from .types import UsageError
+
+# The follow runs' L1 period (FollowFlight.l1): L1 = 0.75 * 8 * v / pi = 38 m at 20 m/s, under R = 50 m.
+L1_PERIOD = 8.0
+
+
+def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any]:
+    """The keyword arguments of :func:`wn.fly` the flags ask for, in metres or the paper's units,
+    after checking that the route's scale fits them (UsageError before any output)."""
+    d = wn.DEFAULTS
+    paper = args.paper_units
+    R = args.turn_radius if args.turn_radius is not None else (d["turn_radius"] if paper else Uav().min_turn_radius)
+    v = args.speed if args.speed is not None else (d["speed"] if paper else Uav().speed)
+    dynamics = args.dynamics or ("dubins" if paper else "roll")
+    if paper and dynamics != "dubins":
+        # The roll model needs g in m/s^2; the paper's units are dimensionless.
+        raise UsageError(f"--dynamics = {dynamics}: the waypoint paper's dimensionless units (--paper-units) fly the "
+                         "Dubins vehicle only (the roll model needs a route in metres)")
+    longest = float(np.max(np.linalg.norm(np.diff(route, axis=0), axis=1)))
+    if not paper and longest < 2.0 * R:
+        raise UsageError(f"ROUTE = {args.route}: its longest leg is {longest:.4g} m, under 2 R = {2 * R:.4g} m: "
+                         "a route in the paper's units? pass --paper-units")
+    if paper and longest > 100.0 * R:
+        raise UsageError(f"ROUTE = {args.route}: its longest leg is {longest:.4g} = {longest / R:.4g} R with "
+                         f"--paper-units (R = {R:g}): a route in metres? drop --paper-units")
+    gains = tuple(args.gains) if args.gains is not None else (tuple(d["gains"]) if paper else paper_gains(R))
+    return {"turn_radius": R, "speed": v, "dt": args.dt, "integration": args.integration, "gains": gains,
+            "dynamics": dynamics, "roll_time_constant": Uav().roll_time_constant,
+            "max_roll_rate_deg_s": Uav().max_roll_rate_deg_s, "guidance": args.guidance or ("law5" if paper else "l1"),
+            "l1_period": args.l1_period}
