@@ -212,7 +212,7 @@ def test_dwn_mission_carries_the_turning_points_and_pymavlink_reads_it(tmp_path:
     wn_flight = calm[1]
     wn_mission = wn_flight.to_mission(ref, 60.0)
     radii = [item.params[1] for item in wn_mission.items]
-    assert radii == [wn_flight.waypoint_radius] * len(wn_flight.waypoints)
+    assert radii == [wn_flight.waypoint_radius] * (len(wn_flight.waypoints) + 1)  # the start, then the waypoints
 
 
 def test_cli_report_and_export(tmp_path: Path) -> None:
@@ -352,3 +352,52 @@ def test_cli_route_units_are_checked_before_any_output(tmp_path: Path, capsys: p
     one_line_error(["waypoints", str(ROUTE), "--paper-units", "--dynamics", "roll", "--out", str(out)], capsys, 2,
                    "--dynamics = roll")
     assert not out.exists()
+
+
+# ---------------------------------------------------------------------------------------------
+# Routes in (issue 32): the command reads its own export, missions and GeoJSON.
+
+@pytest.mark.parametrize("suffix", [".plan", ".waypoints"])
+def test_exported_route_reads_back_within_a_micrometre(tmp_path: Path, suffix: str) -> None:
+    route = read_route(METRES)
+    origin = vt.Georeference(60.17, 24.94, 12.0)
+    flight = wn.fly(route, method="wn", turn_radius=50.0, speed=20.0, waypoint_radius=5.0)
+    path = flight.to_mission(origin, 80.0, speed=20.0).save(tmp_path / f"route{suffix}")
+    np.testing.assert_allclose(wn.read_route(path), route, atol=1e-6)  # about the mission's home
+    np.testing.assert_allclose(wn.read_route(path, origin=(60.17, 24.94, 12.0)), route, atol=1e-6)
+    home = wn.route_georeference(path)
+    assert home is not None and (home.lat, home.lon) == pytest.approx((60.17, 24.94))
+    moved = wn.read_route(path, origin=(60.171, 24.94))  # another origin: the same route, shifted south
+    assert np.all(moved[:, 1] < route[:, 1] - 100.0)
+
+
+def test_cli_flies_its_own_export(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "a"
+    assert main(["waypoints", str(METRES), "--method", "wn", "--quiet", "--out", str(out), "--frames", "4",
+                 "--origin", "60.17,24.94", "--export", str(tmp_path / "r.waypoints")]) == 0
+    again = tmp_path / "b"
+    assert main(["waypoints", str(tmp_path / "r.waypoints"), "--method", "wn", "--quiet", "--out", str(again),
+                 "--frames", "4", "--export", str(tmp_path / "r2.plan")]) == 0  # placed about its home
+    first = json.loads((out / "metrics.json").read_text())["flights"][0]
+    second = json.loads((again / "metrics.json").read_text())["flights"][0]
+    assert second["path_length"] == pytest.approx(first["path_length"], rel=1e-9)
+    np.testing.assert_allclose(wn.read_route(tmp_path / "r2.plan"), read_route(METRES), atol=1e-6)
+
+
+def test_geojson_routes_need_an_origin(tmp_path: Path) -> None:
+    origin = vt.Georeference(48.136, 10.069)
+    route = read_route(METRES)
+    lat, lon = origin.to_latlon(route[:, 0], route[:, 1])
+    line = {"type": "Feature", "geometry": {"type": "LineString", "coordinates": [[x, y] for x, y in zip(lon, lat)]}}
+    points = {"type": "FeatureCollection", "features": [
+        {"type": "Feature", "geometry": {"type": "Point", "coordinates": [x, y]}} for x, y in zip(lon, lat)]}
+    for name, document in (("line.geojson", line), ("points.geojson", points)):
+        path = tmp_path / name
+        path.write_text(json.dumps(document))
+        np.testing.assert_allclose(wn.read_route(path, origin=origin), route, atol=1e-6)
+        with pytest.raises(VistrackError, match="origin"):
+            wn.read_route(path)
+    bad = tmp_path / "bad.geojson"
+    bad.write_text(json.dumps({"type": "LineString", "coordinates": [[200.0, 10.0], [0.0, 0.0]]}))
+    with pytest.raises(VistrackError, match="longitudes"):
+        wn.read_route(bad, origin=origin)

@@ -1,5 +1,7 @@
 """``vistrack waypoints``: Dubins waypoint navigation (DWN) against classical waypoint navigation
-(WN) over a route (CSV x,y; the flight starts at the first waypoint heading to the second).
+(WN) over a route (CSV x,y; a .plan or QGC WPL 110 mission, as --export writes, about --origin or
+its home; GeoJSON in lon/lat about --origin). The flight starts at the first waypoint heading to
+the second.
 
 Writes metrics.json, one trajectory CSV per flight, the DWN turning points and paths.png (the
 paper's Figures 11/12: WN dashed at each waypoint radius, DWN solid). The route is in metres
@@ -16,7 +18,6 @@ from pathlib import Path
 from .. import waypoint_nav as wn
 from .._core import Uav
 from ..flight import Wind
-from ..io import read_route
 from ..progress import Progress
 from ..report.waypoint_nav import write_waypoints
 from .export import add_export_arguments, export_georeference, export_mission
@@ -30,8 +31,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     d = wn.DEFAULTS
     parser = subparsers.add_parser("waypoints", help="Dubins waypoint navigation against classical WN (Figs. 10-12)",
                                    description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("route", type=Path, help="route CSV with columns x,y (metres; the paper's units with "
-                                                 "--paper-units)")
+    parser.add_argument("route", type=Path, help="route: CSV with columns x,y (metres; the paper's units with "
+                                                 "--paper-units), a .plan / .waypoints mission, or GeoJSON")
     parser.add_argument("--paper-units", action="store_true",
                         help="the paper's dimensionless units and settings (R 0.7, v 0.8, law (5), Dubins vehicle)")
     parser.add_argument("--method", choices=["dwn", "wn", "both"], default="both", help="default both")
@@ -73,10 +74,11 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    route = read_route(args.route, "ROUTE")
+    route = wn.read_route(args.route, args.origin, "ROUTE")
+    origin = args.origin or wn.route_georeference(args.route, "ROUTE")  # a mission's home places its export
     options = flight_options(args, route)
     if args.export:
-        export_georeference(args.export, args.origin, None, None)  # no origin: an error before any output
+        export_georeference(args.export, origin, None, None)  # no origin: an error before any output
     output_folder(args.out)  # a file there is an error now, not after the flights
     east, north = args.wind
     # Gusts: the paper's reading of its units (1 = 20 m, 1 s), or metres at the flight altitude.
@@ -97,7 +99,7 @@ def run(args: argparse.Namespace) -> int:
     write_waypoints(args.out, flights, wind, str(args.route), settings, weights, mc, report_options(args))
     # The mission carries DWN's turning points when DWN flew, else the first WN flight's waypoints.
     export_mission(args.export, lambda ref: flights[0].to_mission(ref, args.altitude, speed=options["speed"]),
-                   args.origin)
+                   origin)
     print(f"{options['dynamics']} vehicle, legs by {options['guidance']}, R = {R:g}, v = {options['speed']:g}"
           + ("" if args.paper_units else " (metres, m/s)"))
     for f in flights:

@@ -47,6 +47,7 @@ from .navigation import (
     turning_point,
     turning_points,
 )
+from .routes import read_route, route_georeference
 from .study import MonteCarlo, monte_carlo, random_route
 
 __all__ = [
@@ -69,7 +70,9 @@ __all__ = [
     "paper_gusts",
     "random_route",
     "reachability",
+    "read_route",
     "route_array",
+    "route_georeference",
     "theta_against_weight",
     "turning_point",
     "turning_points",

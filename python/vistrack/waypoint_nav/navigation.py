@@ -132,8 +132,11 @@ class NavigationFlight:
     def mission_points(self) -> np.ndarray:
         """(k, 2): the points an autopilot mission of this flight carries: DWN's turning points
         (the paper keeps them "in the background"; the last is the last waypoint, flown to
-        directly), or WN's waypoints."""
-        return self.turning_points if self.method == "dwn" else np.asarray(self.waypoints, dtype=float)[:, :2]
+        directly), or WN's route: the start position, then its waypoints (so that the mission, read
+        back with :func:`read_route`, is the route flown)."""
+        if self.method == "dwn":
+            return self.turning_points
+        return np.vstack([np.asarray(self.start[:2], dtype=float), np.asarray(self.waypoints, dtype=float)[:, :2]])
 
     def to_mission(self, georeference: Georeference, altitude: float, *, speed: Optional[float] = None,
                    altitude_mode: str = "relative", firmware: str = "ardupilot",
