@@ -238,7 +238,8 @@ void bind_waypoint_nav(py::module_& parent) {
       .def_property_readonly("undershoot", [](const NavigationResult& r) { return r.metrics.undershoot; },
                              "largest distance from the legs inside their turns")
       .def_property_readonly("swirls", [](const NavigationResult& r) { return r.metrics.swirls; },
-                             "full 2 pi heading excursions while one waypoint is active")
+                             "loops around the active waypoint: full turns of the bearing to it, either way, "
+                             "while it is the target")
       .def_property_readonly("path_length", [](const NavigationResult& r) { return r.metrics.path_length; })
       .def_property_readonly("duration", [](const NavigationResult& r) { return r.metrics.duration; })
       .def_property_readonly("fuel", [](const NavigationResult& r) { return r.metrics.fuel; },

@@ -329,7 +329,7 @@ TEST(WaypointNavMetrics, ByHandOnAConstructedTrajectory) {
   EXPECT_NEAR(m.miss_distances[0], 0.1 / std::hypot(1.0, 0.1), 1e-12);  // segment (0,0)-(1,0.1)
   EXPECT_NEAR(m.miss_distances[1], 0.0, 1e-12);                         // segment (2,1)-(2,2.3)
   EXPECT_TRUE(m.all_reached);
-  EXPECT_EQ(m.swirls, 1);
+  EXPECT_EQ(m.swirls, 0);  // the heading turns a lap, but the path does not wind about W_1
   EXPECT_NEAR(m.path_length, std::hypot(1, 0.1) + std::hypot(1, 0.1) + 1 + 1.3, 1e-12);
   EXPECT_NEAR(m.duration, 4.0, 0.0);
   EXPECT_NEAR(m.fuel, 1.0 + 1.0 + 1.5 + 1.5, 1e-12);
@@ -355,4 +355,39 @@ TEST(WaypointNavFlight, BadInputNamesTheField) {
   o = {};
   o.waypoint_radius = 0.1;
   expect_error_names([&] { navigate(kRoute, {0, 0, 0}, o); }, "waypoint_radius");
+}
+
+TEST(WaypointNavMetrics, SwirlsCountLoopsAroundTheActiveWaypointEitherWay) {
+  // Two and a quarter loops counter-clockwise about W_0 = (0, 0) at radius 1, then one and a half
+  // clockwise, then on to W_1: three full turns of the bearing (2 one way, 1 back).
+  FlightTrajectory t;
+  double time = 0.0;
+  auto add = [&](double x, double y, int target) {
+    t.t.push_back(time);
+    time += 0.1;
+    t.x.push_back(x);
+    t.y.push_back(y);
+    t.psi.push_back(0.0);
+    t.target_index.push_back(target);
+    t.command.push_back(0.0);
+  };
+  const int steps = 72;
+  const int ccw = 2 * steps + steps / 4, cw = steps + steps / 2;
+  for (int j = 0; j <= ccw; ++j) {
+    const double a = kPiTest * 2.0 * j / steps;
+    add(std::cos(a), std::sin(a), 0);
+  }
+  for (int j = 1; j <= cw; ++j) {
+    const double a = kPiTest * 2.0 * (ccw - j) / steps;
+    add(std::cos(a), std::sin(a), 0);
+  }
+  add(5.0, 0.0, 1);
+  add(10.0, 0.0, 1);
+  t.finished = true;
+  const NavigationMetrics m = navigation_metrics(t, {-3, 0}, {{0, 0}, {10, 0}}, 1.0, 0.5, {1.0, 1.0});
+  EXPECT_EQ(m.swirls, 3);
+  // Almost a loop is none; the same loops about a waypoint that is not active count nothing.
+  FlightTrajectory partial = t;
+  partial.target_index.assign(t.target_index.size(), 1);
+  EXPECT_EQ(navigation_metrics(partial, {-3, 0}, {{0, 0}, {10, 0}}, 1.0, 0.5, {1.0, 1.0}).swirls, 0);
 }

@@ -89,13 +89,31 @@ def test_with_unknown_wind_dwn_never_swirls(windy: list[wn.NavigationFlight]) ->
     assert np.all(dwn.miss_distances < 0.25 * R)
 
 
-def test_with_unknown_wind_our_wn_does_not_swirl_either(route: np.ndarray, windy: list[wn.NavigationFlight]) -> None:
-    # Not the paper's Figure 12: the law (5) points the vehicle at the waypoint every step, and a
-    # pursuer in a steady wind ends its approach heading into the wind, so even R_WP = 0.02 R is
-    # reached (README: "Dubins waypoint navigation").
+def test_with_unknown_wind_our_wn_does_not_swirl_at_the_papers_radii(route: np.ndarray,
+                                                                      windy: list[wn.NavigationFlight]) -> None:
+    # At 0.1 R and above, the law (5) points the vehicle at the waypoint every step, and a pursuer
+    # in a steady wind ends its approach heading into the wind: no swirl in 0.1 v wind.
     assert all(f.swirls == 0 and f.all_reached for f in windy[1:])
     tiny = wn.fly(route, method="wn", waypoint_radius=0.02 * R, wind=vt.flight.Wind(north=0.08))
     assert tiny.swirls == 0 and tiny.all_reached
+
+
+def test_figure_12_wn_swirls_below_the_threshold_and_dwn_never(route: np.ndarray) -> None:
+    """Issue 32: WN as printed swirls at R_WP = 0.01 R in 0.1 v wind (Fig. 12) and at 0.02 R in 0.2 v,
+    counted as loops around the waypoint in either direction; DWN in the same winds does not."""
+    v = wn.DEFAULTS["speed"]
+    winds = [vt.flight.Wind(east=w * v * math.cos(a), north=w * v * math.sin(a))
+             for w in (0.1, 0.2) for a in np.linspace(0.0, 2 * math.pi, 8, endpoint=False)]
+    at_tenth = [wn.fly(route, method="wn", waypoint_radius=0.01 * R, wind=w).swirls for w in winds[:8]]
+    at_fifth = [wn.fly(route, method="wn", waypoint_radius=0.02 * R, wind=w).swirls for w in winds[8:]]
+    assert sum(s > 0 for s in at_tenth) >= 4 and max(at_tenth) >= 3
+    assert sum(s > 0 for s in at_fifth) >= 3
+    assert all(wn.fly(route, method="dwn", wind=w).swirls == 0 for w in winds)
+    # Loops are counted, not the heading's excursion: a flight that swirls takes longer by about a
+    # loop's time each (2 pi R / v = 5.5 s).
+    calm = wn.fly(route, method="wn", waypoint_radius=0.1 * R)
+    worst = wn.fly(route, method="wn", waypoint_radius=0.01 * R, wind=winds[int(np.argmax(at_tenth))])
+    assert worst.duration > calm.duration + 2 * math.pi * R / v
 
 
 def test_flight_result_shapes(calm: list[wn.NavigationFlight], route: np.ndarray) -> None:

@@ -142,7 +142,9 @@ struct NavigationMetrics {
   bool all_reached = false;
   double overshoot = 0.0;    // largest distance from the planned legs on the outside of their turns
   double undershoot = 0.0;   // largest distance on the inside (cutting corners)
-  int swirls = 0;            // full 2 pi heading excursions while the same waypoint is active
+  // Loops around the active waypoint: the bearing from the vehicle to it, accumulated while it is
+  // the target, and each full turn counted in either direction (one loop each way counts two).
+  int swirls = 0;
   double path_length = 0.0;  // ground track
   double duration = 0.0;     // flight time
   double fuel = 0.0;         // sum of v dt (w_s + (w_a - w_s) |r| / (v / R)): w_a on full turns, w_s straight

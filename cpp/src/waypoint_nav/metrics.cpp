@@ -95,13 +95,27 @@ NavigationMetrics navigation_metrics(const FlightTrajectory& traj, const Vec2& s
     (outside ? out.overshoot : out.undershoot) = std::max(outside ? out.overshoot : out.undershoot, best);
   }
 
-  // Swirls: per stretch of one active target, the heading's largest excursion in units of 2 pi.
+  // Swirls: per stretch of one active waypoint, the bearing to it accumulated (the winding of the
+  // flown path about it) and each full turn counted from where the last one ended, in either
+  // direction: loops that alternate do not cancel (a heading excursion would let them).
   std::size_t begin = 0;
   for (std::size_t i = 1; i <= n; ++i) {
     if (i < n && traj.target_index[i] == traj.target_index[begin]) continue;
-    double excursion = 0.0;
-    for (std::size_t j = begin; j < i; ++j) excursion = std::max(excursion, std::abs(traj.psi[j] - traj.psi[begin]));
-    out.swirls += static_cast<int>(std::floor(excursion / kTwoPi));
+    const int k = traj.target_index[begin];
+    if (k >= 0 && static_cast<std::size_t>(k) < m) {
+      const Vec2& w = waypoints[static_cast<std::size_t>(k)];
+      auto bearing = [&](std::size_t j) { return std::atan2(w.y() - traj.y[j], w.x() - traj.x[j]); };
+      double previous = bearing(begin), winding = 0.0, counted = 0.0;
+      for (std::size_t j = begin + 1; j < i; ++j) {
+        const double b = bearing(j);
+        winding += wrap_to_pi(b - previous);
+        previous = b;
+        if (std::abs(winding - counted) >= kTwoPi) {
+          ++out.swirls;
+          counted += winding > counted ? kTwoPi : -kTwoPi;
+        }
+      }
+    }
     begin = i;
   }
 
