@@ -135,7 +135,11 @@ def run(spec: Union[SweepSpec, str, Path, Mapping[str, Any]], scheduler: Optiona
         raise VistrackError(f"n_workers = {n_workers}: only applies to a LocalCluster (scheduler=None), "
                             f"not to scheduler = {preview(scheduler)}")
     folder = Path(out) if out is not None else spec.out or Path("vistrack-out") / spec.name
-    folder.mkdir(parents=True, exist_ok=True)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:  # a file there ([Errno 17] File exists), a folder that cannot be written
+        reason = "is a file, not a folder" if folder.is_file() else f"cannot create the folder ({error.strerror})"
+        raise VistrackError(f"out = {folder}: {reason}") from None
     stream = folder / "rows.jsonl"
     stream.write_text("", encoding="utf-8")
     cases = spec.cases()
