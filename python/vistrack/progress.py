@@ -19,7 +19,7 @@ class Progress:
 
     def __init__(self, description: str, enabled: bool = True, unit: str = "VV", leave: bool = False) -> None:
         self.bar: Any = None
-        self._settings = dict(desc=description, unit=unit, leave=leave) if enabled else None
+        self._settings = {"desc": description, "unit": unit, "leave": leave} if enabled else None
 
     def _open(self) -> Any:
         if self.bar is None and self._settings is not None:
