@@ -72,7 +72,7 @@ void bind_geometry(py::module_& m) {
       "threads in [0, MAX_THREADS], the guidance gains "
       "beta in [MIN_GAIN, MAX_BETA] 1/m and k_psi in [MIN_GAIN, MAX_HEADING_GAIN] 1/s, and ODE tolerances rtol in "
       "[MIN_RTOL, MAX_RTOL] and atol in [MIN_ATOL, MAX_ATOL]; input files of at most MAX_INPUT_BYTES bytes; "
-      "documents (JSON, YAML) nested at most MAX_DOCUMENT_DEPTH levels, of at most MAX_DOCUMENT_NODES values "
+      "documents (JSON, YAML) nested at most MAX_DOCUMENT_DEPTH levels, YAML ones of at most MAX_DOCUMENT_NODES values "
       "(YAML aliases expanded).");
   ranges.attr("MAX_COORDINATE") = limits::kMaxCoordinate;
   ranges.attr("MIN_LENGTH") = limits::kMinLength;

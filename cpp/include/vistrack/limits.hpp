@@ -21,7 +21,7 @@
 //               maximum roll rate                                                  [1e-3, 1e4] deg/s
 //   input files (meshes, maps, routes, scenarios, plans; regular files only)        <= 1 GiB
 //   input documents (JSON, YAML): nesting depth                                    <= 100 levels
-//                   nodes, each YAML alias counted as what it expands to           <= 1e6
+//   YAML documents: values, each alias counted as what it expands to               <= 1e6
 //
 // Why: 1e7 m is a local frame of 10,000 km (any city, any flight); beyond it float32 ray tracing
 // and the orbit planner's metre-scale steps lose their meaning. A length below 1e-6 m (1 µm) or
@@ -80,7 +80,7 @@ inline constexpr double kMaxRollRate = 1e4;           // deg/s
 inline constexpr double kMaxTimeStep = 3600.0;        // s (loiter dt, follow.period)
 inline constexpr int kMaxInputFileBytes = 1073741824;  // bytes (1 GiB)
 inline constexpr int kMaxDocumentDepth = 100;          // levels of nested lists and mappings
-inline constexpr int kMaxDocumentNodes = 1000000;      // values in a document, aliases expanded
+inline constexpr int kMaxDocumentNodes = 1000000;      // values in a YAML document, aliases expanded
 
 // "[1e-06, 1e+07] m" style text of a range, for messages.
 std::string range_text(double low, double high, const std::string& unit);
