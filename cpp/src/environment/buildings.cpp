@@ -80,7 +80,7 @@ void check_overlaps(const std::vector<Building>& buildings, const std::vector<Bu
       const std::size_t first = std::min(i, j), second = std::max(i, j);
       throw Error(sources[first].name + " (id " + std::to_string(buildings[first].id) + ") and " +
                   sources[second].name + " (id " + std::to_string(buildings[second].id) +
-                  ") overlap: shared area = " + computed_text(shared) +
+                  ") overlap: shared area = " + to_text(shared) +
                   " m^2: building footprints must have disjoint interiors (touching walls are allowed)");
     }
   }
