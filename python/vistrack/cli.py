@@ -52,6 +52,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     from .commands import UsageError
+    from .commands.output_lock import output_locks
 
     parser = build_parser()
     try:
@@ -60,7 +61,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return exit_.code if isinstance(exit_.code, int) else USAGE_ERROR
     keep_freed_memory()  # VV batches reuse freed pages (a process-wide malloc setting: the command's to make)
     try:
-        return int(args.func(args) or 0)
+        with output_locks():  # the output folders the command locks are released when it ends
+            return int(args.func(args) or 0)
     except UsageError as error:
         print(f"vistrack {args.command}: error: {error} (see vistrack {args.command} --help)", file=sys.stderr)
         return USAGE_ERROR

@@ -16,7 +16,7 @@ from typing import Any, Mapping, Optional
 import numpy as np
 
 from . import dubins
-from .io.text import read_yaml_mapping
+from .io.documents import read_yaml_mapping
 from .schema import fail, number, reject_unknown
 
 __all__ = ["InterceptProblem"]

@@ -12,31 +12,40 @@ class Progress:
     """A tqdm bar fed by a ``progress(done, total)`` callback; a no-op when not enabled.
 
     Use it as the callback of a long core call (``planner.plan(..., progress=bar)``) and close it
-    afterwards, or as a context manager.
+    afterwards, or as a context manager. The bar is drawn at the first report, not when it is
+    made: a call that refuses its input before any work (``vistrack tune``'s Lemma 5 check) ends in
+    its one-line error without a bar printed before it.
     """
 
     def __init__(self, description: str, enabled: bool = True, unit: str = "VV", leave: bool = False) -> None:
         self.bar: Any = None
-        if enabled:
+        self._settings = {"desc": description, "unit": unit, "leave": leave} if enabled else None
+
+    def _open(self) -> Any:
+        if self.bar is None and self._settings is not None:
             from tqdm import tqdm
 
-            self.bar = tqdm(total=0, desc=description, unit=unit, leave=leave, dynamic_ncols=True)
+            self.bar = tqdm(total=0, dynamic_ncols=True, **self._settings)
+        return self.bar
 
     def __call__(self, done: int, total: int) -> None:
-        if self.bar is None:
+        bar = self._open()
+        if bar is None:
             return
-        self.bar.total = total
-        self.bar.n = done
-        self.bar.refresh()
+        bar.total = total
+        bar.n = done
+        bar.refresh()
 
     def note(self, **fields: Any) -> None:
         """Show ``name=value`` fields after the bar (e.g. failed=2)."""
-        if self.bar is not None:
-            self.bar.set_postfix(fields, refresh=True)
+        bar = self._open()
+        if bar is not None:
+            bar.set_postfix(fields, refresh=True)
 
     def close(self) -> None:
         if self.bar is not None:
             self.bar.close()
+        self._settings = None  # closed: later reports draw nothing
 
     def __enter__(self) -> "Progress":
         return self

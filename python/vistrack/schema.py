@@ -14,6 +14,7 @@ from typing import Any, Callable, Iterable, Mapping, TypeVar
 
 from ._core import Planning, VistrackError
 from ._core import limits as _limits
+from .preview import preview
 
 __all__ = ["absolute_tolerance", "apply_checks", "beta", "by_struct", "coordinate", "fail", "heading_gain", "integer",
            "length", "number", "output_name", "positive", "rate_margin", "relative_tolerance", "resolve_path",
@@ -23,11 +24,10 @@ T = TypeVar("T")
 
 
 def fail(key: str, value: Any, allowed: str) -> VistrackError:
-    """The error for one bad value (raise it); a long value is cut to 80 characters."""
-    text = repr(value)
-    if len(text) > 80:
-        text = text[:77] + "..."
-    return VistrackError(f"{key} = {text}: {allowed}")
+    """The error for one bad value (raise it); a long value is cut to 80 characters, without ever
+    building the text of all of it (:func:`vistrack.preview.preview`: a YAML alias tree of 1e9
+    nodes is quoted as cheaply as a number)."""
+    return VistrackError(f"{key} = {preview(value)}: {allowed}")
 
 
 def number(key: str, value: Any, *, low: float | None = None, high: float | None = None,

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <string>
@@ -114,6 +115,48 @@ TEST(Limits, LoadersRefuseFoldersAndNonFiles) {
   expect_error([&] { PoiPath::from_csv(dir.path(), 1.0); }, {"is a folder, not a CSV file"});
   expect_error([&] { read_volume_file(dir.path()); }, {"is a folder, not a VV file"});
   expect_error([&] { PoiPath::from_csv("/dev/null", 1.0); }, {"not a regular CSV file"});
+}
+
+// Issue 29: a value nested 100,000 deep crashed the quote of it in the message (recursive copy and
+// dump); every JSON document is now refused past kMaxDocumentDepth while it is parsed, and a
+// message quotes at most 40 characters of a value, however large.
+TEST(Limits, JsonDocumentsAreBoundedInDepthAndQuotedShort) {
+  TempDir dir;
+  const auto collection = [&](const std::string& height) {
+    return R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"height": )" + height +
+           R"(}, "geometry": {"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,10],[0,10]]]}}]})";
+  };
+  const auto nested = [](int depth) { return std::string(depth, '[') + std::string(depth, ']'); };
+  const auto message_of = [](const std::function<void()>& load) {
+    try {
+      load();
+    } catch (const Error& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  for (const int depth : {101, 100000})
+    expect_error([&] { Environment::from_geojson(dir.write("deep.geojson", collection(nested(depth)))); },
+                 {"deep.geojson: nested deeper than 100 levels"});
+  // At the limit (the height list is 96 deep under 4 levels): parsed, then refused as a height,
+  // its quote cut.
+  expect_error([&] { Environment::from_geojson(dir.write("d.geojson", collection(nested(96)))); },
+               {"features[0].properties.height = [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[...", "expected a number"});
+  std::string many = "[1";
+  for (int i = 0; i < 100000; ++i) many += ",1";
+  const std::string wide = message_of([&] { Environment::from_geojson(dir.write("w.geojson", collection(many + "]"))); });
+  EXPECT_NE(wide.find("height = [1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1...: expected a number"), std::string::npos)
+      << wide;
+  const std::string text = std::string(100000, 'x');
+  const std::string string = message_of([&] { Environment::from_geojson(dir.write("s.geojson", collection("\"" + text + "\""))); });
+  EXPECT_NE(string.find("height = \"xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...: expected a number"), std::string::npos) << string;
+  // nlohmann's parse error quotes the token it stopped at: here 100,000 digits, cut in the message.
+  const std::string digits = message_of([&] {
+    Environment::from_geojson(dir.write("n.geojson", collection(std::string(100000, '1') + ".5")));
+  });
+  EXPECT_NE(digits.find("n.geojson: not valid JSON ("), std::string::npos) << digits.substr(0, 400);
+  EXPECT_LT(digits.size(), 400u);
+  expect_error([&] { orbit_plan_from_json(nested(101)); }, {"orbit plan JSON: nested deeper than 100 levels"});
 }
 
 TEST(Limits, LoadersNameWhatIsWrongInTheFile) {

@@ -83,7 +83,10 @@ def _generated(target: str) -> list[bytes]:
 def seed_inputs(target: str) -> list[bytes]:
     """Every seed of one target, generated and stored."""
     inputs: list[bytes] = []
-    if target == "geojson":
+    if target == "documents":
+        inputs += [b"\x00" + BUILDINGS, b"\x00" + b"[" * 100 + b"]" * 100, b"\x01" + SCENARIO, b"\x01" + SWEEP,
+                   b"\x01" + b"a: &a [x, y]\nb: &b [*a, *a]\nc: {<<: {k: *b}, j: [*b, *b]}\n"]
+    elif target == "geojson":
         inputs += [BUILDINGS, LONLAT]
         if (DATA / "charlotte" / "buildings.geojson").is_file():
             inputs.append((DATA / "charlotte" / "buildings.geojson").read_bytes())

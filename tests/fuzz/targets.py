@@ -26,8 +26,8 @@ import numpy as np  # noqa: E402
 import support.build_tree  # noqa: E402,F401  (imports vistrack from $VISTRACK_BUILD_DIR when set)
 import vistrack as vt  # noqa: E402
 from vistrack import VistrackError  # noqa: E402
-from vistrack.intercept import InterceptProblem  # noqa: E402
 from vistrack.follow_scenario import FollowScenario  # noqa: E402
+from vistrack.intercept import InterceptProblem  # noqa: E402
 from vistrack.io import read_loiter_scenario, read_plan, read_roads, read_route, read_vehicle_track  # noqa: E402
 from vistrack.scenario import Scenario  # noqa: E402
 from vistrack.sweep.spec import SweepSpec  # noqa: E402
@@ -72,6 +72,32 @@ def write(data: bytes, suffix: str) -> Path:
 
 # --------------------------------------------------------------------------------------------
 # Loaders
+
+
+def documents(data: bytes) -> None:
+    """The one bounded JSON/YAML reader (vistrack.io.documents) that every loader parses through;
+    first byte even: JSON, odd: YAML. What it reads is within the limits (nesting, values with YAML
+    aliases expanded), and a message quoting it is short however large it is (vistrack.preview)."""
+    from vistrack.io.documents import MAX_DOCUMENT_DEPTH, parse_json, parse_yaml
+    from vistrack.preview import PREVIEW_CHARACTERS, preview
+    from vistrack.schema import fail
+
+    try:
+        text = data[1:].decode("utf-8")
+    except UnicodeDecodeError:
+        return  # read_text refuses it before any parser sees it
+    parse = parse_json if not data or data[0] % 2 == 0 else parse_yaml
+    result = parse(text, "document", "input")
+    depth, stack = 0, [(result, 0)]
+    while stack:  # every container is reached once per path: aliases are counted as the reader counts them
+        item, level = stack.pop()
+        if isinstance(item, (list, dict)):
+            depth = max(depth, level + 1)
+            if depth > MAX_DOCUMENT_DEPTH:
+                raise Finding(f"read a document nested {depth} levels deep")
+            stack.extend((child, level + 1) for child in (item.values() if isinstance(item, dict) else item))
+    if len(preview(result)) > PREVIEW_CHARACTERS or len(str(fail("k", result, "x"))) > PREVIEW_CHARACTERS + 10:
+        raise Finding("a preview longer than its limit")
 
 
 def geojson(data: bytes) -> None:
@@ -371,6 +397,7 @@ class Target:
 
 
 TARGETS = {t.name: t for t in (
+    Target("documents", documents, 4096),
     Target("geojson", geojson, 8192),
     Target("mesh", mesh, 8192),
     Target("csv", csv, 2048),

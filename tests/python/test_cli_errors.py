@@ -86,3 +86,19 @@ def test_sweep_tls_scheduler_is_one_line(tmp_path: Path, capsys: pytest.CaptureF
     sweep.write_text("kind: loiter\nbase: {aois: [[300, 300]]}\nparameters: {method: [tlpp, ldlpp]}\n")
     one_line_error(["sweep", str(sweep), "--out", str(tmp_path / "out"), "--quiet", "--scheduler",
                     "tls://127.0.0.1:1"], capsys, 1, "scheduler = tls://127.0.0.1:1", "cannot connect")
+
+
+def test_tune_refuses_before_its_progress_bar(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Issue 29: ``vistrack tune`` drew its progress bar, then printed the one-line error. A bar is
+    now drawn at the work's first report (vistrack.progress.Progress), after the input is checked."""
+    err = one_line_error(["tune", "--speed", "5", "--poi-speed", "5", "--out", str(tmp_path / "out")], capsys, 1,
+                         "radius_rate = 1.3", "Lemma 5")
+    assert "beta sweep" not in err and "\r" not in err, repr(err)
+    from vistrack.progress import Progress
+
+    with Progress("nothing reported"):
+        pass
+    assert capsys.readouterr().err == ""
+    with Progress("reported", unit="step") as bar:
+        bar(1, 2)
+    assert "reported" in capsys.readouterr().err

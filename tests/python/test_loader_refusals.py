@@ -49,7 +49,7 @@ def test_numbers_too_long_for_python_are_refused(tmp_path: Path) -> None:
     refuses(lambda: Scenario.load(scenario), "not valid YAML", "too long")
     plan = tmp_path / "long.json"
     plan.write_text(f'{{"format": {digits}}}')
-    refuses(lambda: read_plan(plan), "not JSON", "too long")
+    refuses(lambda: read_plan(plan), "not valid JSON", "too long")
     mission = tmp_path / "long.plan"
     mission.write_text(f'{{"fileType": {digits}}}')
     refuses(lambda: vt.mission.load(mission), "too long")

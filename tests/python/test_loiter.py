@@ -211,6 +211,18 @@ def test_ldlpp_refuses_lines_too_short_for_its_turns() -> None:
     assert loiter.plan([(300, 0), (420, 0), (360, 400)], "ldlpp", order="best").order in ([0, 2, 1], [1, 2, 0])
 
 
+def test_computed_limits_are_printed_to_4_significant_digits() -> None:
+    """Issue 29: "LDLPP needs 159.3486742963367 m" is now 159.3 m; the user's own values are echoed
+    as given (the AOI at 100.123456789), the distance computed from them to 4 digits."""
+    message = refuses(lambda: loiter.plan([(0, 0), (100.123456789, 0)], "ldlpp", start=(-500, 0), end=(500, 0),
+                                          turn_radius=46.0, aoi_radius=46.0),
+                      "aois[1] = (100.123456789, 0): LDLPP needs 159.3 m", "aois[0] before it is 100.1 m away")
+    assert "159.34" not in message
+    refuses(lambda: loiter.plan([(0, 0), (60.5, 0)], "tlpp", start=(-500, 0), end=(500, 0), turn_radius=46.1,
+                                aoi_radius=46.1),
+            "the centres are 60.5 m apart, at least 2 R = 92.2 are needed")
+
+
 def test_scenario_file_errors_name_the_key(tmp_path: Path) -> None:
     bad = tmp_path / "bad.yaml"
     bad.write_text("aois: [[300, 300], [600, 300]]\nspeed: -3\n")

@@ -34,8 +34,9 @@ def test_constant_radius_plan_and_json_round_trip() -> None:
     poi = vt.PoiPath(np.array([[0.0, 0.0], [100.0, 0.0], [100.0, 50.0]]), speed=5.0)
     plan = vt.constant_radius_plan(poi, 60.0, vt.Uav(speed=20.0, min_turn_radius=50.0))
     assert plan.radius(7.0) == 60.0 and plan.radius_rate(7.0) == 0.0
-    # Lemma 6: 60 m < r_min (1 + v_g/v)^2 = 78.125 m, so this constant orbit is not flyable.
-    assert not plan.feasible and "78.125" in plan.infeasibility
+    # Lemma 6: 60 m < r_min (1 + v_g/v)^2 = 78.125 m, so this constant orbit is not flyable; the
+    # message prints the computed limit to 4 significant digits (issue 29), the given radius as given.
+    assert not plan.feasible and "radius 60 m < r_min (1 + v_g/v)^2 = 78.12 m" in plan.infeasibility
     assert vt.constant_radius_plan(poi, 80.0, vt.Uav(speed=20.0, min_turn_radius=50.0)).feasible
     again = vt.OrbitPlan.from_json(plan.to_json())
     assert again.times == plan.times and again.radii == plan.radii

@@ -39,6 +39,16 @@ inline std::string to_text(double value) {
   return {};
 }
 
+// A value computed from the input (a limit, a distance, a rate) quoted in a message: 4 significant
+// digits ("LDLPP needs 159.3 m", not 159.3486742963367). The user's own values are echoed as given
+// (to_text above, the shortest text that reads back as the same double).
+inline std::string computed_text(double value) {
+  std::ostringstream out;
+  out.precision(4);
+  out << value;
+  return out.str();
+}
+
 // "field = value: reason", the shape of every message about a bad input value.
 template <class T>
 [[noreturn]] void fail_field(const std::string& field, const T& value, const std::string& reason) {

@@ -20,6 +20,8 @@
 //   roll model: time constant tau                                                  [1e-3, 60] s
 //               maximum roll rate                                                  [1e-3, 1e4] deg/s
 //   input files (meshes, maps, routes, scenarios, plans; regular files only)        <= 1 GiB
+//   input documents (JSON, YAML): nesting depth                                    <= 100 levels
+//   YAML documents: values, each alias counted as what it expands to               <= 1e6
 //
 // Why: 1e7 m is a local frame of 10,000 km (any city, any flight); beyond it float32 ray tracing
 // and the orbit planner's metre-scale steps lose their meaning. A length below 1e-6 m (1 µm) or
@@ -42,8 +44,12 @@
 // dt skipped the whole flight: coverage 0; a follow period of 1e300 s flew a straight line).
 // 1 GiB of input is generous for a city mesh (the Charlotte OBJ is 0.7 MB) and a scenario,
 // route or plan is kilobytes; a larger file (or /dev/zero, a FIFO) is refused before it is read.
+// A GeoJSON MultiPolygon's points are 8 levels deep, a scenario's values 4; a value nested 100,000 deep overflowed the C stack of the code that quoted it. A
+// scenario of 10,000 AOIs is 1e5 nodes; a YAML alias expands where it is used, so a "billion
+// laughs" file of a kilobyte is 1e9 nodes to whatever walks it, and is refused while it is read.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "vistrack/error.hpp"
@@ -73,6 +79,8 @@ inline constexpr double kMinRollRate = 1e-3;          // deg/s
 inline constexpr double kMaxRollRate = 1e4;           // deg/s
 inline constexpr double kMaxTimeStep = 3600.0;        // s (loiter dt, follow.period)
 inline constexpr int kMaxInputFileBytes = 1073741824;  // bytes (1 GiB)
+inline constexpr int kMaxDocumentDepth = 100;          // levels of nested lists and mappings
+inline constexpr int kMaxDocumentNodes = 1000000;      // values in a YAML document, aliases expanded
 
 // "[1e-06, 1e+07] m" style text of a range, for messages.
 std::string range_text(double low, double high, const std::string& unit);
@@ -101,10 +109,10 @@ void require_tolerances(double rtol, double atol, const std::string& prefix);
 void require_regular_file(const std::string& path, const std::string& field, const std::string& kind);
 
 namespace detail {
-// Text taken from an input file, fit to quote in a message: at most 40 characters (in single
-// quotes unless `quote` is false), bytes outside printable ASCII as \xNN (messages stay valid
-// UTF-8 whatever the file holds).
-std::string printable(const std::string& text, bool quote = true);
+// Text taken from an input file, fit to quote in a message: at most `longest` characters (then
+// "..."; in single quotes unless `quote` is false), bytes outside printable ASCII as \xNN
+// (messages stay valid UTF-8 whatever the file holds).
+std::string printable(const std::string& text, bool quote = true, std::size_t longest = 40);
 }  // namespace detail
 
 }  // namespace vistrack

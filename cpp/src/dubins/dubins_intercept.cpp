@@ -34,7 +34,7 @@ DubinsPath dubins_path_to_circle(const Configuration& q0, double rho, const Targ
   try {
     detail::require_dubins_problem(q0, goal, rho);
   } catch (const Error& error) {
-    throw Error(std::string("path to the circle's point at angle ") + detail::to_text(angle) + ": " + error.what());
+    throw Error(std::string("path to the circle's point at angle ") + detail::computed_text(angle) + ": " + error.what());
   }
   return dubins_shortest_path(q0, goal, rho);
 }

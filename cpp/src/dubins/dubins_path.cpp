@@ -73,7 +73,7 @@ Configuration detail::integrate(const DubinsPath& path, double s) {
 
 Configuration DubinsPath::at(double s) const {
   if (!(s >= 0.0) || !(s <= length))
-    detail::fail_field("s", s, "arc length must lie in [0, length = " + detail::to_text(length) + "]");
+    detail::fail_field("s", s, "arc length must lie in [0, length = " + detail::computed_text(length) + "]");
   if (s == length) return goal;
   return detail::integrate(*this, s);
 }
@@ -105,7 +105,7 @@ Points3 DubinsPath::sample_at(const std::vector<double>& arc_lengths) const {
     const double s = arc_lengths[k];
     if (!(s >= 0.0) || !(s <= length))
       detail::fail_field("arc_lengths[" + std::to_string(k) + "]", s,
-                         "must lie in [0, length = " + detail::to_text(length) + "]");
+                         "must lie in [0, length = " + detail::computed_text(length) + "]");
     const Configuration q = at(s);
     rows.row(static_cast<Eigen::Index>(k)) << q.x, q.y, q.psi;
   }

@@ -21,7 +21,7 @@ inline void require_configuration(const Configuration& q, const std::string& nam
 inline void require_dubins_scale(double max_coordinate, double rho, const std::string& field = "rho") {
   if (max_coordinate > limits::kMaxCoordinateOverRho * rho)
     fail_field(field, rho,
-               "must be at least max|coordinate| / 1e6 = " + to_text(max_coordinate / limits::kMaxCoordinateOverRho) +
+               "must be at least max|coordinate| / 1e6 = " + computed_text(max_coordinate / limits::kMaxCoordinateOverRho) +
                    " m: farther than 1e6 rho from the origin the solver's snapping tolerance eps = 1e-11 (1 + "
                    "max|coordinate| / rho) exceeds 1e-5 (translate the problem nearer the origin)");
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "environment/detail.hpp"
+#include "limits/json_input.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
 
@@ -16,8 +17,8 @@ namespace {
 
 using nlohmann::json;
 
-// A JSON value quoted in a message: compact, at most 40 characters.
-std::string text_of(const json& value) { return detail::printable(value.dump(), false); }
+// A JSON value quoted in a message: compact, at most 40 characters (only that much is walked).
+std::string text_of(const json& value) { return detail::json_preview(value); }
 
 // A number, or a numeric string such as "12" or "12.5 m" as OSM tags often are; nothing when
 // the property is absent or null.
@@ -36,7 +37,7 @@ std::optional<double> number_property(const json& properties, const std::string&
     } else if (text == "nan" || text == "NaN" || text == "NAN") {
       return std::nan("");
     }
-    detail::fail_field(field, "\"" + text + "\"", "expected a number of metres");
+    detail::fail_field(field, text_of(*it), "expected a number of metres");
   }
   detail::fail_field(field, text_of(*it), "expected a number");
 }
@@ -166,8 +167,9 @@ void read_features(const json& root, std::vector<Building>& buildings, std::vect
   for (std::size_t f = 0; f < features->size(); ++f) {
     const json& feature = (*features)[f];
     const std::string name = "features[" + std::to_string(f) + "]";
-    const json properties = feature.contains("properties") && feature["properties"].is_object()
-                                ? feature["properties"] : json::object();
+    static const json kNoProperties = json::object();
+    const json& properties = feature.contains("properties") && feature["properties"].is_object()
+                                 ? feature["properties"] : kNoProperties;
     int id = static_cast<int>(f);
     if (const auto it = properties.find("id"); it != properties.end() && it->is_number_integer())
       id = it->get<int>();
@@ -207,7 +209,7 @@ void read_features(const json& root, std::vector<Building>& buildings, std::vect
         sources.push_back(std::move(source));
       }
     } else {
-      detail::fail_field(name + ".geometry.type", "\"" + type + "\"", "expected Polygon or MultiPolygon");
+      detail::fail_field(name + ".geometry.type", text_of(json(type)), "expected Polygon or MultiPolygon");
     }
   }
 }
@@ -223,12 +225,7 @@ Environment Environment::from_geojson(const std::string& path, const GeoJsonOpti
   const std::string text = buffer.str();
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     detail::fail_field("path", path, "the GeoJSON file is empty");
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::exception& error) {  // parse errors, and numbers out of range (1e999)
-    detail::fail_field("path", path, std::string("not valid JSON: ") + error.what());
-  }
+  const json root = detail::parse_json(text, "path = " + path);
   std::vector<Building> buildings;
   std::vector<detail::BuildingSource> sources;
   try {

@@ -257,7 +257,7 @@ void validate(const Uav& vehicle, const FlightOptions& options, const Configurat
   require_finite(t0, "t0");
   const double psi_max = vehicle.speed * options.dt / vehicle.min_turn_radius;
   if (options.integration == FlightIntegration::Discrete && psi_max > kPi / 2.0)
-    detail::fail_field("dt", options.dt, "psi_max = v dt / R = " + detail::to_text(psi_max) + " rad exceeds pi/2");
+    detail::fail_field("dt", options.dt, "psi_max = v dt / R = " + detail::computed_text(psi_max) + " rad exceeds pi/2");
 }
 
 FlightTrajectory fly_valid(const Uav& vehicle, const WindField& wind, FlightGuidance& guidance,

@@ -16,7 +16,7 @@ LineFeedback::LineFeedback(double speed, double turn_radius, double dt, const Li
   gains.validate();
   const double psi_max = speed * dt / turn_radius;
   if (psi_max > kPi / 2.0)
-    detail::fail_field("dt", dt, "psi_max = v dt / R = " + detail::to_text(psi_max) + " rad exceeds pi/2");
+    detail::fail_field("dt", dt, "psi_max = v dt / R = " + detail::computed_text(psi_max) + " rad exceeds pi/2");
 }
 
 LineFeedbackTerms LineFeedback::terms(const Configuration& q, const Vec2& line_start, const Vec2& target) const {

@@ -49,13 +49,13 @@ PathFollower::PathFollower(std::vector<PathPiece> pieces, double speed, double t
     require_finite(p.curvature, field + ".curvature");
     if (std::abs(p.curvature) * turn_radius > 1.0 + 1e-9)
       detail::fail_field(field + ".curvature", p.curvature,
-                         "turns tighter than the vehicle can (1 / turn_radius = " + detail::to_text(1.0 / turn_radius) + ")");
+                         "turns tighter than the vehicle can (1 / turn_radius = " + detail::computed_text(1.0 / turn_radius) + ")");
     if (k > 0) {
       const Configuration end = pieces_[k - 1].at(pieces_[k - 1].length);
       const double gap = (Vec2(end.x, end.y) - p.start).norm();
       if (gap > 1e-6 * (1.0 + p.start.cwiseAbs().maxCoeff()))
         detail::fail_field(field + ".start", detail::to_text(p.start.x()) + ", " + detail::to_text(p.start.y()),
-                           "does not continue the piece before (gap " + detail::to_text(gap) + ")");
+                           "does not continue the piece before (gap " + detail::computed_text(gap) + ")");
     }
     offsets_.push_back(length_);
     length_ += p.length;

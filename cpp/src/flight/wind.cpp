@@ -129,7 +129,7 @@ WindField::WindField(const Wind& wind, double airspeed, double t0, double durati
   max_speed_ = mean.norm();
   if (!(max_speed_ < airspeed))
     detail::fail_field("wind", "(" + detail::to_text(wind.east) + ", " + detail::to_text(wind.north) + ")",
-                       "its speed " + detail::to_text(max_speed_) + " must be below the airspeed " +
+                       "its speed " + detail::computed_text(max_speed_) + " must be below the airspeed " +
                            detail::to_text(airspeed));
   if (!wind.gusts || wind.gusts->intensity == 0.0) return;
   const Gusts& gusts = *wind.gusts;
@@ -154,8 +154,8 @@ WindField::WindField(const Wind& wind, double airspeed, double t0, double durati
     const double speed = (mean + g).norm();
     if (!(speed < airspeed))
       detail::fail_field("wind.gusts.intensity", gusts.intensity,
-                         "the gusts take the wind speed to " + detail::to_text(speed) + " at t = " +
-                             detail::to_text(t0 + static_cast<double>(k) * step_) + ", at or above the airspeed " +
+                         "the gusts take the wind speed to " + detail::computed_text(speed) + " at t = " +
+                             detail::computed_text(t0 + static_cast<double>(k) * step_) + ", at or above the airspeed " +
                              detail::to_text(airspeed));
     max_speed_ = std::max(max_speed_, speed);
   }

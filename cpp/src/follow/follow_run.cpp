@@ -70,7 +70,7 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   const double period = parameters.update_period;
   if (!(duration / period <= 1e8))  // one tick per update: bound the work and the memory of the run
     detail::fail_field("follow.update_period", period,
-                       "more than 1e8 planner updates over the " + detail::to_text(duration) + " s flight");
+                       "more than 1e8 planner updates over the " + detail::computed_text(duration) + " s flight");
   const WindField wind(true_wind, uav.speed, t0, duration);  // checks the wind against the airspeed
   const Vec2 steady(true_wind.east, true_wind.north);
 

@@ -221,7 +221,7 @@ double tangential_speed(double theta, const OrbitState& orbit, double speed) {
   const double squared = speed * speed - radial * radial;
   if (squared < 0.0)
     detail::fail_field("orbit.radius_rate", orbit.radius_rate,
-                       "the vehicle cannot stay on this orbit at theta = " + detail::to_text(theta) +
+                       "the vehicle cannot stay on this orbit at theta = " + detail::computed_text(theta) +
                            ": |g_dot . e_r + R_dot| exceeds the speed (Lemma 5)");
   return std::sqrt(squared);
 }

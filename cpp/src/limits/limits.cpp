@@ -76,8 +76,7 @@ void require_regular_file(const std::string& path, const std::string& field, con
                                         " bytes for an input file");
 }
 
-std::string detail::printable(const std::string& text, bool quote) {
-  constexpr std::size_t kLongest = 40;
+std::string detail::printable(const std::string& text, bool quote, std::size_t kLongest) {
   std::string out = quote ? "'" : "";
   for (std::size_t i = 0; i < text.size() && i < kLongest; ++i) {
     const auto c = static_cast<unsigned char>(text[i]);

@@ -233,7 +233,7 @@ LoiterCoverage loiter_coverage(const Points3& poses, const std::vector<double>& 
     const double bank = bank_angle(speed, turn_rates[k], options.gravity);
     if (std::abs(camera_tilt(camera, bank, 0.0)) + limit + beta >= 0.5 * kPi * (1.0 - 1e-9))
       detail::fail_field("turn_rates[" + std::to_string(k) + "]", turn_rates[k],
-                         "banks the aircraft by " + detail::to_text(bank / kDegree) +
+                         "banks the aircraft by " + detail::computed_text(bank / kDegree) +
                              " deg: with the gimbal and half the field of view the camera would see the horizon");
   }
 

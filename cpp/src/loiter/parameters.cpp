@@ -64,7 +64,7 @@ void LoiterProblem::validate() const {
         detail::fail_field(field, point_text(aois[i]),
                            "its loiter circle (radius " + detail::to_text(R) + ") overlaps that of aois[" +
                                std::to_string(j) + "] = " + point_text(aois[j]) + ": the centres are " +
-                               detail::to_text(d) + " m apart, at least 2 R = " + detail::to_text(2.0 * R) +
+                               detail::computed_text(d) + " m apart, at least 2 R = " + detail::computed_text(2.0 * R) +
                                " are needed");
     }
     const auto outside = [&](const char* name, const Vec2& point) {
@@ -72,7 +72,7 @@ void LoiterProblem::validate() const {
       if (d < R)
         detail::fail_field(name, point_text(point),
                            "lies inside the loiter circle of " + field + " = " + point_text(aois[i]) + " (" +
-                               detail::to_text(d) + " m from its centre, radius " + detail::to_text(R) + ")");
+                               detail::computed_text(d) + " m from its centre, radius " + detail::to_text(R) + ")");
     };
     outside("start", start);
     outside("end", end);

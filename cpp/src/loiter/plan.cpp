@@ -116,7 +116,7 @@ std::size_t LoiterPlan::segment_at_time(double t) const {
 
 Configuration LoiterPlan::at_time(double t) const {
   if (!(t >= 0.0) || !(t <= flight_time))
-    detail::fail_field("t", t, "must lie in [0, flight_time = " + detail::to_text(flight_time) + "]");
+    detail::fail_field("t", t, "must lie in [0, flight_time = " + detail::computed_text(flight_time) + "]");
   if (segments.empty()) return {problem.start.x(), problem.start.y(), 0.0};
   if (t == flight_time) {
     const LoiterSegment& last = segments.back();

@@ -12,7 +12,7 @@ std::array<Vec2, 2> tangent_points(const Vec2& p, const Vec2& c, double radius) 
   const double r2 = radius * radius;
   if (!(squared >= r2 * (1.0 - 1e-12)))
     fail_field("point", detail::to_text(p.x()) + ", " + detail::to_text(p.y()),
-               "lies inside the circle it should touch (distance " + detail::to_text(std::sqrt(squared)) +
+               "lies inside the circle it should touch (distance " + detail::computed_text(std::sqrt(squared)) +
                    " < radius " + detail::to_text(radius) + ")");
   const Vec2 q = c + (r2 / squared) * w;                                            // (5)
   const Vec2 jw(w.y(), -w.x());                                                    // J = [0 1; -1 0]
@@ -38,7 +38,7 @@ InnerTangent inner_tangent(const Vec2& c1, const Vec2& c2, double radius, Circul
   const double distance = between.norm();
   if (!(distance >= 2.0 * radius * (1.0 - 1e-12)))
     fail_field("distance between loiter centres", distance,
-               "inner tangents need at least 2 R = " + detail::to_text(2.0 * radius));
+               "inner tangents need at least 2 R = " + detail::computed_text(2.0 * radius));
   const double zeta = std::acos(std::min(1.0, radius / (0.5 * distance)));  // (9)
   const double axis = heading_of(between);                                  // (8), with atan2
   const Vec2 middle = 0.5 * (c1 + c2);

@@ -14,20 +14,20 @@ std::string aoi_text(const LoiterProblem& p, int k) {
 }  // namespace
 
 void WalkFailure::raise(const LoiterProblem& problem) const {
-  const std::string need = "LDLPP needs " + to_text(needed) + " m (D_Entry = sqrt(R^2 + 2 R r) per turn) ";
+  const std::string need = "LDLPP needs " + computed_text(needed) + " m (D_Entry = sqrt(R^2 + 2 R r) per turn) ";
   switch (kind) {
     case Kind::StartTooClose:
       fail_field("start", "(" + to_text(problem.start.x()) + ", " + to_text(problem.start.y()) + ")",
                  need + "to turn onto the loiter circle of the first AOI, aois[" + std::to_string(to) + "] = " +
-                     aoi_text(problem, to) + ", which is " + to_text(distance) + " m away");
+                     aoi_text(problem, to) + ", which is " + computed_text(distance) + " m away");
     case Kind::AoisTooClose:
       fail_field("aois[" + std::to_string(to) + "]", aoi_text(problem, to),
                  need + "between consecutive AOI centres to exit one loiter and enter the next; aois[" +
-                     std::to_string(from) + "] before it is " + to_text(distance) + " m away");
+                     std::to_string(from) + "] before it is " + computed_text(distance) + " m away");
     case Kind::EndTooClose:
       fail_field("end", "(" + to_text(problem.end.x()) + ", " + to_text(problem.end.y()) + ")",
                  need + "from the last AOI, aois[" + std::to_string(from) + "] = " + aoi_text(problem, from) +
-                     ", to turn onto the line to the end; it is " + to_text(distance) + " m away");
+                     ", to turn onto the line to the end; it is " + computed_text(distance) + " m away");
     case Kind::None:
       break;
   }

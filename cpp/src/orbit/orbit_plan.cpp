@@ -124,7 +124,7 @@ OrbitPlan constant_radius_plan(const PoiPath& poi, double radius, const Uav& uav
   const double needed = min_feasible_radius(uav, poi.speed());
   if (radius < needed) {
     plan.feasible = false;
-    plan.infeasibility = "radius " + detail::to_text(radius) + " m < r_min (1 + v_g/v)^2 = " + detail::to_text(needed) +
+    plan.infeasibility = "radius " + detail::to_text(radius) + " m < r_min (1 + v_g/v)^2 = " + detail::computed_text(needed) +
                          " m: the orbit's curvature exceeds 1/r_min (Lemma 6)";
   }
   return plan;

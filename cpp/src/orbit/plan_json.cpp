@@ -2,6 +2,7 @@
 // was made from ("vistrack.visibility_orbit_plan/1"; VVs are not stored).
 #include <nlohmann/json.hpp>
 
+#include "limits/json_input.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/limits.hpp"
 #include "vistrack/orbit.hpp"
@@ -25,15 +26,10 @@ std::string to_json(const OrbitPlan& plan) {
 }
 
 OrbitPlan orbit_plan_from_json(const std::string& text) {
-  nlohmann::json in;
-  try {
-    in = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& error) {
-    throw Error(std::string("orbit plan JSON: cannot parse: ") + error.what());
-  }
+  const nlohmann::json in = detail::parse_json(text, "orbit plan JSON");
   try {
     const auto& waypoints = in.at("poi").at("waypoints");
-    if (!waypoints.is_array()) detail::fail_field("poi.waypoints", detail::printable(waypoints.dump(), false), "must be a list");
+    if (!waypoints.is_array()) detail::fail_field("poi.waypoints", detail::json_preview(waypoints), "must be a list");
     Eigen::MatrixXd points(static_cast<Eigen::Index>(waypoints.size()), 3);
     for (std::size_t i = 0; i < waypoints.size(); ++i)
       for (std::size_t k = 0; k < 3; ++k)
@@ -76,7 +72,7 @@ nlohmann::json ring_json(const Ring& ring) {
 }
 
 Ring ring_from(const nlohmann::json& in, const std::string& field) {
-  if (!in.is_array()) detail::fail_field(field, detail::printable(in.dump(), false), "a ring must be a list of [x, y]");
+  if (!in.is_array()) detail::fail_field(field, detail::json_preview(in), "a ring must be a list of [x, y]");
   Ring ring;
   for (std::size_t i = 0; i < in.size(); ++i) {
     const Vec2 p(in[i].at(0).get<double>(), in[i].at(1).get<double>());
@@ -158,7 +154,7 @@ std::string to_json(const VisibilityOrbitPlan& plan) {
 
 VisibilityOrbitPlan visibility_orbit_plan_from_json(const std::string& text) {
   VisibilityOrbitPlan plan(orbit_plan_from_json(text));
-  const nlohmann::json in = nlohmann::json::parse(text);  // parsed fine above
+  const nlohmann::json in = detail::parse_json(text, "orbit plan JSON");  // parsed fine above
   try {
     if (in.contains("uav")) {
       plan.uav.speed = in["uav"].at("speed").get<double>();

@@ -23,7 +23,7 @@ void SmoothRadiusLimits::validate() const {
   require_positive(max_rate, "limits.max_rate");
   if (!(max_rate <= (uav_speed - poi_speed) * (1.0 + 1e-12)))
     detail::fail_field("limits.max_rate", max_rate,
-                       "must not exceed v - v_g = " + detail::to_text(uav_speed - poi_speed) + " (Lemma 5)");
+                       "must not exceed v - v_g = " + detail::computed_text(uav_speed - poi_speed) + " (Lemma 5)");
   if (!(turn_share > 0.0 && turn_share < 1.0))
     detail::fail_field("limits.turn_share", turn_share, "must be in (0, 1)");
 }
@@ -351,8 +351,8 @@ std::string smooth_radius_violation(const RadiusProfile& profile, const SmoothRa
   if (!profile.smooth()) return "the profile is piecewise linear: dR/dt jumps at its knots";
   for (std::size_t k = 0; k < t.size(); ++k)
     if (std::abs(profile.rates[k]) > limits.max_rate * (1.0 + tolerance) + tolerance)
-      return "|dR/dt| = " + detail::to_text(std::abs(profile.rates[k])) + " m/s at t = " + detail::to_text(t[k]) +
-             " s exceeds " + detail::to_text(limits.max_rate) + " m/s (Lemma 5)";
+      return "|dR/dt| = " + detail::computed_text(std::abs(profile.rates[k])) + " m/s at t = " + detail::computed_text(t[k]) +
+             " s exceeds " + detail::computed_text(limits.max_rate) + " m/s (Lemma 5)";
   for (std::size_t k = 0; k + 1 < t.size(); ++k) {
     const double span = t[k + 1] - t[k];
     const double accel = (profile.rates[k + 1] - profile.rates[k]) / span;
@@ -364,9 +364,9 @@ std::string smooth_radius_violation(const RadiusProfile& profile, const SmoothRa
     const double bound = std::min(limits.max_acceleration(lowest, profile.rates[k]),
                                   limits.max_acceleration(lowest, profile.rates[k + 1]));
     if (std::abs(accel) > bound * (1.0 + 1e-6) + tolerance)
-      return "|d2R/dt2| = " + detail::to_text(std::abs(accel)) + " m/s^2 at t = " + detail::to_text(t[k]) +
-             " s exceeds the " + detail::to_text(bound) + " m/s^2 that the turn rate leaves at R = " +
-             detail::to_text(lowest) + " m";
+      return "|d2R/dt2| = " + detail::computed_text(std::abs(accel)) + " m/s^2 at t = " + detail::computed_text(t[k]) +
+             " s exceeds the " + detail::computed_text(bound) + " m/s^2 that the turn rate leaves at R = " +
+             detail::computed_text(lowest) + " m";
   }
   return "";
 }

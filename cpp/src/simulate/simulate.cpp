@@ -45,15 +45,15 @@ void validate_plan(const OrbitPlan& plan, const Uav& uav) {
     for (std::size_t k = 0; k < profile.times.size(); ++k)
       if (std::abs(profile.rates[k]) > limit * (1.0 + 1e-9) + 1e-12)
         detail::fail_field("plan.reference.rates[" + std::to_string(k) + "]", profile.rates[k],
-                           "exceeds v - v_g = " + detail::to_text(limit) + " (Lemma 5)");
+                           "exceeds v - v_g = " + detail::computed_text(limit) + " (Lemma 5)");
     return;
   }
   for (std::size_t k = 0; k + 1 < plan.times.size(); ++k) {
     const double rate = (plan.radii[k + 1] - plan.radii[k]) / (plan.times[k + 1] - plan.times[k]);
     if (std::abs(rate) > limit * (1.0 + 1e-9) + 1e-12)
       detail::fail_field("plan.radii[" + std::to_string(k + 1) + "]", plan.radii[k + 1],
-                         "dR/dt = " + detail::to_text(rate) + " on segment " + std::to_string(k) +
-                             " exceeds v - v_g = " + detail::to_text(limit) + " (Lemma 5)");
+                         "dR/dt = " + detail::computed_text(rate) + " on segment " + std::to_string(k) +
+                             " exceeds v - v_g = " + detail::computed_text(limit) + " (Lemma 5)");
   }
 }
 
@@ -87,7 +87,7 @@ SimulationResult closed_loop(const OrbitPlan& plan, const Uav& uav, const Vec3& 
   const double smallest_step = fixed_step > 0.0 ? fixed_step : options.max_step;
   if (span / smallest_step > 1e8)
     detail::fail_field(fixed_step > 0.0 ? "fixed_step" : "simulation.max_step", smallest_step,
-                       "takes more than 1e8 steps over the plan's " + detail::to_text(span) + " s");
+                       "takes more than 1e8 steps over the plan's " + detail::computed_text(span) + " s");
   const GuidanceGains gains = GuidanceGains::from(uav, control);
   const RollModel roll(uav);
 

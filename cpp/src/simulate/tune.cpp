@@ -35,7 +35,7 @@ TuningResult tune_turn_rate(double radius, double radius_rate, double speed, dou
   grid.validate();
   if (!(std::abs(radius_rate) <= speed - poi_speed))
     detail::fail_field("radius_rate", radius_rate,
-                       "|dR/dt| must not exceed v - v_g = " + detail::to_text(speed - poi_speed) + " (Lemma 5)");
+                       "|dR/dt| must not exceed v - v_g = " + detail::computed_text(speed - poi_speed) + " (Lemma 5)");
 
   GuidanceGains gains;
   gains.speed = speed;

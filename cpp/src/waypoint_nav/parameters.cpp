@@ -18,7 +18,7 @@ void WaypointNavOptions::validate() const {
   require_positive(dt, "dt");
   const double psi_max = speed * dt / turn_radius;
   if (psi_max > 0.5 * 3.14159265358979323846)
-    detail::fail_field("dt", dt, "psi_max = v dt / R = " + detail::to_text(psi_max) + " rad exceeds pi/2");
+    detail::fail_field("dt", dt, "psi_max = v dt / R = " + detail::computed_text(psi_max) + " rad exceeds pi/2");
   gains.validate();
   weights.validate();
   if (waypoint_radius) {

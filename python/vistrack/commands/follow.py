@@ -18,7 +18,7 @@ from pathlib import Path
 from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
-from .output import add_report_arguments, report_options
+from .output import add_report_arguments, output_folder, report_options
 from .types import add_dynamics_argument, number
 
 
@@ -43,6 +43,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     options = report_options(args)
+    output_folder(args.out)  # a file there is an error now, not after the runs
     scenario = FollowScenario.load(args.scenario)
     if args.dynamics is not None:
         scenario.uav.dynamics = args.dynamics

@@ -10,15 +10,17 @@ from typing import Any, Optional
 
 from .._core import VistrackError
 from ..report_options import ReportOptions
+from .output_lock import lock_folder
 from .types import UsageError, count, number
 
 __all__ = ["add_report_arguments", "output_folder", "report_options"]
 
 
 def output_folder(path: str | Path, flag: str = "--out") -> Path:
-    """The folder a command writes into, checked now (not created: a failed run leaves nothing): a
-    path that is a file, or under a file, or in a folder that cannot be written, is an error before
-    the work starts rather than after it."""
+    """The folder a command writes into, checked and locked now (:mod:`.output_lock`: a second run
+    into a busy folder is refused; the folder is created, and removed again if the run leaves it
+    empty): a path that is a file, or under a file, or in a folder that cannot be written, is an
+    error before the work starts rather than after it. Every command writing a folder calls this."""
     folder = Path(path)
     if folder.exists() and not folder.is_dir():
         raise VistrackError(f"{flag} = {path}: is a file, not a folder")
@@ -29,6 +31,7 @@ def output_folder(path: str | Path, flag: str = "--out") -> Path:
         raise VistrackError(f"{flag} = {path}: {existing} is a file, not a folder")
     if not os.access(existing, os.W_OK | os.X_OK):
         raise VistrackError(f"{flag} = {path}: cannot create the folder ({existing} is not writable)")
+    lock_folder(folder, flag)
     return folder
 
 

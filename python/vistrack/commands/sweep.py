@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from ..sweep import SERIAL, SweepSpec, run
+from .output import output_folder
 from .types import UsageError, add_dynamics_argument, count
 
 
@@ -40,9 +41,12 @@ def main(args: argparse.Namespace) -> int:
             raise UsageError(f"--dynamics = {args.dynamics}: waypoint sweeps fly the paper's dimensionless units, "
                              "the Dubins vehicle only")
         spec.base = spec.kind.set(spec.base, "uav.dynamics", args.dynamics)
+    # The folder (the sweep file's out: key unless --out is given) is checked and locked before the cases run.
+    out = output_folder(args.out or spec.out or Path("vistrack-out") / spec.name, "out" if spec.out and not args.out
+                        else "--out")
     print(f"{spec.name}: {spec.case_count} {spec.kind.name} cases over {', '.join(spec.parameters)} "
           f"({spec.combine})", flush=True)
-    result = run(spec, args.scheduler, args.workers, out=Path(args.out) if args.out else None,
+    result = run(spec, args.scheduler, args.workers, out=out,
                  quiet=args.quiet, figures=not args.no_figures)
     workers = ", ".join(f"{w}: {s['environments_built']} map(s), {s['cases_run']} case(s)"
                         for w, s in sorted(result.workers.items()))

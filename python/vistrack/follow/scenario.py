@@ -40,7 +40,7 @@ from .._core import Control, Environment, Uav, VisibilityScene
 from .._core import limits as _limits
 from ..flight import Wind
 from ..georeference import Georeference
-from ..io.text import read_yaml_mapping
+from ..io.documents import read_yaml_mapping
 from ..scenario_blocks import (
     City,
     Rename,

@@ -13,6 +13,7 @@ from .._core import Control, Uav, VisibilityScene, VistrackError
 from .._core import flight as _flight
 from .._core import follow as _follow
 from ..flight import Wind
+from ..preview import preview
 from ..schema import length
 from .to_mission import follow_mission
 
@@ -169,7 +170,7 @@ def _numbers(value: Sequence[float], count: int, key: str, what: str) -> list[fl
     except (TypeError, ValueError):
         numbers = []
     if len(numbers) != count:
-        raise VistrackError(f"{key} = {value!r}: expected {what}")
+        raise VistrackError(f"{key} = {preview(value)}: expected {what}")
     return numbers
 
 

@@ -1,8 +1,10 @@
 """The generic file formats vistrack reads and writes, one module per format (autopilot missions:
 ``vistrack.mission``; a product's own files: its package).
 
-- ``text``: UTF-8 text, JSON results, YAML (:func:`read_text`, :func:`write_json`,
-  :func:`parse_yaml`, :func:`read_yaml_mapping`: a key given twice in one mapping is an error)
+- ``text``: UTF-8 text of a bounded size, JSON results (:func:`read_text`, :func:`write_json`)
+- ``documents``: the one bounded JSON/YAML reader of input files (:func:`parse_json`,
+  :func:`read_json`, :func:`parse_yaml`, :func:`read_yaml_mapping`): nesting, values (YAML aliases
+  expanded) and size limited; a key given twice in one YAML mapping is an error
 - ``mesh``: maps, GeoJSON footprints or any triangle mesh (:func:`load_environment`)
 - ``orbit_plan``: orbit plans as JSON (:func:`read_plan`, :func:`write_plan`)
 - ``tables``: CSV of closed-loop and flown trajectories, waypoint routes x,y (:func:`read_route`),
@@ -19,6 +21,7 @@ expected format raises VistrackError.
 from __future__ import annotations
 
 from .._moved import forward
+from .documents import parse_json, parse_yaml, read_json, read_yaml_mapping
 from .geojson import (
     ROAD_MERGE_DISTANCE,
     feature_collection,
@@ -41,7 +44,7 @@ from .tables import (
     write_route,
     write_trajectory,
 )
-from .text import append_json_line, parse_yaml, read_text, read_yaml_mapping, write_json
+from .text import append_json_line, read_text, write_json
 from .volumes import volume_files
 
 __getattr__ = forward(__name__, {
@@ -65,8 +68,10 @@ __all__ = [
     "lon_lat",
     "numeric_rows",
     "orbit_plan_geojson",
+    "parse_json",
     "parse_yaml",
     "point_feature",
+    "read_json",
     "read_plan",
     "read_results_table",
     "read_roads",

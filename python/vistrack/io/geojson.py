@@ -14,7 +14,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._core import OrbitPlan, RoadNetwork, SimulationResult, VistrackError
-from .text import read_text
+from ..preview import preview
+from .documents import read_json
 
 if TYPE_CHECKING:
     from ..georeference import Georeference
@@ -92,11 +93,7 @@ def read_roads(path: str | Path, key: str = "routes.roads") -> RoadNetwork:
     meet only where they share a vertex, as in OpenStreetMap ways."""
     from scipy.spatial import cKDTree
 
-    text = read_text(path, key)
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as error:
-        raise VistrackError(f"{key} = {path}: not JSON ({error.msg} at line {error.lineno})") from None
+    data = read_json(path, key)
     features = data.get("features") if isinstance(data, dict) else None
     if not isinstance(features, list):
         raise VistrackError(f"{key} = {path}: not a GeoJSON FeatureCollection (no 'features' list)")
@@ -106,7 +103,8 @@ def read_roads(path: str | Path, key: str = "routes.roads") -> RoadNetwork:
         kind = geometry.get("type") if isinstance(geometry, dict) else None
         coordinates = geometry.get("coordinates") if isinstance(geometry, dict) else None
         if kind not in ("LineString", "MultiLineString") or not isinstance(coordinates, list):
-            raise VistrackError(f"{key} = {path}: features[{i}] is {kind!r}, not a LineString or MultiLineString")
+            raise VistrackError(f"{key} = {path}: features[{i}] is {preview(kind)}, "
+                                "not a LineString or MultiLineString")
         for part in [coordinates] if kind == "LineString" else coordinates:
             try:
                 line = [(float(p[0]), float(p[1])) for p in part]

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any, Optional
 import numpy as np
 
 from .._core import SimulationResult, VistrackError
+from ..preview import preview
 from .text import read_text
 
 if TYPE_CHECKING:
@@ -44,7 +45,7 @@ def read_route(path: str | Path, key: str = "route") -> np.ndarray:
     body = list(zip((n for n, _ in lines), rows))
     if "x" in header or "y" in header:
         if "x" not in header or "y" not in header:
-            raise VistrackError(f"{key} = {path}: the header needs both columns x and y, got {rows[0]}")
+            raise VistrackError(f"{key} = {path}: the header needs both columns x and y, got {preview(rows[0])}")
         columns = (header.index("x"), header.index("y"))
         body = body[1:]
     points = []
@@ -52,7 +53,8 @@ def read_route(path: str | Path, key: str = "route") -> np.ndarray:
         try:
             point = [float(row[c]) for c in columns]
         except (IndexError, ValueError):
-            raise VistrackError(f"{key} = {path}: line {number} is not two numbers x, y: {','.join(row)!r}") from None
+            text = ",".join(item[:81] for item in row[:81])  # enough for the preview of a huge line
+            raise VistrackError(f"{key} = {path}: line {number} is not two numbers x, y: {preview(text)}") from None
         if not all(np.isfinite(point)):
             raise VistrackError(f"{key} = {path}: line {number} has a value that is not finite: {point}")
         points.append(point)
@@ -96,7 +98,7 @@ def numeric_rows(path: str | Path, key: str, columns: tuple[int, ...]) -> np.nda
         except ValueError:
             if not rows and number == 1:
                 continue  # a header
-            raise VistrackError(f"{key} = {path}: line {number} is not numbers: {line.strip()!r}") from None
+            raise VistrackError(f"{key} = {path}: line {number} is not numbers: {preview(line.strip())}") from None
         if len(values) not in columns:
             raise VistrackError(f"{key} = {path}: line {number} has {len(values)} values, expected "
                                 f"{' or '.join(str(c) for c in columns)}")

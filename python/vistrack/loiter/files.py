@@ -9,7 +9,7 @@ import numpy as np
 
 from .. import schema
 from .._core import Uav
-from ..io.text import read_yaml_mapping
+from ..io.documents import read_yaml_mapping
 from ..scenario_blocks import Rename, camera_block, georeference_block, origin_to_georeference, uav_block, upgrade
 from .planning import Camera, Coverage, CoverageOptions, Parameters, Plan
 from .scenario import Scenario

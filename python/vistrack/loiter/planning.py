@@ -12,6 +12,7 @@ import numpy as np
 from .._core import VistrackError
 from .._core import flight as _flight
 from .._core import loiter as _loiter
+from ..preview import preview
 
 Plan = _loiter.Plan
 Segment = _loiter.Segment
@@ -56,9 +57,9 @@ def _points(aois: Points) -> np.ndarray:
     try:
         array = np.asarray(aois, dtype=float)
     except (TypeError, ValueError):
-        raise VistrackError(f"aois = {aois!r}: expected a list of (x, y) centres of numbers") from None
+        raise VistrackError(f"aois = {preview(aois)}: expected a list of (x, y) centres of numbers") from None
     if array.ndim != 2 or array.shape[1] != 2:
-        raise VistrackError(f"aois = {aois!r}: expected a list of (x, y) centres, shape (n, 2)")
+        raise VistrackError(f"aois = {preview(aois)}: expected a list of (x, y) centres, shape (n, 2)")
     return array
 
 
@@ -66,9 +67,9 @@ def _point(value: Point, key: str) -> tuple[float, float]:
     try:
         array = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
-        raise VistrackError(f"{key} = {value!r}: expected (x, y) numbers") from None
+        raise VistrackError(f"{key} = {preview(value)}: expected (x, y) numbers") from None
     if array.shape != (2,):
-        raise VistrackError(f"{key} = {value!r}: expected (x, y)")
+        raise VistrackError(f"{key} = {preview(value)}: expected (x, y)")
     return float(array[0]), float(array[1])
 
 
@@ -213,7 +214,7 @@ def metrics(plan: Plan, cov: Coverage | None = None, dt: float = _COVERAGE.dt,
 def threshold_value(threshold: float) -> float:
     """A coverage threshold: a fraction in (0, 1] (NaN would count nothing as covered, silently)."""
     if isinstance(threshold, bool) or not isinstance(threshold, numbers.Real) or not 0.0 < threshold <= 1.0:
-        raise VistrackError(f"threshold = {threshold!r}: must be a fraction in (0, 1]")
+        raise VistrackError(f"threshold = {preview(threshold)}: must be a fraction in (0, 1]")
     return float(threshold)
 
 

@@ -3,10 +3,10 @@
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import Any
 
+from ..io.documents import parse_json
 from ..io.text import read_text
 from ..schema import fail, number
 from .items import FIRMWARE_TYPES, WPL_HEADER, Command, MissionItem
@@ -63,14 +63,7 @@ def _mission_from_waypoints(text: str, source: str) -> Mission:
 
 
 def _plan_from_json(text: str, source: str) -> Mission:
-    try:
-        document = json.loads(text)
-    except json.JSONDecodeError as error:
-        raise fail(source, f"line {error.lineno}", f"not valid JSON ({error.msg})") from None
-    except RecursionError:
-        raise fail(source, "JSON", "nested too deeply") from None
-    except ValueError:  # after JSONDecodeError, its subclass: integers of more than 4300 digits
-        raise fail(source, "JSON", "holds a number too long to read") from None
+    document = parse_json(text, "path", source)
     if not isinstance(document, dict) or document.get("fileType") != "Plan":
         raise fail(f"{source}: fileType", document.get("fileType") if isinstance(document, dict) else document,
                    'must be "Plan" (a QGroundControl plan)')

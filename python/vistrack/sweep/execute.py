@@ -26,6 +26,7 @@ import numpy as np
 
 from .._core import VistrackError
 from ..io import append_json_line, write_json, write_results_table
+from ..preview import preview
 from ..progress import Progress
 from .kinds import CaseContext, get_kind
 from .resources import current_resources, current_worker, worker_stats
@@ -129,12 +130,16 @@ def run(spec: Union[SweepSpec, str, Path, Mapping[str, Any]], scheduler: Optiona
     if not isinstance(spec, SweepSpec):
         spec = SweepSpec.load(spec) if isinstance(spec, (str, Path)) else SweepSpec.from_dict(spec)
     if n_workers is not None and (isinstance(n_workers, bool) or not isinstance(n_workers, int) or n_workers < 1):
-        raise VistrackError(f"n_workers = {n_workers!r}: must be a positive integer")
+        raise VistrackError(f"n_workers = {preview(n_workers)}: must be a positive integer")
     if n_workers is not None and scheduler is not None:
         raise VistrackError(f"n_workers = {n_workers}: only applies to a LocalCluster (scheduler=None), "
-                            f"not to scheduler = {scheduler!r}")
+                            f"not to scheduler = {preview(scheduler)}")
     folder = Path(out) if out is not None else spec.out or Path("vistrack-out") / spec.name
-    folder.mkdir(parents=True, exist_ok=True)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:  # a file there ([Errno 17] File exists), a folder that cannot be written
+        reason = "is a file, not a folder" if folder.is_file() else f"cannot create the folder ({error.strerror})"
+        raise VistrackError(f"out = {folder}: {reason}") from None
     stream = folder / "rows.jsonl"
     stream.write_text("", encoding="utf-8")
     cases = spec.cases()

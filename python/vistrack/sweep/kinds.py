@@ -17,6 +17,7 @@ from typing import Any, Callable, Mapping, Optional
 
 from .._core import RoadNetwork, VistrackError
 from ..io import read_yaml_mapping
+from ..preview import preview
 from ..schema import fail, resolve_path
 from .resources import Resources
 
@@ -84,7 +85,7 @@ class CaseKind:
         """VistrackError unless ``pattern`` (a name, or an fnmatch pattern) can match a metric."""
         if not any(fnmatch.fnmatchcase(name, pattern) or fnmatch.fnmatchcase(pattern, name)
                    for name in self.metric_names):
-            raise VistrackError(f"metrics = {pattern!r}: no such metric of kind {self.name}; it returns "
+            raise VistrackError(f"metrics = {preview(pattern)}: no such metric of kind {self.name}; it returns "
                                 + ", ".join(self.metric_names))
 
 
@@ -100,7 +101,7 @@ def register_kind(kind: CaseKind) -> CaseKind:
 def get_kind(name: Any) -> CaseKind:
     """The registered kind of that name; VistrackError naming ``kind`` and the known kinds."""
     if not isinstance(name, str) or name not in KINDS:
-        raise VistrackError(f"kind = {name!r}: unknown case kind; known kinds: {', '.join(sorted(KINDS))}")
+        raise VistrackError(f"kind = {preview(name)}: unknown case kind; known kinds: {', '.join(sorted(KINDS))}")
     return KINDS[name]
 
 

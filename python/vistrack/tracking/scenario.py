@@ -30,7 +30,8 @@ from .._core import (
     VistrackError,
 )
 from ..georeference import Georeference
-from ..io.text import parse_yaml, read_text
+from ..io.documents import parse_yaml
+from ..io.text import read_text
 from ..report_options import ReportOptions, report_options
 from ..scenario_blocks import (
     City,

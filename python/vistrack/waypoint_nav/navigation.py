@@ -16,6 +16,7 @@ from ..flight import FlightTrajectory, Gusts, Wind
 from ..georeference import Georeference
 from ..mission.builder import MissionBuilder
 from ..mission.model import Mission
+from ..preview import preview
 
 __all__ = [
     "CASES", "DEFAULTS", "PAPER_GUST_MODEL", "PAPER_RADII", "DubinsWaypointGuidance", "HorizonPath",
@@ -60,7 +61,7 @@ def route_array(waypoints: Points, key: str = "waypoints") -> np.ndarray:
     try:
         array = np.asarray(waypoints, dtype=float)
     except (TypeError, ValueError):
-        raise VistrackError(f"{key} = {waypoints!r}: expected an array of (x, y) rows") from None
+        raise VistrackError(f"{key} = {preview(waypoints)}: expected an array of (x, y) rows") from None
     if array.ndim != 2 or array.shape[1] != 2:
         raise VistrackError(f"{key}: expected shape (n, 2), got {array.shape}")
     if len(array) < 2:
@@ -211,7 +212,7 @@ def fly(
         flown = route[1:]
     else:
         if len(start) != 3:
-            raise VistrackError(f"start = {start!r}: expected (x, y, psi)")
+            raise VistrackError(f"start = {preview(start)}: expected (x, y, psi)")
         pose = (float(start[0]), float(start[1]), float(start[2]))
         flown = route
     try:
@@ -251,7 +252,7 @@ def paper_flights(waypoints: Points, wind: Optional[Wind] = None, radii: Sequenc
     12 (``wind``). ``options`` go to :func:`fly` (turn_radius, speed, dt, gains, start, ...)."""
     for method in methods:
         if method not in ("dwn", "wn"):
-            raise VistrackError(f"method = {method!r}: must be 'dwn' or 'wn'")
+            raise VistrackError(f"method = {preview(method)}: must be 'dwn' or 'wn'")
     R = float(options.get("turn_radius", _OPTIONS.turn_radius))
     flights = []
     if "dwn" in methods:
