@@ -219,7 +219,7 @@ class NavigationResult:
     @property
     def swirls(self) -> int:
         """
-        full 2 pi heading excursions while one waypoint is active
+        loops around the active waypoint: full turns of the bearing to it, either way, while it is the target
         """
     @property
     def trajectory(self) -> vistrack._core.flight.FlightTrajectory:
