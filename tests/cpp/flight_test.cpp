@@ -341,6 +341,63 @@ TEST(FlightWaypointFollower, FliesASquareAndSwitchesInsideTheRadius) {
   }
 }
 
+TEST(FlightWaypointFollower, PassedLineAcceptsOnTheFinishLineAndAnticipatesTurns) {
+  // ArduPlane's switching: the acceptance distance min(R_WP, L1) x min(turn, 90 deg) / 90 deg.
+  const L1Line l1(0.8, {10.0, 0.75});  // L1 = 0.75 * 10 * 0.8 / pi = 1.91
+  const double radius = 0.35;
+  WaypointFollower right_angle(l1, {{6, 0}, {6, 6}}, radius);
+  right_angle.set_passed_line(true);
+  right_angle.start({0, 0, 0}, 0.0);
+  EXPECT_NEAR(right_angle.acceptance_distance(), 0.35, 1e-15);  // 90 deg: the whole R_WP (< L1)
+  WaypointFollower shallow(l1, {{6, 0}, {12, 6 * std::tan(0.3)}}, radius);
+  shallow.set_passed_line(true);
+  shallow.start({0, 0, 0}, 0.0);
+  EXPECT_NEAR(shallow.acceptance_distance(), 0.35 * 0.3 / (0.5 * kPiTest), 1e-12);
+  const LineFeedback law(0.8, 0.7, 0.02);
+  WaypointFollower capped(l1, {{6, 0}, {6, 6}}, 5.0);
+  capped.set_passed_line(true);
+  capped.start({0, 0, 0}, 0.0);
+  EXPECT_NEAR(capped.acceptance_distance(), l1.distance(), 1e-12);  // capped by L1, not by the law (5)
+  WaypointFollower uncapped(law, {{6, 0}, {6, 6}}, 5.0);
+  uncapped.set_passed_line(true);
+  uncapped.start({0, 0, 0}, 0.0);
+  EXPECT_NEAR(uncapped.acceptance_distance(), 5.0, 1e-15);
+  // A vehicle passing 1 R_WP beside the waypoint: the paper's WN keeps the waypoint, the
+  // passed-line one accepts it where it crosses x = 6, in both integrators (continuous: on the line).
+  for (auto integration : {FlightIntegration::Discrete, FlightIntegration::Continuous}) {
+    for (bool passed : {false, true}) {
+      struct Straight : FlightGuidance {  // flies straight on, whatever the target
+        WaypointFollower* inner;
+        explicit Straight(WaypointFollower* w) : inner(w) {}
+        void start(const Configuration& q, double t) override { inner->start(q, t); }
+        GuidanceCommand command(const Configuration& q, double t) const override {
+          GuidanceCommand c = inner->command(q, t);
+          c.turn_rate = 0.0;
+          return c;
+        }
+        void advance(const Configuration& q, double t) override { inner->advance(q, t); }
+        bool done() const override { return inner->done(); }
+        double switching_function(const Configuration& q, double t) const override {
+          return inner->switching_function(q, t);
+        }
+      };
+      WaypointFollower follower(law, {{6, 0.7}, {12, 0.7}}, radius);
+      follower.set_passed_line(passed);
+      Straight straight(&follower);
+      const auto traj = fly(vehicle(0.8, 0.7), Wind{}, straight, {0, 0, 0}, options(integration, 0.02, 14.0));
+      if (!passed) {
+        EXPECT_TRUE(std::isnan(follower.accepted_at()[0])) << to_string(integration);
+        continue;
+      }
+      ASSERT_FALSE(std::isnan(follower.accepted_at()[0])) << to_string(integration);
+      // The finish line is perpendicular to the leg (0, 0) -> (6, 0.7): at y = 0 it is x = 6 + 0.49 / 6.
+      const double crossing = (6.0 + 0.49 / 6.0) / 0.8;
+      EXPECT_GE(follower.accepted_at()[0], crossing - 1e-9);
+      EXPECT_LE(follower.accepted_at()[0], crossing + (integration == FlightIntegration::Continuous ? 1e-6 : 0.02));
+    }
+  }
+}
+
 TEST(FlightWaypointFollower, DiscreteAndContinuousFlyTheSamePath) {
   // Same law (smooth sign), same route: the two integrators' paths stay close (the discrete
   // update is first order in dt).

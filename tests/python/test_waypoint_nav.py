@@ -419,3 +419,30 @@ def test_geojson_routes_need_an_origin(tmp_path: Path) -> None:
     bad.write_text(json.dumps({"type": "LineString", "coordinates": [[200.0, 10.0], [0.0, 0.0]]}))
     with pytest.raises(VistrackError, match="longitudes"):
         wn.read_route(bad, origin=origin)
+
+
+
+def test_arduplane_switching_never_swirls_on_random_routes_and_winds() -> None:
+    """Issue 32: WN switching as ArduPlane does (past the finish line, or inside the turn distance)
+    reaches every waypoint without a loop where the paper's WN swirls, on seeded random routes and
+    winds of up to 0.5 v from any direction, at acceptance radii down to 0.01 R."""
+    rng = np.random.default_rng(32)
+    v = wn.DEFAULTS["speed"]
+    paper_swirls = 0
+    for _ in range(12):
+        route = wn.random_route(rng, 6, R)
+        w = rng.uniform(0.0, 0.5) * v
+        a = rng.uniform(0.0, 2 * math.pi)
+        wind = vt.flight.Wind(east=w * math.cos(a), north=w * math.sin(a))
+        for fraction in (0.01, 0.1):
+            line = wn.fly(route, method="wn_passed_line", waypoint_radius=fraction * R, wind=wind)
+            assert line.swirls == 0 and line.all_reached and line.label.startswith("WN-line")
+            paper_swirls += wn.fly(route, method="wn", waypoint_radius=fraction * R, wind=wind).swirls
+    assert paper_swirls > 0  # the same routes and winds make the paper's WN loop
+
+
+def test_cli_flies_all_three_methods(tmp_path: Path) -> None:
+    out = tmp_path / "all"
+    assert main(["waypoints", str(METRES), "--method", "all", "--quiet", "--out", str(out), "--frames", "4"]) == 0
+    labels = [f["label"] for f in json.loads((out / "metrics.json").read_text())["flights"]]
+    assert labels[0] == "DWN" and "WN R_WP=0.1R" in labels and "WN-line R_WP=0.1R" in labels

@@ -308,6 +308,16 @@ class WaypointFollower : public FlightGuidance {
   WaypointFollower(const L1Line& law, const std::vector<Vec2>& waypoints, double acceptance_radius,
                    bool finish_at_last = true);
 
+  // Switching as ArduPlane's verify_nav_wp (beyond the paper): a waypoint is also done once the
+  // vehicle is past the line through it perpendicular to the leg, and the acceptance distance
+  // anticipates the turn: min(R_WP, L1 distance) x min(|turn angle|, 90 deg) / 90 deg, the turn
+  // angle between this leg and the next (AP_L1_Control::turn_distance; no L1 cap with the law (5);
+  // 0 at the last waypoint, which is done on its line).
+  void set_passed_line(bool enabled);
+  bool passed_line() const { return passed_line_; }
+  // The acceptance distance of the active waypoint (R_WP unless passed_line).
+  double acceptance_distance() const;
+
   // Append a waypoint, usable from time available_from on (-infinity: at once). Allowed during
   // flight (from fly()'s on_step callback). Availability times must not decrease.
   void add_waypoint(const Vec2& point, double available_from = -std::numeric_limits<double>::infinity());
@@ -329,6 +339,8 @@ class WaypointFollower : public FlightGuidance {
 
  private:
   bool next_available(double t) const;
+  // How far the vehicle is past the active waypoint's finish line along the leg (m, > 0 past it).
+  double past_finish_line(const Vec2& p) const;
 
   std::variant<LineFeedback, L1Line> law_;
   std::vector<Vec2> waypoints_;
@@ -339,6 +351,7 @@ class WaypointFollower : public FlightGuidance {
   std::size_t active_ = 0;
   Vec2 line_start_ = Vec2::Zero();
   bool done_ = false;
+  bool passed_line_ = false;
 };
 
 // ---- Flying -----------------------------------------------------------------------------------

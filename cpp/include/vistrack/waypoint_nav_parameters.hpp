@@ -17,12 +17,15 @@ struct FuelWeights {
   void validate() const;
 };
 
-enum class NavigationMethod : std::uint8_t { Dubins = 0, Classical = 1 };
+// DWN, the paper's WN (a waypoint is done inside R_WP), and beyond the paper WN as ArduPlane flies
+// it (also done once past the line through the waypoint perpendicular to the leg, and inside a
+// turn distance that anticipates the turn: WaypointFollower::set_passed_line).
+enum class NavigationMethod : std::uint8_t { Dubins = 0, Classical = 1, PassedLine = 2 };
 template <>
 struct EnumNames<NavigationMethod> {
   static constexpr const char* field = "method";
   static constexpr EnumName<NavigationMethod> names[] = {{"dwn", NavigationMethod::Dubins},
-      {"wn", NavigationMethod::Classical}};
+      {"wn", NavigationMethod::Classical}, {"wn_passed_line", NavigationMethod::PassedLine}};
 };
 
 // One navigation flight; the defaults are the paper's section 3 (R 0.7, v 0.8, dt 0.02, and the

@@ -1,5 +1,6 @@
 // Classical waypoint navigation: the law (5) (or L1 line tracking) to the active waypoint,
-// switching inside R_WP.
+// switching inside R_WP (or, as ArduPlane does, past the finish line or inside the turn distance).
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -20,6 +21,30 @@ WaypointFollower::WaypointFollower(const L1Line& law, const std::vector<Vec2>& w
     : law_(law), acceptance_radius_(acceptance_radius), finish_at_last_(finish_at_last) {
   require_non_negative(acceptance_radius, "waypoint_radius");
   for (const Vec2& w : waypoints) add_waypoint(w);
+}
+
+void WaypointFollower::set_passed_line(bool enabled) {
+  passed_line_ = enabled;
+  touch();
+}
+
+double WaypointFollower::acceptance_distance() const {
+  if (!passed_line_) return acceptance_radius_;
+  if (active_ + 1 >= waypoints_.size()) return 0.0;  // the last: done on its line
+  const Vec2 in = waypoints_[active_] - line_start_;
+  const Vec2 out = waypoints_[active_ + 1] - waypoints_[active_];
+  if (in.norm() == 0.0 || out.norm() == 0.0) return 0.0;
+  const double turn = std::abs(std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out)));
+  double distance = acceptance_radius_;
+  if (const auto* l1 = std::get_if<L1Line>(&law_)) distance = std::min(distance, l1->distance());
+  return distance * std::min(turn, 0.5 * kPi) / (0.5 * kPi);
+}
+
+double WaypointFollower::past_finish_line(const Vec2& p) const {
+  const Vec2 leg = waypoints_[active_] - line_start_;
+  const double length = leg.norm();
+  if (length == 0.0) return 0.0;  // no leg: the waypoint is where the line starts
+  return (p - waypoints_[active_]).dot(leg) / length;
 }
 
 void WaypointFollower::add_waypoint(const Vec2& point, double available_from) {
@@ -63,7 +88,8 @@ void WaypointFollower::advance(const Configuration& state, double t) {
   if (done_) return;
   const Vec2 p(state.x, state.y);
   while (true) {
-    if (std::isnan(accepted_at_[active_]) && (p - waypoints_[active_]).norm() <= acceptance_radius_)
+    if (std::isnan(accepted_at_[active_]) &&
+        ((p - waypoints_[active_]).norm() <= acceptance_distance() || (passed_line_ && past_finish_line(p) >= 0.0)))
       accepted_at_[active_] = t;
     if (std::isnan(accepted_at_[active_])) return;
     if (next_available(t)) {
@@ -82,7 +108,10 @@ void WaypointFollower::advance(const Configuration& state, double t) {
 
 double WaypointFollower::switching_function(const Configuration& state, double) const {
   if (done_ || !std::isnan(accepted_at_[active_])) return std::numeric_limits<double>::infinity();
-  return std::hypot(state.x - waypoints_[active_].x(), state.y - waypoints_[active_].y()) - acceptance_radius_;
+  const Vec2 p(state.x, state.y);
+  const double inside = (p - waypoints_[active_]).norm() - acceptance_distance();
+  // <= 0 once either condition holds: the smaller of the two distances to switching.
+  return passed_line_ ? std::min(inside, -past_finish_line(p)) : inside;
 }
 
 double WaypointFollower::next_change_time(double t) const {

@@ -54,9 +54,11 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
     guidance = std::move(g);
   } else {
     result.waypoint_radius = options.waypoint_radius.value_or(R);
-    guidance = options.guidance == LegGuidance::L1
-                   ? std::make_unique<WaypointFollower>(l1, waypoints, result.waypoint_radius)
-                   : std::make_unique<WaypointFollower>(law5, waypoints, result.waypoint_radius);
+    auto follower = options.guidance == LegGuidance::L1
+                        ? std::make_unique<WaypointFollower>(l1, waypoints, result.waypoint_radius)
+                        : std::make_unique<WaypointFollower>(law5, waypoints, result.waypoint_radius);
+    follower->set_passed_line(options.method == NavigationMethod::PassedLine);
+    guidance = std::move(follower);
   }
   const Uav vehicle = options.vehicle();
   FlightOptions flight;

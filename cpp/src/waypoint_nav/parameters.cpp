@@ -23,7 +23,7 @@ void WaypointNavOptions::validate() const {
   weights.validate();
   if (waypoint_radius) {
     if (method == NavigationMethod::Dubins)
-      detail::fail_field("waypoint_radius", *waypoint_radius, "DWN has no waypoint radius (it is for method 'wn')");
+      detail::fail_field("waypoint_radius", *waypoint_radius, "DWN has no waypoint radius (it is for the WN methods)");
     require_non_negative(*waypoint_radius, "waypoint_radius");
   }
   if (max_time) require_positive(*max_time, "max_time");

@@ -35,7 +35,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                                                  "--paper-units), a .plan / .waypoints mission, or GeoJSON")
     parser.add_argument("--paper-units", action="store_true",
                         help="the paper's dimensionless units and settings (R 0.7, v 0.8, law (5), Dubins vehicle)")
-    parser.add_argument("--method", choices=["dwn", "wn", "both"], default="both", help="default both")
+    parser.add_argument("--method", choices=[*wn.METHODS, "both", "all"], default="both",
+                        help="dwn, wn (the paper's), wn_passed_line (ArduPlane's switching, beyond the paper); "
+                             "both: dwn and wn (the default); all: the three")
     parser.add_argument("--waypoint-radius", type=positive_numbers("--waypoint-radius", "5,25,50"),
                         help="WN radii in route units, comma-separated (default 0.1R,0.5R,R)")
     parser.add_argument("--wind", type=finite_numbers("--wind", 2, "0,2", 1e4), default=[0.0, 0.0],
@@ -86,7 +88,7 @@ def run(args: argparse.Namespace) -> int:
     wind = Wind(east=east, north=north, gusts=None if args.gusts is None else wn.paper_gusts(args.gusts, model))
     R = options["turn_radius"]
     radii = wn.PAPER_RADII if args.waypoint_radius is None else [r / R for r in args.waypoint_radius]
-    methods = ("dwn", "wn") if args.method == "both" else (args.method,)
+    methods = {"both": ("dwn", "wn"), "all": wn.METHODS}.get(args.method, (args.method,))
     flights = wn.paper_flights(route, wind=wind, radii=radii, methods=methods, **options)
     weights = wn.theta_against_weight() if args.figure_weights else None
     mc = None

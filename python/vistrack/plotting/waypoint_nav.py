@@ -55,7 +55,7 @@ def figure_paths(flights: Sequence[NavigationFlight], path: Path, title: str = "
     waypoints with their R_WP circles, DWN turning points as crosses."""
     plt = pyplot()
     dwn = next((f for f in flights if f.method == "dwn"), None)
-    wns: list[Optional[NavigationFlight]] = [f for f in flights if f.method == "wn"] or [None]
+    wns: list[Optional[NavigationFlight]] = [f for f in flights if f.method != "dwn"] or [None]
     fig, axes = plt.subplots(1, len(wns), figsize=(4.6 * len(wns), 4.8), squeeze=False, constrained_layout=True)
     for ax, wn in zip(axes[0], wns):
         ref = dwn if dwn is not None else wn
@@ -69,7 +69,7 @@ def figure_paths(flights: Sequence[NavigationFlight], path: Path, title: str = "
             ax.plot(traj[:, 1], traj[:, 2], label=f"WN ({wn.swirls} swirls)" if wn.swirls else "WN", **WN_STYLE)
             for w in wn.waypoints:
                 ax.add_patch(plt.Circle(w, wn.waypoint_radius, fill=False, color="tab:orange", lw=0.6, alpha=0.6))
-            ax.set_title(f"R_WP = {wn.waypoint_radius / wn.turn_radius:g}R")
+            ax.set_title(wn.label)
         if dwn is not None:
             traj = dwn.trajectory
             ax.plot(traj[:, 1], traj[:, 2], label="DWN", **DWN_STYLE)

@@ -28,6 +28,7 @@ from __future__ import annotations
 from .navigation import (
     CASES,
     DEFAULTS,
+    METHODS,
     PAPER_GUST_MODEL,
     PAPER_RADII,
     DubinsWaypointGuidance,
@@ -53,6 +54,7 @@ from .study import MonteCarlo, monte_carlo, random_route
 __all__ = [
     "CASES",
     "DEFAULTS",
+    "METHODS",
     "PAPER_GUST_MODEL",
     "PAPER_RADII",
     "DubinsWaypointGuidance",

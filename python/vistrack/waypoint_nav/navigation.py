@@ -19,11 +19,13 @@ from ..mission.model import Mission
 from ..preview import preview
 
 __all__ = [
-    "CASES", "DEFAULTS", "PAPER_GUST_MODEL", "PAPER_RADII", "DubinsWaypointGuidance", "HorizonPath",
+    "CASES", "DEFAULTS", "METHODS", "PAPER_GUST_MODEL", "PAPER_RADII", "DubinsWaypointGuidance", "HorizonPath",
     "NavigationFlight", "Options", "TurningPoint", "fly", "horizon_lengths", "horizon_path", "paper_flights",
     "paper_gusts", "reachability", "theta_against_weight", "turning_point", "turning_points",
 ]
 
+# DWN, the paper's WN and (beyond the paper) WN switching as ArduPlane does.
+METHODS: tuple[str, ...] = ("dwn", "wn", "wn_passed_line")
 HorizonPath = _wn.HorizonPath
 Options = _wn.Options
 TurningPoint = _wn.TurningPoint
@@ -118,10 +120,11 @@ class NavigationFlight:
 
     @property
     def label(self) -> str:
-        """"DWN" or "WN R_WP=0.1R"."""
+        """"DWN", "WN R_WP=0.1R" or, beyond the paper, "WN-line R_WP=0.1R" (ArduPlane's switching)."""
         if self.method == "dwn" or self.waypoint_radius is None:
             return "DWN"
-        return f"WN R_WP={self.waypoint_radius / self.turn_radius:g}R"
+        name = "WN-line" if self.method == "wn_passed_line" else "WN"
+        return f"{name} R_WP={self.waypoint_radius / self.turn_radius:g}R"
 
     @property
     def turning_points(self) -> np.ndarray:
@@ -198,7 +201,9 @@ def fly(
     guidance: str = str(_OPTIONS.guidance),
     l1_period: float = _OPTIONS.l1_period,
 ) -> NavigationFlight:
-    """Fly a route with DWN (``method="dwn"``) or WN (``"wn"``).
+    """Fly a route with DWN (``method="dwn"``), WN (``"wn"``: a waypoint is done inside R_WP) or,
+    beyond the paper, ArduPlane's WN (``"wn_passed_line"``: also once past the line through the
+    waypoint perpendicular to the leg, and inside a turn distance min(R_WP, L1) x turn / 90 deg).
 
     ``start`` (x, y, psi): every waypoint is flown. Without it the flight starts at the first
     waypoint heading to the second and flies the others. ``waypoint_radius`` is WN's R_WP (None:
@@ -228,7 +233,7 @@ def fly(
         raise VistrackError(text) from None
     return NavigationFlight(
         method=result.method,
-        waypoint_radius=result.waypoint_radius if result.method == "wn" else None,
+        waypoint_radius=result.waypoint_radius if result.method != "dwn" else None,
         turn_radius=float(turn_radius),
         start=pose,
         waypoints=flown,
@@ -249,17 +254,19 @@ def fly(
 def paper_flights(waypoints: Points, wind: Optional[Wind] = None, radii: Sequence[float] = PAPER_RADII,
                   methods: Sequence[str] = ("dwn", "wn"), **options: Any) -> list[NavigationFlight]:
     """DWN and WN at each waypoint radius (in units of R) over one route: Figures 11 (no wind) and
-    12 (``wind``). ``options`` go to :func:`fly` (turn_radius, speed, dt, gains, start, ...)."""
+    12 (``wind``); with "wn_passed_line" in ``methods`` also ArduPlane's switching at each radius.
+    ``options`` go to :func:`fly` (turn_radius, speed, dt, gains, start, ...)."""
     for method in methods:
-        if method not in ("dwn", "wn"):
-            raise VistrackError(f"method = {preview(method)}: must be 'dwn' or 'wn'")
+        if method not in METHODS:
+            raise VistrackError(f"method = {preview(method)}: must be one of " + ", ".join(map(repr, METHODS)))
     R = float(options.get("turn_radius", _OPTIONS.turn_radius))
     flights = []
     if "dwn" in methods:
         flights.append(fly(waypoints, method="dwn", wind=wind, **options))
-    if "wn" in methods:
-        for fraction in radii:
-            flights.append(fly(waypoints, method="wn", waypoint_radius=fraction * R, wind=wind, **options))
+    for method in ("wn", "wn_passed_line"):
+        if method in methods:
+            for fraction in radii:
+                flights.append(fly(waypoints, method=method, waypoint_radius=fraction * R, wind=wind, **options))
     return flights
 
 
