@@ -9,6 +9,7 @@
   numeric rows, and a sweep's results table (``results.csv`` + ``results.parquet``)
 - ``geojson``: trajectories and orbit plans in WGS84, road networks (:func:`read_roads`)
 - ``volumes``: the VV cache's ``vv-*.bin`` files (:func:`volume_files`)
+- ``osm``: OpenStreetMap buildings and roads (:func:`read_osm`; ``Environment.from_osm``)
 
 The loiter and follow readers and writers once here live in ``vistrack.loiter.files`` and
 ``vistrack.follow.files``; their old names here still answer. Every error names the option or
@@ -32,6 +33,7 @@ from .geojson import (
 )
 from .mesh import GEOJSON_SUFFIXES, footprint_environment, load_environment
 from .orbit_plan import AnyPlan, read_plan, write_plan
+from .osm import OsmCity, OsmSummary, read_osm
 from .tables import (
     numeric_rows,
     read_results_table,
@@ -57,6 +59,8 @@ __all__ = [
     "GEOJSON_SUFFIXES",
     "ROAD_MERGE_DISTANCE",
     "AnyPlan",
+    "OsmCity",
+    "OsmSummary",
     "append_json_line",
     "feature_collection",
     "footprint_environment",
@@ -67,6 +71,7 @@ __all__ = [
     "orbit_plan_geojson",
     "parse_yaml",
     "point_feature",
+    "read_osm",
     "read_plan",
     "read_results_table",
     "read_roads",
