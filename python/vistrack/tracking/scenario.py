@@ -175,6 +175,7 @@ class Scenario:
             self.environment.kind: str(self.environment.path)}
         if self.environment.kind == "mesh":
             env["up"] = self.environment.up
+        env.update(self.environment.options)
         poi: dict[str, Any] = {"speed": self.poi.speed}
         if self.poi.path is not None:
             poi["path"] = str(self.poi.path)

@@ -1,0 +1,70 @@
+"""``vistrack city`` and the scenario key ``city: {osm: FILE, ...}`` on a small hand-written OSM file."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import vistrack as vt
+from support.cli import cli, one_line_error
+from support.osm_files import OsmWriter
+from vistrack.scenario_blocks import city_block
+
+LAT, LON = 60.17, 24.94
+
+
+def small_city(tmp_path: Path) -> Path:
+    osm = OsmWriter()
+    osm.box(LAT, LON, building="yes", height="20")
+    osm.box(LAT, LON + 1e-3, building="yes", building__levels="3")
+    osm.box(LAT + 1e-3, LON, building="yes")
+    osm.box(LAT + 1e-3, LON + 1e-3, building="yes", height="high")
+    a, b, c = osm.node(LAT - 1e-4, LON), osm.node(LAT - 1e-4, LON + 2e-3), osm.node(LAT + 2e-3, LON + 2e-3)
+    osm.way([a, b, c], highway="tertiary")
+    return osm.write(tmp_path / "small.osm")
+
+
+def test_city_command_writes_geojson_mesh_and_summary(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = small_city(tmp_path)
+    out = tmp_path / "out"
+    status, err = cli(["city", str(path), "--out", str(out), "--default-height", "6"], capsys)
+    assert status == 0, err
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["imported"] == 4 and summary["footprints"] == 4 and summary["skipped"] == {}
+    assert summary["height_sources"] == {"height": 1, "levels": 1, "default": 2}
+    assert summary["bad_tags"] == {"height": 1} and summary["default_height"] == 6.0
+    assert summary["roads"]["edges"] == 2 and summary["tallest"]["height"] == 20.0
+    city = vt.io.read_osm(path, default_height=6.0)
+    collection = json.loads((out / "city.geojson").read_text())
+    lon, lat = np.array([p for f in collection["features"] for p in f["geometry"]["coordinates"][0]]).T
+    assert np.all(np.abs(lon - LON) < 0.01) and np.all(np.abs(lat - LAT) < 0.01)  # RFC 7946: [lon, lat]
+    again = vt.Environment.from_geojson(out / "city.geojson", origin=city.georeference)
+    np.testing.assert_array_equal(np.sort(again.heights), np.sort(city.environment.heights))
+    np.testing.assert_allclose(sorted(f.area for f in again.footprints),
+                               sorted(f.area for f in city.environment.footprints), rtol=1e-9)
+    obj = (out / "city.obj").read_text().splitlines()
+    assert sum(line.startswith("v ") for line in obj) == len(city.environment.vertices)
+    assert sum(line.startswith("f ") for line in obj) == len(city.environment.faces)
+
+
+def test_city_command_errors_are_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    one_line_error(["city", str(tmp_path / "none.osm"), "--out", str(tmp_path / "o")], capsys, 1, "FILE = ")
+    one_line_error(["city", str(small_city(tmp_path)), "--level-height", "-2"], capsys, 2, "--level-height")
+
+
+def test_scenario_city_osm(tmp_path: Path) -> None:
+    small_city(tmp_path)
+    spec = city_block({"city": {"osm": "small.osm", "level_height": 4.0, "default_height": 7.0}}, tmp_path)
+    assert spec is not None and spec.kind == "osm" and spec.options == {"level_height": 4.0, "default_height": 7.0}
+    env = spec.load(vt.Georeference(LAT, LON))
+    assert env.num_buildings == 4 and sorted(env.heights) == [7.0, 7.0, 12.0, 20.0]
+    assert env.origin == (LAT, LON, 0.0) and len(env.roads.edges) == 2
+    with pytest.raises(vt.VistrackError, match=r"city\.level_height"):
+        city_block({"city": {"geojson": "a.geojson", "level_height": 3.0}}, tmp_path)
+    with pytest.raises(vt.VistrackError, match=r"city\.default_height"):
+        city_block({"city": {"osm": "small.osm", "default_height": "tall"}}, tmp_path)
+    with pytest.raises(vt.VistrackError, match=r"city\.osm"):
+        city_block({"city": {"osm": "missing.osm"}}, tmp_path).load()  # type: ignore[union-attr]
