@@ -68,3 +68,46 @@ def test_scenario_city_osm(tmp_path: Path) -> None:
         city_block({"city": {"osm": "small.osm", "default_height": "tall"}}, tmp_path)
     with pytest.raises(vt.VistrackError, match=r"city\.osm"):
         city_block({"city": {"osm": "missing.osm"}}, tmp_path).load()  # type: ignore[union-attr]
+
+
+def two_streets(tmp_path: Path) -> Path:
+    """Two streets no road joins: west (lon LON) and east (lon LON + 2e-3), both north-south."""
+    osm = OsmWriter()
+    for lon in (LON, LON + 2e-3):
+        nodes = [osm.node(LAT + k * 5e-4, lon) for k in range(3)]
+        osm.way(nodes, highway="residential")
+    osm.box(LAT, LON + 1e-3, building="yes")
+    return osm.write(tmp_path / "streets.osm")
+
+
+def test_route_between_lon_lat_points(tmp_path: Path) -> None:
+    env = vt.Environment.from_osm(two_streets(tmp_path), origin=(LAT, LON))
+    path = vt.PoiPath.from_route(env, (LON + 1e-5, LAT - 1e-5), (LON - 1e-5, LAT + 1e-3), 5.0)
+    north = vt.Georeference(LAT, LON).to_local(LAT + 1e-3, LON)[1]
+    assert path.length == pytest.approx(north) and path.speed == 5.0
+    np.testing.assert_allclose(path.waypoints[0, :2], [0.0, 0.0], atol=1e-6)
+    local = vt.PoiPath.from_route(env, (2.0, -1.0), (0.5, north), 5.0, crs="local")
+    np.testing.assert_allclose(local.waypoints, path.waypoints)
+    with pytest.raises(vt.VistrackError, match="no road connects") as error:
+        vt.PoiPath.from_route(env, (LON, LAT), (LON + 2e-3, LAT), 5.0)
+    assert "\n" not in str(error.value)
+    with pytest.raises(vt.VistrackError, match="no georeference"):
+        vt.PoiPath.from_route(vt.Environment.demo(), (LON, LAT), (LON, LAT + 1e-3), 5.0)
+    with pytest.raises(vt.VistrackError, match=r"route\.crs"):
+        vt.PoiPath.from_route(env, (0, 0), (1, 1), 5.0, crs="utm")
+
+
+def test_scenario_poi_route_from_to(tmp_path: Path) -> None:
+    two_streets(tmp_path)
+    data = {"georeference": {"lat": LAT, "lon": LON}, "city": {"osm": "streets.osm"},
+            "poi": {"route": {"from": [LON, LAT], "to": [LON, LAT + 1e-3]}, "speed": 4.0}}
+    scenario = vt.Scenario.from_dict(data, tmp_path)
+    env = scenario.environment.load(scenario.origin)
+    path = scenario.poi.build(env)
+    assert path.speed == 4.0 and len(path.waypoints) == 3
+    assert scenario.to_dict()["poi"]["route"] == {"crs": "lonlat", "from": [LON, LAT], "to": [LON, LAT + 1e-3]}
+    with pytest.raises(vt.VistrackError, match=r"poi\.route\.to"):
+        vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON]}}}, tmp_path)
+    with pytest.raises(vt.VistrackError, match=r"poi\.route: no road connects"):
+        vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON + 2e-3, LAT]}}},
+                              tmp_path).poi.build(env)

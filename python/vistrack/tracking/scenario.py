@@ -32,6 +32,7 @@ from .._core import (
 from ..georeference import Georeference
 from ..io.text import parse_yaml, read_text
 from ..report_options import ReportOptions, report_options
+from ..routes import CRS, route_nodes
 from ..scenario_blocks import (
     City,
     Rename,
@@ -84,7 +85,7 @@ class PoiSpec:
     path: Path | None = None
     waypoints: list[list[float]] | None = None
     nodes: list[int] | None = None
-    route: list[list[float]] | None = None
+    route: list[list[float]] | dict[str, Any] | None = None  # via points, or {from, to, crs}
 
     def build(self, env: Environment) -> PoiPath:
         if self.path is not None:
@@ -93,6 +94,9 @@ class PoiSpec:
             return PoiPath(np.asarray(self.waypoints, dtype=float), self.speed)
         if self.nodes is not None:
             return PoiPath.from_nodes(env.roads, self.nodes, self.speed)
+        if isinstance(self.route, dict):
+            nodes = route_nodes(env, self.route["from"], self.route["to"], self.route["crs"], key="poi.route")
+            return PoiPath.from_nodes(env.roads, nodes, self.speed)
         if self.route is not None:
             return PoiPath.from_nodes(env.roads, road_route(env.roads, self.route), self.speed)
         raise VistrackError("poi: no path given (path: CSV, waypoints: [[x, y], ...] or nodes: [...])")
@@ -216,6 +220,22 @@ class Scenario:
         }
 
 
+def _route_ends(value: Mapping[str, Any]) -> dict[str, Any]:
+    """``poi.route: {from: [lon, lat], to: [lon, lat], crs: lonlat | local}`` (the road route
+    between the road nodes nearest to the two points; vistrack.routes)."""
+    reject_unknown(value, {"from", "to", "crs"}, "poi.route.", where=" in poi.route")
+    crs = value.get("crs", "lonlat")
+    if crs not in CRS:
+        raise fail("poi.route.crs", crs, "must be lonlat or local")
+    ends: dict[str, Any] = {"crs": crs}
+    for name in ("from", "to"):
+        point = value.get(name)
+        if not isinstance(point, list) or len(point) != 2:
+            raise fail(f"poi.route.{name}", point, "must be [lon, lat] (crs lonlat) or [x, y] (crs local)")
+        ends[name] = [number(f"poi.route.{name}[{k}]", c) for k, c in enumerate(point)]
+    return ends
+
+
 def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     spec = PoiSpec()
     if "speed" in section:
@@ -230,6 +250,8 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     value = section[key]
     if key == "path":
         spec.path = resolve_path(base, value, "poi.path")
+    elif key == "route" and isinstance(value, Mapping):
+        spec.route = _route_ends(value)
     elif key in ("waypoints", "route"):
         if not isinstance(value, list) or len(value) < 2:
             raise fail(f"poi.{key}", value, "must be a list of at least two points")
