@@ -10,15 +10,16 @@ VistrackError naming both.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 
 from ._core import Environment, PoiPath, VistrackError
 from .georeference import Georeference, degrees
-from .schema import fail, number
+from .schema import fail, number, reject_unknown
 
-__all__ = ["CRS", "route_nodes", "route_path"]
+__all__ = ["CRS", "route_ends", "route_nodes", "route_path"]
 
 CRS = ("lonlat", "local")
 
@@ -35,6 +36,22 @@ def _local(env: Environment, point: Sequence[float], crs: str, key: str) -> np.n
     lon, lat = degrees(f"{key}[0]", point[0], 180.0), degrees(f"{key}[1]", point[1], 90.0)
     east, north = georeference.to_local(lat, lon)
     return np.array([east, north])
+
+
+def route_ends(value: Mapping[str, Any], key: str) -> dict[str, Any]:
+    """A route's ends from a scenario: ``{from: [lon, lat], to: [lon, lat], crs: lonlat | local}``
+    (crs lonlat unless given), checked for shape; errors name ``key``."""
+    reject_unknown(value, {"from", "to", "crs"}, f"{key}.", where=f" in {key}")
+    crs = value.get("crs", "lonlat")
+    if crs not in CRS:
+        raise fail(f"{key}.crs", crs, "must be lonlat or local")
+    ends: dict[str, Any] = {"crs": crs}
+    for name in ("from", "to"):
+        point = value.get(name)
+        if not isinstance(point, list) or len(point) != 2:
+            raise fail(f"{key}.{name}", point, "must be [lon, lat] (crs lonlat) or [x, y] (crs local)")
+        ends[name] = [number(f"{key}.{name}[{k}]", c) for k, c in enumerate(point)]
+    return ends
 
 
 def route_nodes(env: Environment, start: Sequence[float], end: Sequence[float], crs: str = "lonlat",
@@ -62,4 +79,4 @@ def route_path(env: Environment, start: Sequence[float], end: Sequence[float], s
     return PoiPath.from_nodes(env.roads, route_nodes(env, start, end, crs), speed)
 
 
-PoiPath.from_route = staticmethod(route_path)  # type: ignore[attr-defined]
+PoiPath.from_route = staticmethod(route_path)  # type: ignore[method-assign]

@@ -111,3 +111,30 @@ def test_scenario_poi_route_from_to(tmp_path: Path) -> None:
     with pytest.raises(vt.VistrackError, match=r"poi\.route: no road connects"):
         vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON + 2e-3, LAT]}}},
                               tmp_path).poi.build(env)
+
+
+def test_follow_scenario_drives_a_road_route_on_an_osm_city(tmp_path: Path) -> None:
+    two_streets(tmp_path)
+    (tmp_path / "follow.yaml").write_text(f"""
+uav: {{speed: 21.0, min_turn_radius: 50.0, altitude: 120.0}}
+vehicle:
+  start: [0.0, 0.0]
+  legs:
+    - {{heading: north, speed: 5.0, duration: 20.0}}
+georeference: {{lat: {LAT}, lon: {LON}}}
+city:
+  osm: streets.osm
+  road: {{from: [{LON}, {LAT}], to: [{LON}, {LAT + 1e-3}]}}
+""")
+    scenario = vt.follow.FollowScenario.load(tmp_path / "follow.yaml")
+    assert scenario.city_available()
+    env = scenario.city.load(scenario.origin)  # type: ignore[union-attr]
+    vehicle = scenario.city_vehicle(env)
+    start = np.asarray(vehicle.position(0.0))[:2]
+    end = np.asarray(vehicle.position(20.0))[:2]
+    np.testing.assert_allclose(start, [0.0, 0.0], atol=1e-6)
+    assert end[1] == pytest.approx(100.0, abs=1e-6) and abs(end[0]) < 0.5  # 5 m/s north along the west street
+    bad = (tmp_path / "follow.yaml").read_text().replace(f"to: [{LON}, {LAT + 1e-3}]", f"to: [{LON + 2e-3}, {LAT}]")
+    (tmp_path / "bad.yaml").write_text(bad)
+    with pytest.raises(vt.VistrackError, match=r"city\.road: no road connects"):
+        vt.follow.FollowScenario.load(tmp_path / "bad.yaml").city_vehicle()

@@ -407,9 +407,11 @@ class Environment:
         Any mesh file CGAL reads (.obj .ply .stl .off): duplicate points merged, polygons triangulated, degenerate triangles dropped. up='y' maps a Y-up, north=-Z file (x, y, z) to east-north-up (x, -z, y). The ground level is the lowest vertex.
         """
     @staticmethod
-    def from_osm(path: str | Path, *, level_height: float = 3.0, roof_height: float = 0.0, default_height: float = 10.0, origin: Georeference | typing.Sequence[float] | None = None) -> Environment:
+    def from_osm(path: typing.Any, *, level_height: float = 3.0, roof_height: float = 0.0, default_height: float = 10.0, origin: typing.Any = None) -> Environment:
         """
-        ``Environment.from_osm``: the environment of :func:`read_osm` (its summary dropped).
+        ``Environment.from_osm``: the environment of :func:`read_osm` (its summary dropped). ``path``
+            an OSM file (str or Path); ``origin`` a Georeference or (lat, lon[, alt]), by default the
+            centre of the data's bounding box. (Annotated ``Any``: the compiled module's stubs list it.)
         """
     @staticmethod
     def from_triangles(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"]) -> Environment:

@@ -201,12 +201,13 @@ def _tallest(prints: list[Footprint]) -> Optional[dict[str, Any]]:
     return {"height": best.top, "osm_id": best.osm_id}
 
 
-def from_osm(path: str | Path, *, level_height: float = LEVEL_HEIGHT, roof_height: float = ROOF_HEIGHT,
-             default_height: float = DEFAULT_HEIGHT,
-             origin: Georeference | Sequence[float] | None = None) -> Environment:
-    """``Environment.from_osm``: the environment of :func:`read_osm` (its summary dropped)."""
+def from_osm(path: Any, *, level_height: float = LEVEL_HEIGHT, roof_height: float = ROOF_HEIGHT,
+             default_height: float = DEFAULT_HEIGHT, origin: Any = None) -> Environment:
+    """``Environment.from_osm``: the environment of :func:`read_osm` (its summary dropped). ``path``
+    an OSM file (str or Path); ``origin`` a Georeference or (lat, lon[, alt]), by default the
+    centre of the data's bounding box. (Annotated ``Any``: the compiled module's stubs list it.)"""
     return read_osm(path, level_height=level_height, roof_height=roof_height, default_height=default_height,
                     origin=origin).environment
 
 
-Environment.from_osm = staticmethod(from_osm)  # type: ignore[attr-defined]
+Environment.from_osm = staticmethod(from_osm)  # type: ignore[method-assign]

@@ -32,7 +32,7 @@ from .._core import (
 from ..georeference import Georeference
 from ..io.text import parse_yaml, read_text
 from ..report_options import ReportOptions, report_options
-from ..routes import CRS, route_nodes
+from ..routes import route_ends, route_nodes
 from ..scenario_blocks import (
     City,
     Rename,
@@ -220,22 +220,6 @@ class Scenario:
         }
 
 
-def _route_ends(value: Mapping[str, Any]) -> dict[str, Any]:
-    """``poi.route: {from: [lon, lat], to: [lon, lat], crs: lonlat | local}`` (the road route
-    between the road nodes nearest to the two points; vistrack.routes)."""
-    reject_unknown(value, {"from", "to", "crs"}, "poi.route.", where=" in poi.route")
-    crs = value.get("crs", "lonlat")
-    if crs not in CRS:
-        raise fail("poi.route.crs", crs, "must be lonlat or local")
-    ends: dict[str, Any] = {"crs": crs}
-    for name in ("from", "to"):
-        point = value.get(name)
-        if not isinstance(point, list) or len(point) != 2:
-            raise fail(f"poi.route.{name}", point, "must be [lon, lat] (crs lonlat) or [x, y] (crs local)")
-        ends[name] = [number(f"poi.route.{name}[{k}]", c) for k, c in enumerate(point)]
-    return ends
-
-
 def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     spec = PoiSpec()
     if "speed" in section:
@@ -251,7 +235,7 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     if key == "path":
         spec.path = resolve_path(base, value, "poi.path")
     elif key == "route" and isinstance(value, Mapping):
-        spec.route = _route_ends(value)
+        spec.route = route_ends(value, "poi.route")
     elif key in ("waypoints", "route"):
         if not isinstance(value, list) or len(value) < 2:
             raise fail(f"poi.{key}", value, "must be a list of at least two points")
