@@ -11,6 +11,7 @@ import pytest
 import vistrack as vt
 from support.cli import cli, one_line_error
 from support.osm_files import OsmWriter
+from support.paths import REPO, SHARED_DATA
 from vistrack.scenario_blocks import city_block
 
 LAT, LON = 60.17, 24.94
@@ -138,3 +139,15 @@ city:
     (tmp_path / "bad.yaml").write_text(bad)
     with pytest.raises(vt.VistrackError, match=r"city\.road: no road connects"):
         vt.follow.FollowScenario.load(tmp_path / "bad.yaml").city_vehicle()
+
+
+def test_helsinki_examples_build_their_routes() -> None:
+    if not (SHARED_DATA / "osm" / "Helsinki.osm.pbf").exists():
+        pytest.skip(f"{SHARED_DATA / 'osm'} absent (../shared/data/osm holds the real OSM extracts)")
+    scenario = vt.Scenario.load(REPO / "examples" / "helsinki_osm.yaml")
+    env = scenario.environment.load(scenario.origin)
+    poi = scenario.poi.build(env)
+    assert env.num_buildings > 500 and 800.0 < poi.length < 1100.0
+    follow = vt.follow.FollowScenario.load(REPO / "examples" / "follow_helsinki_osm.yaml")
+    vehicle = follow.city_vehicle(env)
+    np.testing.assert_allclose(vehicle.position(0.0), poi.waypoints[0, :2], atol=1e-6)  # the same route start
