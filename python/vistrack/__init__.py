@@ -2,7 +2,7 @@
 
 The C++ core lives in ``vistrack._core``; this package re-exports it by area. The Python layer:
 
-- shared parts: ``dubins``, ``flight``, ``visibility``, ``georeference``, ``schema``, ``progress``,
+- shared parts: ``dubins``, ``flight``, ``visibility``, ``georeference``, ``routes``, ``schema``, ``progress``,
   ``intercept``, ``report_options``; ``io`` (one module per generic file format) and ``mission``
   (autopilot missions and their builder)
 - one package per planner: ``tracking`` (visibility-volume orbits: scenario, pipeline, metrics,
@@ -34,6 +34,7 @@ from . import (
     metrics,
     mission,
     pipeline,
+    routes,
     saved_volumes,
     scenario,
     tracking,
@@ -212,6 +213,7 @@ __all__ = [
     "polygon_agreement",
     "radial_error_rate",
     "radial_xor_volume",
+    "routes",
     "run",
     "sample_vector_field",
     "saved_volumes",

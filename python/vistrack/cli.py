@@ -24,6 +24,7 @@ from .visibility import keep_freed_memory
 # Order shown in --help.
 COMMANDS = [
     "demo", "run", "volumes", "orbits", "simulate", "tune", "intercept", "waypoints", "loiter", "follow", "sweep",
+    "city",
 ]
 
 USAGE_ERROR = 2

@@ -4,7 +4,8 @@
                    roll_time_constant, max_roll_rate_deg_s}      # dynamics: roll (default) | dubins
     wind:         {east, north, gusts: {seed, intensity, length_scale}}   # m/s, the direction it blows to
     camera:       {fov_deg, max_gimbal_deg, mount}                # mount: levelled | roll
-    city:         {mesh | geojson | demo, up, road}               # the environment
+    city:         {mesh | geojson | osm | demo, up, road,         # the environment; an OSM file's
+                   level_height, roof_height, default_height}    # height options (osm only)
     georeference: {lat, lon, alt}                                 # where local (0, 0, 0) lies, WGS84
 
 Each product takes the blocks it uses (tracking: uav, city, georeference; loiter: uav, camera,
@@ -15,7 +16,7 @@ where the change is a rename (:func:`upgrade`), each with one line on stdout nam
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Mapping, Optional, Sequence
 
@@ -23,12 +24,15 @@ from ._core import Environment, Uav
 from .flight import Gusts, Wind
 from .georeference import Georeference, degrees
 from .io.mesh import load_environment
+from .io.osm import read_osm
+from .routes import route_ends
 from .schema import fail, integer, number, positive, reject_unknown, resolve_path, section
 
 __all__ = [
     "CAMERA_MOUNTS",
     "DEFAULT_DYNAMICS",
     "DYNAMICS",
+    "OSM_OPTIONS",
     "CameraBlock",
     "City",
     "Rename",
@@ -207,23 +211,30 @@ def camera_block(data: Mapping[str, Any], fov_deg: float, max_gimbal_deg: float,
                        number("camera.max_gimbal_deg", found.get("max_gimbal_deg", max_gimbal_deg)), mount)
 
 
+OSM_OPTIONS = ("level_height", "roof_height", "default_height")
+
+
 @dataclass
 class City:
-    """The ``city`` block: where the environment comes from (the demo city, a GeoJSON or a mesh
-    file, ``up`` its vertical axis) and, for the products that drive on it, a road path."""
+    """The ``city`` block: where the environment comes from (the demo city, a GeoJSON, mesh or
+    OpenStreetMap file, ``up`` a mesh's vertical axis, ``options`` an OSM file's height options)
+    and, for the products that drive on it, a road path."""
 
-    kind: str = "demo"  # "demo", "geojson" or "mesh"
+    kind: str = "demo"  # "demo", "geojson", "mesh" or "osm"
     path: Optional[Path] = None
     up: str = "z"
-    road: Optional[Path] = None
+    road: Optional[Path | dict[str, Any]] = None  # a CSV path, or a road route's ends {from, to, crs}
+    options: dict[str, float] = field(default_factory=dict)
 
     def load(self, origin: Optional[Georeference] = None) -> Environment:
         """The environment; ``origin`` (the scenario's georeference) becomes ``env.origin`` and is what
-        a longitude/latitude GeoJSON is projected about (without it: the data's centre)."""
+        a longitude/latitude GeoJSON or an OSM file is projected about (without it: the data's centre)."""
         if self.kind == "demo" or self.path is None:
             env = Environment.demo()
             env.origin = origin
             return env
+        if self.kind == "osm":
+            return read_osm(self.path, origin=origin, key="city.osm", **self.options).environment
         return load_environment(self.path, self.up, self.kind, origin, key=f"city.{self.kind}")
 
     def describe(self) -> str:
@@ -231,26 +242,37 @@ class City:
 
 
 def city_block(data: Mapping[str, Any], base: Path, road: bool = False) -> Optional[City]:
-    """``city: {mesh | geojson | demo, up, road}``; None when absent. ``road`` (a CSV path the
-    product drives along) is accepted only for products that use one."""
+    """``city: {mesh | geojson | osm | demo, up, road, level_height, roof_height, default_height}``;
+    None when absent. ``road`` (a CSV path the product drives along, or ``{from, to, crs}``: the
+    shortest route of the city's road network between two points, vistrack.routes) is accepted
+    only for products that use one; the height options only with ``osm``."""
     if data.get("city") is None:
         return None
-    found = section(data, "city", {"demo", "geojson", "mesh", "up"} | ({"road"} if road else set()))
-    sources = [key for key in ("demo", "geojson", "mesh") if found.get(key) not in (None, False)]
+    keys = {"demo", "geojson", "mesh", "osm", "up", *OSM_OPTIONS}
+    found = section(data, "city", keys | ({"road"} if road else set()))
+    sources = [key for key in ("demo", "geojson", "mesh", "osm") if found.get(key) not in (None, False)]
     if len(sources) != 1:
-        raise fail("city", found, "give exactly one of demo: true, geojson: FILE, mesh: FILE")
+        raise fail("city", found, "give exactly one of demo: true, geojson: FILE, mesh: FILE, osm: FILE")
     kind = sources[0]
-    road_path = resolve_path(base, found["road"], "city.road") if found.get("road") is not None else None
+    road_path: Optional[Path | dict[str, Any]] = None
+    if isinstance(found.get("road"), Mapping):
+        road_path = route_ends(found["road"], "city.road")
+    elif found.get("road") is not None:
+        road_path = resolve_path(base, found["road"], "city.road")
     if kind == "demo" and found["demo"] is not True:
         raise fail("city.demo", found["demo"], "must be true")
     if kind != "mesh" and "up" in found:
         raise fail("city.up", found["up"], "only applies to city.mesh")
+    for key in OSM_OPTIONS:
+        if kind != "osm" and key in found:
+            raise fail(f"city.{key}", found[key], "only applies to city.osm")
     if kind == "demo":
         return City(road=road_path)
     up = found.get("up", "z")
     if up not in ("y", "z"):
         raise fail("city.up", up, 'must be "z" or "y"')
-    return City(kind, resolve_path(base, found[kind], f"city.{kind}"), up, road_path)
+    options = {key: number(f"city.{key}", found[key]) for key in OSM_OPTIONS if key in found}
+    return City(kind, resolve_path(base, found[kind], f"city.{kind}"), up, road_path, options)
 
 
 def georeference_block(data: Mapping[str, Any]) -> Optional[Georeference]:

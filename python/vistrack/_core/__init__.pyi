@@ -407,6 +407,13 @@ class Environment:
         Any mesh file CGAL reads (.obj .ply .stl .off): duplicate points merged, polygons triangulated, degenerate triangles dropped. up='y' maps a Y-up, north=-Z file (x, y, z) to east-north-up (x, -z, y). The ground level is the lowest vertex.
         """
     @staticmethod
+    def from_osm(path: typing.Any, *, level_height: float = 3.0, roof_height: float = 0.0, default_height: float = 10.0, origin: typing.Any = None) -> Environment:
+        """
+        ``Environment.from_osm``: the environment of :func:`read_osm` (its summary dropped). ``path``
+            an OSM file (str or Path); ``origin`` a Georeference or (lat, lon[, alt]), by default the
+            centre of the data's bounding box. (Annotated ``Any``: the compiled module's stubs list it.)
+        """
+    @staticmethod
     def from_triangles(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int32, "[m, 3]"]) -> Environment:
         """
         Environment from triangles: vertices (n, 3) float in east-north-up metres, faces (m, 3) int indexing them. The ground level is the lowest vertex.
@@ -508,6 +515,11 @@ class PoiPath:
     def from_nodes(roads: RoadNetwork, nodes: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex], speed: typing.SupportsFloat | typing.SupportsIndex) -> PoiPath:
         """
         Path through a sequence of road-network node indices, each consecutive pair joined by an edge.
+        """
+    @staticmethod
+    def from_route(env: Environment, start: typing.Sequence[float], end: typing.Sequence[float], speed: float, crs: str = 'lonlat') -> PoiPath:
+        """
+        A POI driving at constant ``speed`` (m/s) along :func:`route_nodes`.
         """
     def __init__(self, waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, n]"], speed: typing.SupportsFloat | typing.SupportsIndex) -> None:
         """

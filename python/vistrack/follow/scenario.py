@@ -21,7 +21,8 @@ counter-clockwise from east unless a compass word is given)::
     flight: {dt: 0.02, integration: discrete, max_time: 0, guidance: l1, l1_period: 8, l1_damping: 0.75}
                                   # guidance law5: each 1 s leg by the paper's law (5)
     baseline: {radius: 0, beta: 0.025, k_psi: 20, direction: ccw}   # radius 0: Lemma 6; false: none
-    city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude
+    city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude;
+                                  # road: {from: [lon, lat], to: [lon, lat]}: a road route of the city
 
 uav, wind, camera, city and georeference are the blocks every scenario shares
 (:mod:`vistrack.scenario_blocks`).
@@ -41,6 +42,7 @@ from .._core import limits as _limits
 from ..flight import Wind
 from ..georeference import Georeference
 from ..io.documents import read_yaml_mapping
+from ..routes import route_nodes
 from ..scenario_blocks import (
     City,
     Rename,
@@ -155,13 +157,21 @@ class FollowScenario:
         """Whether the scenario has a city section whose map and road files exist (the shared
         data is optional: without it the city runs are skipped)."""
         city = self.city
-        return city is not None and city.path is not None and city.path.is_file() and city.road is not None \
-            and city.road.is_file()
+        if city is None or city.path is None or not city.path.is_file() or city.road is None:
+            return False
+        return isinstance(city.road, dict) or city.road.is_file()
 
-    def city_vehicle(self) -> GroundVehicle:
-        """The scenario's speed profile driven along the city road (its legs' headings ignored)."""
+    def city_vehicle(self, env: Optional[Environment] = None) -> GroundVehicle:
+        """The scenario's speed profile driven along the city road (its legs' headings ignored): a
+        CSV polyline, or the road route ``{from, to, crs}`` of the city's road network (``env``, the
+        loaded city; loaded here when not given)."""
         if self.city is None or self.city.road is None or not self.legs:
             raise fail("city", None, "needs a city section with a road and a vehicle given by legs")
+        if isinstance(self.city.road, dict):
+            env = env if env is not None else self.city.load(self.origin)
+            ends = self.city.road
+            nodes = route_nodes(env, ends["from"], ends["to"], ends["crs"], key="city.road")
+            return GroundVehicle.along_path(np.asarray(env.roads.nodes)[nodes], self.legs)
         road = read_road_path(self.city.road, "city.road")
         return GroundVehicle.along_path(road, self.legs)
 
@@ -188,7 +198,7 @@ class FollowScenario:
             say("city")
             env = self.city.load(self.origin)
             scene = VisibilityScene(env)
-            vehicle = self.city_vehicle()
+            vehicle = self.city_vehicle(env)
             uav = self.uav
             study.environment = env
             study.city_follow = simulate(vehicle, uav, parameters, wind_estimate=self.wind_estimate,
@@ -337,7 +347,7 @@ def _baseline(data: Mapping[str, Any]) -> tuple[Optional[float], Optional[Contro
 def _city(data: Mapping[str, Any], base: Path) -> Optional[City]:
     city = city_block(data, base, road=True)
     if city is not None and (city.kind == "demo" or city.road is None):
-        raise fail("city", data["city"], "needs a map (mesh: FILE or geojson: FILE) and road: a CSV path")
+        raise fail("city", data["city"], "needs a map (mesh, geojson or osm: FILE) and road: a CSV path or {from, to}")
     return city
 
 

@@ -11,6 +11,7 @@
   numeric rows, and a sweep's results table (``results.csv`` + ``results.parquet``)
 - ``geojson``: trajectories and orbit plans in WGS84, road networks (:func:`read_roads`)
 - ``volumes``: the VV cache's ``vv-*.bin`` files (:func:`volume_files`)
+- ``osm``: OpenStreetMap buildings and roads (:func:`read_osm`; ``Environment.from_osm``)
 
 The loiter and follow readers and writers once here live in ``vistrack.loiter.files`` and
 ``vistrack.follow.files``; their old names here still answer. Every error names the option or
@@ -35,6 +36,7 @@ from .geojson import (
 )
 from .mesh import GEOJSON_SUFFIXES, footprint_environment, load_environment
 from .orbit_plan import AnyPlan, read_plan, write_plan
+from .osm import OsmCity, OsmSummary, read_osm
 from .tables import (
     numeric_rows,
     read_results_table,
@@ -60,6 +62,8 @@ __all__ = [
     "GEOJSON_SUFFIXES",
     "ROAD_MERGE_DISTANCE",
     "AnyPlan",
+    "OsmCity",
+    "OsmSummary",
     "append_json_line",
     "feature_collection",
     "footprint_environment",
@@ -72,6 +76,7 @@ __all__ = [
     "parse_yaml",
     "point_feature",
     "read_json",
+    "read_osm",
     "read_plan",
     "read_results_table",
     "read_roads",

@@ -17,6 +17,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from .._core import RoadNetwork
+from ..scenario_blocks import OSM_OPTIONS
 from ..schema import fail, resolve_path
 from ..tracking.pipeline import compute
 from ..tracking.scenario import Scenario
@@ -25,7 +26,7 @@ from .kinds import CaseContext, CaseKind, CaseOutput, dotted_keys, flatten, regi
 __all__ = ["TRACKING"]
 
 # One source per section: setting one removes the others.
-_SOURCES = {"city": ("demo", "geojson", "mesh"), "poi": ("path", "waypoints", "nodes", "route")}
+_SOURCES = {"city": ("demo", "geojson", "mesh", "osm"), "poi": ("path", "waypoints", "nodes", "route")}
 
 _METRICS = (
     "environment", "environment_triangles", "environment_max_height_m", "origin",
@@ -63,7 +64,7 @@ def _load_base(value: Any, folder: Path) -> dict[str, Any]:
 
 def _keys(base: Mapping[str, Any]) -> set[str]:
     keys = dotted_keys(base) | {f"{section}.{source}" for section, names in _SOURCES.items() for source in names}
-    return (keys | {"city.up"}) - {"name"}
+    return (keys | {"city.up"} | {f"city.{option}" for option in OSM_OPTIONS}) - {"name"}
 
 
 def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
@@ -75,6 +76,9 @@ def _apply(data: dict[str, Any], key: str, value: Any) -> dict[str, Any]:
                 result[section].pop(other, None)
         if section == "city" and name != "mesh":
             result[section].pop("up", None)
+        if section == "city" and name != "osm":
+            for option in OSM_OPTIONS:
+                result[section].pop(option, None)
     return result
 
 
@@ -83,7 +87,7 @@ def _run(data: dict[str, Any], context: CaseContext) -> CaseOutput:
     spec, origin = scenario.environment, scenario.origin
     # The origin places a WGS84 GeoJSON map in the local frame: part of the map's key.
     where = "" if origin is None else repr((origin.lat, origin.lon, origin.alt))
-    key = context.resources.map_key(spec.kind, spec.path, spec.up, where)
+    key = context.resources.map_key(spec.kind, spec.path, spec.up, where, repr(sorted(spec.options.items())))
     env = context.resources.environment(key, lambda: spec.load(origin))
     # VVs are shared between cases with the same POI path and discretization (Resources.planner).
     poi = scenario.poi.build(env)

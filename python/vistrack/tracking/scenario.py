@@ -33,6 +33,7 @@ from ..georeference import Georeference
 from ..io.documents import parse_yaml
 from ..io.text import read_text
 from ..report_options import ReportOptions, report_options
+from ..routes import route_ends, route_nodes
 from ..scenario_blocks import (
     City,
     Rename,
@@ -85,7 +86,7 @@ class PoiSpec:
     path: Path | None = None
     waypoints: list[list[float]] | None = None
     nodes: list[int] | None = None
-    route: list[list[float]] | None = None
+    route: list[list[float]] | dict[str, Any] | None = None  # via points, or {from, to, crs}
 
     def build(self, env: Environment) -> PoiPath:
         if self.path is not None:
@@ -94,6 +95,9 @@ class PoiSpec:
             return PoiPath(np.asarray(self.waypoints, dtype=float), self.speed)
         if self.nodes is not None:
             return PoiPath.from_nodes(env.roads, self.nodes, self.speed)
+        if isinstance(self.route, dict):
+            nodes = route_nodes(env, self.route["from"], self.route["to"], self.route["crs"], key="poi.route")
+            return PoiPath.from_nodes(env.roads, nodes, self.speed)
         if self.route is not None:
             return PoiPath.from_nodes(env.roads, road_route(env.roads, self.route), self.speed)
         raise VistrackError("poi: no path given (path: CSV, waypoints: [[x, y], ...] or nodes: [...])")
@@ -176,6 +180,7 @@ class Scenario:
             self.environment.kind: str(self.environment.path)}
         if self.environment.kind == "mesh":
             env["up"] = self.environment.up
+        env.update(self.environment.options)
         poi: dict[str, Any] = {"speed": self.poi.speed}
         if self.poi.path is not None:
             poi["path"] = str(self.poi.path)
@@ -230,6 +235,8 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     value = section[key]
     if key == "path":
         spec.path = resolve_path(base, value, "poi.path")
+    elif key == "route" and isinstance(value, Mapping):
+        spec.route = route_ends(value, "poi.route")
     elif key in ("waypoints", "route"):
         if not isinstance(value, list) or len(value) < 2:
             raise fail(f"poi.{key}", value, "must be a list of at least two points")
