@@ -233,6 +233,10 @@ void bind_waypoint_nav(py::module_& parent) {
           },
           "whether the guidance got past each waypoint in time")
       .def_property_readonly("all_reached", [](const NavigationResult& r) { return r.metrics.all_reached; })
+      .def_property_readonly("closest_times", [](const NavigationResult& r) { return to_numpy(r.metrics.closest_times); },
+                             "time of each waypoint's closest approach, s")
+      .def_property_readonly("overshoots", [](const NavigationResult& r) { return to_numpy(r.metrics.overshoots); },
+                             "per waypoint: the largest distance outside the turn there")
       .def_property_readonly("overshoot", [](const NavigationResult& r) { return r.metrics.overshoot; },
                              "largest distance from the legs outside their turns")
       .def_property_readonly("undershoot", [](const NavigationResult& r) { return r.metrics.undershoot; },

@@ -446,3 +446,36 @@ def test_cli_flies_all_three_methods(tmp_path: Path) -> None:
     assert main(["waypoints", str(METRES), "--method", "all", "--quiet", "--out", str(out), "--frames", "4"]) == 0
     labels = [f["label"] for f in json.loads((out / "metrics.json").read_text())["flights"]]
     assert labels[0] == "DWN" and "WN R_WP=0.1R" in labels and "WN-line R_WP=0.1R" in labels
+
+
+def test_per_waypoint_and_per_leg_tables_agree_with_the_flight(calm: list[wn.NavigationFlight]) -> None:
+    """Issue 32: the tables a report prints, checked against the trajectory itself."""
+    for flight in calm:
+        rows, legs = flight.waypoint_table(), flight.leg_table()
+        assert len(rows) == len(flight.waypoints) and len(legs) == len(flight.waypoints)
+        traj = flight.trajectory
+        for row, w in zip(rows, flight.waypoints):
+            assert row["miss"] == pytest.approx(np.min(np.hypot(traj[:, 1] - w[0], traj[:, 2] - w[1])), abs=0.02)
+            i = int(np.searchsorted(traj[:, 0], row["time"]))
+            assert np.hypot(traj[i, 1] - w[0], traj[i, 2] - w[1]) <= row["miss"] + 0.8 * 0.02 + 1e-12
+            assert 0.0 <= row["overshoot"] <= flight.overshoot + 1e-12
+        assert max(r["overshoot"] for r in rows) == pytest.approx(flight.overshoot, abs=1e-12)
+        assert sum(leg["time"] for leg in legs) == pytest.approx(rows[-1]["time"] - traj[0, 0], abs=1e-9)
+        assert sum(leg["flown"] for leg in legs) <= flight.path_length + 1e-9
+        route = np.vstack([flight.start[:2], flight.waypoints])
+        np.testing.assert_allclose([leg["length"] for leg in legs], np.linalg.norm(np.diff(route, axis=0), axis=1))
+        metrics = flight.metrics()
+        assert metrics["max_miss_before_last_over_R"] == pytest.approx(flight.miss_distances[:-1].max() / R)
+
+
+def test_cli_writes_the_waypoint_and_leg_tables(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "t"
+    assert main(["waypoints", str(ROUTE), "--paper-units", "--method", "wn", "--waypoint-radius", "0.07",
+                 "--quiet", "--out", str(out), "--frames", "4"]) == 0
+    printed = capsys.readouterr().out
+    assert "(the last, where the flight ends:" in printed
+    report = (out / "report.md").read_text()
+    assert "waypoints and legs" in report and "max miss before the last (R)" in report
+    lines = (out / "waypoints_wn_0.1R.csv").read_text().splitlines()
+    assert lines[0] == "waypoint,x,y,miss,miss_over_R,time,overshoot,overshoot_over_R,reached"
+    assert len(lines) == 1 + 5 and (out / "legs_wn_0.1R.csv").read_text().startswith("leg,length,time,flown")

@@ -138,6 +138,8 @@ class DubinsWaypointGuidance : public FlightGuidance {
 
 struct NavigationMetrics {
   std::vector<double> miss_distances;  // closest approach of the flown path to each waypoint
+  std::vector<double> closest_times;   // time of that closest approach (the sample starting its segment), s
+  std::vector<double> overshoots;      // per waypoint: the largest distance outside the turn there
   std::vector<std::uint8_t> reached;   // the guidance got past the waypoint (in order) in time
   bool all_reached = false;
   double overshoot = 0.0;    // largest distance from the planned legs on the outside of their turns

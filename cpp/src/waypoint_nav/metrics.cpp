@@ -38,6 +38,7 @@ NavigationMetrics navigation_metrics(const FlightTrajectory& traj, const Vec2& s
   // Miss distance of W_k: closest approach of the flown polyline, searched from the closest
   // approach of W_{k-1} until W_{k+2} becomes the target (by then W_k is behind in WN and DWN).
   out.miss_distances.assign(m, std::numeric_limits<double>::infinity());
+  out.closest_times.assign(m, traj.t.front());
   std::size_t from = 0;
   for (std::size_t k = 0; k < m; ++k) {
     std::size_t to = n;
@@ -55,6 +56,7 @@ NavigationMetrics navigation_metrics(const FlightTrajectory& traj, const Vec2& s
         closest = i;
       }
     }
+    out.closest_times[k] = traj.t[closest];
     from = closest;
   }
 
@@ -75,6 +77,7 @@ NavigationMetrics navigation_metrics(const FlightTrajectory& traj, const Vec2& s
     const double c = cross(legs[i] - legs[i - 1], legs[i + 1] - legs[i]);
     turn[i] = c > 0.0 ? 1 : (c < 0.0 ? -1 : 0);
   }
+  out.overshoots.assign(m, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2 p = position(i);
     double best = std::numeric_limits<double>::infinity(), tau = 0.0;
@@ -93,6 +96,7 @@ NavigationMetrics navigation_metrics(const FlightTrajectory& traj, const Vec2& s
     const bool at_vertex = tau <= 0.0 || tau >= 1.0;
     const bool outside = at_vertex || turn[corner] == 0 || side * turn[corner] < 0.0;
     (outside ? out.overshoot : out.undershoot) = std::max(outside ? out.overshoot : out.undershoot, best);
+    if (outside && corner >= 1) out.overshoots[corner - 1] = std::max(out.overshoots[corner - 1], best);  // legs[k + 1] = W_k
   }
 
   // Swirls: per stretch of one active waypoint, the bearing to it accumulated (the winding of the

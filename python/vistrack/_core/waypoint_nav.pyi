@@ -181,6 +181,11 @@ class NavigationResult:
     def all_reached(self) -> bool:
         ...
     @property
+    def closest_times(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        time of each waypoint's closest approach, s
+        """
+    @property
     def duration(self) -> float:
         ...
     @property
@@ -207,6 +212,11 @@ class NavigationResult:
     def overshoot(self) -> float:
         """
         largest distance from the legs outside their turns
+        """
+    @property
+    def overshoots(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        per waypoint: the largest distance outside the turn there
         """
     @property
     def path_length(self) -> float:

@@ -44,6 +44,7 @@ from .tables import (
     write_flight,
     write_results_table,
     write_route,
+    write_rows,
     write_trajectory,
 )
 from .text import append_json_line, read_text, write_json
@@ -91,5 +92,6 @@ __all__ = [
     "write_plan",
     "write_results_table",
     "write_route",
+    "write_rows",
     "write_trajectory",
 ]

@@ -70,6 +70,20 @@ def write_route(points: np.ndarray, path: str | Path) -> Path:
     return file
 
 
+def write_rows(rows: list[dict[str, Any]], path: str | Path) -> Path:
+    """Rows of plain values (all with the keys of the first, in its order) as CSV with a header:
+    numbers at full precision, booleans as true/false."""
+    file = Path(path)
+    columns = list(rows[0]) if rows else []
+
+    def cell(value: Any) -> str:
+        return ("true" if value else "false") if isinstance(value, bool) else repr(value)
+
+    lines = [",".join(columns) + "\n"] + [",".join(cell(row[c]) for c in columns) + "\n" for row in rows]
+    file.write_text("".join(lines), encoding="utf-8")
+    return file
+
+
 def write_flight(trajectory: "FlightTrajectory", path: str | Path) -> Path:
     """A flown trajectory (``vistrack.flight.FlightTrajectory``) as CSV, full double precision:
     t,x,y,psi,command,target_x,target_y,target_index,wind_east,wind_north."""

@@ -10,7 +10,7 @@ from typing import Any, Optional, Sequence
 import numpy as np
 
 from .._core.flight import Wind
-from ..io import write_flight, write_json, write_route
+from ..io import write_flight, write_json, write_route, write_rows
 from ..plotting.motion import Line, MotionScene, Track
 from ..plotting.waypoint_nav import figure_bank, figure_monte_carlo, figure_paths, figure_theta_weight
 from ..report_options import ReportOptions
@@ -51,6 +51,8 @@ def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Option
         name = file_label(flight)
         entry = flight.metrics()
         entry["trajectory"] = write_flight(flight.flight, out / f"trajectory_{name}.csv").name
+        entry["waypoints_file"] = write_rows(flight.waypoint_table(), out / f"waypoints_{name}.csv").name
+        entry["legs_file"] = write_rows(flight.leg_table(), out / f"legs_{name}.csv").name
         if flight.method == "dwn":
             entry["turning_points_file"] = write_route(flight.turning_points, out / "turning_points_dwn.csv").name
         record["flights"].append(entry)
@@ -75,12 +77,24 @@ def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Option
 
 def _document(flights: Sequence[NavigationFlight], record: dict[str, Any], route_name: str) -> Document:
     R = flights[0].turn_radius
-    rows = [[f.label, f"{f.miss_distances.max() / R:.3f}", f"{f.overshoot / R:.3f}", str(f.swirls),
+    rows = [[f.label, f"{f.miss_distances[:-1].max() / R:.3f}" if len(f.miss_distances) > 1 else "-",
+             f"{f.miss_distances[-1] / R:.3f}", f"{f.overshoot / R:.3f}", str(f.swirls),
              f"{f.path_length:.4g}", f"{f.duration:.4g}", "yes" if f.all_reached else "no",
              f"{f.flight.smoothness().roll_reversals_per_s:.2f}"] for f in flights]
     blocks: list[Any] = [Heading("Flights"),
-                         Table(["flight", "max miss (R)", "overshoot (R)", "swirls", "path length", "time",
-                                "all reached", "roll reversals/s"], rows)]
+                         Table(["flight", "max miss before the last (R)", "miss at the last (R)", "overshoot (R)",
+                                "swirls", "path length", "time", "all reached", "roll reversals/s"], rows),
+                         "The flight ends at the last waypoint, so its miss there is the stopping rule's, shown "
+                         "apart."]
+    for f in flights:
+        blocks += [Heading(f"{f.label}: waypoints and legs"),
+                   Table(["waypoint", "miss (R)", "at t (s)", "overshoot (R)", "reached"],
+                         [[str(r["waypoint"]), f"{r['miss_over_R']:.3f}", f"{r['time']:.4g}",
+                           f"{r['overshoot_over_R']:.3f}", "yes" if r["reached"] else "no"]
+                          for r in f.waypoint_table()]),
+                   Table(["leg", "length", "flown", "time (s)"],
+                         [[str(r["leg"]), f"{r['length']:.4g}", f"{r['flown']:.4g}", f"{r['time']:.4g}"]
+                          for r in f.leg_table()])]
     titles = {"paths.png": "Paths (Figures 11/12)", "bank.png": "Bank flown",
               "fig10_theta_weight.png": "Figure 10: theta against w_a",
               "monte_carlo.png": "Monte Carlo over random routes and winds"}

@@ -100,6 +100,8 @@ class NavigationFlight:
     flight: FlightTrajectory
     miss_distances: np.ndarray
     reached: np.ndarray
+    closest_times: np.ndarray
+    overshoots: np.ndarray
     swirls: int
     overshoot: float
     undershoot: float
@@ -156,6 +158,29 @@ class NavigationFlight:
             builder.return_to_launch()
         return builder.build()
 
+    def waypoint_table(self) -> list[dict[str, Any]]:
+        """One row per waypoint flown: its miss distance (closest approach), the time of it, the
+        largest overshoot outside the turn there, and whether the guidance got past it (lengths in
+        the route's units and in R)."""
+        R = self.turn_radius
+        return [{"waypoint": k, "x": float(w[0]), "y": float(w[1]), "miss": float(self.miss_distances[k]),
+                 "miss_over_R": float(self.miss_distances[k] / R), "time": float(self.closest_times[k]),
+                 "overshoot": float(self.overshoots[k]), "overshoot_over_R": float(self.overshoots[k] / R),
+                 "reached": bool(self.reached[k])} for k, w in enumerate(np.asarray(self.waypoints, dtype=float))]
+
+    def leg_table(self) -> list[dict[str, Any]]:
+        """One row per leg (start -> W_0 -> W_1 ...): its length, and the flight time and flown
+        distance between the closest approaches at its ends."""
+        points = np.vstack([np.asarray(self.start[:2], dtype=float), np.asarray(self.waypoints, dtype=float)[:, :2]])
+        traj = self.trajectory
+        t, xy = traj[:, 0], traj[:, 1:3]
+        flown = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(xy, axis=0), axis=1))])
+        times = np.concatenate([[t[0]], self.closest_times])
+        along = np.interp(times, t, flown)
+        return [{"leg": k, "length": float(np.linalg.norm(points[k + 1] - points[k])),
+                 "time": float(times[k + 1] - times[k]), "flown": float(along[k + 1] - along[k])}
+                for k in range(len(points) - 1)]
+
     def metrics(self) -> dict[str, Any]:
         """The metrics as plain data (JSON), lengths also in units of R."""
         R = self.turn_radius
@@ -179,6 +204,11 @@ class NavigationFlight:
             "fuel": self.fuel,
             "turning_points": self.turning_points.tolist(),
             "smoothness": self.flight.smoothness().as_dict() if len(self.flight.t) >= 2 else None,
+            # The flight stops at the last waypoint by construction: the misses before it, stated.
+            "max_miss_before_last_over_R": float(self.miss_distances[:-1].max() / R) if len(self.miss_distances) > 1
+            else None,
+            "waypoints": self.waypoint_table(),
+            "legs": self.leg_table(),
         }
 
 
@@ -240,6 +270,8 @@ def fly(
         flight=result.trajectory,
         miss_distances=np.asarray(result.miss_distances),
         reached=np.asarray(result.reached),
+        closest_times=np.asarray(result.closest_times),
+        overshoots=np.asarray(result.overshoots),
         swirls=int(result.swirls),
         overshoot=float(result.overshoot),
         undershoot=float(result.undershoot),
