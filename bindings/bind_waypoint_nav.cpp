@@ -31,7 +31,7 @@ WaypointNavOptions navigation_options(NavigationMethod method, double turn_radiu
                                       const Weights& weights, FlightIntegration integration,
                                       std::optional<double> max_time, DynamicsModel dynamics,
                                       double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
-                                      double l1_period) {
+                                      double l1_period, bool wind_aware) {
   WaypointNavOptions o;
   o.method = method;
   o.turn_radius = turn_radius;
@@ -47,6 +47,7 @@ WaypointNavOptions navigation_options(NavigationMethod method, double turn_radiu
   o.max_roll_rate_deg_s = max_roll_rate_deg_s;
   o.guidance = guidance;
   o.l1.period = l1_period;
+  o.wind_aware = wind_aware;
   return o;
 }
 
@@ -257,10 +258,10 @@ void bind_waypoint_nav(py::module_& parent) {
                        std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
                        FlightIntegration integration, std::optional<double> max_time, DynamicsModel dynamics,
                        double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
-                       double l1_period) {
+                       double l1_period, bool wind_aware) {
              return make_validated(navigation_options(method, turn_radius, speed, dt, gains, waypoint_radius, weights,
                                                       integration, max_time, dynamics, roll_time_constant,
-                                                      max_roll_rate_deg_s, guidance, l1_period));
+                                                      max_roll_rate_deg_s, guidance, l1_period, wind_aware));
            }),
            py::kw_only(), py::arg("method") = defaults.method, py::arg("turn_radius") = defaults.turn_radius,
            py::arg("speed") = defaults.speed, py::arg("dt") = defaults.dt,
@@ -269,12 +270,13 @@ void bind_waypoint_nav(py::module_& parent) {
            py::arg("integration") = defaults.integration, py::arg("max_time") = py::none(),
            py::arg("dynamics") = defaults.dynamics, py::arg("roll_time_constant") = defaults.roll_time_constant,
            py::arg("max_roll_rate_deg_s") = defaults.max_roll_rate_deg_s, py::arg("guidance") = defaults.guidance,
-           py::arg("l1_period") = defaults.l1.period,
-           "method 'dwn' or 'wn'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP "
+           py::arg("l1_period") = defaults.l1.period, py::arg("wind_aware") = defaults.wind_aware,
+           "method 'dwn', 'wn' or 'wn_passed_line'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP "
            "(None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + "
            "2 pi R per waypoint) / v); dynamics 'dubins' or 'roll' (metres and seconds) with the roll model's "
            "roll_time_constant (s) and max_roll_rate_deg_s; guidance 'law5' (the paper's law (5) with gains) or "
-           "'l1' (L1 line tracking, period l1_period s, damping 0.75) on every leg.")
+           "'l1' (L1 line tracking, period l1_period s, damping 0.75) on every leg; wind_aware: the leg law steers the "
+           "course over the ground with the known mean wind.")
       .def_readwrite("method", &WaypointNavOptions::method, "'dwn' or 'wn'")
       .def_readwrite("turn_radius", &WaypointNavOptions::turn_radius, "R: minimum turn radius and DWN's turning circles")
       .def_readwrite("speed", &WaypointNavOptions::speed, "v")
@@ -298,6 +300,8 @@ void bind_waypoint_nav(py::module_& parent) {
       .def_property(
           "l1_period", [](const WaypointNavOptions& o) { return o.l1.period; },
           [](WaypointNavOptions& o, double period) { o.l1.period = period; }, "guidance l1: the L1 period, s")
+      .def_readwrite("wind_aware", &WaypointNavOptions::wind_aware,
+                     "the leg law knows the mean wind and steers the course over the ground (beyond the paper)")
       .def_readwrite("max_roll_rate_deg_s", &WaypointNavOptions::max_roll_rate_deg_s, "roll model: p_max, deg/s")
       .def("validate", &WaypointNavOptions::validate, "Raise VistrackError naming the first invalid field.")
       .def("__repr__", [](const WaypointNavOptions& o) {
@@ -321,10 +325,10 @@ void bind_waypoint_nav(py::module_& parent) {
          double dt, std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
          std::optional<Wind> wind, FlightIntegration integration, std::optional<double> max_time,
          DynamicsModel dynamics, double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
-         double l1_period) {
+         double l1_period, bool wind_aware) {
         const WaypointNavOptions o = navigation_options(method, turn_radius, speed, dt, gains, waypoint_radius, weights,
                                                         integration, max_time, dynamics, roll_time_constant,
-                                                        max_roll_rate_deg_s, guidance, l1_period);
+                                                        max_roll_rate_deg_s, guidance, l1_period, wind_aware);
         const std::vector<Vec2> route = to_points(waypoints, "waypoints");
         const Wind w = wind.value_or(Wind{});
         py::gil_scoped_release release;
@@ -337,7 +341,7 @@ void bind_waypoint_nav(py::module_& parent) {
       py::arg("integration") = defaults.integration, py::arg("max_time") = py::none(),
       py::arg("dynamics") = defaults.dynamics, py::arg("roll_time_constant") = defaults.roll_time_constant,
       py::arg("max_roll_rate_deg_s") = defaults.max_roll_rate_deg_s, py::arg("guidance") = defaults.guidance,
-      py::arg("l1_period") = defaults.l1.period,
+      py::arg("l1_period") = defaults.l1.period, py::arg("wind_aware") = defaults.wind_aware,
       "Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' "
       "vehicle, each leg by 'law5' or 'l1'; returns NavigationResult. Releases the GIL.");
 }

@@ -237,11 +237,17 @@ class LineFeedback {
   double max_turn() const { return speed_ * dt_ / turn_radius_; }  // psi_max
   const LineFeedbackGains& gains() const { return gains_; }
   bool smooth_sign() const { return smooth_sign_; }
+  // Wind-aware (beyond the paper): phi_T and s_dot from the course of the ground velocity
+  // v (cos psi, sin psi) + w with the known mean wind w, instead of from the heading.
+  void set_wind(const Vec2& mean_wind);
+  bool wind_aware() const { return wind_aware_; }
 
  private:
   double speed_ = 1.0, turn_radius_ = 1.0, dt_ = 0.02;
   LineFeedbackGains gains_;
   bool smooth_sign_ = false;
+  bool wind_aware_ = false;
+  Vec2 wind_ = Vec2::Zero();
 };
 
 // L1 line tracking, as ArduPlane flies a leg (Park, Deyst & How, "A New Nonlinear Guidance Logic
@@ -261,10 +267,18 @@ class L1Line {
   double turn_rate(const Configuration& q, const Vec2& line_start, const Vec2& target) const;
   double distance() const { return distance_; }  // L1, length units
   const L1Gains& gains() const { return gains_; }
+  // Wind-aware (beyond the paper, as ArduPlane flies L1): the known mean wind makes the law steer
+  // the ground velocity v (cos psi, sin psi) + w instead of the heading, with L1 and the lateral
+  // acceleration from the ground speed V_g (L1 = damping period V_g / pi, a = 4 damping^2 V_g^2 /
+  // L1 sin(eta)) and the turn rate a / v. Without it (the default) the law sees no wind.
+  void set_wind(const Vec2& mean_wind);
+  bool wind_aware() const { return wind_aware_; }
 
  private:
   double speed_ = 1.0, distance_ = 1.0;
   L1Gains gains_;
+  bool wind_aware_ = false;
+  Vec2 wind_ = Vec2::Zero();
 };
 
 // L1 guidance on a curve (Park, Deyst & How 2004): the reference point is where the circle of

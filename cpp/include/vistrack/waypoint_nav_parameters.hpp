@@ -47,6 +47,9 @@ struct WaypointNavOptions {
   // paper's law (5) with `gains`, or L1 line tracking with `l1`.
   LegGuidance guidance = LegGuidance::LineFeedback;
   L1Gains l1;
+  // Beyond the paper: the leg law knows the mean wind (the wind's constant part, not its gusts)
+  // and steers the course over the ground (L1Line::set_wind, LineFeedback::set_wind).
+  bool wind_aware = false;
   double roll_time_constant = Uav{}.roll_time_constant;     // tau, s
   double max_roll_rate_deg_s = Uav{}.max_roll_rate_deg_s;   // p_max, deg/s
   void validate() const;

@@ -35,9 +35,21 @@ double l1_turn_rate(double eta, double speed, double distance, const L1Gains& ga
 L1Line::L1Line(double speed, const L1Gains& gains)
     : speed_(speed), distance_(l1_distance(speed, gains)), gains_(gains) {}
 
+void L1Line::set_wind(const Vec2& mean_wind) {
+  require_finite(mean_wind.x(), "wind.east");
+  require_finite(mean_wind.y(), "wind.north");
+  if (!(mean_wind.norm() < speed_))
+    detail::fail_field("wind", detail::to_text(mean_wind.norm()), "the wind-aware law needs a wind below the airspeed");
+  wind_aware_ = true;
+  wind_ = mean_wind;
+}
+
 double L1Line::turn_rate(const Configuration& q, const Vec2& line_start, const Vec2& target) const {
   const Vec2 p(q.x, q.y);
-  const Vec2 velocity = speed_ * Vec2(std::cos(q.psi), std::sin(q.psi));
+  // The velocity the law steers: the airspeed vector, or with the wind known the ground velocity.
+  const Vec2 velocity = speed_ * Vec2(std::cos(q.psi), std::sin(q.psi)) + (wind_aware_ ? wind_ : Vec2::Zero());
+  const double ground_speed = wind_aware_ ? velocity.norm() : speed_;
+  const double distance = wind_aware_ ? l1_distance(ground_speed, gains_) : distance_;
   const Vec2 line = target - line_start;
   const double length = line.norm();
   const double scale = std::max({1.0, line_start.cwiseAbs().maxCoeff(), target.cwiseAbs().maxCoeff()});
@@ -49,17 +61,19 @@ double L1Line::turn_rate(const Configuration& q, const Vec2& line_start, const V
     const Vec2 from_start = p - line_start;
     const double along_track = from_start.dot(along);
     const double from_start_distance = from_start.norm();
-    if (from_start_distance > distance_ && along_track < -0.7071 * from_start_distance) {
+    if (from_start_distance > distance && along_track < -0.7071 * from_start_distance) {
       eta = angle_to(velocity, line_start - p);  // far behind the start: go there first
     } else if (along_track > length + 3.0 * speed_) {
       eta = angle_to(velocity, target - p);  // well past the target: come back to it
     } else {
       const double cross_track = cross(along, from_start);  // positive left of the line
-      const double sine_capture = std::clamp(-cross_track / distance_, -0.7071, 0.7071);
+      const double sine_capture = std::clamp(-cross_track / distance, -0.7071, 0.7071);
       eta = std::asin(sine_capture) + angle_to(velocity, along);
     }
   }
-  return l1_turn_rate(eta, speed_, distance_, gains_);
+  if (!wind_aware_) return l1_turn_rate(eta, speed_, distance_, gains_);
+  // a / v with a = 4 damping^2 V_g^2 / L1 sin(eta): the ground-speed law's acceleration, turned by the airspeed.
+  return l1_turn_rate(eta, ground_speed, distance, gains_) * ground_speed / speed_;
 }
 
 namespace {

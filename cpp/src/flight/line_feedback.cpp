@@ -19,19 +19,33 @@ LineFeedback::LineFeedback(double speed, double turn_radius, double dt, const Li
     detail::fail_field("dt", dt, "psi_max = v dt / R = " + detail::computed_text(psi_max) + " rad exceeds pi/2");
 }
 
+void LineFeedback::set_wind(const Vec2& mean_wind) {
+  require_finite(mean_wind.x(), "wind.east");
+  require_finite(mean_wind.y(), "wind.north");
+  if (!(mean_wind.norm() < speed_))
+    detail::fail_field("wind", detail::to_text(mean_wind.norm()), "the wind-aware law needs a wind below the airspeed");
+  wind_aware_ = true;
+  wind_ = mean_wind;
+}
+
 LineFeedbackTerms LineFeedback::terms(const Configuration& q, const Vec2& line_start, const Vec2& target) const {
   LineFeedbackTerms out;
   const Vec2 p(q.x, q.y);
   const Vec2 to_target = target - p;
-  out.target_angle = wrap_to_pi(std::atan2(to_target.y(), to_target.x()) - q.psi);
+  // The direction the law steers: the heading, or with the wind known the course over the ground.
+  const Vec2 ground = speed_ * Vec2(std::cos(q.psi), std::sin(q.psi)) + wind_;
+  const double course = wind_aware_ ? std::atan2(ground.y(), ground.x()) : q.psi;
+  out.target_angle = wrap_to_pi(std::atan2(to_target.y(), to_target.x()) - course);
   const Vec2 line = target - line_start;
   const double scale = std::max({1.0, line_start.cwiseAbs().maxCoeff(), target.cwiseAbs().maxCoeff()});
   if (line.norm() > 1e-12 * scale) {
     const Vec2 along = line.normalized();
     const Vec2 left(-along.y(), along.x());
     out.cross_track = (p - line_start).dot(left);
-    // d s / dt from the heading alone (the law does not know the wind): v sin(psi - chi).
-    out.cross_track_step = speed_ * (std::cos(q.psi) * left.x() + std::sin(q.psi) * left.y()) * dt_;
+    // d s / dt from the heading alone (the law does not know the wind): v sin(psi - chi); with
+    // the wind known, from the ground velocity.
+    out.cross_track_step = wind_aware_ ? ground.dot(left) * dt_
+                                       : speed_ * (std::cos(q.psi) * left.x() + std::sin(q.psi) * left.y()) * dt_;
   }
   const double psi_max = max_turn();
   const double magnitude = std::abs(gains_.g * out.cross_track + gains_.h * out.cross_track_step);

@@ -41,9 +41,13 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
       3.0 * (route + kTwoPi * R * static_cast<double>(waypoints.size())) / options.speed);
 
   // Continuous flight smooths sign(phi_T) (see LineFeedback).
-  const LineFeedback law5(options.speed, R, options.dt, options.gains,
-                          options.integration == FlightIntegration::Continuous);
-  const L1Line l1(options.speed, options.l1);
+  LineFeedback law5(options.speed, R, options.dt, options.gains, options.integration == FlightIntegration::Continuous);
+  L1Line l1(options.speed, options.l1);
+  if (options.wind_aware) {
+    const Vec2 mean(wind.east, wind.north);  // the known wind: its constant part, not the gusts
+    law5.set_wind(mean);
+    l1.set_wind(mean);
+  }
   std::unique_ptr<FlightGuidance> guidance;
   DubinsWaypointGuidance* dwn = nullptr;
   if (options.method == NavigationMethod::Dubins) {

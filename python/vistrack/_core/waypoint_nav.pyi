@@ -255,9 +255,9 @@ class Options:
     """
     One navigation flight's settings; the defaults (the paper's section 3) are those of navigate() and fly().
     """
-    def __init__(self, *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0) -> None:
+    def __init__(self, *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0, wind_aware: bool = False) -> None:
         """
-        method 'dwn' or 'wn'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP (None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + 2 pi R per waypoint) / v); dynamics 'dubins' or 'roll' (metres and seconds) with the roll model's roll_time_constant (s) and max_roll_rate_deg_s; guidance 'law5' (the paper's law (5) with gains) or 'l1' (L1 line tracking, period l1_period s, damping 0.75) on every leg.
+        method 'dwn', 'wn' or 'wn_passed_line'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP (None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + 2 pi R per waypoint) / v); dynamics 'dubins' or 'roll' (metres and seconds) with the roll model's roll_time_constant (s) and max_roll_rate_deg_s; guidance 'law5' (the paper's law (5) with gains) or 'l1' (L1 line tracking, period l1_period s, damping 0.75) on every leg; wind_aware: the leg law steers the course over the ground with the known mean wind.
         """
     def __repr__(self) -> str:
         ...
@@ -377,6 +377,14 @@ class Options:
     @weights.setter
     def weights(self, arg1: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]) -> None:
         ...
+    @property
+    def wind_aware(self) -> bool:
+        """
+        the leg law knows the mean wind and steers the course over the ground (beyond the paper)
+        """
+    @wind_aware.setter
+    def wind_aware(self, arg0: bool) -> None:
+        ...
 def horizon_lengths(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], w_next: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], w_after: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, case: str, thetas: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> numpy.typing.NDArray[numpy.float64]:
     """
     F(theta) of one case at each theta (inf where the path does not exist).
@@ -385,7 +393,7 @@ def horizon_path(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing
     """
     The horizon path of one case at one theta.
     """
-def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), wind: vistrack._core.flight.Wind | None = None, integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0) -> NavigationResult:
+def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), wind: vistrack._core.flight.Wind | None = None, integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0, wind_aware: bool = False) -> NavigationResult:
     """
     Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' vehicle, each leg by 'law5' or 'l1'; returns NavigationResult. Releases the GIL.
     """

@@ -230,6 +230,7 @@ def fly(
     max_roll_rate_deg_s: float = _OPTIONS.max_roll_rate_deg_s,
     guidance: str = str(_OPTIONS.guidance),
     l1_period: float = _OPTIONS.l1_period,
+    wind_aware: bool = False,
 ) -> NavigationFlight:
     """Fly a route with DWN (``method="dwn"``), WN (``"wn"``: a waypoint is done inside R_WP) or,
     beyond the paper, ArduPlane's WN (``"wn_passed_line"``: also once past the line through the
@@ -254,7 +255,8 @@ def fly(
         result = _wn.navigate(flown, pose, method=method, turn_radius=turn_radius, speed=speed, dt=dt, gains=gains,
                               waypoint_radius=waypoint_radius, weights=weights, wind=wind, integration=integration,
                               max_time=max_time, dynamics=dynamics, roll_time_constant=roll_time_constant,
-                              max_roll_rate_deg_s=max_roll_rate_deg_s, guidance=guidance, l1_period=l1_period)
+                              max_roll_rate_deg_s=max_roll_rate_deg_s, guidance=guidance, l1_period=l1_period,
+                              wind_aware=wind_aware)
     except VistrackError as error:
         if start is not None:
             raise
