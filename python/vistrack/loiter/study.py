@@ -10,11 +10,15 @@ from typing import Any
 
 import numpy as np
 
+from .._core import VistrackError
 from .flying import fly_and_score
 from .planning import METHOD_NAMES, METHODS, Coverage, Plan, metrics
 from .scenario import Scenario, random_aois
 
-__all__ = ["MethodRun", "evaluate", "random_scenarios", "random_study", "summary", "wind_directions", "wind_summary"]
+__all__ = [
+    "MAX_STEPS", "MethodRun", "check_steps", "evaluate", "random_scenarios",
+    "random_study", "summary", "wind_directions", "wind_summary",
+]
 
 
 @dataclass
@@ -48,6 +52,29 @@ class MethodRun:
         return row
 
 
+# A study scores each plan and writes it (path CSV, animation, report.html) at every step of dt:
+# about 100 bytes and 30 microseconds per step and method. 5e5 steps is 5.8 days of flight at dt
+# 1 s (the paper's plans fly minutes; turns: 1000 over 5 AOIs, 2 x 10^5 steps).
+MAX_STEPS = 500_000
+
+
+def check_steps(scenario: Scenario, plan: Plan) -> None:
+    """VistrackError naming ``dt`` (and what makes the plan long) when scoring and writing ``plan``
+    every dt would take more than MAX_STEPS steps; checked before any of that work."""
+    steps = math.floor(plan.flight_time / scenario.dt) + 1
+    if steps <= MAX_STEPS:
+        return
+    aois = np.asarray(scenario.aois, dtype=float)
+    far = int(np.argmax(np.hypot(aois[:, 0] - scenario.start[0], aois[:, 1] - scenario.start[1])))
+    distance = float(np.hypot(*(aois[far] - np.asarray(scenario.start))))
+    raise VistrackError(
+        f"dt = {scenario.dt:g}: the {plan.method} plan flies {plan.flight_time:.4g} s, {steps:.4g} steps of dt to "
+        f"score and write (about {steps * 100 / 1e6:.4g} MB of path CSV), above the {MAX_STEPS:.0e} a loiter "
+        f"study takes per plan: raise dt to {math.ceil(plan.flight_time / (MAX_STEPS - 1)):g} s or more, or "
+        f"shorten the plan (turns = {scenario.turns}; the farthest AOI, aois[{far}], lies {distance:.4g} m from "
+        "the start)")
+
+
 def evaluate(scenario: Scenario, methods: Sequence[str] = METHODS, order: str = "given",
              winds: Sequence[tuple[float, float]] = ()) -> list[MethodRun]:
     """Plan and score each method; ``order="best"`` adds the best visiting order; ``winds`` flies
@@ -55,6 +82,7 @@ def evaluate(scenario: Scenario, methods: Sequence[str] = METHODS, order: str = 
     runs = []
     for method in methods:
         plan = scenario.plan(method)
+        check_steps(scenario, plan)
         run = MethodRun(method, plan, scenario.coverage(plan))
         if order == "best":
             run.best_plan = scenario.plan(method, "best")
