@@ -71,7 +71,8 @@ void bind_geometry(py::module_& m) {
       "angles |a| <= MAX_ANGLE rad, origin altitudes |alt| <= MAX_ALTITUDE m, volumes in (0, MAX_VOLUME] m^3, "
       "threads in [0, MAX_THREADS], the guidance gains "
       "beta in [MIN_GAIN, MAX_BETA] 1/m and k_psi in [MIN_GAIN, MAX_HEADING_GAIN] 1/s, and ODE tolerances rtol in "
-      "[MIN_RTOL, MAX_RTOL] and atol in [MIN_ATOL, MAX_ATOL]; input files of at most MAX_INPUT_BYTES bytes.");
+      "[MIN_RTOL, MAX_RTOL] and atol in [MIN_ATOL, MAX_ATOL]; input files of at most MAX_INPUT_BYTES bytes; one planned piece of work "
+      "(VVs, a loiter coverage matrix) of at most MAX_WORK_BYTES bytes, estimated before it starts.");
   ranges.attr("MAX_COORDINATE") = limits::kMaxCoordinate;
   ranges.attr("MIN_LENGTH") = limits::kMinLength;
   ranges.attr("MAX_LENGTH") = limits::kMaxLength;
@@ -89,6 +90,7 @@ void bind_geometry(py::module_& m) {
   ranges.attr("MIN_ATOL") = limits::kMinAbsoluteTolerance;
   ranges.attr("MAX_ATOL") = limits::kMaxAbsoluteTolerance;
   ranges.attr("MAX_INPUT_BYTES") = limits::kMaxInputFileBytes;
+  ranges.attr("MAX_WORK_BYTES") = limits::kMaxWorkBytes;
 }
 
 }  // namespace vistrack::bindings

@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from .._core import VistrackError
+from .._core import limits as _limits
 from .flying import fly_and_score
 from .planning import METHOD_NAMES, METHODS, Coverage, Plan, metrics
 from .scenario import Scenario, random_aois
@@ -58,10 +59,21 @@ class MethodRun:
 MAX_STEPS = 500_000
 
 
-def check_steps(scenario: Scenario, plan: Plan) -> None:
+def check_steps(scenario: Scenario, plan: Plan, methods: int = 1) -> None:
     """VistrackError naming ``dt`` (and what makes the plan long) when scoring and writing ``plan``
-    every dt would take more than MAX_STEPS steps; checked before any of that work."""
+    every dt would take more than MAX_STEPS steps, or when the coverage matrices of ``methods``
+    such plans (steps x AOIs x 8 bytes each, all held by the study) would exceed
+    ``limits.MAX_WORK_BYTES``; checked before any of that work."""
     steps = math.floor(plan.flight_time / scenario.dt) + 1
+    held = float(steps) * len(scenario.aois) * 8.0 * methods
+    if held > _limits.MAX_WORK_BYTES:
+        fits = math.ceil(scenario.dt * held / _limits.MAX_WORK_BYTES)
+        raise VistrackError(
+            f"dt = {scenario.dt:g}: {methods} coverage matri{'ces' if methods > 1 else 'x'} of about "
+            f"{steps:.4g} steps x {len(scenario.aois)} AOIs (8 bytes per step and AOI, kept for the report) "
+            f"would hold about {held / 1e9:.4g} GB, above the {_limits.MAX_WORK_BYTES / 1e9:.4g} GB one planned "
+            f"piece of work may take (MAX_WORK_BYTES): raise dt ({fits} s fits), score fewer AOIs or fewer methods "
+            "(--method)")
     if steps <= MAX_STEPS:
         return
     aois = np.asarray(scenario.aois, dtype=float)
@@ -82,7 +94,7 @@ def evaluate(scenario: Scenario, methods: Sequence[str] = METHODS, order: str = 
     runs = []
     for method in methods:
         plan = scenario.plan(method)
-        check_steps(scenario, plan)
+        check_steps(scenario, plan, len(methods) * (2 if order == "best" else 1))
         run = MethodRun(method, plan, scenario.coverage(plan))
         if order == "best":
             run.best_plan = scenario.plan(method, "best")
