@@ -193,6 +193,7 @@ def _execute(cases: Sequence[Case], scheduler: Optional[str], n_workers: Optiona
         return
     from distributed import Client, LocalCluster
 
+    from .connect import CONNECT_TIMEOUT_S, check_scheduler
     from .plugin import SweepPlugin
 
     cluster = None
@@ -203,9 +204,10 @@ def _execute(cases: Sequence[Case], scheduler: Optional[str], n_workers: Optiona
         address = cluster.scheduler_address
     else:
         address = scheduler
+        check_scheduler(scheduler)  # a short timeout and a peer that speaks Dask, before Client waits on it
     try:
         try:
-            client = Client(address, timeout="20s")
+            client = Client(address, timeout=f"{CONNECT_TIMEOUT_S}s")
         except (OSError, TimeoutError, ValueError, TypeError) as error:
             # TypeError: distributed's "TLS expects a ssl_context" for tls:// without Dask's TLS settings.
             hint = "; tls:// needs distributed.comm.tls in the Dask config" if isinstance(error, TypeError) else ""
