@@ -42,16 +42,16 @@ def test_a_batch_of_vvs_is_refused_by_its_bytes() -> None:
     scene = vt.VisibilityScene(vt.Environment.demo())
     pois = np.tile([[0.0, -300.0, 1.0]], (100_000, 1))
     refuses(lambda: vt.visibility_volumes(scene, pois, 400.0), "pois = 100000 points", "466.6 GB",
-            "batches of 214 fit")
+            "batches of 428 fit")
 
 
 def test_a_dense_coverage_matrix_is_refused_naming_dt() -> None:
-    # 10,000 AOIs (the documented maximum) over 20,000 steps: a 1.6 GB matrix.
+    # 10,000 AOIs (the documented maximum) over 40,000 steps: a 3.2 GB matrix.
     side = np.arange(100) * 200.0
     aois = np.array([(x, y) for x in side for y in side])
-    poses = np.column_stack([np.linspace(0.0, 1e4, 20_000), np.zeros(20_000), np.zeros(20_000)])
-    refuses(lambda: vt.loiter.coverage(poses, aois, turn_rates=np.zeros(20_000)), "dt = 1:", "20000 steps x 10000 AOIs",
-            "1.601 GB", "raise dt (2 s fits)")
+    poses = np.column_stack([np.linspace(0.0, 1e4, 40_000), np.zeros(40_000), np.zeros(40_000)])
+    refuses(lambda: vt.loiter.coverage(poses, aois, turn_rates=np.zeros(40_000)), "dt = 1:", "40000 steps x 10000 AOIs",
+            "3.201 GB", "raise dt (2 s fits)")
 
 
 def test_loiter_study_of_2000_aois_names_dt(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -59,7 +59,7 @@ def test_loiter_study_of_2000_aois_names_dt(tmp_path: Path, capsys: pytest.Captu
     scenario = tmp_path / "grid.yaml"
     scenario.write_text(json.dumps({"name": "grid", "aois": grid}))
     err = one_line_error(["loiter", str(scenario), "--out", str(tmp_path / "out")], capsys, 1,
-                         "dt = 1:", "3 coverage matrices", "2000 AOIs", "GB", "s fits")
+                         "dt = 1:", "4 coverage matrices", "2000 AOIs", "GB", "s fits")
     assert "out of memory" not in err and "planning.spacing" not in err
 
 

@@ -40,10 +40,10 @@
 // about it no longer describes the ground (an origin at 1e20 m put every waypoint at lat/lon 1e-18).
 // A step or a period of an hour is longer than any loiter or follow flight's feature (a larger
 // dt skipped the whole flight: coverage 0; a follow period of 1e300 s flew a straight line).
-// Work is estimated in bytes before it starts: 1 GB is the most one planned piece of work (the VVs
-// a plan holds, a loiter coverage matrix, a batch of VVs) may allocate, with room for the copies
-// and the libraries on a machine capped at 3 GB (the examples' plans need at most 75 MB); beyond
-// it the error names the knob that lowers the cost.
+// Work is estimated in bytes before it starts: 2 GB is the most one planned piece of work (the VVs
+// a plan holds, a batch of VVs, a loiter coverage matrix) may allocate, what a 3 GB machine can
+// hold beside the libraries (400 VVs at 1 degree: 1.9 GB; the examples' plans need at most 75 MB);
+// beyond it the error names the knob that lowers the cost.
 // 1 GiB of input is generous for a city mesh (the Charlotte OBJ is 0.7 MB) and a scenario,
 // route or plan is kilobytes; a larger file (or /dev/zero, a FIFO) is refused before it is read.
 #pragma once
@@ -77,7 +77,7 @@ inline constexpr double kMinRollRate = 1e-3;          // deg/s
 inline constexpr double kMaxRollRate = 1e4;           // deg/s
 inline constexpr double kMaxTimeStep = 3600.0;        // s (loiter dt, follow.period)
 inline constexpr int kMaxInputFileBytes = 1073741824;  // bytes (1 GiB)
-inline constexpr double kMaxWorkBytes = 1e9;           // bytes (1 GB): one planned piece of work
+inline constexpr double kMaxWorkBytes = 2e9;           // bytes (2 GB): one planned piece of work
 
 // "1.234 GB": bytes to 4 significant digits, for messages.
 std::string bytes_text(double bytes);
@@ -102,7 +102,7 @@ void require_heading_gain(double value, const std::string& field);  // [1e-9, 1e
 // rtol in [1e-13, 1] and atol in [1e-15, 1e6]; the fields are prefix + "rtol" / "atol".
 void require_tolerances(double rtol, double atol, const std::string& prefix);
 
-// Error "field = value: <work> would hold about X GB, above the 1 GB (kMaxWorkBytes) one planned
+// Error "field = value: <work> would hold about X GB, above the 2 GB (kMaxWorkBytes) one planned
 // piece of work may take: <remedy>" when `bytes` exceeds kMaxWorkBytes (checked before the work).
 void require_work_bytes(double bytes, const std::string& field, const std::string& value, const std::string& work,
                         const std::string& remedy);

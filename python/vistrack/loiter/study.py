@@ -62,14 +62,14 @@ MAX_STEPS = 500_000
 def check_steps(scenario: Scenario, plan: Plan, methods: int = 1) -> None:
     """VistrackError naming ``dt`` (and what makes the plan long) when scoring and writing ``plan``
     every dt would take more than MAX_STEPS steps, or when the coverage matrices of ``methods``
-    such plans (steps x AOIs x 8 bytes each, all held by the study) would exceed
+    such plans and the copy the report makes of one (steps x AOIs x 8 bytes each) would exceed
     ``limits.MAX_WORK_BYTES``; checked before any of that work."""
     steps = math.floor(plan.flight_time / scenario.dt) + 1
-    held = float(steps) * len(scenario.aois) * 8.0 * methods
+    held = float(steps) * len(scenario.aois) * 8.0 * (methods + 1)  # the report copies one (cov.fraction)
     if held > _limits.MAX_WORK_BYTES:
         fits = math.ceil(scenario.dt * held / _limits.MAX_WORK_BYTES)
         raise VistrackError(
-            f"dt = {scenario.dt:g}: {methods} coverage matri{'ces' if methods > 1 else 'x'} of about "
+            f"dt = {scenario.dt:g}: {methods + 1} coverage matrices (one per method, one copy) of about "
             f"{steps:.4g} steps x {len(scenario.aois)} AOIs (8 bytes per step and AOI, kept for the report) "
             f"would hold about {held / 1e9:.4g} GB, above the {_limits.MAX_WORK_BYTES / 1e9:.4g} GB one planned "
             f"piece of work may take (MAX_WORK_BYTES): raise dt ({fits} s fits), score fewer AOIs or fewer methods "
