@@ -73,7 +73,8 @@ void bind_geometry(py::module_& m) {
       "beta in [MIN_GAIN, MAX_BETA] 1/m and k_psi in [MIN_GAIN, MAX_HEADING_GAIN] 1/s, and ODE tolerances rtol in "
       "[MIN_RTOL, MAX_RTOL] and atol in [MIN_ATOL, MAX_ATOL]; input files of at most MAX_INPUT_BYTES bytes; "
       "documents (JSON, YAML) nested at most MAX_DOCUMENT_DEPTH levels, YAML ones of at most MAX_DOCUMENT_NODES values "
-      "(YAML aliases expanded).");
+      "(YAML aliases expanded); one planned piece of work (VVs, a loiter coverage matrix) of at most MAX_WORK_BYTES "
+      "bytes, estimated before it starts.");
   ranges.attr("MAX_COORDINATE") = limits::kMaxCoordinate;
   ranges.attr("MIN_LENGTH") = limits::kMinLength;
   ranges.attr("MAX_LENGTH") = limits::kMaxLength;
@@ -93,6 +94,7 @@ void bind_geometry(py::module_& m) {
   ranges.attr("MAX_INPUT_BYTES") = limits::kMaxInputFileBytes;
   ranges.attr("MAX_DOCUMENT_DEPTH") = limits::kMaxDocumentDepth;
   ranges.attr("MAX_DOCUMENT_NODES") = limits::kMaxDocumentNodes;
+  ranges.attr("MAX_WORK_BYTES") = limits::kMaxWorkBytes;
 }
 
 }  // namespace vistrack::bindings

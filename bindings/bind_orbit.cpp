@@ -105,7 +105,11 @@ void bind_orbit(py::module_& m) {
   py::class_<WorkEstimate>(m, "WorkEstimate", "The work a plan may ask for, known before any VV is computed.")
       .def_readonly("volumes", &WorkEstimate::volumes, "Worst-case number of VVs (every interval halved).")
       .def_readonly("bytes_per_volume", &WorkEstimate::bytes_per_volume, "Memory of one VV (bytes).")
+      .def_readonly("initial_volumes", &WorkEstimate::initial_volumes,
+                    "The VVs every plan computes (one every spacing, and every node).")
       .def_property_readonly("bytes", &WorkEstimate::bytes, "Memory of all of them (bytes).")
+      .def_property_readonly("initial_bytes", &WorkEstimate::initial_bytes,
+                             "Memory of the initial VVs (bytes): refused above limits.MAX_WORK_BYTES.")
       .def("__repr__", [](const WorkEstimate& w) {
         return Repr("WorkEstimate").add("volumes", w.volumes).add("bytes", w.bytes()).str();
       });
@@ -119,8 +123,9 @@ void bind_orbit(py::module_& m) {
         return work;
       },
       py::arg("poi"), py::arg("planning"),
-      "estimate_work, and VistrackError naming planning.max_volumes when the worst case exceeds it (what "
-      "the planner does before computing any VV); returns the estimate.");
+      "estimate_work, and VistrackError naming planning.resolution_deg or planning.spacing when the initial "
+      "VVs would hold more than limits.MAX_WORK_BYTES, or planning.max_volumes when the worst case exceeds it "
+      "(what the planner does before computing any VV); returns the estimate.");
   m.def("estimate_work", &estimate_work, py::arg("poi"), py::arg("planning"),
         "Worst case of plan_orbits / OrbitPlanner.plan on this path: VVs (every initial interval halved down "
         "to min_spacing or max_depth) and their memory; the planner refuses a worst case beyond "

@@ -70,9 +70,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     except (VistrackError, OSError) as error:
         print(f"vistrack {args.command}: error: {_one_line(error)}", file=sys.stderr)
         return FAILURE
-    except MemoryError:
-        print(f"vistrack {args.command}: error: out of memory (lower the work: a larger planning.spacing or "
-              "min_spacing, a coarser resolution_deg, a shorter path)", file=sys.stderr)
+    except MemoryError:  # a real exhaustion: the estimates before the work refuse what they can foresee
+        from .commands.memory import out_of_memory
+
+        print(f"vistrack {args.command}: error: {out_of_memory(args.command)}", file=sys.stderr)
         return FAILURE
 
 

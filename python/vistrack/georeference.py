@@ -72,9 +72,17 @@ def _altitude(key: str, value: Any) -> float:
     return number(key, value, low=-_limits.MAX_ALTITUDE, high=_limits.MAX_ALTITUDE)
 
 
-def _local(key: str, value: Any) -> np.ndarray:
-    """Local map-plane coordinates in metres: |v| <= MAX_COORDINATE (1e7 m)."""
-    return _array(key, value, -_limits.MAX_COORDINATE, _limits.MAX_COORDINATE, "m")
+# How far from the origin (east and north, each) to_latlon goes: within it the round trip through
+# to_local returns the input to 1e-6 m (2.2e-7 m at the corner (2e6, 2e6) m; tests/python/
+# test_georeference_range.py); beyond ~3e6 m the map plane leaves the origin's height surface
+# behind (1.3 mm at 3e6 m, 0.8 m at 4e6 m, 1.1e7 m returned for 1e7 m). Local coordinates
+# themselves go to MAX_COORDINATE (1e7 m); only their latitude and longitude are limited.
+MAX_MAP_OFFSET = 2e6  # m
+
+
+def _local(key: str, value: Any, limit: float = _limits.MAX_COORDINATE, unit: str = "m") -> np.ndarray:
+    """Local map-plane coordinates in metres: |v| <= limit (MAX_COORDINATE, 1e7 m, by default)."""
+    return _array(key, value, -limit, limit, unit)
 
 
 def _result(*arrays: np.ndarray) -> tuple[Any, ...]:
@@ -151,10 +159,13 @@ class Georeference:
         """(lat, lon) of map-plane points: the exact inverse of :meth:`to_local`. It finds the
         point above (east, north) along the origin's up axis that lies at the origin's height
         (Newton on the height; each step shrinks the error by 1 - cos of the angle between the
-        two verticals, about 1e-6 at 10 km: two or three steps)."""
-        east, north = np.broadcast_arrays(_local("east", east), _local("north", north))
+        two verticals, about 1e-6 at 10 km: two or three steps). |east|, |north| <= MAX_MAP_OFFSET
+        (2e6 m), where the round trip holds to 1e-6 m."""
+        unit = "m from the origin (MAX_MAP_OFFSET: where the round trip through to_local holds to 1e-6 m)"
+        east, north = np.broadcast_arrays(_local("east", east, MAX_MAP_OFFSET, unit),
+                                          _local("north", north, MAX_MAP_OFFSET, unit))
         up = np.zeros_like(east)
-        for _ in range(10):
+        for _ in range(50):
             lat, lon, alt = (np.asarray(v) for v in self.geodetic(east, north, up))
             miss = alt - self.alt
             if np.all(np.abs(miss) < 1e-9):

@@ -205,4 +205,7 @@ def test_work_estimate_refuses_a_10000_km_path() -> None:
     poi = vt.PoiPath(np.array([[0.0, 0.0], [1e7, 0.0]]), 5.0)
     refuses(lambda: vt.check_work(poi, vt.Planning()), "planning.max_volumes")
     raised = vt.Planning(max_volumes=10**12)
-    vt.check_work(poi, raised)  # raising the limit explicitly allows it (nothing computed here)
+    # Raising the limit explicitly allows the count; the 500,001 VVs every plan of it computes
+    # (2.3 TB) are then refused by their bytes, naming the spacing (issue 29).
+    refuses(lambda: vt.check_work(poi, raised), "planning.spacing = 20", "500001 VVs", "MAX_WORK_BYTES")
+    vt.check_work(poi, vt.Planning(max_volumes=10**12, spacing=1e5))  # a spacing that fits: allowed

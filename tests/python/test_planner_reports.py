@@ -21,7 +21,7 @@ from support.report_checks import check_gif, check_page
 from vistrack.cli import main
 from vistrack.io import load_environment
 from vistrack.plotting.interactive import DEFAULT_TIME_STEPS, decode_array
-from vistrack.report.loiter import footprint_rings
+from vistrack.report.loiter import footprint_shapes
 
 LOITER = EXAMPLES / "loiter_4aoi.yaml"
 FAST = ["--frames", "5", "--duration", "1.5"]
@@ -113,12 +113,13 @@ def test_loiter_footprints_are_the_ones_scored() -> None:
     scenario = vt.loiter.load_scenario(LOITER)
     plan = scenario.plan("fly_through")
     cov = scenario.coverage(plan)
-    poses = np.asarray(plan.sample_states(scenario.dt, False).poses)
-    rings = footprint_rings(scenario.camera, poses, cov)
+    samples = plan.sample_states(scenario.dt, False)
+    t, poses = np.asarray(samples.t), np.asarray(samples.poses)
+    shapes = footprint_shapes(scenario.camera, t, poses, cov)
     disks = [Point(c).buffer(scenario.aoi_radius, 256) for c in np.asarray(scenario.aois)]
     checked = 0
     for k in range(0, len(poses), 7):
-        footprint = Polygon(rings[k][0])
+        footprint = Polygon(shapes(float(t[k]))[0])
         for i, disk in enumerate(disks):
             expected = float(cov.fraction[k, i])
             if expected > 0.05:

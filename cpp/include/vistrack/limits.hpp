@@ -42,6 +42,10 @@
 // about it no longer describes the ground (an origin at 1e20 m put every waypoint at lat/lon 1e-18).
 // A step or a period of an hour is longer than any loiter or follow flight's feature (a larger
 // dt skipped the whole flight: coverage 0; a follow period of 1e300 s flew a straight line).
+// Work is estimated in bytes before it starts: 2 GB is the most one planned piece of work (the VVs
+// a plan holds, a batch of VVs, a loiter coverage matrix) may allocate, what a 3 GB machine can
+// hold beside the libraries (400 VVs at 1 degree: 1.9 GB; the examples' plans need at most 75 MB);
+// beyond it the error names the knob that lowers the cost.
 // 1 GiB of input is generous for a city mesh (the Charlotte OBJ is 0.7 MB) and a scenario,
 // route or plan is kilobytes; a larger file (or /dev/zero, a FIFO) is refused before it is read.
 // A GeoJSON MultiPolygon's points are 8 levels deep, a scenario's values 4; a value nested 100,000 deep overflowed the C stack of the code that quoted it. A
@@ -81,6 +85,10 @@ inline constexpr double kMaxTimeStep = 3600.0;        // s (loiter dt, follow.pe
 inline constexpr int kMaxInputFileBytes = 1073741824;  // bytes (1 GiB)
 inline constexpr int kMaxDocumentDepth = 100;          // levels of nested lists and mappings
 inline constexpr int kMaxDocumentNodes = 1000000;      // values in a YAML document, aliases expanded
+inline constexpr double kMaxWorkBytes = 2e9;           // bytes (2 GB): one planned piece of work
+
+// "1.234 GB": bytes to 4 significant digits, for messages.
+std::string bytes_text(double bytes);
 
 // "[1e-06, 1e+07] m" style text of a range, for messages.
 std::string range_text(double low, double high, const std::string& unit);
@@ -101,6 +109,11 @@ void require_beta(double value, const std::string& field);          // [1e-9, 1e
 void require_heading_gain(double value, const std::string& field);  // [1e-9, 1e6] 1/s
 // rtol in [1e-13, 1] and atol in [1e-15, 1e6]; the fields are prefix + "rtol" / "atol".
 void require_tolerances(double rtol, double atol, const std::string& prefix);
+
+// Error "field = value: <work> would hold about X GB, above the 2 GB (kMaxWorkBytes) one planned
+// piece of work may take: <remedy>" when `bytes` exceeds kMaxWorkBytes (checked before the work).
+void require_work_bytes(double bytes, const std::string& field, const std::string& value, const std::string& work,
+                        const std::string& remedy);
 
 // Every loader opens its file through this: Error "field = path: ..." for a missing path, a
 // symlink loop, a folder (opens as an empty stream on POSIX, read as "the file is empty"),

@@ -198,14 +198,18 @@ struct Discretization {
 struct WorkEstimate {
   double volumes = 0.0;           // worst-case number of VVs (a double: it can exceed any integer type)
   double bytes_per_volume = 0.0;  // memory of one VV on the planning grid (~4.7 MB at 1 degree)
+  double initial_volumes = 0.0;   // the VVs every plan computes (one every spacing, and every node)
+  double spacing = 0.0;           // m, and the grid, for the messages
+  double resolution_deg = 0.0;
   double bytes() const { return volumes * bytes_per_volume; }
+  double initial_bytes() const { return initial_volumes * bytes_per_volume; }
 };
-// Memory of one VV on a grid of resolution_deg degrees: its intervals and its mesh (72 bytes per cell).
-double volume_bytes(double resolution_deg);
 WorkEstimate estimate_work(const PoiPath& poi, const Planning& planning);
 // The VVs of fixed_discretization: one every `spacing` metres plus every node.
 WorkEstimate estimate_fixed_work(const PoiPath& poi, double spacing, double resolution_deg);
-// Error naming `field` (the limit the user may raise) when work.volumes exceeds max_volumes.
+// Error naming `field` (the limit the user may raise) when work.volumes exceeds max_volumes,
+// then naming planning.resolution_deg or planning.spacing when the initial VVs would hold more
+// than limits::kMaxWorkBytes (no limit raises that).
 void check_work(const WorkEstimate& work, std::size_t max_volumes, const std::string& field = "planning.max_volumes");
 
 // Initial samples every planning.spacing metres from the start of each path edge, plus every

@@ -128,7 +128,10 @@ VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, 
 VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double d_max,
                                    std::optional<std::pair<double, double>> altitude_band = std::nullopt,
                                    double resolution_deg = kDefaultResolutionDeg);
-// VVs for many POI positions (rows of `pois`), in parallel over the points (TBB).
+// Memory of one VV on a grid of resolution_deg degrees: its intervals and its mesh (72 bytes per cell).
+double volume_bytes(double resolution_deg);
+// VVs for many POI positions (rows of `pois`), in parallel over the points (TBB); refused naming
+// pois when they would hold more than limits::kMaxWorkBytes (volume_bytes each).
 std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, const Points3& pois,
                                                  double d_max,
                                                  std::optional<std::pair<double, double>> altitude_band = std::nullopt,

@@ -93,7 +93,40 @@ std::string short_text(double value) {
   return out.str();
 }
 
-Units coordinate_units(std::vector<Building>& buildings) {
+// Longitude/latitude footprints the local projection would misread: one that touches a pole
+// (the east-north plane is singular there) or crosses the antimeridian (its longitudes jump by
+// 360 degrees, so the whole file spans more than a degree and was read as metres: a 20 m building
+// became a 360 m x 0.0002 m sliver). Called when every point lies within the degree ranges and
+// the latitudes span less than a degree: a lon/lat file. Refuses naming the feature.
+void refuse_singular_lon_lat(const std::vector<Building>& buildings,
+                             const std::vector<detail::BuildingSource>& sources, double x_extent) {
+  double low = std::numeric_limits<double>::infinity(), high = -low;  // longitudes in [0, 360)
+  for (std::size_t b = 0; b < buildings.size(); ++b) {
+    const Ring& ring = buildings[b].footprint.outer;
+    double west = std::numeric_limits<double>::infinity(), east = -west;
+    for (const Vec2& p : ring) {
+      if (std::abs(p.y()) >= 90.0)
+        detail::fail_field(sources[b].name, "(" + short_text(p.x()) + ", " + short_text(p.y()) + ")",
+                           "a longitude/latitude footprint touches a pole, where the local east-north plane is "
+                           "singular; give footprints off the pole or in local metres");
+      west = std::min(west, p.x());
+      east = std::max(east, p.x());
+      const double wrapped = p.x() < 0.0 ? p.x() + 360.0 : p.x();
+      low = std::min(low, wrapped);
+      high = std::max(high, wrapped);
+    }
+    if (east - west > 180.0)
+      detail::fail_field(sources[b].name, "longitudes " + short_text(west) + " to " + short_text(east),
+                         "a longitude/latitude footprint crosses the antimeridian (180 degrees); split it there, "
+                         "or give local metres");
+  }
+  if (x_extent >= 1.0 && high - low < 1.0)  // buildings on both sides of the antimeridian
+    detail::fail_field("features[*].geometry.coordinates", "longitudes on both sides of 180 degrees",
+                       "a longitude/latitude city across the antimeridian; give local metres (or an origin "
+                       "and footprints on one side)");
+}
+
+Units coordinate_units(std::vector<Building>& buildings, const std::vector<detail::BuildingSource>& sources) {
   Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
   for_each_ring(buildings, [&](const Ring& ring) {
     for (const Vec2& p : ring) {
@@ -108,6 +141,8 @@ Units coordinate_units(std::vector<Building>& buildings) {
                               "1 degree) nor local east-north metres (spanning more than 1 m, within " +
                               short_text(kMaxLocalMetres / 1000.0) + " km of the origin)";
   const double extent = (high - low).maxCoeff();
+  if (low.x() >= -180.0 && high.x() <= 180.0 && low.y() >= -90.0 && high.y() <= 90.0 && high.y() - low.y() < 1.0)
+    refuse_singular_lon_lat(buildings, sources, high.x() - low.x());
   if (extent < 1.0) {
     if (low.x() >= -180.0 && high.x() <= 180.0 && low.y() >= -90.0 && high.y() <= 90.0) return Units::degrees;
     detail::fail_field(field, range, neither);
@@ -119,9 +154,11 @@ Units coordinate_units(std::vector<Building>& buildings) {
 
 // Projects longitude/latitude footprints to local metres in place; returns the environment's
 // origin (the given one, or the centre of the data's bounding box rounded to 1e-7 degree).
-std::optional<GeodeticPoint> to_local_metres(std::vector<Building>& buildings, const GeoJsonOptions& options) {
+std::optional<GeodeticPoint> to_local_metres(std::vector<Building>& buildings,
+                                             const std::vector<detail::BuildingSource>& sources,
+                                             const GeoJsonOptions& options) {
   if (options.origin) validate_geodetic_point(*options.origin, "origin");
-  if (coordinate_units(buildings) == Units::metres) return options.origin;
+  if (coordinate_units(buildings, sources) == Units::metres) return options.origin;
   std::size_t count = 0;
   for_each_ring(buildings, [&](const Ring& ring) { count += ring.size(); });
   Points2 lon_lat(static_cast<Eigen::Index>(count), 2);
@@ -233,7 +270,7 @@ Environment Environment::from_geojson(const std::string& path, const GeoJsonOpti
   } catch (const json::exception& error) {  // a member of an unexpected JSON type
     detail::fail_field("path", path, std::string("unexpected GeoJSON structure: ") + error.what());
   }
-  const std::optional<GeodeticPoint> origin = to_local_metres(buildings, options);
+  const std::optional<GeodeticPoint> origin = to_local_metres(buildings, sources, options);
   for (Building& building : buildings) {
     building.footprint.outer = detail::clean_ring(building.footprint.outer);
     for (Ring& hole : building.footprint.holes) hole = detail::clean_ring(hole);

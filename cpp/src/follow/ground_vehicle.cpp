@@ -109,8 +109,15 @@ GroundVehicle GroundVehicle::from_legs(const std::vector<VehicleLeg>& legs, cons
   p.row(0) = at.transpose();
   t[0] = samples[0].t;
   for (std::size_t i = 1; i < samples.size(); ++i) {
-    const double h = legs[leg_of_segment[i - 1]].heading;
+    const std::size_t leg = leg_of_segment[i - 1];
+    const double h = legs[leg].heading;
     at += (samples[i].distance - samples[i - 1].distance) * Vec2(std::cos(h), std::sin(h));
+    // The leg that drives the vehicle off the coordinate range is named, not the track it makes.
+    if (!(std::abs(at.x()) <= limits::kMaxCoordinate && std::abs(at.y()) <= limits::kMaxCoordinate))
+      detail::fail_field(indexed("legs", leg) + ".duration", legs[leg].duration,
+                         "drives the vehicle to (" + detail::to_text(at.x()) + ", " + detail::to_text(at.y()) +
+                             ") m, beyond the coordinate limit |x|, |y| <= " +
+                             detail::to_text(limits::kMaxCoordinate) + " m");
     p.row(static_cast<Eigen::Index>(i)) = at.transpose();
     t[i] = samples[i].t;
     heading[i - 1] = h;

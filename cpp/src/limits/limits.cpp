@@ -14,6 +14,23 @@ std::string limits::range_text(double low, double high, const std::string& unit)
   return out.str();
 }
 
+std::string limits::bytes_text(double bytes) {
+  std::ostringstream out;
+  out.precision(4);
+  if (bytes >= 1e9) out << bytes / 1e9 << " GB";
+  else if (bytes >= 1e6) out << bytes / 1e6 << " MB";
+  else out << bytes / 1e3 << " kB";
+  return out.str();
+}
+
+void require_work_bytes(double bytes, const std::string& field, const std::string& value, const std::string& work,
+                        const std::string& remedy) {
+  if (bytes <= limits::kMaxWorkBytes) return;  // NaN never comes: every estimate is a product of counts
+  throw Error(field + " = " + value + ": " + work + " would hold about " + limits::bytes_text(bytes) +
+              ", above the " + limits::bytes_text(limits::kMaxWorkBytes) +
+              " one planned piece of work may take (MAX_WORK_BYTES): " + remedy);
+}
+
 void require_in_range(double value, double low, double high, const std::string& unit, const std::string& field) {
   if (!(value >= low && value <= high))  // NaN fails both
     detail::fail_field(field, value, "must be a finite number in " + limits::range_text(low, high, unit));

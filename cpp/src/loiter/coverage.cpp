@@ -17,6 +17,7 @@
 
 #include "loiter/tangents.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/loiter.hpp"
 
 namespace vistrack {
@@ -223,6 +224,16 @@ LoiterCoverage loiter_coverage(const Points3& poses, const std::vector<double>& 
   if (turn_rates.size() != n)
     detail::fail_field("turn_rates", std::to_string(turn_rates.size()) + " values",
                        "need one per pose (" + std::to_string(n) + ")");
+  {
+    // Dense: a fraction per step and AOI (8 bytes) beside four numbers per step.
+    const double steps = static_cast<double>(n), count = static_cast<double>(aois.size());
+    const double bytes = steps * (8.0 * count + 32.0);
+    const double fits = options.dt * bytes / limits::kMaxWorkBytes;
+    require_work_bytes(bytes, "dt", detail::to_text(options.dt),
+                       "scoring " + detail::to_text(steps) + " steps x " + detail::to_text(count) +
+                           " AOIs (a dense coverage matrix, 8 bytes per step and AOI)",
+                       "raise dt (" + detail::to_text(std::ceil(fits)) + " s fits) or score fewer AOIs");
+  }
   const double limit = camera.max_gimbal_deg * kDegree;
   const double beta = 0.5 * camera.fov_deg * kDegree;
   for (std::size_t k = 0; k < n; ++k) {

@@ -198,30 +198,47 @@ std::string count_text(double value) {
 
 }  // namespace
 
-double volume_bytes(double resolution_deg) {
-  const DirectionGrid grid = DirectionGrid::from_resolution(resolution_deg);
-  // Per cell: near and far (16 bytes), about one mesh vertex (24), two faces (24) and their slots (8).
-  return 72.0 * static_cast<double>(grid.size());
-}
-
 WorkEstimate estimate_work(const PoiPath& poi, const Planning& planning) {
   planning.validate();
-  return {count_samples(poi, planning.spacing, planning.min_spacing, planning.max_depth),
-          volume_bytes(planning.resolution_deg)};
+  WorkEstimate work;
+  work.volumes = count_samples(poi, planning.spacing, planning.min_spacing, planning.max_depth);
+  work.bytes_per_volume = volume_bytes(planning.resolution_deg);
+  work.initial_volumes = count_samples(poi, planning.spacing, planning.spacing, 0);
+  work.spacing = planning.spacing;
+  work.resolution_deg = planning.resolution_deg;
+  return work;
 }
 
 WorkEstimate estimate_fixed_work(const PoiPath& poi, double spacing, double resolution_deg) {
   require_length(spacing, "spacing");
-  return {count_samples(poi, spacing, spacing, 0), volume_bytes(resolution_deg)};
+  WorkEstimate work;
+  work.volumes = work.initial_volumes = count_samples(poi, spacing, spacing, 0);
+  work.bytes_per_volume = volume_bytes(resolution_deg);
+  work.spacing = spacing;
+  work.resolution_deg = resolution_deg;
+  return work;
 }
 
 void check_work(const WorkEstimate& work, std::size_t max_volumes, const std::string& field) {
-  if (work.volumes <= static_cast<double>(max_volumes)) return;
-  detail::fail_field(field, max_volumes,
-                     "this plan may need up to " + count_text(std::ceil(work.volumes)) + " VVs, holding about " +
-                         count_text(std::ceil(work.bytes() / 1e9)) +
-                         " GB (a path length / min_spacing of VVs at most, ~4.7 MB each at 1 degree); raise " +
-                         field + " explicitly to allow it, or raise the spacing or min_spacing");
+  // The worst-case count first: max_volumes is the limit a user may raise explicitly.
+  if (work.volumes > static_cast<double>(max_volumes))
+    detail::fail_field(field, max_volumes,
+                       "this plan may need up to " + count_text(std::ceil(work.volumes)) + " VVs, holding about " +
+                           count_text(std::ceil(work.bytes() / 1e9)) +
+                           " GB (a path length / min_spacing of VVs at most, ~4.7 MB each at 1 degree); raise " +
+                           field + " explicitly to allow it, or raise the spacing or min_spacing");
+  // Then the bytes of the VVs every plan computes (one every spacing, held to the end), which no
+  // limit raises: a grid finer than 1 degree is named when it makes each VV larger than the
+  // default's (0.1 degree: 100 times), else the spacing.
+  const double per_degree = volume_bytes(kDefaultResolutionDeg);
+  const bool grid = work.bytes_per_volume > per_degree * (1.0 + 1e-9);
+  require_work_bytes(work.initial_bytes(), grid ? "planning.resolution_deg" : "planning.spacing",
+                     grid ? detail::to_text(work.resolution_deg) : detail::to_text(work.spacing),
+                     "the plan's first " + count_text(work.initial_volumes) + " VVs (one every spacing, " +
+                         limits::bytes_text(work.bytes_per_volume) + " each)",
+                     grid ? "a coarser resolution_deg (1 degree: " + limits::bytes_text(per_degree) +
+                                " per VV) or a larger planning.spacing"
+                          : "a larger planning.spacing, or a shorter path");
 }
 
 Discretization adaptive_discretization(const PoiPath& poi, const Planning& planning, VolumeCache& cache,

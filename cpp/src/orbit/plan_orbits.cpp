@@ -3,6 +3,7 @@
 
 #include "locus.hpp"
 #include "vistrack/error.hpp"
+#include "vistrack/limits.hpp"
 #include "vistrack/orbit.hpp"
 
 namespace vistrack {
@@ -66,6 +67,17 @@ VisibilityOrbitPlan detail::plan_orbits_of_valid(const PoiPath& poi, const Uav& 
   if (!(uav.speed > poi.speed()))
     detail::fail_field("uav.speed", uav.speed,
                        "must exceed the POI speed " + detail::to_text(poi.speed()) + " to orbit it (Lemma 5)");
+  // The VVs reach d_max from every POI position and their slices are checked as coordinates: a
+  // sensor that reaches past the coordinate range is named here, not a vertex of a slice later.
+  for (const double t : poi.node_times()) {
+    const Vec3 g = poi.position(t);
+    const double reach = std::max(std::abs(g.x()), std::abs(g.y())) + sensor.d_max;
+    if (!(reach <= limits::kMaxCoordinate))
+      detail::fail_field("sensor.d_max", sensor.d_max,
+                         "reaches " + detail::to_text(reach) + " m from the origin around the POI at (" +
+                             detail::to_text(g.x()) + ", " + detail::to_text(g.y()) +
+                             "), beyond the coordinate limit " + detail::to_text(limits::kMaxCoordinate) + " m");
+  }
   detail::CheckProbe probe;
   if (check_max_radius) {
     probe.max_radius = [check_max_radius](const Vec3& g, bool&) { return check_max_radius(g); };

@@ -266,10 +266,22 @@ VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double
   return visibility_volume(VisibilityScene(env), g, d_max, altitude_band, resolution_deg);
 }
 
+double volume_bytes(double resolution_deg) {
+  const DirectionGrid grid = DirectionGrid::from_resolution(resolution_deg);
+  // Per cell: near and far (16 bytes), about one mesh vertex (24), two faces (24) and their slots (8).
+  return 72.0 * static_cast<double>(grid.size());
+}
+
 std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, const Points3& pois, double d_max,
                                                  std::optional<std::pair<double, double>> altitude_band,
                                                  double resolution_deg) {
-  (void)DirectionGrid::from_resolution(resolution_deg);
+  const double each = volume_bytes(resolution_deg);
+  const double count = static_cast<double>(pois.rows());
+  require_work_bytes(count * each, "pois", detail::to_text(count) + " points",
+                     "their VVs (" + limits::bytes_text(each) + " each at resolution_deg " +
+                         detail::to_text(resolution_deg) + ")",
+                     "fewer points per call (batches of " +
+                         detail::to_text(std::floor(limits::kMaxWorkBytes / each)) + " fit) or a coarser resolution_deg");
   // Validate every point first, on the calling thread, so the error names the row.
   for (Eigen::Index k = 0; k < pois.rows(); ++k)
     validate(scene, pois.row(k).transpose(), d_max, altitude_band, "pois[" + std::to_string(k) + "]");

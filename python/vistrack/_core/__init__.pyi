@@ -977,6 +977,16 @@ class WorkEstimate:
         Memory of one VV (bytes).
         """
     @property
+    def initial_bytes(self) -> float:
+        """
+        Memory of the initial VVs (bytes): refused above limits.MAX_WORK_BYTES.
+        """
+    @property
+    def initial_volumes(self) -> float:
+        """
+        The VVs every plan computes (one every spacing, and every node).
+        """
+    @property
     def volumes(self) -> float:
         """
         Worst-case number of VVs (every interval halved).
@@ -1723,7 +1733,7 @@ def check_closed_mesh(vertices: typing.Annotated[numpy.typing.ArrayLike, numpy.f
     """
 def check_work(poi: PoiPath, planning: Planning) -> WorkEstimate:
     """
-    estimate_work, and VistrackError naming planning.max_volumes when the worst case exceeds it (what the planner does before computing any VV); returns the estimate.
+    estimate_work, and VistrackError naming planning.resolution_deg or planning.spacing when the initial VVs would hold more than limits.MAX_WORK_BYTES, or planning.max_volumes when the worst case exceeds it (what the planner does before computing any VV); returns the estimate.
     """
 def circular_orbits(times: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], max_radii: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], uav: Uav, poi_speed: typing.SupportsFloat | typing.SupportsIndex, rate_margin: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> CircularOrbits:
     """

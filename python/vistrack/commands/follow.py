@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import argparse
 from pathlib import Path
+from typing import Any, Optional
 
 from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
@@ -56,10 +57,19 @@ def run(args: argparse.Namespace) -> int:
     print(f"tracking error {record['mean_tracking_error_m']:.2f} m mean, {record['max_tracking_error_m']:.1f} m max; "
           f"lag {record['along_track_lag_m']:.1f} m; {modes}; {record['mode_switches']} switches; "
           f"camera {100 * record['camera_fraction']:.1f} %"
-          + (f" (baseline {100 * record['baseline']['camera_fraction']:.1f} %)" if "baseline" in record else "")
-          + f" -> {args.out}")
+          + _baseline_summary(record.get("baseline")) + f" -> {args.out}")
+    if "note" in record:
+        print(f"note: {record['note']}")
     uav = scenario.uav
     export_mission(args.export, lambda ref: study.follow.to_mission(
         ref, uav.altitude, speed=uav.speed, tolerance=args.export_tolerance), args.origin or scenario.origin, None,
         DEFAULT_EXPORT_ORIGIN)
     return 0
+
+
+def _baseline_summary(block: Optional[dict[str, Any]]) -> str:
+    if block is None:
+        return ""
+    if not block["feasible"]:
+        return f" (baseline not flown: {block['reason']})"
+    return f" (baseline {100 * block['camera_fraction']:.1f} %)"

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from ..sweep import SERIAL, SweepSpec, run
+from ..sweep.connect import CONNECT_TIMEOUT_S, check_scheduler
 from .output import output_folder
 from .types import UsageError, add_dynamics_argument, count
 
@@ -22,8 +23,9 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--out", default=None,
                         help="output folder (default: the file's out:, else ./vistrack-out/<sweep name>)")
     parser.add_argument("--scheduler", default=None, metavar="ADDR",
-                        help=f"Dask scheduler address (tcp://host:8786); default: a LocalCluster here; "
-                             f"'{SERIAL}': one case after another in this process")
+                        help=f"Dask scheduler address (tcp://host:8786), checked first: a TCP connection, "
+                             f"Dask's handshake and a scheduler's reply, {CONNECT_TIMEOUT_S:g} s each at most; "
+                             f"default: a LocalCluster here; '{SERIAL}': one case after another in this process")
     parser.add_argument("--workers", type=count("--workers", 1, 1024), default=None, metavar="N",
                         help="LocalCluster worker processes (default: one per core); not with --scheduler")
     parser.add_argument("--no-figures", action="store_true", help="write the table only")
@@ -35,6 +37,8 @@ def register(subparsers: Any) -> None:
 def main(args: argparse.Namespace) -> int:
     if args.workers is not None and args.scheduler is not None:
         raise UsageError(f"--workers = {args.workers}: only applies without --scheduler (a LocalCluster)")
+    if args.scheduler not in (None, SERIAL):  # a one-line error within seconds, before the sweep file is read
+        check_scheduler(args.scheduler, "--scheduler")
     spec = SweepSpec.load(args.sweep)
     if args.dynamics is not None:  # every case's vehicle model (a uav.dynamics parameter still wins)
         if spec.kind.name == "waypoints" and args.dynamics != "dubins":

@@ -45,6 +45,7 @@ from .simulation import (
     along_track_rate,
     arc_length,
     baseline,
+    baseline_infeasibility,
     baseline_radius,
     camera_footprint,
     camera_sees,
@@ -61,7 +62,7 @@ from .simulation import (
 __all__ = [
     "MODES", "CityRoad", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowScenario", "FollowStudy", "FollowTick", "GroundVehicle",
-    "LoiterShape", "VehicleLeg", "along_track_rate", "arc_length", "baseline", "baseline_radius", "camera_footprint",
-    "camera_sees", "coordinated_bank", "default_uav", "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude",
-    "sinusoid_slope", "speed_ratio",
+    "LoiterShape", "VehicleLeg", "along_track_rate", "arc_length", "baseline", "baseline_infeasibility",
+    "baseline_radius", "camera_footprint", "camera_sees", "coordinated_bank", "default_uav", "line_of_sight",
+    "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_slope", "speed_ratio",
 ]

@@ -68,7 +68,9 @@ from .simulation import (
     GroundVehicle,
     VehicleLeg,
     baseline,
+    baseline_infeasibility,
     default_uav,
+    planner_note,
     simulate,
 )
 
@@ -188,12 +190,14 @@ class FollowScenario:
         say("follow")
         follow = simulate(self.vehicle, self.uav, parameters, wind_estimate=self.wind_estimate,
                           offset_schedule=self.offset_schedule, **common)
+        flies = self.baseline_control is not None
         orbit = None
-        if self.baseline_control is not None:
+        reason = baseline_infeasibility(self.vehicle, self.uav) if flies else None
+        if flies and reason is None:
             say("baseline")
             orbit = baseline(self.vehicle, self.uav, self.baseline_radius, control=self.baseline_control,
                              parameters=parameters, **common)
-        study = FollowStudy(self, parameters, follow, orbit)
+        study = FollowStudy(self, parameters, follow, orbit, baseline_reason=reason)
         if city and self.city is not None:
             say("city")
             env = self.city.load(self.origin)
@@ -203,7 +207,8 @@ class FollowScenario:
             study.environment = env
             study.city_follow = simulate(vehicle, uav, parameters, wind_estimate=self.wind_estimate,
                                          offset_schedule=self.offset_schedule, scene=scene, **common)
-            if self.baseline_control is not None:
+            study.city_baseline_reason = baseline_infeasibility(vehicle, uav) if flies else None
+            if flies and study.city_baseline_reason is None:
                 study.city_baseline = baseline(vehicle, uav, self.baseline_radius, control=self.baseline_control,
                                                parameters=parameters, scene=scene, **common)
         return study
@@ -220,22 +225,45 @@ class FollowStudy:
     city_follow: Optional[FollowResult] = None
     city_baseline: Optional[FollowResult] = None
     environment: Optional[Environment] = None
+    baseline_reason: Optional[str] = None  # why the baseline was not flown (a vehicle faster than the UAV)
+    city_baseline_reason: Optional[str] = None
 
     def metrics(self) -> dict[str, Any]:
-        """metrics.json: the planner's run at the top level, then the baseline and the city runs."""
-        out = dict(self.follow.metrics)
+        """metrics.json: the planner's run at the top level (with a ``note`` when it flew its
+        straight mode), then the baseline (``feasible``; when false, the ``reason`` instead of its
+        scores) and the city runs."""
+        out = _run_metrics(self.follow)
         out["uav"] = uav_dict(self.scenario.uav)
         out["wind_compensation"] = bool(self.parameters.wind_compensation)
         out["updates"] = len(self.follow.ticks)
-        if self.baseline is not None:
-            out["baseline"] = self.baseline.metrics
-            out["baseline"]["radius_m"] = float(np.median(np.linalg.norm(
-                self.baseline.desired - self.baseline.offset_point, axis=1)))
+        block = _baseline_metrics(self.baseline, self.baseline_reason)
+        if block is not None:
+            out["baseline"] = block
         if self.city_follow is not None:
-            out["city"] = {"follow": self.city_follow.metrics}
-            if self.city_baseline is not None:
-                out["city"]["baseline"] = self.city_baseline.metrics
+            out["city"] = {"follow": _run_metrics(self.city_follow)}
+            block = _baseline_metrics(self.city_baseline, self.city_baseline_reason)
+            if block is not None:
+                out["city"]["baseline"] = block
         return out
+
+
+def _run_metrics(result: FollowResult) -> dict[str, Any]:
+    out = dict(result.metrics)
+    note = planner_note(result)
+    if note is not None:
+        out["note"] = note
+    return out
+
+
+def _baseline_metrics(result: Optional[FollowResult], reason: Optional[str]) -> Optional[dict[str, Any]]:
+    """The baseline's block: ``feasible`` and its scores, or ``feasible: false`` and the reason."""
+    if reason is not None:
+        return {"feasible": False, "reason": reason}
+    if result is None:
+        return None
+    out: dict[str, Any] = {"feasible": True, **result.metrics}
+    out["radius_m"] = float(np.median(np.linalg.norm(result.desired - result.offset_point, axis=1)))
+    return out
 
 
 def _with_compensation(p: FollowParameters, on: bool) -> FollowParameters:

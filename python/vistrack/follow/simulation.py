@@ -47,7 +47,8 @@ MODES = ("sinusoid", "loiter", "straight")
 __all__ = [
     "MODES", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowTick", "GroundVehicle", "LoiterShape", "VehicleLeg",
-    "along_track_rate", "arc_length", "baseline", "baseline_radius", "camera_footprint", "camera_sees",
+    "along_track_rate", "arc_length", "baseline", "baseline_infeasibility", "baseline_radius", "camera_footprint",
+    "camera_sees",
     "coordinated_bank", "default_uav",
     "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_slope", "speed_ratio",
 ]
@@ -227,6 +228,27 @@ def baseline_radius(vehicle: GroundVehicle, uav: Uav, parameters: Optional[Follo
     margin = (parameters or FollowParameters()).turn_margin
     ratio = min(vehicle.max_speed / uav.speed, 1.0)
     return margin * uav.min_turn_radius * (1.0 + ratio) ** 2
+
+
+def baseline_infeasibility(vehicle: GroundVehicle, uav: Uav) -> Optional[str]:
+    """Why the baseline cannot fly this vehicle, or None: a constant orbit about a vehicle at least
+    as fast as the UAV is not flyable (Lemma 5 needs v - v_g > 0; :func:`baseline` refuses it). A
+    situation, not bad input: a run reports the baseline infeasible with this reason and flies the
+    planner (which chases in its straight mode)."""
+    if uav.speed > vehicle.max_speed:
+        return None
+    return (f"uav.speed {uav.speed:g} m/s does not exceed the vehicle's top speed {vehicle.max_speed:g} m/s: "
+            "no constant orbit about it is flyable (Lemma 5)")
+
+
+def planner_note(result: FollowResult) -> Optional[str]:
+    """A note when the planner flew its straight mode (the vehicle outran the UAV: sigma < 1, the
+    lag grows), else None."""
+    straight = result.run.metrics.time_straight
+    if straight <= 0.0:
+        return None
+    return (f"straight mode for {straight:.0f} s: the vehicle outran the UAV (speed ratio below 1), "
+            f"the along-track lag grows (final {result.run.metrics.final_along_track_lag:.0f} m)")
 
 
 def baseline(vehicle: GroundVehicle, uav: Uav, radius: Optional[float] = None, *, control: Optional[Control] = None,

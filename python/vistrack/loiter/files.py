@@ -11,7 +11,7 @@ from .. import schema
 from .._core import Uav
 from ..io.documents import read_yaml_mapping
 from ..scenario_blocks import Rename, camera_block, georeference_block, origin_to_georeference, uav_block, upgrade
-from .planning import Camera, Coverage, CoverageOptions, Parameters, Plan
+from .planning import Camera, Coverage, CoverageOptions, Parameters, Plan, segment_roles
 from .scenario import Scenario
 
 __all__ = ["RENAMES", "load_scenario", "read_loiter_scenario", "vehicle_and_camera", "write_loiter_samples_csv"]
@@ -84,16 +84,19 @@ def write_loiter_samples_csv(path: str | Path, plan: Plan, coverage: Coverage, d
     """The plan sampled every dt (as the coverage was): t, x, y, psi, turn rate, segment role, the AOI
     most in view, the gimbal angle and the AOIs covered at that step."""
     samples = plan.sample_states(dt, False)
-    roles = [plan.segments[k].role for k in samples.segment]
+    roles = segment_roles(plan)[np.asarray(samples.segment)]
+    # Each bound property is a new array: read each once, not once per row.
+    t, poses, turn_rate = np.asarray(samples.t), np.asarray(samples.poses), np.asarray(samples.turn_rate)
+    pointed, gimbal = np.asarray(coverage.pointed), np.asarray(coverage.gimbal)
     covered = [";".join(str(i) for i in np.flatnonzero(row >= threshold)) for row in coverage.fraction]
     file = Path(path)
     file.parent.mkdir(parents=True, exist_ok=True)
     with open(file, "w", encoding="utf-8") as out:
         out.write("t,x,y,psi,turn_rate,role,pointed_aoi,gimbal_rad,covered_aois\n")
-        for k in range(samples.poses.shape[0]):
-            x, y, psi = samples.poses[k]
-            out.write(f"{samples.t[k]:.6f},{x:.6f},{y:.6f},{psi:.9f},{samples.turn_rate[k]:.9f},{roles[k]},"
-                      f"{coverage.pointed[k]},{coverage.gimbal[k]:.6f},{covered[k]}\n")
+        for k in range(poses.shape[0]):
+            x, y, psi = poses[k]
+            out.write(f"{t[k]:.6f},{x:.6f},{y:.6f},{psi:.9f},{turn_rate[k]:.9f},{roles[k]},"
+                      f"{pointed[k]},{gimbal[k]:.6f},{covered[k]}\n")
     return file
 
 

@@ -69,13 +69,14 @@ def loiter_coverage_fraction(plan: Plan, segments: np.ndarray, cov: Coverage,
     """Of the time steps spent on a loiter segment (by the index of the segment flown at each), the
     fraction at which that loiter's AOI counts as covered."""
     threshold = threshold_value(threshold)
-    covered, total = 0, 0
-    for k, index in enumerate(segments):
-        segment = plan.segments[int(index)]
-        if segment.role == "loiter" and segment.aoi is not None:
-            total += 1
-            covered += bool(cov.fraction[k, segment.aoi] >= threshold)
-    return covered / total if total else 0.0
+    pieces = plan.segments  # built once: the property makes every segment anew
+    loiters = np.array([s.aoi if s.role == "loiter" and s.aoi is not None else -1 for s in pieces], dtype=np.int64)
+    aoi = loiters[np.asarray(segments, dtype=np.int64)]
+    steps = np.flatnonzero(aoi >= 0)
+    if steps.size == 0:
+        return 0.0
+    fraction = np.asarray(cov.fraction)
+    return float(np.count_nonzero(fraction[steps, aoi[steps]] >= threshold)) / steps.size
 
 
 def fly_and_score(scenario: Scenario, plan: Plan, wind: tuple[float, float], planned: Coverage | None = None,

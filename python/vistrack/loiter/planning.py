@@ -218,6 +218,12 @@ def threshold_value(threshold: float) -> float:
     return float(threshold)
 
 
+def segment_roles(plan: Plan) -> np.ndarray:
+    """Each segment's role, an array to index by the samples' segment numbers (``plan.segments``
+    builds every segment anew: one call, not one per sample)."""
+    return np.array([s.role for s in plan.segments], dtype=object)
+
+
 def coverage_by_role(plan: Plan, cov: Coverage, dt: float = _COVERAGE.dt,
                      threshold: float = _COVERAGE.threshold) -> dict[str, dict[str, int]]:
     """For each segment role, the time steps (dt apart, as ``cov`` was computed) the plan spends on
@@ -228,8 +234,9 @@ def coverage_by_role(plan: Plan, cov: Coverage, dt: float = _COVERAGE.dt,
         raise VistrackError(f"dt = {dt}: the coverage has {cov.steps} steps, the plan sampled at dt "
                             f"has {segments.size}")
     covered = np.any(cov.fraction >= threshold, axis=1)
+    roles = segment_roles(plan)[segments]
     out: dict[str, dict[str, int]] = {}
     for role in ("transit", "entry", "loiter", "exit"):
-        on = np.array([plan.segments[int(k)].role == role for k in segments], dtype=bool)
+        on = roles == role
         out[role] = {"steps": int(on.sum()), "covered_steps": int((on & covered).sum())}
     return out

@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from .._core import VistrackError
+from .._core import limits as _limits
 from .flying import fly_and_score
 from .planning import METHOD_NAMES, METHODS, Coverage, Plan, metrics
 from .scenario import Scenario, random_aois
@@ -20,8 +21,10 @@ from .scenario import Scenario, random_aois
 # pi x 46^2 = 6,647.6), so coverage / this is the paper's covered time in seconds.
 PAPER_AREA_PER_SECOND = 873713.0 / 131.0
 
-__all__ = ["PAPER_AREA_PER_SECOND", "MethodRun", "evaluate", "random_scenarios", "random_study", "summary",
-           "wind_directions", "wind_summary"]
+__all__ = [
+    "MAX_STEPS", "PAPER_AREA_PER_SECOND", "MethodRun", "check_steps", "evaluate", "random_scenarios",
+    "random_study", "summary", "wind_directions", "wind_summary",
+]
 
 
 @dataclass
@@ -57,6 +60,40 @@ class MethodRun:
         return row
 
 
+# A study scores each plan and writes it (path CSV, animation, report.html) at every step of dt:
+# about 100 bytes and 30 microseconds per step and method. 5e5 steps is 5.8 days of flight at dt
+# 1 s (the paper's plans fly minutes; turns: 1000 over 5 AOIs, 2 x 10^5 steps).
+MAX_STEPS = 500_000
+
+
+def check_steps(scenario: Scenario, plan: Plan, methods: int = 1) -> None:
+    """VistrackError naming ``dt`` (and what makes the plan long) when scoring and writing ``plan``
+    every dt would take more than MAX_STEPS steps, or when the coverage matrices of ``methods``
+    such plans and the copy the report makes of one (steps x AOIs x 8 bytes each) would exceed
+    ``limits.MAX_WORK_BYTES``; checked before any of that work."""
+    steps = math.floor(plan.flight_time / scenario.dt) + 1
+    held = float(steps) * len(scenario.aois) * 8.0 * (methods + 1)  # the report copies one (cov.fraction)
+    if held > _limits.MAX_WORK_BYTES:
+        fits = math.ceil(scenario.dt * held / _limits.MAX_WORK_BYTES)
+        raise VistrackError(
+            f"dt = {scenario.dt:g}: {methods + 1} coverage matrices (one per method, one copy) of about "
+            f"{steps:.4g} steps x {len(scenario.aois)} AOIs (8 bytes per step and AOI, kept for the report) "
+            f"would hold about {held / 1e9:.4g} GB, above the {_limits.MAX_WORK_BYTES / 1e9:.4g} GB one planned "
+            f"piece of work may take (MAX_WORK_BYTES): raise dt ({fits} s fits), score fewer AOIs or fewer methods "
+            "(--method)")
+    if steps <= MAX_STEPS:
+        return
+    aois = np.asarray(scenario.aois, dtype=float)
+    far = int(np.argmax(np.hypot(aois[:, 0] - scenario.start[0], aois[:, 1] - scenario.start[1])))
+    distance = float(np.hypot(*(aois[far] - np.asarray(scenario.start))))
+    raise VistrackError(
+        f"dt = {scenario.dt:g}: the {plan.method} plan flies {plan.flight_time:.4g} s, {steps:.4g} steps of dt to "
+        f"score and write (about {steps * 100 / 1e6:.4g} MB of path CSV), above the {MAX_STEPS:.0e} a loiter "
+        f"study takes per plan: raise dt to {math.ceil(plan.flight_time / (MAX_STEPS - 1)):g} s or more, or "
+        f"shorten the plan (turns = {scenario.turns}; the farthest AOI, aois[{far}], lies {distance:.4g} m from "
+        "the start)")
+
+
 def evaluate(scenario: Scenario, methods: Sequence[str] = METHODS, order: str = "given",
              winds: Sequence[tuple[float, float]] = (), refused: dict[str, str] | None = None) -> list[MethodRun]:
     """Plan and score each method; ``order="best"`` adds the best visiting order; ``winds`` flies
@@ -72,6 +109,7 @@ def evaluate(scenario: Scenario, methods: Sequence[str] = METHODS, order: str = 
                 raise
             refused[method] = str(error)
             continue
+        check_steps(scenario, plan, len(methods) * (2 if order == "best" else 1))
         run = MethodRun(method, plan, scenario.coverage(plan))
         if order == "best":
             run.best_plan = scenario.plan(method, "best")

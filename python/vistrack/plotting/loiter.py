@@ -19,9 +19,44 @@ METHOD_COLORS = {"fly_through": "tab:red", "tlpp": "tab:blue", "ldlpp": "tab:gre
                  "ldlpp_best": "tab:olive", "best": "tab:purple"}
 
 
+MAX_ARC_POINTS = 721  # an arc is drawn with at most this many points (every half degree of a full turn)
+ARROW_SPACING = 150.0  # m between the arrows that show the direction of travel
+MAX_ARROWS_PER_SEGMENT = 20
+
+
+def _drawn_length(segment: Any) -> float:
+    """How much of a segment a drawing needs: an arc of several turns retraces its first one."""
+    if segment.kind == "arc" and segment.sweep > 2.0 * math.pi:
+        return 2.0 * math.pi * float(segment.radius)
+    return float(segment.length)
+
+
 def _segment_points(segment: Any, step: float = 2.0) -> np.ndarray:
-    count = max(2, math.ceil(segment.length / step) + 1)
-    return np.array([segment.at(s)[:2] for s in np.linspace(0.0, segment.length, count)])
+    """Points along a segment for drawing: a line's two ends; an arc every ``step`` m, at most
+    MAX_ARC_POINTS, over at most one turn (the cost is bounded by the picture, not by the length
+    or the number of turns)."""
+    if segment.kind == "line":
+        return np.array([segment.at(0.0)[:2], segment.at(segment.length)[:2]])
+    length = _drawn_length(segment)
+    count = min(max(2, math.ceil(length / step) + 1), MAX_ARC_POINTS)
+    return np.array([segment.at(s)[:2] for s in np.linspace(0.0, length, count)])
+
+
+def plan_outline(plan: Any) -> np.ndarray:
+    """(n, 2) points along the whole plan for drawing, segment by segment (:func:`_segment_points`:
+    bounded by the picture, however many turns a loiter makes)."""
+    return np.vstack([_segment_points(segment) for segment in plan.segments])
+
+
+def _arrows(segments: Sequence[Any]) -> np.ndarray:
+    """(n, 3) x, y, psi of the direction arrows: every ARROW_SPACING m along each segment's drawn
+    length, at most MAX_ARROWS_PER_SEGMENT per segment."""
+    poses = []
+    for segment in segments:
+        length = _drawn_length(segment)
+        count = min(int(length // ARROW_SPACING), MAX_ARROWS_PER_SEGMENT)
+        poses += [segment.at(s) for s in (np.arange(count) + 0.5) * (length / max(count, 1))]
+    return np.array(poses, dtype=float).reshape(-1, 3)
 
 
 def draw_plan(ax: Any, plan: Any, coverage: Any = None, title: str | None = None, legend: bool = True) -> None:
@@ -43,11 +78,11 @@ def draw_plan(ax: Any, plan: Any, coverage: Any = None, title: str | None = None
         ax.plot(points[:, 0], points[:, 1], color=ROLE_COLORS[role], lw=1.3,
                 label=role if role not in seen else None, zorder=3)
         seen.add(role)
-    # Arrows every ~150 m show the direction of travel.
-    for t in np.arange(5.0, plan.flight_time, 150.0 / plan.speed):
-        x, y, psi = plan.at_time(float(t))
-        ax.annotate("", xy=(x + 12 * math.cos(psi), y + 12 * math.sin(psi)), xytext=(x, y),
-                    arrowprops={"arrowstyle": "->", "color": "0.25", "lw": 0.8}, zorder=4)
+    # Arrows every ~150 m show the direction of travel (one artist, however many).
+    arrows = _arrows(plan.segments)
+    if len(arrows):
+        ax.quiver(arrows[:, 0], arrows[:, 1], np.cos(arrows[:, 2]), np.sin(arrows[:, 2]), color="0.25",
+                  angles="xy", pivot="tail", width=0.004, headwidth=4, headlength=5, zorder=4)
     ax.plot(*plan.start, "ks", ms=6, label="start", zorder=6)
     if tuple(plan.end) != tuple(plan.start):
         ax.plot(*plan.end, "k^", ms=6, label="end", zorder=6)

@@ -13,6 +13,7 @@ from .._core import Environment
 from ..follow import DownwardCamera, FollowResult, camera_footprint
 from ..follow.files import write_follow_trajectory
 from ..follow.scenario import FollowStudy
+from ..follow.simulation import planner_note
 from ..io import write_json
 from ..plotting.common import OSM_CREDIT
 from ..plotting.follow import figure_compare, figure_paths, figure_scores
@@ -137,6 +138,9 @@ def _document(study: FollowStudy, title: str, files: Sequence[str]) -> Document:
                f"Wind {s.wind.east:g} east, {s.wind.north:g} north ({wind:.3g} m/s); {len(study.follow.ticks)} "
                "updates at 1 Hz",
                vehicle_line(uav_dict(s.uav), study.follow.metrics["smoothness"])]
+    summary += [f"Planner: {note}" for note in [planner_note(study.follow)] if note is not None]
+    summary += [f"Baseline not flown{where}: {reason}" for where, reason in
+                (("", study.baseline_reason), (" on the city road", study.city_baseline_reason)) if reason is not None]
     blocks: list[Any] = [Heading("Runs"),
                          Table(["run", "mean tracking error (m)", "max (m)", "along-track lag (m)", "mode switches",
                                 "time in mode", "camera sees the vehicle (%)", "line of sight (%)", "both (%)"], rows)]

@@ -17,7 +17,7 @@ from ..loiter import METHOD_NAMES
 from ..loiter.files import write_loiter_samples_csv
 from ..loiter.study import PAPER_AREA_PER_SECOND, MethodRun, summary, wind_summary
 from ..plotting import loiter as figures
-from ..plotting.motion import Line, MotionScene, Overlay, Track, circle_ring, ellipse_ring, sampled
+from ..plotting.motion import Line, MotionScene, Overlay, Shapes, Track, circle_ring, ellipse_ring
 from ..report_options import ReportOptions
 from .document import Document, Heading, Picture, Table
 from .media import write_media
@@ -83,15 +83,23 @@ def flown_states(scenario: loiter.Scenario, plan: loiter.Plan, planned: loiter.C
     return scenario.dt * np.arange(len(rows)), rows[:, :3], scenario.coverage(rows)
 
 
-def footprint_rings(camera: loiter.Camera, poses: np.ndarray, cov: loiter.Coverage) -> list[list[np.ndarray]]:
-    """At each step, the footprint the coverage metric scored: the camera axis at the tilt of the
+def footprint_ring(camera: loiter.Camera, pose: np.ndarray, tilt: float) -> np.ndarray:
+    """The footprint the coverage metric scored at one step: the camera axis at the tilt of the
     bank and the gimbal angle it chose (``cov.tilt``), as one elliptic ring."""
+    f = camera.footprint((float(pose[0]), float(pose[1]), float(pose[2])), float(tilt))
+    return ellipse_ring(f.center, f.semi_along, f.semi_across, math.atan2(f.along[1], f.along[0]))
+
+
+def footprint_shapes(camera: loiter.Camera, t: np.ndarray, poses: np.ndarray, cov: loiter.Coverage) -> Shapes:
+    """At time s, the footprint (:func:`footprint_ring`) of the last step at or before s, computed
+    when a frame asks for it: a long plan costs the frames drawn, not one ring per step."""
     tilt = np.asarray(cov.tilt)
-    rings = []
-    for pose, angle in zip(poses, tilt):
-        f = camera.footprint((float(pose[0]), float(pose[1]), float(pose[2])), float(angle))
-        rings.append([ellipse_ring(f.center, f.semi_along, f.semi_across, math.atan2(f.along[1], f.along[0]))])
-    return rings
+
+    def at(time: float) -> list[np.ndarray]:
+        k = min(max(int(np.searchsorted(t, time, side="right")) - 1, 0), len(t) - 1)
+        return [footprint_ring(camera, poses[k], tilt[k])]
+
+    return at
 
 
 def motion_scene(scenario: loiter.Scenario, runs: Sequence[MethodRun],
@@ -104,11 +112,12 @@ def motion_scene(scenario: loiter.Scenario, runs: Sequence[MethodRun],
     tracks, overlays = [], []
     for run in runs:
         name, color = METHOD_NAMES[run.method], figures.METHOD_COLORS[run.method]
-        lines.append(Line(f"{name} plan", run.plan.sample(0.5)[:, :2], color=color, style=":", width=0.9, z=altitude))
+        lines.append(Line(f"{name} plan", figures.plan_outline(run.plan), color=color, style=":", width=0.9,
+                          z=altitude))
         t, poses, cov = flown_states(scenario, run.plan, run.coverage, wind)
         tracks.append(Track(name, t, poses[:, :2], color=color, z=altitude, width=1.4))
-        rings = footprint_rings(scenario.camera, poses, cov)
-        overlays.append(Overlay(f"{name} camera footprint", sampled(t.tolist(), rings), color=color))
+        overlays.append(Overlay(f"{name} camera footprint", footprint_shapes(scenario.camera, t, poses, cov),
+                                color=color))
     names = " / ".join(METHOD_NAMES[run.method] for run in runs)
     title = f"{scenario.name}: {names}" + ("" if wind is None else f", wind ({wind[0]:g}, {wind[1]:g}) m/s")
     return MotionScene(tracks, lines, overlays, wind=wind, title=title)

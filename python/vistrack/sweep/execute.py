@@ -20,7 +20,7 @@ import traceback
 import uuid
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Iterator, Mapping, Optional, Union
+from typing import Any, Iterator, Mapping, Optional, Sequence, Union
 
 import numpy as np
 
@@ -162,7 +162,7 @@ def run(spec: Union[SweepSpec, str, Path, Mapping[str, Any]], scheduler: Optiona
     return result
 
 
-def run_cases(cases: list[Case], scheduler: Optional[str] = None, n_workers: Optional[int] = None) -> list[Row]:
+def run_cases(cases: Sequence[Case], scheduler: Optional[str] = None, n_workers: Optional[int] = None) -> list[Row]:
     """The rows of these cases in case order, without writing anything (see :func:`run`)."""
     return sorted(_execute(cases, scheduler, n_workers, {}), key=lambda r: r["case"])
 
@@ -187,7 +187,7 @@ def metric_columns(result: SweepResult) -> list[str]:
     return [c for c in result.columns if c not in skip and not c.startswith("run_")]
 
 
-def _execute(cases: list[Case], scheduler: Optional[str], n_workers: Optional[int],
+def _execute(cases: Sequence[Case], scheduler: Optional[str], n_workers: Optional[int],
              workers: dict[str, dict[str, int]]) -> Iterator[Row]:
     if scheduler == SERIAL:
         before = current_resources().stats()
@@ -198,6 +198,7 @@ def _execute(cases: list[Case], scheduler: Optional[str], n_workers: Optional[in
         return
     from distributed import Client, LocalCluster
 
+    from .connect import CONNECT_TIMEOUT_S, check_scheduler
     from .plugin import SweepPlugin
 
     cluster = None
@@ -208,9 +209,10 @@ def _execute(cases: list[Case], scheduler: Optional[str], n_workers: Optional[in
         address = cluster.scheduler_address
     else:
         address = scheduler
+        check_scheduler(scheduler)  # a short timeout and a peer that speaks Dask, before Client waits on it
     try:
         try:
-            client = Client(address, timeout="20s")
+            client = Client(address, timeout=f"{CONNECT_TIMEOUT_S}s")
         except (OSError, TimeoutError, ValueError, TypeError) as error:
             # TypeError: distributed's "TLS expects a ssl_context" for tls:// without Dask's TLS settings.
             hint = "; tls:// needs distributed.comm.tls in the Dask config" if isinstance(error, TypeError) else ""
@@ -228,7 +230,7 @@ def _execute(cases: list[Case], scheduler: Optional[str], n_workers: Optional[in
             cluster.close()
 
 
-def _stream(client: Any, cases: list[Case]) -> Iterator[Row]:
+def _stream(client: Any, cases: Sequence[Case]) -> Iterator[Row]:
     """Submit the cases (at most SUBMIT_WINDOW waiting at once) and yield rows as they finish."""
     from distributed import as_completed
 

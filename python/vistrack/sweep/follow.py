@@ -13,7 +13,9 @@ truck on the same route timing. The city section is not flown (line of sight nee
 Metrics: ``metrics.json`` of ``vistrack follow`` flattened, without the constant strategy names:
 ``mean_tracking_error_m``, ``max_tracking_error_m``, ``along_track_lag_m``, ``mode_switches``,
 ``time_in_mode_s.sinusoid|loiter|straight``, ``camera_fraction``, ``centre_offset_east_m``,
-``updates``, ... and the baseline's as ``baseline.*``.
+``updates``, ``note`` (when the planner flew its straight mode), ... and the baseline's as
+``baseline.*``: ``baseline.feasible`` false and ``baseline.reason`` (no scores) when the vehicle is
+not slower than the UAV, so no constant orbit about it is flyable.
 """
 
 from __future__ import annotations
@@ -45,8 +47,8 @@ _RUN_METRICS = ("duration_s", "mean_tracking_error_m", "max_tracking_error_m", "
                 "mean_vehicle_distance_m", "mean_offset_distance_m", "centre_offset_east_m", "centre_offset_north_m",
                 "smoothness.bank_rms_deg", "smoothness.roll_reversals_per_s", "smoothness.roll_reversals",
                 "smoothness.max_roll_rate_deg_s")
-_METRICS = (*_RUN_METRICS, "wind_compensation", "updates", "uav.*", *(f"baseline.{m}" for m in _RUN_METRICS),
-            "baseline.radius_m")
+_METRICS = (*_RUN_METRICS, "note", "wind_compensation", "updates", "uav.*",
+            *(f"baseline.{m}" for m in _RUN_METRICS), "baseline.radius_m", "baseline.feasible", "baseline.reason")
 
 
 def _base(value: Any, folder: Path) -> dict[str, Any]:
@@ -101,7 +103,7 @@ def follow_metrics(scenario: FollowScenario) -> dict[str, Any]:
     --no-city``'s metrics.json without the strategy names, the centre offset split in two)."""
     record = scenario.run(city=False).metrics()
     for run in (record, record.get("baseline")):
-        if run is not None:
+        if run is not None and "centre_offset_m" in run:  # an infeasible baseline has its reason only
             run.pop("strategy", None)
             east, north = run.pop("centre_offset_m")
             run["centre_offset_east_m"], run["centre_offset_north_m"] = east, north

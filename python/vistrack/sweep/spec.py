@@ -32,13 +32,14 @@ import itertools
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Mapping, Optional
+from typing import Any, Mapping, Optional, Sequence
 
 import numpy as np
 
 from .._core import RoadNetwork, VistrackError
 from ..io import read_roads, read_yaml_mapping
 from ..schema import fail, integer, number, output_name, reject_unknown, resolve_path
+from .case_list import CaseList
 from .kinds import CaseKind, get_kind
 
 __all__ = ["MAX_CASES", "Case", "Route", "SweepSpec"]
@@ -114,10 +115,13 @@ class SweepSpec:
         spec.combine = data.get("combine", "grid")
         if spec.combine not in ("grid", "zip"):
             raise fail("combine", spec.combine, 'must be "grid" or "zip"')
+        parameters = _parameters(data.get("parameters"), kind, base, spec.seed)
         if "routes" in data:
-            spec.routes = _routes(data["routes"], kind, base, folder, spec.seed)
+            # The other parameters first: the case count is known before any route is computed.
+            others = math.prod(len(v) for v in parameters.values()) if spec.combine == "grid" else 1
+            spec.routes = _routes(data["routes"], kind, base, folder, spec.seed, others)
             spec.parameters[ROUTE] = list(spec.routes)
-        spec.parameters.update(_parameters(data.get("parameters"), kind, base, spec.seed))
+        spec.parameters.update(parameters)
         if not spec.parameters:
             raise fail("parameters", data.get("parameters"), "give at least one parameter to vary (or routes)")
         spec.metrics = _metrics(data.get("metrics"), kind)
@@ -139,23 +143,23 @@ class SweepSpec:
         lengths = [len(values) for values in self.parameters.values()]
         return math.prod(lengths) if self.combine == "grid" else (lengths[0] if lengths else 0)
 
-    def cases(self) -> list[Case]:
-        """Every case, in index order (grid: the last parameter varies fastest)."""
+    def cases(self) -> CaseList[Case]:
+        """Every case, in index order (grid: the last parameter varies fastest), built one at a
+        time as they are read (:class:`~vistrack.sweep.case_list.CaseList`)."""
+        return CaseList(list(self.parameters.values()), self.combine, self.case)
+
+    def case(self, index: int, values: Sequence[Any]) -> Case:
+        """Case ``index`` of the parameters' ``values`` (in the parameters' order): the base with
+        them set (a copy)."""
         names = list(self.parameters)
-        columns = [self.parameters[n] for n in names]
-        rows = itertools.product(*columns) if self.combine == "grid" else zip(*columns)
-        cases = []
-        for index, values in enumerate(rows):
-            data = self.base
-            for name, value in zip(names, values):
-                if name == ROUTE:
-                    data = self.kind.set(data, self.kind.route_key or "", self.routes[value].points)
-                else:
-                    data = self.kind.set(data, name, value)
-            cases.append(Case(index, self.kind.name, dict(zip(names, values)), data, str(self.folder),
-                              case_seed(self.seed, index), self.metrics,
-                              None if self.cache is None else str(self.cache)))
-        return cases
+        data = self.base
+        for name, value in zip(names, values):
+            if name == ROUTE:
+                data = self.kind.set(data, self.kind.route_key or "", self.routes[value].points)
+            else:
+                data = self.kind.set(data, name, value)
+        return Case(index, self.kind.name, dict(zip(names, values)), data, str(self.folder),
+                    case_seed(self.seed, index), self.metrics, None if self.cache is None else str(self.cache))
 
     def describe(self) -> dict[str, Any]:
         """The sweep as plain data (sweep.json)."""
@@ -261,7 +265,10 @@ def _metrics(data: Any, kind: CaseKind) -> tuple[str, ...]:
     return tuple(data)
 
 
-def _routes(data: Any, kind: CaseKind, base: Mapping[str, Any], folder: Path, seed: int) -> dict[str, Route]:
+def _routes(data: Any, kind: CaseKind, base: Mapping[str, Any], folder: Path, seed: int,
+            others: int = 1) -> dict[str, Route]:
+    """The routes between the chosen nodes; their number (times ``others``, the cases of the other
+    parameters) is checked against MAX_CASES before any route is computed."""
     if not isinstance(data, Mapping):
         raise fail("routes", data, "must be a mapping (roads, nodes or points, ordered, sample)")
     reject_unknown(data, {"roads", "nodes", "points", "ordered", "sample", "height"}, "routes.")
@@ -280,13 +287,23 @@ def _routes(data: Any, kind: CaseKind, base: Mapping[str, Any], folder: Path, se
     ordered = data.get("ordered", False)
     if not isinstance(ordered, bool):
         raise fail("routes.ordered", ordered, "must be true or false")
-    pairs = list(itertools.permutations(nodes, 2) if ordered else itertools.combinations(nodes, 2))
-    if not pairs:
+    n = len(nodes)
+    total = n * (n - 1) if ordered else n * (n - 1) // 2
+    if total == 0:
         raise fail("routes.nodes", nodes, "needs at least two different nodes")
+    size = total if data.get("sample") is None else integer("routes.sample", data["sample"], 1, total)
+    if size * others > MAX_CASES:
+        given = data.get("nodes", f"{n} nodes nearest the points")
+        raise fail("routes.nodes" if data.get("sample") is None else "routes.sample",
+                   given if data.get("sample") is None else size,
+                   f"gives {size} routes x {others} cases of the other parameters = {size * others} cases, more "
+                   f"than {MAX_CASES} (checked before any route is computed): choose fewer nodes or draw "
+                   "routes.sample of them")
     if data.get("sample") is not None:
-        size = integer("routes.sample", data["sample"], 1, len(pairs))
         rng = np.random.default_rng(np.random.SeedSequence(seed, spawn_key=(2,)))
-        pairs = [pairs[i] for i in sorted(rng.choice(len(pairs), size, replace=False))]
+        pairs = [_pair(nodes, int(i), ordered) for i in sorted(rng.choice(total, size, replace=False))]
+    else:
+        pairs = list(itertools.permutations(nodes, 2) if ordered else itertools.combinations(nodes, 2))
     # A mesh map's ground is geometry: a POI at z = 0 on it lies inside it; give it a height.
     height = [] if data.get("height") is None else [number("routes.height", data["height"], low=0.0)]
     routes = {}
@@ -298,6 +315,20 @@ def _routes(data: Any, kind: CaseKind, base: Mapping[str, Any], folder: Path, se
             raise VistrackError(f"routes: no road route from node {a} to node {b} ({error})") from None
         routes[f"{a}-{b}"] = Route(f"{a}-{b}", [[float(xy[n, 0]), float(xy[n, 1]), *height] for n in path])
     return routes
+
+
+def _pair(nodes: Sequence[int], index: int, ordered: bool) -> tuple[int, int]:
+    """The ``index``-th pair of itertools.permutations(nodes, 2) (ordered) or
+    itertools.combinations(nodes, 2), without listing the others."""
+    n = len(nodes)
+    if ordered:
+        first, j = divmod(index, n - 1)
+        return nodes[first], nodes[j if j < first else j + 1]
+    first = 0
+    while index >= n - 1 - first:  # combinations: n - 1 - first pairs start at nodes[first]
+        index -= n - 1 - first
+        first += 1
+    return nodes[first], nodes[first + 1 + index]
 
 
 def _route_nodes(data: Mapping[str, Any], roads: RoadNetwork) -> list[int]:
