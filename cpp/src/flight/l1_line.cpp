@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "flight/known_wind.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/flight.hpp"
 #include "vistrack/limits.hpp"
@@ -36,12 +37,8 @@ L1Line::L1Line(double speed, const L1Gains& gains)
     : speed_(speed), distance_(l1_distance(speed, gains)), gains_(gains) {}
 
 void L1Line::set_wind(const Vec2& mean_wind) {
-  require_finite(mean_wind.x(), "wind.east");
-  require_finite(mean_wind.y(), "wind.north");
-  if (!(mean_wind.norm() < speed_))
-    detail::fail_field("wind", detail::to_text(mean_wind.norm()), "the wind-aware law needs a wind below the airspeed");
+  wind_ = detail::known_wind(mean_wind, speed_);
   wind_aware_ = true;
-  wind_ = mean_wind;
 }
 
 double L1Line::turn_rate(const Configuration& q, const Vec2& line_start, const Vec2& target) const {

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flight/known_wind.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/flight.hpp"
 
@@ -20,12 +21,8 @@ LineFeedback::LineFeedback(double speed, double turn_radius, double dt, const Li
 }
 
 void LineFeedback::set_wind(const Vec2& mean_wind) {
-  require_finite(mean_wind.x(), "wind.east");
-  require_finite(mean_wind.y(), "wind.north");
-  if (!(mean_wind.norm() < speed_))
-    detail::fail_field("wind", detail::to_text(mean_wind.norm()), "the wind-aware law needs a wind below the airspeed");
+  wind_ = detail::known_wind(mean_wind, speed_);
   wind_aware_ = true;
-  wind_ = mean_wind;
 }
 
 LineFeedbackTerms LineFeedback::terms(const Configuration& q, const Vec2& line_start, const Vec2& target) const {
