@@ -201,6 +201,8 @@ def test_cli_waypoints(tmp_path: Path) -> None:
     assert main(["waypoints", str(ROUTE), "--paper-units", "--method", "both", "--wind", "0,0.08", "--gusts", "3",
                  "--figure-weights", "--monte-carlo", "2", "--quiet", "--out", str(out)]) == 0
     assert ROUTE.read_bytes() == before
+    assert "Monte Carlo over random routes and winds" in (out / "report.md").read_text()
+    assert "| swirl rate |" in (out / "report.md").read_text()
     record = json.loads((out / "metrics.json").read_text())
     assert [f["label"] for f in record["flights"]] == ["DWN", "WN R_WP=0.1R", "WN R_WP=0.5R", "WN R_WP=1R"]
     for name in ("paths.png", "fig10_theta_weight.png", "monte_carlo.png", "monte_carlo.json",

@@ -49,6 +49,16 @@ def _wind_text(wind: Optional[Wind]) -> str:
     return text + (f" + Dryden gusts (seed {wind.gusts.seed})" if wind.gusts is not None else "")
 
 
+def _wind_arrow(ax: Any, wind: Optional[Wind]) -> None:
+    """An arrow in the upper left corner pointing where the mean wind blows to (none in calm air)."""
+    if wind is None or (wind.east == 0.0 and wind.north == 0.0):
+        return
+    speed = math.hypot(wind.east, wind.north)
+    ax.annotate("", xy=(0.08 + 0.07 * wind.east / speed, 0.9 + 0.07 * wind.north / speed), xytext=(0.08, 0.9),
+                xycoords="axes fraction", arrowprops={"arrowstyle": "->", "color": "tab:gray", "lw": 1.5})
+    ax.text(0.08, 0.8, "wind", transform=ax.transAxes, fontsize=7, color="tab:gray", ha="center")
+
+
 def figure_paths(flights: Sequence[NavigationFlight], path: Path, title: str = "",
                  wind: Optional[Wind] = None) -> Path:
     """Figures 11/12: one panel per WN flight (its R_WP), WN dashed, DWN solid in every panel;
@@ -78,6 +88,7 @@ def figure_paths(flights: Sequence[NavigationFlight], path: Path, title: str = "
         ax.set_aspect("equal")
         ax.grid(True, alpha=0.3)
         ax.legend(loc="best", fontsize=7)
+        _wind_arrow(ax, wind)
     fig.suptitle(f"{title} ({_wind_text(wind)})" if title else _wind_text(wind))
     return save_figure(fig, path, dpi=130)
 

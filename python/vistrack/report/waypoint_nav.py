@@ -95,6 +95,14 @@ def _document(flights: Sequence[NavigationFlight], record: dict[str, Any], route
                    Table(["leg", "length", "flown", "time (s)"],
                          [[str(r["leg"]), f"{r['length']:.4g}", f"{r['flown']:.4g}", f"{r['time']:.4g}"]
                           for r in f.leg_table()])]
+    if record.get("monte_carlo"):
+        blocks += [Heading("Monte Carlo over random routes and winds"),
+                   Table(["gusts", "flight", "flights", "miss median (R)", "miss p90 (R)", "miss max (R)",
+                          "swirl rate", "all reached", "path / route", "overshoot median (R)"],
+                         [["yes" if r["gusts"] else "no", r["label"], str(r["flights"]), f"{r['miss_median']:.3f}",
+                           f"{r['miss_p90']:.3f}", f"{r['miss_max']:.3f}", f"{100 * r['swirl_rate']:.0f} %",
+                           f"{100 * r['all_reached_rate']:.0f} %", f"{r['path_ratio_mean']:.3f}",
+                           f"{r['overshoot_median']:.3f}"] for r in record["monte_carlo"]])]
     titles = {"paths.png": "Paths (Figures 11/12)", "bank.png": "Bank flown",
               "fig10_theta_weight.png": "Figure 10: theta against w_a",
               "monte_carlo.png": "Monte Carlo over random routes and winds"}
