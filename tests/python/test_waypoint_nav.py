@@ -202,6 +202,8 @@ def test_cli_waypoints(tmp_path: Path) -> None:
                  "--figure-weights", "--monte-carlo", "2", "--quiet", "--out", str(out)]) == 0
     assert ROUTE.read_bytes() == before
     assert "Monte Carlo over random routes and winds" in (out / "report.md").read_text()
+    assert (out / "waypoints_zoom.png").stat().st_size > 10_000
+    assert "waypoints_zoom.png" in (out / "report.md").read_text()
     assert "| swirl rate |" in (out / "report.md").read_text()
     record = json.loads((out / "metrics.json").read_text())
     assert [f["label"] for f in record["flights"]] == ["DWN", "WN R_WP=0.1R", "WN R_WP=0.5R", "WN R_WP=1R"]

@@ -105,6 +105,38 @@ def figure_bank(flights: Sequence[NavigationFlight], path: Path) -> Path:
     return save_figure(fig, path, dpi=110)
 
 
+def figure_waypoint_zoom(flights: Sequence[NavigationFlight], path: Path, window: float = 0.6) -> Path:
+    """One small panel per waypoint: every flight within ``window`` R of it, with each WN flight's
+    R_WP circle, so misses of a few hundredths of R can be seen."""
+    plt = pyplot()
+    ref = flights[0]
+    R = ref.turn_radius
+    points = np.asarray(ref.waypoints, dtype=float)
+    columns = min(len(points), 4)
+    rows = math.ceil(len(points) / columns)
+    fig, axes = plt.subplots(rows, columns, figsize=(2.6 * columns, 2.6 * rows), squeeze=False,
+                             constrained_layout=True)
+    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    for k, ax in enumerate(axes.flat):
+        if k >= len(points):
+            ax.set_visible(False)
+            continue
+        w = points[k]
+        for j, flight in enumerate(flights):
+            traj = flight.trajectory
+            ax.plot(traj[:, 1], traj[:, 2], lw=1, color=colors[j % len(colors)], label=flight.label if k == 0 else None)
+            if flight.waypoint_radius:
+                ax.add_patch(plt.Circle(w, flight.waypoint_radius, fill=False, lw=0.5, color=colors[j % len(colors)]))
+        ax.plot([w[0]], [w[1]], "ko", ms=3)
+        ax.set_xlim(w[0] - window * R, w[0] + window * R)
+        ax.set_ylim(w[1] - window * R, w[1] + window * R)
+        ax.set_aspect("equal")
+        ax.set_title(f"waypoint {k}", fontsize=8)
+        ax.tick_params(labelsize=6)
+    fig.legend(loc="lower right", fontsize=6)
+    return save_figure(fig, path, dpi=110)
+
+
 def figure_theta_weight(data: dict[str, Any], path: Path) -> Path:
     """Figure 10: theta of the turning circle against w_a (w_s = 1), and the paths at the ends."""
     plt = pyplot()

@@ -12,7 +12,13 @@ import numpy as np
 from .._core.flight import Wind
 from ..io import write_flight, write_json, write_route, write_rows
 from ..plotting.motion import Line, MotionScene, Track
-from ..plotting.waypoint_nav import figure_bank, figure_monte_carlo, figure_paths, figure_theta_weight
+from ..plotting.waypoint_nav import (
+    figure_bank,
+    figure_monte_carlo,
+    figure_paths,
+    figure_theta_weight,
+    figure_waypoint_zoom,
+)
 from ..report_options import ReportOptions
 from ..waypoint_nav import MonteCarlo, NavigationFlight
 from .document import Document, Heading, Picture, Table, vehicle_line
@@ -57,6 +63,7 @@ def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Option
             entry["turning_points_file"] = write_route(flight.turning_points, out / "turning_points_dwn.csv").name
         record["flights"].append(entry)
     record["figures"].append(figure_paths(flights, out / "paths.png", "DWN against WN", wind).name)
+    record["figures"].append(figure_waypoint_zoom(flights, out / "waypoints_zoom.png").name)
     record["figures"].append(figure_bank(flights, out / "bank.png").name)
     if weights is not None:
         record["figure10"] = {"arc_weights": weights["arc_weights"].tolist(), "thetas": weights["thetas"].tolist(),
@@ -104,6 +111,7 @@ def _document(flights: Sequence[NavigationFlight], record: dict[str, Any], route
                            f"{100 * r['all_reached_rate']:.0f} %", f"{r['path_ratio_mean']:.3f}",
                            f"{r['overshoot_median']:.3f}"] for r in record["monte_carlo"]])]
     titles = {"paths.png": "Paths (Figures 11/12)", "bank.png": "Bank flown",
+              "waypoints_zoom.png": "At each waypoint (within 0.6 R)",
               "fig10_theta_weight.png": "Figure 10: theta against w_a",
               "monte_carlo.png": "Monte Carlo over random routes and winds"}
     blocks += [Picture(name, titles.get(name, name)) for name in record["figures"]]
