@@ -1,6 +1,7 @@
 // A smooth reference R(t) under a ceiling (beyond the paper): of the C1 quadratic splines that the
 // vehicle can fly (Lemma 5's rate bound, a d2R/dt2 bound from the turn-rate limit) and that stay
-// under the ceiling, the one with the largest integral of R. A banded linear program on the
+// under the ceiling, the one with the largest integral of R (less a d2R/dt2 penalty, so that it
+// does not zig-zag where the ceiling leaves it free). A banded linear program on the
 // spline's control points, solved by a log-barrier interior point method with banded Newton steps;
 // with a penalty on d2R/dt2 (Planning::radius_smoothing) a banded quadratic program, the same way.
 #include <algorithm>
