@@ -151,3 +151,22 @@ def test_helsinki_examples_build_their_routes() -> None:
     follow = vt.follow.FollowScenario.load(REPO / "examples" / "follow_helsinki_osm.yaml")
     vehicle = follow.city_vehicle(env)
     np.testing.assert_allclose(vehicle.position(0.0), poi.waypoints[0, :2], atol=1e-6)  # the same route start
+
+
+def test_city_command_writes_raised_bases(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    osm = OsmWriter()
+    osm.box(LAT, LON, building__part="yes", height="30", min_height="18")
+    osm.box(LAT, LON + 1e-3, building="yes", height="12")
+    out = tmp_path / "out"
+    status, err = cli(["city", str(osm.write(tmp_path / "raised.osm")), "--out", str(out)], capsys)
+    assert status == 0, err
+    assert json.loads((out / "summary.json").read_text())["raised_base"] == 1
+    collection = json.loads((out / "city.geojson").read_text())
+    assert sorted(f["properties"].get("min_height", 0.0) for f in collection["features"]) == [0.0, 18.0]
+    city = vt.io.read_osm(out.parent / "raised.osm")
+    assert "  1 footprints with a base above the ground (open underneath)" in city.summary.lines()
+    again = vt.Environment.from_geojson(out / "city.geojson", origin=city.georeference)
+    assert sorted(zip(again.min_heights, again.heights)) == [(0.0, 12.0), (18.0, 30.0)]
+    lines = (out / "city.obj").read_text().splitlines()
+    z = sorted({float(line.split()[3]) for line in lines if line.startswith("v ")})
+    assert z == [0.0, 12.0, 18.0, 30.0]  # the raised part's floor at 18 m, nothing of it below

@@ -10,6 +10,13 @@ The rules follow the OSM wiki's Simple 3D Buildings
   ``roof:height`` if tagged, else ``roof:levels`` x ``level_height``, else ``roof_height``. Else
   ``default_height``.
 - the base: ``min_height`` (a length), else ``building:min_level`` x ``level_height``; 0 otherwise.
+  Tagged tops (``height``, ``building:levels``) are measured from the ground, as the wiki says
+  ("height: distance between the lowest possible position with ground contact and the top of the
+  roof"; ``building:levels`` counts the levels from the ground, ``building:min_level`` the levels
+  skipped under a part), so a tagged top at or below the base is a contradiction (skipped). A part
+  with a base and no tagged top takes ``default_height`` above its base (top = base +
+  ``default_height``): the default stands for the part's unknown extent, and a part known to
+  exist above its base is not dropped for want of a height.
 - a drivable road: ``highway`` in :data:`DRIVABLE` (motorway to residential, unclassified,
   living_street, service and the ``_link`` roads); not footways, cycleways, steps, paths.
 """
@@ -104,12 +111,12 @@ def building_height(tags: Mapping[str, str], level_height: float, roof_height: f
                 roof_levels = _count_tag(tags, "roof:levels", bad)
                 roof = roof_height if roof_levels is None else roof_levels * level_height
             top, source = levels * level_height + roof, "levels"
-    if top is None:
-        top, source = default_height, "default"
     base = _length_tag(tags, "min_height", bad)
     if base is None:
         min_level = _count_tag(tags, "building:min_level", bad)
         base = 0.0 if min_level is None else min_level * level_height
+    if top is None:
+        top, source = base + default_height, "default"  # the default extent, above the base
     return Height(top, base, source, bad)
 
 
