@@ -100,7 +100,7 @@ class OsmSummary:
                    f"{r.edges} edges, {r.length_m / 1000:.2f} km; "
                    f"skipped " + (", ".join(f"{k} {v}" for k, v in sorted(r.skipped.items())) or "none")
                    + f"; {r.edges_crossing_buildings} edges crossing a building left out; "
-                   f"{r.oneway_ways} one-way ways driven both ways")
+                   f"{r.oneway_ways} one-way ways ({r.oneway_edges} one-way edges)")
         out.append(f"  read in {self.seconds:.2f} s")
         return out
 

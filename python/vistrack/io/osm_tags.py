@@ -17,6 +17,11 @@ The rules follow the OSM wiki's Simple 3D Buildings
   with a base and no tagged top takes ``default_height`` above its base (top = base +
   ``default_height``): the default stands for the part's unknown extent, and a part known to
   exist above its base is not dropped for want of a height.
+- a road's direction (https://wiki.openstreetmap.org/wiki/Key:oneway): ``oneway`` ``yes`` /
+  ``true`` / ``1`` driven in the way's node order only, ``-1`` against it only, ``no`` (or any
+  other value: ``reversible`` and ``alternating`` change with the time of day) both ways; absent,
+  ``junction=roundabout`` / ``circular`` and ``highway=motorway`` imply ``oneway=yes`` (the wiki's
+  implied values), every other way is two-way.
 - a drivable road: ``highway`` in :data:`DRIVABLE` (motorway to residential, unclassified,
   living_street, service and the ``_link`` roads); not footways, cycleways, steps, paths.
 """
@@ -28,7 +33,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Optional
 
-__all__ = ["DRIVABLE", "Height", "building_height", "parse_count", "parse_length", "road_skip_reason"]
+__all__ = ["DRIVABLE", "Height", "building_height", "oneway", "parse_count", "parse_length", "road_skip_reason"]
 
 _MAIN_ROADS = ("motorway", "trunk", "primary", "secondary", "tertiary")
 DRIVABLE = frozenset(_MAIN_ROADS + tuple(f"{road}_link" for road in _MAIN_ROADS)
@@ -137,3 +142,16 @@ def road_skip_reason(tags: Mapping[str, str]) -> Optional[str]:
     if _negative_layer(tags):
         return "below_ground"
     return None
+
+
+_FORWARD = ("yes", "true", "1")
+_IMPLIED_ONEWAY = {("junction", "roundabout"), ("junction", "circular"), ("highway", "motorway")}
+
+
+def oneway(tags: Mapping[str, str]) -> int:
+    """A way's direction from its tags (the rule above): 1 forward only, -1 backward only, 0 both."""
+    value = tags.get("oneway")
+    if value is None:
+        return 1 if any(tags.get(key) == v for key, v in _IMPLIED_ONEWAY) else 0
+    value = value.strip().lower()
+    return 1 if value in _FORWARD else -1 if value == "-1" else 0
