@@ -12,6 +12,7 @@ import vistrack as vt
 from support.cli import cli, one_line_error
 from support.osm_files import OsmWriter
 from support.paths import REPO, SHARED_DATA
+from support.refusal import refuses
 from vistrack.scenario_blocks import city_block
 
 LAT, LON = 60.17, 24.94
@@ -112,6 +113,18 @@ def test_scenario_poi_route_from_to(tmp_path: Path) -> None:
     with pytest.raises(vt.VistrackError, match=r"poi\.route: no road connects"):
         vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON + 2e-3, LAT]}}},
                               tmp_path).poi.build(env)
+    # the issue's spelling: the speed inside the route
+    inside = vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON, LAT + 1e-3],
+                                                              "speed": 7.5}}}, tmp_path)
+    assert inside.poi.speed == 7.5 and inside.poi.build(env).speed == 7.5
+    assert inside.to_dict()["poi"]["speed"] == 7.5 and "speed" not in inside.to_dict()["poi"]["route"]
+    assert vt.Scenario.from_dict(inside.to_dict(), tmp_path).poi.speed == 7.5
+    refuses(lambda: vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON, LAT + 1e-3],
+                                                                     "speed": 7.5}, "speed": 4.0}}, tmp_path),
+            "poi.route.speed = 7.5", "give the speed once")
+    refuses(lambda: vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON, LAT + 1e-3],
+                                                                     "speed": -1}}}, tmp_path),
+            "poi.route.speed = -1")
 
 
 def test_follow_scenario_drives_a_road_route_on_an_osm_city(tmp_path: Path) -> None:
@@ -122,10 +135,10 @@ vehicle:
   start: [0.0, 0.0]
   legs:
     - {{heading: north, speed: 5.0, duration: 20.0}}
+  route: {{from: [{LON}, {LAT}], to: [{LON}, {LAT + 1e-3}]}}
 georeference: {{lat: {LAT}, lon: {LON}}}
 city:
   osm: streets.osm
-  road: {{from: [{LON}, {LAT}], to: [{LON}, {LAT + 1e-3}]}}
 """)
     scenario = vt.follow.FollowScenario.load(tmp_path / "follow.yaml")
     assert scenario.city_available()
@@ -137,8 +150,17 @@ city:
     assert end[1] == pytest.approx(100.0, abs=1e-6) and abs(end[0]) < 0.5  # 5 m/s north along the west street
     bad = (tmp_path / "follow.yaml").read_text().replace(f"to: [{LON}, {LAT + 1e-3}]", f"to: [{LON + 2e-3}, {LAT}]")
     (tmp_path / "bad.yaml").write_text(bad)
-    with pytest.raises(vt.VistrackError, match=r"city\.road: no road connects"):
+    with pytest.raises(vt.VistrackError, match=r"vehicle\.route: no road connects"):
         vt.follow.FollowScenario.load(tmp_path / "bad.yaml").city_vehicle()
+    text = (tmp_path / "follow.yaml").read_text()
+    route_line = f"  route: {{from: [{LON}, {LAT}], to: [{LON}, {LAT + 1e-3}]}}\n"
+    # the first slice's city.road: {from, to} (never released) is refused, pointing to vehicle.route
+    (tmp_path / "old.yaml").write_text(text.replace(route_line, "") + route_line.replace("route", "road"))
+    refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "old.yaml"), "city.road = ", "vehicle.route")
+    (tmp_path / "no_city.yaml").write_text(text.split("georeference")[0])
+    refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "no_city.yaml"), "vehicle.route = ", "needs a city")
+    (tmp_path / "two.yaml").write_text(text + "  road: road.csv\n")
+    refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "two.yaml"), "city = ", "one road")
 
 
 def test_helsinki_examples_build_their_routes() -> None:
