@@ -84,6 +84,7 @@ def test_base_from_min_height_or_min_level(tmp_path: Path) -> None:
     ground = osm.box(*at(3), building="yes", height="9")
     untagged_top = osm.box(*at(4), building__part="yes", min_height="18")  # no height: default above the base
     levels_below = osm.box(*at(5), building__part="yes", building__levels="2", building__min_level="3")
+    zero = osm.box(*at(6), building="yes", height="7", min_height="0")  # on the ground, not a bad tag
     city = read(tmp_path, osm, default_height=10.0)
     got = heights(city)
     assert got[f"w{raised}"] == 20.0 and got[f"w{level_base}"] == 18.0 and got[f"w{ground}"] == 9.0
@@ -92,7 +93,9 @@ def test_base_from_min_height_or_min_level(tmp_path: Path) -> None:
     assert city.summary.skipped == {"top_not_above_base": 2}
     assert city.summary.raised_base == 3
     bases = dict(zip(city.osm_ids, city.environment.min_heights))
-    assert bases == {f"w{raised}": 5.0, f"w{level_base}": 6.0, f"w{ground}": 0.0, f"w{untagged_top}": 18.0}
+    assert bases == {f"w{raised}": 5.0, f"w{level_base}": 6.0, f"w{ground}": 0.0, f"w{untagged_top}": 18.0,
+                     f"w{zero}": 0.0}
+    assert city.summary.bad_tags == {}
 
 
 def test_a_raised_part_leaves_the_space_under_it_open(tmp_path: Path) -> None:

@@ -159,6 +159,9 @@ city:
     refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "old.yaml"), "city.road = ", "vehicle.route")
     (tmp_path / "no_city.yaml").write_text(text.split("georeference")[0])
     refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "no_city.yaml"), "vehicle.route = ", "needs a city")
+    track = text.replace("  start: [0.0, 0.0]\n", "  track: track.csv\n").split("  legs:")[0] + route_line
+    (tmp_path / "track.yaml").write_text(track)
+    refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "track.yaml"), "vehicle.route = ", "needs legs")
     (tmp_path / "two.yaml").write_text(text + "  road: road.csv\n")
     refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "two.yaml"), "city = ", "one road")
 

@@ -47,9 +47,10 @@ _FEET_WORD = re.compile(rf"^\s*({_NUMBER})\s*(ft|feet|foot)\s*$", re.IGNORECASE)
 _FEET_INCHES = re.compile(rf"^\s*(?:({_NUMBER})\s*')?\s*(?:({_NUMBER})\s*\")?\s*$")
 
 
-def parse_length(text: str) -> Optional[float]:
+def parse_length(text: str, allow_zero: bool = False) -> Optional[float]:
     """A length tag in metres: ``12``, ``12.5 m``, ``40 ft``, ``40 feet``, ``12'``, ``12'6"``;
-    None when the text is none of these or not positive (the caller counts it as bad)."""
+    None when the text is none of these or not positive (0 allowed with ``allow_zero``: a base
+    ``min_height=0`` is on the ground) (the caller counts it as bad)."""
     value: Optional[float] = None
     if match := _METRIC.match(text):
         value = float(match.group(1))
@@ -57,7 +58,9 @@ def parse_length(text: str) -> Optional[float]:
         value = float(match.group(1)) * _FEET
     elif (match := _FEET_INCHES.match(text)) and (match.group(1) or match.group(2)):
         value = float(match.group(1) or 0.0) * _FEET + float(match.group(2) or 0.0) * _INCH
-    return value if value is not None and value > 0.0 else None
+    if value is None or value < 0.0 or (value == 0.0 and not allow_zero):
+        return None
+    return value
 
 
 def parse_count(text: str) -> Optional[float]:
@@ -81,10 +84,10 @@ class Height:
     bad: list[str] = field(default_factory=list)
 
 
-def _length_tag(tags: Mapping[str, str], key: str, bad: list[str]) -> Optional[float]:
+def _length_tag(tags: Mapping[str, str], key: str, bad: list[str], allow_zero: bool = False) -> Optional[float]:
     if key not in tags:
         return None
-    value = parse_length(tags[key])
+    value = parse_length(tags[key], allow_zero)
     if value is None:
         bad.append(key)
     return value
@@ -116,7 +119,7 @@ def building_height(tags: Mapping[str, str], level_height: float, roof_height: f
                 roof_levels = _count_tag(tags, "roof:levels", bad)
                 roof = roof_height if roof_levels is None else roof_levels * level_height
             top, source = levels * level_height + roof, "levels"
-    base = _length_tag(tags, "min_height", bad)
+    base = _length_tag(tags, "min_height", bad, allow_zero=True)
     if base is None:
         min_level = _count_tag(tags, "building:min_level", bad)
         base = 0.0 if min_level is None else min_level * level_height
