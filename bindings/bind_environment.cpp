@@ -1,7 +1,10 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <optional>
 #include <tuple>
+#include <vector>
 
 #include "bindings.hpp"
 #include "vistrack/environment.hpp"
@@ -15,8 +18,9 @@ namespace {
 
 using Edges = Eigen::Matrix<std::int64_t, Eigen::Dynamic, 2, Eigen::RowMajor>;
 
-RoadNetwork roads_from_arrays(const Points2& nodes, const Edges& edges) {
+RoadNetwork roads_from_arrays(const Points2& nodes, const Edges& edges, const std::optional<std::vector<bool>>& oneway) {
   RoadNetwork roads;
+  if (oneway) roads.oneway = *oneway;
   for (Eigen::Index i = 0; i < nodes.rows(); ++i) roads.nodes.emplace_back(nodes(i, 0), nodes(i, 1));
   for (Eigen::Index e = 0; e < edges.rows(); ++e) {
     for (int k = 0; k < 2; ++k)
@@ -42,19 +46,28 @@ Edges edges_array(const RoadNetwork& roads) {
   return edges;
 }
 
-// Items (Polygon, height) or (Polygon, height, id); the id defaults to the position.
+Eigen::Array<bool, Eigen::Dynamic, 1> oneway_array(const RoadNetwork& roads) {
+  Eigen::Array<bool, Eigen::Dynamic, 1> flags(static_cast<Eigen::Index>(roads.edges.size()));
+  for (std::size_t e = 0; e < roads.edges.size(); ++e) flags(static_cast<Eigen::Index>(e)) = roads.is_oneway(e);
+  return flags;
+}
+
+// Items (Polygon, height), (Polygon, height, id) or (Polygon, height, id, min_height); the id
+// defaults to the position, the base to 0.
 std::vector<Building> buildings_from_python(const py::iterable& items) {
   std::vector<Building> buildings;
   for (const py::handle item : items) {
     const std::string field = "buildings[" + std::to_string(buildings.size()) + "]";
     const auto entry = py::reinterpret_borrow<py::sequence>(item);
-    if (entry.size() != 2 && entry.size() != 3)
-      detail::fail_field(field, py::str(item).cast<std::string>(), "expected (Polygon, height) or (Polygon, height, id)");
+    if (entry.size() < 2 || entry.size() > 4)
+      detail::fail_field(field, py::str(item).cast<std::string>(),
+                         "expected (Polygon, height), (Polygon, height, id) or (Polygon, height, id, min_height)");
     Building building;
     if (py::isinstance<Polygon>(entry[0])) building.footprint = entry[0].cast<Polygon>();
     else building.footprint.outer = ring_from_array(entry[0].cast<Points2>(), field + "[0]");  // an (n, 2) array
     building.height = entry[1].cast<double>();
-    building.id = entry.size() == 3 ? entry[2].cast<int>() : static_cast<int>(buildings.size());
+    building.id = entry.size() >= 3 ? entry[2].cast<int>() : static_cast<int>(buildings.size());
+    if (entry.size() == 4) building.min_height = entry[3].cast<double>();
     buildings.push_back(std::move(building));
   }
   return buildings;
@@ -102,16 +115,24 @@ LonLatProjection lon_lat_projection(const py::object& project) {
 
 void bind_environment(py::module_& m) {
   py::class_<RoadNetwork>(m, "RoadNetwork",
-                          "Road graph G = (N, E): nodes on the ground plane, bidirectional edges.")
-      .def(py::init([](const Points2& nodes, const Edges& edges) { return roads_from_arrays(nodes, edges); }),
-           py::arg("nodes"), py::arg("edges"),
-           "nodes: (n, 2) float array of positions in metres; edges: (m, 2) int array of node pairs.")
+                          "Road graph G = (N, E): nodes on the ground plane; edges driven both ways "
+                          "unless one-way.")
+      .def(py::init([](const Points2& nodes, const Edges& edges, const std::optional<std::vector<bool>>& oneway) {
+             return roads_from_arrays(nodes, edges, oneway);
+           }),
+           py::arg("nodes"), py::arg("edges"), py::arg("oneway") = py::none(),
+           "nodes: (n, 2) float array of positions in metres; edges: (m, 2) int array of node pairs; "
+           "oneway: None (every edge two-way) or one bool per edge, True when the edge is driven only "
+           "from its first node to its second.")
+      .def_property_readonly("oneway", &oneway_array,
+                             "Per edge, True when it is driven only from edges[e][0] to edges[e][1]; bool array (m,).")
       .def_property_readonly("nodes", &nodes_array, "Node positions, numpy array (n, 2).")
       .def_property_readonly("edges", &edges_array, "Edges as node index pairs, numpy int64 array (m, 2).")
       .def("shortest_route", [](const RoadNetwork& roads, int from, int to) { return shortest_route(roads, from, to); },
            py::arg("start"), py::arg("goal"),
            "Node indices of a shortest route along the edges from start to goal (Dijkstra, Euclidean "
-           "edge lengths), both included. VistrackError when goal is unreachable.")
+           "edge lengths, one-way edges only their way), both included. VistrackError when goal is "
+           "unreachable, saying so when only one-way streets stand in the way.")
       .def("nearest_node", [](const RoadNetwork& roads, const Vec2& point) {
              if (roads.nodes.empty()) throw Error("nodes: the road network has no nodes");
              int best = 0;
@@ -122,7 +143,8 @@ void bind_environment(py::module_& m) {
            },
            py::arg("point"), "Index of the node closest to a point (x, y) (lowest index on ties).")
       .def("__repr__", [](const RoadNetwork& r) {
-        return Repr("RoadNetwork").add("nodes", r.nodes.size()).add("edges", r.edges.size()).str();
+        const auto oneway = static_cast<std::size_t>(std::count(r.oneway.begin(), r.oneway.end(), true));
+        return Repr("RoadNetwork").add("nodes", r.nodes.size()).add("edges", r.edges.size()).add("oneway", oneway).str();
       });
 
   py::class_<Environment>(m, "Environment",
@@ -137,7 +159,8 @@ void bind_environment(py::module_& m) {
           },
           py::arg("path"), py::arg("origin") = py::none(), py::arg("project") = py::none(),
                   "2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: "
-                  "height from properties.height, else building:levels x 3 m; id from properties.id, "
+                  "height from properties.height, else building:levels x 3 m; the base from properties.min_height "
+                  "(default 0, below the top); id from properties.id, "
                   "else the feature index. Coordinates in local east-north metres, or WGS84 longitude/latitude "
                   "(the GeoJSON default, as OpenStreetMap exports give; told apart by range, anything else is a "
                   "VistrackError) projected to local metres by project(lon_lat, (lat, lon, alt)) (the package "
@@ -166,7 +189,8 @@ void bind_environment(py::module_& m) {
             return Environment::from_buildings(std::move(buildings), roads.value_or(RoadNetwork{}));
           },
           py::arg("buildings"), py::arg("roads") = py::none(),
-          "Environment from a list of (Polygon, height) or (Polygon, height, id) (an (n, 2) array "
+          "Environment from a list of (Polygon, height), (Polygon, height, id) or (Polygon, height, id, "
+          "min_height) (the base: a raised part from min_height to height; an (n, 2) array "
           "may stand for a Polygon without holes), validated as in "
           "from_geojson; optional RoadNetwork checked against every footprint.")
       .def_static("from_triangles", &Environment::from_triangles, py::arg("vertices"), py::arg("faces"),
@@ -202,7 +226,11 @@ void bind_environment(py::module_& m) {
                              "Building footprints as a list of Polygon (outer counter-clockwise, holes clockwise).")
       .def_property_readonly(
           "heights", [](const Environment& e) { const auto h = e.heights(); return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(h.data(), static_cast<Eigen::Index>(h.size()))); },
-          "Building heights in metres, numpy array (num_buildings,).")
+          "Building heights (their tops) in metres above the ground, numpy array (num_buildings,).")
+      .def_property_readonly(
+          "min_heights", [](const Environment& e) { const auto h = e.min_heights(); return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(h.data(), static_cast<Eigen::Index>(h.size()))); },
+          "Building bases (min_height) in metres above the ground, numpy array (num_buildings,): 0 for "
+          "a building standing on the ground, above 0 for a raised part with open space under it.")
       .def_property_readonly(
           "building_ids",
           [](const Environment& e) {
@@ -216,8 +244,11 @@ void bind_environment(py::module_& m) {
            "Replace the road network; VistrackError naming the edge and the building when an edge "
            "crosses a footprint interior (running along a wall is allowed).")
       .def("set_roads",
-           [](Environment& e, const Points2& nodes, const Edges& edges) { e.set_roads(roads_from_arrays(nodes, edges)); },
-           py::arg("nodes"), py::arg("edges"), "Replace the road network from arrays nodes (n, 2) and edges (m, 2).")
+           [](Environment& e, const Points2& nodes, const Edges& edges, const std::optional<std::vector<bool>>& oneway) {
+             e.set_roads(roads_from_arrays(nodes, edges, oneway));
+           },
+           py::arg("nodes"), py::arg("edges"), py::arg("oneway") = py::none(),
+           "Replace the road network from arrays nodes (n, 2), edges (m, 2) and optional oneway flags (m,).")
       .def_property_readonly("fingerprint", &Environment::fingerprint,
                              "Deterministic 64-bit content hash of the geometry and roads, for caches.")
       .def_property(

@@ -4,8 +4,9 @@ georeferenced (``env.origin``, as an OSM or longitude/latitude GeoJSON city is),
 (east, north) metres with ``crs="local"``.
 
 ``vt.PoiPath.from_route(env, start, end, speed, crs="lonlat")`` is the short form of
-:func:`route_path`. Two points on parts of the road network that no road joins are a one-line
-VistrackError naming both.
+:func:`route_path`. Routes drive one-way edges (``RoadNetwork.oneway``) their way only. Two points
+on parts of the road network that no road joins are a one-line VistrackError naming both, and so
+are two points only joined against one-way streets (the message says so).
 """
 
 from __future__ import annotations
@@ -67,7 +68,11 @@ def route_nodes(env: Environment, start: Sequence[float], end: Sequence[float], 
     first, last = (roads.nearest_node(point) for point in ends)
     try:
         return list(roads.shortest_route(first, last))
-    except VistrackError:
+    except VistrackError as error:
+        if "one-way" in str(error):
+            raise VistrackError(f"{key}: no road route from = {list(start)} (road node {first}) to = "
+                                f"{list(end)} (road node {last}) that respects one-way streets: one "
+                                "exists only driving against them") from None
         raise VistrackError(f"{key}: no road connects from = {list(start)} (road node {first}) and to = "
                             f"{list(end)} (road node {last}): they lie on parts of the road network that "
                             "no road joins") from None

@@ -25,7 +25,6 @@ from .flight import Gusts, Wind
 from .georeference import Georeference, degrees
 from .io.mesh import load_environment
 from .io.osm import read_osm
-from .routes import route_ends
 from .schema import fail, integer, number, positive, reject_unknown, resolve_path, section
 
 __all__ = [
@@ -223,7 +222,7 @@ class City:
     kind: str = "demo"  # "demo", "geojson", "mesh" or "osm"
     path: Optional[Path] = None
     up: str = "z"
-    road: Optional[Path | dict[str, Any]] = None  # a CSV path, or a road route's ends {from, to, crs}
+    road: Optional[Path] = None  # a CSV path the product drives along
     options: dict[str, float] = field(default_factory=dict)
 
     def load(self, origin: Optional[Georeference] = None) -> Environment:
@@ -243,9 +242,10 @@ class City:
 
 def city_block(data: Mapping[str, Any], base: Path, road: bool = False) -> Optional[City]:
     """``city: {mesh | geojson | osm | demo, up, road, level_height, roof_height, default_height}``;
-    None when absent. ``road`` (a CSV path the product drives along, or ``{from, to, crs}``: the
-    shortest route of the city's road network between two points, vistrack.routes) is accepted
-    only for products that use one; the height options only with ``osm``."""
+    None when absent. ``road`` (a CSV path the product drives along; a road route between two
+    points is the product's own key: a follow scenario's ``vehicle.route``, a tracking scenario's
+    ``poi.route``) is accepted only for products that use one; the height options only with
+    ``osm``."""
     if data.get("city") is None:
         return None
     keys = {"demo", "geojson", "mesh", "osm", "up", *OSM_OPTIONS}
@@ -254,10 +254,11 @@ def city_block(data: Mapping[str, Any], base: Path, road: bool = False) -> Optio
     if len(sources) != 1:
         raise fail("city", found, "give exactly one of demo: true, geojson: FILE, mesh: FILE, osm: FILE")
     kind = sources[0]
-    road_path: Optional[Path | dict[str, Any]] = None
+    road_path: Optional[Path] = None
     if isinstance(found.get("road"), Mapping):
-        road_path = route_ends(found["road"], "city.road")
-    elif found.get("road") is not None:
+        raise fail("city.road", found["road"], "must be a CSV path: a road route {from, to} is vehicle.route "
+                                               "(follow) or poi.route (tracking)")
+    if found.get("road") is not None:
         road_path = resolve_path(base, found["road"], "city.road")
     if kind == "demo" and found["demo"] is not True:
         raise fail("city.demo", found["demo"], "must be true")

@@ -180,6 +180,40 @@ TEST(Buildings, OverlapRules) {
                                                {{rectangle(12, 12, 18, 18), {}}, 50.0, 1}}));
 }
 
+TEST(Buildings, RaisedBaseIsASolidFromItsBaseToItsTop) {
+  const Environment env = Environment::from_buildings({{{rectangle(0, 0, 10, 20), {}}, 30.0, 7, 18.0}});
+  expect_closed_oriented(env.mesh());
+  EXPECT_NEAR(signed_volume(env.mesh()), 10 * 20 * 12.0, 1e-9);
+  EXPECT_DOUBLE_EQ(env.mesh().vertices.col(2).minCoeff(), 18.0);
+  EXPECT_DOUBLE_EQ(env.ground_level(), 0.0);
+  EXPECT_EQ(env.min_heights(), std::vector<double>{18.0});
+  auto one = [](double base) { return [base] { Environment::from_buildings({{{rectangle(0, 0, 10, 10), {}}, 30.0, 0, base}}); }; };
+  expect_error(one(-1.0), {"buildings[0].min_height = -1", ">= 0"});
+  expect_error(one(std::nan("")), {"buildings[0].min_height = nan"});
+  expect_error(one(30.0), {"buildings[0].min_height = 30", "below the top", "buildings[0].height = 30"});
+  // Stacked parts share a footprint, not a volume; overlapping heights still overlap.
+  EXPECT_NO_THROW(Environment::from_buildings({{{rectangle(0, 0, 10, 10), {}}, 18.0, 0},
+                                               {{rectangle(0, 0, 10, 10), {}}, 30.0, 1, 18.0}}));
+  expect_error([] {
+    Environment::from_buildings({{{rectangle(0, 0, 10, 10), {}}, 20.0, 0}, {{rectangle(0, 0, 10, 10), {}}, 30.0, 1, 18.0}});
+  }, {"overlap"});
+}
+
+TEST(Roads, OneWayEdgesAreDrivenTheirWayOnly) {
+  // A square block driven counter-clockwise only: 0 -> 3 goes round, 3 -> 0 is one edge.
+  RoadNetwork roads{{Vec2(0, 0), Vec2(100, 0), Vec2(100, 100), Vec2(0, 100)}, {{0, 1}, {1, 2}, {2, 3}, {3, 0}},
+                    {true, true, true, true}};
+  EXPECT_EQ(shortest_route(roads, 0, 3), (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(shortest_route(roads, 3, 0), (std::vector<int>{3, 0}));
+  expect_error([&] { PoiPath::from_nodes(roads, {0, 3}, 5.0); }, {"nodes[1] = 3", "one-way the other way"});
+  roads.oneway = {true, false, false, false};
+  EXPECT_EQ(shortest_route(roads, 0, 3), (std::vector<int>{0, 3}));
+  const RoadNetwork single{{Vec2(0, 0), Vec2(100, 0)}, {{0, 1}}, {true}};
+  expect_error([&] { shortest_route(single, 1, 0); }, {"to = 0", "respects one-way streets"});
+  expect_error([] { validate_road_network(RoadNetwork{{Vec2(0, 0), Vec2(1, 0)}, {{0, 1}}, {true, false}}); },
+               {"roads.oneway", "one flag per edge (1)"});
+}
+
 std::string feature(const std::string& coordinates, const std::string& properties,
                     const std::string& type = "Polygon") {
   return R"({"type": "Feature", "properties": )" + properties + R"(, "geometry": {"type": ")" + type +

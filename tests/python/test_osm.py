@@ -82,12 +82,51 @@ def test_base_from_min_height_or_min_level(tmp_path: Path) -> None:
     level_base = osm.box(*at(1), building__part="yes", building__levels="6", building__min_level="2")
     inverted = osm.box(*at(2), building="yes", height="4", min_height="6")
     ground = osm.box(*at(3), building="yes", height="9")
-    city = read(tmp_path, osm)
+    untagged_top = osm.box(*at(4), building__part="yes", min_height="18")  # no height: default above the base
+    levels_below = osm.box(*at(5), building__part="yes", building__levels="2", building__min_level="3")
+    zero = osm.box(*at(6), building="yes", height="7", min_height="0")  # on the ground, not a bad tag
+    city = read(tmp_path, osm, default_height=10.0)
     got = heights(city)
     assert got[f"w{raised}"] == 20.0 and got[f"w{level_base}"] == 18.0 and got[f"w{ground}"] == 9.0
-    assert f"w{inverted}" not in got
-    assert city.summary.skipped == {"top_not_above_base": 1}
-    assert city.summary.raised_base == 2  # extruded from the ground: vistrack's buildings stand on it
+    assert got[f"w{untagged_top}"] == 28.0
+    assert f"w{inverted}" not in got and f"w{levels_below}" not in got  # tagged tops are from the ground
+    assert city.summary.skipped == {"top_not_above_base": 2}
+    assert city.summary.raised_base == 3
+    bases = dict(zip(city.osm_ids, city.environment.min_heights))
+    assert bases == {f"w{raised}": 5.0, f"w{level_base}": 6.0, f"w{ground}": 0.0, f"w{untagged_top}": 18.0,
+                     f"w{zero}": 0.0}
+    assert city.summary.bad_tags == {}
+
+
+def test_a_raised_part_leaves_the_space_under_it_open(tmp_path: Path) -> None:
+    osm = OsmWriter()
+    podium = osm.box(LAT, LON, 2e-4, building__part="yes", height="25")  # a quarter under the bridge
+    bridge = osm.box(LAT + 1e-4, LON + 1e-4, 2e-4, building__part="yes", height="30", min_height="18")
+    tower = osm.box(LAT + 1.5e-4, LON + 1.5e-4, 5e-5, building__part="yes", height="40")  # through both
+    city = read(tmp_path, osm)
+    env = city.environment
+    # the bridge loses the tower's square; the podium loses the tower's square and the bridge's
+    # quarter, where it keeps a piece from the ground to the bridge's base; nothing is dropped
+    assert sorted(set(city.osm_ids)) == sorted([f"w{podium}", f"w{bridge}", f"w{tower}"])
+    assert city.summary.skipped == {} and city.summary.clipped == 2
+    assert sorted(zip(city.osm_ids, env.min_heights, env.heights)) == sorted(
+        [(f"w{podium}", 0.0, 25.0), (f"w{podium}", 0.0, 18.0), (f"w{bridge}", 18.0, 30.0), (f"w{tower}", 0.0, 40.0)])
+    scene = vt.VisibilityScene(env)
+    x0, y0, x1, y1 = shapely.Polygon(env.footprints[city.osm_ids.index(f"w{bridge}")].outer).bounds
+    north = y1 - 0.2 * (y1 - y0)  # the bridge's half over open ground
+    starts = np.array([[x0 - 20, north, 14.0], [x0 - 20, north, 24.0]])
+    ends = np.array([[x1 + 20, north, 14.0], [x1 + 20, north, 24.0]])
+    assert scene.line_of_sight(starts, ends).tolist() == [True, False]  # under the bridge, through it
+    under, over_podium = (x0 + 1.0, north), (x0 + 1.0, y0 + 1.0)
+    assert scene.surface_height(under) == pytest.approx(30.0) == scene.surface_height(over_podium)
+    assert not scene.inside_obstacle(np.array([*under, 10.0]))
+    assert scene.inside_obstacle(np.array([*over_podium, 10.0]))  # the podium's piece under the bridge
+    assert scene.inside_obstacle(np.array([*over_podium, 21.0]))
+    # the union of the three solids is kept: with the tower's area T, podium and bridge 16 T each,
+    # 16 T x 25 m + 16 T x 12 m - 4 T x 7 m (both, 18 to 25 m) + T x 40 m - T x 30 m (in both)
+    volume = sum(f.area * (h - b) for f, h, b in zip(env.footprints, env.heights, env.min_heights))
+    tower_area = env.footprints[city.osm_ids.index(f"w{tower}")].area
+    assert volume == pytest.approx(574 * tower_area, rel=2e-3)
 
 
 def test_multipolygon_keeps_its_hole(tmp_path: Path) -> None:
@@ -195,42 +234,53 @@ def test_geojson_and_osm_agree_within_a_centimetre(tmp_path: Path) -> None:
         ([(0, 0), (30, 0), (30, 20), (0, 20)], [], 25.0),
         ([(50, 0), (90, 0), (90, 10), (60, 10), (60, 40), (50, 40)], [], 12.0),
         ([(0, 60), (60, 60), (60, 100), (0, 100)], [[(20, 70), (40, 70), (40, 90), (20, 90)]], 18.0),
+        ([(70, 60), (90, 60), (90, 100), (70, 100)], [], 22.0),  # a raised part, min_height 8
     ]
-    features = [{"type": "Feature", "properties": {"height": h},
+    bases = [0.0, 0.0, 0.0, 8.0]
+    features = [{"type": "Feature", "properties": {"height": h, **({"min_height": b} if b else {})},
                  "geometry": {"type": "Polygon", "coordinates": [[*outer, outer[0]], *[[*r, r[0]] for r in holes]]}}
-                for outer, holes, h in shapes]
+                for (outer, holes, h), b in zip(shapes, bases)]
     geojson = tmp_path / "city.geojson"
     geojson.write_text(json.dumps({"type": "FeatureCollection", "features": features}))
     osm = OsmWriter()
-    for outer, holes, height in shapes:
+    for (outer, holes, height), base in zip(shapes, bases):
         def way(ring: list[tuple[int, int]], **tags: str) -> int:
             lat, lon = origin.to_latlon(np.array(ring, float)[:, 0], np.array(ring, float)[:, 1])
             return osm.ring(list(zip(lat, lon)), **tags)
         if holes:
             members = [("way", way(outer), "outer")] + [("way", way(h), "inner") for h in holes]
             osm.relation(members, type="multipolygon", building="yes", height=str(height))
+        elif base:
+            way(outer, building__part="yes", height=str(height), min_height=str(base))
         else:
             way(outer, building="yes", height=str(height))
     from_geojson = vt.Environment.from_geojson(str(geojson), origin=origin)
     from_osm = vt.Environment.from_osm(osm.write(tmp_path / "city.osm"), origin=origin)
-    assert from_osm.num_buildings == from_geojson.num_buildings == 3
+    assert from_osm.num_buildings == from_geojson.num_buildings == 4
     assert from_osm.origin == from_geojson.origin
     osm_polygons = [shapely.Polygon(b.outer, b.holes) for b in from_osm.footprints]
-    for a, height in zip(from_geojson.footprints, from_geojson.heights):
+    for a, height, base in zip(from_geojson.footprints, from_geojson.heights, from_geojson.min_heights):
         pa = shapely.Polygon(a.outer, a.holes)
         k = int(np.argmin([pa.centroid.distance(pb.centroid) for pb in osm_polygons]))
         assert shapely.hausdorff_distance(pa, osm_polygons[k]) < 0.01
         assert abs(pa.area - osm_polygons[k].area) < 0.01 * pa.length
         assert len(a.holes) == len(from_osm.footprints[k].holes)
-        assert from_osm.heights[k] == height
+        assert from_osm.heights[k] == height and from_osm.min_heights[k] == base
     # the same obstacles: the surface height (roof, hole or ground) agrees on a 1 m grid, away from walls
     scenes = [vt.VisibilityScene(env) for env in (from_geojson, from_osm)]
     walls = shapely.union_all([shapely.Polygon(f.outer, f.holes).boundary for f in from_geojson.footprints])
     grid = [(x + 0.5, y + 0.5) for x in range(-5, 95) for y in range(-5, 105)]
     grid = [p for p in grid if walls.distance(shapely.Point(p)) > 0.02]
     surfaces = np.array([[scene.surface_height(p) for p in grid] for scene in scenes])
-    assert set(np.unique(surfaces[0])) == {0.0, 12.0, 18.0, 25.0}
+    assert set(np.unique(surfaces[0])) == {0.0, 12.0, 18.0, 22.0, 25.0}
     np.testing.assert_allclose(surfaces[0], surfaces[1], atol=1e-5)  # Embree's float32 rays
+    # and the open space under the raised part: level lines of sight under it (4 m) and through it
+    inside = [p for p in grid if 70 < p[0] < 90 and 60 < p[1] < 100]
+    for height, expected in ((4.0, True), (15.0, False)):
+        starts = np.array([[100.0, 80.0, height]] * len(inside))
+        ends = np.array([[x, y, height] for x, y in inside])
+        seen = [scene.line_of_sight(starts, ends) for scene in scenes]
+        assert (seen[0] == expected).all() and (seen[1] == expected).all()
 
 
 def test_errors_name_the_file(tmp_path: Path) -> None:

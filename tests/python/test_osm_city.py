@@ -12,6 +12,7 @@ import vistrack as vt
 from support.cli import cli, one_line_error
 from support.osm_files import OsmWriter
 from support.paths import REPO, SHARED_DATA
+from support.refusal import refuses
 from vistrack.scenario_blocks import city_block
 
 LAT, LON = 60.17, 24.94
@@ -112,6 +113,18 @@ def test_scenario_poi_route_from_to(tmp_path: Path) -> None:
     with pytest.raises(vt.VistrackError, match=r"poi\.route: no road connects"):
         vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON + 2e-3, LAT]}}},
                               tmp_path).poi.build(env)
+    # the issue's spelling: the speed inside the route
+    inside = vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON, LAT + 1e-3],
+                                                              "speed": 7.5}}}, tmp_path)
+    assert inside.poi.speed == 7.5 and inside.poi.build(env).speed == 7.5
+    assert inside.to_dict()["poi"]["speed"] == 7.5 and "speed" not in inside.to_dict()["poi"]["route"]
+    assert vt.Scenario.from_dict(inside.to_dict(), tmp_path).poi.speed == 7.5
+    refuses(lambda: vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON, LAT + 1e-3],
+                                                                     "speed": 7.5}, "speed": 4.0}}, tmp_path),
+            "poi.route.speed = 7.5", "give the speed once")
+    refuses(lambda: vt.Scenario.from_dict({**data, "poi": {"route": {"from": [LON, LAT], "to": [LON, LAT + 1e-3],
+                                                                     "speed": -1}}}, tmp_path),
+            "poi.route.speed = -1")
 
 
 def test_follow_scenario_drives_a_road_route_on_an_osm_city(tmp_path: Path) -> None:
@@ -122,10 +135,10 @@ vehicle:
   start: [0.0, 0.0]
   legs:
     - {{heading: north, speed: 5.0, duration: 20.0}}
+  route: {{from: [{LON}, {LAT}], to: [{LON}, {LAT + 1e-3}]}}
 georeference: {{lat: {LAT}, lon: {LON}}}
 city:
   osm: streets.osm
-  road: {{from: [{LON}, {LAT}], to: [{LON}, {LAT + 1e-3}]}}
 """)
     scenario = vt.follow.FollowScenario.load(tmp_path / "follow.yaml")
     assert scenario.city_available()
@@ -137,8 +150,20 @@ city:
     assert end[1] == pytest.approx(100.0, abs=1e-6) and abs(end[0]) < 0.5  # 5 m/s north along the west street
     bad = (tmp_path / "follow.yaml").read_text().replace(f"to: [{LON}, {LAT + 1e-3}]", f"to: [{LON + 2e-3}, {LAT}]")
     (tmp_path / "bad.yaml").write_text(bad)
-    with pytest.raises(vt.VistrackError, match=r"city\.road: no road connects"):
+    with pytest.raises(vt.VistrackError, match=r"vehicle\.route: no road connects"):
         vt.follow.FollowScenario.load(tmp_path / "bad.yaml").city_vehicle()
+    text = (tmp_path / "follow.yaml").read_text()
+    route_line = f"  route: {{from: [{LON}, {LAT}], to: [{LON}, {LAT + 1e-3}]}}\n"
+    # the first slice's city.road: {from, to} (never released) is refused, pointing to vehicle.route
+    (tmp_path / "old.yaml").write_text(text.replace(route_line, "") + route_line.replace("route", "road"))
+    refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "old.yaml"), "city.road = ", "vehicle.route")
+    (tmp_path / "no_city.yaml").write_text(text.split("georeference")[0])
+    refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "no_city.yaml"), "vehicle.route = ", "needs a city")
+    track = text.replace("  start: [0.0, 0.0]\n", "  track: track.csv\n").split("  legs:")[0] + route_line
+    (tmp_path / "track.yaml").write_text(track)
+    refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "track.yaml"), "vehicle.route = ", "needs legs")
+    (tmp_path / "two.yaml").write_text(text + "  road: road.csv\n")
+    refuses(lambda: vt.follow.FollowScenario.load(tmp_path / "two.yaml"), "city = ", "one road")
 
 
 def test_helsinki_examples_build_their_routes() -> None:
@@ -147,7 +172,27 @@ def test_helsinki_examples_build_their_routes() -> None:
     scenario = vt.Scenario.load(REPO / "examples" / "helsinki_osm.yaml")
     env = scenario.environment.load(scenario.origin)
     poi = scenario.poi.build(env)
-    assert env.num_buildings > 500 and 800.0 < poi.length < 1100.0
+    # 1,322 m respecting one-way streets (937 m when they were driven both ways)
+    assert env.num_buildings > 500 and 1200.0 < poi.length < 1450.0
     follow = vt.follow.FollowScenario.load(REPO / "examples" / "follow_helsinki_osm.yaml")
     vehicle = follow.city_vehicle(env)
     np.testing.assert_allclose(vehicle.position(0.0), poi.waypoints[0, :2], atol=1e-6)  # the same route start
+
+
+def test_city_command_writes_raised_bases(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    osm = OsmWriter()
+    osm.box(LAT, LON, building__part="yes", height="30", min_height="18")
+    osm.box(LAT, LON + 1e-3, building="yes", height="12")
+    out = tmp_path / "out"
+    status, err = cli(["city", str(osm.write(tmp_path / "raised.osm")), "--out", str(out)], capsys)
+    assert status == 0, err
+    assert json.loads((out / "summary.json").read_text())["raised_base"] == 1
+    collection = json.loads((out / "city.geojson").read_text())
+    assert sorted(f["properties"].get("min_height", 0.0) for f in collection["features"]) == [0.0, 18.0]
+    city = vt.io.read_osm(out.parent / "raised.osm")
+    assert "  1 footprints with a base above the ground (open underneath)" in city.summary.lines()
+    again = vt.Environment.from_geojson(out / "city.geojson", origin=city.georeference)
+    assert sorted(zip(again.min_heights, again.heights)) == [(0.0, 12.0), (18.0, 30.0)]
+    lines = (out / "city.obj").read_text().splitlines()
+    z = sorted({float(line.split()[3]) for line in lines if line.startswith("v ")})
+    assert z == [0.0, 12.0, 18.0, 30.0]  # the raised part's floor at 18 m, nothing of it below

@@ -14,25 +14,34 @@
 
 namespace vistrack {
 
-// An extruded footprint B_i = A_i x [0, h_i] (section III.B).
+// An extruded footprint B_i = A_i x [b_i, h_i]: section III.B's A_i x [0, h_i] with a base b_i
+// (OSM's min_height: a building:part raised over the ground, a bridge, an overhang), so that the
+// space under a raised part stays open for lines of sight.
 struct Building {
   Polygon footprint;  // normalised: outer counter-clockwise, holes clockwise
-  double height = 0.0;
-  int id = 0;         // from properties.id when present, else the feature index
+  double height = 0.0;      // the top, metres above the ground
+  int id = 0;               // from properties.id when present, else the feature index
+  double min_height = 0.0;  // the base, metres above the ground: 0 <= min_height < height
 };
 
-// Graph G = (N, E) of road nodes on the ground plane with bidirectional edges.
+// Graph G = (N, E) of road nodes on the ground plane. An edge is driven both ways unless
+// oneway[e] is set: then only from edges[e].first to edges[e].second (a one-way street).
+// oneway is empty (every edge two-way) or holds one flag per edge.
 struct RoadNetwork {
   std::vector<Vec2> nodes;
   std::vector<std::pair<int, int>> edges;
+  std::vector<bool> oneway{};
+  bool is_oneway(std::size_t edge) const { return edge < oneway.size() && oneway[edge]; }
 };
 
 // Error naming the node or edge for a node outside the coordinate range (|v| <= 1e7 m), an edge
-// index out of range, an edge joining a node to itself or two nodes at one place.
+// index out of range, an edge joining a node to itself or two nodes at one place, or a oneway
+// list whose length is neither 0 nor the number of edges.
 void validate_road_network(const RoadNetwork& roads, const std::string& field = "roads");
 
 // Nodes of a shortest route along road edges (Dijkstra, edge length = Euclidean distance),
-// from `from` to `to` inclusive. Error when a node does not exist or `to` is unreachable.
+// from `from` to `to` inclusive, one-way edges driven only their way. Error when a node does not
+// exist or `to` is unreachable (saying so when only one-way streets prevent the route).
 std::vector<int> shortest_route(const RoadNetwork& roads, int from, int to);
 
 // A closed triangle mesh: vertices (n, 3) and faces (m, 3) indexing them.
@@ -72,16 +81,18 @@ struct GeoJsonOptions {
 class Environment {
  public:
   // 2.5D buildings from a GeoJSON FeatureCollection of Polygon / MultiPolygon features with
-  // properties.height (or building:levels x 3 m). Validates every footprint (simple, at least
+  // properties.height (or building:levels x 3 m) and optional properties.min_height (the base,
+  // default 0, below the top). Validates every footprint (simple, at least
   // 3 points, positive finite height, disjoint interiors). Coordinates are local east-north
   // metres or WGS84 longitude/latitude degrees (told apart by their range; anything else is an
   // Error); degrees need options.project. The environment's origin() is options.origin, or the
   // one a longitude/latitude file was projected about.
   static Environment from_geojson(const std::string& path, const GeoJsonOptions& options = {});
   // Validated buildings plus optional roads (each edge checked against every footprint).
-  // Footprints may overlap by at most 1 m^2 (walls drawn approximately); a footprint lying
-  // inside another building that is at least as tall is accepted (a building part drawn inside
-  // its outline adds nothing to the obstacles).
+  // Footprints may overlap by at most 1 m^2 (walls drawn approximately), unless their heights
+  // [min_height, height] do not overlap (parts stacked one on another); a footprint lying inside
+  // another building whose [min_height, height] contains its own is accepted (a building part
+  // drawn inside its outline adds nothing to the obstacles).
   static Environment from_buildings(std::vector<Building> buildings, RoadNetwork roads = {});
   // Any triangle mesh file (OBJ, PLY, STL, OFF). up = "z", or "y" for Y-up files whose north
   // is -Z: (east, north, up) = (x, -z, y).
@@ -104,6 +115,7 @@ class Environment {
   const std::vector<Building>& buildings() const { return buildings_; }
   std::vector<Polygon> footprints() const;
   std::vector<double> heights() const;
+  std::vector<double> min_heights() const;  // the buildings' bases
   std::size_t num_buildings() const { return buildings_.size(); }
   const RoadNetwork& roads() const { return roads_; }
   // Replaces the road network after checking the nodes (finite), the edges (valid, distinct

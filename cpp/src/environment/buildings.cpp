@@ -1,4 +1,4 @@
-// Validation and extrusion of 2.5D buildings B_i = A_i x [0, h_i] (section III.B).
+// Validation and extrusion of 2.5D buildings B_i = A_i x [b_i, h_i] (section III.B, with a base).
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -70,13 +70,19 @@ void check_overlaps(const std::vector<Building>& buildings, const std::vector<Bu
     for (std::size_t oj = oi + 1; oj < n && boxes[order[oj]].min.x() <= boxes[i].max.x(); ++oj) {
       const std::size_t j = order[oj];
       if (!boxes[i].overlaps(boxes[j])) continue;
-      const double shared = intersection_area(buildings[i].footprint, buildings[j].footprint);
+      const Building& a = buildings[i];
+      const Building& b = buildings[j];
+      // Stacked parts (one's base at or above the other's top) share no volume.
+      if (a.height <= b.min_height || b.height <= a.min_height) continue;
+      const double shared = intersection_area(a.footprint, b.footprint);
       if (shared <= kOverlapTolerance) continue;  // touching walls, drawn approximately
-      // A building part drawn inside its building's outline and not taller adds nothing to
-      // the obstacle set, whose interiors stay disjoint: accepted (Charlotte has one).
+      // A building part drawn inside its building's outline and within its heights adds nothing
+      // to the obstacle set, whose interiors stay disjoint: accepted (Charlotte has one).
       const std::size_t inner = areas[i] <= areas[j] ? i : j;
       const std::size_t outer = inner == i ? j : i;
-      if (shared >= areas[inner] - kOverlapTolerance && buildings[inner].height <= buildings[outer].height) continue;
+      if (shared >= areas[inner] - kOverlapTolerance && buildings[inner].height <= buildings[outer].height &&
+          buildings[inner].min_height >= buildings[outer].min_height)
+        continue;
       const std::size_t first = std::min(i, j), second = std::max(i, j);
       throw Error(sources[first].name + " (id " + std::to_string(buildings[first].id) + ") and " +
                   sources[second].name + " (id " + std::to_string(buildings[second].id) +
@@ -101,7 +107,7 @@ std::vector<BuildingSource> sources_for_buildings(const std::vector<Building>& b
   std::vector<BuildingSource> sources;
   for (std::size_t i = 0; i < buildings.size(); ++i) {
     const std::string name = "buildings[" + std::to_string(i) + "]";
-    BuildingSource source{name, name + ".height", name + ".footprint.outer", {}};
+    BuildingSource source{name, name + ".height", name + ".footprint.outer", {}, name + ".min_height"};
     for (std::size_t h = 0; h < buildings[i].footprint.holes.size(); ++h)
       source.hole_fields.push_back(name + ".footprint.holes[" + std::to_string(h) + "]");
     sources.push_back(source);
@@ -114,6 +120,11 @@ void validate_buildings(std::vector<Building>& buildings, const std::vector<Buil
     Building& building = buildings[b];
     const BuildingSource& source = sources[b];
     require_length(building.height, source.height_field);
+    if (!(building.min_height >= 0.0 && std::isfinite(building.min_height)))
+      fail_field(source.min_height_field, building.min_height, "the base must be a finite height >= 0 m");
+    if (!(building.min_height < building.height))
+      fail_field(source.min_height_field, building.min_height,
+                 "the base must lie below the top (" + source.height_field + " = " + to_text(building.height) + ")");
     Polygon& footprint = building.footprint;
     footprint.outer = clean_ring(footprint.outer);
     validate_ring(footprint.outer, source.outer_field);
@@ -157,7 +168,7 @@ TriangleMesh extrude(const std::vector<Building>& buildings) {
       auto [it, inserted] = index_of.emplace(std::make_pair(p.x(), p.y()), 0);
       if (inserted) {
         it->second = static_cast<int>(vertices.size());
-        vertices.emplace_back(p.x(), p.y(), 0.0);
+        vertices.emplace_back(p.x(), p.y(), building.min_height);
       }
       ring_index.push_back(it->second);
     };

@@ -21,6 +21,7 @@ struct BuildingSource {
   std::string height_field;  // "features[12].properties.height"
   std::string outer_field;   // "features[12].geometry.coordinates[0]"
   std::vector<std::string> hole_fields;
+  std::string min_height_field;  // "features[12].properties.min_height"
 };
 
 // Drops a closing repeat and consecutive repeated points (both common in files).

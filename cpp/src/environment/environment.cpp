@@ -79,7 +79,7 @@ Environment Environment::from_validated_buildings(std::vector<Building> building
   env.buildings_ = std::move(buildings);
   env.mesh_ = detail::extrude(env.buildings_);
   env.bounds_ = bounds_of(env.mesh_.vertices);
-  env.ground_level_ = 0.0;  // buildings stand on the ground plane z = 0
+  env.ground_level_ = 0.0;  // the ground plane z = 0, the bases measured from it
   return env;
 }
 
@@ -87,6 +87,13 @@ std::vector<double> Environment::heights() const {
   std::vector<double> result;
   result.reserve(buildings_.size());
   for (const Building& b : buildings_) result.push_back(b.height);
+  return result;
+}
+
+std::vector<double> Environment::min_heights() const {
+  std::vector<double> result;
+  result.reserve(buildings_.size());
+  for (const Building& b : buildings_) result.push_back(b.min_height);
   return result;
 }
 
@@ -105,6 +112,8 @@ std::uint64_t Environment::fingerprint() const {
   hash_bytes(hash, mesh_.faces.data(), sizeof(std::int32_t) * mesh_.faces.size());
   for (const Vec2& node : roads_.nodes) hash_bytes(hash, node.data(), 2 * sizeof(double));
   for (const auto& edge : roads_.edges) hash_bytes(hash, &edge, sizeof(edge));
+  for (std::size_t e = 0; e < roads_.oneway.size(); ++e)
+    if (roads_.oneway[e]) hash_bytes(hash, &e, sizeof(e));  // two-way networks hash as before
   return hash;
 }
 

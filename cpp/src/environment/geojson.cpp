@@ -221,6 +221,9 @@ void read_features(const json& root, std::vector<Building>& buildings, std::vect
     } else {
       detail::fail_field(height_field, "missing", "each building needs properties.height or building:levels");
     }
+    // The base (OSM's min_height: the height above the ground where a raised part starts).
+    const std::string min_height_field = name + ".properties.min_height";
+    const double min_height = number_property(properties, "min_height", min_height_field).value_or(0.0);
     if (!feature.contains("geometry") || !feature["geometry"].is_object())
       detail::fail_field(name + ".geometry", "missing", "each feature needs a Polygon or MultiPolygon geometry");
     const json& geometry = feature["geometry"];
@@ -230,8 +233,8 @@ void read_features(const json& root, std::vector<Building>& buildings, std::vect
       detail::fail_field(coordinates_field, "missing", "the geometry has no coordinates");
     const json& coordinates = geometry["coordinates"];
     if (type == "Polygon") {
-      detail::BuildingSource source{name, height_field, {}, {}};
-      Building building{polygon_from_json(coordinates, coordinates_field, source), height, id};
+      detail::BuildingSource source{name, height_field, {}, {}, min_height_field};
+      Building building{polygon_from_json(coordinates, coordinates_field, source), height, id, min_height};
       buildings.push_back(std::move(building));
       sources.push_back(std::move(source));
     } else if (type == "MultiPolygon") {
@@ -239,9 +242,10 @@ void read_features(const json& root, std::vector<Building>& buildings, std::vect
         detail::fail_field(coordinates_field, text_of(coordinates), "a MultiPolygon needs at least one polygon");
       // Each part becomes its own building with the feature's id and height.
       for (std::size_t p = 0; p < coordinates.size(); ++p) {
-        detail::BuildingSource source{name + ".geometry.coordinates[" + std::to_string(p) + "]", height_field, {}, {}};
+        detail::BuildingSource source{name + ".geometry.coordinates[" + std::to_string(p) + "]", height_field, {}, {},
+                                      min_height_field};
         Building building{polygon_from_json(coordinates[p], coordinates_field + "[" + std::to_string(p) + "]", source),
-                          height, id};
+                          height, id, min_height};
         buildings.push_back(std::move(building));
         sources.push_back(std::move(source));
       }

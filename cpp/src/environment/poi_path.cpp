@@ -88,12 +88,17 @@ PoiPath PoiPath::from_nodes(const RoadNetwork& roads, const std::vector<int>& no
       detail::fail_field("nodes[" + std::to_string(i) + "]", node, "no such road node");
     if (i > 0) {
       const int previous = nodes[i - 1];
-      const bool joined = std::any_of(roads.edges.begin(), roads.edges.end(), [&](const auto& e) {
-        return (e.first == previous && e.second == node) || (e.first == node && e.second == previous);
-      });
+      bool joined = false, against = false;
+      for (std::size_t e = 0; e < roads.edges.size(); ++e) {
+        const auto& edge = roads.edges[e];
+        if (edge.first == previous && edge.second == node) joined = true;
+        if (edge.first == node && edge.second == previous) (roads.is_oneway(e) ? against : joined) = true;
+      }
       if (!joined)
         detail::fail_field("nodes[" + std::to_string(i) + "]", node,
-                           "no road edge joins it to the previous node " + std::to_string(previous));
+                           against ? "the only road edge from the previous node " + std::to_string(previous) +
+                                         " is one-way the other way"
+                                   : "no road edge joins it to the previous node " + std::to_string(previous));
     }
     waypoints.row(static_cast<Eigen::Index>(i)) = roads.nodes[static_cast<std::size_t>(node)].transpose();
   }

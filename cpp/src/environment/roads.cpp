@@ -57,6 +57,9 @@ bool crosses_interior(const Polygon& footprint, const Vec2& a, const Vec2& b) {
 void validate_road_network(const RoadNetwork& roads, const std::string& field_prefix) {
   const std::string prefix = field_prefix.empty() ? "" : field_prefix + ".";
   const auto node_count = static_cast<int>(roads.nodes.size());
+  if (!roads.oneway.empty() && roads.oneway.size() != roads.edges.size())
+    detail::fail_field(prefix + "oneway", std::to_string(roads.oneway.size()) + " flags",
+                       "needs one flag per edge (" + std::to_string(roads.edges.size()) + ") or none");
   for (std::size_t i = 0; i < roads.nodes.size(); ++i)
     for (int k = 0; k < 2; ++k)
       require_coordinate(roads.nodes[i][k], prefix + "nodes[" + std::to_string(i) + "][" + std::to_string(k) + "]");
@@ -98,10 +101,12 @@ void Environment::set_roads(RoadNetwork roads) {
   roads_ = std::move(roads);
 }
 
-std::vector<int> shortest_route(const RoadNetwork& roads, int from, int to) {
+namespace {
+
+// Dijkstra's predecessors from `from` (stopping at `to`), one-way edges driven their way only
+// unless `ignore_oneway`; distance[to] stays infinite when `to` is unreachable.
+std::vector<int> route_tree(const RoadNetwork& roads, int from, int to, bool ignore_oneway, std::vector<double>& distance) {
   const auto n = static_cast<int>(roads.nodes.size());
-  if (from < 0 || from >= n) detail::fail_field("from", from, "no such road node");
-  if (to < 0 || to >= n) detail::fail_field("to", to, "no such road node");
   std::vector<std::vector<std::pair<int, double>>> adjacent(static_cast<std::size_t>(n));
   for (std::size_t e = 0; e < roads.edges.size(); ++e) {
     const auto [a, b] = roads.edges[e];
@@ -110,9 +115,9 @@ std::vector<int> shortest_route(const RoadNetwork& roads, int from, int to) {
                          "node index out of range");
     const double length = (roads.nodes[static_cast<std::size_t>(a)] - roads.nodes[static_cast<std::size_t>(b)]).norm();
     adjacent[static_cast<std::size_t>(a)].emplace_back(b, length);
-    adjacent[static_cast<std::size_t>(b)].emplace_back(a, length);
+    if (ignore_oneway || !roads.is_oneway(e)) adjacent[static_cast<std::size_t>(b)].emplace_back(a, length);
   }
-  std::vector<double> distance(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
+  distance.assign(static_cast<std::size_t>(n), std::numeric_limits<double>::infinity());
   std::vector<int> previous(static_cast<std::size_t>(n), -1);
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
@@ -134,8 +139,25 @@ std::vector<int> shortest_route(const RoadNetwork& roads, int from, int to) {
       }
     }
   }
-  if (!std::isfinite(distance[static_cast<std::size_t>(to)]))
+  return previous;
+}
+
+}  // namespace
+
+std::vector<int> shortest_route(const RoadNetwork& roads, int from, int to) {
+  const auto n = static_cast<int>(roads.nodes.size());
+  if (from < 0 || from >= n) detail::fail_field("from", from, "no such road node");
+  if (to < 0 || to >= n) detail::fail_field("to", to, "no such road node");
+  std::vector<double> distance;
+  const std::vector<int> previous = route_tree(roads, from, to, false, distance);
+  if (!std::isfinite(distance[static_cast<std::size_t>(to)])) {
+    std::vector<double> undirected;
+    route_tree(roads, from, to, true, undirected);
+    if (std::isfinite(undirected[static_cast<std::size_t>(to)]))
+      detail::fail_field("to", to, "no road route from node " + std::to_string(from) +
+                                       " that respects one-way streets (there is one driving against them)");
     detail::fail_field("to", to, "no road route from node " + std::to_string(from));
+  }
   std::vector<int> route{to};
   while (route.back() != from) route.push_back(previous[static_cast<std::size_t>(route.back())]);
   std::reverse(route.begin(), route.end());

@@ -304,7 +304,8 @@ bool VisibilityScene::inside_obstacle(const Vec3& p) const {
   const detail::EmbreeScene& s = *impl_;
   if (!s.buildings.empty()) {
     for (const Building& building : s.buildings)
-      if (p.z() < s.ground_level + building.height && contains(building.footprint, p.head<2>()) &&
+      if (p.z() < s.ground_level + building.height && p.z() > s.ground_level + building.min_height &&
+          contains(building.footprint, p.head<2>()) &&
           distance_to_boundary(building.footprint, p.head<2>()) > 1e-9)
         return true;
     return false;

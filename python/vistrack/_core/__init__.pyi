@@ -356,11 +356,11 @@ class SimulationOptions:
         ...
 class RoadNetwork:
     """
-    Road graph G = (N, E): nodes on the ground plane, bidirectional edges.
+    Road graph G = (N, E): nodes on the ground plane; edges driven both ways unless one-way.
     """
-    def __init__(self, nodes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], edges: typing.Annotated[numpy.typing.ArrayLike, numpy.int64, "[m, 2]"]) -> None:
+    def __init__(self, nodes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], edges: typing.Annotated[numpy.typing.ArrayLike, numpy.int64, "[m, 2]"], oneway: collections.abc.Sequence[bool] | None = None) -> None:
         """
-        nodes: (n, 2) float array of positions in metres; edges: (m, 2) int array of node pairs.
+        nodes: (n, 2) float array of positions in metres; edges: (m, 2) int array of node pairs; oneway: None (every edge two-way) or one bool per edge, True when the edge is driven only from its first node to its second.
         """
     def __repr__(self) -> str:
         ...
@@ -370,7 +370,7 @@ class RoadNetwork:
         """
     def shortest_route(self, start: typing.SupportsInt | typing.SupportsIndex, goal: typing.SupportsInt | typing.SupportsIndex) -> list[int]:
         """
-        Node indices of a shortest route along the edges from start to goal (Dijkstra, Euclidean edge lengths), both included. VistrackError when goal is unreachable.
+        Node indices of a shortest route along the edges from start to goal (Dijkstra, Euclidean edge lengths, one-way edges only their way), both included. VistrackError when goal is unreachable, saying so when only one-way streets stand in the way.
         """
     @property
     def edges(self) -> typing.Annotated[numpy.typing.NDArray[numpy.int64], "[m, 2]"]:
@@ -381,6 +381,11 @@ class RoadNetwork:
     def nodes(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
         """
         Node positions, numpy array (n, 2).
+        """
+    @property
+    def oneway(self) -> typing.Annotated[numpy.typing.NDArray[numpy.bool], "[m, 1]"]:
+        """
+        Per edge, True when it is driven only from edges[e][0] to edges[e][1]; bool array (m,).
         """
 class Environment:
     """
@@ -394,12 +399,12 @@ class Environment:
     @staticmethod
     def from_buildings(buildings: collections.abc.Iterable, roads: RoadNetwork | None = None) -> Environment:
         """
-        Environment from a list of (Polygon, height) or (Polygon, height, id) (an (n, 2) array may stand for a Polygon without holes), validated as in from_geojson; optional RoadNetwork checked against every footprint.
+        Environment from a list of (Polygon, height), (Polygon, height, id) or (Polygon, height, id, min_height) (the base: a raised part from min_height to height; an (n, 2) array may stand for a Polygon without holes), validated as in from_geojson; optional RoadNetwork checked against every footprint.
         """
     @staticmethod
     def from_geojson(path: typing.Any, origin: typing.Any = None, project: typing.Callable[..., typing.Any] | None = vistrack.georeference.project_lon_lat) -> Environment:
         """
-        2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: height from properties.height, else building:levels x 3 m; id from properties.id, else the feature index. Coordinates in local east-north metres, or WGS84 longitude/latitude (the GeoJSON default, as OpenStreetMap exports give; told apart by range, anything else is a VistrackError) projected to local metres by project(lon_lat, (lat, lon, alt)) (the package passes vistrack.georeference.project_lon_lat: pyproj, ellipsoidal tangent plane) about origin (lat, lon[, alt]) or a Georeference, else about the centre of the data's bounding box (rounded to 1e-7 degree); env.origin reports it. Footprints are validated (simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up to 1 m^2 are taken as touching walls, and a footprint inside a building at least as tall as a building part) and normalised counter-clockwise.
+        2.5D buildings from a GeoJSON FeatureCollection of Polygon/MultiPolygon features: height from properties.height, else building:levels x 3 m; the base from properties.min_height (default 0, below the top); id from properties.id, else the feature index. Coordinates in local east-north metres, or WGS84 longitude/latitude (the GeoJSON default, as OpenStreetMap exports give; told apart by range, anything else is a VistrackError) projected to local metres by project(lon_lat, (lat, lon, alt)) (the package passes vistrack.georeference.project_lon_lat: pyproj, ellipsoidal tangent plane) about origin (lat, lon[, alt]) or a Georeference, else about the centre of the data's bounding box (rounded to 1e-7 degree); env.origin reports it. Footprints are validated (simple, >= 3 points, holes inside, positive height, disjoint interiors: overlaps up to 1 m^2 are taken as touching walls, and a footprint inside a building at least as tall as a building part) and normalised counter-clockwise.
         """
     @staticmethod
     def from_mesh(path: typing.Any, up: str = 'z') -> Environment:
@@ -430,9 +435,9 @@ class Environment:
         Replace the road network; VistrackError naming the edge and the building when an edge crosses a footprint interior (running along a wall is allowed).
         """
     @typing.overload
-    def set_roads(self, nodes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], edges: typing.Annotated[numpy.typing.ArrayLike, numpy.int64, "[m, 2]"]) -> None:
+    def set_roads(self, nodes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], edges: typing.Annotated[numpy.typing.ArrayLike, numpy.int64, "[m, 2]"], oneway: collections.abc.Sequence[bool] | None = None) -> None:
         """
-        Replace the road network from arrays nodes (n, 2) and edges (m, 2).
+        Replace the road network from arrays nodes (n, 2), edges (m, 2) and optional oneway flags (m,).
         """
     @property
     def bounds(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 3]"]:
@@ -467,12 +472,17 @@ class Environment:
     @property
     def heights(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
         """
-        Building heights in metres, numpy array (num_buildings,).
+        Building heights (their tops) in metres above the ground, numpy array (num_buildings,).
         """
     @property
     def max_height(self) -> float:
         """
         Tallest obstacle point above the ground level, in metres.
+        """
+    @property
+    def min_heights(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 1]"]:
+        """
+        Building bases (min_height) in metres above the ground, numpy array (num_buildings,): 0 for a building standing on the ground, above 0 for a raised part with open space under it.
         """
     @property
     def num_buildings(self) -> int:

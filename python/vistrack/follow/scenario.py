@@ -12,6 +12,8 @@ counter-clockwise from east unless a compass word is given)::
       start: [0, 0]
       legs: [{heading: south, speed: 10, duration: 300, end_speed: 10}]   # or heading_deg: -90
       track: file.csv             # t,x,y per line (header allowed)
+      route: {from: [lon, lat], to: [lon, lat], crs: lonlat}   # with legs: the city run drives their
+                                  # speeds along this road route of the city (vistrack.routes)
     follow: {period, turn_margin, threshold, hysteresis, loiter_pattern, loiter_radius,
              loiter_direction, compensation, update_period}
     offset: {distance: 0, angle_deg: 0, reference: heading, changes: [{t, distance, angle_deg}]}
@@ -21,8 +23,8 @@ counter-clockwise from east unless a compass word is given)::
     flight: {dt: 0.02, integration: discrete, max_time: 0, guidance: l1, l1_period: 8, l1_damping: 0.75}
                                   # guidance law5: each 1 s leg by the paper's law (5)
     baseline: {radius: 0, beta: 0.025, k_psi: 20, direction: ccw}   # radius 0: Lemma 6; false: none
-    city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude;
-                                  # road: {from: [lon, lat], to: [lon, lat]}: a road route of the city
+    city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude
+                                  # (a CSV polyline; or vehicle.route on the city's road network)
 
 uav, wind, camera, city and georeference are the blocks every scenario shares
 (:mod:`vistrack.scenario_blocks`).
@@ -42,7 +44,7 @@ from .._core import limits as _limits
 from ..flight import Wind
 from ..georeference import Georeference
 from ..io.documents import read_yaml_mapping
-from ..routes import route_nodes
+from ..routes import route_ends, route_nodes
 from ..scenario_blocks import (
     City,
     Rename,
@@ -110,6 +112,7 @@ class FollowScenario:
     baseline_radius: Optional[float] = None  # None: Lemma 6 (vt.follow.baseline_radius)
     baseline_control: Optional[Control] = field(default_factory=Control)  # None: no baseline
     city: Optional[City] = None
+    route: Optional[dict[str, Any]] = None  # vehicle.route {from, to, crs}: the city run's road route
     description: str = ""
     path: Optional[Path] = None
     origin: Optional[Georeference] = None  # where local (0, 0) lies on the Earth (mission export)
@@ -124,7 +127,7 @@ class FollowScenario:
         data = upgrade(_old_city_map(data), RENAMES)
         reject_unknown(data, TOP_KEYS)
         uav = uav_block(data, default_uav()).uav
-        vehicle, legs = _vehicle(data, base)
+        vehicle, legs, route = _vehicle(data, base)
         parameters = _parameters(data)
         schedule = _offset_schedule(data)
         wind = wind_block(data)
@@ -152,28 +155,31 @@ class FollowScenario:
         radius, control = _baseline(data)
         return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
-                   baseline_control=control, city=_city(data, base), description=str(data.get("description", "")),
+                   baseline_control=control, city=_city(data, base, route), route=route,
+                   description=str(data.get("description", "")),
                    path=path, origin=georeference_block(data))
 
     def city_available(self) -> bool:
         """Whether the scenario has a city section whose map and road files exist (the shared
         data is optional: without it the city runs are skipped)."""
         city = self.city
-        if city is None or city.path is None or not city.path.is_file() or city.road is None:
+        if city is None or city.path is None or not city.path.is_file():
             return False
-        return isinstance(city.road, dict) or city.road.is_file()
+        return self.route is not None or (isinstance(city.road, Path) and city.road.is_file())
 
     def city_vehicle(self, env: Optional[Environment] = None) -> GroundVehicle:
-        """The scenario's speed profile driven along the city road (its legs' headings ignored): a
-        CSV polyline, or the road route ``{from, to, crs}`` of the city's road network (``env``, the
-        loaded city; loaded here when not given)."""
-        if self.city is None or self.city.road is None or not self.legs:
-            raise fail("city", None, "needs a city section with a road and a vehicle given by legs")
-        if isinstance(self.city.road, dict):
+        """The scenario's speed profile driven along the city road (its legs' headings ignored): the
+        road route ``vehicle.route: {from, to, crs}`` of the city's road network (``env``, the
+        loaded city; loaded here when not given), or the CSV polyline ``city.road``."""
+        if self.city is None or (self.city.road is None and self.route is None) or not self.legs:
+            raise fail("city", None, "needs a city section, a road (vehicle.route or city.road) and a vehicle "
+                                     "given by legs")
+        if self.route is not None:
             env = env if env is not None else self.city.load(self.origin)
-            ends = self.city.road
-            nodes = route_nodes(env, ends["from"], ends["to"], ends["crs"], key="city.road")
+            ends = self.route
+            nodes = route_nodes(env, ends["from"], ends["to"], ends["crs"], key="vehicle.route")
             return GroundVehicle.along_path(np.asarray(env.roads.nodes)[nodes], self.legs)
+        assert isinstance(self.city.road, Path)
         road = read_road_path(self.city.road, "city.road")
         return GroundVehicle.along_path(road, self.legs)
 
@@ -304,19 +310,27 @@ def _legs(items: Any) -> list[VehicleLeg]:
     return legs
 
 
-def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[VehicleLeg]]:
-    v = section(data, "vehicle", {"start", "legs", "track"})
+def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[VehicleLeg], Optional[dict]]:
+    v = section(data, "vehicle", {"start", "legs", "track", "route"})
     if ("legs" in v) == ("track" in v):
         raise fail("vehicle", dict(v), "give either legs (with an optional start) or track (a t,x,y CSV file)")
+    route = None
+    if "route" in v:
+        if "track" in v:
+            raise fail("vehicle.route", v["route"], "needs legs (their speeds are driven along the route), "
+                                                    "not a track")
+        if not isinstance(v["route"], Mapping):
+            raise fail("vehicle.route", v["route"], "must be {from: [lon, lat], to: [lon, lat], crs: lonlat | local}")
+        route = route_ends(v["route"], "vehicle.route")
     if "track" in v:
         t, xy = read_vehicle_track(resolve_path(base, v["track"], "vehicle.track"), "vehicle.track")
-        return GroundVehicle(t, xy), []
+        return GroundVehicle(t, xy), [], None
     start = v.get("start", [0.0, 0.0])
     if not isinstance(start, (list, tuple)) or len(start) != 2:
         raise fail("vehicle.start", start, "must be [x, y]")
     legs = _legs(v["legs"])
     xy = np.array([number(f"vehicle.start[{i}]", s) for i, s in enumerate(start)])
-    return GroundVehicle.from_legs(legs, xy), legs
+    return GroundVehicle.from_legs(legs, xy), legs, route
 
 
 def _parameters(data: Mapping[str, Any]) -> FollowParameters:
@@ -372,10 +386,16 @@ def _baseline(data: Mapping[str, Any]) -> tuple[Optional[float], Optional[Contro
     return (radius or None), control
 
 
-def _city(data: Mapping[str, Any], base: Path) -> Optional[City]:
+def _city(data: Mapping[str, Any], base: Path, route: Optional[dict]) -> Optional[City]:
     city = city_block(data, base, road=True)
-    if city is not None and (city.kind == "demo" or city.road is None):
-        raise fail("city", data["city"], "needs a map (mesh, geojson or osm: FILE) and road: a CSV path or {from, to}")
+    if city is None:
+        if route is not None:
+            raise fail("vehicle.route", data["vehicle"]["route"], "needs a city (city: {osm: FILE} or another map "
+                                                                  "with roads)")
+        return None
+    if city.kind == "demo" or (city.road is None) == (route is None):
+        raise fail("city", data["city"], "needs a map (mesh, geojson or osm: FILE) and one road: road: a CSV path, "
+                                         "or vehicle.route: {from, to}")
     return city
 
 

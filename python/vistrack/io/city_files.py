@@ -1,5 +1,6 @@
 """A city written for other tools: footprints as RFC 7946 GeoJSON (longitude/latitude, outer rings
-counter-clockwise, holes clockwise, ``properties.height`` in metres) and the extruded buildings as
+counter-clockwise, holes clockwise, ``properties.height`` in metres, ``properties.min_height`` for a
+raised base) and the extruded buildings as
 a Wavefront OBJ mesh in local east-north-up metres."""
 
 from __future__ import annotations
@@ -26,8 +27,11 @@ def city_geojson(env: Environment, georeference: Georeference,
     """The buildings of ``env`` as a FeatureCollection of Polygons in longitude/latitude about
     ``georeference``; ``names[i]`` (e.g. the OSM object) goes into properties.source."""
     features = []
+    bases = env.min_heights
     for i, (footprint, height, ident) in enumerate(zip(env.footprints, env.heights, env.building_ids)):
         properties: dict[str, Any] = {"height": float(height), "id": int(ident)}
+        if bases[i] > 0.0:
+            properties["min_height"] = float(bases[i])  # the base of a raised part
         if names is not None:
             properties["source"] = names[i]
         rings = [_ring(footprint.outer, georeference)] + [_ring(hole, georeference) for hole in footprint.holes]

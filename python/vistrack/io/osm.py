@@ -7,10 +7,9 @@ georeference and an :class:`OsmSummary` of what was imported and what was left o
 ``vt.Environment.from_osm(path, ...)`` is the short form returning the environment alone.
 
 The tag rules are in :mod:`vistrack.io.osm_tags`, the geometry rules in
-:mod:`vistrack.io.osm_build`, the road rules in :mod:`vistrack.io.osm_roads`. vistrack's 2.5D
-buildings stand on the ground: a part's base (``min_height``, ``building:min_level``) is read and
-reported, and the part is extruded from the ground to its top (more occlusion than the real
-overhang, never less).
+:mod:`vistrack.io.osm_build`, the road rules in :mod:`vistrack.io.osm_roads`. A part's base
+(``min_height``, ``building:min_level``) is its solid's bottom: a raised part is a solid from its
+base to its top, the space under it open for lines of sight.
 """
 
 from __future__ import annotations
@@ -46,8 +45,8 @@ class OsmSummary:
     """What an OSM import kept and left out. ``objects``: building ways and relations by outcome
     ("imported" or the reason all of it was left out); ``footprints``: ``env.num_buildings``;
     ``height_sources``: footprints by where the top came from; ``bad_tags``: tag values that did
-    not parse, by key (ignored); ``raised_base``: footprints with a base above the ground,
-    extruded from the ground; ``clipped``: footprints cut where a taller one overlaps them."""
+    not parse, by key (ignored); ``raised_base``: footprints with a base above the ground
+    (solids from their base up, open underneath); ``clipped``: footprints cut where a taller one overlaps them."""
 
     file: str
     origin: tuple[float, float, float]
@@ -90,7 +89,7 @@ class OsmSummary:
         if self.bad_tags:
             out.append("  bad tag values ignored: " + ", ".join(f"{k} {v}" for k, v in sorted(self.bad_tags.items())))
         if self.raised_base:
-            out.append(f"  {self.raised_base} footprints with a base above the ground, extruded from the ground")
+            out.append(f"  {self.raised_base} footprints with a base above the ground (open underneath)")
         if self.tallest:
             out.append(f"  tallest: {self.tallest['height']:.1f} m ({self.tallest['osm_id']})")
         if self.bbox_lon_lat:
@@ -101,7 +100,7 @@ class OsmSummary:
                    f"{r.edges} edges, {r.length_m / 1000:.2f} km; "
                    f"skipped " + (", ".join(f"{k} {v}" for k, v in sorted(r.skipped.items())) or "none")
                    + f"; {r.edges_crossing_buildings} edges crossing a building left out; "
-                   f"{r.oneway_ways} one-way ways driven both ways")
+                   f"{r.oneway_ways} one-way ways ({r.oneway_edges} one-way edges)")
         out.append(f"  read in {self.seconds:.2f} s")
         return out
 
@@ -134,7 +133,7 @@ def _environment(prints: list[Footprint], skipped: list[tuple[str, str]]) -> tup
     prints = list(prints)
     for _ in range(1000):
         items = [(Polygon(np.asarray(f.polygon.exterior.coords), [np.asarray(r.coords) for r in f.polygon.interiors]),
-                  f.top, i) for i, f in enumerate(prints)]
+                  f.top, i, f.base) for i, f in enumerate(prints)]
         try:
             return Environment.from_buildings(items), prints
         except VistrackError as error:

@@ -12,13 +12,15 @@ counts once, under the first reason that removed all of it):
 - ``top_not_above_base`` (a height at or below ``min_height``);
 - ``replaced_by_parts`` (an outline with ``building:part`` footprints inside it: the parts stand
   for it, the OSM wiki's Simple 3D Buildings rule);
-- ``covered`` (lying under overlapping buildings at least as tall: it adds nothing to the 2.5D
-  city). Where a footprint only partly overlaps a taller one, it keeps the part outside (the
-  2.5D height field: the taller wins), counted in ``clipped``.
+- ``covered`` (lying under overlapping buildings at least as tall and not raised above its base:
+  it adds nothing to the city). Where a footprint only partly overlaps a taller one, it keeps the
+  part outside, counted in ``clipped``; under a taller footprint with a raised base it keeps the
+  piece between its own base and that base (the volumes' union is unchanged).
 """
 
 from __future__ import annotations
 
+import heapq
 from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -134,32 +136,50 @@ def _polygons(geometry: shapely.Geometry) -> list[shapely.Polygon]:
 
 
 def _resolve_overlaps(prints: list[Footprint], skipped: list[tuple[str, str]]) -> tuple[list[Footprint], int]:
-    """Interiors made disjoint: tallest first, each footprint loses what taller (or equally tall,
-    earlier) footprints cover when that is more than :data:`OVERLAP_TOLERANCE`. Returns the
-    footprints and how many were clipped."""
-    order = sorted(range(len(prints)), key=lambda i: -prints[i].top)
-    rank = np.empty(len(prints), dtype=int)
-    rank[order] = np.arange(len(prints))
-    polygons = [p.polygon for p in prints]
-    tree = shapely.STRtree(polygons)
+    """Volumes made disjoint, each footprint a solid from its base to its top. Tallest first, a
+    footprint loses what the footprints already placed (taller, or equally tall and earlier) cover
+    when that is more than :data:`OVERLAP_TOLERANCE`, except those standing wholly above it (base
+    at or above its top: stacked parts, which may share a footprint). Under a placed footprint
+    whose base is above its own, it keeps a piece from its base up to that base (the open space
+    under a raised part that it fills), placed in turn like any footprint. The union of the
+    solids is unchanged. Returns the footprints and how many were clipped."""
+    tree = shapely.STRtree([p.polygon for p in prints]) if prints else None
+    queue = [(-p.top, i, i, p) for i, p in enumerate(prints)]  # originals first on equal tops
+    heapq.heapify(queue)
+    placed: list[list[Footprint]] = [[] for _ in prints]  # what each original put in the city so far
     result: list[Footprint] = []
     clipped = 0
-    for i in order:
-        footprint = prints[i]
-        above = [j for j in tree.query(footprint.polygon, predicate="intersects") if rank[j] < rank[i]]
-        if above:
-            cover = shapely.union_all([polygons[j] for j in above])
-            if shapely.intersection(footprint.polygon, cover).area > OVERLAP_TOLERANCE:
-                pieces = [p for p in _polygons(shapely.difference(footprint.polygon, cover))
-                          if p.area > OVERLAP_TOLERANCE and shapely.is_valid(p)]
-                if not pieces:
-                    skipped.append((footprint.osm_id, "covered"))
-                    continue
-                clipped += 1
-                result.extend(Footprint(shapely.normalize(p), footprint.top, footprint.base, footprint.source,
-                                        footprint.osm_id, footprint.is_part) for p in pieces)
-                continue
-        result.append(footprint)
+    counter = len(prints)
+
+    def place(origin: int, footprints: list[Footprint]) -> None:
+        placed[origin].extend(footprints)
+        result.extend(footprints)
+
+    while queue:
+        _, order, origin, footprint = heapq.heappop(queue)
+        near = [q for j in (tree.query(footprint.polygon, predicate="intersects") if tree else [])
+                for q in placed[j] if shapely.intersects(q.polygon, footprint.polygon)]
+        above = [p for p in near if p.base < footprint.top]  # the others stand wholly above it
+        cover = shapely.union_all([p.polygon for p in above]) if above else None
+        if cover is None or shapely.intersection(footprint.polygon, cover).area <= OVERLAP_TOLERANCE:
+            place(origin, [footprint])
+            continue
+        for raised in (p for p in above if p.base > footprint.base):
+            for piece in _polygons(shapely.intersection(footprint.polygon, raised.polygon)):
+                if piece.area > OVERLAP_TOLERANCE and shapely.is_valid(piece):
+                    heapq.heappush(queue, (-raised.base, counter, origin, Footprint(
+                        shapely.normalize(piece), raised.base, footprint.base, footprint.source,
+                        footprint.osm_id, footprint.is_part)))
+                    counter += 1
+        rest = [p for p in _polygons(shapely.difference(footprint.polygon, cover))
+                if p.area > OVERLAP_TOLERANCE and shapely.is_valid(p)]
+        if not rest:
+            if order < len(prints):  # a piece under a raised part counts with its object
+                skipped.append((footprint.osm_id, "covered"))
+            continue
+        clipped += order < len(prints)
+        place(origin, [Footprint(shapely.normalize(p), footprint.top, footprint.base, footprint.source,
+                                 footprint.osm_id, footprint.is_part) for p in rest])
     return result, clipped
 
 

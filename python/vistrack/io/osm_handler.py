@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 import osmium
 
-from .osm_tags import DRIVABLE, Height, building_height, road_skip_reason
+from .osm_tags import DRIVABLE, Height, building_height, oneway, road_skip_reason
 
 __all__ = ["Candidate", "OsmHandler", "RoadWay"]
 
@@ -35,12 +35,13 @@ class Candidate:
 
 @dataclass
 class RoadWay:
-    """One drivable way: its node ids, (lon, lat) rows, and whether it is tagged one-way."""
+    """One drivable way: its node ids, (lon, lat) rows, and its direction (:func:`oneway`: 1
+    driven in the order of its nodes only, -1 against it only, 0 both ways)."""
 
     osm_id: int
     nodes: list[int]
     lon_lat: np.ndarray
-    oneway: bool
+    oneway: int
     maxspeed: str | None
 
 
@@ -117,9 +118,9 @@ class OsmHandler(osmium.SimpleHandler):
         if sum(len(run) for run in runs) < len(way.nodes):
             self.counts.roads_truncated += 1
         tags = way.tags
-        oneway = tags.get("oneway", "no") in ("yes", "1", "true", "-1") or tags.get("junction") == "roundabout"
+        direction = oneway({tag.k: tag.v for tag in tags})
         for run in runs:
-            self.roads.append(RoadWay(way.id, [node.ref for node in run], _ring(run), oneway, tags.get("maxspeed")))
+            self.roads.append(RoadWay(way.id, [node.ref for node in run], _ring(run), direction, tags.get("maxspeed")))
 
     def relation(self, relation: Any) -> None:
         tags = relation.tags

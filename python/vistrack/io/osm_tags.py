@@ -10,6 +10,18 @@ The rules follow the OSM wiki's Simple 3D Buildings
   ``roof:height`` if tagged, else ``roof:levels`` x ``level_height``, else ``roof_height``. Else
   ``default_height``.
 - the base: ``min_height`` (a length), else ``building:min_level`` x ``level_height``; 0 otherwise.
+  Tagged tops (``height``, ``building:levels``) are measured from the ground, as the wiki says
+  ("height: distance between the lowest possible position with ground contact and the top of the
+  roof"; ``building:levels`` counts the levels from the ground, ``building:min_level`` the levels
+  skipped under a part), so a tagged top at or below the base is a contradiction (skipped). A part
+  with a base and no tagged top takes ``default_height`` above its base (top = base +
+  ``default_height``): the default stands for the part's unknown extent, and a part known to
+  exist above its base is not dropped for want of a height.
+- a road's direction (https://wiki.openstreetmap.org/wiki/Key:oneway): ``oneway`` ``yes`` /
+  ``true`` / ``1`` driven in the way's node order only, ``-1`` against it only, ``no`` (or any
+  other value: ``reversible`` and ``alternating`` change with the time of day) both ways; absent,
+  ``junction=roundabout`` / ``circular`` and ``highway=motorway`` imply ``oneway=yes`` (the wiki's
+  implied values), every other way is two-way.
 - a drivable road: ``highway`` in :data:`DRIVABLE` (motorway to residential, unclassified,
   living_street, service and the ``_link`` roads); not footways, cycleways, steps, paths.
 """
@@ -21,7 +33,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Optional
 
-__all__ = ["DRIVABLE", "Height", "building_height", "parse_count", "parse_length", "road_skip_reason"]
+__all__ = ["DRIVABLE", "Height", "building_height", "oneway", "parse_count", "parse_length", "road_skip_reason"]
 
 _MAIN_ROADS = ("motorway", "trunk", "primary", "secondary", "tertiary")
 DRIVABLE = frozenset(_MAIN_ROADS + tuple(f"{road}_link" for road in _MAIN_ROADS)
@@ -35,9 +47,10 @@ _FEET_WORD = re.compile(rf"^\s*({_NUMBER})\s*(ft|feet|foot)\s*$", re.IGNORECASE)
 _FEET_INCHES = re.compile(rf"^\s*(?:({_NUMBER})\s*')?\s*(?:({_NUMBER})\s*\")?\s*$")
 
 
-def parse_length(text: str) -> Optional[float]:
+def parse_length(text: str, allow_zero: bool = False) -> Optional[float]:
     """A length tag in metres: ``12``, ``12.5 m``, ``40 ft``, ``40 feet``, ``12'``, ``12'6"``;
-    None when the text is none of these or not positive (the caller counts it as bad)."""
+    None when the text is none of these or not positive (0 allowed with ``allow_zero``: a base
+    ``min_height=0`` is on the ground) (the caller counts it as bad)."""
     value: Optional[float] = None
     if match := _METRIC.match(text):
         value = float(match.group(1))
@@ -45,7 +58,9 @@ def parse_length(text: str) -> Optional[float]:
         value = float(match.group(1)) * _FEET
     elif (match := _FEET_INCHES.match(text)) and (match.group(1) or match.group(2)):
         value = float(match.group(1) or 0.0) * _FEET + float(match.group(2) or 0.0) * _INCH
-    return value if value is not None and value > 0.0 else None
+    if value is None or value < 0.0 or (value == 0.0 and not allow_zero):
+        return None
+    return value
 
 
 def parse_count(text: str) -> Optional[float]:
@@ -69,10 +84,10 @@ class Height:
     bad: list[str] = field(default_factory=list)
 
 
-def _length_tag(tags: Mapping[str, str], key: str, bad: list[str]) -> Optional[float]:
+def _length_tag(tags: Mapping[str, str], key: str, bad: list[str], allow_zero: bool = False) -> Optional[float]:
     if key not in tags:
         return None
-    value = parse_length(tags[key])
+    value = parse_length(tags[key], allow_zero)
     if value is None:
         bad.append(key)
     return value
@@ -104,12 +119,12 @@ def building_height(tags: Mapping[str, str], level_height: float, roof_height: f
                 roof_levels = _count_tag(tags, "roof:levels", bad)
                 roof = roof_height if roof_levels is None else roof_levels * level_height
             top, source = levels * level_height + roof, "levels"
-    if top is None:
-        top, source = default_height, "default"
-    base = _length_tag(tags, "min_height", bad)
+    base = _length_tag(tags, "min_height", bad, allow_zero=True)
     if base is None:
         min_level = _count_tag(tags, "building:min_level", bad)
         base = 0.0 if min_level is None else min_level * level_height
+    if top is None:
+        top, source = base + default_height, "default"  # the default extent, above the base
     return Height(top, base, source, bad)
 
 
@@ -130,3 +145,16 @@ def road_skip_reason(tags: Mapping[str, str]) -> Optional[str]:
     if _negative_layer(tags):
         return "below_ground"
     return None
+
+
+_FORWARD = ("yes", "true", "1")
+_IMPLIED_ONEWAY = {("junction", "roundabout"), ("junction", "circular"), ("highway", "motorway")}
+
+
+def oneway(tags: Mapping[str, str]) -> int:
+    """A way's direction from its tags (the rule above): 1 forward only, -1 backward only, 0 both."""
+    value = tags.get("oneway")
+    if value is None:
+        return 1 if any(tags.get(key) == v for key, v in _IMPLIED_ONEWAY) else 0
+    value = value.strip().lower()
+    return 1 if value in _FORWARD else -1 if value == "-1" else 0

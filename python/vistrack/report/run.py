@@ -192,12 +192,15 @@ def locus_line(plan: dict[str, Any]) -> str:
     """How the locus was built, and for the smooth one what its check found (from metrics.json)."""
     if plan.get("locus") != "smooth":
         return "the paper's (Algorithm 1's radii, piecewise linear between the samples; not checked between them)"
+    acceleration = plan.get("max_abs_acceleration_mps2")  # None when the reference is not smooth (infeasible)
+    smoothness = ("not C1 (no smooth reference: the plan is infeasible)" if acceleration is None
+                  else f"C1 with |d2R/dt2| <= {acceleration:.2f} m/s²")
     return (f"smooth (beyond the paper): MaxRadius checked at {plan['check_points']} points along the path "
             f"({plan['check_volumes_computed']} more VVs, {plan['check_rounds']} refinement rounds); the paper's "
             f"piecewise-linear R(t) leaves the VP at {plan['paper_violations']} of them, by up to "
             f"{plan['paper_max_violation_m']:.2f} m. R(t) stays {plan['tracking_margin_m']:g} m inside MaxRadius "
-            f"(smallest clearance {plan['min_clearance_m']:.2f} m), C1 with |d2R/dt2| <= "
-            f"{plan['max_abs_acceleration_mps2']:.2f} m/s²; it lies {plan['mean_lowering_m']:.2f} m below the paper's "
+            f"(smallest clearance {plan['min_clearance_m']:.2f} m), {smoothness}; it lies "
+            f"{plan['mean_lowering_m']:.2f} m below the paper's "
             f"on average, at most {plan['max_lowering_m']:.2f} m at t = {plan['max_lowering_at_s']:.1f} s "
             f"({plan['max_lowering_at_m']:.0f} m along the path)")
 

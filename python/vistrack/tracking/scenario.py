@@ -236,7 +236,12 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
     if key == "path":
         spec.path = resolve_path(base, value, "poi.path")
     elif key == "route" and isinstance(value, Mapping):
-        spec.route = route_ends(value, "poi.route")
+        ends = dict(value)
+        if "speed" in ends:  # the spelling poi: {route: {from, to, speed}}
+            if "speed" in section:
+                raise fail("poi.route.speed", ends["speed"], "give the speed once: poi.speed or poi.route.speed")
+            spec.speed = speed("poi.route.speed", ends.pop("speed"))
+        spec.route = route_ends(ends, "poi.route")
     elif key in ("waypoints", "route"):
         if not isinstance(value, list) or len(value) < 2:
             raise fail(f"poi.{key}", value, "must be a list of at least two points")
