@@ -330,7 +330,7 @@ class WaypointFollower : public FlightGuidance {
   void set_passed_line(bool enabled);
   bool passed_line() const { return passed_line_; }
   // The acceptance distance of the active waypoint (R_WP unless passed_line).
-  double acceptance_distance() const;
+  double acceptance_distance() const { return acceptance_; }
 
   // Append a waypoint, usable from time available_from on (-infinity: at once). Allowed during
   // flight (from fly()'s on_step callback). Availability times must not decrease.
@@ -355,6 +355,7 @@ class WaypointFollower : public FlightGuidance {
   bool next_available(double t) const;
   // How far the vehicle is past the active waypoint's finish line along the leg (m, > 0 past it).
   double past_finish_line(const Vec2& p) const;
+  void update_acceptance();
 
   std::variant<LineFeedback, L1Line> law_;
   std::vector<Vec2> waypoints_;
@@ -366,6 +367,7 @@ class WaypointFollower : public FlightGuidance {
   Vec2 line_start_ = Vec2::Zero();
   bool done_ = false;
   bool passed_line_ = false;
+  double acceptance_ = 0.0;  // acceptance_distance(), kept by update_acceptance()
 };
 
 // ---- Flying -----------------------------------------------------------------------------------

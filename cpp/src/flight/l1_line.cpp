@@ -46,7 +46,8 @@ double L1Line::turn_rate(const Configuration& q, const Vec2& line_start, const V
   // The velocity the law steers: the airspeed vector, or with the wind known the ground velocity.
   const Vec2 velocity = speed_ * Vec2(std::cos(q.psi), std::sin(q.psi)) + (wind_aware_ ? wind_ : Vec2::Zero());
   const double ground_speed = wind_aware_ ? velocity.norm() : speed_;
-  const double distance = wind_aware_ ? l1_distance(ground_speed, gains_) : distance_;
+  // L1 grows with the ground speed (checked gains: the constructor's l1_distance validated them).
+  const double distance = wind_aware_ ? distance_ * ground_speed / speed_ : distance_;
   const Vec2 line = target - line_start;
   const double length = line.norm();
   const double scale = std::max({1.0, line_start.cwiseAbs().maxCoeff(), target.cwiseAbs().maxCoeff()});

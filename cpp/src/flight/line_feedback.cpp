@@ -30,7 +30,8 @@ LineFeedbackTerms LineFeedback::terms(const Configuration& q, const Vec2& line_s
   const Vec2 p(q.x, q.y);
   const Vec2 to_target = target - p;
   // The direction the law steers: the heading, or with the wind known the course over the ground.
-  const Vec2 ground = speed_ * Vec2(std::cos(q.psi), std::sin(q.psi)) + wind_;
+  const double cos_psi = std::cos(q.psi), sin_psi = std::sin(q.psi);
+  const Vec2 ground = speed_ * Vec2(cos_psi, sin_psi) + wind_;
   const double course = wind_aware_ ? std::atan2(ground.y(), ground.x()) : q.psi;
   out.target_angle = wrap_to_pi(std::atan2(to_target.y(), to_target.x()) - course);
   const Vec2 line = target - line_start;
@@ -42,7 +43,7 @@ LineFeedbackTerms LineFeedback::terms(const Configuration& q, const Vec2& line_s
     // d s / dt from the heading alone (the law does not know the wind): v sin(psi - chi); with
     // the wind known, from the ground velocity.
     out.cross_track_step = wind_aware_ ? ground.dot(left) * dt_
-                                       : speed_ * (std::cos(q.psi) * left.x() + std::sin(q.psi) * left.y()) * dt_;
+                                       : speed_ * (cos_psi * left.x() + sin_psi * left.y()) * dt_;
   }
   const double psi_max = max_turn();
   const double magnitude = std::abs(gains_.g * out.cross_track + gains_.h * out.cross_track_step);

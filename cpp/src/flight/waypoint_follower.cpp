@@ -25,19 +25,23 @@ WaypointFollower::WaypointFollower(const L1Line& law, const std::vector<Vec2>& w
 
 void WaypointFollower::set_passed_line(bool enabled) {
   passed_line_ = enabled;
+  update_acceptance();
   touch();
 }
 
-double WaypointFollower::acceptance_distance() const {
-  if (!passed_line_) return acceptance_radius_;
-  if (active_ + 1 >= waypoints_.size()) return 0.0;  // the last: done on its line
+// Once per change of the active leg (not per step): the acceptance distance of the active waypoint.
+void WaypointFollower::update_acceptance() {
+  acceptance_ = acceptance_radius_;
+  if (!passed_line_ || waypoints_.empty()) return;
+  acceptance_ = 0.0;
+  if (active_ + 1 >= waypoints_.size()) return;  // the last: done on its line
   const Vec2 in = waypoints_[active_] - line_start_;
   const Vec2 out = waypoints_[active_ + 1] - waypoints_[active_];
-  if (in.norm() == 0.0 || out.norm() == 0.0) return 0.0;
+  if (in.norm() == 0.0 || out.norm() == 0.0) return;
   const double turn = std::abs(std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out)));
   double distance = acceptance_radius_;
   if (const auto* l1 = std::get_if<L1Line>(&law_)) distance = std::min(distance, l1->distance());
-  return distance * std::min(turn, 0.5 * kPi) / (0.5 * kPi);
+  acceptance_ = distance * std::min(turn, 0.5 * kPi) / (0.5 * kPi);
 }
 
 double WaypointFollower::past_finish_line(const Vec2& p) const {
@@ -58,6 +62,7 @@ void WaypointFollower::add_waypoint(const Vec2& point, double available_from) {
                        "must not be earlier than the previous waypoint's " + detail::to_text(available_from_.back()));
   waypoints_.push_back(point);
   available_from_.push_back(available_from);
+  update_acceptance();  // the active waypoint may have gained its next leg
   accepted_at_.push_back(std::numeric_limits<double>::quiet_NaN());
   touch();
 }
@@ -72,6 +77,7 @@ void WaypointFollower::start(const Configuration& state, double t) {
   done_ = false;
   line_start_ = Vec2(state.x, state.y);
   for (double& a : accepted_at_) a = std::numeric_limits<double>::quiet_NaN();
+  update_acceptance();
   touch();
   advance(state, t);
 }
@@ -95,6 +101,7 @@ void WaypointFollower::advance(const Configuration& state, double t) {
     if (next_available(t)) {
       line_start_ = waypoints_[active_];
       ++active_;
+      update_acceptance();
       touch();
       continue;
     }
