@@ -475,6 +475,13 @@ def test_report_says_the_units_and_the_papers_numbers_per_scenario(tmp_path: Pat
     assert metrics["camera"]["mount"] == "levelled"
     rows = {m["method"]: m for m in metrics["methods"]}
     assert rows["tlpp"]["paper_covered_time_s"] == pytest.approx(131.0, abs=1e-6)  # 873,713 m^2 in Table 1
+    # The unit is taken from that one value; the other scenarios' TLPP and LDLPP values are whole
+    # multiples of it too (an independent check of the reading of Table 1).
+    for n in range(5, 10):
+        paper = loiter.load_scenario(REPO / "examples" / f"loiter_{n}aoi.yaml").paper
+        for method in ("tlpp", "ldlpp"):
+            seconds = paper[method]["coverage_m2"] / PAPER_AREA_PER_SECOND
+            assert seconds == pytest.approx(round(seconds), abs=2e-3), (n, method)
     assert rows["ldlpp"]["paper_covered_time_s"] == pytest.approx(140.0, abs=1e-3)  # Table 1 rounds to 1 m^2
     assert "coverage_area_m2s" in rows["ldlpp"] and "coverage_area_m2" not in rows["ldlpp"]
     report = (tmp_path / "o" / "report.md").read_text()

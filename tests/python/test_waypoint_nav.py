@@ -466,6 +466,10 @@ def test_per_waypoint_and_per_leg_tables_agree_with_the_flight(calm: list[wn.Nav
         assert max(r["overshoot"] for r in rows) == pytest.approx(flight.overshoot, abs=1e-12)
         assert sum(leg["time"] for leg in legs) == pytest.approx(rows[-1]["time"] - traj[0, 0], abs=1e-9)
         assert sum(leg["flown"] for leg in legs) <= flight.path_length + 1e-9
+        # Independent of how the table is built: in calm air the ground speed is the airspeed, so
+        # each leg's flown distance is v times its time (the discrete flight's chords: 2e-5 shorter).
+        for leg in legs:
+            assert leg["flown"] == pytest.approx(wn.DEFAULTS["speed"] * leg["time"], rel=1e-3, abs=1e-9)
         route = np.vstack([flight.start[:2], flight.waypoints])
         np.testing.assert_allclose([leg["length"] for leg in legs], np.linalg.norm(np.diff(route, axis=0), axis=1))
         metrics = flight.metrics()

@@ -20,7 +20,7 @@ from .._core import Uav
 from ..flight import Wind
 from ..progress import Progress
 from ..report.waypoint_nav import write_waypoints
-from .export import add_export_arguments, export_georeference, export_mission
+from .export import add_export_arguments, check_exports, export_mission
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
 from .types import add_dynamics_argument, coordinate, count, length, number, speed
@@ -81,8 +81,7 @@ def run(args: argparse.Namespace) -> int:
     route = wn.read_route(args.route, args.origin, "ROUTE")
     origin = args.origin or wn.route_georeference(args.route, "ROUTE")  # a mission's home places its export
     options = flight_options(args, route)
-    if args.export:
-        export_georeference(args.export, origin, None, None)  # no origin: an error before any output
+    check_exports(args.export, origin, None)  # no origin: an error before any output
     output_folder(args.out)  # a file there is an error now, not after the flights
     east, north = args.wind
     # Gusts: the paper's reading of its units (1 = 20 m, 1 s), or metres at the flight altitude.

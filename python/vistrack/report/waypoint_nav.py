@@ -7,8 +7,6 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Optional, Sequence
 
-import numpy as np
-
 from .._core.flight import Wind
 from ..io import write_flight, write_json, write_route, write_rows
 from ..plotting.motion import Line, MotionScene, Track
@@ -38,9 +36,7 @@ def motion_scene(flights: Sequence[NavigationFlight], wind: Optional[Wind], titl
     """The flights as one animation: a track per flight, the route, DWN's turning points, the wind."""
     tracks = [Track(f.label, f.trajectory[:, 0], f.trajectory[:, 1:3], color=color, trail=None, width=1.2)
               for f, color in zip(flights, TRACK_COLORS)]
-    route = np.asarray(flights[0].waypoints, dtype=float)[:, :2]
-    start = np.asarray(flights[0].start, dtype=float)[None, :2]
-    lines = [Line("route", np.vstack([start, route]), color="0.3", style=":", width=1.0)]
+    lines = [Line("route", flights[0].route_points, color="0.3", style=":", width=1.0)]
     for flight in flights:
         if flight.method == "dwn" and len(flight.turning_points):
             lines.append(Line("DWN turning points", flight.turning_points, color="tab:green", style="--", width=0.8))
@@ -57,8 +53,8 @@ def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Option
         name = file_label(flight)
         entry = flight.metrics()
         entry["trajectory"] = write_flight(flight.flight, out / f"trajectory_{name}.csv").name
-        entry["waypoints_file"] = write_rows(flight.waypoint_table(), out / f"waypoints_{name}.csv").name
-        entry["legs_file"] = write_rows(flight.leg_table(), out / f"legs_{name}.csv").name
+        entry["waypoints_file"] = write_rows(entry["waypoints"], out / f"waypoints_{name}.csv").name
+        entry["legs_file"] = write_rows(entry["legs"], out / f"legs_{name}.csv").name
         if flight.method == "dwn":
             entry["turning_points_file"] = write_route(flight.turning_points, out / "turning_points_dwn.csv").name
         record["flights"].append(entry)
@@ -84,24 +80,25 @@ def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Option
 
 def _document(flights: Sequence[NavigationFlight], record: dict[str, Any], route_name: str) -> Document:
     R = flights[0].turn_radius
-    rows = [[f.label, f"{f.miss_distances[:-1].max() / R:.3f}" if len(f.miss_distances) > 1 else "-",
-             f"{f.miss_distances[-1] / R:.3f}", f"{f.overshoot / R:.3f}", str(f.swirls),
-             f"{f.path_length:.4g}", f"{f.duration:.4g}", "yes" if f.all_reached else "no",
-             f"{f.flight.smoothness().roll_reversals_per_s:.2f}"] for f in flights]
+    entries = record["flights"]  # each flight's metrics(), computed once in write_waypoints
+    rows = [[e["label"], "-" if e["max_miss_before_last_over_R"] is None else f"{e['max_miss_before_last_over_R']:.3f}",
+             f"{e['miss_distances_over_R'][-1]:.3f}", f"{e['overshoot_over_R']:.3f}", str(e["swirls"]),
+             f"{e['path_length']:.4g}", f"{e['duration']:.4g}", "yes" if e["all_reached"] else "no",
+             "-" if e["smoothness"] is None else f"{e['smoothness']['roll_reversals_per_s']:.2f}"] for e in entries]
     blocks: list[Any] = [Heading("Flights"),
                          Table(["flight", "max miss before the last (R)", "miss at the last (R)", "overshoot (R)",
                                 "swirls", "path length", "time", "all reached", "roll reversals/s"], rows),
                          "The flight ends at the last waypoint, so its miss there is the stopping rule's, shown "
                          "apart."]
-    for f in flights:
-        blocks += [Heading(f"{f.label}: waypoints and legs"),
+    for e in entries:
+        blocks += [Heading(f"{e['label']}: waypoints and legs"),
                    Table(["waypoint", "miss (R)", "at t (s)", "overshoot (R)", "reached"],
                          [[str(r["waypoint"]), f"{r['miss_over_R']:.3f}", f"{r['time']:.4g}",
                            f"{r['overshoot_over_R']:.3f}", "yes" if r["reached"] else "no"]
-                          for r in f.waypoint_table()]),
+                          for r in e["waypoints"]]),
                    Table(["leg", "length", "flown", "time (s)"],
                          [[str(r["leg"]), f"{r['length']:.4g}", f"{r['flown']:.4g}", f"{r['time']:.4g}"]
-                          for r in f.leg_table()])]
+                          for r in e["legs"]])]
     if record.get("monte_carlo"):
         blocks += [Heading("Monte Carlo over random routes and winds"),
                    Table(["gusts", "flight", "flights", "miss median (R)", "miss p90 (R)", "miss max (R)",

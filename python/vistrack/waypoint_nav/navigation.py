@@ -135,6 +135,11 @@ class NavigationFlight:
         pts = [r.path.point for r in self.turning_point_records]
         return np.array(pts, dtype=float).reshape(-1, 2)
 
+    @property
+    def route_points(self) -> np.ndarray:
+        """(n + 1, 2): the route flown, the start position then the waypoints."""
+        return np.vstack([np.asarray(self.start[:2], dtype=float), np.asarray(self.waypoints, dtype=float)[:, :2]])
+
     def mission_points(self) -> np.ndarray:
         """(k, 2): the points an autopilot mission of this flight carries: DWN's turning points
         (the paper keeps them "in the background"; the last is the last waypoint, flown to
@@ -142,7 +147,7 @@ class NavigationFlight:
         back with :func:`read_route`, is the route flown)."""
         if self.method == "dwn":
             return self.turning_points
-        return np.vstack([np.asarray(self.start[:2], dtype=float), np.asarray(self.waypoints, dtype=float)[:, :2]])
+        return self.route_points
 
     def to_mission(self, georeference: Georeference, altitude: float, *, speed: Optional[float] = None,
                    altitude_mode: str = "relative", firmware: str = "ardupilot",
@@ -171,7 +176,7 @@ class NavigationFlight:
     def leg_table(self) -> list[dict[str, Any]]:
         """One row per leg (start -> W_0 -> W_1 ...): its length, and the flight time and flown
         distance between the closest approaches at its ends."""
-        points = np.vstack([np.asarray(self.start[:2], dtype=float), np.asarray(self.waypoints, dtype=float)[:, :2]])
+        points = self.route_points
         traj = self.trajectory
         t, xy = traj[:, 0], traj[:, 1:3]
         flown = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(xy, axis=0), axis=1))])
