@@ -29,6 +29,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import shapely
 
+from .._core import limits as _limits
+
 if TYPE_CHECKING:
     from .osm_handler import Candidate
 
@@ -36,7 +38,7 @@ __all__ = ["OVERLAP_TOLERANCE", "Footprint", "footprints", "object_outcomes"]
 
 OVERLAP_TOLERANCE = 1.0  # m^2: the overlap Environment.from_buildings takes as touching walls
 POLE_MARGIN = 1e-7  # degrees: a latitude this close to +-90 touches the pole
-MAX_COORDINATE = 1e7  # m: vistrack's coordinate limit (vt.limits.MAX_COORDINATE)
+MAX_COORDINATE = _limits.MAX_COORDINATE  # m: vistrack's coordinate limit
 MIN_AREA = 0.01  # m^2: below it a footprint has zero area (points on one line: a parallel of latitude
 # projects to a slight curve, so exact zero is never seen)
 

@@ -22,9 +22,27 @@ from .scenario import Scenario, random_aois
 PAPER_AREA_PER_SECOND = 873713.0 / 131.0
 
 __all__ = [
-    "MAX_STEPS", "PAPER_AREA_PER_SECOND", "MethodRun", "check_steps", "evaluate", "random_scenarios",
-    "random_study", "summary", "wind_directions", "wind_summary",
+    "MAX_STEPS",
+    "PAPER_AREA_PER_SECOND",
+    "MethodRun",
+    "check_steps",
+    "evaluate",
+    "paper_numbers",
+    "random_scenarios",
+    "random_study",
+    "summary",
+    "wind_directions",
+    "wind_summary",
 ]
+
+
+def paper_numbers(scenario: Scenario, method: str) -> dict[str, Any]:
+    """The paper's Table 1 numbers for a method, as the scenario file gives them (None where it does
+    not), with the coverage also in covered seconds."""
+    paper = scenario.paper.get(method, {})
+    area = paper.get("coverage_m2")
+    return {"paper_flight_time_min": paper.get("flight_time_min"), "paper_coverage_m2": area,
+            "paper_covered_time_s": None if area is None else area / PAPER_AREA_PER_SECOND}
 
 
 @dataclass
@@ -43,12 +61,8 @@ class MethodRun:
     def record(self, scenario: Scenario) -> dict[str, Any]:
         row: dict[str, Any] = {"scenario": scenario.name, "aois": len(scenario.aois)}
         row.update(metrics(self.plan, self.coverage, scenario.dt, scenario.threshold))
-        paper = scenario.paper.get(self.method, {})
-        if paper:
-            row["paper_flight_time_min"] = paper.get("flight_time_min")
-            row["paper_coverage_m2"] = paper.get("coverage_m2")
-            if paper.get("coverage_m2") is not None:
-                row["paper_covered_time_s"] = paper["coverage_m2"] / PAPER_AREA_PER_SECOND
+        if self.method in scenario.paper:
+            row.update(paper_numbers(scenario, self.method))
         if self.best_plan is not None and self.best_coverage is not None:
             row["best_order"] = list(self.best_plan.order)
             row["best_flight_time_s"] = self.best_plan.flight_time

@@ -15,7 +15,7 @@ from .. import loiter
 from ..io import write_json
 from ..loiter import METHOD_NAMES
 from ..loiter.files import write_loiter_samples_csv
-from ..loiter.study import PAPER_AREA_PER_SECOND, MethodRun, summary, wind_summary
+from ..loiter.study import MethodRun, paper_numbers, summary, wind_summary
 from ..plotting import loiter as figures
 from ..plotting.motion import Line, MotionScene, Overlay, Shapes, Track, circle_ring, ellipse_ring
 from ..report_options import ReportOptions
@@ -137,10 +137,9 @@ def scenario_document(scenario: loiter.Scenario, runs: Sequence[MethodRun], file
         if run.best_plan is not None:
             row.append(f"{run.best_plan.flight_time / 60:.2f}")
         if scenario.paper:
-            paper = scenario.paper.get(run.method, {})
-            minutes, area = paper.get("flight_time_min"), paper.get("coverage_m2")
-            row += ["-" if minutes is None else f"{minutes:.2f}",
-                    "-" if area is None else f"{area / PAPER_AREA_PER_SECOND:.1f}"]
+            paper = paper_numbers(scenario, run.method)
+            minutes, seconds = paper["paper_flight_time_min"], paper["paper_covered_time_s"]
+            row += ["-" if minutes is None else f"{minutes:.2f}", "-" if seconds is None else f"{seconds:.1f}"]
         rows.append(row)
     header = ["method", "flight time (min)", "transit (s)", "covered time (s)", "coverage (10^3 m^2 s)", "order"]
     if any(run.best_plan is not None for run in runs):
