@@ -50,8 +50,8 @@ def main(args: argparse.Namespace) -> int:
                         else "--out")
     print(f"{spec.name}: {spec.case_count} {spec.kind.name} cases over {', '.join(spec.parameters)} "
           f"({spec.combine})", flush=True)
-    result = run(spec, args.scheduler, args.workers, out=out,
-                 quiet=args.quiet, figures=not args.no_figures)
+    result = run(spec, args.scheduler, args.workers, out=out, quiet=args.quiet, figures=not args.no_figures,
+                 scheduler_checked=args.scheduler is not None)  # checked above, before the file was read
     workers = ", ".join(f"{w}: {s['environments_built']} map(s), {s['cases_run']} case(s)"
                         for w, s in sorted(result.workers.items()))
     print(f"{len(result.rows)} cases in {result.wall_s:.1f} s on {result.scheduler} ({workers})")

@@ -118,14 +118,15 @@ def finite_row(row: Mapping[str, Any]) -> tuple[Row, list[str]]:
 
 def run(spec: Union[SweepSpec, str, Path, Mapping[str, Any]], scheduler: Optional[str] = None,
         n_workers: Optional[int] = None, *, out: Union[str, Path, None] = None, quiet: bool = True,
-        figures: bool = True) -> SweepResult:
+        figures: bool = True, scheduler_checked: bool = False) -> SweepResult:
     """Run every case of a sweep and write ``results.csv``, ``results.parquet``, ``sweep.json``,
     ``rows.jsonl`` (rows as they arrived) and the summary figures into ``out`` (default: the
     spec's ``out``, else ./vistrack-out/<name>).
 
     ``scheduler``: None starts a LocalCluster of ``n_workers`` processes (default: one per core,
     one thread each) on 127.0.0.1; an address ("tcp://host:8786") uses that cluster;
-    ``"serial"`` runs the cases one by one here, without Dask.
+    ``"serial"`` runs the cases one by one here, without Dask. An address is first checked to
+    answer as a Dask scheduler within seconds, unless ``scheduler_checked`` says the caller did.
     """
     if not isinstance(spec, SweepSpec):
         spec = SweepSpec.load(spec) if isinstance(spec, (str, Path)) else SweepSpec.from_dict(spec)
@@ -149,7 +150,7 @@ def run(spec: Union[SweepSpec, str, Path, Mapping[str, Any]], scheduler: Optiona
     with Progress(f"sweep {spec.name}", not quiet, unit="case", leave=True) as bar:
         bar(0, len(cases))
         failed = 0
-        for row in _execute(cases, scheduler, n_workers, workers):
+        for row in _execute(cases, scheduler, n_workers, workers, scheduler_checked):
             rows.append(row)
             append_json_line(row, stream)
             failed += row["run_status"] != "ok"
@@ -188,7 +189,7 @@ def metric_columns(result: SweepResult) -> list[str]:
 
 
 def _execute(cases: Sequence[Case], scheduler: Optional[str], n_workers: Optional[int],
-             workers: dict[str, dict[str, int]]) -> Iterator[Row]:
+             workers: dict[str, dict[str, int]], scheduler_checked: bool = False) -> Iterator[Row]:
     if scheduler == SERIAL:
         before = current_resources().stats()
         for case in cases:
@@ -209,7 +210,8 @@ def _execute(cases: Sequence[Case], scheduler: Optional[str], n_workers: Optiona
         address = cluster.scheduler_address
     else:
         address = scheduler
-        check_scheduler(scheduler)  # a short timeout and a peer that speaks Dask, before Client waits on it
+        if not scheduler_checked:  # a short timeout and a peer that speaks Dask, before Client waits on it
+            check_scheduler(scheduler)
     try:
         try:
             client = Client(address, timeout=f"{CONNECT_TIMEOUT_S}s")
