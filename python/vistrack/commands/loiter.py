@@ -78,7 +78,7 @@ def run(args: argparse.Namespace) -> int:
         for scenario in scenarios:
             scenario.dynamics = args.dynamics or scenario.dynamics
         rows, written, planned = [], [], 0
-        for scenario in scenarios:
+        for scenario in scenarios:  # (--export takes one: its plans are these runs')
             refused: dict[str, str] = {}
             runs = loiter_study.evaluate(scenario, args.method, args.order, winds, refused)
             for method, reason in refused.items():
@@ -86,6 +86,7 @@ def run(args: argparse.Namespace) -> int:
             if not runs:
                 continue
             planned += 1
+            plans = {run.method: run.plan if run.best_plan is None else run.best_plan for run in runs}
             folder = args.out if len(scenarios) == 1 else args.out / scenario.name
             written += report.write_scenario(folder, scenario, runs, options, given[0] if given else None)
             rows += [run.record(scenario) for run in runs]
@@ -105,15 +106,10 @@ def run(args: argparse.Namespace) -> int:
             written += report.write_table(args.out, scenarios, rows)
             print((args.out / "table.md").read_text(encoding="utf-8"), end="")
     if args.export:  # one scenario's plans as autopilot missions (vistrack.loiter.to_mission)
-        scenario = (loiter.load_scenario(args.scenarios[0]) if args.scenarios
-                    else next(loiter_study.random_scenarios(1, args.seed, args.aois)))
+        if args.random is not None:  # the random study keeps no plans: plan its one scenario again
+            scenario = next(loiter_study.random_scenarios(1, args.seed, args.aois))
+            plans = {method: scenario.plan(method, args.order) for method in args.method}
         altitude = scenario.camera.altitude if args.altitude is None else args.altitude
-        plans = {}
-        for method in args.method:
-            try:
-                plans[method] = scenario.plan(method, args.order)
-            except VistrackError:
-                continue  # skipped above with its reason
         export_missions(args.export, {m: partial(p.to_mission, altitude=altitude) for m, p in plans.items()},
                         args.origin or scenario.origin, DEFAULT_EXPORT_ORIGIN)
     print(f"{len(written)} files in {args.out}")
