@@ -1,12 +1,13 @@
 """The accuracy numbers the README quotes, reproduced on Charlotte (and the campus):
 
-1. XOR paths: the grid path (cell intervals) against the radial path (the exact XOR of the two
-   meshes, equal to CGAL on them: tests/python/test_xor.py) on every pair of VVs 20, 10 and 5 m
-   apart along paper_slow and paper_small, 1-degree grids.
+1. XOR paths: the grid path (the grid corners' intervals, trapezoid rule) against the radial path
+   (the exact XOR of the two meshes, equal to CGAL on them: tests/python/test_xor.py) on every
+   pair of VVs 20, 10 and 5 m apart along paper_slow and paper_small, 1-degree grids.
 2. VVs: the 1-degree mesh volume against the per-direction volume of a 0.2-degree grid (issue 19's
-   reference; bench/visibility_accuracy_bench.py has the accuracy per cost against trimesh +
-   embreex) at 10 POIs along paper_slow (d_max 400 m) with the time that accuracy costs, and VPs
-   at 20 and 50 m (paper_small, d_max 100 m) against line-of-sight queries on a 1 m lattice.
+   reference, by brute force: vistrack.visibility.reference_volume;
+   bench/visibility_accuracy_bench.py has the accuracy per cost against trimesh + embreex) at 10
+   POIs along paper_slow (d_max 400 m) with the time that accuracy costs, and VPs at 20 and 50 m
+   (paper_small, d_max 100 m) against line-of-sight queries on a 1 m lattice.
 3. Example 1's tracking against Algorithm 1's rate margin (planning.rate_margin, the paper's
    locus), and with the smooth locus.
 4. The locus check's probe (MaxRadius by line of sight, vt.visible_disk_radius) against MaxRadius
@@ -33,7 +34,7 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 import numpy as np
 
 import vistrack as vt
-from vistrack.visibility import polygon_agreement
+from vistrack.visibility import polygon_agreement, reference_volume
 
 DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
 PATHS = (("paper_slow", 400.0), ("paper_small", 100.0))
@@ -63,7 +64,7 @@ def volumes_and_polygons(scene) -> None:
         pois = [np.ravel(scene.poi_on_surface(np.ravel(path.position(t)))) for t in np.linspace(0.0, path.duration, 10)]
         mesh_errors, grid_errors = [], []
         for g in pois:
-            reference = vt.visibility_volume(scene, g, d_max, None, 0.2).grid_volume()
+            reference = reference_volume(scene, g, d_max)
             vv = vt.visibility_volume(scene, g, d_max, None, 1.0)
             mesh_errors.append(abs(vv.volume / reference - 1))
             grid_errors.append(abs(vv.grid_volume() / reference - 1))
@@ -74,7 +75,7 @@ def volumes_and_polygons(scene) -> None:
                 vt.visibility_volume(scene, g, d_max, None, 1.0)
             times.append((time.perf_counter() - start) / len(pois))
         print(f"   {name:11s} d_max {d_max:3.0f} m: |mesh / reference - 1| max {100 * max(mesh_errors):.3f} %, "
-              f"median {100 * np.median(mesh_errors):.3f} % (cell intervals alone max {100 * max(grid_errors):.3f} %) "
+              f"median {100 * np.median(mesh_errors):.3f} % (grid intervals alone max {100 * max(grid_errors):.3f} %) "
               f"at {1e3 * min(times):.2f} ms per VV (best of 3, one at a time, load {os.getloadavg()[0]:.1f})")
     path = vt.PoiPath.from_csv(str(DATA / "charlotte" / "paths" / "paper_small.csv"), 5.0)
     ious = []

@@ -5,13 +5,13 @@ vistrack and trimesh + embreex each need to bring the volume within 0.1 % and 0.
     VISTRACK_BUILD_DIR=build/dev python3 bench/visibility_accuracy_bench.py [--points 10] [--repeat 3]
 
 The same POIs as bench/visibility_bench.py (paper_slow, d_max 400 m, no band), put on the surface.
-The reference is the per-direction volume of a 0.2-degree grid (VisibilityVolume.grid_volume: the
-cell intervals times their solid angles, as in tests/python/test_visibility.py and the README);
+The reference is the per-direction volume of a 0.2-degree grid (vistrack.visibility.reference_volume:
+brute-force staggered cell rays times their solid angles, as in tests/python/test_visibility.py);
 vistrack's 0.2-degree mesh volume and the peer's 0.2-degree value are printed beside it as checks
 of the reference. Per grid resolution:
-- vistrack: visibility_volume (one ray per grid cell and per corner, then bisection rays at the
-  jumps of the visible distance; the volume of the closed mesh). Its rays are all cell and corner
-  directions (traced or decided by the per-column clearance bounds) plus the bisection rays.
+- vistrack: visibility_volume (one ray per grid corner, then bisection rays at the jumps of the
+  visible distance; the volume of the closed mesh). Its rays are all corner directions (traced or
+  decided by the per-column clearance bounds) plus the bisection rays.
 - trimesh + embreex: one first-hit ray through every cell centre of the same grid
   (intersects_location, with the ground square of bench/visibility_bench.py), the distance
   clipped to d_max and to the ground plane, volume = sum of r^3 / 3 times the cell's solid angle.
@@ -41,6 +41,7 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 
 import vistrack as vt
 from vistrack import _core
+from vistrack.visibility import reference_volume
 
 REPO = Path(__file__).resolve().parents[1]
 OURS_RESOLUTIONS = (4.0, 3.0, 2.0, 1.5, 1.25, 1.0, 0.75, 0.5, 0.35)
@@ -132,7 +133,7 @@ def main() -> int:
     peer = Peer(env, d_max)
 
     fine = [vt.visibility_volume(scene, g, d_max, None, REFERENCE_DEG) for g in pois]
-    reference = np.array([vv.grid_volume() for vv in fine])
+    reference = np.array([reference_volume(scene, g, d_max, REFERENCE_DEG) for g in pois])
     mesh_at_reference = np.array([vv.volume for vv in fine])
     dirs, solid = Peer.grid(REFERENCE_DEG)
     peer_at_reference = np.array([peer.volume(g, dirs, solid) for g in pois])

@@ -14,8 +14,10 @@ namespace {
 
 using Band = std::optional<std::pair<double, double>>;
 
-py::array_t<double> per_cell(const VisibilityVolume& vv, const std::vector<double>& values) {
-  py::array_t<double> out({vv.grid.num_elevation, vv.grid.num_azimuth});
+py::array_t<double> per_corner(const VisibilityVolume& vv, const std::vector<double>& values) {
+  if (values.size() != vv.grid.num_corners())
+    detail::fail_field("near/far", values.size(), "need one interval per grid corner (" + std::to_string(vv.grid.num_corners()) + ")");
+  py::array_t<double> out({vv.grid.num_elevation + 1, vv.grid.num_azimuth});
   std::copy(values.begin(), values.end(), out.mutable_data());
   return out;
 }
@@ -26,6 +28,12 @@ std::string fspath(const py::object& path) { return py::module_::import("os").at
 int checked_row(const DirectionGrid& grid, int row) {
   if (row < 0 || row >= grid.num_elevation)
     detail::fail_field("row", row, "must be a row index in [0, " + std::to_string(grid.num_elevation) + ")");
+  return row;
+}
+
+int checked_corner_row(const DirectionGrid& grid, int row) {
+  if (row < 0 || row > grid.num_elevation)
+    detail::fail_field("row", row, "must be a corner row index in [0, " + std::to_string(grid.num_elevation) + "]");
   return row;
 }
 
@@ -45,8 +53,7 @@ Vec3 as_point(const Eigen::VectorXd& g, const char* field) {
 void bind_visibility(py::module_& m) {
   py::class_<DirectionGrid>(m, "DirectionGrid",
                             "Angular grid of a VV: num_elevation rows x num_azimuth columns of equal angular "
-                            "size over the sphere; the ray of cell (i, j) goes through its sample point\n"
-                            "(sample_offset: staggered inside the cell, not its centre).")
+                            "size over the sphere; a VV samples its intervals at the cells' corners (corner).")
       .def_readonly("num_elevation", &DirectionGrid::num_elevation)
       .def_readonly("num_azimuth", &DirectionGrid::num_azimuth)
       .def("elevation", [](const DirectionGrid& g, int row) { return g.elevation(checked_row(g, row)); },
@@ -55,20 +62,17 @@ void bind_visibility(py::module_& m) {
            py::arg("column"), "Centre azimuth of column j (rad, from +x).")
       .def("solid_angle", [](const DirectionGrid& g, int row) { return g.solid_angle(checked_row(g, row)); },
            py::arg("row"), "Solid angle of each cell of row i (sr).")
-      .def("sample_offset",
+      .def("corner",
            [](const DirectionGrid& g, int row, int column) {
-             return g.sample_offset(checked_row(g, row), checked_column(g, column));
+             return g.corner(checked_corner_row(g, row), checked_column(g, column));
            },
            py::arg("row"), py::arg("column"),
-           "(x, y) in [0, 1)^2: where the ray of cell (i, j) crosses it, as fractions of its azimuth span (x,\n"
-           "by row) and of its sin(elevation) span (y, by column); Weyl sequences, equidistributed down\n"
-           "every column and along every row.")
-      .def("direction",
-           [](const DirectionGrid& g, int row, int column) {
-             return g.direction(checked_row(g, row), checked_column(g, column));
-           },
-           py::arg("row"), py::arg("column"),
-           "Unit vector of the ray of cell (i, j), through its sample point.")
+           "Unit vector to corner (i, j), i in [0, num_elevation]: elevation -pi/2 + i*pi/num_elevation,\n"
+           "azimuth j*2pi/num_azimuth (rows 0 and num_elevation are the poles). A VV's intervals are\n"
+           "sampled on these rays.")
+      .def("corner_weight", [](const DirectionGrid& g, int row) { return g.corner_weight(checked_corner_row(g, row)); },
+           py::arg("row"), "Trapezoid weight of each corner of row i (sr): half a cell below plus half a cell above.")
+      .def_property_readonly("num_corners", &DirectionGrid::num_corners, "Number of corners: (num_elevation + 1) * num_azimuth.")
       .def_property_readonly("size", &DirectionGrid::size, "Number of cells.")
       .def_static("from_resolution", &DirectionGrid::from_resolution, py::arg("resolution_deg"),
                   "Grid with steps of about resolution_deg degrees (an even number of rows).");
@@ -80,10 +84,10 @@ void bind_visibility(py::module_& m) {
       .def_readonly("d_max", &VisibilityVolume::d_max, "Maximum viewing distance (m).")
       .def_readonly("altitude_band", &VisibilityVolume::altitude_band, "(h_lo, h_hi) in world z, or None.")
       .def_readonly("grid", &VisibilityVolume::grid, "The direction grid.")
-      .def_property_readonly("near", [](const VisibilityVolume& vv) { return per_cell(vv, vv.near); },
-                             "Start of the visible interval per cell, (num_elevation, num_azimuth) metres.")
-      .def_property_readonly("far", [](const VisibilityVolume& vv) { return per_cell(vv, vv.far); },
-                             "End of the visible interval per cell (near >= far: nothing visible).")
+      .def_property_readonly("near", [](const VisibilityVolume& vv) { return per_corner(vv, vv.near); },
+                             "Start of the visible interval per grid corner, (num_elevation + 1, num_azimuth) metres.")
+      .def_property_readonly("far", [](const VisibilityVolume& vv) { return per_corner(vv, vv.far); },
+                             "End of the visible interval per grid corner (near >= far: nothing visible).")
       .def_property_readonly("vertices", [](const VisibilityVolume& vv) { return vv.mesh.vertices; },
                              "Mesh vertices (n, 3).")
       .def_property_readonly("faces", [](const VisibilityVolume& vv) { return vv.mesh.faces; },
@@ -97,7 +101,7 @@ void bind_visibility(py::module_& m) {
                     "t of the sphere of grid corners (two per quad, row-major); what the radial XOR reads. Empty\n"
                     "otherwise.")
       .def("grid_volume", &VisibilityVolume::grid_volume,
-           "Volume represented by the grid intervals: sum of solid_angle * (far^3 - near^3) / 3.")
+           "Volume represented by the grid intervals: sum over corners of corner_weight * (far^3 - near^3) / 3.")
       .def("save", &VisibilityVolume::save, py::arg("path"), "Write the mesh to .obj or .ply.")
       .def(
           "save_binary",

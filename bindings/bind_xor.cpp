@@ -31,8 +31,8 @@ void bind_xor(py::module_& m) {
       "frame: \"poi\" translates each VV by minus its POI first (open terrain gives 0), \"world\" compares\n"
       "them in place. method: \"radial\" is the exact XOR of the two meshes computed per direction\n"
       "(star VVs on one direction grid: what \"mesh\" gives, without CGAL); \"grid\" is\n"
-      "the per-direction integral sum(solid_angle * |A xor B| measured in r^2 dr) over the cell intervals\n"
-      "of a shared direction grid; both need frame \"poi\" or equal POIs. \"mesh\" is CGAL corefinement\n"
+      "the per-direction integral sum(corner_weight * |A xor B| measured in r^2 dr) over the grid corners'\n"
+      "intervals of a shared direction grid (trapezoid rule); both need frame \"poi\" or equal POIs. \"mesh\" is CGAL corefinement\n"
       "of the closed meshes; \"auto\" takes radial, else grid, else mesh, as they apply.\n"
       "time_limit (s) aborts the mesh path with VistrackError. perturbation (rad): rotation of b's mesh\n"
       "about the axis (1,2,3) before the Boolean; default 1e-6 in the POI frame (identical sphere faces\n"
@@ -65,7 +65,7 @@ void bind_xor(py::module_& m) {
         return grid_xor_volume(a, b);
       },
       py::arg("a"), py::arg("b"),
-      "The exact per-direction XOR volume of two VVs on one direction grid, each about its own POI.");
+      "The XOR volume of two VVs on one direction grid, each about its own POI: per grid corner, trapezoid rule.");
   m.def("shares_direction_grid", &shares_direction_grid, py::arg("a"), py::arg("b"),
         "True when both VVs carry intervals on the same direction grid (the grid path applies).");
   m.def(

@@ -147,3 +147,27 @@ def polygon_agreement(scene: VisibilityScene, vv: VisibilityVolume, altitude: fl
     ours = shapely.contains_xy(region, points[:, 0], points[:, 1])
     either = np.sum(truth | ours)
     return float(np.sum(truth & ours) / either) if either else 1.0
+
+
+def reference_volume(scene: VisibilityScene, g: Sequence[float], d_max: float, resolution_deg: float = 0.2) -> float:
+    """The volume of the VV at ``g`` without a band by brute force, independent of the VV's code:
+    one ray per cell of a ``resolution_deg`` grid through a point staggered inside it (Weyl
+    sequences, as the VV's cell rays were before file format 4), min(first hit, exact ground
+    plane, d_max), summed with the cells' solid angles. The accuracy benchmarks' and tests'
+    reference (0.2 degrees: 1.6 M rays)."""
+    grid = _core.DirectionGrid.from_resolution(resolution_deg)
+    ne, na = grid.num_elevation, grid.num_azimuth
+    x = np.mod(0.5 + 0.7548776662466927 * np.arange(ne), 1.0)[:, None]
+    y = np.mod(0.5 + 0.5698402909980532 * np.arange(na), 1.0)[None, :]
+    lo = np.sin(-np.pi / 2 + np.arange(ne) * np.pi / ne)[:, None]
+    hi = np.sin(-np.pi / 2 + (np.arange(ne) + 1) * np.pi / ne)[:, None]
+    sin_el = lo + y * (hi - lo)
+    cos_el = np.sqrt(np.maximum(0.0, 1.0 - sin_el**2))
+    az = (np.arange(na)[None, :] + x) * 2.0 * np.pi / na
+    dirs = np.stack([cos_el * np.cos(az), cos_el * np.sin(az), sin_el], axis=-1).reshape(-1, 3)
+    origin = np.asarray(g, dtype=float).ravel()
+    far = np.minimum(np.asarray(scene.first_hits(origin, dirs, d_max)).ravel(), d_max)
+    down = dirs[:, 2] < 0.0
+    far[down] = np.minimum(far[down], np.maximum(0.0, (scene.ground_level - origin[2]) / dirs[down, 2]))
+    cells = np.array([grid.solid_angle(i) for i in range(ne)])
+    return float(np.sum(cells[:, None] * far.reshape(ne, na) ** 3) / 3.0)

@@ -182,8 +182,8 @@ vt::VolumeFunction step_world(std::atomic<int>& calls) {
     v->poi = g;
     v->grid.num_elevation = 18;
     v->grid.num_azimuth = 36;
-    v->near.assign(v->grid.size(), 0.0);
-    v->far.assign(v->grid.size(), g.x() < 37.0 ? 50.0 : 60.0);
+    v->near.assign(v->grid.num_corners(), 0.0);
+    v->far.assign(v->grid.num_corners(), g.x() < 37.0 ? 50.0 : 60.0);
     return vt::VolumePtr(v);
   };
 }
@@ -380,8 +380,8 @@ TEST(AdaptiveDiscretization, RandomWorldsKeepTheInvariants) {
       v->grid.num_azimuth = 12;
       double far = 40.0;
       for (double s : steps) far += g.x() > s ? 5.0 : 0.0;
-      v->near.assign(v->grid.size(), 0.0);
-      v->far.assign(v->grid.size(), far);
+      v->near.assign(v->grid.num_corners(), 0.0);
+      v->far.assign(v->grid.num_corners(), far);
       return vt::VolumePtr(v);
     });
     Eigen::MatrixXd w(2, 2);
@@ -572,8 +572,8 @@ vt::VolumeFunction dip_world() {
     v->poi = g;
     v->grid.num_elevation = 18;
     v->grid.num_azimuth = 36;
-    v->near.assign(v->grid.size(), 0.0);
-    v->far.assign(v->grid.size(), dip_world_radius(g.x()));
+    v->near.assign(v->grid.num_corners(), 0.0);
+    v->far.assign(v->grid.num_corners(), dip_world_radius(g.x()));
     return vt::VolumePtr(v);
   };
 }

@@ -93,7 +93,11 @@ TEST(DirectionGrid, CellsTileTheSphere) {
     double total = 0.0;
     for (int i = 0; i < grid.num_elevation; ++i) total += grid.solid_angle(i) * grid.num_azimuth;
     EXPECT_NEAR(total, 4.0 * kPi, 1e-9);
-    EXPECT_NEAR(grid.direction(3, 5).norm(), 1.0, 1e-12);
+    double weights = 0.0;
+    for (int i = 0; i <= grid.num_elevation; ++i) weights += grid.corner_weight(i) * grid.num_azimuth;
+    EXPECT_NEAR(weights, 4.0 * kPi, 1e-9);
+    EXPECT_NEAR(grid.corner(3, 5).norm(), 1.0, 1e-12);
+    EXPECT_EQ(grid.num_corners(), grid.size() + static_cast<std::size_t>(grid.num_azimuth));
     EXPECT_NEAR(grid.elevation(0) + grid.elevation(grid.num_elevation - 1), 0.0, 1e-12);
   }
   EXPECT_THROW(DirectionGrid::from_resolution(0.0), Error);
@@ -101,48 +105,60 @@ TEST(DirectionGrid, CellsTileTheSphere) {
   EXPECT_THROW(DirectionGrid::from_resolution(90.0), Error);
 }
 
-// Cell rays pass through staggered sample points inside their cells: down any column the azimuth
-// offsets, and along any row the elevation offsets, are equidistributed (centre rays would put
-// every offset at 0.5).
-TEST(DirectionGrid, SampleRaysAreStaggeredInsideTheirCells) {
-  const DirectionGrid grid = DirectionGrid::from_resolution(1.0);
-  const double d_el = kPi / grid.num_elevation, d_az = kTwoPi / grid.num_azimuth;
-  for (int i : {0, 7, 90, 179}) {
-    for (int j : {0, 13, 359}) {
-      const Vec3 d = grid.direction(i, j);
-      EXPECT_NEAR(d.norm(), 1.0, 1e-12);
-      const double el = std::asin(d.z());
-      double az = std::atan2(d.y(), d.x());
-      if (az < 0.0) az += kTwoPi;
-      EXPECT_GE(el, -kPi / 2 + i * d_el - 1e-12);
-      EXPECT_LE(el, -kPi / 2 + (i + 1) * d_el + 1e-12);
-      EXPECT_GE(az, j * d_az - 1e-12);
-      EXPECT_LE(az, (j + 1) * d_az + 1e-12);
+// The volume of a VV without a band by brute force, independent of the VV's code: one ray per
+// cell of a 0.2-degree grid through a point staggered inside it (Weyl sequences), min(first hit,
+// exact ground plane, d_max), summed with the cells' solid angles.
+double fine_reference_volume(const VisibilityScene& scene, const Vec3& g, double d_max) {
+  const DirectionGrid grid = DirectionGrid::from_resolution(0.2);
+  const int ne = grid.num_elevation, na = grid.num_azimuth;
+  Points3 dirs(static_cast<Eigen::Index>(grid.size()), 3);
+  for (int i = 0; i < ne; ++i) {
+    const double x = std::fmod(0.5 + 0.7548776662466927 * i, 1.0);
+    const double lo = std::sin(-kPi / 2 + i * kPi / ne), hi = std::sin(-kPi / 2 + (i + 1) * kPi / ne);
+    for (int j = 0; j < na; ++j) {
+      const double sin_el = lo + std::fmod(0.5 + 0.5698402909980532 * j, 1.0) * (hi - lo);
+      const double cos_el = std::sqrt(1.0 - sin_el * sin_el), az = (j + x) * kTwoPi / na;
+      dirs.row(i * na + j) << cos_el * std::cos(az), cos_el * std::sin(az), sin_el;
     }
   }
-  for (int start : {0, 50, 140}) {
-    constexpr int kRun = 30;
-    for (double f : {0.25, 0.5, 0.75}) {
-      int below_x = 0, below_y = 0;
-      for (int k = start; k < start + kRun; ++k) {
-        below_x += grid.sample_offset(k, 17).x() < f;  // down column 17
-        below_y += grid.sample_offset(42, k).y() < f;  // along row 42
-      }
-      EXPECT_NEAR(below_x / double(kRun), f, 0.1) << "column run from row " << start;
-      EXPECT_NEAR(below_y / double(kRun), f, 0.1) << "row run from column " << start;
+  const std::vector<double> hits = scene.first_hits(g, dirs, d_max);
+  double total = 0.0;
+  for (int i = 0; i < ne; ++i)
+    for (int j = 0; j < na; ++j) {
+      const double dz = dirs(i * na + j, 2);
+      double far = std::min(hits[static_cast<std::size_t>(i * na + j)], d_max);
+      if (dz < 0.0) far = std::min(far, std::max(0.0, (scene.ground_level() - g.z()) / dz));
+      total += grid.solid_angle(i) * far * far * far / 3.0;
     }
-  }
+  return total;
 }
 
-// vv.far[k] is the distance along grid.direction(i, j): the VV computes its rays with trig tables
-// (angle addition), DirectionGrid::direction directly; a wall x = 40 facing g checks both angles.
-TEST(VisibilityVolume, CellIntervalsLieAlongTheGridsDirections) {
+// Corner (i, j) lies at elevation -pi/2 + i d_el and azimuth j d_az; the horizon and the poles exactly.
+TEST(DirectionGrid, CornersLieOnTheCellBoundaries) {
+  const DirectionGrid grid = DirectionGrid::from_resolution(1.0);
+  const double d_el = kPi / grid.num_elevation, d_az = kTwoPi / grid.num_azimuth;
+  for (int i : {1, 7, 90, 179}) {
+    for (int j : {0, 13, 359}) {
+      const Vec3 d = grid.corner(i, j);
+      EXPECT_NEAR(d.norm(), 1.0, 1e-12);
+      EXPECT_NEAR(std::asin(d.z()), -kPi / 2 + i * d_el, 1e-9);
+      EXPECT_NEAR(std::atan2(d.y(), d.x()), std::remainder(j * d_az, kTwoPi), 1e-9);
+    }
+  }
+  EXPECT_EQ(grid.corner(grid.num_elevation / 2, 17).z(), 0.0);
+  EXPECT_EQ(grid.corner(0, 17), Vec3(0, 0, -1));
+  EXPECT_EQ(grid.corner(grid.num_elevation, 17), Vec3(0, 0, 1));
+}
+
+// vv.far[k] is the distance along grid.corner(i, j): the VV computes its rays with trig tables,
+// DirectionGrid::corner directly; a wall x = 40 facing g checks both angles.
+TEST(VisibilityVolume, IntervalsLieAlongTheGridsCorners) {
   const VisibilityScene scene(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)}}));
   const VisibilityVolume vv = visibility_volume(scene, Vec3(0, 0, 0.5), 200.0, std::nullopt, 1.0);
   int checked = 0;
-  for (int i = 0; i < vv.grid.num_elevation; ++i)
+  for (int i = 0; i <= vv.grid.num_elevation; ++i)
     for (int j = 0; j < vv.grid.num_azimuth; ++j) {
-      const Vec3 d = vv.grid.direction(i, j);
+      const Vec3 d = vv.grid.corner(i, j);
       if (!(d.x() > 0.0)) continue;
       const double t = 40.0 / d.x();
       const Vec3 hit = Vec3(0, 0, 0.5) + t * d;
@@ -162,7 +178,7 @@ TEST(VisibilityVolume, WallsAndCreasesKeepTheMeshVolume) {
                                          {Vec3(-50, 30, 0), Vec3(-10, 80, 70)},
                                          {Vec3(-80, -90, 0), Vec3(-20, -40, 15)}}));
   for (const Vec3& g : {Vec3(0, 0, 0.5), Vec3(10, -30, 2.0), Vec3(-30, 0, 0.5)}) {
-    const double reference = visibility_volume(scene, g, 200.0, std::nullopt, 0.2).grid_volume();
+    const double reference = fine_reference_volume(scene, g, 200.0);
     for (double res : {2.0, 1.0}) {
       const VisibilityVolume vv = visibility_volume(scene, g, 200.0, std::nullopt, res);
       expect_valid(vv, "walls");
@@ -194,12 +210,13 @@ TEST(VisibilityVolume, OpenFieldMatchesAnalyticVolume) {
     const double hi = c.band ? c.band->second : 1e9;
     const double exact = ball_slab_volume(r, c.g.z(), std::max(lo, 0.0), hi);
     const std::string what = "g.z " + std::to_string(c.g.z()) + (c.band ? " band " + std::to_string(c.band->first) : "");
-    // The issue asks for 0.5%; the mesh (vertex rows on the caps' rims) does 0.1%. The cell
-    // grid cuts rims across a cell: 1% on thin bands.
+    // The issue asks for 0.5%; the mesh (vertex rows on the caps' rims) does 0.1%. The grid's
+    // trapezoid rule cuts rims across a cell, and for a POI on the ground gives the half row
+    // below the horizon the horizon's d_max: 2.3 % with the band from the ground.
     EXPECT_NEAR(vv.volume / exact, 1.0, 0.001) << what;
-    EXPECT_NEAR(vv.grid_volume() / exact, 1.0, 0.01) << what;
+    EXPECT_NEAR(vv.grid_volume() / exact, 1.0, 0.03) << what;
     expect_valid(vv, what);
-    EXPECT_EQ(vv.near.size(), vv.grid.size());
+    EXPECT_EQ(vv.near.size(), vv.grid.num_corners());
     // Band caps carry exact z: every vertex lies inside the band and the ground.
     EXPECT_GE(vv.mesh.vertices.col(2).minCoeff(), std::max(lo, 0.0) - 1e-9) << what;
     EXPECT_LE(vv.mesh.vertices.col(2).maxCoeff(), std::min(hi, c.g.z() + r) + 1e-9) << what;
@@ -208,14 +225,15 @@ TEST(VisibilityVolume, OpenFieldMatchesAnalyticVolume) {
 
 TEST(VisibilityVolume, NearIsPositiveWhenTheBandStartsAboveThePoi) {
   const VisibilityVolume vv = visibility_volume(open_field(), Vec3(0, 0, 0), 300.0, std::make_pair(50.0, 100.0), 2.0);
-  const int row = vv.grid.num_elevation - 1;  // looking straight up: visible from z = 50 to 100
+  const int row = vv.grid.num_elevation - 1;  // looking nearly straight up: visible from z = 50 to 100
   const std::size_t k = static_cast<std::size_t>(row) * vv.grid.num_azimuth;
-  const double s = vv.grid.direction(row, 0).z();  // the cell's sample ray
+  const double s = vv.grid.corner(row, 0).z();
   EXPECT_NEAR(vv.near[k], 50.0 / s, 1e-9);
   EXPECT_NEAR(vv.far[k], 100.0 / s, 1e-9);
   // Looking down or along the ground: nothing.
   EXPECT_TRUE(vv.empty(0));
   EXPECT_TRUE(vv.empty(static_cast<std::size_t>(vv.grid.num_elevation / 2 - 1) * vv.grid.num_azimuth));
+  EXPECT_TRUE(vv.empty(static_cast<std::size_t>(vv.grid.num_elevation / 2) * vv.grid.num_azimuth));
 }
 
 TEST(VisibilityVolume, BandOutOfReachGivesAnEmptyVolume) {
@@ -449,6 +467,46 @@ TEST(VisibilityVolume, SavesObjAndPly) {
   EXPECT_THROW(vv.save("/nonexistent-dir/vv.obj"), Error);
 }
 
+// Oracle: every grid corner's interval equals the one brute-force ray casting (first_hits along
+// DirectionGrid::corner, obstacles and ground, then d_max, the exact ground plane and the band)
+// gives. A ray grazing a
+// surface may go either way in floats: at most 0.3 % of the corners may differ.
+void expect_brute_force_intervals(const VisibilityScene& scene, const VisibilityVolume& vv) {
+  const DirectionGrid& grid = vv.grid;
+  Points3 dirs(static_cast<Eigen::Index>(grid.num_corners()), 3);
+  for (int i = 0; i <= grid.num_elevation; ++i)
+    for (int j = 0; j < grid.num_azimuth; ++j) dirs.row(i * grid.num_azimuth + j) = grid.corner(i, j).transpose();
+  const std::vector<double> hits = scene.first_hits(vv.poi, dirs, vv.d_max);
+  const Vec3& g = vv.poi;
+  const bool on_surface = std::abs(g.z() - scene.surface_height(g.head<2>())) < 1e-6;
+  std::size_t differ = 0, compared = 0;
+  for (std::size_t k = 0; k < grid.num_corners(); ++k) {
+    const double dz = dirs(static_cast<Eigen::Index>(k), 2);
+    if (on_surface && std::abs(dz) < 1e-9) continue;  // along the surface g stands on
+    double near = 0.0, far = std::min(hits[k], vv.d_max);
+    if (dz < 0.0) far = std::min(far, std::max(0.0, (scene.ground_level() - g.z()) / dz));  // exact ground plane
+    if (vv.altitude_band) {
+      const auto [lo, hi] = *vv.altitude_band;
+      if (std::abs(g.z() - lo) < 1e-3 || std::abs(g.z() - hi) < 1e-3) continue;  // g on a band face
+      if (dz != 0.0) {
+        const double a = (lo - g.z()) / dz, b = (hi - g.z()) / dz;
+        near = std::max(near, std::min(a, b));
+        far = std::min(far, std::max(a, b));
+      } else if (g.z() < lo || g.z() > hi) {
+        far = 0.0;
+      }
+    }
+    const bool empty = !(far > near);
+    const double tolerance = 1e-3 + 1e-4 * vv.d_max;
+    ++compared;
+    if (empty != vv.empty(k) || (!empty && (std::abs(near - vv.near[k]) > tolerance || std::abs(far - vv.far[k]) > tolerance)))
+      ++differ;
+  }
+  EXPECT_GT(compared, grid.num_corners() / 2);
+  EXPECT_LE(static_cast<double>(differ), 0.003 * static_cast<double>(compared))
+      << differ << " of " << compared << " corner intervals differ from brute force, g " << g.transpose();
+}
+
 // Seeded random POIs, bands (below, around and above the POI), ranges and resolutions: every VV
 // mesh is valid, its volume is close to the grid's, and no visible interval exceeds d_max.
 void random_volumes_are_valid(const Environment& env, int count, std::uint64_t seed) {
@@ -470,14 +528,28 @@ void random_volumes_are_valid(const Environment& env, int count, std::uint64_t s
     const VisibilityVolume vv = visibility_volume(scene, g, d_max, band, res);
     ++made;
     for (double f : vv.far) ASSERT_LE(f, d_max);
+    expect_brute_force_intervals(scene, vv);
     if (vv.mesh.faces.rows() == 0) continue;
     std::ostringstream what;
     what << "g " << g.transpose() << " d_max " << d_max << " band " << (band ? band->first : -1) << " "
          << (band ? band->second : -1);
     expect_valid(vv, what.str());
-    // Two discretisations of one VV (cell rays vs corner rays): close, looser on coarse grids
-    // where a thin band spans few cells.
+    // Two discretisations of one VV (the trapezoid rule vs the mesh): close, looser on coarse
+    // grids where a thin band spans few cells.
     EXPECT_NEAR(vv.volume / vv.grid_volume(), 1.0, 0.05 * res) << what.str();
+  }
+}
+
+// A crease (d_max meeting the ground, or a band plane) within a quarter step of a grid row takes
+// that row's place among the mesh's vertex rows: the grid's corners there get rays of their own.
+TEST(VisibilityVolume, GridRowsNextToACreaseAreTraced) {
+  const VisibilityScene scene(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)}, {Vec3(-50, 30, 0), Vec3(-10, 80, 70)}}));
+  const double d_max = 400.0;
+  for (const Vec3& g : {Vec3(0, 0, d_max * std::sin(0.9 * kPi / 180.0)), Vec3(0, 0, d_max * std::sin(3.1 * kPi / 180.0))}) {
+    const VisibilityVolume vv = visibility_volume(scene, g, d_max, std::nullopt, 1.0);
+    expect_brute_force_intervals(scene, vv);
+    const VisibilityVolume banded = visibility_volume(scene, Vec3(0, 0, 0.5), d_max, std::make_pair(g.z() + 0.5, 300.0), 1.0);
+    expect_brute_force_intervals(scene, banded);
   }
 }
 

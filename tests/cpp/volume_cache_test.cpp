@@ -153,6 +153,9 @@ TEST(VolumeFile, MissingIsNulloptAndBadFilesAreErrorsNamingThePath) {
   std::vector<char> version = bytes;
   version[8] = char(vt::kVolumeFileVersion + 1);
   bad("version.bin", version, "format version");
+  // Version 3 files (intervals per cell on rays of their own) are refused in one line naming it.
+  version[8] = char(3);
+  bad("version3.bin", version, "format version 3, this build reads version 4 (version 3 kept intervals per cell");
   // Garbage after a valid magic and version.
   std::vector<char> tail(bytes.begin(), bytes.begin() + 12);
   tail.resize(5000, '\x7f');
@@ -186,8 +189,8 @@ TEST(VolumeCacheKey, ChangesWithEveryInputAndOnlyThen) {
   EXPECT_EQ(distinct.size(), variants.size() + 1);
   // A fixed value: the key must stay stable across runs, builds and hosts (files on disk).
   // Independently computed as FNV-1a-64 over struct.pack('<QQddddQd', 3, 0, 0, 0, 0, 400, 0, 1)
-  // (3 = kVolumeFileVersion).
-  EXPECT_EQ(vt::volume_cache_file_name(key(0, vt::Vec3(0, 0, 0), 400.0, none, 1.0)), "vv-cc1b89dc8c68e4f6.bin");
+  // (4 = kVolumeFileVersion).
+  EXPECT_EQ(vt::volume_cache_file_name(key(0, vt::Vec3(0, 0, 0), 400.0, none, 1.0)), "vv-e7100185431828dd.bin");
   EXPECT_TRUE(std::regex_match(vt::volume_cache_file_name(base), std::regex("vv-[0-9a-f]{16}\\.bin")));
   EXPECT_EQ(vt::volume_cache_file_name(0x1fULL), "vv-000000000000001f.bin");
   // Randomized: different positions never collide in a few thousand draws.

@@ -76,8 +76,8 @@ vt::VisibilityVolume uniform_vv(int rows, int columns, double near, double far, 
   v.poi = poi;
   v.grid.num_elevation = rows;
   v.grid.num_azimuth = columns;
-  v.near.assign(v.grid.size(), near);
-  v.far.assign(v.grid.size(), far);
+  v.near.assign(v.grid.num_corners(), near);
+  v.far.assign(v.grid.num_corners(), far);
   return v;
 }
 
@@ -198,7 +198,7 @@ TEST(GridXor, IsAMetricOnRandomVolumes) {
   std::uniform_real_distribution<double> radius(0.0, 400.0);
   auto random_vv = [&] {
     auto v = uniform_vv(18, 36, 0.0, 0.0);
-    for (std::size_t k = 0; k < v.grid.size(); ++k) {
+    for (std::size_t k = 0; k < v.grid.num_corners(); ++k) {
       const double r1 = radius(rng), r2 = radius(rng);
       v.near[k] = std::min(r1, r2) * (k % 3 == 0 ? 1.0 : 0.0);
       v.far[k] = std::max(r1, r2);

@@ -69,7 +69,7 @@ struct EnumNames<XorFrame> {
 };
 
 // "radial": exact per direction on the meshes of two star VVs built over one sphere (what "mesh"
-// computes, without CGAL); "grid": per direction on the cell intervals; "mesh": CGAL
+// computes, without CGAL); "grid": per direction on the grid corners' intervals; "mesh": CGAL
 // corefinement. "auto": radial when it applies (POI frame, shares_radial_mesh), else grid (POI
 // frame, shares_direction_grid), else mesh.
 enum class XorMethod { automatic, radial, grid, mesh };
@@ -107,13 +107,13 @@ struct MeshXorOptions {
 // limit is exceeded.
 double mesh_xor_volume(const TriangleMesh& a, const TriangleMesh& b, const MeshXorOptions& options = {});
 
-// True when both VVs use the same direction grid with intervals for every cell.
+// True when both VVs use the same direction grid with intervals for every grid corner.
 bool shares_direction_grid(const VisibilityVolume& a, const VisibilityVolume& b);
 
-// The exact XOR volume of two VVs described on one direction grid, each about its own POI
-// (frame "poi"): both are then star-shaped about the origin, and along every direction of a
-// cell the symmetric difference of the visible intervals has the measure
-// integral r^2 dr = (f^3 - n^3)/3 per piece. Sum over cells of solid_angle * that measure.
+// The XOR volume of two VVs described on one direction grid, each about its own POI (frame
+// "poi"): both are then star-shaped about the origin, and along the ray of each grid corner the
+// symmetric difference of the visible intervals has the measure integral r^2 dr = (f^3 - n^3)/3
+// per piece. The trapezoid rule over the cells: sum over corners of corner_weight * that measure.
 // Error unless shares_direction_grid(a, b).
 double grid_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "visibility/radial_mesh.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/visibility.hpp"
 
@@ -21,27 +22,22 @@ double DirectionGrid::solid_angle(int row) const {
   return (kTwoPi / num_azimuth) * (std::sin(bottom + d_el) - std::sin(bottom));
 }
 
-Vec2 DirectionGrid::sample_offset(int row, int column) const {
-  // Weyl sequences with the R2 sequence's constants (1/rho and 1/rho^2, rho the plastic number):
-  // x steps by an irrational fraction from row to row and y from column to column, so x is
-  // equidistributed down every column and y along every row. x depending on the row only keeps
-  // the azimuths separable (trig tables per row and per column).
-  constexpr double kA = 0.7548776662466927;
-  constexpr double kB = 0.5698402909980532;
-  const double x = 0.5 + kA * row;
-  const double y = 0.5 + kB * column;
-  return {x - std::floor(x), y - std::floor(y)};
+double detail::corner_sine(int row, int num_elevation) {
+  if (row <= 0) return -1.0;
+  if (row >= num_elevation) return 1.0;
+  if (2 * row == num_elevation) return 0.0;
+  return std::sin((2 * row - num_elevation) * kPi / (2.0 * num_elevation));
 }
 
-Vec3 DirectionGrid::direction(int row, int column) const {
-  const Vec2 offset = sample_offset(row, column);
-  const double d_el = kPi / num_elevation;
-  const double bottom = std::sin(-kPi / 2.0 + row * d_el);
-  const double top = std::sin(-kPi / 2.0 + (row + 1) * d_el);
-  const double sin_el = bottom + offset.y() * (top - bottom);
+Vec3 DirectionGrid::corner(int row, int column) const {
+  const double sin_el = detail::corner_sine(row, num_elevation);
   const double cos_el = std::sqrt(std::max(0.0, 1.0 - sin_el * sin_el));
-  const double az = (column + offset.x()) * kTwoPi / num_azimuth;
+  const double az = column * kTwoPi / num_azimuth;
   return {cos_el * std::cos(az), cos_el * std::sin(az), sin_el};
+}
+
+double DirectionGrid::corner_weight(int row) const {
+  return 0.5 * ((row > 0 ? solid_angle(row - 1) : 0.0) + (row < num_elevation ? solid_angle(row) : 0.0));
 }
 
 DirectionGrid DirectionGrid::from_resolution(double resolution_deg) {
@@ -57,13 +53,13 @@ DirectionGrid DirectionGrid::from_resolution(double resolution_deg) {
 
 double VisibilityVolume::grid_volume() const {
   double total = 0.0;
-  for (int i = 0; i < grid.num_elevation; ++i) {
+  for (int i = 0; i <= grid.num_elevation; ++i) {
     double row = 0.0;
     for (int j = 0; j < grid.num_azimuth; ++j) {
       const std::size_t k = static_cast<std::size_t>(i) * grid.num_azimuth + j;
       if (far[k] > near[k]) row += far[k] * far[k] * far[k] - near[k] * near[k] * near[k];
     }
-    total += grid.solid_angle(i) * row / 3.0;
+    total += grid.corner_weight(i) * row / 3.0;
   }
   return total;
 }

@@ -109,20 +109,9 @@ int SphereGrid::ring(int v, std::array<int, 6>& out, std::vector<int>& pole_ring
   return n;
 }
 
-Directions::Directions(const DirectionGrid& g, const SphereGrid& s, const std::vector<double>& sin_el_rows)
-    : grid(g), sphere(s) {
-  const int na = g.num_azimuth;
+Directions::Directions(const SphereGrid& s, const std::vector<double>& sin_el_rows) : sphere(s) {
+  const int na = s.na;
   const double d_az = kTwoPi / na;
-  const double d_el = kPi / g.num_elevation;
-  for (int i = 0; i < g.num_elevation; ++i) {
-    const double bottom = std::sin(-kPi / 2.0 + i * d_el);
-    sin_bottom_cell.push_back(bottom);
-    sin_span_cell.push_back(std::sin(-kPi / 2.0 + (i + 1) * d_el) - bottom);
-    const double offset = g.sample_offset(i, 0).x() * d_az;
-    cos_offset_cell.push_back(std::cos(offset));
-    sin_offset_cell.push_back(std::sin(offset));
-  }
-  for (int j = 0; j < na; ++j) y_cell.push_back(g.sample_offset(0, j).y());
   for (double se : sin_el_rows) {
     sin_el_corner.push_back(se);
     cos_el_corner.push_back(std::sqrt(std::max(0.0, 1.0 - se * se)));

@@ -134,41 +134,17 @@ struct SphereGrid {
   int ring(int v, std::array<int, 6>& out, std::vector<int>& pole_ring) const;
 };
 
-// Unit directions of the grid's cells (through their sample points) and of the sphere grid's
-// corners, from trig tables.
+// Sine of the elevation of grid corner row i (DirectionGrid::corner): exactly -1, 0 and 1 at the
+// poles and on the horizon.
+double corner_sine(int row, int num_elevation);
+
+// Unit directions of the sphere grid's corners, from trig tables.
 struct Directions {
-  const DirectionGrid& grid;
   const SphereGrid& sphere;
-  // Cell rays: per row the sines of the cell's lower and upper elevation and the cos/sin of the
-  // sample's azimuth offset; per column the sample's sin(elevation) fraction.
-  std::vector<double> sin_bottom_cell, sin_span_cell, cos_offset_cell, sin_offset_cell, y_cell;
   std::vector<double> cos_el_corner, sin_el_corner, cos_az_corner, sin_az_corner;
 
   // sin_el_rows: sines of the mesh's vertex-row elevations, from -1 (south pole) to 1.
-  Directions(const DirectionGrid& g, const SphereGrid& s, const std::vector<double>& sin_el_rows);
-  std::size_t num_cells() const { return grid.size(); }
-  // The ray of cell (i, j): DirectionGrid::direction by angle addition, azimuth (j + x_i) d_az.
-  Vec3 cell(std::size_t i, std::size_t j) const {
-    const double sin_el = sin_bottom_cell[i] + y_cell[j] * sin_span_cell[i];
-    const double cos_el = std::sqrt(std::max(0.0, 1.0 - sin_el * sin_el));
-    const double cos_az = cos_az_corner[j] * cos_offset_cell[i] - sin_az_corner[j] * sin_offset_cell[i];
-    const double sin_az = sin_az_corner[j] * cos_offset_cell[i] + cos_az_corner[j] * sin_offset_cell[i];
-    return {cos_el * cos_az, cos_el * sin_az, sin_el};
-  }
-  // Ray k: the cells first (k = i * na + j), then the corners (k - num_cells).
-  Vec3 ray(std::size_t k) const {
-    const auto na = static_cast<std::size_t>(grid.num_azimuth);
-    if (k < num_cells()) {
-      // DirectionGrid::direction by angle addition: azimuth (j + x_i) d_az.
-      const std::size_t i = k / na, j = k % na;
-      const double sin_el = sin_bottom_cell[i] + y_cell[j] * sin_span_cell[i];
-      const double cos_el = std::sqrt(std::max(0.0, 1.0 - sin_el * sin_el));
-      const double cos_az = cos_az_corner[j] * cos_offset_cell[i] - sin_az_corner[j] * sin_offset_cell[i];
-      const double sin_az = sin_az_corner[j] * cos_offset_cell[i] + cos_az_corner[j] * sin_offset_cell[i];
-      return {cos_el * cos_az, cos_el * sin_az, sin_el};
-    }
-    return corner(static_cast<int>(k - num_cells()));
-  }
+  Directions(const SphereGrid& s, const std::vector<double>& sin_el_rows);
   Vec3 corner(int v) const {
     if (v == 0) return {0.0, 0.0, -1.0};
     if (v == sphere.num_vertices() - 1) return {0.0, 0.0, 1.0};

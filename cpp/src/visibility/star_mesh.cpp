@@ -266,9 +266,26 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     const Surface* sf = surface.data();
     auto gap = [&](int p, int q) { return std::abs(r[p] - r[q]) > kJumpCandidate * std::max(r[p], r[q]); };
     auto plane_pair = [&](int p, int q) { return sf[p] == sf[q] && is_plane(sf[p]); };
+    // Rows between the poles first test every quad without branches (a loop the compiler
+    // vectorizes; most quads have no gap), then look at the few that have one.
+    auto& any_gap = sc.row_gap;
+    any_gap.resize(static_cast<std::size_t>(na));
     for (int i = 0; i < ne; ++i) {
       const SphereGrid::QuadRow row = sphere.quad_row(i);
+      const bool inner = !row.south && !row.north;
+      if (inner) {
+        const double* lo = r + row.lo;
+        const double* hi = r + row.hi;
+        for (int j = 0; j + 1 < na; ++j) {
+          const double a = lo[j], b = lo[j + 1], c = hi[j], d = hi[j + 1];
+          const bool g = (std::abs(a - d) > kJumpCandidate * std::max(a, d)) | (std::abs(a - b) > kJumpCandidate * std::max(a, b)) |
+                         (std::abs(a - c) > kJumpCandidate * std::max(a, c));
+          any_gap[static_cast<std::size_t>(j)] = g ? 1 : 0;
+        }
+        any_gap[static_cast<std::size_t>(na - 1)] = 1;  // the wrapping quad: tested below
+      }
       for (int j = 0; j < na; ++j) {
+        if (inner && !any_gap[static_cast<std::size_t>(j)]) continue;
         const auto [v00, v01, v10, v11] = row.quad(j);
         const bool diagonal = gap(v00, v11), bottom = !row.south && gap(v00, v01), left = gap(v00, v10);
         if (!(diagonal || bottom || left)) continue;
@@ -610,7 +627,11 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     out[1] = p.y();
     out[2] = p.z();
   };
-  // Vertices first (the centroids are made from them): corners by rows of the sphere.
+  // Vertices first (the centroids are made from them): corners by rows of the sphere. A corner on
+  // a plane gets its exact z (point_on's, without a call per corner).
+  const std::array<double, 4> plane_z = {0.0, s.low, s.high, s.ground};
+  static_assert(static_cast<int>(Surface::band_low) == 1 && static_cast<int>(Surface::band_high) == 2 &&
+                static_cast<int>(Surface::ground) == 3);
   for_each_index(parallel, ne + 1, [&](int i) {
     const int first = sphere.row_first(i);
     const int last = i == 0 || i == ne ? first + 1 : first + na;
@@ -624,7 +645,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       out[0] = s.g.x() + r * (cos_el * dirs.cos_az_corner[j]);
       out[1] = s.g.y() + r * (cos_el * dirs.sin_az_corner[j]);
       out[2] = s.g.z() + r * sin_el;
-      if (surface[v] != Surface::radial) out[2] = point_on(s, Vec3::UnitZ(), 0.0, surface[v]).z();
+      if (surface[v] != Surface::radial) out[2] = plane_z[static_cast<std::size_t>(surface[v])];
     }
   });
   for (std::size_t k = 0; k < extra_vertex.size(); ++k)

@@ -52,7 +52,7 @@ class EdgeMap {
 
 // Buffers of one star mesh, kept between VVs so that a batch allocates them once.
 struct StarMeshScratch {
-  std::vector<std::uint8_t> alive, slot_flags, candidate;
+  std::vector<std::uint8_t> alive, slot_flags, candidate, row_gap;
   std::vector<Jump> jumps;
   EdgeMap edges;
   std::vector<std::int32_t> active;

@@ -96,6 +96,7 @@ struct Workspace {
   std::vector<double> corner_far;
   std::vector<detail::Surface> corner_surface;
   std::vector<Interval> corner;  // shell meshes
+  std::vector<int> missing_rows;  // grid corner rows that are no vertex row of the mesh
   detail::StarMeshScratch star;
 };
 
@@ -137,6 +138,67 @@ class WorkspaceLease {
   std::unique_ptr<Workspace> w_;
 };
 
+// The grid's intervals (near/far per grid corner) from the mesh's corner rays: the vertex rows
+// are the grid's corner rows plus crease rows, less the grid rows next to a crease, whose corners
+// (at most three rows) are traced here.
+void grid_intervals(VisibilityVolume& vv, const Setup& s, const detail::SphereGrid& sphere,
+                    const std::vector<double>& row_sines, const detail::Directions& dirs,
+                    const detail::TraceContext& tracer, Workspace& w) {
+  const int ne = vv.grid.num_elevation, na = vv.grid.num_azimuth;
+  const auto n = static_cast<std::size_t>(na);
+  vv.near.assign(vv.grid.num_corners(), 0.0);
+  vv.far.assign(vv.grid.num_corners(), 0.0);
+  auto set = [&](std::size_t k, double sin_el, double far_or_hit, const Interval* corner) {
+    if (s.poi_in_band) {
+      vv.far[k] = std::max(0.0, far_or_hit);
+      return;
+    }
+    const Interval iv = corner != nullptr ? *corner : detail::visible_interval(s, sin_el, far_or_hit);
+    if (iv.far > iv.near) {
+      vv.near[k] = iv.near;
+      vv.far[k] = iv.far;
+    }
+  };
+  w.missing_rows.clear();
+  std::size_t v = 0;  // vertex row
+  for (int i = 0; i <= ne; ++i) {
+    const double sine = detail::corner_sine(i, ne);
+    while (v + 1 < row_sines.size() && row_sines[v] < sine - 1e-12) ++v;
+    if (std::abs(row_sines[v] - sine) > 1e-12) {
+      w.missing_rows.push_back(i);
+      continue;
+    }
+    const int first = sphere.row_first(static_cast<int>(v));
+    const bool pole = v == 0 || v + 1 == row_sines.size();
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto c = static_cast<std::size_t>(pole ? first : first + static_cast<int>(j));
+      const std::size_t k = static_cast<std::size_t>(i) * n + j;
+      if (s.poi_in_band) set(k, sine, w.corner_far[c], nullptr);
+      else set(k, sine, 0.0, &w.corner[c]);
+    }
+  }
+  if (w.missing_rows.empty()) return;
+  auto ray = [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
+    for (std::size_t m = 0; m < count; ++m) {
+      const std::size_t r = (start + m) / n, j = (start + m) % n;
+      const double sine = detail::corner_sine(w.missing_rows[r], ne);
+      const double cosine = std::sqrt(std::max(0.0, 1.0 - sine * sine));
+      d[m] = Vec3(cosine * dirs.cos_az_corner[j], cosine * dirs.sin_az_corner[j], sine);
+      column[m] = static_cast<int>(j);
+    }
+  };
+  detail::trace_all(tracer, w.missing_rows.size() * n, ray, [&](std::size_t k, const Vec3& d, double hit) {
+    const std::size_t r = k / n, j = k % n;
+    const std::size_t out = static_cast<std::size_t>(w.missing_rows[r]) * n + j;
+    if (s.poi_in_band) {
+      detail::Surface surface;
+      set(out, d.z(), detail::star_far(s, d.z(), hit, surface), nullptr);
+    } else {
+      set(out, d.z(), hit, nullptr);
+    }
+  });
+}
+
 // The VV; `parallel` spreads its rays and rows over TBB's threads (the result is the same).
 VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_max,
                          const std::optional<std::pair<double, double>>& band, double resolution_deg, bool parallel,
@@ -159,13 +221,12 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
     s.poi_in_band = g.z() >= s.low - kBandTolerance && g.z() <= s.high + kBandTolerance;
   }
 
-  // Rays: every cell's sample ray (the grid's intervals), then every corner of the sphere grid (the
-  // mesh); the star mesh traces more rays where it locates jumps. Rays the clearance bounds show
-  // to meet no obstacle are not traced.
+  // Rays: one per corner of the sphere grid (the mesh and the grid's intervals); the star mesh
+  // traces more where it locates jumps. Rays the clearance bounds show to meet no obstacle are
+  // not traced.
   const std::vector<double> row_sines = vertex_row_sines(vv.grid, s);
   const detail::SphereGrid sphere{static_cast<int>(row_sines.size()) - 1, na};
-  const detail::Directions dirs(vv.grid, sphere, row_sines);
-  const std::size_t n_cells = vv.grid.size();
+  const detail::Directions dirs(sphere, row_sines);
   const auto n_corners = static_cast<std::size_t>(sphere.num_vertices());
   const detail::EmbreeScene& embree = detail::EmbreeScene::of(scene);
   WorkspaceLease lease;
@@ -178,39 +239,20 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   const detail::TraceContext tracer{embree, s, w.clearance, parallel, &counts};
   detail::PhaseTimer trace_timer(cost ? &cost->trace_s : nullptr);
 
-  vv.near.assign(n_cells, 0.0);
-  vv.far.assign(n_cells, 0.0);
-  // Cells row by row: one division per chunk of 64 rays.
-  auto cell_rays = [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
-    std::size_t i = start / static_cast<std::size_t>(na), j = start % static_cast<std::size_t>(na);
-    for (std::size_t m = 0; m < count; ++m) {
-      d[m] = dirs.cell(i, j);
-      column[m] = static_cast<int>(j);
-      if (++j == static_cast<std::size_t>(na)) j = 0, ++i;
-    }
-  };
-  if (s.poi_in_band) {
-    detail::trace_all(tracer, n_cells, cell_rays, [&](std::size_t k, const Vec3& d, double hit) {
-      detail::Surface surface;
-      const double far = detail::star_far(s, d.z(), hit, surface);
-      vv.far[k] = far > 0.0 ? far : 0.0;
-    });
-  } else {
-    detail::trace_all(tracer, n_cells, cell_rays, [&](std::size_t k, const Vec3& d, double hit) {
-      const Interval iv = detail::visible_interval(s, d.z(), hit);
-      if (iv.far > iv.near) {
-        vv.near[k] = iv.near;
-        vv.far[k] = iv.far;
-      }
-    });
-  }
-  // A corner ray lies on its column's left edge (the poles in every column).
+  // A corner ray lies on its column's left edge (the poles in every column). One division per
+  // chunk of 64 rays: rows and columns are stepped.
   auto corner_ray = [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
-    for (std::size_t m = 0; m < count; ++m) {
-      const std::size_t k = start + m;
-      d[m] = dirs.corner(static_cast<int>(k));
-      column[m] = k == 0 || k + 1 == n_corners ? 0 : static_cast<int>((k - 1) % static_cast<std::size_t>(na));
+    const auto columns = static_cast<std::size_t>(na);
+    std::size_t k = start;
+    if (k == 0) d[0] = dirs.corner(0), column[0] = 0, ++k;  // south pole
+    std::size_t i = 1 + (k - 1) / columns, j = (k - 1) % columns;
+    for (; k < start + count && k + 1 < n_corners; ++k) {
+      const double c = dirs.cos_el_corner[i];
+      d[k - start] = Vec3(c * dirs.cos_az_corner[j], c * dirs.sin_az_corner[j], dirs.sin_el_corner[i]);
+      column[k - start] = static_cast<int>(j);
+      if (++j == columns) j = 0, ++i;
     }
+    if (k + 1 == n_corners && k < start + count) d[k - start] = dirs.corner(static_cast<int>(k)), column[k - start] = 0;
   };
   if (s.poi_in_band) {
     w.corner_far.resize(n_corners);
@@ -218,15 +260,18 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
     detail::trace_all(tracer, n_corners, corner_ray, [&](std::size_t k, const Vec3& d, double hit) {
       w.corner_far[k] = detail::star_far(s, d.z(), hit, w.corner_surface[k]);
     });
-    trace_timer.stop();
-    detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, tracer, w.star, vv, cost);
-    vv.mesh_row_sines = row_sines;
   } else {
     w.corner.resize(n_corners);
     detail::trace_all(tracer, n_corners, corner_ray, [&](std::size_t k, const Vec3& d, double hit) {
       w.corner[k] = detail::visible_interval(s, d.z(), hit);
     });
-    trace_timer.stop();
+  }
+  grid_intervals(vv, s, sphere, row_sines, dirs, tracer, w);
+  trace_timer.stop();
+  if (s.poi_in_band) {
+    detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, tracer, w.star, vv, cost);
+    vv.mesh_row_sines = row_sines;
+  } else {
     detail::PhaseTimer mesh_timer(cost ? &cost->mesh_s : nullptr);
     vv.mesh = detail::build_shell_mesh(s, sphere, dirs, w.corner, vv.volume);
   }
@@ -268,7 +313,8 @@ VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double
 
 double volume_bytes(double resolution_deg) {
   const DirectionGrid grid = DirectionGrid::from_resolution(resolution_deg);
-  // Per cell: near and far (16 bytes), about one mesh vertex (24), two faces (24) and their slots (8).
+  // Per cell: near and far at its corner (16 bytes), about one mesh vertex (24), two faces (24) and
+  // their slots (8).
   return 72.0 * static_cast<double>(grid.size());
 }
 

@@ -129,9 +129,9 @@ std::string temporary_path(const std::string& path) {
 }  // namespace
 
 void write_volume_file(const VisibilityVolume& vv, const std::string& path) {
-  const std::size_t cells = vv.grid.size();
+  const std::size_t cells = vv.grid.num_corners();
   if (vv.near.size() != cells || vv.far.size() != cells)
-    detail::fail_field("vv.near.size()", vv.near.size(), "differs from the grid size " + detail::to_text(cells));
+    detail::fail_field("vv.near.size()", vv.near.size(), "differs from the grid's corner count " + detail::to_text(cells));
   Writer out;
   out.put_bytes(kMagic, sizeof kMagic);
   out.put(kVolumeFileVersion);
@@ -198,7 +198,8 @@ std::optional<VisibilityVolume> read_volume_file(const std::string& path) {
   payload.get_array(magic, sizeof magic);
   const auto version = payload.get<std::uint32_t>();
   if (version != kVolumeFileVersion)
-    payload.fail("format version " + std::to_string(version) + ", expected " + std::to_string(kVolumeFileVersion));
+    payload.fail("format version " + std::to_string(version) + ", this build reads version " +
+                 std::to_string(kVolumeFileVersion) + (version == 3 ? " (version 3 kept intervals per cell; recompute the VV)" : ""));
   std::uint64_t stored = 0;
   for (std::size_t b = 0; b < trailer; ++b)
     stored |= std::uint64_t(static_cast<unsigned char>(bytes[body + b])) << (8 * b);
@@ -215,7 +216,7 @@ std::optional<VisibilityVolume> read_volume_file(const std::string& path) {
   vv.grid.num_elevation = payload.get<std::int32_t>();
   vv.grid.num_azimuth = payload.get<std::int32_t>();
   if (vv.grid.num_elevation <= 0 || vv.grid.num_azimuth <= 0) payload.fail("grid size not positive");
-  const std::size_t cells = vv.grid.size();
+  const std::size_t cells = vv.grid.num_corners();
   payload.require_bytes(cells, 2 * sizeof(double));
   vv.near.resize(cells);
   vv.far.resize(cells);
@@ -277,10 +278,10 @@ void validate_volume(const VisibilityVolume& vv, const std::string& where) {
   const DirectionGrid expected = DirectionGrid::from_resolution(360.0 / grid.num_azimuth);
   if (expected.num_elevation != grid.num_elevation || expected.num_azimuth != grid.num_azimuth)
     fail("grid", grid_text, "not a grid DirectionGrid.from_resolution makes");
-  if (vv.near.size() != grid.size() || vv.far.size() != grid.size())
-    fail("near", std::to_string(vv.near.size()) + " cells", "must have one interval per grid cell");
+  if (vv.near.size() != grid.num_corners() || vv.far.size() != grid.num_corners())
+    fail("near", std::to_string(vv.near.size()) + " intervals", "must have one interval per grid corner");
   const double reach = vv.d_max * (1.0 + 1e-9);
-  for (std::size_t k = 0; k < grid.size(); ++k)
+  for (std::size_t k = 0; k < grid.num_corners(); ++k)
     if (!(vv.near[k] >= 0.0 && vv.near[k] <= reach && vv.far[k] >= 0.0 && vv.far[k] <= reach))
       fail("near/far[" + std::to_string(k) + "]", detail::to_text(vv.near[k]) + ", " + detail::to_text(vv.far[k]),
            "a visible interval lies in [0, d_max]");

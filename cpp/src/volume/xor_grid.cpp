@@ -1,4 +1,5 @@
-// The per-direction XOR volume of two VVs on one direction grid (the fast path of eq. (56)),
+// The per-direction XOR volume of two VVs on one direction grid's corners (the trapezoid rule; the
+// fast path of eq. (56) for VVs without a radial mesh),
 // the frame and method parsing, and the dispatch between the grid and the mesh paths.
 #include <algorithm>
 #include <cmath>
@@ -14,23 +15,27 @@ double radial_measure(double near, double far) {
   return far > near ? (far * far * far - near * near * near) / 3.0 : 0.0;
 }
 
-// Solid angle of one cell of row `row`: d_az * (sin(el_hi) - sin(el_lo)) for the grid pinned in
-// visibility.hpp (rows of equal elevation step from -pi/2). Computed here so that the fast path
-// depends on the data contract only.
-double cell_solid_angle(const DirectionGrid& grid, int row) {
+// The trapezoid weight of each corner of row `row` (0..num_elevation): half a cell of the row
+// below plus half a cell of the row above, cells of d_az * (sin(el_hi) - sin(el_lo)) for the grid
+// pinned in visibility.hpp. Computed here so that the fast path depends on the data contract only.
+double corner_weight(const DirectionGrid& grid, int row) {
   const double d_el = kPi / grid.num_elevation;
   const double d_az = kTwoPi / grid.num_azimuth;
-  const double lo = -0.5 * kPi + row * d_el;
-  return d_az * (std::sin(lo + d_el) - std::sin(lo));
+  auto cell = [&](int i) {
+    if (i < 0 || i >= grid.num_elevation) return 0.0;
+    const double lo = -0.5 * kPi + i * d_el;
+    return d_az * (std::sin(lo + d_el) - std::sin(lo));
+  };
+  return 0.5 * (cell(row - 1) + cell(row));
 }
 
 void require_intervals(const VisibilityVolume& v, const std::string& name) {
   if (v.grid.num_elevation <= 0 || v.grid.num_azimuth <= 0)
     detail::fail_field(name + ".grid", std::to_string(v.grid.num_elevation) + "x" + std::to_string(v.grid.num_azimuth),
                        "the direction grid is empty");
-  if (v.near.size() != v.grid.size() || v.far.size() != v.grid.size())
+  if (v.near.size() != v.grid.num_corners() || v.far.size() != v.grid.num_corners())
     detail::fail_field(name + ".near/far", std::to_string(v.near.size()) + "/" + std::to_string(v.far.size()),
-                       "need one interval per grid cell (" + std::to_string(v.grid.size()) + ")");
+                       "need one interval per grid corner (" + std::to_string(v.grid.num_corners()) + ")");
 }
 
 Points3 translated(const Points3& vertices, const Vec3& offset) {
@@ -44,8 +49,8 @@ Points3 translated(const Points3& vertices, const Vec3& offset) {
 bool shares_direction_grid(const VisibilityVolume& a, const VisibilityVolume& b) {
   return a.grid.num_elevation > 0 && a.grid.num_azimuth > 0 &&
          a.grid.num_elevation == b.grid.num_elevation && a.grid.num_azimuth == b.grid.num_azimuth &&
-         a.near.size() == a.grid.size() && a.far.size() == a.grid.size() && b.near.size() == b.grid.size() &&
-         b.far.size() == b.grid.size();
+         a.near.size() == a.grid.num_corners() && a.far.size() == a.grid.num_corners() &&
+         b.near.size() == b.grid.num_corners() && b.far.size() == b.grid.num_corners();
 }
 
 double grid_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b) {
@@ -57,7 +62,7 @@ double grid_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b) {
                            std::to_string(a.grid.num_azimuth) + ": the per-direction XOR needs one grid");
   const int columns = a.grid.num_azimuth;
   double total = 0.0;
-  for (int row = 0; row < a.grid.num_elevation; ++row) {
+  for (int row = 0; row <= a.grid.num_elevation; ++row) {
     double row_sum = 0.0;
     const std::size_t first = static_cast<std::size_t>(row) * static_cast<std::size_t>(columns);
     for (std::size_t k = first; k < first + static_cast<std::size_t>(columns); ++k) {
@@ -68,7 +73,7 @@ double grid_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b) {
       const double both = radial_measure(std::max(na, nb), std::min(fa, fb));
       row_sum += radial_measure(na, fa) + radial_measure(nb, fb) - 2.0 * both;
     }
-    total += cell_solid_angle(a.grid, row) * row_sum;
+    total += corner_weight(a.grid, row) * row_sum;
   }
   return std::max(total, 0.0);
 }

@@ -574,8 +574,7 @@ class PoiPath:
         """
 class DirectionGrid:
     """
-    Angular grid of a VV: num_elevation rows x num_azimuth columns of equal angular size over the sphere; the ray of cell (i, j) goes through its sample point
-    (sample_offset: staggered inside the cell, not its centre).
+    Angular grid of a VV: num_elevation rows x num_azimuth columns of equal angular size over the sphere; a VV samples its intervals at the cells' corners (corner).
     """
     @staticmethod
     def from_resolution(resolution_deg: typing.SupportsFloat | typing.SupportsIndex) -> DirectionGrid:
@@ -586,19 +585,19 @@ class DirectionGrid:
         """
         Centre azimuth of column j (rad, from +x).
         """
-    def direction(self, row: typing.SupportsInt | typing.SupportsIndex, column: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[3, 1]"]:
+    def corner(self, row: typing.SupportsInt | typing.SupportsIndex, column: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[3, 1]"]:
         """
-        Unit vector of the ray of cell (i, j), through its sample point.
+        Unit vector to corner (i, j), i in [0, num_elevation]: elevation -pi/2 + i*pi/num_elevation,
+        azimuth j*2pi/num_azimuth (rows 0 and num_elevation are the poles). A VV's intervals are
+        sampled on these rays.
+        """
+    def corner_weight(self, row: typing.SupportsInt | typing.SupportsIndex) -> float:
+        """
+        Trapezoid weight of each corner of row i (sr): half a cell below plus half a cell above.
         """
     def elevation(self, row: typing.SupportsInt | typing.SupportsIndex) -> float:
         """
         Centre elevation of row i (rad).
-        """
-    def sample_offset(self, row: typing.SupportsInt | typing.SupportsIndex, column: typing.SupportsInt | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
-        """
-        (x, y) in [0, 1)^2: where the ray of cell (i, j) crosses it, as fractions of its azimuth span (x,
-        by row) and of its sin(elevation) span (y, by column); Weyl sequences, equidistributed down
-        every column and along every row.
         """
     def solid_angle(self, row: typing.SupportsInt | typing.SupportsIndex) -> float:
         """
@@ -607,6 +606,11 @@ class DirectionGrid:
     @property
     def num_azimuth(self) -> int:
         ...
+    @property
+    def num_corners(self) -> int:
+        """
+        Number of corners: (num_elevation + 1) * num_azimuth.
+        """
     @property
     def num_elevation(self) -> int:
         ...
@@ -632,7 +636,7 @@ class VisibilityVolume:
         """
     def grid_volume(self) -> float:
         """
-        Volume represented by the grid intervals: sum of solid_angle * (far^3 - near^3) / 3.
+        Volume represented by the grid intervals: sum over corners of corner_weight * (far^3 - near^3) / 3.
         """
     def save(self, path: str) -> None:
         """
@@ -664,7 +668,7 @@ class VisibilityVolume:
     @property
     def far(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        End of the visible interval per cell (near >= far: nothing visible).
+        End of the visible interval per grid corner (near >= far: nothing visible).
         """
     @property
     def grid(self) -> DirectionGrid:
@@ -687,7 +691,7 @@ class VisibilityVolume:
     @property
     def near(self) -> numpy.typing.NDArray[numpy.float64]:
         """
-        Start of the visible interval per cell, (num_elevation, num_azimuth) metres.
+        Start of the visible interval per grid corner, (num_elevation + 1, num_azimuth) metres.
         """
     @property
     def poi(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[3, 1]"]:
@@ -1763,7 +1767,7 @@ def estimate_work(poi: PoiPath, planning: Planning) -> WorkEstimate:
     """
 def grid_xor_volume(a: VisibilityVolume, b: VisibilityVolume) -> float:
     """
-    The exact per-direction XOR volume of two VVs on one direction grid, each about its own POI.
+    The XOR volume of two VVs on one direction grid, each about its own POI: per grid corner, trapezoid rule.
     """
 def lambda_max() -> float:
     """
@@ -1930,8 +1934,8 @@ def xor_volume(a: VisibilityVolume, b: VisibilityVolume, frame: str = 'poi', met
     frame: "poi" translates each VV by minus its POI first (open terrain gives 0), "world" compares
     them in place. method: "radial" is the exact XOR of the two meshes computed per direction
     (star VVs on one direction grid: what "mesh" gives, without CGAL); "grid" is
-    the per-direction integral sum(solid_angle * |A xor B| measured in r^2 dr) over the cell intervals
-    of a shared direction grid; both need frame "poi" or equal POIs. "mesh" is CGAL corefinement
+    the per-direction integral sum(corner_weight * |A xor B| measured in r^2 dr) over the grid corners'
+    intervals of a shared direction grid (trapezoid rule); both need frame "poi" or equal POIs. "mesh" is CGAL corefinement
     of the closed meshes; "auto" takes radial, else grid, else mesh, as they apply.
     time_limit (s) aborts the mesh path with VistrackError. perturbation (rad): rotation of b's mesh
     about the axis (1,2,3) before the Boolean; default 1e-6 in the POI frame (identical sphere faces
