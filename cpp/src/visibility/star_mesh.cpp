@@ -185,11 +185,13 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   // Live corners (something visible) and live slots (all three corners live).
   auto& alive = sc.alive;
   alive.resize(static_cast<std::size_t>(nv));
-  bool all_alive = true;
+  int dead = 0;
   for (int v = 0; v < nv; ++v) {
-    alive[v] = far[v] > alive_gap ? 1 : 0;
-    all_alive = all_alive && alive[v];
+    const std::uint8_t a = far[v] > alive_gap ? 1 : 0;
+    alive[v] = a;
+    dead += 1 - a;
   }
+  const bool all_alive = dead == 0;
   auto& flags = sc.slot_flags;
   auto& candidate = sc.candidate;
   flags.resize(static_cast<std::size_t>(nt));
@@ -509,10 +511,15 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   auto& corner_vertex = sc.corner_vertex;
   int num_vertices = 0;
   if (all_alive) {
-    corner_vertex.resize(static_cast<std::size_t>(nv));
-    for (int v = 0; v < nv; ++v) corner_vertex[v] = v;
+    // The identity: kept from the previous VV when it was one too, of the same size.
+    if (!sc.corner_identity || corner_vertex.size() != static_cast<std::size_t>(nv)) {
+      corner_vertex.resize(static_cast<std::size_t>(nv));
+      for (int v = 0; v < nv; ++v) corner_vertex[v] = v;
+      sc.corner_identity = true;
+    }
     num_vertices = nv;
   } else {
+    sc.corner_identity = false;
     corner_vertex.assign(static_cast<std::size_t>(nv), -1);
     sphere.for_each_quad([&](int, int t, int v00, int v01, int v10, int v11) {
       if (live(t)) corner_vertex[v00] = corner_vertex[v01] = corner_vertex[v11] = 0;
@@ -602,7 +609,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
           };
           for_each_piece(t, [&](const Triangle& c) { emit(c, count_face, count_centroid); });
         }
-        if ((f[t] & kLive) && !all_alive) {
+        if (!all_alive && (f[t] & kLive)) {
           const int before = faces;
           border(t, slot_corners(t), [&](int, int, int) { ++faces; }, 0);
           any_border = any_border || faces > before;
@@ -705,7 +712,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       } else if (f[2 * j] & kLive) {
         for_each_piece(2 * (i * na + j), [&](const Triangle& piece) { emit(piece, face, make_centroid); });
       }
-      if ((f[2 * j] & kLive) && !all_alive) border(2 * (i * na + j), Triangle{v00, v01, v11}, face, apex);
+      if (!all_alive && (f[2 * j] & kLive)) border(2 * (i * na + j), Triangle{v00, v01, v11}, face, apex);
       if (f[2 * j + 1] == kLive) {
         out[0] = id[v00];
         out[1] = id[v11];
@@ -715,7 +722,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       } else if (f[2 * j + 1] & kLive) {
         for_each_piece(2 * (i * na + j) + 1, [&](const Triangle& piece) { emit(piece, face, make_centroid); });
       }
-      if ((f[2 * j + 1] & kLive) && !all_alive) border(2 * (i * na + j) + 1, Triangle{v00, v11, v10}, face, apex);
+      if (!all_alive && (f[2 * j + 1] & kLive)) border(2 * (i * na + j) + 1, Triangle{v00, v11, v10}, face, apex);
     }
     row_volume[static_cast<std::size_t>(i)] = plain + other;
   });

@@ -67,6 +67,7 @@ struct StarMeshScratch {
   std::vector<std::int32_t> extra_vertex;
   std::vector<std::int32_t> complex_slots;   // slots with a split or a jump, ascending
   std::vector<std::int32_t> corner_vertex;   // mesh vertex of each used corner, else -1
+  bool corner_identity = false;              // corner_vertex holds v -> v (every corner used)
   std::vector<std::int32_t> row_centroid;    // first centroid vertex of each sphere row
   std::vector<double> row_volume;
   std::vector<int> pole_ring;
