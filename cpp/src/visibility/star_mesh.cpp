@@ -596,8 +596,20 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     const std::uint8_t* f = flags.data();
     std::int32_t* offsets = triangle_faces.data();
     std::int32_t faces = 0;
+    auto& plain_row = sc.plain_row;
+    plain_row.assign(static_cast<std::size_t>(ne), 0);
     for (int i = 0; i < ne; ++i) {
       int centroids = 0;
+      // A row of plain slots only (no dead corner anywhere): one face each, no branch per slot.
+      if (all_alive) {
+        int plain = 0;
+        for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) plain += f[t] == kLive;
+        if (plain == 2 * na) {
+          plain_row[static_cast<std::size_t>(i)] = 1;
+          for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) offsets[t + 1] = ++faces;
+          continue;
+        }
+      }
       for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) {
         if (f[t] == kLive) {
           ++faces;
@@ -701,6 +713,24 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     const double* r = far.data();
     const std::int32_t* id = corner_vertex.data();
     const SphereGrid::QuadRow row = sphere.quad_row(i);
+    if (sc.plain_row[static_cast<std::size_t>(i)]) {
+      // Every corner is its own mesh vertex (all alive) and every slot one face: no branch per
+      // slot; the same sums in the same order as below.
+      for (int j = 0; j < na; ++j) {
+        const auto [v00, v01, v10, v11] = row.quad(j);
+        out[0] = v00;
+        out[1] = v01;
+        out[2] = v11;
+        out[3] = v00;
+        out[4] = v11;
+        out[5] = v10;
+        out += 6;
+        plain += r[v00] * r[v01] * r[v11] * det[0];
+        plain += r[v00] * r[v11] * r[v10] * det[1];
+      }
+      row_volume[static_cast<std::size_t>(i)] = plain;
+      return;
+    }
     for (int j = 0; j < na; ++j) {
       const auto [v00, v01, v10, v11] = row.quad(j);
       if (f[2 * j] == kLive) {

@@ -69,6 +69,7 @@ struct StarMeshScratch {
   std::vector<std::int32_t> corner_vertex;   // mesh vertex of each used corner, else -1
   bool corner_identity = false;              // corner_vertex holds v -> v (every corner used)
   std::vector<std::int32_t> row_centroid;    // first centroid vertex of each sphere row
+  std::vector<std::uint8_t> plain_row;       // sphere rows of plain slots only
   std::vector<double> row_volume;
   std::vector<int> pole_ring;
 };
