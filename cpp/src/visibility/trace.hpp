@@ -111,7 +111,9 @@ void trace_range(const TraceContext& c, std::size_t begin, std::size_t end, Fill
 // it, and the VV must not depend on the number of threads.
 template <class Fill, class Store>
 void trace_all(const TraceContext& c, std::size_t n, Fill fill, Store store) {
-  constexpr std::size_t kChunksPerTask = 32;
+  // Tasks of 8 chunks (512 rays): a VV alone spreads its bisection rounds (1-4k rays each) over
+  // the threads too, not only its corner rays.
+  constexpr std::size_t kChunksPerTask = 8;
   if (!c.parallel || n < 2 * 64 * kChunksPerTask) {
     FlushDenormals flush;
     trace_range(c, 0, n, fill, store);
