@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Mapping, Sequence
+from typing import Any, Mapping
 
 import numpy as np
 import yaml
@@ -23,7 +23,6 @@ from .._core import (
     Planning,
     PoiMotion,
     PoiPath,
-    RoadNetwork,
     Sensor,
     SimulationOptions,
     Uav,
@@ -33,7 +32,7 @@ from ..georeference import Georeference
 from ..io.documents import parse_yaml
 from ..io.text import read_text
 from ..report_options import ReportOptions, report_options
-from ..routes import route_ends, route_nodes
+from ..routes import road_route, route_ends, route_nodes
 from ..scenario_blocks import (
     City,
     Rename,
@@ -62,16 +61,6 @@ from ..schema import (
 __all__ = ["EnvironmentSpec", "PoiSpec", "ReportOptions", "Scenario", "default_scenario_text", "road_route"]
 
 DEMO_SCENARIO = Path(__file__).parent.parent / "scenarios" / "demo.yaml"
-
-
-def road_route(roads: RoadNetwork, via_points: Sequence[Sequence[float]]) -> list[int]:
-    """Road nodes from the node nearest the first point, through the nodes nearest the others,
-    joined by shortest routes along the road edges."""
-    via = [roads.nearest_node(np.asarray(p, dtype=float)) for p in via_points]
-    nodes = [via[0]]
-    for a, b in zip(via, via[1:]):
-        nodes += roads.shortest_route(a, b)[1:]
-    return nodes
 
 
 EnvironmentSpec = City  # the scenario's city block (the name predates the one schema)
