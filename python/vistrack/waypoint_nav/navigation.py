@@ -20,8 +20,8 @@ from ..preview import preview
 
 __all__ = [
     "CASES", "DEFAULTS", "METHODS", "PAPER_GUST_MODEL", "PAPER_RADII", "DubinsWaypointGuidance", "HorizonPath",
-    "NavigationFlight", "Options", "TurningPoint", "fly", "horizon_lengths", "horizon_path", "paper_flights",
-    "paper_gusts", "reachability", "theta_against_weight", "turning_point", "turning_points",
+    "NavigationFlight", "Options", "TurningPoint", "air_mass_turning_point", "fly", "horizon_lengths", "horizon_path",
+    "paper_flights", "paper_gusts", "reachability", "theta_against_weight", "turning_point", "turning_points",
 ]
 
 # DWN, the paper's WN and (beyond the paper) WN switching as ArduPlane does.
@@ -31,6 +31,7 @@ Options = _wn.Options
 TurningPoint = _wn.TurningPoint
 DubinsWaypointGuidance = _wn.DubinsWaypointGuidance
 turning_point = _wn.turning_point
+air_mass_turning_point = _wn.air_mass_turning_point  # wind-aware DWN: the horizon planned in the air mass
 turning_points = _wn.turning_points  # batch: poses (n, 3), w_next, w_after (n, 2)
 CASES: tuple[str, ...] = tuple(_wn.CASES)
 horizon_path = _wn.horizon_path
@@ -236,6 +237,7 @@ def fly(
     guidance: str = str(_OPTIONS.guidance),
     l1_period: float = _OPTIONS.l1_period,
     wind_aware: bool = False,
+    replan_interval: float = _OPTIONS.replan_interval,
 ) -> NavigationFlight:
     """Fly a route with DWN (``method="dwn"``), WN (``"wn"``: a waypoint is done inside R_WP) or,
     beyond the paper, ArduPlane's WN (``"wn_passed_line"``: also once past the line through the
@@ -246,6 +248,12 @@ def fly(
     R); DWN has none. ``wind`` is unknown to the guidance; ``max_time`` None: 3 (route length +
     2 pi R per waypoint) / v. ``weights`` (w_a, w_s) weigh arcs and straights in the turning
     points and in ``fuel``; ``integration`` "discrete" (the paper's) or "continuous".
+    ``wind_aware``: the guidance knows the mean wind (``wind`` without its gusts): the leg law
+    steers the course over the ground and DWN plans its turning points in the air mass.
+    ``replan_interval`` (s, DWN): re-plan the active turning point that often (section 2.1's
+    option); 0, the paper's flights: only when it becomes unreachable. Every flight ends once past
+    the line through the last waypoint perpendicular to the last leg, and the last waypoint's miss
+    is the distance where the path crosses that line.
     """
     route = route_array(waypoints)
     if start is None:
@@ -261,7 +269,7 @@ def fly(
                               waypoint_radius=waypoint_radius, weights=weights, wind=wind, integration=integration,
                               max_time=max_time, dynamics=dynamics, roll_time_constant=roll_time_constant,
                               max_roll_rate_deg_s=max_roll_rate_deg_s, guidance=guidance, l1_period=l1_period,
-                              wind_aware=wind_aware)
+                              wind_aware=wind_aware, replan_interval=replan_interval)
     except VistrackError as error:
         if start is not None:
             raise

@@ -1,0 +1,87 @@
+"""Issue 32's remainder: DWN with turning points planned in the air mass (wind-aware DWN), the
+paper's option of re-planning more often (section 2.1), and flights ending on the last waypoint's
+finish line."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+import numpy as np
+import pytest
+
+import vistrack as vt
+from support.paths import REPO
+from vistrack import VistrackError
+from vistrack import waypoint_nav as wn
+
+R = wn.DEFAULTS["turn_radius"]
+V = wn.DEFAULTS["speed"]
+ROUTE = wn.read_route(REPO / "examples" / "waypoints_paper.csv")
+
+
+def wind_at(ratio: float, angle: float) -> vt.flight.Wind:
+    return vt.flight.Wind(east=ratio * V * math.cos(angle), north=ratio * V * math.sin(angle))
+
+
+def test_air_mass_turning_point_is_the_horizon_of_the_moving_waypoints() -> None:
+    """Oracle: the returned path, moved back into the air frame, is turning_point's optimum for the
+    waypoints displaced by -w tau, tau the times its own arc lengths give (the fixed point), and
+    calm air gives turning_point itself."""
+    rng = np.random.default_rng(7)
+    for _ in range(20):
+        pose = (0.0, 0.0, rng.uniform(-math.pi, math.pi))
+        w_next = rng.uniform(3.0, 6.0) * R * np.array([1.0, rng.uniform(-0.5, 0.5)])
+        w_after = w_next + rng.uniform(4.0, 8.0) * R * np.array([math.cos(a := rng.uniform(-1.5, 1.5)), math.sin(a)])
+        wind = tuple(rng.uniform(-0.3, 0.3, 2) * V)
+        ground = wn.air_mass_turning_point(pose, w_next, w_after, R, V, wind)
+        w = np.asarray(wind)
+        to_next = (ground.first_arc + ground.first_straight + ground.arc_to_waypoint) / V
+        to_after = to_next + (ground.arc_from_waypoint + ground.last_straight) / V
+        air = wn.turning_point(pose, w_next - w * to_next, w_after - w * to_after, R)
+        assert air.length == pytest.approx(ground.length, abs=1e-9)
+        at_point = (air.first_arc + air.first_straight) / V
+        np.testing.assert_allclose(np.asarray(ground.point), np.asarray(air.point) + w * at_point, atol=1e-9)
+        calm = wn.air_mass_turning_point(pose, w_next, w_after, R, V, (0.0, 0.0))
+        still = wn.turning_point(pose, w_next, w_after, R)
+        np.testing.assert_array_equal(np.asarray(calm.point), np.asarray(still.point))
+    with pytest.raises(VistrackError, match="wind"):
+        wn.air_mass_turning_point((0.0, 0.0, 0.0), (4.0, 0.0), (8.0, 2.0), R, V, (V, 0.0))
+
+
+def test_air_mass_planning_is_exact_in_continuous_flight() -> None:
+    """Flown continuously (no step to overshoot a switch by), the air-mass plan passes every
+    waypoint of the example route in 0.3 v wind from 8 directions within 1e-3 R: the plan, not the
+    law, decides where the path goes."""
+    for a in np.linspace(0.0, 2 * math.pi, 8, endpoint=False):
+        f = wn.fly(ROUTE, wind=wind_at(0.3, a), wind_aware=True, integration="continuous")
+        assert f.all_reached and f.miss_distances.max() < 1e-3 * R
+
+
+def test_wind_aware_dwn_meets_the_issues_bounds_on_random_routes_and_winds() -> None:
+    """Issue 32's done-when: wind-aware DWN's largest miss (every waypoint, the last one included,
+    measured where the flight ends on its line) is at most 0.02 R at w = 0.1 v and 0.05 R at 0.3 v,
+    on seeded random routes and wind directions this seed was not tuned on; DWN planned in still
+    air misses several times more on the same flights."""
+    rng = np.random.default_rng(20261205)
+    for ratio, bound in ((0.1, 0.02), (0.3, 0.05)):
+        aware, still = 0.0, 0.0
+        for _ in range(10):
+            route = wn.random_route(rng, 6, R)
+            wind = wind_at(ratio, rng.uniform(0.0, 2 * math.pi))
+            f = wn.fly(route, wind=wind, wind_aware=True)
+            assert f.all_reached and f.swirls == 0
+            aware = max(aware, float(f.miss_distances.max()) / R)
+            still = max(still, float(wn.fly(route, wind=wind).miss_distances.max()) / R)
+        assert aware <= bound < still
+
+
+@pytest.mark.parametrize("aware,guidance,replan,integration",
+                         list(itertools.product((False, True), ("law5", "l1"), (0.0, 0.5), ("discrete", "continuous"))))
+def test_dwn_never_swirls_in_any_mode(aware: bool, guidance: str, replan: float, integration: str) -> None:
+    """DWN in every mode (wind-aware or not, law (5) or L1 legs, re-planning or not, discrete or
+    continuous) reaches every waypoint without a loop in 0.3 v wind from 6 directions."""
+    for a in np.linspace(0.0, 2 * math.pi, 6, endpoint=False):
+        f = wn.fly(ROUTE, wind=wind_at(0.3, a), wind_aware=aware, guidance=guidance, replan_interval=replan,
+                   integration=integration)
+        assert f.swirls == 0 and f.all_reached
