@@ -85,3 +85,49 @@ def test_dwn_never_swirls_in_any_mode(aware: bool, guidance: str, replan: float,
         f = wn.fly(ROUTE, wind=wind_at(0.3, a), wind_aware=aware, guidance=guidance, replan_interval=replan,
                    integration=integration)
         assert f.swirls == 0 and f.all_reached
+
+
+def last_turning_points(flight: wn.NavigationFlight) -> np.ndarray:
+    return np.array([r.path.point for r in flight.turning_point_records if not r.direct])
+
+
+@pytest.mark.parametrize("interval", [wn.DEFAULTS["dt"], 0.5])
+def test_replanning_in_calm_air_changes_nothing(interval: float) -> None:
+    """Section 2.1's option, invariance: without wind the vehicle flies the planned path, and a
+    path's tail is the best path from any of its points (Bellman), so re-planning every step or
+    every 0.5 s gives the same turning points and misses (to the law's step: 2e-3 R); the records
+    show it did re-plan (each planned after the switch that first planned it)."""
+    still = wn.fly(ROUTE)
+    again = wn.fly(ROUTE, replan_interval=interval)
+    np.testing.assert_allclose(last_turning_points(again), last_turning_points(still), atol=2e-3 * R)
+    np.testing.assert_allclose(again.miss_distances, still.miss_distances, atol=2e-3 * R)
+    later = [a.t > s.t for a, s in zip(again.turning_point_records, still.turning_point_records) if not s.direct]
+    assert all(later)
+
+
+def test_replanning_in_wind_misses_no_more() -> None:
+    """With wind (unknown, or known and with gusts the plan does not know) re-planning every step
+    or every 0.5 s misses no more than the paper's planning on seeded random routes and winds."""
+    rng = np.random.default_rng(99)
+    flights = []
+    for k in range(8):
+        route = wn.random_route(rng, 6, R)
+        gusts = wn.paper_gusts(k) if k % 2 else None
+        a = rng.uniform(0.0, 2 * math.pi)
+        ratio = rng.uniform(0.1, 0.3)
+        flights.append((route, vt.flight.Wind(east=ratio * V * math.cos(a), north=ratio * V * math.sin(a),
+                                              gusts=gusts)))
+    for aware in (False, True):
+        worst = {}
+        for interval in (0.0, wn.DEFAULTS["dt"], 0.5):
+            misses = [wn.fly(route, wind=wind, wind_aware=aware, replan_interval=interval).miss_distances.max()
+                      for route, wind in flights]
+            worst[interval] = max(misses)
+        assert worst[wn.DEFAULTS["dt"]] <= worst[0.0] + 1e-3 * R and worst[0.5] <= worst[0.0] + 1e-3 * R
+
+
+def test_replan_interval_is_checked() -> None:
+    with pytest.raises(VistrackError, match="replan_interval"):
+        wn.fly(ROUTE, replan_interval=-1.0)
+    with pytest.raises(VistrackError, match="replan_interval"):
+        wn.fly(ROUTE, method="wn", replan_interval=0.5)

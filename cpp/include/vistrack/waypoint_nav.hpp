@@ -148,8 +148,9 @@ class DubinsWaypointGuidance : public FlightGuidance {
   // The paper's option (section 2.1: "the trajectory may be updated more frequently than when the
   // turning point is updated (like under the conditions of high winds)"): every `interval`
   // seconds (> 0) the turning point of the active waypoint is planned again from the current
-  // pose; 0 (the default) plans only at the reachability switch. The direct flight to the last
-  // waypoint is not re-planned (its line ends at the waypoint).
+  // pose; 0 (the default) plans only at the reachability switch. Not within 0.3 R of the turning point
+  // (there a step's heading error can make the best path a loop), nor on the direct flight to the
+  // last waypoint (its line ends at the waypoint).
   void set_replan_interval(double interval);
   double replan_interval() const { return replan_interval_; }
 

@@ -134,7 +134,12 @@ void DubinsWaypointGuidance::advance(const Configuration& state, double t) {
     plan(state, t);
     return;
   }
-  if (replan_interval_ > 0.0 && t >= planned_at_ + replan_interval_ * (1.0 - 1e-9)) {
+  // Close to the turning point the horizon is ill-conditioned: the straight left to T_n is shorter
+  // than a step's heading error can absorb, and the best path from a slightly deviated pose may be
+  // a loop (seen re-planning every step in 0.3 v wind). Within 0.3 R of T_n (measured: from R on
+  // the corrections for an unknown wind stop too early) the line to it is flown as planned.
+  const bool near = (drifting_target(t) - Vec2(state.x, state.y)).norm() <= 0.3 * turn_radius_;
+  if (replan_interval_ > 0.0 && !near && t >= planned_at_ + replan_interval_ * (1.0 - 1e-9)) {
     log_.pop_back();  // the active waypoint's turning point, planned again from here
     plan(state, t);
   }
