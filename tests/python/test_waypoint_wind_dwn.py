@@ -131,3 +131,21 @@ def test_replan_interval_is_checked() -> None:
         wn.fly(ROUTE, replan_interval=-1.0)
     with pytest.raises(VistrackError, match="replan_interval"):
         wn.fly(ROUTE, method="wn", replan_interval=0.5)
+
+
+@pytest.mark.parametrize("method,radius", [("dwn", None), ("wn", 1.0), ("wn", 0.1), ("wn_passed_line", 0.5)])
+def test_every_flight_ends_on_the_last_waypoints_finish_line(method: str, radius: float | None) -> None:
+    """The flight ends at the first state past the line through the last waypoint perpendicular to
+    the last leg (WN no longer stops on entering R_WP there), and the last miss is the distance where
+    the path crosses that line: for WN at R_WP = R now a pursuit's miss, not about R."""
+    f = wn.fly(ROUTE, method=method, waypoint_radius=None if radius is None else radius * R,
+               wind=wind_at(0.1, 0.5 * math.pi))
+    assert f.finished and f.all_reached
+    w, leg = ROUTE[-1], ROUTE[-1] - ROUTE[-2]
+    along = (f.trajectory[:, 1:3] - w) @ leg / np.linalg.norm(leg)
+    assert along[-1] >= 0.0 > along[-2]
+    a, b = along[-2], along[-1]
+    crossing = f.trajectory[-2, 1:3] + (-a / (b - a)) * (f.trajectory[-1, 1:3] - f.trajectory[-2, 1:3])
+    assert f.miss_distances[-1] == pytest.approx(float(np.linalg.norm(crossing - w)), abs=1e-12)
+    assert f.miss_distances[-1] < 0.05 * R
+    assert f.metrics()["max_miss_over_R"] == pytest.approx(f.miss_distances.max() / R)

@@ -107,9 +107,8 @@ def run(args: argparse.Namespace) -> int:
           + ("" if args.paper_units else " (metres, m/s)"))
     for f in flights:
         smooth = f.flight.smoothness()
-        before, last = f.miss_distances[:-1], f.miss_distances[-1]
-        print(f"{f.label:>18}: max miss {(before.max() if len(before) else last) / R:.3f} R (the last, where the "
-              f"flight ends: {last / R:.3f} R), overshoot {f.overshoot / R:.3f} R, "
+        print(f"{f.label:>18}: max miss {f.miss_distances.max() / R:.3f} R (the last, at its finish line: "
+              f"{f.miss_distances[-1] / R:.3f} R), overshoot {f.overshoot / R:.3f} R, "
               f"swirls {f.swirls}, path {f.path_length:.4g}, time {f.duration:.4g}, all reached {f.all_reached}, "
               f"{smooth.roll_reversals_per_s:.2f} roll reversals/s")
     print(f"-> {args.out}")

@@ -210,9 +210,8 @@ class NavigationFlight:
             "fuel": self.fuel,
             "turning_points": self.turning_points.tolist(),
             "smoothness": self.flight.smoothness().as_dict() if len(self.flight.t) >= 2 else None,
-            # The flight stops at the last waypoint by construction: the misses before it, stated.
-            "max_miss_before_last_over_R": float(self.miss_distances[:-1].max() / R) if len(self.miss_distances) > 1
-            else None,
+            # Every waypoint counts: the last one's miss is where the path crosses its finish line.
+            "miss_at_last_over_R": float(self.miss_distances[-1] / R),
             "waypoints": self.waypoint_table(),
             "legs": self.leg_table(),
         }
