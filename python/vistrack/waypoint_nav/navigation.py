@@ -301,14 +301,16 @@ def paper_flights(waypoints: Points, wind: Optional[Wind] = None, radii: Sequenc
                   methods: Sequence[str] = ("dwn", "wn"), **options: Any) -> list[NavigationFlight]:
     """DWN and WN at each waypoint radius (in units of R) over one route: Figures 11 (no wind) and
     12 (``wind``); with "wn_passed_line" in ``methods`` also ArduPlane's switching at each radius.
-    ``options`` go to :func:`fly` (turn_radius, speed, dt, gains, start, ...)."""
+    ``options`` go to :func:`fly` (turn_radius, speed, dt, gains, start, ...; ``replan_interval``
+    to DWN's flight only)."""
     for method in methods:
         if method not in METHODS:
             raise VistrackError(f"method = {preview(method)}: must be one of " + ", ".join(map(repr, METHODS)))
     R = float(options.get("turn_radius", _OPTIONS.turn_radius))
+    replan = options.pop("replan_interval", _OPTIONS.replan_interval)  # DWN's alone
     flights = []
     if "dwn" in methods:
-        flights.append(fly(waypoints, method="dwn", wind=wind, **options))
+        flights.append(fly(waypoints, method="dwn", wind=wind, replan_interval=replan, **options))
     for method in ("wn", "wn_passed_line"):
         if method in methods:
             for fraction in radii:
