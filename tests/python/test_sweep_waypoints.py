@@ -88,3 +88,14 @@ def test_bad_units_name_the_key(base: dict[str, Any], message: str) -> None:
     with pytest.raises(vt.VistrackError) as error:
         SweepSpec.from_dict({"kind": "waypoints", "base": base, "parameters": {"method": ["dwn"]}})
     assert message in str(error.value)
+
+
+def test_units_may_vary_as_a_parameter() -> None:
+    """Each case takes its own units' vehicle: the paper's route in paper units, then the same
+    numbers read as metres, which the route check refuses naming route."""
+    spec = SweepSpec.from_dict({"kind": "waypoints", "base": {"route": str(PAPER), "units": "paper"},
+                                "parameters": {"units": ["paper", "metres"]}})
+    rows = vt.sweep.run_cases(spec.cases(), SERIAL)
+    assert rows[0]["run_status"] == "ok" and rows[0]["max_miss_over_R"] == wn.fly(read_route(PAPER)).metrics()[
+        "max_miss_over_R"]
+    assert rows[1]["run_status"] == "failed" and "set units: paper" in rows[1]["run_error"]

@@ -108,10 +108,9 @@ def _defaults(data: Mapping[str, Any], folder: Path) -> dict[str, Any]:
     units = data.get("units", "metres")
     if units not in _UNITS:
         raise fail("units", units, 'must be "metres" or "paper"')
-    d, calm, aircraft = wn.Options(), Wind(), Uav()
-    uav = ({"speed": d.speed, "min_turn_radius": d.turn_radius} if units == "paper" else
-           {"speed": aircraft.speed, "min_turn_radius": aircraft.min_turn_radius, "altitude": _ALTITUDE})
-    full: dict[str, Any] = {"units": units, "start": None, "method": d.method, "waypoint_radius": None, "uav": uav,
+    d, calm = wn.Options(), Wind()
+    # uav: the units' defaults fill it when a case flies (_units_uav), so that units may vary too.
+    full: dict[str, Any] = {"units": units, "start": None, "method": d.method, "waypoint_radius": None, "uav": {},
                             "dt": d.dt, "gains": None, "weights": list(d.weights), "integration": d.integration,
                             "max_time": None, "wind": {"east": calm.east, "north": calm.north, "gusts": None},
                             "guidance": None, "l1_period": _L1_PERIOD, "wind_aware": False,
@@ -171,12 +170,25 @@ def _wind(value: Any, seed: int, model: Optional[dict[str, float]]) -> Wind:
     return wind_block({"wind": wind})
 
 
+def _units_uav(paper: bool) -> Uav:
+    """The vehicle of the units: the paper's section 3 (R 0.7, v 0.8), or in metres the default
+    aircraft at the command's --altitude (which places the gusts)."""
+    if paper:
+        d = wn.Options()
+        return Uav(speed=d.speed, min_turn_radius=d.turn_radius)
+    uav = Uav()
+    uav.altitude = _ALTITUDE
+    return uav
+
+
 def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np.ndarray, dict[str, Any]]:
     """The route and fly()'s keyword arguments, validated (errors name the key and the value)."""
-    paper = data.get("units", "metres") == "paper"
+    units = data.get("units", "metres")
+    if units not in _UNITS:
+        raise fail("units", units, 'must be "metres" or "paper"')
+    paper = units == "paper"
     defaults = wn.Options()
-    default_uav = Uav(speed=defaults.speed, min_turn_radius=defaults.turn_radius) if paper else Uav()
-    uav = uav_block(data, default_uav).uav
+    uav = uav_block(data, _units_uav(paper)).uav
     given = data.get("uav", {}).get("dynamics") if isinstance(data.get("uav"), Mapping) else None
     if paper and given is not None and str(uav.dynamics) != "dubins":
         # The roll model needs g in m/s^2; the paper's units are dimensionless.
