@@ -213,6 +213,12 @@ void bind_waypoint_nav(py::module_& parent) {
            py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
            "The same with each leg to a turning point flown by L1 line tracking (law: L1Line).")
       .def_property_readonly("active", &DubinsWaypointGuidance::active, "index of the waypoint being approached")
+      .def("set_wind", &DubinsWaypointGuidance::set_wind, py::arg("mean_wind"), py::arg("speed"),
+           "Plan every turning point in the air mass of the mean wind (east, north) at airspeed speed, the law "
+           "flying the air frame's line (give it a law without wind); (0, 0): the paper's planning.")
+      .def_property("replan_interval", &DubinsWaypointGuidance::replan_interval,
+                    &DubinsWaypointGuidance::set_replan_interval,
+                    "re-plan the active turning point every so many s (section 2.1); 0: at the reachability switch")
       .def_property_readonly(
           "turning_points",
           [](const DubinsWaypointGuidance& g) {

@@ -149,3 +149,20 @@ def test_every_flight_ends_on_the_last_waypoints_finish_line(method: str, radius
     assert f.miss_distances[-1] == pytest.approx(float(np.linalg.norm(crossing - w)), abs=1e-12)
     assert f.miss_distances[-1] < 0.05 * R
     assert f.metrics()["max_miss_over_R"] == pytest.approx(f.miss_distances.max() / R)
+
+
+def test_the_bound_guidance_plans_in_the_air_mass_as_fly_does() -> None:
+    """DubinsWaypointGuidance.set_wind flown by vt.flight.fly is the flight fly(wind_aware=True)
+    makes up to the direct flight to the last waypoint (which fly() gives a wind-aware law)."""
+    wind = wind_at(0.2, 1.0)
+    expected = wn.fly(ROUTE, wind=wind, wind_aware=True, replan_interval=0.5)
+    guidance = wn.DubinsWaypointGuidance(vt.flight.LineFeedback(V, R, wn.DEFAULTS["dt"]), ROUTE[1:], R)
+    guidance.set_wind((wind.east, wind.north), V)
+    guidance.replan_interval = 0.5
+    flight = vt.flight.fly(guidance, expected.start, V, R, wind=wind, max_time=float(expected.flight.t[-1]) + 10.0)
+    direct = expected.turning_point_records[-1].t
+    n = int(np.searchsorted(expected.trajectory[:, 0], direct)) + 1
+    assert n > 100
+    np.testing.assert_allclose(np.column_stack([flight.t, flight.x, flight.y])[:n], expected.trajectory[:n, :3],
+                               atol=1e-12)
+    np.testing.assert_allclose(guidance.turning_points[:-1], expected.turning_points[:-1], atol=1e-12)

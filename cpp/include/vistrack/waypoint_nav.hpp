@@ -5,7 +5,10 @@
 //  * WN: the active waypoint, switching to the next inside the waypoint radius R_WP
 //    (flight.hpp's WaypointFollower);
 //  * DWN: the turning point T_n of the 3-point horizon (current pose C, W_n, W_{n+1}), switching
-//    when T_n enters the reachability zone; the last waypoint is flown to directly.
+//    when T_n enters the reachability zone; the last waypoint is flown to directly. Beyond the
+//    paper, with the mean wind known, T_n is planned in the air mass (air_mass_turning_point), and
+//    T_n may be re-planned more often (section 2.1's option, set_replan_interval).
+// Every flight ends past the line through the last waypoint perpendicular to the last leg.
 //
 // The horizon path (section 2.4, Figure 6): an arc on the vehicle's turning circle (direction d1),
 // the tangent straight to the circle of radius R through W_n (centre W_n + R (cos theta, sin theta),

@@ -134,11 +134,23 @@ class DubinsWaypointGuidance(vistrack._core.flight.FlightGuidance):
         """
         The same with each leg to a turning point flown by L1 line tracking (law: L1Line).
         """
+    def set_wind(self, mean_wind: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], speed: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        Plan every turning point in the air mass of the mean wind (east, north) at airspeed speed, the law flying the air frame's line (give it a law without wind); (0, 0): the paper's planning.
+        """
     @property
     def active(self) -> int:
         """
         index of the waypoint being approached
         """
+    @property
+    def replan_interval(self) -> float:
+        """
+        re-plan the active turning point every so many s (section 2.1); 0: at the reachability switch
+        """
+    @replan_interval.setter
+    def replan_interval(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
     @property
     def turning_points(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
         """

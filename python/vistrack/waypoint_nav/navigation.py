@@ -90,7 +90,8 @@ class NavigationFlight:
     """One WN or DWN flight along ``waypoints`` (the flown ones, after ``start``) and its metrics.
 
     ``trajectory`` is (n, 4): t, x, y, psi; ``flight`` the full record (commands, targets, wind).
-    Lengths are in the route's units; ``miss_distances[k]`` is the closest approach to waypoint k.
+    Lengths are in the route's units; ``miss_distances[k]`` is the closest approach to waypoint k
+    (for the last one, the distance where the path crosses its finish line, where the flight ends).
     """
 
     method: str
