@@ -10,7 +10,10 @@ markdown tables:
 2. the same route in wind of 0.1 v and 0.3 v from 16 directions: the largest miss;
 3. 50 random routes (vt.waypoint_nav.random_route: 6 waypoints, legs 4-10 R, turns <= 90 deg; seed
    1, not the tests' 20261205), each in 0.1 v and 0.3 v wind from a random direction: largest
-   and median miss over every waypoint of every flight, flights that swirl.
+   and median miss over every waypoint of every flight, flights that swirl;
+4. in metres (examples/waypoints_metres.csv, the default aircraft: 20 m/s, R 50 m, L1 period 8 s,
+   law (5)'s gains scaled by 0.7 / R) on both vehicle models, DWN planned in still air and in the
+   air mass, wind of 0, 0.1 v and 0.3 v from 8 directions: the largest miss.
 
     VISTRACK_BUILD_DIR=build/dev python3 bench/waypoint_wind_aware.py
 """
@@ -107,6 +110,27 @@ def random_table(count: int = 50, seed: int = 1) -> None:
         print(f"| {label} | " + " | ".join(cells) + f" | {swirling} | {reached} of {2 * count} |")
 
 
+def metres_table() -> None:
+    route = wn.read_route(REPO / "examples" / "waypoints_metres.csv")
+    uav = vt.Uav()
+    R_m, v_m = uav.min_turn_radius, uav.speed
+    base = {"turn_radius": R_m, "speed": v_m, "gains": vt.flight.paper_gains(R_m), "l1_period": 8.0}
+    print("| vehicle, legs | DWN, calm (R) | DWN, 0.1 v (R) | DWN wind-aware, 0.1 v (R) | DWN, 0.3 v (R) | "
+          "DWN wind-aware, 0.3 v (R) |")
+    print("|---|---|---|---|---|---|")
+    for dynamics, guidance in (("dubins", "law5"), ("dubins", "l1"), ("roll", "law5"), ("roll", "l1")):
+        cells = []
+        for ratio, aware in ((0.0, False), (0.1, False), (0.1, True), (0.3, False), (0.3, True)):
+            worst = 0.0
+            for k in range(8 if ratio else 1):
+                a = 2 * math.pi * k / 8
+                wind = vt.flight.Wind(east=ratio * v_m * math.cos(a), north=ratio * v_m * math.sin(a))
+                f = wn.fly(route, wind=wind, wind_aware=aware, dynamics=dynamics, guidance=guidance, **base)
+                worst = max(worst, float(f.miss_distances.max()) / R_m)
+            cells.append(f"{worst:.3f}")
+        print(f"| {dynamics}, {guidance} | " + " | ".join(cells) + " |")
+
+
 def main() -> None:
     route = wn.read_route(REPO / "examples" / "waypoints_paper.csv")
     paper_route_table(route)
@@ -114,6 +138,8 @@ def main() -> None:
     directions_table(route)
     print()
     random_table()
+    print()
+    metres_table()
 
 
 if __name__ == "__main__":
