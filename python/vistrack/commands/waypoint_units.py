@@ -42,4 +42,5 @@ def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any
     return {"turn_radius": R, "speed": v, "dt": args.dt, "integration": args.integration, "gains": gains,
             "dynamics": dynamics, "roll_time_constant": Uav().roll_time_constant,
             "max_roll_rate_deg_s": Uav().max_roll_rate_deg_s, "guidance": args.guidance or ("law5" if paper else "l1"),
-            "l1_period": args.l1_period, "wind_aware": args.wind_aware}
+            "l1_period": args.l1_period, "wind_aware": args.wind_aware,
+            "replan_interval": args.replan_interval}

@@ -56,8 +56,10 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                              "law5 with --paper-units")
     parser.add_argument("--l1-period", type=number("--l1-period", 0.0, 3600.0, low_open=True), default=L1_PERIOD,
                         help=f"guidance l1: the L1 period, s (default {L1_PERIOD:g}, as the follow runs fly)")
-    parser.add_argument("--wind-aware", action="store_true",
-                        help="the leg law knows the mean wind (--wind) and steers the course over the ground")
+    parser.add_argument("--wind-aware", action="store_true", help="the guidance knows the mean wind (--wind): the "
+                        "leg law steers the course over the ground, DWN plans its turning points in the air mass")
+    parser.add_argument("--replan-interval", type=number("--replan-interval", 0.0, 3600.0), default=0.0,
+                        help="DWN re-plans its turning point every so many s (default 0: when unreachable)")
     parser.add_argument("--gains", type=finite_numbers("--gains", 2, "0.1,5.25"),
                         help="law (5)'s g,h (default the paper's 0.1,5.25, scaled by 0.7 / R in metres)")
     parser.add_argument("--integration", choices=["discrete", "continuous"], default=d["integration"])
@@ -107,9 +109,8 @@ def run(args: argparse.Namespace) -> int:
           + ("" if args.paper_units else " (metres, m/s)"))
     for f in flights:
         smooth = f.flight.smoothness()
-        before, last = f.miss_distances[:-1], f.miss_distances[-1]
-        print(f"{f.label:>18}: max miss {(before.max() if len(before) else last) / R:.3f} R (the last, where the "
-              f"flight ends: {last / R:.3f} R), overshoot {f.overshoot / R:.3f} R, "
+        print(f"{f.label:>18}: max miss {f.miss_distances.max() / R:.3f} R (the last, at its finish line: "
+              f"{f.miss_distances[-1] / R:.3f} R), overshoot {f.overshoot / R:.3f} R, "
               f"swirls {f.swirls}, path {f.path_length:.4g}, time {f.duration:.4g}, all reached {f.all_reached}, "
               f"{smooth.roll_reversals_per_s:.2f} roll reversals/s")
     print(f"-> {args.out}")
