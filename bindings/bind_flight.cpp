@@ -201,6 +201,14 @@ void bind_flight(py::module_& parent) {
              return py::make_tuple(c.turn_rate, py::make_tuple(c.target.x(), c.target.y()), c.target_index);
            },
            py::arg("state"), py::arg("t") = 0.0, "(turn_rate, (target_x, target_y), target_index) at a state.")
+      .def(
+          "start", [](FlightGuidance& g, const Pose& q, double t) { g.start(configuration(q), t); },
+          py::arg("state"), py::arg("t") = 0.0,
+          "Reset the discrete state for a flight from (x, y, psi) at t (an outside vehicle model: vistrack.fdm).")
+      .def(
+          "advance", [](FlightGuidance& g, const Pose& q, double t) { g.advance(configuration(q), t); },
+          py::arg("state"), py::arg("t"),
+          "The stateful logic (switch targets, finish) at an accepted state (an outside vehicle model: vistrack.fdm).")
       .def_property_readonly("done", &FlightGuidance::done, "True once there is nothing more to fly")
       .def_property_readonly("revision", &FlightGuidance::revision, "counts changes of the active target");
 

@@ -256,9 +256,17 @@ class FlightGuidance:
     """
     A guidance law for fly(): turn-rate command and target from (x, y, psi) and t; its stateful logic runs only after accepted steps.
     """
+    def advance(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], t: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        The stateful logic (switch targets, finish) at an accepted state (an outside vehicle model: vistrack.fdm).
+        """
     def command(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> tuple[float, tuple[float, float], int]:
         """
         (turn_rate, (target_x, target_y), target_index) at a state.
+        """
+    def start(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        """
+        Reset the discrete state for a flight from (x, y, psi) at t (an outside vehicle model: vistrack.fdm).
         """
     @property
     def done(self) -> bool:
