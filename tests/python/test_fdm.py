@@ -74,8 +74,8 @@ def test_a_steady_coordinated_turn_has_radius_v2_over_g_tan_bank(name: str, spee
     steady = traj.t > 30.0
     radius = _circle_radius(traj.x[steady], traj.y[steady])
     assert radius == pytest.approx(speed**2 / (G * math.tan(math.radians(bank_deg))), rel=0.05)
-    # the body's bank (left wing down: negative) gives the same radius within 5 %
-    bank = -float(np.mean(traj.bank[steady]))
+    # the body's bank (the flight layer's sign: + turning left) gives the same radius within 5 %
+    bank = float(np.mean(traj.bank[steady]))
     assert radius == pytest.approx(speed**2 / (G * math.tan(bank)), rel=0.05)
     assert traj.psi[-1] > traj.psi[0] + 2 * math.pi  # more than a lap, counter-clockwise
     assert traj.altitude_error_max < 10.0

@@ -69,7 +69,7 @@ class FdmTrajectory:
     psi: np.ndarray
     altitude: np.ndarray
     airspeed: np.ndarray
-    bank: np.ndarray
+    bank: np.ndarray  # rad, the flight layer's sign: + for a left (counter-clockwise) turn
     bank_command: np.ndarray
     turn_rate_command: np.ndarray
     throttle: np.ndarray
@@ -134,7 +134,7 @@ def fly(guidance: Guidance, start: tuple[float, float, float], *, speed: float, 
         model.set_wind(float(winds[k, 0]), float(winds[k, 1]))
         rate = guidance.turn_rate(t, x, y, psi)
         bank_c = pilot.bank_command(rate, s.alpha)
-        out[:, k] = (t, x, y, psi, s.altitude, s.airspeed, s.phi, bank_c, rate, 0.0, winds[k, 0], winds[k, 1])
+        out[:, k] = (t, x, y, psi, s.altitude, s.airspeed, -s.phi, -bank_c, rate, 0.0, winds[k, 0], winds[k, 1])
         guidance.advance(t, x, y, psi)
         if on_step is not None:
             on_step(t, (x, y, psi))

@@ -10,6 +10,10 @@ wind of the flight layer is the air mass's velocity (east, north); it goes into 
 from __future__ import annotations
 
 import math
+import os
+import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 import jsbsim
@@ -43,16 +47,37 @@ class AircraftState:
     alpha: float  # angle of attack, rad
 
 
+@contextmanager
+def _quiet_stdout() -> Iterator[None]:
+    """JSBSim prints a banner on the process's standard output when it starts: keep it off ours."""
+    sys.stdout.flush()
+    try:
+        saved = os.dup(1)
+    except OSError:  # no file descriptor 1: nothing to keep clean
+        yield
+        return
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, 1)
+        yield
+    finally:
+        os.dup2(saved, 1)
+        os.close(saved)
+        os.close(devnull)
+
+
 class JsbsimModel:
     """A loaded JSBSim aircraft, placed at (x0, y0) with heading psi0 at the given altitude."""
 
     def __init__(self, aircraft: Aircraft, start: tuple[float, float, float], altitude: float):
         self.aircraft = aircraft
-        fdm = jsbsim.FGFDMExec(jsbsim.get_default_root_dir(), None)
-        fdm.set_debug_level(0)
-        if aircraft.aircraft_path is not None:
-            fdm.set_aircraft_path(str(aircraft.aircraft_path))
-        if not fdm.load_model(aircraft.model):
+        with _quiet_stdout():
+            fdm = jsbsim.FGFDMExec(jsbsim.get_default_root_dir(), None)
+            fdm.set_debug_level(0)
+            if aircraft.aircraft_path is not None:
+                fdm.set_aircraft_path(str(aircraft.aircraft_path))
+            loaded = fdm.load_model(aircraft.model)
+        if not loaded:
             raise VistrackError(f"aircraft = {aircraft.name!r}: JSBSim could not load model {aircraft.model!r}")
         fdm.set_dt(1.0 / aircraft.rates.fdm_hz)
         self.fdm = fdm
