@@ -4,13 +4,17 @@ tracking paper's Example 1 on Charlotte (issue 34's done-when: POI in view >= 99
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import vistrack as vt
+from vistrack import fdm
 from vistrack.scenario import Scenario
 from vistrack.tracking.pipeline import compute
+from vistrack.waypoint_nav.fdm import fly_fdm
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -65,3 +69,58 @@ def test_charlotte_paper_slow_on_the_6dof_uav_keeps_the_poi_in_view(charlotte: P
     assert six["simulation"]["duration_s"] == pytest.approx(kinematic["duration_s"], abs=0.1)
     # the 6-DOF flight follows the same orbit: after the capture it stays near R(t) as the kinematic one does
     assert six["simulation"]["radial_error_after_max_abs_m"] < 20.0
+
+
+def _paper_route(radius: float) -> np.ndarray:
+    return np.loadtxt(REPO / "examples" / "waypoints_paper.csv", delimiter=",", skiprows=4) * radius / 0.7
+
+
+def test_navigation_metrics_of_a_kinematic_flight_are_navigates_own() -> None:
+    """The metrics function the 6-DOF flights use, on a kinematic flight's samples: navigate()'s numbers."""
+    route = _paper_route(50.0)
+    flight = vt.waypoint_nav.fly(route, method="dwn", turn_radius=50.0, speed=20.0, dynamics="roll", guidance="l1",
+                                 l1_period=8.0, wind=vt.flight.Wind(north=2.0))
+    f = flight.flight
+    m = vt.waypoint_nav.navigation_metrics(list(f.t), list(f.x), list(f.y), list(f.command),
+                                           [int(i) for i in f.target_index], f.finished,
+                                           np.asarray(flight.start[:2]), flight.waypoints, 20.0, 50.0)
+    np.testing.assert_allclose(m["miss_distances"], flight.miss_distances, rtol=0, atol=1e-12)
+    assert m["swirls"] == flight.swirls
+    assert m["path_length"] == pytest.approx(flight.path_length, rel=1e-12)
+    assert list(m["reached"]) == [bool(r) for r in flight.reached]
+
+
+@pytest.mark.parametrize("wind_fraction", [0.0, 0.1])
+def test_dwn_on_the_6dof_uav_misses_as_the_roll_model_does(wind_fraction: float) -> None:
+    """The waypoint paper's route scaled by the aircraft's turn radius over 0.7, DWN at cruise speed (L1
+    legs), in calm air and in a wind of 0.1 v from the south: every waypoint reached, no swirl, each miss
+    within 0.05 R of the kinematic roll model's (the guidance, not the airframe, sets the misses)."""
+    plane = fdm.aircraft("aerosonde")
+    v = plane.envelope.cruise_speed
+    R = plane.envelope.min_turn_radius(v)
+    route = _paper_route(R)
+    wind = vt.flight.Wind(north=wind_fraction * v)
+    six = fly_fdm(route, method="dwn", turn_radius=R, speed=v, guidance="l1", l1_period=8.0, wind=wind)
+    kinematic = vt.waypoint_nav.fly(route, method="dwn", turn_radius=R, speed=v, dynamics="roll", guidance="l1",
+                                    l1_period=8.0, wind=wind)
+    assert six.metrics["all_reached"] and six.metrics["swirls"] == 0
+    np.testing.assert_allclose(six.miss_distances / R, kinematic.miss_distances / R, atol=0.05)
+    assert six.trajectory.altitude_error_max < 10.0
+    assert six.trajectory.airspeed_error_max < 2.0
+
+
+def test_the_waypoints_command_flies_jsbsim_beside_the_kinematic_flights(tmp_path: Path) -> None:
+    from vistrack.cli import main
+
+    out = tmp_path / "wp"
+    assert main(["waypoints", str(REPO / "examples" / "waypoints_metres.csv"), "--dynamics", "jsbsim", "--method",
+                 "dwn", "--out", str(out), "--quiet", "--no-html", "--no-animation"]) == 0
+    record = json.loads((out / "metrics.json").read_text())
+    assert record["flights"][0]["method"] == "dwn"  # the kinematic keys where they were
+    block = record["fdm"]
+    assert block["aircraft"] == "aerosonde"
+    assert [f["method"] for f in block["flights"]] == ["dwn"]
+    assert block["flights"][0]["all_reached"]
+    assert block["altitude_error_max_m"] < 10.0 and block["airspeed_error_max_m_s"] < 2.0
+    assert (out / "fdm.png").is_file()
+    assert "6-DOF flights on aerosonde" in (out / "report.md").read_text()

@@ -42,10 +42,12 @@ class FlightGuidanceLaw:
 
     def __init__(self, guidance: FlightGuidance, start: tuple[float, float, float], t0: float = 0.0):
         self.guidance = guidance
+        self.target_index = -1  # of the last command: the planner's waypoint index
         guidance.start(start, t0)
 
     def turn_rate(self, t: float, x: float, y: float, psi: float) -> float:
-        return float(self.guidance.command((x, y, psi), t)[0])
+        rate, _target, self.target_index = self.guidance.command((x, y, psi), t)
+        return float(rate)
 
     def advance(self, t: float, x: float, y: float, psi: float) -> None:
         self.guidance.advance((x, y, psi), t)
@@ -74,6 +76,7 @@ class FdmTrajectory:
     turn_rate_command: np.ndarray
     throttle: np.ndarray
     wind: np.ndarray
+    target_index: np.ndarray  # the guidance's target (a waypoint index; -1: none) at each sample
     finished: bool = False
     seconds: float = 0.0  # wall-clock time of the flight (trim included)
     extra: dict = field(default_factory=dict)
@@ -124,7 +127,7 @@ def fly(guidance: Guidance, start: tuple[float, float, float], *, speed: float, 
                 (0.0, trimmed.elevator, 0.0, trimmed.throttle))
     pilot = Autopilot(plane, trimmed, altitude, speed)
     sim_start = model.state().t  # one step after the initial condition: the flight's t0
-    out = np.full((12, n), np.nan)
+    out = np.full((13, n), np.nan)
     k = 0
     finished = False
     for k in range(n):
@@ -134,7 +137,8 @@ def fly(guidance: Guidance, start: tuple[float, float, float], *, speed: float, 
         model.set_wind(float(winds[k, 0]), float(winds[k, 1]))
         rate = guidance.turn_rate(t, x, y, psi)
         bank_c = pilot.bank_command(rate, s.alpha)
-        out[:, k] = (t, x, y, psi, s.altitude, s.airspeed, -s.phi, -bank_c, rate, 0.0, winds[k, 0], winds[k, 1])
+        out[:, k] = (t, x, y, psi, s.altitude, s.airspeed, -s.phi, -bank_c, rate, 0.0, winds[k, 0], winds[k, 1],
+                     getattr(guidance, "target_index", -1))
         guidance.advance(t, x, y, psi)
         if on_step is not None:
             on_step(t, (x, y, psi))
@@ -154,5 +158,6 @@ def fly(guidance: Guidance, start: tuple[float, float, float], *, speed: float, 
     return FdmTrajectory(
         aircraft=plane.name, speed=speed, altitude_command=altitude, trim=trimmed, t=rows[0], x=rows[1], y=rows[2],
         psi=np.unwrap(rows[3]), altitude=rows[4], airspeed=rows[5], bank=rows[6], bank_command=rows[7],
-        turn_rate_command=rows[8], throttle=rows[9], wind=rows[10:12].T.copy(), finished=finished,
+        turn_rate_command=rows[8], throttle=rows[9], wind=rows[10:12].T.copy(), target_index=rows[12].astype(int),
+        finished=finished,
         seconds=time.perf_counter() - started)
