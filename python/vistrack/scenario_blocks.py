@@ -160,10 +160,11 @@ def with_dynamics(uav: Uav, dynamics: str = DEFAULT_DYNAMICS) -> Uav:
     return Uav(**{**uav_dict(uav), "dynamics": dynamics})
 
 
-def uav_block(data: Mapping[str, Any], default: Uav, extra: Sequence[str] = ()) -> UavBlock:
+def uav_block(data: Mapping[str, Any], default: Uav, extra: Sequence[str] = (), fdm: bool = False) -> UavBlock:
     """``uav: {speed, min_turn_radius, altitude, dynamics, roll_time_constant, max_roll_rate_deg_s}``
     over ``default`` (its numbers; the model is :data:`DEFAULT_DYNAMICS` unless given); ``extra``
-    keys are returned unparsed for the product."""
+    keys are returned unparsed for the product. With ``fdm`` (a product that flies a 6-DOF aircraft),
+    also ``dynamics: jsbsim`` and ``aircraft``."""
     found = section(data, "uav", UAV_KEYS | set(extra))
     uav = Uav(**uav_dict(default))
     for key in UAV_NUMBERS:
@@ -171,11 +172,12 @@ def uav_block(data: Mapping[str, Any], default: Uav, extra: Sequence[str] = ()) 
             setattr(uav, key, number(f"uav.{key}", found[key]))
     dynamics = found.get("dynamics", DEFAULT_DYNAMICS)
     aircraft = None
-    if isinstance(dynamics, str) and dynamics.lower() == FDM_DYNAMICS:
+    if fdm and isinstance(dynamics, str) and dynamics.lower() == FDM_DYNAMICS:
         aircraft = aircraft_name(found.get("aircraft"))
         dynamics = DEFAULT_DYNAMICS  # the kinematic flight beside the 6-DOF one
     elif "aircraft" in found:
-        raise fail("uav.aircraft", found["aircraft"], f"needs uav.dynamics: {FDM_DYNAMICS}")
+        raise fail("uav.aircraft", found["aircraft"], f"needs uav.dynamics: {FDM_DYNAMICS}" if fdm
+                   else "a 6-DOF aircraft is not flown by this product")
     uav.dynamics = dynamics_name(dynamics)
     uav.validate()
     return UavBlock(uav, {key: found[key] for key in extra if key in found}, aircraft)

@@ -124,3 +124,35 @@ def test_the_waypoints_command_flies_jsbsim_beside_the_kinematic_flights(tmp_pat
     assert block["altitude_error_max_m"] < 10.0 and block["airspeed_error_max_m_s"] < 2.0
     assert (out / "fdm.png").is_file()
     assert "6-DOF flights on aerosonde" in (out / "report.md").read_text()
+
+
+def test_the_follow_truck_on_the_6dof_uav_sees_the_vehicle_as_the_kinematic_one(tmp_path: Path) -> None:
+    """Issue 34: the follow truck example's camera fraction in 6-DOF within 5 points of the kinematic run's
+    (the same planner, its path flown by L1; the aircraft within 10 m and 2 m/s of its commands)."""
+    from vistrack.cli import main
+
+    out = tmp_path / "follow"
+    assert main(["follow", str(REPO / "examples" / "follow_truck.yaml"), "--dynamics", "jsbsim", "--no-city",
+                 "--out", str(out), "--quiet", "--no-html", "--no-animation"]) == 0
+    record = json.loads((out / "metrics.json").read_text())
+    six = record["fdm"]
+    assert six["aircraft"] == "aerosonde"
+    assert abs(six["camera_fraction"] - record["camera_fraction"]) < 0.05
+    assert six["duration_s"] == pytest.approx(record["duration_s"], abs=0.1)
+    assert six["altitude_error_max_m"] < 10.0 and six["airspeed_error_max_m_s"] < 2.0
+    assert (out / "fdm.png").is_file()
+    assert "6-DOF flights on aerosonde" in (out / "report.md").read_text()
+
+
+def test_the_follow_scenario_key_and_products_without_a_6dof_flight() -> None:
+    from vistrack.follow.scenario import FollowScenario
+    from vistrack.scenario_blocks import uav_block
+
+    data = {"uav": {"speed": 21.0, "min_turn_radius": 50.0, "altitude": 200.0, "dynamics": "jsbsim"},
+            "vehicle": {"start": [0, 0], "legs": [{"heading": "east", "speed": 5.0, "duration": 60.0}]}}
+    assert FollowScenario.from_mapping(data, REPO).aircraft == "aerosonde"
+    # a product that flies no 6-DOF aircraft (loiter, the waypoint sweep) refuses the key, never ignores it
+    with pytest.raises(vt.VistrackError, match=r"uav.dynamics = 'jsbsim': must be one of roll, dubins"):
+        uav_block({"uav": {"dynamics": "jsbsim"}}, vt.Uav())
+    with pytest.raises(vt.VistrackError, match=r"uav.aircraft = 'c172p': a 6-DOF aircraft is not flown"):
+        uav_block({"uav": {"aircraft": "c172p"}}, vt.Uav())

@@ -24,10 +24,10 @@ def fdm_block(aircraft: str, trajectories: Sequence[FdmTrajectory], flights: lis
             "flights": flights}
 
 
-def fdm_figure(out: Path, kinematic: Any, kinematic_label: str, six: FdmTrajectory, title: str,
+def fdm_figure(out: Path, kinematic: tuple[Any, Any, Any, Any], kinematic_label: str, six: FdmTrajectory, title: str,
                reference: np.ndarray, reference_label: str) -> Picture:
-    """fdm.png: the 6-DOF flight beside the kinematic ``FlightTrajectory``, as a report picture."""
-    k = (np.asarray(kinematic.t), np.asarray(kinematic.x), np.asarray(kinematic.y), np.asarray(kinematic.bank))
+    """fdm.png: the 6-DOF flight beside the kinematic one (t, x, y, bank), as a report picture."""
+    k = (np.asarray(kinematic[0]), np.asarray(kinematic[1]), np.asarray(kinematic[2]), np.asarray(kinematic[3]))
     figure_fdm(k, kinematic_label, six, out / "fdm.png", title=title, reference=reference,
                reference_label=reference_label)
     return Picture("fdm.png", "6-DOF flight (JSBSim) beside the kinematic one",

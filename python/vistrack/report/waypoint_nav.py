@@ -144,7 +144,8 @@ def _add_fdm(out: Path, flights: Sequence[NavigationFlight], six_dof: Sequence[F
                      f"{six.trajectory.altitude_error_max:.2f}", f"{six.trajectory.airspeed_error_max:.2f}"])
     first = six_dof[0]
     twin = kinematic[(first.method, first.waypoint_radius if first.method != "dwn" else None)]
-    picture = fdm_figure(out, twin.flight, f"{twin.label}, {record['settings'].get('dynamics')} model",
+    k = twin.flight
+    picture = fdm_figure(out, (k.t, k.x, k.y, k.bank), f"{twin.label}, {record['settings'].get('dynamics')} model",
                          first.trajectory, f"{twin.label} on the 6-DOF {block['aircraft']} and the kinematic vehicle",
                          twin.route_points, "route")
     header = ["flight", "max miss before the last, kinematic (R)", "6-DOF (R)", "6-DOF all reached",

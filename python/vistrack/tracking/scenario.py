@@ -157,7 +157,7 @@ class Scenario:
         scenario.origin = georeference_block(data)
         scenario.environment = city_block(data, base) or City()
         scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
-        uav = uav_block(data, Uav(), extra=("start",))
+        uav = uav_block(data, Uav(), extra=("start",), fdm=True)
         scenario.uav, scenario.start, scenario.aircraft = uav.uav, _start(uav.extra), uav.aircraft
         scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(section(
