@@ -156,3 +156,35 @@ def test_the_follow_scenario_key_and_products_without_a_6dof_flight() -> None:
         uav_block({"uav": {"dynamics": "jsbsim"}}, vt.Uav())
     with pytest.raises(vt.VistrackError, match=r"uav.aircraft = 'c172p': a 6-DOF aircraft is not flown"):
         uav_block({"uav": {"aircraft": "c172p"}}, vt.Uav())
+
+
+def test_a_loiter_plan_on_the_6dof_uav_covers_its_aois_as_the_kinematic_flight() -> None:
+    """Section 4.1's four AOIs flown at 20 m/s (the Raven's 12 m/s is below the Aerosonde's envelope)
+    with LDLPP in a 3 m/s wind: the 6-DOF flight finishes, stays near the plan and covers the AOIs
+    during the loiters within 10 points of the kinematic roll-model flight."""
+    from dataclasses import replace
+
+    from vistrack import loiter
+    from vistrack.loiter.fdm import fdm_score
+    from vistrack.loiter.flying import fly_and_score
+
+    scenario = replace(loiter.load_scenario(REPO / "examples" / "loiter_4aoi.yaml"), speed=20.0)
+    plan = scenario.plan("ldlpp")
+    planned = scenario.coverage(plan)
+    kinematic = fly_and_score(scenario, plan, (3.0, 0.0), planned=planned, keep_trajectory=False)
+    six = fdm_score(scenario, plan, (3.0, 0.0), planned, "aerosonde")
+    assert six["finished"] and six["aircraft"] == "aerosonde"
+    assert abs(six["loiter_covered_fraction"] - kinematic["loiter_covered_fraction"]) < 0.1
+    assert six["max_cross_track_m"] < 50.0
+    assert six["flight_time_s"] == pytest.approx(kinematic["flight_time_s"], rel=0.1)
+    assert six["altitude_error_max_m"] < 10.0 and six["airspeed_error_max_m_s"] < 2.0
+
+
+def test_the_loiter_command_refuses_the_ravens_plan_on_the_aerosonde(capsys: pytest.CaptureFixture[str],
+                                                                    tmp_path: Path) -> None:
+    from vistrack.cli import main
+
+    code = main(["loiter", str(REPO / "examples" / "loiter_4aoi.yaml"), "--dynamics", "jsbsim", "--wind", "3,0",
+                 "--out", str(tmp_path / "l"), "--quiet"])
+    assert code != 0
+    assert "uav.speed = 12 m/s is below aerosonde's lowest airspeed 18.6 m/s" in capsys.readouterr().err
