@@ -11,7 +11,8 @@ JSBSim's atmosphere at every guidance step.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+import time
+from dataclasses import dataclass
 from typing import Callable, Optional, Protocol
 
 import numpy as np
@@ -79,7 +80,6 @@ class FdmTrajectory:
     target_index: np.ndarray  # the guidance's target (a waypoint index; -1: none) at each sample
     finished: bool = False
     seconds: float = 0.0  # wall-clock time of the flight (trim included)
-    extra: dict = field(default_factory=dict)
 
     @property
     def altitude_error_max(self) -> float:
@@ -104,8 +104,6 @@ def fly(guidance: Guidance, start: tuple[float, float, float], *, speed: float, 
     """Fly ``guidance`` from ``start`` = (x, y, psi) at t0 for ``duration`` s (or until it is done) on the
     aircraft, trimmed level at ``speed`` (true airspeed, m/s) and ``altitude`` (m). ``turn_radius`` is the
     plan's: checked against the envelope with the speed (VistrackError naming value and limit)."""
-    import time
-
     started = time.perf_counter()
     plane = aircraft if isinstance(aircraft, Aircraft) else load_aircraft(aircraft)
     plane.check_plan(speed, turn_radius)

@@ -16,8 +16,6 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 
-import jsbsim
-
 from .._core import VistrackError
 from .aircraft import Aircraft
 
@@ -71,6 +69,8 @@ class JsbsimModel:
 
     def __init__(self, aircraft: Aircraft, start: tuple[float, float, float], altitude: float):
         self.aircraft = aircraft
+        import jsbsim  # here: ``import vistrack`` does not load JSBSim
+
         with _quiet_stdout():
             fdm = jsbsim.FGFDMExec(jsbsim.get_default_root_dir(), None)
             fdm.set_debug_level(0)
@@ -175,4 +175,7 @@ class JsbsimModel:
             beta=f["aero/beta-rad"], alpha=f["aero/alpha-rad"])
         if not (math.isfinite(s.x) and math.isfinite(s.y) and math.isfinite(s.altitude)):
             raise VistrackError(f"aircraft = {self.aircraft.name!r}: the 6-DOF model diverged at t = {s.t:.2f} s")
+        if s.altitude < 0.0:
+            raise VistrackError(f"aircraft = {self.aircraft.name!r}: flew into the ground (altitude "
+                                f"{s.altitude:.1f} m) at t = {s.t:.2f} s")
         return s
