@@ -175,7 +175,11 @@ void bind_flight(py::module_& parent) {
       .def_property_readonly("dt", &LineFeedback::dt, "law step, s")
       .def_property_readonly("gains", [](const LineFeedback& l) { return std::make_pair(l.gains().g, l.gains().h); },
                              "(g, h)")
-      .def_property_readonly("smooth_sign", &LineFeedback::smooth_sign, "whether sign(phi_T) is smoothed");
+      .def_property_readonly("smooth_sign", &LineFeedback::smooth_sign, "whether sign(phi_T) is smoothed")
+      .def("set_wind", &LineFeedback::set_wind, py::arg("mean_wind"),
+           "Wind-aware (beyond the paper): phi_T and s_dot from the course over the ground with this known mean "
+           "wind (east, north), as navigate(wind_aware=True) flies.")
+      .def_property_readonly("wind_aware", &LineFeedback::wind_aware, "whether set_wind was called");
 
   py::class_<L1Line>(m, "L1Line",
                      "L1 line tracking as ArduPlane flies a leg (Park, Deyst & How 2004; AP_L1_Control): lateral "
@@ -190,7 +194,11 @@ void bind_flight(py::module_& parent) {
             return law.turn_rate(configuration(q), line_start, target);
           },
           py::arg("state"), py::arg("line_start"), py::arg("target"), "Turn rate a / v, rad/s.")
-      .def_property_readonly("distance", &L1Line::distance, "L1, length units");
+      .def_property_readonly("distance", &L1Line::distance, "L1, length units")
+      .def("set_wind", &L1Line::set_wind, py::arg("mean_wind"),
+           "Wind-aware (beyond the paper, as ArduPlane flies L1): steer the ground velocity with this known mean "
+           "wind (east, north), as navigate(wind_aware=True) flies.")
+      .def_property_readonly("wind_aware", &L1Line::wind_aware, "whether set_wind was called");
 
   py::class_<FlightGuidance>(m, "FlightGuidance",
                              "A guidance law for fly(): turn-rate command and target from (x, y, psi) and t; its "

@@ -188,3 +188,18 @@ def test_the_loiter_command_refuses_the_ravens_plan_on_the_aerosonde(capsys: pyt
                  "--out", str(tmp_path / "l"), "--quiet"])
     assert code != 0
     assert "uav.speed = 12 m/s is below aerosonde's lowest airspeed 18.6 m/s" in capsys.readouterr().err
+
+
+def test_dwn_on_the_6dof_uav_knowing_the_wind_misses_less() -> None:
+    """The same route and wind with the leg law knowing the mean wind (--wind-aware): every miss under
+    0.1 R, and the largest well under the wind-unaware flight's."""
+    plane = fdm.aircraft("aerosonde")
+    v = plane.envelope.cruise_speed
+    R = plane.envelope.min_turn_radius(v)
+    route = _paper_route(R)
+    wind = vt.flight.Wind(north=0.1 * v)
+    aware = fly_fdm(route, method="dwn", turn_radius=R, speed=v, guidance="l1", wind=wind, wind_aware=True)
+    unaware = fly_fdm(route, method="dwn", turn_radius=R, speed=v, guidance="l1", wind=wind)
+    assert aware.metrics["all_reached"]
+    assert np.max(aware.miss_distances) < 0.1 * R
+    assert np.max(aware.miss_distances) < 0.5 * np.max(unaware.miss_distances)

@@ -197,6 +197,10 @@ class LineFeedback:
         """
         speed v, turn_radius R, law step dt (psi_max = v dt / R <= pi/2), gains (g, h); smooth_sign: sign(phi_T) -> clamp(phi_T / psi_max, -1, 1) for continuous flight.
         """
+    def set_wind(self, mean_wind: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> None:
+        """
+        Wind-aware (beyond the paper): phi_T and s_dot from the course over the ground with this known mean wind (east, north), as navigate(wind_aware=True) flies.
+        """
     def terms(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], line_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> LineFeedbackTerms:
         """
         Every term of (5) at state (x, y, psi) for the line line_start -> target (LineFeedbackTerms).
@@ -235,6 +239,11 @@ class LineFeedback:
         """
         R
         """
+    @property
+    def wind_aware(self) -> bool:
+        """
+        whether set_wind was called
+        """
 class L1Line:
     """
     L1 line tracking as ArduPlane flies a leg (Park, Deyst & How 2004; AP_L1_Control): lateral acceleration 4 damping^2 v^2 / L1 sin(eta) towards the point L1 = damping period v / pi ahead on the line; continuous in the state (no chatter).
@@ -242,6 +251,10 @@ class L1Line:
     def __init__(self, speed: typing.SupportsFloat | typing.SupportsIndex, period: typing.SupportsFloat | typing.SupportsIndex = 17.0, damping: typing.SupportsFloat | typing.SupportsIndex = 0.75) -> None:
         """
         speed v; period (s, ArduPlane NAVL1_PERIOD 17) and damping (NAVL1_DAMPING 0.75).
+        """
+    def set_wind(self, mean_wind: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> None:
+        """
+        Wind-aware (beyond the paper, as ArduPlane flies L1): steer the ground velocity with this known mean wind (east, north), as navigate(wind_aware=True) flies.
         """
     def turn_rate(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], line_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> float:
         """
@@ -251,6 +264,11 @@ class L1Line:
     def distance(self) -> float:
         """
         L1, length units
+        """
+    @property
+    def wind_aware(self) -> bool:
+        """
+        whether set_wind was called
         """
 class FlightGuidance:
     """

@@ -99,8 +99,7 @@ def run(args: argparse.Namespace) -> int:
                                 gust_model=model, progress=bar, **options)
     settings = {**options, "units": "paper" if args.paper_units else "metres", "wind": [east, north],
                 "gusts_seed": args.gusts, "radii_over_R": list(radii)}
-    six = [] if aircraft is None else fdm_flights(flights, aircraft, wind, args.altitude, options["speed"],
-                                                  options["guidance"], options["l1_period"], options["gains"])
+    six = [] if aircraft is None else fdm_flights(flights, aircraft, wind, args.altitude, options)
     write_waypoints(args.out, flights, wind, str(args.route), settings, weights, mc, report_options(args), six)
     # The mission carries DWN's turning points when DWN flew, else the first WN flight's waypoints.
     export_mission(args.export, lambda ref: flights[0].to_mission(ref, args.altitude, speed=options["speed"]),

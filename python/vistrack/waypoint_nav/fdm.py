@@ -65,11 +65,12 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
             turn_radius: float, speed: float, altitude: float = 100.0, aircraft_name: str = "aerosonde",
             guidance: str = "l1", l1_period: float = 8.0, gains: Optional[tuple[float, float]] = None,
             waypoint_radius: Optional[float] = None, wind: Optional[Wind] = None, max_time: Optional[float] = None,
-            weights: tuple[float, float] = (1.0, 1.0)) -> FdmNavigation:
+            weights: tuple[float, float] = (1.0, 1.0), wind_aware: bool = False) -> FdmNavigation:
     """Fly the route (metres) on the aircraft with DWN (``method="dwn"``) or WN (``"wn"``, acceptance
     radius ``waypoint_radius``, None: R). ``start`` None: at the first waypoint heading to the second.
     ``guidance`` "l1" (period ``l1_period``) or "law5" (``gains``, None: ``paper_gains(R)``). ``max_time``
-    None: 3 (route length + 2 pi R per waypoint) / v, as navigate()."""
+    None: 3 (route length + 2 pi R per waypoint) / v, as navigate(). ``wind_aware``: the leg law knows the
+    constant part of ``wind`` (as navigate(wind_aware=True))."""
     route = route_array(waypoints)
     if start is None:
         pose, flown = default_start(route), route[1:]
@@ -84,6 +85,8 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
                            gains if gains is not None else paper_gains(turn_radius), smooth_sign=True)
     else:
         raise VistrackError(f"guidance = {guidance!r}: must be 'l1' or 'law5'")
+    if wind_aware and wind is not None:
+        law.set_wind(np.array([wind.east, wind.north]))
     if method == "dwn":
         planner: Any = _wn.DubinsWaypointGuidance(law, flown, turn_radius, weights)
     elif method == "wn":
@@ -103,14 +106,17 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
 
 
 def fdm_flights(flights: Sequence[NavigationFlight], aircraft_name: str, wind: Optional[Wind], altitude: float,
-                speed: float, guidance: str, l1_period: float, gains: tuple[float, float]) -> list[FdmNavigation]:
+                options: dict[str, Any]) -> list[FdmNavigation]:
     """Each DWN and WN flight of the kinematic vehicle flown again on the 6-DOF aircraft, same route, start,
-    turn radius, leg law and wind (ArduPlane-switching WN, ``wn_passed_line``, stays kinematic)."""
+    turn radius, leg law, wind and wind awareness (``options``: waypoint_nav.fly's keyword arguments the
+    kinematic flights had). ArduPlane-switching WN (``wn_passed_line``) stays kinematic."""
     out = []
     for f in flights:
         if f.method not in ("dwn", "wn"):
             continue
-        out.append(fly_fdm(f.waypoints, f.start, method=f.method, turn_radius=f.turn_radius, speed=speed,
-                           altitude=altitude, aircraft_name=aircraft_name, guidance=guidance, l1_period=l1_period,
-                           gains=gains, waypoint_radius=f.waypoint_radius, wind=wind))
+        out.append(fly_fdm(f.waypoints, f.start, method=f.method, turn_radius=f.turn_radius,
+                           speed=options["speed"], altitude=altitude, aircraft_name=aircraft_name,
+                           guidance=options["guidance"], l1_period=options["l1_period"], gains=options["gains"],
+                           waypoint_radius=f.waypoint_radius, wind=wind,
+                           wind_aware=bool(options.get("wind_aware", False))))
     return out
