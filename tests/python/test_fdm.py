@@ -95,6 +95,12 @@ def test_out_of_envelope_plans_are_refused_naming_value_and_limit() -> None:
         fdm.fly(law, (0, 0, 0), speed=20.0, altitude=300.0, duration=10.0, turn_radius=300.0, aircraft="c172p")
     with pytest.raises(vt.VistrackError, match=r"aircraft = 'glider9' is unknown: expected one of \['aerosonde'"):
         fdm.aircraft("glider9")
+    with pytest.raises(vt.VistrackError, match=r"uav.speed = nan: must be a finite airspeed in \[18.6, 35\] m/s"):
+        fdm.fly(law, (0, 0, 0), speed=math.nan, altitude=300.0, duration=10.0, turn_radius=100.0)
+    with pytest.raises(vt.VistrackError, match=r"start = \(0, nan, 0\)"):
+        fdm.fly(law, (0, math.nan, 0), speed=20.0, altitude=300.0, duration=10.0, turn_radius=100.0)
+    with pytest.raises(vt.VistrackError, match=r"uav.altitude = 5.0 m: expected 10-10000 m"):
+        fdm.fly(law, (0, 0, 0), speed=20.0, altitude=5.0, duration=10.0, turn_radius=100.0)
 
 
 @pytest.mark.parametrize("gusts", [False, True])

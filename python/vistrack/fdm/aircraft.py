@@ -83,7 +83,10 @@ class Aircraft:
         """VistrackError naming the value and the limit when a plan's airspeed or turn radius lies
         outside the envelope."""
         env = self.envelope
-        if not math.isfinite(speed) or speed < env.min_airspeed:
+        if not math.isfinite(speed):
+            raise VistrackError(f"uav.speed = {speed!r}: must be a finite airspeed in [{env.min_airspeed:g}, "
+                                f"{env.max_airspeed:g}] m/s for {self.name}")
+        if speed < env.min_airspeed:
             raise VistrackError(f"uav.speed = {speed:g} m/s is below {self.name}'s lowest airspeed "
                                 f"{env.min_airspeed:g} m/s (1.2-1.3 x its stall speed {env.stall_speed:g} m/s)")
         if speed > env.max_airspeed:

@@ -109,6 +109,8 @@ def fly(guidance: Guidance, start: tuple[float, float, float], *, speed: float, 
     plane.check_plan(speed, turn_radius)
     if not (math.isfinite(duration) and 0.0 < duration <= 1e6):
         raise VistrackError(f"duration = {duration!r} s: expected a positive number up to 1e6")
+    if len(start) != 3 or not all(math.isfinite(float(v)) and abs(float(v)) <= 1e7 for v in start):
+        raise VistrackError(f"start = {tuple(start)!r}: expected finite (x, y, psi), |x|, |y| <= 1e7 m")
     if not (math.isfinite(altitude) and 10.0 <= altitude <= 10000.0):
         raise VistrackError(f"uav.altitude = {altitude!r} m: expected 10-10000 m for a 6-DOF flight")
     rates = plane.rates
