@@ -203,3 +203,11 @@ def test_dwn_on_the_6dof_uav_knowing_the_wind_misses_less() -> None:
     assert aware.metrics["all_reached"]
     assert np.max(aware.miss_distances) < 0.1 * R
     assert np.max(aware.miss_distances) < 0.5 * np.max(unaware.miss_distances)
+
+
+def test_the_campus_example_is_refused_with_the_envelopes_reason(shared_data: Path) -> None:
+    """The campus flight test flies 3 m/s, a multirotor's speed: no fixed wing here flies it."""
+    scenario = Scenario.load(REPO / "examples" / "campus_flight_test.yaml")
+    scenario.aircraft = "aerosonde"
+    with pytest.raises(vt.VistrackError, match=r"uav.speed = 3 m/s is below aerosonde's lowest airspeed 18.6 m/s"):
+        compute(scenario, metric_spacings=())
