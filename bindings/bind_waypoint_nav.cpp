@@ -377,6 +377,45 @@ void bind_waypoint_nav(py::module_& parent) {
       py::arg("replan_interval") = defaults.replan_interval,
       "Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' "
       "vehicle, each leg by 'law5' or 'l1'; returns NavigationResult. Releases the GIL.");
+
+  m.def(
+      "navigation_metrics",
+      [](const std::vector<double>& t, const std::vector<double>& x, const std::vector<double>& y,
+         const std::vector<double>& command, const std::vector<int>& target_index, bool finished, const Vec2& start,
+         const InputArray& waypoints, double speed, double turn_radius, const Weights& weights) {
+        const std::size_t n = t.size();
+        if (x.size() != n || y.size() != n || command.size() != n || target_index.size() != n)
+          detail::fail_field("trajectory", static_cast<double>(n),
+                             "t, x, y, command and target_index must have the same length");
+        FlightTrajectory traj;
+        traj.t = t;
+        traj.x = x;
+        traj.y = y;
+        traj.command = command;
+        traj.target_index = target_index;
+        traj.finished = finished;
+        traj.psi.assign(n, 0.0);
+        const NavigationMetrics r =
+            navigation_metrics(traj, start, to_points(waypoints, "waypoints"), speed, turn_radius, fuel_weights(weights));
+        py::dict out;
+        out["miss_distances"] = to_numpy(r.miss_distances);
+        out["closest_times"] = to_numpy(r.closest_times);
+        out["reached"] = std::vector<bool>(r.reached.begin(), r.reached.end());
+        out["all_reached"] = r.all_reached;
+        out["overshoot"] = r.overshoot;
+        out["undershoot"] = r.undershoot;
+        out["swirls"] = r.swirls;
+        out["path_length"] = r.path_length;
+        out["duration"] = r.duration;
+        out["fuel"] = r.fuel;
+        return out;
+      },
+      py::arg("t"), py::arg("x"), py::arg("y"), py::arg("command"), py::arg("target_index"), py::arg("finished"),
+      py::arg("start"), py::arg("waypoints"), py::arg("speed"), py::arg("turn_radius"),
+      py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
+      "The metrics of navigate() (miss distances, reached, over- and undershoot, swirls, path length, duration, "
+      "fuel) of a flight flown elsewhere (vistrack.fdm): samples t, x, y, the turn-rate command and the guidance's "
+      "target index, as a dict.");
 }
 
 }  // namespace vistrack::bindings

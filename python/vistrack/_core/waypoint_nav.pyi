@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core.flight
-__all__: list[str] = ['CASES', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'Options', 'TurningPoint', 'TurningPointRecord', 'TurningPoints', 'air_mass_turning_point', 'horizon_lengths', 'horizon_path', 'navigate', 'reachability', 'turning_point', 'turning_points']
+__all__: list[str] = ['CASES', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'Options', 'TurningPoint', 'TurningPointRecord', 'TurningPoints', 'air_mass_turning_point', 'horizon_lengths', 'horizon_path', 'navigate', 'navigation_metrics', 'reachability', 'turning_point', 'turning_points']
 class HorizonPath:
     """
     The horizon path C -> arc -> straight -> T_n -> arc through W_n -> straight -> W_{n+1}.
@@ -430,6 +430,10 @@ def horizon_path(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing
 def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), wind: vistrack._core.flight.Wind | None = None, integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0, wind_aware: bool = False, replan_interval: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> NavigationResult:
     """
     Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' vehicle, each leg by 'law5' or 'l1'; returns NavigationResult. Releases the GIL.
+    """
+def navigation_metrics(t: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], x: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], y: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], command: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], target_index: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex], finished: bool, start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> dict:
+    """
+    The metrics of navigate() (miss distances, reached, over- and undershoot, swirls, path length, duration, fuel) of a flight flown elsewhere (vistrack.fdm): samples t, x, y, the turn-rate command and the guidance's target index, as a dict.
     """
 def reachability(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
     """

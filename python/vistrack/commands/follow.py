@@ -20,7 +20,7 @@ from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
 from .output import add_report_arguments, output_folder, report_options
-from .types import add_dynamics_argument, number
+from .types import add_dynamics_argument, fdm_choice, number
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -32,7 +32,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--no-compensation", dest="compensation", action="store_false", default=None,
                         help="plan without the wind estimate (the paper's Fig. 6)")
     parser.add_argument("--no-city", dest="city", action="store_false", help="skip the city runs")
-    add_dynamics_argument(parser)
+    add_dynamics_argument(parser, fdm=True)
     parser.add_argument("--export-tolerance", type=number("--export-tolerance", 0.0, 1e7), default=1.0, metavar="M",
                         help="--export keeps the 1 Hz waypoints Douglas-Peucker needs at this tolerance "
                              "(default 1 m; 0: every waypoint)")
@@ -46,8 +46,10 @@ def run(args: argparse.Namespace) -> int:
     options = report_options(args)
     output_folder(args.out)  # a file there is an error now, not after the runs
     scenario = FollowScenario.load(args.scenario)
-    if args.dynamics is not None:
-        scenario.uav.dynamics = args.dynamics
+    dynamics, aircraft = fdm_choice(args)
+    if dynamics is not None:
+        scenario.uav.dynamics = dynamics
+    scenario.aircraft = aircraft or scenario.aircraft
     city = args.city and scenario.city_available()
     if args.city and scenario.city is not None and not city:
         print(f"city data not found ({scenario.city.describe()}): skipping the city runs")
@@ -58,6 +60,10 @@ def run(args: argparse.Namespace) -> int:
           f"lag {record['along_track_lag_m']:.1f} m; {modes}; {record['mode_switches']} switches; "
           f"camera {100 * record['camera_fraction']:.1f} %"
           + _baseline_summary(record.get("baseline")) + f" -> {args.out}")
+    if "fdm" in record:
+        six = record["fdm"]
+        print(f"6-DOF on {six['aircraft']} (JSBSim): camera {100 * six['camera_fraction']:.1f} %, altitude within "
+              f"{six['altitude_error_max_m']:.2f} m, airspeed within {six['airspeed_error_max_m_s']:.2f} m/s")
     if "note" in record:
         print(f"note: {record['note']}")
     uav = scenario.uav

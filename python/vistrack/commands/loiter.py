@@ -24,7 +24,7 @@ from ..report import loiter as report
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_missions
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
-from .types import UsageError, add_dynamics_argument, count, length
+from .types import UsageError, add_dynamics_argument, count, fdm_choice, length
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -48,7 +48,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="also fly every plan in winds of these speeds (m/s) from 8 directions")
     p.add_argument("--altitude", type=length("--altitude"),
                    help="mission altitude for --export, m (default: the camera's, 61 m)")
-    add_dynamics_argument(p)
+    add_dynamics_argument(p, fdm=True)
     add_export_arguments(p)
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     add_report_arguments(p)
@@ -75,8 +75,9 @@ def run(args: argparse.Namespace) -> int:
         if not args.scenarios:
             raise UsageError("scenarios: give at least one scenario file, or --random N")
         scenarios = [loiter.load_scenario(path) for path in args.scenarios]
+        dynamics, aircraft = fdm_choice(args)
         for scenario in scenarios:
-            scenario.dynamics = args.dynamics or scenario.dynamics
+            scenario.dynamics, scenario.aircraft = dynamics or scenario.dynamics, aircraft or scenario.aircraft
         rows, written, planned = [], [], 0
         for scenario in scenarios:  # (--export takes one: its plans are these runs')
             refused: dict[str, str] = {}
@@ -101,7 +102,7 @@ def run(args: argparse.Namespace) -> int:
             raise VistrackError("--method: no method given can fly " + ("this layout" if len(scenarios) == 1 else
                                                                          "any of these layouts"))
         if winds and len(scenarios) == 1:
-            print(report.wind_markdown(loiter_study.wind_summary(rows)), end="")
+            print(report.wind_markdown(loiter_study.wind_summary(rows)) + report.fdm_markdown(rows), end="")
         if len(scenarios) > 1:
             written += report.write_table(args.out, scenarios, rows)
             print((args.out / "table.md").read_text(encoding="utf-8"), end="")

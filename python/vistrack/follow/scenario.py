@@ -61,6 +61,7 @@ from ..scenario_blocks import (
 )
 from ..schema import beta as schema_beta
 from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
+from .fdm import FollowFdm, fly_follow_fdm
 from .files import read_road_path, read_vehicle_track
 from .simulation import (
     DownwardCamera,
@@ -116,6 +117,7 @@ class FollowScenario:
     description: str = ""
     path: Optional[Path] = None
     origin: Optional[Georeference] = None  # where local (0, 0) lies on the Earth (mission export)
+    aircraft: Optional[str] = None  # uav.dynamics: jsbsim: the planner also flown on this 6-DOF aircraft
 
     @classmethod
     def load(cls, path: str | Path) -> "FollowScenario":
@@ -126,7 +128,8 @@ class FollowScenario:
     def from_mapping(cls, data: Mapping[str, Any], base: Path, path: Optional[Path] = None) -> "FollowScenario":
         data = upgrade(_old_city_map(data), RENAMES)
         reject_unknown(data, TOP_KEYS)
-        uav = uav_block(data, default_uav()).uav
+        block = uav_block(data, default_uav(), fdm=True)
+        uav = block.uav
         vehicle, legs, route = _vehicle(data, base)
         parameters = _parameters(data)
         schedule = _offset_schedule(data)
@@ -157,7 +160,7 @@ class FollowScenario:
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
                    baseline_control=control, city=_city(data, base, route), route=route,
                    description=str(data.get("description", "")),
-                   path=path, origin=georeference_block(data))
+                   path=path, origin=georeference_block(data), aircraft=block.aircraft)
 
     def city_available(self) -> bool:
         """Whether the scenario has a city section whose map and road files exist (the shared
@@ -204,6 +207,13 @@ class FollowScenario:
             orbit = baseline(self.vehicle, self.uav, self.baseline_radius, control=self.baseline_control,
                              parameters=parameters, **common)
         study = FollowStudy(self, parameters, follow, orbit, baseline_reason=reason)
+        if self.aircraft is not None:
+            if self.offset_schedule:
+                raise fail("offset_schedule", len(self.offset_schedule), "is not flown on a 6-DOF aircraft (jsbsim)")
+            say(f"6-DOF follow on {self.aircraft}")
+            study.fdm = fly_follow_fdm(self.vehicle, self.uav, parameters, follow.state[0], aircraft=self.aircraft,
+                                       wind=self.wind, wind_estimate=self.wind_estimate, flight=self.flight,
+                                       camera=self.camera)
         if city and self.city is not None:
             say("city")
             env = self.city.load(self.origin)
@@ -233,6 +243,7 @@ class FollowStudy:
     environment: Optional[Environment] = None
     baseline_reason: Optional[str] = None  # why the baseline was not flown (a vehicle faster than the UAV)
     city_baseline_reason: Optional[str] = None
+    fdm: Optional[FollowFdm] = None  # the planner on a 6-DOF JSBSim aircraft (uav.dynamics: jsbsim)
 
     def metrics(self) -> dict[str, Any]:
         """metrics.json: the planner's run at the top level (with a ``note`` when it flew its
@@ -245,6 +256,8 @@ class FollowStudy:
         block = _baseline_metrics(self.baseline, self.baseline_reason)
         if block is not None:
             out["baseline"] = block
+        if self.fdm is not None:
+            out["fdm"] = {"aircraft": self.fdm.trajectory.aircraft, **self.fdm.metrics()}
         if self.city_follow is not None:
             out["city"] = {"follow": _run_metrics(self.city_follow)}
             block = _baseline_metrics(self.city_baseline, self.city_baseline_reason)

@@ -41,6 +41,7 @@ class Scenario:
     dynamics: str = DEFAULT_DYNAMICS    # the flown vehicle's model (uav.dynamics)
     roll_time_constant: float = _VEHICLE.roll_time_constant   # s, the roll model's
     max_roll_rate_deg_s: float = _VEHICLE.max_roll_rate_deg_s
+    aircraft: str | None = None  # uav.dynamics: jsbsim: the wind flights also flown on this 6-DOF aircraft
 
     def uav(self) -> Uav:
         """The vehicle that flies the plans: the scenario's speed, turn radius, camera altitude and model."""

@@ -100,6 +100,7 @@ class Scenario:
     poi: PoiSpec = field(default_factory=PoiSpec)
     uav: Uav = field(default_factory=lambda: with_dynamics(Uav()))  # the scenario files' model (roll)
     start: tuple[float, float, float] | None = None  # UAV start (x, y, psi); None: on the orbit
+    aircraft: str | None = None  # uav.dynamics: jsbsim: also flown on this 6-DOF aircraft (vistrack.fdm)
     sensor: Sensor = field(default_factory=Sensor)
     planning: Planning = field(default_factory=Planning)
     control: Control = field(default_factory=Control)
@@ -145,8 +146,8 @@ class Scenario:
         scenario.origin = georeference_block(data)
         scenario.environment = city_block(data, base) or City()
         scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
-        uav = uav_block(data, Uav(), extra=("start",))
-        scenario.uav, scenario.start = uav.uav, _start(uav.extra)
+        uav = uav_block(data, Uav(), extra=("start",), fdm=True)
+        scenario.uav, scenario.start, scenario.aircraft = uav.uav, _start(uav.extra), uav.aircraft
         scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(section(
             data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin",
@@ -186,7 +187,8 @@ class Scenario:
             "georeference": None if origin is None else {"lat": origin.lat, "lon": origin.lon, "alt": origin.alt},
             "city": env,
             "poi": poi,
-            "uav": {**uav_dict(self.uav), "start": list(self.start) if self.start is not None else None},
+            "uav": {**uav_dict(self.uav), "start": list(self.start) if self.start is not None else None,
+                    **({"dynamics": "jsbsim", "aircraft": self.aircraft} if self.aircraft else {})},
             "sensor": {"d_max": self.sensor.d_max, "altitude_band": list(band) if band else None},
             "planning": {"spacing": self.planning.spacing, "cutoff": self.planning.cutoff,
                          "resolution_deg": self.planning.resolution_deg,
