@@ -86,12 +86,18 @@ class OrbitRoom:
             return Circle((self.point[0], self.point[1]), radius)
         import shapely
 
-        room = shapely.buffer(self.region(), -radius, quad_segs=16)
-        if room.is_empty:
-            return None
+        region = self.region()
+        room = shapely.buffer(region, -radius, quad_segs=16)
         here = shapely.Point(self.point[0], self.point[1])
-        nearest = shapely.shortest_line(room, here).coords[0]  # on the inner room, nearest the point
-        return Circle((float(nearest[0]), float(nearest[1])), radius)
+        # GEOS's inward buffer can leave slivers in narrow wedges of the polygon: take the nearest
+        # piece whose nearest point really has the radius to the boundary.
+        pieces = sorted((p for p in shapely.get_parts(room) if not p.is_empty), key=lambda piece: piece.distance(here))
+        boundary = region.boundary  # type: ignore[attr-defined]
+        for piece in pieces:
+            nearest = shapely.shortest_line(piece, here).coords[0]  # on the piece, nearest the point
+            if boundary.distance(shapely.Point(nearest)) >= radius * (1.0 - 1e-6):
+                return Circle((float(nearest[0]), float(nearest[1])), radius)
+        return None
 
 
 def slice_radius_bound(point_z: float, altitude: float, d_max: float) -> float:
