@@ -18,6 +18,7 @@ from typing import Any, Optional
 
 from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
+from ..report.follow_city import city_orbit_line
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
 from .output import add_report_arguments, output_folder, report_options
 from .types import add_dynamics_argument, number
@@ -60,6 +61,8 @@ def run(args: argparse.Namespace) -> int:
           + _baseline_summary(record.get("baseline")) + f" -> {args.out}")
     if "note" in record:
         print(f"note: {record['note']}")
+    if (line := city_orbit_line(record.get("city"))) is not None:
+        print(line)
     uav = scenario.uav
     export_mission(args.export, lambda ref: study.follow.to_mission(
         ref, uav.altitude, speed=uav.speed, tolerance=args.export_tolerance), args.origin or scenario.origin, None,
