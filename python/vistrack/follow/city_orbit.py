@@ -50,6 +50,7 @@ class CityOrbitOptions:
     vehicle_height: float = 0.5
     guidance: str = "field"
     lookahead: tuple[float, ...] = (3.0, 6.0)
+    off_margin: float = 0.0  # m more kept for an off-centre circle (the UAV joins it late)
     l1_period: float = 12.0  # s, the L1 period flying the orbit (0: the flight's, FollowFlight.l1_period)
 
     def validate(self) -> None:
@@ -281,7 +282,7 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
         else:
             previous = np.zeros(2) if last is None else np.array(last.shift)
             for size in (wanted, lemma6, turn):
-                found = common_shift(rooms, size + margin, previous)
+                found = common_shift(rooms, size + margin + options.off_margin, previous)
                 if found is not None:
                     shift, radius = found, size
                     break
