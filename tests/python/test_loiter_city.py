@@ -99,3 +99,17 @@ def test_cli_on_the_charlotte_example(charlotte: Path, tmp_path: Path, capsys: p
     assert "(city, R 46 m" in out
     assert (tmp_path / "city" / "city_tlpp.png").is_file()
     assert "visibility polygon" in (tmp_path / "city" / "report.md").read_text()
+
+
+def test_off_centre_key_on_charlotte(charlotte: Path, charlotte_scene: vt.VisibilityScene, tmp_path: Path) -> None:
+    """``off_centre: true``: the example's AOI 4 (MaxRadius 41.7 m) loiters on a circle off it inside
+    its polygon, and is still seen >= 99 % of its loiter time; a bad value names the key."""
+    text = (EXAMPLES / "loiter_charlotte_city.yaml").read_text().replace("# off_centre: true", "off_centre: true")
+    text = text.replace("../../shared/data", str(charlotte.parent))
+    (tmp_path / "city.yaml").write_text(text)
+    scenario = vt.loiter.load_scenario(tmp_path / "city.yaml")
+    result = plan_city(scenario, ["tlpp"], charlotte_scene)
+    assert result.flyable == list(range(6)) and 0.0 < result.rooms[4].shift <= 150.0
+    assert min(result.runs[0].centre_line_of_sight) >= 0.99
+    (tmp_path / "bad.yaml").write_text(text.replace("off_centre: true", "off_centre: maybe"))
+    refuses(lambda: vt.loiter.load_scenario(tmp_path / "bad.yaml"), "off_centre")

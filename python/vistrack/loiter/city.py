@@ -147,12 +147,13 @@ def move_off_centre(rooms: Sequence[AoiRoom], radius: float, margin: float = DEF
 
 def plan_city(scenario: Scenario, methods: Sequence[str], env: Optional[Environment | VisibilityScene] = None,
               order: str = "given", margin: float = DEFAULT_MARGIN, altitude: Optional[float] = None,
-              rays: int = 48, off_centre: bool = False, max_shift: float = MAX_SHIFT) -> CityLoiter:
+              rays: int = 48, off_centre: Optional[bool] = None, max_shift: float = MAX_SHIFT) -> CityLoiter:
     """Plan every method over the scenario's flyable AOIs with circles inside their VPs, and score
     each plan with line of sight. ``env``: the city (default: the scenario's ``city`` block);
     ``altitude``: the flight's height above the city's ground (default the camera's, uav.altitude);
-    ``off_centre``: an AOI without a circle about it may loiter on a circle off it (beyond the
-    issue's rule: the circle is inside the VP, so it still sees the AOI)."""
+    ``off_centre`` (None: the scenario's ``off_centre``): an AOI without a circle about it may
+    loiter on the nearest circle inside its VP within ``max_shift`` m (beyond the issue's rule:
+    the circle is inside the VP, so it still sees the AOI)."""
     if env is None:
         if scenario.city is None:
             raise VistrackError("city = None: the scenario has no city block")
@@ -162,7 +163,7 @@ def plan_city(scenario: Scenario, methods: Sequence[str], env: Optional[Environm
     world = scene.ground_level + height
     rooms = aoi_rooms(scene, scenario.aois, world, scenario.turn_radius, margin)
     radius = loiter_radius(rooms, scenario.aoi_radius, scenario.turn_radius, margin)
-    if off_centre:
+    if scenario.off_centre if off_centre is None else off_centre:
         move_off_centre(rooms, radius, margin, max_shift)
     result = CityLoiter(world, rooms, radius if any(r.flyable for r in rooms) else None, volumes=len(rooms))
     if result.radius is None:

@@ -42,6 +42,7 @@ class Scenario:
     roll_time_constant: float = _VEHICLE.roll_time_constant   # s, the roll model's
     max_roll_rate_deg_s: float = _VEHICLE.max_roll_rate_deg_s
     city: City | None = None  # beyond the paper: loiter circles inside visibility polygons (loiter.city)
+    off_centre: bool = False  # with a city: an AOI without a circle about it may loiter on one off it
 
     def uav(self) -> Uav:
         """The vehicle that flies the plans: the scenario's speed, turn radius, camera altitude and model."""
