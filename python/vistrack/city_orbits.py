@@ -89,15 +89,6 @@ class OrbitRoom:
         (cx, cy), _ = np.asarray(line.coords)
         return Circle((float(cx), float(cy)), float(line.length))
 
-    def fits(self, center: tuple[float, float], radius: float) -> Optional[tuple[float, float]]:
-        """``center`` when the circle of ``radius`` about it lies inside the VP, else None."""
-        import shapely
-
-        here = shapely.Point(center)
-        region = self.region()
-        inside = region.contains(here) and region.boundary.distance(here) >= radius  # type: ignore[attr-defined]
-        return (float(center[0]), float(center[1])) if inside else None
-
     def flyable_circle(self, radius: float) -> Optional[Circle]:
         """A circle of ``radius`` inside the VP whose centre is nearest the point (the point itself
         when ``radius`` <= MaxRadius), or None when no circle that large fits anywhere."""
