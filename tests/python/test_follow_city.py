@@ -90,3 +90,20 @@ def test_charlotte_stop_run_beats_the_baseline(charlotte: Path, tmp_path: Path) 
 
     text = "\n".join(str(b) for b in city_orbit_blocks(city))
     assert "flyable circle" in text
+
+
+def test_camera_reach_bounds_the_offset() -> None:
+    """``camera_reach``: an off-centre orbit no farther off the vehicle than the camera still sees
+    it from in a steady turn (h tan(fov/2 + gimbal - bank) - R)."""
+    from vistrack.follow.city_orbit import shift_reach
+
+    scene = vt.VisibilityScene(vt.Environment.from_buildings(
+        [(_box(35, 80, -300, 300), 400.0), (_box(-300, 35, 35, 80), 400.0)]))
+    # The circle needs its centre >= 65.5 m from both faces: an offset of at least 43 m.
+    last = city_orbit_follow(_parked(60.0), UAV, scene, options=CityOrbitOptions(camera_reach=True)).updates[-1]
+    reach = shift_reach(UAV, vt.follow.DownwardCamera(), last.radius)  # 85 m at 300 m
+    assert 43.0 <= np.hypot(*last.shift) <= reach + 1e-6
+    low = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
+    assert shift_reach(low, vt.follow.DownwardCamera(), 62.5) < 43.0  # 36 m: too far for the camera
+    last = city_orbit_follow(_parked(60.0), low, scene, options=CityOrbitOptions(camera_reach=True)).updates[-1]
+    assert last.shift == (0.0, 0.0) and last.fits_anywhere  # it stays about the vehicle

@@ -50,6 +50,7 @@ class CityOrbitOptions:
     vehicle_height: float = 0.5
     guidance: str = "field"
     lookahead: tuple[float, ...] = (3.0, 6.0)
+    camera_reach: bool = False  # True: an off-centre circle only as far as the camera sees the vehicle from it
     off_margin: float = 0.0  # m more kept for an off-centre circle (the UAV joins it late)
     l1_period: float = 12.0  # s, the L1 period flying the orbit (0: the flight's, FollowFlight.l1_period)
 
@@ -134,12 +135,19 @@ def camera_radius(uav: Uav, camera: DownwardCamera, gravity: float = 9.80665) ->
     return uav.altitude * math.tan(max(room, 0.0))
 
 
+def shift_reach(uav: Uav, camera: DownwardCamera, radius: float, gravity: float = 9.80665) -> float:
+    """How far an orbit of ``radius`` may be off the vehicle with the camera still seeing it from
+    the far side in a steady turn: h tan(fov/2 + gimbal - bank) - radius, bank = atan(v^2/(g R))."""
+    bank = math.atan(uav.speed ** 2 / (gravity * radius))
+    return uav.altitude * math.tan(max(0.5 * camera.fov + camera.max_gimbal - bank, 0.0)) - radius
+
+
 def common_shift(rooms: Sequence[tuple[np.ndarray, OrbitRoom]], radius: float, previous: np.ndarray,
-                 hold: float = 20.0) -> Optional[np.ndarray]:
+                 hold: float = 20.0, reach: float = math.inf) -> Optional[np.ndarray]:
     """The offset from the vehicle of a circle of ``radius`` that moves with it and lies inside
     every room's VP at the vehicle's position there (the rooms of its predicted positions), nearest
-    the vehicle; the ``previous`` offset while it still fits and is less than ``hold`` m farther
-    (no jumps for a few metres); None when there is none."""
+    the vehicle, at most ``reach`` m from it; the ``previous`` offset while it still fits and is
+    less than ``hold`` m farther (no jumps for a few metres); None when there is none."""
     import shapely
 
     common: Any = None
@@ -151,6 +159,10 @@ def common_shift(rooms: Sequence[tuple[np.ndarray, OrbitRoom]], radius: float, p
     if common is None:
         return None
     target = shapely.Point(0.0, 0.0)
+    if math.isfinite(reach):
+        common = shapely.intersection(common, target.buffer(max(reach, 0.0), quad_segs=16))
+        if common.is_empty:
+            return None
     at, first = rooms[0]
     boundary: Any = first.region().boundary  # type: ignore[attr-defined]
     for piece in sorted((g for g in shapely.get_parts(common) if not g.is_empty), key=lambda g: g.distance(target)):
@@ -282,7 +294,8 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
         else:
             previous = np.zeros(2) if last is None else np.array(last.shift)
             for size in (wanted, lemma6, turn):
-                found = common_shift(rooms, size + margin + options.off_margin, previous)
+                found = common_shift(rooms, size + margin + options.off_margin, previous,
+                                     reach=shift_reach(uav, camera, size) if options.camera_reach else math.inf)
                 if found is not None:
                     shift, radius = found, size
                     break
