@@ -18,6 +18,7 @@ from typing import Any, Optional
 
 from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
+from ..report.follow_city import city_orbit_line
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
 from .output import add_report_arguments, output_folder, report_options
 from .types import add_dynamics_argument, fdm_choice, number
@@ -66,6 +67,8 @@ def run(args: argparse.Namespace) -> int:
               f"{six['altitude_error_max_m']:.2f} m, airspeed within {six['airspeed_error_max_m_s']:.2f} m/s")
     if "note" in record:
         print(f"note: {record['note']}")
+    if (line := city_orbit_line(record.get("city"))) is not None:
+        print(line)
     uav = scenario.uav
     export_mission(args.export, lambda ref: study.follow.to_mission(
         ref, uav.altitude, speed=uav.speed, tolerance=args.export_tolerance), args.origin or scenario.origin, None,

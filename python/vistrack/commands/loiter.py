@@ -1,14 +1,11 @@
 """``vistrack loiter``: Fly-Through, TLPP and LDLPP loiter plans over areas of interest, scored by
-camera coverage (Wilhelm, Clem, Eberhart 2017).
-
-One scenario file: plans.png (the methods side by side), metrics.json, path_<method>.csv,
-report.md, trajectory.gif (plan view: AOIs, plans, every method's aircraft at once with the camera
-footprint the coverage scores, in the first --wind when given) and report.html (the same in 3D with
-a time slider, and the report). Several files: the same per scenario in sub-folders, plus
-table.md / table.json (ours beside Table 1), fig13_scenarios.png and fig14_comparison.png.
---random N: N seeded random scenarios, the distributions per method (random.md, random.json,
-random_distribution.png).
-"""
+camera coverage (Wilhelm, Clem, Eberhart 2017). One scenario file: plans.png, metrics.json,
+path_<method>.csv, report.md, trajectory.gif (every method's aircraft with the camera footprint
+the coverage scores, in the first --wind when given) and report.html (the same in 3D, and the
+report). Several files: the same per scenario in sub-folders, plus table.md / table.json (ours
+beside Table 1), fig13_scenarios.png and fig14_comparison.png. --random N: N seeded random
+scenarios, the distributions per method. A city block (beyond the paper): loiter circles inside
+each AOI's visibility polygon at uav.altitude, coverage with line of sight."""
 
 from __future__ import annotations
 
@@ -21,6 +18,7 @@ from .._core import VistrackError
 from ..loiter import study as loiter_study
 from ..progress import Progress
 from ..report import loiter as report
+from ..report import loiter_city as report_city
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_missions
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
@@ -80,6 +78,12 @@ def run(args: argparse.Namespace) -> int:
             scenario.dynamics, scenario.aircraft = dynamics or scenario.dynamics, aircraft or scenario.aircraft
         rows, written, planned = [], [], 0
         for scenario in scenarios:  # (--export takes one: its plans are these runs')
+            folder = args.out if len(scenarios) == 1 else args.out / scenario.name
+            if scenario.city is not None:  # beyond every anchor: loiter circles in visibility polygons
+                files, lines, plans = report_city.run_city(folder, scenario, args.method, args.order)
+                print(*lines, sep="\n")
+                written, planned = written + files, planned + bool(plans)
+                continue
             refused: dict[str, str] = {}
             runs = loiter_study.evaluate(scenario, args.method, args.order, winds, refused)
             for method, reason in refused.items():
@@ -88,7 +92,6 @@ def run(args: argparse.Namespace) -> int:
                 continue
             planned += 1
             plans = {run.method: run.plan if run.best_plan is None else run.best_plan for run in runs}
-            folder = args.out if len(scenarios) == 1 else args.out / scenario.name
             written += report.write_scenario(folder, scenario, runs, options, given[0] if given else None)
             rows += [run.record(scenario) for run in runs]
             for run in runs:

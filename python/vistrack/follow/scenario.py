@@ -61,6 +61,7 @@ from ..scenario_blocks import (
 )
 from ..schema import beta as schema_beta
 from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
+from .city_orbit import CityOrbitResult, city_orbit_follow
 from .fdm import FollowFdm, fly_follow_fdm
 from .files import read_road_path, read_vehicle_track
 from .simulation import (
@@ -227,6 +228,10 @@ class FollowScenario:
             if flies and study.city_baseline_reason is None:
                 study.city_baseline = baseline(vehicle, uav, self.baseline_radius, control=self.baseline_control,
                                                parameters=parameters, scene=scene, **common)
+            say("city orbit")  # beyond every anchor: orbits inside the visibility polygons (follow.city_orbit)
+            known = self.wind_estimate or ((self.wind.east, self.wind.north) if parameters.wind_compensation else None)
+            study.city_orbit = city_orbit_follow(vehicle, uav, scene, parameters=parameters, wind_estimate=known,
+                                                 **common)
         return study
 
 
@@ -244,6 +249,7 @@ class FollowStudy:
     baseline_reason: Optional[str] = None  # why the baseline was not flown (a vehicle faster than the UAV)
     city_baseline_reason: Optional[str] = None
     fdm: Optional[FollowFdm] = None  # the planner on a 6-DOF JSBSim aircraft (uav.dynamics: jsbsim)
+    city_orbit: Optional[CityOrbitResult] = None  # the city orbit mode's run (follow.city_orbit)
 
     def metrics(self) -> dict[str, Any]:
         """metrics.json: the planner's run at the top level (with a ``note`` when it flew its
@@ -263,6 +269,8 @@ class FollowStudy:
             block = _baseline_metrics(self.city_baseline, self.city_baseline_reason)
             if block is not None:
                 out["city"]["baseline"] = block
+            if self.city_orbit is not None:
+                out["city"]["orbit"] = self.city_orbit.metrics
         return out
 
 

@@ -22,6 +22,7 @@ from ..report_options import ReportOptions
 from ..scenario_blocks import uav_dict
 from .document import Document, Heading, Picture, Table, vehicle_line
 from .fdm import fdm_blocks, fdm_figure
+from .follow_city import city_orbit_blocks
 from .media import write_media
 
 PLANNER = "sinusoid planner (the paper)"
@@ -164,4 +165,5 @@ def _document(study: FollowStudy, title: str, files: Sequence[str]) -> Document:
               "follow_compare.png": "Planner beside the vector-field baseline",
               "follow_city.png": "On a city road, with line of sight"}
     blocks += [Picture(name, caption) for name, caption in titles.items() if name in files]
+    blocks += city_orbit_blocks(study.metrics().get("city"))  # beyond every anchor (follow.city_orbit)
     return Document(f"vistrack report: following a ground vehicle, {title}", summary, blocks)
