@@ -29,10 +29,13 @@ def _digest(trajectory: vt.flight.FlightTrajectory) -> str:
 
 
 # sha256 prefixes of these flights computed by the build before the roll model (b6fed75), with
-# the same inputs: the Dubins model must fly them bit for bit as it did.
+# the same inputs: the Dubins model must fly them bit for bit as it did. The waypoint_nav flights'
+# digests were renewed when every flight came to end past the last waypoint's perpendicular line
+# (issue 32): their samples were checked equal, bit for bit, to 6fd6f4b's up to its last sample
+# (the old end event), the new flights only continuing to that line.
 BEFORE_THE_ROLL_MODEL = {
-    "dwn-discrete": "0c4887db5a097d19", "wn-discrete": "df04b30b1bf5683b", "fly-discrete": "5a405b99ff8afd53",
-    "dwn-continuous": "dd975548cf7569a7", "wn-continuous": "8192b5f5c6a74e5e", "fly-continuous": "c03d266055d8fc70",
+    "dwn-discrete": "0967e875c7c51d75", "wn-discrete": "6b10949ff24b06d8", "fly-discrete": "5a405b99ff8afd53",
+    "dwn-continuous": "6f39a2f0e6319bb1", "wn-continuous": "91a0591f508872b4", "fly-continuous": "c03d266055d8fc70",
 }
 
 
@@ -213,8 +216,8 @@ def test_sweeps_take_the_vehicle_model(tmp_path: Path) -> None:
         with open(out / "results.csv", newline="") as f:
             rows = list(csv.DictReader(f))
         assert [row["uav.dynamics"] for row in rows] == [model]
-    # Waypoint sweeps fly the paper's dimensionless units: roll is refused, naming the key.
+    # A waypoint sweep in the paper's dimensionless units refuses roll, naming the key.
     with pytest.raises(vt.VistrackError, match=r"base: uav.dynamics = 'roll': the waypoint paper's dimensionless"):
-        vt.sweep.SweepSpec.from_dict({"kind": "waypoints", "base": {"waypoints": [[0, 0], [5, 0]],
+        vt.sweep.SweepSpec.from_dict({"kind": "waypoints", "base": {"waypoints": [[0, 0], [5, 0]], "units": "paper",
                                                                     "uav": {"dynamics": "roll"}},
                                       "parameters": {"method": ["wn"]}})

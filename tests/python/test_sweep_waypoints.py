@@ -24,7 +24,7 @@ def command_options(**flags: Any) -> dict[str, Any]:
     """What ``vistrack waypoints ROUTE`` flies, from its own flag parsing (commands/waypoint_units.py)."""
     args = argparse.Namespace(paper_units=False, turn_radius=None, speed=None, dynamics=None, route=METRES, gains=None,
                               dt=wn.DEFAULTS["dt"], integration="discrete", guidance=None, l1_period=8.0,
-                              wind_aware=False, replan_interval=0.0)
+                              wind_aware=False, replan_interval=0.0, aircraft=None)
     for key, value in flags.items():
         setattr(args, key, value)
     return flight_options(args, read_route(METRES))
