@@ -18,6 +18,28 @@ namespace py = pybind11;
 
 namespace vistrack::bindings {
 
+namespace {
+
+// follow.threshold from Python: "auto" (kAutoThreshold) or a speed ratio > 1 (0 is not a spelling of "auto").
+double threshold_of(const py::object& value) {
+  if (py::isinstance<py::str>(value)) {
+    const auto text = value.cast<std::string>();
+    if (text != "auto") detail::fail_field("follow.threshold", "\"" + text + "\"", "must be \"auto\" or a number > 1");
+    return kAutoThreshold;
+  }
+  const auto number = value.cast<double>();
+  if (!(number > 1.0) || !std::isfinite(number))
+    detail::fail_field("follow.threshold", number, "must be \"auto\" or a finite number > 1 (a speed ratio v_p / v_g)");
+  return number;
+}
+
+py::object threshold_name(double threshold) {
+  if (threshold == kAutoThreshold) return py::str("auto");
+  return py::float_(threshold);
+}
+
+}  // namespace
+
 void bind_follow(py::module_& parent) {
   py::module_ m = parent.def_submodule(
       "follow",
@@ -105,10 +127,11 @@ void bind_follow(py::module_& parent) {
   const FollowParameters defaults;
   py::class_<FollowParameters>(m, "FollowParameters",
                                "The follow planner's settings (defaults from the C++ struct). Angles in radians.")
-      .def(py::init([](double period, double turn_margin, double threshold, double hysteresis,
+      .def(py::init([](double period, double turn_margin, const py::object& threshold_value, double hysteresis,
                        const std::string& loiter_pattern, double loiter_radius, Circulation loiter_direction,
                        double offset_distance, double offset_angle, const std::string& offset_reference,
                        bool wind_compensation, double update_period) {
+             const double threshold = threshold_of(threshold_value);
              FollowParameters p{period, turn_margin, threshold, hysteresis,
                                 from_name<LoiterPattern>(loiter_pattern, "follow.loiter_pattern"), loiter_radius,
                                 loiter_direction, offset_distance, offset_angle,
@@ -118,7 +141,7 @@ void bind_follow(py::module_& parent) {
              return p;
            }),
            py::kw_only(), py::arg("period") = defaults.period, py::arg("turn_margin") = defaults.turn_margin,
-           py::arg("threshold") = defaults.threshold, py::arg("hysteresis") = defaults.hysteresis,
+           py::arg("threshold") = threshold_name(defaults.threshold), py::arg("hysteresis") = defaults.hysteresis,
            py::arg("loiter_pattern") = to_string(defaults.loiter_pattern), py::arg("loiter_radius") = defaults.loiter_radius,
            py::arg("loiter_direction") = defaults.loiter_direction, py::arg("offset_distance") = defaults.offset_distance,
            py::arg("offset_angle") = defaults.offset_angle, py::arg("offset_reference") = to_string(defaults.offset_reference),
@@ -126,7 +149,10 @@ void bind_follow(py::module_& parent) {
            "Validated parameters.")
       .def_readwrite("period", &FollowParameters::period, "T: time for the vehicle to cover one period, s")
       .def_readwrite("turn_margin", &FollowParameters::turn_margin, "tightest planned turn / r_min")
-      .def_readwrite("threshold", &FollowParameters::threshold, "h_sigma: loiter above this speed ratio")
+      .def_property(
+          "threshold", [](const FollowParameters& p) { return threshold_name(p.threshold); },
+          [](FollowParameters& p, const py::object& v) { p.threshold = threshold_of(v); },
+          "h_sigma: loiter above this speed ratio; 'auto': picked from the camera (camera_threshold)")
       .def_readwrite("hysteresis", &FollowParameters::hysteresis, "full width of the band about the threshold")
       .def_property(
           "loiter_pattern", [](const FollowParameters& p) { return to_string(p.loiter_pattern); },
@@ -185,6 +211,29 @@ void bind_follow(py::module_& parent) {
   m.def("camera_sees", &camera_sees, py::arg("camera"), py::arg("uav"), py::arg("psi"), py::arg("bank"),
         py::arg("target"), "Whether the ground point target (3,) is in the footprint of the camera at uav (3,).");
 
+  py::class_<SinusoidShape>(m, "SinusoidShape", "The sinusoid the planner flies at a speed ratio.")
+      .def_readonly("slope", &SinusoidShape::slope, "a = A' = 2 pi A / D")
+      .def_readonly("period_distance", &SinusoidShape::period_distance, "D, m")
+      .def_readonly("amplitude", &SinusoidShape::amplitude, "A, m")
+      .def_readonly("curvature_limited", &SinusoidShape::curvature_limited, "D is the curvature floor 2 pi a rho");
+  m.def("sinusoid_shape", &sinusoid_shape, py::arg("speed_ratio"), py::arg("uav_speed"), py::arg("period"),
+        py::arg("turn_radius"),
+        "D = max(v_p T / sigma, 2 pi a rho) and A = a D / (2 pi): the sinusoid the planner flies (rho = turn_margin "
+        "r_min).");
+  m.def("camera_reach", &camera_reach, py::arg("camera"), py::arg("altitude"),
+        "w = altitude tan(fov / 2 + max_gimbal): how far to the side a level UAV's camera sees, m.");
+  py::class_<ThresholdChoice>(m, "ThresholdChoice", "The threshold the planner uses and the numbers behind it.")
+      .def_readonly("threshold", &ThresholdChoice::threshold, "h used")
+      .def_readonly("automatic", &ThresholdChoice::automatic, "picked from the camera")
+      .def_readonly("upper_ratio", &ThresholdChoice::upper_ratio, "sigma_u = h + band / 2")
+      .def_readonly("amplitude", &ThresholdChoice::amplitude, "A at sigma_u, m")
+      .def_readonly("reach", &ThresholdChoice::reach, "w, the camera's lateral reach, m")
+      .def_readonly("beyond_reach", &ThresholdChoice::beyond_reach, "A > w");
+  m.def("camera_threshold", &camera_threshold, py::arg("parameters"), py::arg("uav"),
+        py::arg("camera") = DownwardCamera{},
+        "The threshold h the planner uses: with threshold 'auto' the largest whose sinusoid's amplitude at h + band/2 "
+        "stays within camera_reach; else the user's, with its amplitude and reach.");
+
   py::class_<LoiterShape>(m, "LoiterShape", "The loiter pattern about its centre by arc length (circle or rose).")
       .def_property_readonly("pattern", [](const LoiterShape& s) { return to_string(s.pattern); })
       .def_readonly("radius", &LoiterShape::radius, "circle radius or the rose's extent, m")
@@ -237,8 +286,11 @@ void bind_follow(py::module_& parent) {
       .def_readonly("waypoint", &FollowTick::waypoint, "the waypoint issued at t, m");
 
   py::class_<FollowPlanner>(m, "FollowPlanner", "The 1 Hz follow planner of sections II-V.")
-      .def(py::init<const FollowParameters&, const Uav&, const Vec2&>(), py::arg("parameters"), py::arg("uav"),
-           py::arg("wind_estimate") = Vec2(0.0, 0.0), "wind_estimate (east, north) m/s is used with compensation.")
+      .def(py::init<const FollowParameters&, const Uav&, const Vec2&, const DownwardCamera&>(), py::arg("parameters"),
+           py::arg("uav"), py::arg("wind_estimate") = Vec2(0.0, 0.0), py::arg("camera") = DownwardCamera{},
+           "wind_estimate (east, north) m/s is used with compensation; camera: what an 'auto' threshold is picked for.")
+      .def_property_readonly("threshold_choice", &FollowPlanner::threshold_choice, "The threshold in use.")
+      .def_property_readonly("orbit_radius", &FollowPlanner::orbit_radius, "Radius of the planner's orbits, m.")
       .def("update", &FollowPlanner::update, py::arg("t"), py::arg("observation"),
            "The update at time t: mode with hysteresis, pattern advanced, next waypoint.")
       .def("offset_vector", &FollowPlanner::offset_vector, py::arg("vehicle_heading"), "O - vehicle for that heading.")
@@ -300,6 +352,7 @@ void bind_follow(py::module_& parent) {
       .def_readonly("along_track_lag", &FollowRun::along_track_lag, "m, > 0 behind")
       .def_readonly("wind", &FollowRun::wind, "(n, 2) true wind")
       .def_readonly("ticks", &FollowRun::ticks, "the 1 Hz updates")
+      .def_readonly("threshold", &FollowRun::threshold, "the threshold the planner used")
       .def_readonly("metrics", &FollowRun::metrics)
       .def_property_readonly("waypoints", &FollowRun::waypoints, "(k, 2) the generated waypoints")
       .def_property_readonly("waypoint_times", &FollowRun::waypoint_times, "when each waypoint was issued (s)");

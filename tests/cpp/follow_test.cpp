@@ -191,8 +191,10 @@ TEST(FollowLoiter, CircleAndRoseValidation) {
   EXPECT_NE(error_message([&] { rose.validate(); }).find("loiter_radius = 100"), std::string::npos);
 }
 
+// The paper's method: h = 3 (the default is "auto", picked from the camera).
 FollowParameters base_parameters() {
   FollowParameters p;
+  p.threshold = 3.0;
   p.wind_compensation = true;
   return p;
 }
@@ -254,8 +256,12 @@ TEST(FollowPlannerTest, DefaultUavIsValid) {
 
 TEST(FollowPlannerTest, ParametersNameTheField) {
   FollowParameters p;
+  p.threshold = 3.0;
   p.hysteresis = 3.5;
   EXPECT_NE(error_message([&] { p.validate(); }).find("follow.hysteresis = 3.5"), std::string::npos);
+  p = FollowParameters{};
+  p.threshold = -1.0;
+  EXPECT_NE(error_message([&] { p.validate(); }).find("follow.threshold = -1"), std::string::npos);
   p = FollowParameters{};
   p.period = -1.0;
   EXPECT_NE(error_message([&] { p.validate(); }).find("follow.period = -1"), std::string::npos);
@@ -446,6 +452,52 @@ TEST(FollowRuns, WindAtTheAirspeedIsAnErrorNamingTheWind) {
   const std::string orbit =
       error_message([&] { orbit_follow(car, uav, Control{}, 100.0, FollowParameters{}, storm); });
   EXPECT_EQ(orbit.rfind("wind", 0), 0u) << orbit;
+}
+
+
+// The auto threshold (issue 31): at the band's upper edge the sinusoid's amplitude is the camera's
+// reach w = H tan(fov / 2 + gimbal); on the curvature floor A = a(sigma_u)^2 rho.
+TEST(FollowThreshold, AutoPutsTheAmplitudeAtTheCameraReach) {
+  const Uav uav{21.0, 50.0, 200.0};
+  const DownwardCamera camera;
+  FollowParameters p;  // threshold "auto"
+  const double w = 200.0 * std::tan(37.0 * kPi / 180.0 + 25.0 * kPi / 180.0);
+  EXPECT_NEAR(camera_reach(camera, 200.0), w, 1e-9);
+  const ThresholdChoice c = camera_threshold(p, uav, camera);
+  EXPECT_TRUE(c.automatic);
+  EXPECT_FALSE(c.beyond_reach);
+  EXPECT_NEAR(c.upper_ratio, c.threshold + 0.5 * p.hysteresis, 1e-12);
+  const double rho = p.turn_margin * uav.min_turn_radius;
+  const double a = sinusoid_slope(c.upper_ratio);
+  EXPECT_NEAR(a * a * rho, w, 1e-6 * w);  // curvature-limited at these numbers
+  EXPECT_NEAR(c.amplitude, w, 1e-6 * w);
+  // A little above sigma_u the amplitude leaves the reach.
+  EXPECT_GT(sinusoid_shape(c.upper_ratio + 0.01, uav.speed, p.period, rho).amplitude, w);
+  // Higher flight sees farther: a larger h. A body-fixed camera (no gimbal): a smaller one.
+  EXPECT_GT(camera_threshold(p, Uav{21.0, 50.0, 400.0}, camera).threshold, c.threshold);
+  DownwardCamera fixed;
+  fixed.max_gimbal = 0.0;
+  EXPECT_LT(camera_threshold(p, uav, fixed).threshold, c.threshold);
+  // The paper's h = 3 puts the amplitude beyond the reach: reported, with its numbers.
+  p.threshold = 3.0;
+  const ThresholdChoice paper = camera_threshold(p, uav, camera);
+  EXPECT_FALSE(paper.automatic);
+  EXPECT_TRUE(paper.beyond_reach);
+  EXPECT_NEAR(paper.amplitude, std::pow(sinusoid_slope(3.25), 2) * rho, 1e-6);
+  // The planner uses the resolved h.
+  p.threshold = kAutoThreshold;
+  EXPECT_NEAR(FollowPlanner(p, uav, Vec2::Zero(), camera).parameters().threshold, c.threshold, 1e-12);
+}
+
+// A camera too narrow for any sinusoid keeps the band's lower edge just above 1.
+TEST(FollowThreshold, NarrowCameraLoitersAboveOne) {
+  DownwardCamera narrow;
+  narrow.fov = 5.0 * kPi / 180.0;
+  narrow.max_gimbal = 0.0;
+  FollowParameters p;
+  const ThresholdChoice c = camera_threshold(p, Uav{21.0, 50.0, 100.0}, narrow);
+  EXPECT_NEAR(c.threshold - 0.5 * p.hysteresis, 1.01, 1e-12);
+  EXPECT_TRUE(c.beyond_reach);
 }
 
 }  // namespace

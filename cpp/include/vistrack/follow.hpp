@@ -56,6 +56,19 @@ double sinusoid_speed_ratio(double amplitude, double period_distance);
 double sinusoid_amplitude(double speed_ratio, double period_distance);
 // The slope amplitude a = A' = 2 pi A / D for a speed ratio (the shape does not depend on D).
 double sinusoid_slope(double speed_ratio);
+
+// The sinusoid the planner flies at a speed ratio: D = max(v_p T / sigma, 2 pi a rho) (the period
+// T raised where the peak curvature a 2 pi / D would exceed 1 / rho, rho = turn_margin r_min), and
+// A = a D / (2 pi) (eq. 10's a = A'). On the curvature floor A = a^2 rho, whatever T is: the
+// `period` key then has no effect (issue 31).
+struct SinusoidShape {
+  double slope = 0.0;            // a = A'
+  double period_distance = 0.0;  // D, m
+  double amplitude = 0.0;        // A, m
+  bool curvature_limited = false;  // D is the floor 2 pi a rho, not v_p T / sigma
+};
+// speed_ratio >= 1, uav_speed > 0, period > 0, turn_radius > 0 (the planned rho).
+SinusoidShape sinusoid_shape(double speed_ratio, double uav_speed, double period, double turn_radius);
 // eq. (5): the along-track rate x_dot = v_p / sqrt(1 + A'^2 cos^2(2 pi x / D)).
 double sinusoid_along_track_rate(double x, double amplitude, double period_distance, double uav_speed);
 // Arc length of y = A sin(2 pi x / D) from x = 0 to x (any real x; odd in x). Incomplete
@@ -145,6 +158,44 @@ struct LoiterShape {
   Vec2 tangent(double s) const;   // unit
 };
 
+// ---- Camera ----------------------------------------------------------------------------------------
+
+// A downward conic camera (the loiter area's model: a 74-degree cone) on a one-axis roll gimbal
+// (up to 25 degrees), which rolls the camera towards the target as far as it can; max_gimbal 0
+// is a body-fixed camera (the paper's camera on the bottom of the plane). The body banks as in
+// a coordinated turn: phi = atan(v psi_dot / g). The vehicle is seen when the angle between the
+// camera's axis and the line to it is at most fov / 2. A point test for the follow metric; the
+// loiter area computes the footprint ellipse for its disks (peers: to be shared from a lower area).
+struct DownwardCamera {
+  double fov = 74.0 * kPi / 180.0;         // full angle, rad
+  double max_gimbal = 25.0 * kPi / 180.0;  // rad
+  void validate() const;
+};
+// How far to the side of a level UAV at `altitude` the camera still sees a ground point: with
+// the gimbal rolled as far as it goes, w = altitude tan(fov / 2 + max_gimbal) (beyond the paper).
+double camera_reach(const DownwardCamera& camera, double altitude);
+
+// The threshold h the planner uses, and the numbers behind it. With follow.threshold "auto"
+// (kAutoThreshold) h is the largest one whose sinusoid at the band's upper edge sigma_u = h + band / 2
+// keeps its amplitude within the camera's reach: sinusoid_shape(sigma_u).amplitude <= w = camera_reach
+// (on the curvature floor a(sigma_u)^2 rho <= w); found by bisection on the increasing amplitude. h is
+// kept at least 1 + band / 2 + 0.01 (a loiter needs v_p > v_g): a camera too narrow for any sinusoid
+// then loiters whenever the vehicle is slower than the UAV by that margin. With a user's h, the same
+// numbers are reported, and `beyond_reach` says the amplitude exceeds w (a warning, not an error).
+struct ThresholdChoice {
+  double threshold = 0.0;       // h, the one used
+  bool automatic = false;       // picked from the camera
+  double upper_ratio = 0.0;     // sigma_u = h + band / 2
+  double amplitude = 0.0;       // A at sigma_u (the largest the sinusoid flies), m
+  double reach = 0.0;           // w, m
+  bool beyond_reach = false;    // amplitude > reach
+};
+ThresholdChoice camera_threshold(const FollowParameters& parameters, const Uav& uav, const DownwardCamera& camera);
+
+// Whether the ground point `target` (x, y, z) is inside the footprint of the camera on a UAV at
+// `uav` (x, y, z) with heading psi and bank (positive: left wing down).
+bool camera_sees(const DownwardCamera& camera, const Vec3& uav, double psi, double bank, const Vec3& target);
+
 // ---- The planner ----------------------------------------------------------------------------------
 
 // What the planner knows at an update: the vehicle's position and velocity (its 1 Hz report) and
@@ -181,8 +232,10 @@ struct FollowTick {
 // The follow planner of sections II-V. update() runs at every update_period.
 class FollowPlanner {
  public:
-  // wind_estimate: the constant wind the UAV estimates (used only with wind_compensation).
-  FollowPlanner(const FollowParameters& parameters, const Uav& uav, const Vec2& wind_estimate = Vec2::Zero());
+  // wind_estimate: the constant wind the UAV estimates (used only with wind_compensation); camera:
+  // what an "auto" threshold is picked for (camera_threshold).
+  FollowPlanner(const FollowParameters& parameters, const Uav& uav, const Vec2& wind_estimate = Vec2::Zero(),
+                const DownwardCamera& camera = DownwardCamera{});
 
   // The update at time t: the mode (with hysteresis), the pattern's state advanced from the
   // previous update, and the next waypoint.
@@ -204,6 +257,13 @@ class FollowPlanner {
   const Uav& uav() const { return uav_; }
   const Vec2& wind_estimate() const { return wind_; }
   bool has_ticks() const { return has_previous_; }
+  // The threshold in use (parameters().threshold is it, resolved when "auto") and its numbers.
+  const ThresholdChoice& threshold_choice() const { return threshold_; }
+  // The radius of every orbit the planner flies about the offset point (the loiter circle; the
+  // rose's turns): Lemma 6 of the tracking paper, turn_margin r_min (1 + v_O / v)^2, at the fastest
+  // offset point a loiter keeps (sigma at the band's lower edge). The one place that chooses it
+  // (a city mode picks it from the visibility polygon here).
+  double orbit_radius() const;
 
   // The next mode from sigma with the hysteresis band (exposed for tests).
   FollowMode next_mode(FollowMode current, double speed_ratio) const;
@@ -216,30 +276,14 @@ class FollowPlanner {
   void enter_loiter(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const;
   void set_sinusoid_shape(FollowTick& tick) const;
 
-  FollowParameters parameters_;  // offset_distance / offset_angle: the current offset
+  FollowParameters parameters_;  // offset_distance / offset_angle: the current offset; threshold resolved
   Uav uav_;
+  ThresholdChoice threshold_;
   Vec2 wind_;
   LoiterShape loiter_;
   FollowTick previous_;
   bool has_previous_ = false;
 };
-
-// ---- Camera ----------------------------------------------------------------------------------------
-
-// A downward conic camera (the loiter area's model: a 74-degree cone) on a one-axis roll gimbal
-// (up to 25 degrees), which rolls the camera towards the target as far as it can; max_gimbal 0
-// is a body-fixed camera (the paper's camera on the bottom of the plane). The body banks as in
-// a coordinated turn: phi = atan(v psi_dot / g). The vehicle is seen when the angle between the
-// camera's axis and the line to it is at most fov / 2. A point test for the follow metric; the
-// loiter area computes the footprint ellipse for its disks (peers: to be shared from a lower area).
-struct DownwardCamera {
-  double fov = 74.0 * kPi / 180.0;         // full angle, rad
-  double max_gimbal = 25.0 * kPi / 180.0;  // rad
-  void validate() const;
-};
-// Whether the ground point `target` (x, y, z) is inside the footprint of the camera on a UAV at
-// `uav` (x, y, z) with heading psi and bank (positive: left wing down).
-bool camera_sees(const DownwardCamera& camera, const Vec3& uav, double psi, double bank, const Vec3& target);
 
 // ---- A follow run: the planner's waypoints flown by the flight layer ------------------------------
 
@@ -299,6 +343,7 @@ struct FollowRun {
   Points2 wind;                       // the true wind at each sample
   // Per update (1 Hz): the planner's state and the waypoint it issued at that time.
   std::vector<FollowTick> ticks;
+  ThresholdChoice threshold;          // the threshold the planner used (camera_threshold)
   FollowMetrics metrics;
   // The generated waypoints and when each was issued (what a mission export needs).
   Points2 waypoints() const;

@@ -27,6 +27,10 @@ struct EnumNames<OffsetReference> {
       {"relative", OffsetReference::Heading}};
 };
 
+// FollowParameters::threshold for "auto": the planner picks h from its camera (camera_threshold in
+// follow.hpp) so that the sinusoid's amplitude stays within the camera's reach (beyond the paper).
+inline constexpr double kAutoThreshold = 0.0;
+
 // The follower's vehicle where a scenario gives none: the paper's UAV flies at 20-23 m/s; 200 m
 // above open ground.
 inline constexpr Uav kFollowUav{21.0, 50.0, 200.0};
@@ -42,8 +46,10 @@ struct FollowParameters {
   double turn_margin = 1.25;
   // Loiter above the threshold h_sigma of the speed ratio sigma = v_p / v_g, with a hysteresis
   // band of this full width centred on it: loiter from sigma > h + band / 2, back to the
-  // sinusoid below h - band / 2.
-  double threshold = 3.0;             // h_sigma (the paper's ~3)
+  // sinusoid below h - band / 2. kAutoThreshold (the default, beyond the paper): the largest h
+  // whose sinusoid stays within the camera's reach at the band's upper edge (camera_threshold);
+  // the paper's h is about 3 ("set to avoid the large amplitude", section II).
+  double threshold = kAutoThreshold;  // h_sigma
   double hysteresis = 0.5;            // full band width, < threshold
   LoiterPattern loiter_pattern = LoiterPattern::Circle;  // Fig. 3
   // Circle: its radius. Rose: the largest distance from the centre. 0: the smallest flyable

@@ -2,11 +2,56 @@
 // axis, tilted by the bank of a coordinated turn, rolled towards the target by a limited gimbal.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "vistrack/error.hpp"
 #include "vistrack/follow.hpp"
 
 namespace vistrack {
+
+double camera_reach(const DownwardCamera& camera, double altitude) {
+  camera.validate();
+  require_positive(altitude, "uav.altitude");
+  const double angle = 0.5 * camera.fov + camera.max_gimbal;
+  // The cone's edge reaches the horizon: the camera sees as far as the metric's disk allows.
+  return angle < 0.5 * kPi ? altitude * std::tan(angle) : std::numeric_limits<double>::infinity();
+}
+
+ThresholdChoice camera_threshold(const FollowParameters& parameters, const Uav& uav, const DownwardCamera& camera) {
+  parameters.validate();
+  uav.validate();
+  ThresholdChoice choice;
+  choice.reach = camera_reach(camera, uav.altitude);
+  const double half = 0.5 * parameters.hysteresis;
+  const double rho = parameters.turn_margin * uav.min_turn_radius;
+  const auto amplitude = [&](double sigma) {
+    return sinusoid_shape(sigma, uav.speed, parameters.period, rho).amplitude;
+  };
+  choice.automatic = parameters.threshold == kAutoThreshold;
+  if (choice.automatic) {
+    // The amplitude grows with sigma (a(sigma) and a / sigma both increase): bisect on sigma_u.
+    const double lowest = 1.0 + parameters.hysteresis + 0.01;  // sigma_u with h - band / 2 = 1.01
+    constexpr double kHighest = 1e3;
+    double lo = lowest, hi = kHighest;
+    if (amplitude(lo) >= choice.reach) {
+      hi = lo;
+    } else if (amplitude(hi) <= choice.reach) {
+      lo = hi;
+    } else {
+      for (int i = 0; i < 100 && hi - lo > 1e-9 * hi; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (amplitude(mid) <= choice.reach ? lo : hi) = mid;
+      }
+    }
+    choice.threshold = lo - half;
+  } else {
+    choice.threshold = parameters.threshold;
+  }
+  choice.upper_ratio = choice.threshold + half;
+  choice.amplitude = amplitude(choice.upper_ratio);
+  choice.beyond_reach = choice.amplitude > choice.reach * (1.0 + 1e-9);
+  return choice;
+}
 
 bool camera_sees(const DownwardCamera& camera, const Vec3& uav, double psi, double bank, const Vec3& target) {
   const Vec3 left(-std::sin(psi), std::cos(psi), 0.0);

@@ -32,8 +32,8 @@ FollowObservation observe(const GroundVehicle& vehicle, double t, const Vec2& ua
 
 // On the planned path at the first desired position, heading (in the air) along it.
 Configuration start_on_plan(const GroundVehicle& vehicle, const Uav& uav, const FollowParameters& parameters,
-                            const Vec2& wind_estimate, const Vec2& wind, double t0) {
-  FollowPlanner probe(parameters, uav, wind_estimate);
+                            const Vec2& wind_estimate, const Vec2& wind, double t0, const DownwardCamera& camera) {
+  FollowPlanner probe(parameters, uav, wind_estimate, camera);
   const double heading = vehicle.heading(t0);
   const Vec2 offset_point = vehicle.position(t0) + probe.offset_vector(heading);
   const FollowTick tick = probe.update(t0, observe(vehicle, t0, offset_point, heading));
@@ -81,9 +81,10 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
                                       std::tie(at_start.offset_distance, at_start.offset_angle) =
                                           scheduled_offset(options.offset_schedule, parameters, t0);
                                       return at_start;
-                                    }(), wind_estimate, steady, t0);
-  FollowPlanner planner(parameters, uav, wind_estimate);
+                                    }(), wind_estimate, steady, t0, options.camera);
+  FollowPlanner planner(parameters, uav, wind_estimate, options.camera);
   FollowRun run;
+  run.threshold = planner.threshold_choice();
 
   const LineFeedback law(uav.speed, uav.min_turn_radius, options.flight.dt,
                          LineFeedbackGains::for_turn_radius(uav.min_turn_radius));

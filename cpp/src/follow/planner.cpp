@@ -38,19 +38,19 @@ Vec2 sinusoid_point(const FollowTick& tick, double phi, double arc) {
 
 }  // namespace
 
-FollowPlanner::FollowPlanner(const FollowParameters& parameters, const Uav& uav, const Vec2& wind_estimate)
+FollowPlanner::FollowPlanner(const FollowParameters& parameters, const Uav& uav, const Vec2& wind_estimate,
+                             const DownwardCamera& camera)
     : parameters_(parameters), uav_(uav), wind_(wind_estimate) {
   parameters_.validate();
   uav_.validate();
+  threshold_ = camera_threshold(parameters_, uav_, camera);
+  parameters_.threshold = threshold_.threshold;
   require_finite(wind_.x(), "wind_estimate.east");
   require_finite(wind_.y(), "wind_estimate.north");
   if (!(wind_.norm() < uav_.speed))
     detail::fail_field("wind_estimate", detail::to_text(wind_.x()) + ", " + detail::to_text(wind_.y()),
                        "the wind must be slower than the UAV's airspeed " + detail::to_text(uav_.speed));
-  // The loiter's turn radius: Lemma 6 of the tracking paper, r_min (1 + v_O / v)^2, at the fastest
-  // offset point a loiter keeps (sigma at the band's lower edge), with the planning margin.
-  const double lower = parameters_.threshold - 0.5 * parameters_.hysteresis;
-  const double turn = parameters_.turn_margin * uav_.min_turn_radius * std::pow(1.0 + 1.0 / lower, 2);
+  const double turn = orbit_radius();
   loiter_.pattern = parameters_.loiter_pattern;
   loiter_.direction = sign(parameters_.loiter_direction);
   loiter_.turn_radius = turn;
@@ -60,6 +60,11 @@ FollowPlanner::FollowPlanner(const FollowParameters& parameters, const Uav& uav,
     detail::fail_field("follow.loiter_radius", loiter_.radius,
                        "a rose needs at least twice its turn radius " + detail::to_text(turn) + " m");
   loiter_.validate();
+}
+
+double FollowPlanner::orbit_radius() const {
+  const double lower = parameters_.threshold - 0.5 * parameters_.hysteresis;
+  return parameters_.turn_margin * uav_.min_turn_radius * std::pow(1.0 + 1.0 / lower, 2);
 }
 
 Vec2 FollowPlanner::offset_vector(double vehicle_heading) const {
@@ -85,12 +90,11 @@ FollowMode FollowPlanner::next_mode(FollowMode current, double speed_ratio) cons
 }
 
 void FollowPlanner::set_sinusoid_shape(FollowTick& tick) const {
-  const double a = sinusoid_slope(tick.speed_ratio);
   const double frame_speed = tick.frame_velocity.norm();
-  // Peak curvature of y = A sin(2 pi x / D) is a 2 pi / D: keep it within the planned turn.
-  const double tightest = parameters_.turn_margin * uav_.min_turn_radius;
-  tick.period_distance = std::max(frame_speed * parameters_.period, kTwoPi * a * tightest);
-  tick.amplitude = a * tick.period_distance / kTwoPi;
+  const SinusoidShape shape = sinusoid_shape(tick.speed_ratio, tick.uav_speed, parameters_.period,
+                                             parameters_.turn_margin * uav_.min_turn_radius);
+  tick.period_distance = shape.period_distance;
+  tick.amplitude = shape.amplitude;
   tick.period = tick.period_distance / frame_speed;
 }
 

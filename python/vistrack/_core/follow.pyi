@@ -8,7 +8,7 @@ import numpy.typing
 import typing
 import vistrack._core
 import vistrack._core.flight
-__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'VehicleLeg', 'along_track_rate', 'arc_length', 'camera_sees', 'default_uav', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_slope', 'speed_ratio']
+__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'SinusoidShape', 'ThresholdChoice', 'VehicleLeg', 'along_track_rate', 'arc_length', 'camera_reach', 'camera_sees', 'camera_threshold', 'default_uav', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_shape', 'sinusoid_slope', 'speed_ratio']
 class VehicleLeg:
     """
     One leg of a route: heading (rad from east), speed at its start and end (m/s, linear in between; 0 and 0 is a stop), duration (s).
@@ -117,7 +117,7 @@ class FollowParameters:
     """
     The follow planner's settings (defaults from the C++ struct). Angles in radians.
     """
-    def __init__(self, *, period: typing.SupportsFloat | typing.SupportsIndex = 30.0, turn_margin: typing.SupportsFloat | typing.SupportsIndex = 1.25, threshold: typing.SupportsFloat | typing.SupportsIndex = 3.0, hysteresis: typing.SupportsFloat | typing.SupportsIndex = 0.5, loiter_pattern: str = 'circle', loiter_radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, loiter_direction: str = 'ccw', offset_distance: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_angle: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_reference: str = 'heading', wind_compensation: bool = True, update_period: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
+    def __init__(self, *, period: typing.SupportsFloat | typing.SupportsIndex = 30.0, turn_margin: typing.SupportsFloat | typing.SupportsIndex = 1.25, threshold: typing.Any = 'auto', hysteresis: typing.SupportsFloat | typing.SupportsIndex = 0.5, loiter_pattern: str = 'circle', loiter_radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, loiter_direction: str = 'ccw', offset_distance: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_angle: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_reference: str = 'heading', wind_compensation: bool = True, update_period: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
         """
         Validated parameters.
         """
@@ -190,12 +190,12 @@ class FollowParameters:
     def period(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
-    def threshold(self) -> float:
+    def threshold(self) -> typing.Any:
         """
-        h_sigma: loiter above this speed ratio
+        h_sigma: loiter above this speed ratio; 'auto': picked from the camera (camera_threshold)
         """
     @threshold.setter
-    def threshold(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def threshold(self, arg1: typing.Any) -> None:
         ...
     @property
     def turn_margin(self) -> float:
@@ -288,6 +288,64 @@ class DownwardCamera:
     @max_gimbal.setter
     def max_gimbal(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
+class SinusoidShape:
+    """
+    The sinusoid the planner flies at a speed ratio.
+    """
+    @property
+    def amplitude(self) -> float:
+        """
+        A, m
+        """
+    @property
+    def curvature_limited(self) -> bool:
+        """
+        D is the curvature floor 2 pi a rho
+        """
+    @property
+    def period_distance(self) -> float:
+        """
+        D, m
+        """
+    @property
+    def slope(self) -> float:
+        """
+        a = A' = 2 pi A / D
+        """
+class ThresholdChoice:
+    """
+    The threshold the planner uses and the numbers behind it.
+    """
+    @property
+    def amplitude(self) -> float:
+        """
+        A at sigma_u, m
+        """
+    @property
+    def automatic(self) -> bool:
+        """
+        picked from the camera
+        """
+    @property
+    def beyond_reach(self) -> bool:
+        """
+        A > w
+        """
+    @property
+    def reach(self) -> float:
+        """
+        w, the camera's lateral reach, m
+        """
+    @property
+    def threshold(self) -> float:
+        """
+        h used
+        """
+    @property
+    def upper_ratio(self) -> float:
+        """
+        sigma_u = h + band / 2
+        """
 class LoiterShape:
     """
     The loiter pattern about its centre by arc length (circle or rose).
@@ -454,9 +512,9 @@ class FollowPlanner:
     """
     The 1 Hz follow planner of sections II-V.
     """
-    def __init__(self, parameters: FollowParameters, uav: vistrack._core.Uav, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ...) -> None:
+    def __init__(self, parameters: FollowParameters, uav: vistrack._core.Uav, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., camera: DownwardCamera = ...) -> None:
         """
-        wind_estimate (east, north) m/s is used with compensation.
+        wind_estimate (east, north) m/s is used with compensation; camera: what an 'auto' threshold is picked for.
         """
     def next_mode(self, current: str, speed_ratio: typing.SupportsFloat | typing.SupportsIndex) -> str:
         """
@@ -486,6 +544,16 @@ class FollowPlanner:
     def loiter_shape(self) -> LoiterShape:
         """
         The loiter pattern in use.
+        """
+    @property
+    def orbit_radius(self) -> float:
+        """
+        Radius of the planner's orbits, m.
+        """
+    @property
+    def threshold_choice(self) -> ThresholdChoice:
+        """
+        The threshold in use.
         """
 class FollowMetrics:
     """
@@ -604,6 +672,11 @@ class FollowRun:
         (n, 2) the waypoint flown to
         """
     @property
+    def threshold(self) -> ThresholdChoice:
+        """
+        the threshold the planner used
+        """
+    @property
     def ticks(self) -> list[FollowTick]:
         """
         the 1 Hz updates
@@ -646,9 +719,17 @@ def arc_length(x: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], ampli
     """
     Arc length of the sinusoid from 0 to x (incomplete elliptic integral of the second kind).
     """
+def camera_reach(camera: DownwardCamera, altitude: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    w = altitude tan(fov / 2 + max_gimbal): how far to the side a level UAV's camera sees, m.
+    """
 def camera_sees(camera: DownwardCamera, uav: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], psi: typing.SupportsFloat | typing.SupportsIndex, bank: typing.SupportsFloat | typing.SupportsIndex, target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"]) -> bool:
     """
     Whether the ground point target (3,) is in the footprint of the camera at uav (3,).
+    """
+def camera_threshold(parameters: FollowParameters, uav: vistrack._core.Uav, camera: DownwardCamera = ...) -> ThresholdChoice:
+    """
+    The threshold h the planner uses: with threshold 'auto' the largest whose sinusoid's amplitude at h + band/2 stays within camera_reach; else the user's, with its amplitude and reach.
     """
 def default_uav() -> vistrack._core.Uav:
     """
@@ -669,6 +750,10 @@ def phase_at_arc(arc: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], a
 def sinusoid_amplitude(speed_ratio: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period_distance: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
     """
     Amplitude A (m) of y = A sin(2 pi x / D) whose arc length over one period D is speed_ratio * D (eqs. 9-10: sigma = (2/pi) E(-A'^2), A' = 2 pi A / D), to 1e-12 relative. speed_ratio >= 1 (1 gives 0). Scalars or numpy arrays.
+    """
+def sinusoid_shape(speed_ratio: typing.SupportsFloat | typing.SupportsIndex, uav_speed: typing.SupportsFloat | typing.SupportsIndex, period: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex) -> SinusoidShape:
+    """
+    D = max(v_p T / sigma, 2 pi a rho) and A = a D / (2 pi): the sinusoid the planner flies (rho = turn_margin r_min).
     """
 def sinusoid_slope(speed_ratio: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
     """

@@ -15,7 +15,7 @@ counter-clockwise from east unless a compass word is given)::
       route: {from: [lon, lat], to: [lon, lat], crs: lonlat}   # with legs: the city run drives their
                                   # speeds along this road route of the city (vistrack.routes)
     follow: {period, turn_margin, threshold, hysteresis, loiter_pattern, loiter_radius,
-             loiter_direction, compensation, update_period}
+             loiter_direction, compensation, update_period}   # threshold: auto (default) or h
     offset: {distance: 0, angle_deg: 0, reference: heading, changes: [{t, distance, angle_deg}]}
     wind: {east: 0, north: 10, gusts: {seed, intensity, length_scale}}  # the true wind (towards)
     wind_estimate: {east: 0, north: 10}      # what the planner compensates (default: the true wind)
@@ -74,9 +74,10 @@ from .simulation import (
     default_uav,
     planner_note,
     simulate,
+    threshold_warning,
 )
 
-__all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy"]
+__all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy", "threshold_value"]
 
 # Compass words as angles counter-clockwise from east (radians).
 HEADINGS = {name: math.radians(deg) for name, deg in (
@@ -239,6 +240,9 @@ class FollowStudy:
         straight mode), then the baseline (``feasible``; when false, the ``reason`` instead of its
         scores) and the city runs."""
         out = _run_metrics(self.follow)
+        warnings = self.warnings()
+        if warnings:
+            out["warnings"] = warnings
         out["uav"] = uav_dict(self.scenario.uav)
         out["wind_compensation"] = bool(self.parameters.wind_compensation)
         out["updates"] = len(self.follow.ticks)
@@ -251,6 +255,13 @@ class FollowStudy:
             if block is not None:
                 out["city"]["baseline"] = block
         return out
+
+
+    def warnings(self) -> list[str]:
+        """What the user should know about the settings (a threshold whose sinusoid the camera cannot
+        follow), once per distinct message."""
+        found = [threshold_warning(r) for r in (self.follow, self.city_follow) if r is not None]
+        return list(dict.fromkeys(w for w in found if w is not None))
 
 
 def _run_metrics(result: FollowResult) -> dict[str, Any]:
@@ -341,7 +352,7 @@ def _parameters(data: Mapping[str, Any]) -> FollowParameters:
     compensation = f.get("compensation", d.wind_compensation)
     if not isinstance(compensation, bool):
         raise fail("follow.compensation", compensation, "must be true or false")
-    checks = {"period": positive, "turn_margin": positive, "threshold": positive, "update_period": positive,
+    checks = {"period": positive, "turn_margin": positive, "threshold": threshold_value, "update_period": positive,
               "hysteresis": lambda k, x: number(k, x, low=0.0), "loiter_radius": lambda k, x: number(k, x, low=0.0)}
     values: dict[str, Any] = {name: check(f"follow.{name}", f[name]) for name, check in checks.items() if name in f}
     for name in ("loiter_pattern", "loiter_direction"):
@@ -356,6 +367,19 @@ def _parameters(data: Mapping[str, Any]) -> FollowParameters:
                                 offset_reference=str(o.get("reference", d.offset_reference)), **values)
     except ValueError as error:  # the core names the field (follow.hysteresis, ...)
         raise type(error)(str(error).replace("direction =", "follow.loiter_direction =", 1)) from None
+
+
+def threshold_value(key: str, value: Any) -> float | str:
+    """follow.threshold: "auto" (picked from the camera; the default) or the paper's h, a speed ratio > 1."""
+    if value == "auto":
+        return "auto"
+    try:
+        h = number(key, value)
+    except ValueError:
+        h = math.nan
+    if not h > 1.0:
+        raise fail(key, value, 'must be "auto" or a number > 1 (a speed ratio v_p / v_g; the paper\'s is 3)')
+    return h
 
 
 def _offset_schedule(data: Mapping[str, Any]) -> list[tuple[float, float, float]]:

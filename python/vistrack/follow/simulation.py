@@ -34,7 +34,10 @@ LoiterShape = _follow.LoiterShape
 VehicleLeg = _follow.VehicleLeg
 along_track_rate = _follow.along_track_rate
 arc_length = _follow.arc_length
+camera_reach = _follow.camera_reach
 camera_sees = _follow.camera_sees
+camera_threshold = _follow.camera_threshold
+sinusoid_shape = _follow.sinusoid_shape
 coordinated_bank = _flight.coordinated_bank  # one formula, the flight layer's
 default_uav = _follow.default_uav  # a new Uav: the follower's where a scenario gives none
 phase_at_arc = _follow.phase_at_arc
@@ -48,9 +51,9 @@ __all__ = [
     "MODES", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowTick", "GroundVehicle", "LoiterShape", "VehicleLeg",
     "along_track_rate", "arc_length", "baseline", "baseline_infeasibility", "baseline_radius", "camera_footprint",
-    "camera_sees",
-    "coordinated_bank", "default_uav",
-    "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_slope", "speed_ratio",
+    "camera_reach", "camera_sees", "camera_threshold", "coordinated_bank", "default_uav", "line_of_sight",
+    "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_record", "sinusoid_shape", "sinusoid_slope",
+    "speed_ratio", "threshold_record", "threshold_warning",
 ]
 
 
@@ -146,12 +149,46 @@ class FollowResult:
             "smoothness": _flight.flight_smoothness(self.run.t, self.run.bank).as_dict() if len(self.run.t) >= 2
             else None,
         }
+        if self.strategy != "orbit":
+            out["threshold"] = threshold_record(self.run.threshold)
+            out["sinusoid"] = sinusoid_record(self.run.ticks)
         if self.line_of_sight is not None:
             weights = np.diff(self.t, append=self.t[-1])  # each sample holds until the next
             total = float(weights.sum()) or 1.0
             out["line_of_sight_fraction"] = float(weights @ self.line_of_sight) / total
             out["camera_and_line_of_sight_fraction"] = float(weights @ (self.line_of_sight & self.in_view)) / total
         return out
+
+
+def threshold_record(choice: Any) -> dict[str, Any]:
+    """The threshold the planner used (``FollowRun.threshold``) as plain data."""
+    return {"h": choice.threshold, "automatic": choice.automatic, "upper_ratio": choice.upper_ratio,
+            "amplitude_at_upper_m": choice.amplitude, "camera_reach_m": choice.reach,
+            "beyond_reach": choice.beyond_reach}
+
+
+def sinusoid_record(ticks: Sequence[FollowTick]) -> Optional[dict[str, Any]]:
+    """The effective sinusoid over the updates that flew it: min, median and max of sigma, T (s,
+    after the curvature floor), D and A (m); None when no update did (per update: updates.csv)."""
+    rows = np.array([(k.speed_ratio, k.period, k.period_distance, k.amplitude) for k in ticks if k.mode == "sinusoid"])
+    if len(rows) == 0:
+        return None
+    names = ("speed_ratio", "period_s", "period_distance_m", "amplitude_m")
+    return {name: [float(rows[:, i].min()), float(np.median(rows[:, i])), float(rows[:, i].max())]
+            for i, name in enumerate(names)}
+
+
+def threshold_warning(result: FollowResult) -> Optional[str]:
+    """A warning when the user's threshold lets the sinusoid's amplitude exceed the camera's reach
+    (with the numbers), else None (an "auto" threshold never does)."""
+    if result.strategy == "orbit":
+        return None
+    c = result.run.threshold
+    if c.automatic or not c.beyond_reach:
+        return None
+    return (f"follow.threshold = {c.threshold:g}: at the band's upper edge (sigma {c.upper_ratio:g}) the sinusoid's "
+            f"amplitude is {c.amplitude:.0f} m, beyond the {c.reach:.0f} m the camera sees to the side at this "
+            "altitude (threshold: auto keeps it within)")
 
 
 def _wind(wind: Wind | Sequence[float] | None) -> Wind:

@@ -1,0 +1,98 @@
+"""Following as practitioners fly it (issue 31): the camera-aware threshold, the effective
+sinusoid per update, the fair baseline, the standoff orbit and strategy auto, imperfect vehicle
+reports, camera models and region-of-interest commands."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+from scipy.special import ellipe
+
+import vistrack as vt
+from support.cli import NO_MEDIA
+from support.paths import EXAMPLES
+from vistrack import follow
+
+NORTH, EAST, SOUTH, WEST = math.pi / 2, 0.0, -math.pi / 2, math.pi
+UAV = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
+
+
+def _slope(sigma: float) -> float:
+    """a with (2/pi) E(-a^2) = sigma (eq. 10) by scipy, independent of ours."""
+    return brentq(lambda a: 2.0 / math.pi * ellipe(-a * a) - sigma, 0.0, math.pi * sigma, xtol=1e-14)
+
+
+def test_auto_threshold_puts_the_amplitude_at_the_camera_reach() -> None:
+    camera = follow.DownwardCamera()
+    p = follow.FollowParameters()
+    assert p.threshold == "auto"
+    choice = follow.camera_threshold(p, UAV, camera)
+    reach = 200.0 * math.tan(camera.fov / 2 + camera.max_gimbal)  # 376 m
+    assert choice.reach == pytest.approx(reach, rel=1e-12)
+    rho = p.turn_margin * UAV.min_turn_radius
+    # a(h + band/2)^2 rho = w, with a from scipy's ellipe
+    assert _slope(choice.threshold + p.hysteresis / 2) ** 2 * rho == pytest.approx(reach, rel=1e-6)
+    # the paper's h = 3 is beyond the footprint: 1406 m against 376 m
+    paper = follow.camera_threshold(follow.FollowParameters(threshold=3.0), UAV, camera)
+    assert paper.beyond_reach and paper.amplitude == pytest.approx(_slope(3.25) ** 2 * rho, rel=1e-6)
+
+
+def test_auto_run_keeps_every_sinusoid_within_reach_and_reports_it(tmp_path: Path) -> None:
+    # A vehicle whose speed ratio sweeps 1.3 .. 3.5: the sinusoid flies below the band, loiter above.
+    legs = [follow.VehicleLeg(EAST, 21.0 / 1.3, 100.0, 21.0 / 3.5), follow.VehicleLeg(EAST, 6.0, 100.0)]
+    vehicle = follow.GroundVehicle.from_legs(legs)
+    result = follow.simulate(vehicle, UAV)
+    choice = result.run.threshold
+    m = result.metrics
+    assert m["threshold"]["automatic"] and m["threshold"]["h"] == pytest.approx(choice.threshold)
+    amplitudes = [k.amplitude for k in result.ticks if k.mode == "sinusoid"]
+    assert amplitudes and max(amplitudes) <= choice.reach * (1 + 1e-9)
+    assert m["sinusoid"]["amplitude_m"][2] == pytest.approx(max(amplitudes))
+    assert follow.threshold_warning(result) is None
+    # With the paper's h the run warns with the numbers.
+    paper = follow.simulate(vehicle, UAV, follow.FollowParameters(threshold=3.0))
+    warning = follow.threshold_warning(paper)
+    assert warning is not None and "follow.threshold = 3" in warning and "376 m" in warning
+
+
+def test_period_reported_as_flown() -> None:
+    """T = 10 and 60 s fly the same curvature-limited sinusoid (the floor), and the reported T is the
+    flown one, D / v_g, not the key."""
+    vehicle = follow.GroundVehicle.from_legs([follow.VehicleLeg(SOUTH, 10.0, 120.0)])
+    runs = [follow.simulate(vehicle, UAV, follow.FollowParameters(threshold=3.0, period=T)) for T in (10.0, 60.0)]
+    for r in runs:
+        shape = follow.sinusoid_shape(2.1, 21.0, 30.0, 62.5)
+        assert shape.curvature_limited
+        periods = {round(k.period, 6) for k in r.ticks if k.mode == "sinusoid"}
+        assert periods == {round(shape.period_distance / 10.0, 6)}
+    assert np.array_equal(runs[0].state, runs[1].state)
+
+
+def test_cli_writes_updates_csv_and_threshold(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from vistrack.cli import main
+
+    out = tmp_path / "straight"
+    assert main(["follow", str(EXAMPLES / "follow_straight.yaml"), "--out", str(out), "--no-city", "--threshold", "3",
+                 *NO_MEDIA]) == 0
+    printed = capsys.readouterr().out
+    assert "warning: follow.threshold = 3" in printed and "0 switches" in printed
+    metrics = json.loads((out / "metrics.json").read_text())
+    assert metrics["threshold"]["h"] == 3.0 and metrics["warnings"]
+    header, *rows = (out / "updates.csv").read_text().splitlines()
+    assert header.split(",")[:6] == ["t", "mode", "speed_ratio", "period_s", "period_distance_m", "amplitude_m"]
+    assert len(rows) == 400
+    sigma, period, distance, amplitude = (float(v) for v in rows[10].split(",")[2:6])
+    assert distance / period == pytest.approx(10.0) and sigma == pytest.approx(2.1)
+    assert amplitude == pytest.approx(follow.sinusoid_amplitude(sigma, distance))
+    assert "Threshold h = 3" in (out / "report.md").read_text()
+
+
+def test_one_switch_is_singular() -> None:
+    from vistrack.commands.follow import _count
+
+    assert _count(1, "switch") == "1 switch" and _count(0, "switch") == "0 switches"
