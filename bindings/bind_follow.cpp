@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -251,6 +252,28 @@ void bind_follow(py::module_& parent) {
           },
           py::arg("arcs"), "Positions (n, 2) relative to the centre at the given arc lengths.");
 
+  const VehicleReportOptions report_defaults;
+  py::class_<VehicleReportOptions>(m, "VehicleReportOptions",
+                                   "The vehicle's 1 Hz reports as a radio link delivers them (beyond the paper).")
+      .def(py::init([](double position_noise, double velocity_noise, double latency, double dropout, double timeout,
+                       std::uint64_t seed) {
+             VehicleReportOptions o{position_noise, velocity_noise, latency, dropout, timeout, seed};
+             o.validate();
+             return o;
+           }),
+           py::kw_only(), py::arg("position_noise") = report_defaults.position_noise,
+           py::arg("velocity_noise") = report_defaults.velocity_noise, py::arg("latency") = report_defaults.latency,
+           py::arg("dropout") = report_defaults.dropout, py::arg("timeout") = report_defaults.timeout,
+           py::arg("seed") = report_defaults.seed,
+           "position_noise m and velocity_noise m/s (standard deviations per axis), latency s, dropout (probability "
+           "a report is lost), timeout s (no fresh report for this long: the vehicle is lost), seed.")
+      .def_readonly("position_noise", &VehicleReportOptions::position_noise, "m")
+      .def_readonly("velocity_noise", &VehicleReportOptions::velocity_noise, "m/s")
+      .def_readonly("latency", &VehicleReportOptions::latency, "s")
+      .def_readonly("dropout", &VehicleReportOptions::dropout, "probability")
+      .def_readonly("timeout", &VehicleReportOptions::timeout, "s")
+      .def_readonly("seed", &VehicleReportOptions::seed);
+
   py::class_<FollowObservation>(m, "FollowObservation", "What the planner sees at an update.")
       .def(py::init([](const Vec2& vehicle_position, const Vec2& vehicle_velocity, double vehicle_heading,
                        const Vec2& uav_position, double uav_heading, const Vec2& offset_rate) {
@@ -265,7 +288,8 @@ void bind_follow(py::module_& parent) {
       .def_readwrite("vehicle_heading", &FollowObservation::vehicle_heading)
       .def_readwrite("uav_position", &FollowObservation::uav_position)
       .def_readwrite("uav_heading", &FollowObservation::uav_heading)
-      .def_readwrite("offset_rate", &FollowObservation::offset_rate);
+      .def_readwrite("offset_rate", &FollowObservation::offset_rate)
+      .def_readwrite("lost", &FollowObservation::lost, "no fresh report: orbit the vehicle's estimate");
 
   py::class_<FollowTick>(m, "FollowTick", "One update of the planner: mode, pattern parameters, state, waypoint.")
       .def_readonly("t", &FollowTick::t, "s")
@@ -280,6 +304,7 @@ void bind_follow(py::module_& parent) {
       .def_readonly("phase", &FollowTick::phase, "sinusoid phase, rad")
       .def_readonly("arc", &FollowTick::arc, "loiter arc length, m")
       .def_readonly("capturing", &FollowTick::capturing, "holding the entry point until the UAV is close")
+      .def_readonly("lost", &FollowTick::lost, "orbiting the vehicle's estimate")
       .def_readonly("offset_vector", &FollowTick::offset_vector, "O - vehicle, m")
       .def_readonly("offset_point", &FollowTick::offset_point, "O, m")
       .def_readonly("offset_velocity", &FollowTick::offset_velocity, "O's velocity, m/s")
@@ -329,7 +354,11 @@ void bind_follow(py::module_& parent) {
       .def_readonly("camera_fraction", &FollowMetrics::camera_fraction, "time fraction with the vehicle in view")
       .def_readonly("mean_vehicle_distance", &FollowMetrics::mean_vehicle_distance)
       .def_readonly("mean_offset_distance", &FollowMetrics::mean_offset_distance)
-      .def_readonly("mean_offset_error", &FollowMetrics::mean_offset_error, "mean of UAV - offset point (2,)");
+      .def_readonly("mean_offset_error", &FollowMetrics::mean_offset_error, "mean of UAV - offset point (2,)")
+      .def_readonly("lost_time", &FollowMetrics::lost_time, "s without a report younger than the timeout")
+      .def_readonly("lost_episodes", &FollowMetrics::lost_episodes)
+      .def_readonly("mean_reacquire_time", &FollowMetrics::mean_reacquire_time, "s from a fresh report to the camera")
+      .def_readonly("max_reacquire_time", &FollowMetrics::max_reacquire_time, "s");
 
   py::class_<FollowRun>(m, "FollowRun", "One follow run: per-sample arrays, the 1 Hz updates and the metrics.")
       .def_readonly("t", &FollowRun::t, "sample times (s)")
@@ -348,6 +377,7 @@ void bind_follow(py::module_& parent) {
            }, "mode of the current update at each sample")
       .def_readonly("capturing", &FollowRun::capturing, "the update holds its entry point (0/1)")
       .def_readonly("in_view", &FollowRun::in_view, "vehicle in the camera footprint (0/1)")
+      .def_readonly("lost", &FollowRun::lost, "the vehicle is lost (0/1; empty: never)")
       .def_readonly("tracking_error", &FollowRun::tracking_error, "distance from the planned path (m)")
       .def_readonly("along_track_lag", &FollowRun::along_track_lag, "m, > 0 behind")
       .def_readonly("wind", &FollowRun::wind, "(n, 2) true wind")
@@ -358,8 +388,10 @@ void bind_follow(py::module_& parent) {
       .def_property_readonly("waypoint_times", &FollowRun::waypoint_times, "when each waypoint was issued (s)");
 
   const auto run_options = [](const FollowFlight& flight, const DownwardCamera& camera, std::optional<Vec3> start,
-                               double path_window, const std::vector<std::tuple<double, double, double>>& offsets) {
+                               double path_window, const std::vector<std::tuple<double, double, double>>& offsets,
+                               const VehicleReportOptions& reports) {
     FollowRunOptions options;
+    options.reports = reports;
     options.flight = flight;
     options.camera = camera;
     options.start = start;
@@ -373,8 +405,8 @@ void bind_follow(py::module_& parent) {
       [run_options](const GroundVehicle& vehicle, const Uav& uav, const FollowParameters& parameters, const Wind& wind,
                     std::optional<Vec2> wind_estimate, const FollowFlight& flight, const DownwardCamera& camera,
                     std::optional<Vec3> start, double path_window,
-                    const std::vector<std::tuple<double, double, double>>& offsets) {
-        const FollowRunOptions options = run_options(flight, camera, start, path_window, offsets);
+                    const std::vector<std::tuple<double, double, double>>& offsets, const VehicleReportOptions& reports) {
+        const FollowRunOptions options = run_options(flight, camera, start, path_window, offsets, reports);
         const Vec2 estimate = wind_estimate.value_or(Vec2(wind.east, wind.north));
         py::gil_scoped_release release;
         return follow(vehicle, uav, parameters, wind, estimate, options);
@@ -383,25 +415,31 @@ void bind_follow(py::module_& parent) {
       py::arg("wind_estimate") = py::none(), py::arg("flight") = FollowFlight{}, py::arg("camera") = DownwardCamera{},
       py::arg("start") = py::none(), py::arg("path_window") = option_defaults.path_window,
       py::arg("offset_schedule") = std::vector<std::tuple<double, double, double>>{},
+      py::arg("reports") = VehicleReportOptions{},
       "Fly the follow planner's 1 Hz waypoints with the flight layer (the waypoint paper's law (5), a "
       "WaypointFollower fed during the flight). wind: the true wind (vistrack.flight.Wind); wind_estimate "
       "(east, north): what the planner compensates (None: the true constant wind). start: (x, y, psi) or None "
-      "(on the planned path). offset_schedule: (t, distance, angle) keys, linear in between.");
+      "(on the planned path). offset_schedule: (t, distance, angle) keys, linear in between. reports: what the "
+      "UAV knows of the vehicle (VehicleReportOptions; default: the truth at each update).");
   m.def(
       "orbit_follow",
       [run_options](const GroundVehicle& vehicle, const Uav& uav, const Control& control, double radius,
                     const FollowParameters& parameters, const Wind& wind, const FollowFlight& flight,
-                    const DownwardCamera& camera, std::optional<Vec3> start, double path_window) {
-        const FollowRunOptions options = run_options(flight, camera, start, path_window, {});
+                    const DownwardCamera& camera, std::optional<Vec3> start, double path_window,
+                    const std::vector<std::tuple<double, double, double>>& offsets, const VehicleReportOptions& reports) {
+        const FollowRunOptions options = run_options(flight, camera, start, path_window, offsets, reports);
         py::gil_scoped_release release;
         return orbit_follow(vehicle, uav, control, radius, parameters, wind, options);
       },
       py::arg("vehicle"), py::arg("uav"), py::arg("control"), py::arg("radius"), py::arg("parameters"),
       py::arg("wind") = Wind{}, py::kw_only(), py::arg("flight") = FollowFlight{}, py::arg("camera") = DownwardCamera{},
       py::arg("start") = py::none(), py::arg("path_window") = option_defaults.path_window,
+      py::arg("offset_schedule") = std::vector<std::tuple<double, double, double>>{},
+      py::arg("reports") = VehicleReportOptions{},
       "The baseline follower: the tracking paper's vector field (74) and steering law (86) orbiting the offset "
-      "point (from parameters) at a constant radius, flown by the flight layer in the true wind. The result's "
-      "desired position is the orbit's nearest point.");
+      "point (from parameters and offset_schedule) at a constant radius, flown by the flight layer in the true "
+      "wind, knowing the vehicle from the same reports as the planner (at each update, carried along its "
+      "velocity in between). The result's desired position is the orbit's nearest point.");
 }
 
 }  // namespace vistrack::bindings

@@ -96,3 +96,71 @@ def test_one_switch_is_singular() -> None:
     from vistrack.commands.follow import _count
 
     assert _count(1, "switch") == "1 switch" and _count(0, "switch") == "0 switches"
+
+
+def _wiggly_between_updates(vehicle: follow.GroundVehicle, end: float) -> follow.GroundVehicle:
+    """The vehicle's 1 Hz samples, with a 2 m sideways detour in the second half of every second:
+    the same position and velocity at every update time, a different vehicle in between."""
+    t, xy = [], []
+    for k in range(int(end)):
+        p0, p1 = vehicle.position(k), vehicle.position(k + 1)
+        side = np.array([-(p1 - p0)[1], (p1 - p0)[0]]) / max(np.linalg.norm(p1 - p0), 1e-9)
+        for f, lateral in ((0.0, 0.0), (0.5, 0.0), (0.75, 2.0)):
+            t.append(k + f)
+            xy.append(p0 + f * (p1 - p0) + lateral * side)
+    t.append(end)
+    xy.append(vehicle.position(end))
+    return follow.GroundVehicle(np.array(t), np.array(xy))
+
+
+def test_fair_baseline_knows_the_vehicle_once_a_second() -> None:
+    legs = [follow.VehicleLeg(NORTH, 8.0, 60.0), follow.VehicleLeg(EAST, 8.0, 60.0)]
+    smooth = follow.GroundVehicle.from_legs(legs)
+    wiggly = _wiggly_between_updates(smooth, 120.0)
+    a = follow.baseline(smooth, UAV, 150.0)
+    b = follow.baseline(wiggly, UAV, 150.0)
+    # the same flight (to rounding: the reports' velocity is the segment's), though the vehicles differ
+    assert np.abs(a.state - b.state).max() < 1e-6
+    assert np.abs(a.vehicle - b.vehicle).max() > 1.0
+    # ... and the planner likewise
+    assert np.abs(follow.simulate(smooth, UAV).state - follow.simulate(wiggly, UAV).state).max() < 1e-6
+
+
+def test_fair_baseline_follows_the_offset_schedule() -> None:
+    from vistrack.follow_scenario import FollowScenario
+
+    study = FollowScenario.load(EXAMPLES / "follow_stop.yaml").run(city=False)
+    base = study.baseline
+    assert base is not None
+    late = base.t > 400.0  # the offset is 400 m ahead of the standing vehicle from 330 s
+    centre = base.state[late, :2].mean(axis=0)
+    assert np.linalg.norm(centre - (base.vehicle[-1] + [0.0, 400.0])) < 40.0
+
+
+def test_reports_with_noise_latency_and_dropouts() -> None:
+    vehicle = follow.GroundVehicle.from_legs([follow.VehicleLeg(SOUTH, 10.0, 200.0), follow.VehicleLeg(EAST, 10.0,
+                                                                                                      200.0)])
+    perfect = follow.simulate(vehicle, UAV)
+    assert perfect.metrics["lost_s"] == 0.0 and perfect.metrics["lost_episodes"] == 0
+    reports = follow.VehicleReportOptions(position_noise=5.0, velocity_noise=0.5, latency=2.0, dropout=0.6,
+                                          timeout=3.0, seed=7)
+    first = follow.simulate(vehicle, UAV, reports=reports)
+    again = follow.simulate(vehicle, UAV, reports=reports)
+    assert np.array_equal(first.state, again.state)  # seeded
+    other = follow.simulate(vehicle, UAV, reports=follow.VehicleReportOptions(
+        position_noise=5.0, velocity_noise=0.5, latency=2.0, dropout=0.6, timeout=3.0, seed=8))
+    assert not np.array_equal(first.state, other.state)
+    m = first.metrics
+    assert m["lost_s"] > 0.0 and m["lost_episodes"] > 0 and m["reacquire_s"]["max"] >= m["reacquire_s"]["mean"] >= 0
+    lost = [k for k in first.ticks if k.lost]
+    assert lost and all(np.allclose(k.offset_vector, 0.0) and k.mode == "loiter" for k in lost)
+    # the baseline gets the same reports
+    base = follow.baseline(vehicle, UAV, reports=reports)
+    assert base.metrics["lost_s"] == pytest.approx(m["lost_s"])
+
+
+@pytest.mark.parametrize(("key", "value"), [("position_noise", -1.0), ("velocity_noise", -0.5), ("latency", -2.0),
+                                            ("dropout", 1.0), ("timeout", 0.0)])
+def test_bad_reports_name_the_field(key: str, value: float) -> None:
+    with pytest.raises(vt.VistrackError, match=rf"^reports\.{key} = "):
+        follow.VehicleReportOptions(**{key: value})

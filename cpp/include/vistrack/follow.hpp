@@ -126,6 +126,54 @@ class GroundVehicle {
   std::vector<double> headings_;
 };
 
+// ---- What the UAV knows of the vehicle (beyond the paper) -------------------------------------------
+
+// The vehicle's reports, one per update period (section V's 1 Hz), as a radio link delivers them:
+// Gaussian noise on position and velocity, a latency, and dropouts (seeded). All zero: the true
+// state at each update, as the paper's simulation sends it.
+struct VehicleReportOptions {
+  double position_noise = 0.0;  // m, standard deviation per axis
+  double velocity_noise = 0.0;  // m/s, per axis
+  double latency = 0.0;         // s from measurement to reception
+  double dropout = 0.0;         // probability that a report is lost, in [0, 1)
+  double timeout = 5.0;         // s without a fresh report after which the vehicle is lost
+  std::uint64_t seed = 1;
+  void validate() const;
+};
+
+struct VehicleReport {
+  double measured = 0.0;  // s
+  double received = 0.0;  // s
+  Vec2 position = Vec2::Zero();
+  Vec2 velocity = Vec2::Zero();
+  double heading = 0.0;
+};
+
+// The vehicle as known on board at time t: the newest report received, carried along its velocity
+// (position + velocity (t - measured)). `lost`: no report younger than the timeout.
+struct VehicleEstimate {
+  Vec2 position = Vec2::Zero();
+  Vec2 velocity = Vec2::Zero();
+  double heading = 0.0;
+  double age = 0.0;  // t - measured, s
+  bool lost = false;
+};
+
+// Reports measured at t0 + k period up to t_end. The first (at t0) is always received at t0: the
+// vehicle is acquired when the run starts.
+class VehicleReports {
+ public:
+  VehicleReports(const GroundVehicle& vehicle, double t0, double t_end, double period,
+                 const VehicleReportOptions& options = {});
+  VehicleEstimate estimate(double t) const;
+  const std::vector<VehicleReport>& reports() const { return reports_; }
+  const VehicleReportOptions& options() const { return options_; }
+
+ private:
+  std::vector<VehicleReport> reports_;  // by reception time
+  VehicleReportOptions options_;
+};
+
 // ---- Loiter patterns (Fig. 3) ---------------------------------------------------------------------
 
 enum class FollowMode : std::uint8_t { Sinusoid = 0, Loiter = 1, Straight = 2 };
@@ -207,6 +255,9 @@ struct FollowObservation {
   Vec2 uav_position = Vec2::Zero();
   double uav_heading = 0.0;
   Vec2 offset_rate = Vec2::Zero();  // rate of change of the offset vector itself (a moving offset)
+  // No fresh report for the timeout: orbit the vehicle's estimate (vehicle_position, the last known
+  // position carried along its last velocity) without the offset (beyond the paper).
+  bool lost = false;
 };
 
 // One 1 Hz update: the mode, the pattern's parameters and its state at time t.
@@ -223,6 +274,7 @@ struct FollowTick {
   double phase = 0.0;           // sinusoid: phi at t
   double arc = 0.0;             // loiter: s along the pattern at t
   bool capturing = false;       // holding the entry point until the UAV is within one update's flight
+  bool lost = false;            // orbiting the vehicle's estimate (FollowObservation::lost)
   Vec2 offset_vector = Vec2::Zero();   // O - vehicle at t
   Vec2 offset_point = Vec2::Zero();    // O at t
   Vec2 offset_velocity = Vec2::Zero(); // O's velocity at t (the vehicle's plus the offset's rate)
@@ -305,6 +357,12 @@ struct FollowMetrics {
   double mean_vehicle_distance = 0.0;  // horizontal UAV - vehicle, m
   double mean_offset_distance = 0.0;   // horizontal UAV - offset point, m
   Vec2 mean_offset_error = Vec2::Zero();  // mean of UAV - offset point: how far off-centre, m
+  // With imperfect reports: time with the vehicle lost (no report younger than the timeout), the
+  // episodes, and the time from a fresh report after each until the camera sees the vehicle again.
+  double lost_time = 0.0;              // s
+  int lost_episodes = 0;
+  double mean_reacquire_time = 0.0;    // s (0 without episodes)
+  double max_reacquire_time = 0.0;     // s; an episode never reacquired counts to the end
 };
 
 // A change of the offset over time: (t, distance, angle) keys, linear in between, held outside.
@@ -322,6 +380,7 @@ struct FollowRunOptions {
   std::optional<Vec3> start;
   double path_window = 10.0;  // s either side within which the tracking error looks for the path
   std::vector<OffsetKey> offset_schedule;  // empty: the parameters' fixed offset
+  VehicleReportOptions reports;  // what the UAV knows of the vehicle (default: the truth at 1 Hz)
   void validate() const;
 };
 
@@ -338,6 +397,7 @@ struct FollowRun {
   std::vector<std::uint8_t> mode;     // FollowMode of the current update
   std::vector<std::uint8_t> capturing;  // the current update holds its entry point (empty: never)
   std::vector<std::uint8_t> in_view;  // vehicle in the camera footprint
+  std::vector<std::uint8_t> lost;     // the vehicle is lost (empty: never)
   std::vector<double> tracking_error; // distance from the planned path
   std::vector<double> along_track_lag;
   Points2 wind;                       // the true wind at each sample
@@ -363,23 +423,34 @@ void score_follow_run(FollowRun& run, const Uav& uav, const DownwardCamera& came
 // ---- Baseline: the tracking pipeline's vector field about the vehicle ------------------------------
 
 // The guidance vector field (74) and steering law (86) of the visibility-volume tracking paper,
-// orbiting the offset point at a constant radius, as a flight-layer guidance that sees the
-// vehicle's position and velocity at every step (what vistrack.simulate does with a PoiPath, here
-// with stops, turns and wind). The target it reports is the offset point.
+// orbiting the offset point at a constant radius, as a flight-layer guidance (what vistrack.simulate
+// does with a PoiPath, here with stops, turns and wind). A fair comparison with the planner: it
+// knows the vehicle only from the same reports (the estimate: the newest report carried along its
+// velocity) and follows the same offset schedule; lost, it orbits the estimate. The target it
+// reports is the (estimated) offset point.
 class OrbitFollower : public FlightGuidance {
  public:
-  OrbitFollower(const GroundVehicle& vehicle, const FollowPlanner& offsets, const GuidanceGains& gains, double radius);
+  OrbitFollower(const VehicleReports& reports, const FollowParameters& parameters,
+                const std::vector<OffsetKey>& offset_schedule, const GuidanceGains& gains, double radius);
+  // The orbit's centre and its velocity at t.
+  OrbitState orbit(double t) const;
   void start(const Configuration&, double) override {}
   GuidanceCommand command(const Configuration& state, double t) const override;
   void advance(const Configuration&, double) override {}
   bool done() const override { return false; }
 
  private:
-  const GroundVehicle& vehicle_;
-  const FollowPlanner& offsets_;
+  const VehicleReports& reports_;
+  FollowParameters parameters_;
+  std::vector<OffsetKey> schedule_;
   GuidanceGains gains_;
   double radius_;
 };
+
+// The offset vector at t: the schedule's (distance, angle) at t (the parameters' when it is empty),
+// the angle from north or from `vehicle_heading` as the parameters' reference says.
+Vec2 scheduled_offset_vector(const std::vector<OffsetKey>& schedule, const FollowParameters& parameters,
+                             double vehicle_heading, double t);
 
 // Flies the baseline like follow() flies the planner. In the result the desired position is the
 // orbit's nearest point (the tracking error is |r - R|), the mode "loiter", and there are no

@@ -205,9 +205,11 @@ FollowTick FollowPlanner::update(double t, const FollowObservation& o) {
     detail::fail_field("t", t, "updates must move forward in time (the last was " + detail::to_text(previous_.t) + ")");
   FollowTick tick;
   tick.t = t;
-  tick.offset_vector = offset_vector(o.vehicle_heading);
+  tick.lost = o.lost;
+  // Lost: orbit the vehicle's estimate itself (the last known position carried along its velocity).
+  tick.offset_vector = o.lost ? Vec2::Zero() : offset_vector(o.vehicle_heading);
   tick.offset_point = o.vehicle_position + tick.offset_vector;
-  const Vec2 offset_velocity = o.vehicle_velocity + o.offset_rate;
+  const Vec2 offset_velocity = o.vehicle_velocity + (o.lost ? Vec2::Zero() : o.offset_rate);
   if (parameters_.wind_compensation) {
     tick.uav_speed = uav_.speed;
     tick.frame_velocity = offset_velocity - wind_;
@@ -220,7 +222,9 @@ FollowTick FollowPlanner::update(double t, const FollowObservation& o) {
   tick.speed_ratio = frame_moves ? tick.uav_speed / frame_speed : std::numeric_limits<double>::infinity();
   tick.track_angle = frame_moves ? std::atan2(tick.frame_velocity.y(), tick.frame_velocity.x())
                                  : (has_previous_ ? previous_.track_angle : o.vehicle_heading);
-  if (has_previous_) {
+  if (o.lost) {
+    tick.mode = tick.speed_ratio > 1.0 ? FollowMode::Loiter : FollowMode::Straight;
+  } else if (has_previous_ && !previous_.lost) {
     tick.mode = next_mode(previous_.mode, tick.speed_ratio);
   } else {
     tick.mode = tick.speed_ratio > parameters_.threshold ? FollowMode::Loiter
@@ -228,7 +232,8 @@ FollowTick FollowPlanner::update(double t, const FollowObservation& o) {
                                                            : FollowMode::Straight;
   }
   const Vec2 uav_relative = o.uav_position - tick.offset_point;
-  const bool same_mode = has_previous_ && previous_.mode == tick.mode;
+  // Losing or regaining the vehicle moves the centre: the pattern is entered afresh.
+  const bool same_mode = has_previous_ && previous_.mode == tick.mode && previous_.lost == tick.lost;
   bool entered = false;
   if (tick.mode == FollowMode::Sinusoid) {
     set_sinusoid_shape(tick);

@@ -8,7 +8,7 @@ import numpy.typing
 import typing
 import vistrack._core
 import vistrack._core.flight
-__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'SinusoidShape', 'ThresholdChoice', 'VehicleLeg', 'along_track_rate', 'arc_length', 'camera_reach', 'camera_sees', 'camera_threshold', 'default_uav', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_shape', 'sinusoid_slope', 'speed_ratio']
+__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'SinusoidShape', 'ThresholdChoice', 'VehicleLeg', 'VehicleReportOptions', 'along_track_rate', 'arc_length', 'camera_reach', 'camera_sees', 'camera_threshold', 'default_uav', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_shape', 'sinusoid_slope', 'speed_ratio']
 class VehicleLeg:
     """
     One leg of a route: heading (rad from east), speed at its start and end (m/s, linear in between; 0 and 0 is a stop), duration (s).
@@ -382,11 +382,55 @@ class LoiterShape:
         """
         the rose's turn radius rho, m
         """
+class VehicleReportOptions:
+    """
+    The vehicle's 1 Hz reports as a radio link delivers them (beyond the paper).
+    """
+    def __init__(self, *, position_noise: typing.SupportsFloat | typing.SupportsIndex = 0.0, velocity_noise: typing.SupportsFloat | typing.SupportsIndex = 0.0, latency: typing.SupportsFloat | typing.SupportsIndex = 0.0, dropout: typing.SupportsFloat | typing.SupportsIndex = 0.0, timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0, seed: typing.SupportsInt | typing.SupportsIndex = 1) -> None:
+        """
+        position_noise m and velocity_noise m/s (standard deviations per axis), latency s, dropout (probability a report is lost), timeout s (no fresh report for this long: the vehicle is lost), seed.
+        """
+    @property
+    def dropout(self) -> float:
+        """
+        probability
+        """
+    @property
+    def latency(self) -> float:
+        """
+        s
+        """
+    @property
+    def position_noise(self) -> float:
+        """
+        m
+        """
+    @property
+    def seed(self) -> int:
+        ...
+    @property
+    def timeout(self) -> float:
+        """
+        s
+        """
+    @property
+    def velocity_noise(self) -> float:
+        """
+        m/s
+        """
 class FollowObservation:
     """
     What the planner sees at an update.
     """
     def __init__(self, *, vehicle_position: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], vehicle_velocity: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], vehicle_heading: typing.SupportsFloat | typing.SupportsIndex = 0.0, uav_position: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., uav_heading: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_rate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ...) -> None:
+        ...
+    @property
+    def lost(self) -> bool:
+        """
+        no fresh report: orbit the vehicle's estimate
+        """
+    @lost.setter
+    def lost(self, arg0: bool) -> None:
         ...
     @property
     def offset_rate(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
@@ -447,6 +491,11 @@ class FollowTick:
     def frame_velocity(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
         """
         offset point's velocity in the planning frame
+        """
+    @property
+    def lost(self) -> bool:
+        """
+        orbiting the vehicle's estimate
         """
     @property
     def mode(self) -> str:
@@ -571,8 +620,21 @@ class FollowMetrics:
     def final_along_track_lag(self) -> float:
         ...
     @property
+    def lost_episodes(self) -> int:
+        ...
+    @property
+    def lost_time(self) -> float:
+        """
+        s without a report younger than the timeout
+        """
+    @property
     def max_along_track_lag(self) -> float:
         ...
+    @property
+    def max_reacquire_time(self) -> float:
+        """
+        s
+        """
     @property
     def max_tracking_error(self) -> float:
         ...
@@ -588,6 +650,11 @@ class FollowMetrics:
     def mean_offset_error(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
         """
         mean of UAV - offset point (2,)
+        """
+    @property
+    def mean_reacquire_time(self) -> float:
+        """
+        s from a fresh report to the camera
         """
     @property
     def mean_tracking_error(self) -> float:
@@ -642,6 +709,11 @@ class FollowRun:
     def in_view(self) -> list[int]:
         """
         vehicle in the camera footprint (0/1)
+        """
+    @property
+    def lost(self) -> list[int]:
+        """
+        the vehicle is lost (0/1; empty: never)
         """
     @property
     def metrics(self) -> FollowMetrics:
@@ -735,13 +807,13 @@ def default_uav() -> vistrack._core.Uav:
     """
     The follower's vehicle where a scenario gives none, as a new Uav(speed=21, min_turn_radius=50, altitude=200, dynamics='dubins') (the paper's UAV flies at 20-23 m/s).
     """
-def follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] | None = None, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0, offset_schedule: collections.abc.Sequence[tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]] = []) -> FollowRun:
+def follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] | None = None, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0, offset_schedule: collections.abc.Sequence[tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]] = [], reports: VehicleReportOptions = ...) -> FollowRun:
     """
-    Fly the follow planner's 1 Hz waypoints with the flight layer (the waypoint paper's law (5), a WaypointFollower fed during the flight). wind: the true wind (vistrack.flight.Wind); wind_estimate (east, north): what the planner compensates (None: the true constant wind). start: (x, y, psi) or None (on the planned path). offset_schedule: (t, distance, angle) keys, linear in between.
+    Fly the follow planner's 1 Hz waypoints with the flight layer (the waypoint paper's law (5), a WaypointFollower fed during the flight). wind: the true wind (vistrack.flight.Wind); wind_estimate (east, north): what the planner compensates (None: the true constant wind). start: (x, y, psi) or None (on the planned path). offset_schedule: (t, distance, angle) keys, linear in between. reports: what the UAV knows of the vehicle (VehicleReportOptions; default: the truth at each update).
     """
-def orbit_follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, control: vistrack._core.Control, radius: typing.SupportsFloat | typing.SupportsIndex, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0) -> FollowRun:
+def orbit_follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, control: vistrack._core.Control, radius: typing.SupportsFloat | typing.SupportsIndex, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0, offset_schedule: collections.abc.Sequence[tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]] = [], reports: VehicleReportOptions = ...) -> FollowRun:
     """
-    The baseline follower: the tracking paper's vector field (74) and steering law (86) orbiting the offset point (from parameters) at a constant radius, flown by the flight layer in the true wind. The result's desired position is the orbit's nearest point.
+    The baseline follower: the tracking paper's vector field (74) and steering law (86) orbiting the offset point (from parameters and offset_schedule) at a constant radius, flown by the flight layer in the true wind, knowing the vehicle from the same reports as the planner (at each update, carried along its velocity in between). The result's desired position is the orbit's nearest point.
     """
 def phase_at_arc(arc: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], amplitude: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period_distance: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
     """

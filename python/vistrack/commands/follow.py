@@ -17,7 +17,8 @@ import argparse
 from pathlib import Path
 from typing import Any, Optional
 
-from ..follow.scenario import FollowScenario, threshold_value
+from ..follow.keys import threshold_value
+from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
 from .output import add_report_arguments, output_folder, report_options

@@ -42,6 +42,7 @@ from .simulation import (
     GroundVehicle,
     LoiterShape,
     VehicleLeg,
+    VehicleReportOptions,
     along_track_rate,
     arc_length,
     baseline,
@@ -66,8 +67,8 @@ from .simulation import (
 __all__ = [
     "MODES", "CityRoad", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowScenario", "FollowStudy", "FollowTick", "GroundVehicle",
-    "LoiterShape", "VehicleLeg", "along_track_rate", "arc_length", "baseline", "baseline_infeasibility",
-    "baseline_radius", "camera_footprint", "camera_reach", "camera_sees", "camera_threshold", "coordinated_bank",
-    "default_uav", "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_shape",
-    "sinusoid_slope", "speed_ratio", "threshold_warning",
+    "LoiterShape", "VehicleLeg", "VehicleReportOptions", "along_track_rate", "arc_length", "baseline",
+    "baseline_infeasibility", "baseline_radius", "camera_footprint", "camera_reach", "camera_sees", "camera_threshold",
+    "coordinated_bank", "default_uav", "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude",
+    "sinusoid_shape", "sinusoid_slope", "speed_ratio", "threshold_warning",
 ]

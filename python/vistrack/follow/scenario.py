@@ -23,6 +23,8 @@ counter-clockwise from east unless a compass word is given)::
     flight: {dt: 0.02, integration: discrete, max_time: 0, guidance: l1, l1_period: 8, l1_damping: 0.75}
                                   # guidance law5: each 1 s leg by the paper's law (5)
     baseline: {radius: 0, beta: 0.025, k_psi: 20, direction: ccw}   # radius 0: Lemma 6; false: none
+    reports: {position_noise: 0, velocity_noise: 0, latency: 0, dropout: 0, timeout: 5, seed: 1}
+                                  # the vehicle's 1 Hz reports as both followers get them (beyond the paper)
     city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude
                                   # (a CSV polyline; or vehicle.route on the city's road network)
 
@@ -62,6 +64,7 @@ from ..scenario_blocks import (
 from ..schema import beta as schema_beta
 from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
 from .files import read_road_path, read_vehicle_track
+from .keys import reports_block, threshold_value
 from .simulation import (
     DownwardCamera,
     FollowFlight,
@@ -69,6 +72,7 @@ from .simulation import (
     FollowResult,
     GroundVehicle,
     VehicleLeg,
+    VehicleReportOptions,
     baseline,
     baseline_infeasibility,
     default_uav,
@@ -77,14 +81,14 @@ from .simulation import (
     threshold_warning,
 )
 
-__all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy", "threshold_value"]
+__all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy"]
 
 # Compass words as angles counter-clockwise from east (radians).
 HEADINGS = {name: math.radians(deg) for name, deg in (
     ("east", 0.0), ("northeast", 45.0), ("north", 90.0), ("northwest", 135.0), ("west", 180.0),
     ("southwest", -135.0), ("south", -90.0), ("southeast", -45.0))}
 TOP_KEYS = {"description", "georeference", "uav", "vehicle", "follow", "offset", "wind", "wind_estimate", "camera",
-            "flight", "baseline", "city"}
+            "flight", "baseline", "city", "reports"}
 # Spellings from before the one scenario schema, still read (city.map: see _old_city_map).
 RENAMES = (Rename("origin", "georeference", origin_to_georeference),)
 # How scenario files fly the plan unless they say: its planned path by L1 guidance (beyond the
@@ -112,6 +116,7 @@ class FollowScenario:
     flight: FollowFlight = field(default_factory=lambda: FollowFlight(guidance=DEFAULT_LEG_GUIDANCE))
     baseline_radius: Optional[float] = None  # None: Lemma 6 (vt.follow.baseline_radius)
     baseline_control: Optional[Control] = field(default_factory=Control)  # None: no baseline
+    reports: VehicleReportOptions = field(default_factory=VehicleReportOptions)
     city: Optional[City] = None
     route: Optional[dict[str, Any]] = None  # vehicle.route {from, to, crs}: the city run's road route
     description: str = ""
@@ -156,7 +161,7 @@ class FollowScenario:
         radius, control = _baseline(data)
         return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
-                   baseline_control=control, city=_city(data, base, route), route=route,
+                   baseline_control=control, reports=reports_block(data), city=_city(data, base, route), route=route,
                    description=str(data.get("description", "")),
                    path=path, origin=georeference_block(data))
 
@@ -193,10 +198,11 @@ class FollowScenario:
         parameters = self.parameters
         if compensation is not None:
             parameters = _with_compensation(parameters, compensation)
-        common: dict[str, Any] = {"wind": self.wind, "flight": self.flight, "camera": self.camera}
+        # Both followers get the same offset schedule and the same reports (a fair baseline).
+        common: dict[str, Any] = {"wind": self.wind, "flight": self.flight, "camera": self.camera,
+                                  "offset_schedule": self.offset_schedule, "reports": self.reports}
         say("follow")
-        follow = simulate(self.vehicle, self.uav, parameters, wind_estimate=self.wind_estimate,
-                          offset_schedule=self.offset_schedule, **common)
+        follow = simulate(self.vehicle, self.uav, parameters, wind_estimate=self.wind_estimate, **common)
         flies = self.baseline_control is not None
         orbit = None
         reason = baseline_infeasibility(self.vehicle, self.uav) if flies else None
@@ -212,8 +218,8 @@ class FollowScenario:
             vehicle = self.city_vehicle(env)
             uav = self.uav
             study.environment = env
-            study.city_follow = simulate(vehicle, uav, parameters, wind_estimate=self.wind_estimate,
-                                         offset_schedule=self.offset_schedule, scene=scene, **common)
+            study.city_follow = simulate(vehicle, uav, parameters, wind_estimate=self.wind_estimate, scene=scene,
+                                         **common)
             study.city_baseline_reason = baseline_infeasibility(vehicle, uav) if flies else None
             if flies and study.city_baseline_reason is None:
                 study.city_baseline = baseline(vehicle, uav, self.baseline_radius, control=self.baseline_control,
@@ -367,19 +373,6 @@ def _parameters(data: Mapping[str, Any]) -> FollowParameters:
                                 offset_reference=str(o.get("reference", d.offset_reference)), **values)
     except ValueError as error:  # the core names the field (follow.hysteresis, ...)
         raise type(error)(str(error).replace("direction =", "follow.loiter_direction =", 1)) from None
-
-
-def threshold_value(key: str, value: Any) -> float | str:
-    """follow.threshold: "auto" (picked from the camera; the default) or the paper's h, a speed ratio > 1."""
-    if value == "auto":
-        return "auto"
-    try:
-        h = number(key, value)
-    except ValueError:
-        h = math.nan
-    if not h > 1.0:
-        raise fail(key, value, 'must be "auto" or a number > 1 (a speed ratio v_p / v_g; the paper\'s is 3)')
-    return h
 
 
 def _offset_schedule(data: Mapping[str, Any]) -> list[tuple[float, float, float]]:

@@ -32,6 +32,7 @@ FollowTick = _follow.FollowTick
 GroundVehicle = _follow.GroundVehicle
 LoiterShape = _follow.LoiterShape
 VehicleLeg = _follow.VehicleLeg
+VehicleReportOptions = _follow.VehicleReportOptions
 along_track_rate = _follow.along_track_rate
 arc_length = _follow.arc_length
 camera_reach = _follow.camera_reach
@@ -50,10 +51,10 @@ MODES = ("sinusoid", "loiter", "straight")
 __all__ = [
     "MODES", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowTick", "GroundVehicle", "LoiterShape", "VehicleLeg",
-    "along_track_rate", "arc_length", "baseline", "baseline_infeasibility", "baseline_radius", "camera_footprint",
-    "camera_reach", "camera_sees", "camera_threshold", "coordinated_bank", "default_uav", "line_of_sight",
-    "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_record", "sinusoid_shape", "sinusoid_slope",
-    "speed_ratio", "threshold_record", "threshold_warning",
+    "VehicleReportOptions", "along_track_rate", "arc_length", "baseline", "baseline_infeasibility", "baseline_radius",
+    "camera_footprint", "camera_reach", "camera_sees", "camera_threshold", "coordinated_bank", "default_uav",
+    "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_record", "sinusoid_shape",
+    "sinusoid_slope", "speed_ratio", "threshold_record", "threshold_warning",
 ]
 
 
@@ -146,6 +147,9 @@ class FollowResult:
             "mean_vehicle_distance_m": m.mean_vehicle_distance,
             "mean_offset_distance_m": m.mean_offset_distance,
             "centre_offset_m": [float(v) for v in m.mean_offset_error],
+            "lost_s": m.lost_time,
+            "lost_episodes": m.lost_episodes,
+            "reacquire_s": {"mean": m.mean_reacquire_time, "max": m.max_reacquire_time},
             "smoothness": _flight.flight_smoothness(self.run.t, self.run.bank).as_dict() if len(self.run.t) >= 2
             else None,
         }
@@ -233,21 +237,24 @@ def simulate(vehicle: GroundVehicle, uav: Uav, parameters: Optional[FollowParame
              wind: Wind | Sequence[float] | None = None, wind_estimate: Optional[Sequence[float]] = None,
              flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
              start: Optional[Sequence[float]] = None, offset_schedule: Sequence[tuple[float, float, float]] = (),
-             scene: Optional[VisibilityScene] = None, vehicle_height: float = 0.5) -> FollowResult:
+             scene: Optional[VisibilityScene] = None, vehicle_height: float = 0.5,
+             reports: Optional[VehicleReportOptions] = None) -> FollowResult:
     """Plan and fly a follow run: the planner's 1 Hz waypoints flown by the flight layer.
 
     wind: the true wind (``vt.flight.Wind`` or (east, north) m/s); wind_estimate: what the
     planner compensates (default: the true constant wind; compensation is
     ``parameters.wind_compensation``). start: (x, y, psi), default on the planned path.
     offset_schedule: (t, distance, angle) keys, linear in between (Fig. 8 moves the loiter ahead).
-    With a scene, ``line_of_sight`` is evaluated at every sample."""
+    reports: what the UAV knows of the vehicle (noise, latency, dropouts, timeout; default the truth
+    at each update). With a scene, ``line_of_sight`` is evaluated at every sample."""
     true_wind = _wind(wind)
     estimate = (None if wind_estimate is None
                 else np.array(_numbers(wind_estimate, 2, "wind_estimate", "(east, north) m/s")))
     run = _follow.follow(vehicle, uav, parameters or FollowParameters(), true_wind, wind_estimate=estimate,
                          flight=flight or FollowFlight(), camera=camera or DownwardCamera(),
                          start=_start(start),
-                         offset_schedule=[_offset_key(k, key) for k, key in enumerate(offset_schedule)])
+                         offset_schedule=[_offset_key(k, key) for k, key in enumerate(offset_schedule)],
+                         reports=reports or VehicleReportOptions())
     visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
     return FollowResult(run, "sinusoid", visible)
 
@@ -292,16 +299,21 @@ def baseline(vehicle: GroundVehicle, uav: Uav, radius: Optional[float] = None, *
              parameters: Optional[FollowParameters] = None, wind: Wind | Sequence[float] | None = None,
              flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
              start: Optional[Sequence[float]] = None, scene: Optional[VisibilityScene] = None,
-             vehicle_height: float = 0.5) -> FollowResult:
+             vehicle_height: float = 0.5, offset_schedule: Sequence[tuple[float, float, float]] = (),
+             reports: Optional[VehicleReportOptions] = None) -> FollowResult:
     """The tracking pipeline's guidance vector field (74) and steering law (86) at a constant
-    radius about the offset point of ``parameters`` (default radius: :func:`baseline_radius`),
-    flown by the flight layer in the true wind. Its desired position is the orbit's nearest point,
-    so its tracking error is |r - R|."""
+    radius about the offset point of ``parameters`` and ``offset_schedule`` (default radius:
+    :func:`baseline_radius`), flown by the flight layer in the true wind. A fair comparison: it
+    knows the vehicle from the same reports as the planner (``reports``; at each update, carried
+    along the reported velocity in between). Its desired position is the orbit's nearest point, so
+    its tracking error is |r - R|."""
     parameters = parameters or FollowParameters()
     r = baseline_radius(vehicle, uav, parameters) if radius is None else length("baseline.radius", radius)
     run = _follow.orbit_follow(vehicle, uav, control or Control(), r, parameters, _wind(wind),
                                flight=flight or FollowFlight(), camera=camera or DownwardCamera(),
-                               start=_start(start))
+                               start=_start(start),
+                               offset_schedule=[_offset_key(k, key) for k, key in enumerate(offset_schedule)],
+                               reports=reports or VehicleReportOptions())
     visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
     return FollowResult(run, "orbit", visible)
 
