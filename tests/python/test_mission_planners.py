@@ -219,7 +219,7 @@ def test_cli_follow_export(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -
     scenario = tmp_path / "short.yaml"
     scenario.write_text("origin: [35.0, -80.0]\nuav: {speed: 21.0, min_turn_radius: 50.0, altitude: 200.0}\n"
                         "vehicle: {legs: [{heading: south, speed: 10.0, duration: 80.0}]}\n"
-                        "baseline: false\n")
+                        "follow: {threshold: 3}\nbaseline: false\n")  # the paper's sinusoid starts at the origin
     out = tmp_path / "out"
     assert main(["follow", str(scenario), "--out", str(out), "--quiet", "--export", str(tmp_path / "f.plan"),
                  "--export", str(tmp_path / "f.geojson"), "--origin", "35.2249,-80.8403"]) == 0
