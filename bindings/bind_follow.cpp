@@ -131,13 +131,15 @@ void bind_follow(py::module_& parent) {
       .def(py::init([](double period, double turn_margin, const py::object& threshold_value, double hysteresis,
                        const std::string& loiter_pattern, double loiter_radius, Circulation loiter_direction,
                        double offset_distance, double offset_angle, const std::string& offset_reference,
-                       bool wind_compensation, double update_period) {
+                       bool wind_compensation, double update_period, const std::string& strategy,
+                       double strategy_margin) {
              const double threshold = threshold_of(threshold_value);
              FollowParameters p{period, turn_margin, threshold, hysteresis,
                                 from_name<LoiterPattern>(loiter_pattern, "follow.loiter_pattern"), loiter_radius,
                                 loiter_direction, offset_distance, offset_angle,
                                 from_name<OffsetReference>(offset_reference, "follow.offset_reference"),
-                                wind_compensation, update_period};
+                                wind_compensation, update_period,
+                                from_name<FollowStrategy>(strategy, "follow.strategy"), strategy_margin};
              p.validate();
              return p;
            }),
@@ -147,6 +149,7 @@ void bind_follow(py::module_& parent) {
            py::arg("loiter_direction") = defaults.loiter_direction, py::arg("offset_distance") = defaults.offset_distance,
            py::arg("offset_angle") = defaults.offset_angle, py::arg("offset_reference") = to_string(defaults.offset_reference),
            py::arg("wind_compensation") = defaults.wind_compensation, py::arg("update_period") = defaults.update_period,
+           py::arg("strategy") = to_string(defaults.strategy), py::arg("strategy_margin") = defaults.strategy_margin,
            "Validated parameters.")
       .def_readwrite("period", &FollowParameters::period, "T: time for the vehicle to cover one period, s")
       .def_readwrite("turn_margin", &FollowParameters::turn_margin, "tightest planned turn / r_min")
@@ -171,6 +174,13 @@ void bind_follow(py::module_& parent) {
           "'north' (theta from east on the map) or 'heading' (theta from the vehicle's heading)")
       .def_readwrite("wind_compensation", &FollowParameters::wind_compensation, "plan in the air mass")
       .def_readwrite("update_period", &FollowParameters::update_period, "s between waypoints (1 Hz)")
+      .def_property(
+          "strategy", [](const FollowParameters& p) { return to_string(p.strategy); },
+          [](FollowParameters& p, const std::string& v) { p.strategy = from_name<FollowStrategy>(v, "follow.strategy"); },
+          "'paper' (sinusoid and loiter), 'standoff' (vector field (74) about the offset point) or 'auto' (per update, "
+          "the pattern predicted to see the vehicle most)")
+      .def_readwrite("strategy_margin", &FollowParameters::strategy_margin,
+                     "strategy auto: switch only for this much more predicted camera fraction")
       .def("validate", &FollowParameters::validate, "Raise VistrackError naming the first invalid field.");
 
   const FollowFlight flight_defaults;
@@ -305,6 +315,9 @@ void bind_follow(py::module_& parent) {
       .def_readonly("arc", &FollowTick::arc, "loiter arc length, m")
       .def_readonly("capturing", &FollowTick::capturing, "holding the entry point until the UAV is close")
       .def_readonly("lost", &FollowTick::lost, "orbiting the vehicle's estimate")
+      .def_readonly("radius", &FollowTick::radius, "standoff orbit radius, m")
+      .def_readonly("predicted_camera", &FollowTick::predicted_camera,
+                    "strategy auto: the chosen pattern's predicted camera fraction (-1: none)")
       .def_readonly("offset_vector", &FollowTick::offset_vector, "O - vehicle, m")
       .def_readonly("offset_point", &FollowTick::offset_point, "O, m")
       .def_readonly("offset_velocity", &FollowTick::offset_velocity, "O's velocity, m/s")
@@ -315,7 +328,10 @@ void bind_follow(py::module_& parent) {
            py::arg("uav"), py::arg("wind_estimate") = Vec2(0.0, 0.0), py::arg("camera") = DownwardCamera{},
            "wind_estimate (east, north) m/s is used with compensation; camera: what an 'auto' threshold is picked for.")
       .def_property_readonly("threshold_choice", &FollowPlanner::threshold_choice, "The threshold in use.")
-      .def_property_readonly("orbit_radius", &FollowPlanner::orbit_radius, "Radius of the planner's orbits, m.")
+      .def("orbit_radius", &FollowPlanner::orbit_radius, py::arg("frame_speed"),
+           "Radius of the planner's orbits about an offset point moving at frame_speed (Lemma 6), m.")
+      .def("predicted_camera", &FollowPlanner::predicted_camera, py::arg("tick"),
+           "The camera fraction predicted over one steady cycle of the tick's pattern (strategy auto).")
       .def("update", &FollowPlanner::update, py::arg("t"), py::arg("observation"),
            "The update at time t: mode with hysteresis, pattern advanced, next waypoint.")
       .def("offset_vector", &FollowPlanner::offset_vector, py::arg("vehicle_heading"), "O - vehicle for that heading.")
@@ -349,6 +365,7 @@ void bind_follow(py::module_& parent) {
       .def_readonly("time_sinusoid", &FollowMetrics::time_sinusoid)
       .def_readonly("time_loiter", &FollowMetrics::time_loiter)
       .def_readonly("time_straight", &FollowMetrics::time_straight)
+      .def_readonly("time_standoff", &FollowMetrics::time_standoff)
       .def_readonly("time_capturing", &FollowMetrics::time_capturing, "s holding an entry point until reached")
       .def_readonly("mode_switches", &FollowMetrics::mode_switches)
       .def_readonly("camera_fraction", &FollowMetrics::camera_fraction, "time fraction with the vehicle in view")

@@ -164,3 +164,40 @@ def test_reports_with_noise_latency_and_dropouts() -> None:
 def test_bad_reports_name_the_field(key: str, value: float) -> None:
     with pytest.raises(vt.VistrackError, match=rf"^reports\.{key} = "):
         follow.VehicleReportOptions(**{key: value})
+
+
+def test_standoff_orbits_the_offset_point_at_the_lemma_6_radius() -> None:
+    vehicle = follow.GroundVehicle.from_legs([follow.VehicleLeg(NORTH, 6.0, 300.0)])
+    p = follow.FollowParameters(strategy="standoff")
+    result = follow.simulate(vehicle, UAV, p)
+    m = result.metrics
+    assert m["time_in_mode_s"]["standoff"] == pytest.approx(300.0)
+    radius = follow.FollowPlanner(p, UAV).orbit_radius(6.0)
+    assert radius == pytest.approx(62.5 * (1 + 6.0 / 21.0) ** 2)
+    late = result.t > 100.0  # converged: the distance from the offset point is the radius
+    distance = np.linalg.norm(result.state[late, :2] - result.offset_point[late], axis=1)
+    assert np.abs(distance - radius).max() < 0.1 * radius
+
+
+def test_strategy_auto_picks_the_pattern_it_predicts_best() -> None:
+    planner = follow.FollowPlanner(follow.FollowParameters(strategy="auto"), UAV)
+    tick = planner.update(0.0, follow.FollowObservation(vehicle_position=np.zeros(2),
+                                                        vehicle_velocity=np.array([0.0, -10.0]),
+                                                        vehicle_heading=SOUTH))
+    assert tick.mode in ("sinusoid", "loiter", "standoff") and 0.0 <= tick.predicted_camera <= 1.0
+    # a standing vehicle: never the sinusoid (its amplitude would be unbounded)
+    vehicle = follow.GroundVehicle.from_legs([follow.VehicleLeg(NORTH, 8.0, 100.0),
+                                              follow.VehicleLeg(NORTH, 0.0, 100.0)])
+    result = follow.simulate(vehicle, UAV, follow.FollowParameters(strategy="auto"))
+    assert all(k.mode != "sinusoid" for k in result.ticks if k.t > 100.0)
+    # the prediction: a sinusoid far beyond the camera's reach is seen less than a tight standoff orbit
+    paper = follow.FollowPlanner(follow.FollowParameters(threshold=8.0), UAV)
+    wide = paper.update(0.0, follow.FollowObservation(vehicle_position=np.zeros(2),
+                                                      vehicle_velocity=np.array([0.0, -21.0 / 6.0])))
+    assert wide.mode == "sinusoid" and wide.amplitude > 1000.0
+    assert paper.predicted_camera(wide) < 0.5
+
+
+def test_bad_strategy_names_the_field() -> None:
+    with pytest.raises(vt.VistrackError, match=r"^follow\.strategy = 'best'"):
+        follow.FollowParameters(strategy="best")

@@ -176,12 +176,13 @@ class VehicleReports {
 
 // ---- Loiter patterns (Fig. 3) ---------------------------------------------------------------------
 
-enum class FollowMode : std::uint8_t { Sinusoid = 0, Loiter = 1, Straight = 2 };
+// Standoff: the tracking paper's vector field (74) about the offset point (beyond this paper).
+enum class FollowMode : std::uint8_t { Sinusoid = 0, Loiter = 1, Straight = 2, Standoff = 3 };
 template <>
 struct EnumNames<FollowMode> {
   static constexpr const char* field = "mode";
   static constexpr EnumName<FollowMode> names[] = {{"sinusoid", FollowMode::Sinusoid}, {"loiter", FollowMode::Loiter},
-      {"straight", FollowMode::Straight}};
+      {"straight", FollowMode::Straight}, {"standoff", FollowMode::Standoff}};
 };
 
 // A closed or endless curve about the loiter centre, by arc length s >= 0: the circle of radius
@@ -275,6 +276,9 @@ struct FollowTick {
   double arc = 0.0;             // loiter: s along the pattern at t
   bool capturing = false;       // holding the entry point until the UAV is within one update's flight
   bool lost = false;            // orbiting the vehicle's estimate (FollowObservation::lost)
+  double radius = 0.0;          // standoff: the orbit's radius (orbit_radius), m
+  Vec2 uav_relative = Vec2::Zero();  // standoff: the UAV relative to the offset point at t, where the field starts
+  double predicted_camera = -1.0;    // strategy auto: the chosen pattern's predicted camera fraction (-1: none)
   Vec2 offset_vector = Vec2::Zero();   // O - vehicle at t
   Vec2 offset_point = Vec2::Zero();    // O at t
   Vec2 offset_velocity = Vec2::Zero(); // O's velocity at t (the vehicle's plus the offset's rate)
@@ -311,11 +315,16 @@ class FollowPlanner {
   bool has_ticks() const { return has_previous_; }
   // The threshold in use (parameters().threshold is it, resolved when "auto") and its numbers.
   const ThresholdChoice& threshold_choice() const { return threshold_; }
-  // The radius of every orbit the planner flies about the offset point (the loiter circle; the
-  // rose's turns): Lemma 6 of the tracking paper, turn_margin r_min (1 + v_O / v)^2, at the fastest
-  // offset point a loiter keeps (sigma at the band's lower edge). The one place that chooses it
-  // (a city mode picks it from the visibility polygon here).
-  double orbit_radius() const;
+  // The radius of every orbit the planner flies about the offset point: Lemma 6 of the tracking
+  // paper, turn_margin r_min (1 + v_O / v)^2 for an offset point moving at frame_speed in the
+  // planning frame (capped at v). The loiter circle (and the rose's turns) take it at the fastest
+  // offset point a loiter keeps (sigma at the band's lower edge); the standoff orbit at the current
+  // one. The one place that chooses it (a city mode picks it from the visibility polygon here).
+  double orbit_radius(double frame_speed) const;
+  // Strategy auto's prediction: the fraction of one steady cycle of the tick's pattern (its mode
+  // and shape, sampled in time) in which the camera sees the vehicle, the vehicle predicted at the
+  // offset point's velocity, the bank that of a coordinated turn on the planned air path.
+  double predicted_camera(const FollowTick& tick) const;
 
   // The next mode from sigma with the hysteresis band (exposed for tests).
   FollowMode next_mode(FollowMode current, double speed_ratio) const;
@@ -327,11 +336,15 @@ class FollowPlanner {
   void enter_sinusoid(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const;
   void enter_loiter(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const;
   void set_sinusoid_shape(FollowTick& tick) const;
+  Vec2 standoff_relative(const FollowTick& tick, double tau) const;
+  FollowMode choose_mode(const FollowTick& tick, FollowMode paper_mode, double& predicted) const;
 
   FollowParameters parameters_;  // offset_distance / offset_angle: the current offset; threshold resolved
   Uav uav_;
   ThresholdChoice threshold_;
   Vec2 wind_;
+  DownwardCamera camera_;
+  GuidanceGains gains_;
   LoiterShape loiter_;
   FollowTick previous_;
   bool has_previous_ = false;
@@ -351,6 +364,7 @@ struct FollowMetrics {
   double time_sinusoid = 0.0;          // s in each mode
   double time_loiter = 0.0;
   double time_straight = 0.0;
+  double time_standoff = 0.0;
   double time_capturing = 0.0;         // s holding a pattern's entry point until the UAV reached it
   int mode_switches = 0;               // changes of mode between updates
   double camera_fraction = 0.0;        // of the time the vehicle is in the camera footprint

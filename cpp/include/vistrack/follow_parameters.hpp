@@ -17,6 +17,20 @@ struct EnumNames<LoiterPattern> {
   static constexpr EnumName<LoiterPattern> names[] = {{"circle", LoiterPattern::Circle}, {"rose", LoiterPattern::Rose}};
 };
 
+// How the planner chooses its pattern at each update. "paper": the sinusoid below the threshold,
+// the loiter above it (sections II-III). "standoff": the vector field (74) of the tracking paper
+// about the offset point whenever the UAV is faster than it (a practitioner's standoff orbit).
+// "auto": at each update the one of sinusoid, loiter and standoff whose steady pattern the camera
+// model predicts to see the vehicle most (FollowPlanner::predicted_camera). Beyond the paper but
+// "paper".
+enum class FollowStrategy : std::uint8_t { Paper = 0, Standoff = 1, Auto = 2 };
+template <>
+struct EnumNames<FollowStrategy> {
+  static constexpr const char* field = "follow.strategy";
+  static constexpr EnumName<FollowStrategy> names[] = {{"paper", FollowStrategy::Paper},
+      {"standoff", FollowStrategy::Standoff}, {"auto", FollowStrategy::Auto}};
+};
+
 // "north": the offset is fixed to the map; "heading": it turns with the vehicle.
 enum class OffsetReference : std::uint8_t { North = 0, Heading = 1 };
 template <>
@@ -67,6 +81,9 @@ struct FollowParameters {
   // Waypoints are generated every update_period (section V: 1 Hz), each one the desired position
   // update_period later.
   double update_period = 1.0;         // s
+  FollowStrategy strategy = FollowStrategy::Paper;
+  // strategy auto: switch only to a pattern predicted to see the vehicle this much more often.
+  double strategy_margin = 0.05;
   void validate() const;
 };
 

@@ -126,6 +126,7 @@ void score_follow_run(FollowRun& run, const Uav& uav, const DownwardCamera& came
       case FollowMode::Sinusoid: m.time_sinusoid += w; break;
       case FollowMode::Loiter: m.time_loiter += w; break;
       case FollowMode::Straight: m.time_straight += w; break;
+      case FollowMode::Standoff: m.time_standoff += w; break;
     }
     if (!run.capturing.empty() && run.capturing[i]) m.time_capturing += w;
     weight_sum += w;

@@ -27,6 +27,8 @@ void FollowParameters::validate() const {
   require_in_range(offset_distance, 0.0, limits::kMaxLength, "m", "follow.offset_distance");
   require_finite(offset_angle, "follow.offset_angle");
   require_positive(update_period, "follow.update_period");
+  if (!(strategy_margin >= 0.0 && strategy_margin <= 1.0))
+    detail::fail_field("follow.strategy_margin", strategy_margin, "must be a fraction in [0, 1]");
 }
 
 void FollowFlight::validate() const {

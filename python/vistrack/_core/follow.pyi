@@ -117,7 +117,7 @@ class FollowParameters:
     """
     The follow planner's settings (defaults from the C++ struct). Angles in radians.
     """
-    def __init__(self, *, period: typing.SupportsFloat | typing.SupportsIndex = 30.0, turn_margin: typing.SupportsFloat | typing.SupportsIndex = 1.25, threshold: typing.Any = 'auto', hysteresis: typing.SupportsFloat | typing.SupportsIndex = 0.5, loiter_pattern: str = 'circle', loiter_radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, loiter_direction: str = 'ccw', offset_distance: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_angle: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_reference: str = 'heading', wind_compensation: bool = True, update_period: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
+    def __init__(self, *, period: typing.SupportsFloat | typing.SupportsIndex = 30.0, turn_margin: typing.SupportsFloat | typing.SupportsIndex = 1.25, threshold: typing.Any = 'auto', hysteresis: typing.SupportsFloat | typing.SupportsIndex = 0.5, loiter_pattern: str = 'circle', loiter_radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, loiter_direction: str = 'ccw', offset_distance: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_angle: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_reference: str = 'heading', wind_compensation: bool = True, update_period: typing.SupportsFloat | typing.SupportsIndex = 1.0, strategy: str = 'paper', strategy_margin: typing.SupportsFloat | typing.SupportsIndex = 0.05) -> None:
         """
         Validated parameters.
         """
@@ -188,6 +188,22 @@ class FollowParameters:
         """
     @period.setter
     def period(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def strategy(self) -> str:
+        """
+        'paper' (sinusoid and loiter), 'standoff' (vector field (74) about the offset point) or 'auto' (per update, the pattern predicted to see the vehicle most)
+        """
+    @strategy.setter
+    def strategy(self, arg1: str) -> None:
+        ...
+    @property
+    def strategy_margin(self) -> float:
+        """
+        strategy auto: switch only for this much more predicted camera fraction
+        """
+    @strategy_margin.setter
+    def strategy_margin(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
     def threshold(self) -> typing.Any:
@@ -533,6 +549,16 @@ class FollowTick:
         sinusoid phase, rad
         """
     @property
+    def predicted_camera(self) -> float:
+        """
+        strategy auto: the chosen pattern's predicted camera fraction (-1: none)
+        """
+    @property
+    def radius(self) -> float:
+        """
+        standoff orbit radius, m
+        """
+    @property
     def speed_ratio(self) -> float:
         """
         sigma (inf when the offset point stands in the frame)
@@ -573,9 +599,17 @@ class FollowPlanner:
         """
         O - vehicle for that heading.
         """
+    def orbit_radius(self, frame_speed: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        Radius of the planner's orbits about an offset point moving at frame_speed (Lemma 6), m.
+        """
     def planned_path(self, tick: FollowTick, horizon: typing.SupportsFloat | typing.SupportsIndex, step: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
         """
         The planned ground path from the tick on, (n, 2): O + O_dot tau + relative_position(tick, tau) at tau = 0, step, ..., horizon (what flight.guidance l1 flies).
+        """
+    def predicted_camera(self, tick: FollowTick) -> float:
+        """
+        The camera fraction predicted over one steady cycle of the tick's pattern (strategy auto).
         """
     def relative_position(self, tick: FollowTick, tau: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
         """
@@ -593,11 +627,6 @@ class FollowPlanner:
     def loiter_shape(self) -> LoiterShape:
         """
         The loiter pattern in use.
-        """
-    @property
-    def orbit_radius(self) -> float:
-        """
-        Radius of the planner's orbits, m.
         """
     @property
     def threshold_choice(self) -> ThresholdChoice:
@@ -677,6 +706,9 @@ class FollowMetrics:
         ...
     @property
     def time_sinusoid(self) -> float:
+        ...
+    @property
+    def time_standoff(self) -> float:
         ...
     @property
     def time_straight(self) -> float:

@@ -15,7 +15,8 @@ counter-clockwise from east unless a compass word is given)::
       route: {from: [lon, lat], to: [lon, lat], crs: lonlat}   # with legs: the city run drives their
                                   # speeds along this road route of the city (vistrack.routes)
     follow: {period, turn_margin, threshold, hysteresis, loiter_pattern, loiter_radius,
-             loiter_direction, compensation, update_period}   # threshold: auto (default) or h
+             loiter_direction, compensation, update_period, strategy, strategy_margin}
+                                  # threshold: auto (default) or h; strategy: paper (default), standoff, auto
     offset: {distance: 0, angle_deg: 0, reference: heading, changes: [{t, distance, angle_deg}]}
     wind: {east: 0, north: 10, gusts: {seed, intensity, length_scale}}  # the true wind (towards)
     wind_estimate: {east: 0, north: 10}      # what the planner compensates (default: the true wind)
@@ -294,7 +295,8 @@ def _with_compensation(p: FollowParameters, on: bool) -> FollowParameters:
                             hysteresis=p.hysteresis, loiter_pattern=p.loiter_pattern, loiter_radius=p.loiter_radius,
                             loiter_direction=p.loiter_direction, offset_distance=p.offset_distance,
                             offset_angle=p.offset_angle, offset_reference=p.offset_reference,
-                            wind_compensation=on, update_period=p.update_period)
+                            wind_compensation=on, update_period=p.update_period, strategy=p.strategy,
+                            strategy_margin=p.strategy_margin)
 
 
 def _heading(key: str, leg: Mapping[str, Any]) -> float:
@@ -352,16 +354,18 @@ def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[V
 
 def _parameters(data: Mapping[str, Any]) -> FollowParameters:
     f = section(data, "follow", {"period", "turn_margin", "threshold", "hysteresis", "loiter_pattern",
-                                 "loiter_radius", "loiter_direction", "compensation", "update_period"})
+                                 "loiter_radius", "loiter_direction", "compensation", "update_period", "strategy",
+                                 "strategy_margin"})
     o = section(data, "offset", {"distance", "angle_deg", "reference", "changes"})
     d = FollowParameters()
     compensation = f.get("compensation", d.wind_compensation)
     if not isinstance(compensation, bool):
         raise fail("follow.compensation", compensation, "must be true or false")
     checks = {"period": positive, "turn_margin": positive, "threshold": threshold_value, "update_period": positive,
+              "strategy_margin": lambda k, x: number(k, x, low=0.0, high=1.0),
               "hysteresis": lambda k, x: number(k, x, low=0.0), "loiter_radius": lambda k, x: number(k, x, low=0.0)}
     values: dict[str, Any] = {name: check(f"follow.{name}", f[name]) for name, check in checks.items() if name in f}
-    for name in ("loiter_pattern", "loiter_direction"):
+    for name in ("loiter_pattern", "loiter_direction", "strategy"):
         if name in f:
             values[name] = str(f[name])
     try:

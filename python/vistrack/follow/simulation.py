@@ -46,7 +46,7 @@ sinusoid_amplitude = _follow.sinusoid_amplitude
 sinusoid_slope = _follow.sinusoid_slope
 speed_ratio = _follow.speed_ratio
 
-MODES = ("sinusoid", "loiter", "straight")
+MODES = ("sinusoid", "loiter", "straight", "standoff")
 
 __all__ = [
     "MODES", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
@@ -65,7 +65,7 @@ class FollowResult:
     ``run`` is the core ``FollowRun``; ``line_of_sight`` (n,) is set when a scene was given."""
 
     run: FollowRun
-    strategy: str = "sinusoid"  # "sinusoid" (the paper's planner) or "orbit" (the baseline)
+    strategy: str = "sinusoid"  # "sinusoid" (the planner, any follow.strategy) or "orbit" (the baseline)
     line_of_sight: Optional[np.ndarray] = None
 
     @property
@@ -142,7 +142,8 @@ class FollowResult:
             "final_along_track_lag_m": m.final_along_track_lag,
             "mode_switches": m.mode_switches,
             "time_capturing_s": m.time_capturing,
-            "time_in_mode_s": {"sinusoid": m.time_sinusoid, "loiter": m.time_loiter, "straight": m.time_straight},
+            "time_in_mode_s": {"sinusoid": m.time_sinusoid, "loiter": m.time_loiter, "straight": m.time_straight,
+                               "standoff": m.time_standoff},
             "camera_fraction": m.camera_fraction,
             "mean_vehicle_distance_m": m.mean_vehicle_distance,
             "mean_offset_distance_m": m.mean_offset_distance,
