@@ -208,17 +208,24 @@ void bind_follow(py::module_& parent) {
 
   const DownwardCamera camera_defaults;
   py::class_<DownwardCamera>(m, "DownwardCamera",
-                             "Downward conic camera (fov the full cone angle) on a roll gimbal that points it at the target as far as "
-                             "max_gimbal allows (0: body-fixed).")
-      .def(py::init([](double fov, double max_gimbal) {
-             DownwardCamera c{fov, max_gimbal};
+                             "Downward conic camera (fov the full cone angle) on its mount: 'roll' (a roll gimbal that "
+                             "points it at the target as far as max_gimbal allows), 'pan_tilt' (pointed at the target, "
+                             "at most max_gimbal from the body's down axis) or 'fixed' (the paper's body-fixed camera).")
+      .def(py::init([](double fov, double max_gimbal, const std::string& mount) {
+             DownwardCamera c{fov, max_gimbal, from_name<CameraMount>(mount, "camera.mount")};
              c.validate();
              return c;
            }),
            py::kw_only(), py::arg("fov") = camera_defaults.fov, py::arg("max_gimbal") = camera_defaults.max_gimbal,
-           "fov: full angle (rad, default 74 degrees); max_gimbal: the gimbal's roll range (rad, default 25 degrees).")
+           py::arg("mount") = to_string(camera_defaults.mount),
+           "fov: full angle (rad, default 74 degrees); max_gimbal: the gimbal's range (rad, default 25 degrees); "
+           "mount: 'roll', 'pan_tilt' or 'fixed'.")
       .def_readwrite("fov", &DownwardCamera::fov, "rad")
-      .def_readwrite("max_gimbal", &DownwardCamera::max_gimbal, "rad");
+      .def_readwrite("max_gimbal", &DownwardCamera::max_gimbal, "rad")
+      .def_property(
+          "mount", [](const DownwardCamera& c) { return to_string(c.mount); },
+          [](DownwardCamera& c, const std::string& v) { c.mount = from_name<CameraMount>(v, "camera.mount"); },
+          "'roll', 'pan_tilt' or 'fixed'");
   m.def("camera_sees", &camera_sees, py::arg("camera"), py::arg("uav"), py::arg("psi"), py::arg("bank"),
         py::arg("target"), "Whether the ground point target (3,) is in the footprint of the camera at uav (3,).");
 
@@ -321,7 +328,9 @@ void bind_follow(py::module_& parent) {
       .def_readonly("offset_vector", &FollowTick::offset_vector, "O - vehicle, m")
       .def_readonly("offset_point", &FollowTick::offset_point, "O, m")
       .def_readonly("offset_velocity", &FollowTick::offset_velocity, "O's velocity, m/s")
-      .def_readonly("waypoint", &FollowTick::waypoint, "the waypoint issued at t, m");
+      .def_readonly("waypoint", &FollowTick::waypoint, "the waypoint issued at t, m")
+      .def_readonly("vehicle_predicted", &FollowTick::vehicle_predicted,
+                    "the vehicle update_period later, predicted (the waypoint's region of interest), m");
 
   py::class_<FollowPlanner>(m, "FollowPlanner", "The 1 Hz follow planner of sections II-V.")
       .def(py::init<const FollowParameters&, const Uav&, const Vec2&, const DownwardCamera&>(), py::arg("parameters"),

@@ -201,3 +201,31 @@ def test_strategy_auto_picks_the_pattern_it_predicts_best() -> None:
 def test_bad_strategy_names_the_field() -> None:
     with pytest.raises(vt.VistrackError, match=r"^follow\.strategy = 'best'"):
         follow.FollowParameters(strategy="best")
+
+
+@pytest.mark.parametrize("mount", ["roll", "pan_tilt", "fixed"])
+def test_camera_mounts_reach_and_footprint(mount: str) -> None:
+    camera = follow.DownwardCamera(mount=mount)
+    gimbal = 0.0 if mount == "fixed" else camera.max_gimbal
+    reach = follow.camera_reach(camera, 200.0)
+    assert reach == pytest.approx(200.0 * math.tan(camera.fov / 2 + gimbal))
+    # level, a vehicle abeam just inside and just outside the reach
+    assert follow.camera_sees(camera, [0.0, 0.0, 200.0], 0.0, 0.0, [0.0, 0.99 * reach, 0.0])
+    assert not follow.camera_sees(camera, [0.0, 0.0, 200.0], 0.0, 0.0, [0.0, 1.01 * reach, 0.0])
+    # the drawn footprint contains the point the metric sees
+    ring = follow.camera_footprint(camera, (0.0, 0.0, 200.0), 0.0, 0.2, (30.0, 250.0))
+    from shapely.geometry import Point, Polygon
+    inside = Polygon(ring).contains(Point(30.0, 250.0))
+    assert inside == follow.camera_sees(camera, [0.0, 0.0, 200.0], 0.0, 0.2, [30.0, 250.0, 0.0])
+
+
+def test_pan_tilt_sees_ahead_where_the_roll_gimbal_cannot() -> None:
+    ahead = [300.0, 0.0, 0.0]  # 56 degrees ahead of the nadir, level flight east
+    assert follow.camera_sees(follow.DownwardCamera(mount="pan_tilt"), [0.0, 0.0, 200.0], 0.0, 0.0, ahead)
+    assert not follow.camera_sees(follow.DownwardCamera(mount="roll"), [0.0, 0.0, 200.0], 0.0, 0.0, ahead)
+    # the auto threshold follows the camera: a fixed camera asks for a smaller h
+    fixed = follow.camera_threshold(follow.FollowParameters(), UAV, follow.DownwardCamera(mount="fixed"))
+    roll = follow.camera_threshold(follow.FollowParameters(), UAV, follow.DownwardCamera())
+    assert fixed.threshold < roll.threshold
+    with pytest.raises(vt.VistrackError, match=r"^camera\.mount = 'tripod'"):
+        follow.DownwardCamera(mount="tripod")

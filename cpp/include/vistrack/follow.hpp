@@ -209,19 +209,31 @@ struct LoiterShape {
 
 // ---- Camera ----------------------------------------------------------------------------------------
 
-// A downward conic camera (the loiter area's model: a 74-degree cone) on a one-axis roll gimbal
-// (up to 25 degrees), which rolls the camera towards the target as far as it can; max_gimbal 0
-// is a body-fixed camera (the paper's camera on the bottom of the plane). The body banks as in
-// a coordinated turn: phi = atan(v psi_dot / g). The vehicle is seen when the angle between the
-// camera's axis and the line to it is at most fov / 2. A point test for the follow metric; the
-// loiter area computes the footprint ellipse for its disks (peers: to be shared from a lower area).
+// How the camera is carried. "roll": a one-axis roll gimbal that rolls the camera towards the
+// target as far as max_gimbal (the loiter area's model). "pan_tilt": a two-axis gimbal pointed at
+// the target, its axis at most max_gimbal from the body's down axis (pan unlimited). "fixed": the
+// paper's camera on the bottom of the plane (Fig. 12), along the body's down axis.
+enum class CameraMount : std::uint8_t { Roll = 0, PanTilt = 1, Fixed = 2 };
+template <>
+struct EnumNames<CameraMount> {
+  static constexpr const char* field = "camera.mount";
+  static constexpr EnumName<CameraMount> names[] = {{"roll", CameraMount::Roll}, {"pan_tilt", CameraMount::PanTilt},
+      {"fixed", CameraMount::Fixed}};
+};
+
+// A downward conic camera (a 74-degree cone) on its mount. The body banks as in a coordinated
+// turn: phi = atan(v psi_dot / g). The vehicle is seen when the angle between the camera's axis
+// and the line to it is at most fov / 2. A point test for the follow metric; the loiter area
+// computes the footprint ellipse for its disks (peers: to be shared from a lower area).
 struct DownwardCamera {
   double fov = 74.0 * kPi / 180.0;         // full angle, rad
-  double max_gimbal = 25.0 * kPi / 180.0;  // rad
+  double max_gimbal = 25.0 * kPi / 180.0;  // rad: the roll range, or the pan-tilt's tilt range
+  CameraMount mount = CameraMount::Roll;
   void validate() const;
 };
 // How far to the side of a level UAV at `altitude` the camera still sees a ground point: with
-// the gimbal rolled as far as it goes, w = altitude tan(fov / 2 + max_gimbal) (beyond the paper).
+// the gimbal turned as far as it goes, w = altitude tan(fov / 2 + max_gimbal) (roll, pan-tilt),
+// altitude tan(fov / 2) for the fixed camera (beyond the paper).
 double camera_reach(const DownwardCamera& camera, double altitude);
 
 // The threshold h the planner uses, and the numbers behind it. With follow.threshold "auto"
@@ -283,6 +295,7 @@ struct FollowTick {
   Vec2 offset_point = Vec2::Zero();    // O at t
   Vec2 offset_velocity = Vec2::Zero(); // O's velocity at t (the vehicle's plus the offset's rate)
   Vec2 waypoint = Vec2::Zero();        // the desired position update_period later, predicted
+  Vec2 vehicle_predicted = Vec2::Zero();  // the vehicle update_period later, predicted (a gimbal's ROI)
 };
 
 // The follow planner of sections II-V. update() runs at every update_period.

@@ -12,7 +12,7 @@ namespace vistrack {
 double camera_reach(const DownwardCamera& camera, double altitude) {
   camera.validate();
   require_positive(altitude, "uav.altitude");
-  const double angle = 0.5 * camera.fov + camera.max_gimbal;
+  const double angle = 0.5 * camera.fov + (camera.mount == CameraMount::Fixed ? 0.0 : camera.max_gimbal);
   // The cone's edge reaches the horizon: the camera sees as far as the metric's disk allows.
   return angle < 0.5 * kPi ? altitude * std::tan(angle) : std::numeric_limits<double>::infinity();
 }
@@ -59,6 +59,20 @@ bool camera_sees(const DownwardCamera& camera, const Vec3& uav, double psi, doub
   const Vec3 r = target - uav;
   const double distance = r.norm();
   if (!(distance > 0.0)) return true;
+  // The body's down axis, banked by phi (left wing down positive: it looks right by phi).
+  const Vec3 down = -(std::cos(bank) * up + std::sin(bank) * left);
+  switch (camera.mount) {
+    case CameraMount::Fixed:
+      return r.dot(down) >= std::cos(0.5 * camera.fov) * distance;
+    case CameraMount::PanTilt: {
+      // Pointed at the target, the axis within max_gimbal of the down axis: the target is seen
+      // while its angle from the down axis is at most max_gimbal + fov / 2.
+      const double off = std::acos(std::clamp(r.dot(down) / distance, -1.0, 1.0));
+      return off <= camera.max_gimbal + 0.5 * camera.fov;
+    }
+    case CameraMount::Roll:
+      break;
+  }
   // The gimbal rolls the camera back by gamma (positive: towards the left) to put the target's
   // lateral angle beta (from the level nadir, positive left) on the axis: gamma = bank + beta,
   // within its range. A body banked left by phi looks right by phi.

@@ -41,6 +41,8 @@ void DownwardCamera::validate() const {
   if (!(fov > 0.0 && fov < kPi)) detail::fail_field("camera.fov", fov, "must be in (0, pi) radians");
   if (!(max_gimbal >= 0.0 && max_gimbal < 0.5 * kPi))
     detail::fail_field("camera.max_gimbal", max_gimbal, "must be in [0, pi/2) radians");
+  if (mount != CameraMount::Roll && mount != CameraMount::PanTilt && mount != CameraMount::Fixed)
+    detail::fail_field("camera.mount", static_cast<int>(mount), "must be roll, pan_tilt or fixed");
 }
 
 }  // namespace vistrack

@@ -434,6 +434,7 @@ FollowTick FollowPlanner::update(double t, const FollowObservation& o) {
   const double dt = parameters_.update_period;
   tick.offset_velocity = offset_velocity;
   tick.waypoint = tick.offset_point + offset_velocity * dt + relative_position(tick, dt);
+  tick.vehicle_predicted = o.vehicle_position + o.vehicle_velocity * dt;
   previous_ = tick;
   has_previous_ = true;
   return tick;

@@ -282,11 +282,11 @@ class FollowFlight:
         ...
 class DownwardCamera:
     """
-    Downward conic camera (fov the full cone angle) on a roll gimbal that points it at the target as far as max_gimbal allows (0: body-fixed).
+    Downward conic camera (fov the full cone angle) on its mount: 'roll' (a roll gimbal that points it at the target as far as max_gimbal allows), 'pan_tilt' (pointed at the target, at most max_gimbal from the body's down axis) or 'fixed' (the paper's body-fixed camera).
     """
-    def __init__(self, *, fov: typing.SupportsFloat | typing.SupportsIndex = 1.2915436464758039, max_gimbal: typing.SupportsFloat | typing.SupportsIndex = 0.4363323129985824) -> None:
+    def __init__(self, *, fov: typing.SupportsFloat | typing.SupportsIndex = 1.2915436464758039, max_gimbal: typing.SupportsFloat | typing.SupportsIndex = 0.4363323129985824, mount: str = 'roll') -> None:
         """
-        fov: full angle (rad, default 74 degrees); max_gimbal: the gimbal's roll range (rad, default 25 degrees).
+        fov: full angle (rad, default 74 degrees); max_gimbal: the gimbal's range (rad, default 25 degrees); mount: 'roll', 'pan_tilt' or 'fixed'.
         """
     @property
     def fov(self) -> float:
@@ -303,6 +303,14 @@ class DownwardCamera:
         """
     @max_gimbal.setter
     def max_gimbal(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def mount(self) -> str:
+        """
+        'roll', 'pan_tilt' or 'fixed'
+        """
+    @mount.setter
+    def mount(self, arg1: str) -> None:
         ...
 class SinusoidShape:
     """
@@ -577,6 +585,11 @@ class FollowTick:
     def uav_speed(self) -> float:
         """
         v_p planned with, m/s
+        """
+    @property
+    def vehicle_predicted(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        the vehicle update_period later, predicted (the waypoint's region of interest), m
         """
     @property
     def waypoint(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:

@@ -20,7 +20,8 @@ counter-clockwise from east unless a compass word is given)::
     offset: {distance: 0, angle_deg: 0, reference: heading, changes: [{t, distance, angle_deg}]}
     wind: {east: 0, north: 10, gusts: {seed, intensity, length_scale}}  # the true wind (towards)
     wind_estimate: {east: 0, north: 10}      # what the planner compensates (default: the true wind)
-    camera: {fov_deg: 74, max_gimbal_deg: 25, mount: roll}
+    camera: {fov_deg: 74, max_gimbal_deg: 25, mount: roll}   # or pan_tilt (pointed at the vehicle,
+                                  # max_gimbal_deg from the body's down axis), fixed (the paper's camera)
     flight: {dt: 0.02, integration: discrete, max_time: 0, guidance: l1, l1_period: 8, l1_damping: 0.75}
                                   # guidance law5: each 1 s leg by the paper's law (5)
     baseline: {radius: 0, beta: 0.025, k_psi: 20, direction: ccw}   # radius 0: Lemma 6; false: none
@@ -84,6 +85,8 @@ from .simulation import (
 
 __all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy"]
 
+# The follow camera's mounts (vt.follow.DownwardCamera.mount), the default first.
+CAMERA_MOUNTS = ("roll", "pan_tilt", "fixed")
 # Compass words as angles counter-clockwise from east (radians).
 HEADINGS = {name: math.radians(deg) for name, deg in (
     ("east", 0.0), ("northeast", 45.0), ("north", 90.0), ("northwest", 135.0), ("west", 180.0),
@@ -144,8 +147,8 @@ class FollowScenario:
             estimate = (number("wind_estimate.east", e.get("east", 0.0)),
                         number("wind_estimate.north", e.get("north", 0.0)))
         defaults = DownwardCamera()
-        c = camera_block(data, math.degrees(defaults.fov), math.degrees(defaults.max_gimbal), mounts=("roll",))
-        camera = DownwardCamera(fov=math.radians(c.fov_deg), max_gimbal=math.radians(c.max_gimbal_deg))
+        c = camera_block(data, math.degrees(defaults.fov), math.degrees(defaults.max_gimbal), mounts=CAMERA_MOUNTS)
+        camera = DownwardCamera(fov=math.radians(c.fov_deg), max_gimbal=math.radians(c.max_gimbal_deg), mount=c.mount)
         f, fd = section(data, "flight", {"dt", "integration", "max_time", "guidance", "l1_period", "l1_damping"}), \
             FollowFlight()
         integration = f.get("integration", fd.integration)

@@ -118,15 +118,21 @@ class FollowResult:
         """(k,) when each waypoint was issued (s)."""
         return np.asarray(self.run.waypoint_times)
 
+    @property
+    def roi(self) -> np.ndarray:
+        """(k, 2) the vehicle's predicted position at each waypoint (where a gimbal should point)."""
+        return np.array([k.vehicle_predicted for k in self.run.ticks], dtype=float).reshape(-1, 2)
+
     def to_mission(self, georeference: Georeference | Sequence[float], altitude: float, *,
                    speed: Optional[float] = None, tolerance: float = 1.0, return_to_launch: bool = False,
-                   firmware: str = "ardupilot", altitude_mode: str = "relative") -> Mission:
+                   firmware: str = "ardupilot", altitude_mode: str = "relative", roi: bool = True) -> Mission:
         """The generated 1 Hz waypoints as an autopilot mission, decimated by Douglas-Peucker at
         ``tolerance`` m (0: every waypoint), home at the UAV's start; ``speed`` (the UAV's airspeed)
-        adds DO_CHANGE_SPEED. See :func:`vistrack.follow.to_mission.follow_mission`."""
+        adds DO_CHANGE_SPEED; ``roi``: a DO_SET_ROI_LOCATION before each waypoint at the vehicle's
+        predicted position (beyond the paper). See :func:`vistrack.follow.to_mission.follow_mission`."""
         return follow_mission(self.waypoints, georeference, altitude, home=self.state[0, :2], speed=speed,
                               tolerance=tolerance, return_to_launch=return_to_launch, firmware=firmware,
-                              altitude_mode=altitude_mode)
+                              altitude_mode=altitude_mode, roi=self.roi if roi else None)
 
     @property
     def metrics(self) -> dict[str, Any]:
@@ -336,16 +342,30 @@ def camera_footprint(camera: DownwardCamera, uav: Sequence[float], psi: float, b
     left = np.array([-math.sin(psi), math.cos(psi), 0.0])
     tz = float(target[2]) if len(target) > 2 else 0.0
     r = np.array([float(target[0]) - x, float(target[1]) - y, tz - z])
-    # As camera_sees (cpp/src/follow/camera.cpp): gimbal roll gamma = bank + the target's lateral
-    # angle, within +-max_gimbal; the camera's roll from level is bank - gamma.
-    lateral = math.atan2(float(r @ left), float(-(r @ up)))
-    gamma = min(max(bank + lateral, -camera.max_gimbal), camera.max_gimbal)
-    roll = bank - gamma
-    axis = -(math.cos(roll) * up + math.sin(roll) * left)
-    across = np.cross(axis, forward)
+    # As camera_sees (cpp/src/follow/camera.cpp): the body's down axis banked by phi; a roll gimbal
+    # rolls by gamma = bank + the target's lateral angle within +-max_gimbal; a pan-tilt points at
+    # the target within max_gimbal of the down axis; a fixed camera looks along it.
+    body_down = -(math.cos(bank) * up + math.sin(bank) * left)
+    if camera.mount == "fixed":
+        axis = body_down
+    elif camera.mount == "pan_tilt":
+        to_target = r / max(float(np.linalg.norm(r)), 1e-12)
+        off = math.acos(min(1.0, max(-1.0, float(to_target @ body_down))))
+        side = to_target - (to_target @ body_down) * body_down
+        norm = float(np.linalg.norm(side))
+        turn = min(off, camera.max_gimbal)
+        axis = body_down if norm < 1e-12 else math.cos(turn) * body_down + math.sin(turn) * side / norm
+    else:
+        lateral = math.atan2(float(r @ left), float(-(r @ up)))
+        gamma = min(max(bank + lateral, -camera.max_gimbal), camera.max_gimbal)
+        roll = bank - gamma
+        axis = -(math.cos(roll) * up + math.sin(roll) * left)
+    ahead = forward - (forward @ axis) * axis  # the cone's basis about its axis
+    ahead /= max(float(np.linalg.norm(ahead)), 1e-12)
+    across = np.cross(axis, ahead)
     half = 0.5 * camera.fov
     angles = np.linspace(0.0, 2.0 * math.pi, points, endpoint=False)
-    rays = (math.cos(half) * axis[None, :] + math.sin(half) * (np.outer(np.cos(angles), forward)
+    rays = (math.cos(half) * axis[None, :] + math.sin(half) * (np.outer(np.cos(angles), ahead)
                                                               + np.outer(np.sin(angles), across)))
     down = -rays[:, 2]
     horizontal = np.hypot(rays[:, 0], rays[:, 1])
