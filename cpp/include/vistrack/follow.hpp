@@ -288,7 +288,7 @@ struct FollowTick {
   double arc = 0.0;             // loiter: s along the pattern at t
   bool capturing = false;       // holding the entry point until the UAV is within one update's flight
   bool lost = false;            // orbiting the vehicle's estimate (FollowObservation::lost)
-  double radius = 0.0;          // standoff: the orbit's radius (orbit_radius), m
+  double radius = 0.0;          // orbit_radius at the frame speed: the standoff's and the loiter circle's, m
   Vec2 uav_relative = Vec2::Zero();  // standoff: the UAV relative to the offset point at t, where the field starts
   double predicted_camera = -1.0;    // strategy auto: the chosen pattern's predicted camera fraction (-1: none)
   Vec2 offset_vector = Vec2::Zero();   // O - vehicle at t
@@ -330,9 +330,10 @@ class FollowPlanner {
   const ThresholdChoice& threshold_choice() const { return threshold_; }
   // The radius of every orbit the planner flies about the offset point: Lemma 6 of the tracking
   // paper, turn_margin r_min (1 + v_O / v)^2 for an offset point moving at frame_speed in the
-  // planning frame (capped at v). The loiter circle (and the rose's turns) take it at the fastest
-  // offset point a loiter keeps (sigma at the band's lower edge); the standoff orbit at the current
-  // one. The one place that chooses it (a city mode picks it from the visibility polygon here).
+  // planning frame (capped at v), renewed at every update for the standoff orbit and the loiter
+  // circle (unless follow.loiter_radius is given); the rose's turns take it at the fastest offset
+  // point a loiter keeps (sigma at the band's lower edge). The one place that chooses it (a city
+  // mode picks it from the visibility polygon here).
   double orbit_radius(double frame_speed) const;
   // Strategy auto's prediction: the fraction of one steady cycle of the tick's pattern (its mode
   // and shape, sampled in time) in which the camera sees the vehicle, the vehicle predicted at the
@@ -350,6 +351,7 @@ class FollowPlanner {
   void enter_loiter(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const;
   void set_sinusoid_shape(FollowTick& tick) const;
   Vec2 standoff_relative(const FollowTick& tick, double tau) const;
+  LoiterShape loiter_for(const FollowTick& tick) const;  // the loiter shape of a tick (its circle's radius)
   FollowMode choose_mode(const FollowTick& tick, FollowMode paper_mode, double& predicted) const;
 
   FollowParameters parameters_;  // offset_distance / offset_angle: the current offset; threshold resolved

@@ -68,6 +68,14 @@ FollowPlanner::FollowPlanner(const FollowParameters& parameters, const Uav& uav,
   loiter_.validate();
 }
 
+LoiterShape FollowPlanner::loiter_for(const FollowTick& tick) const {
+  LoiterShape shape = loiter_;
+  // The smallest flyable circle for the offset point's current speed, unless the user gave one.
+  if (shape.pattern == LoiterPattern::Circle && parameters_.loiter_radius == 0.0 && tick.radius > 0.0)
+    shape.radius = tick.radius;
+  return shape;
+}
+
 double FollowPlanner::orbit_radius(double frame_speed) const {
   const double ratio = std::min(1.0, std::max(0.0, frame_speed) / uav_.speed);
   return parameters_.turn_margin * uav_.min_turn_radius * std::pow(1.0 + ratio, 2);
@@ -133,16 +141,16 @@ void FollowPlanner::enter_sinusoid(FollowTick& tick, const Vec2& uav_relative, d
 void FollowPlanner::enter_loiter(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const {
   // Over enough of the pattern to see every point of the circle, or every orientation of the
   // rose's line.
-  const double piece = loiter_.piece_length();
+  const double piece = loiter_for(tick).piece_length();
   const int pieces =
-      loiter_.pattern == LoiterPattern::Circle ? 1 : std::min(400, static_cast<int>(std::ceil(kTwoPi / loiter_.delta())) + 2);
-  const double step = std::min(loiter_.turn_radius / 8.0, piece / 64.0);
+      loiter_for(tick).pattern == LoiterPattern::Circle ? 1 : std::min(400, static_cast<int>(std::ceil(kTwoPi / loiter_for(tick).delta())) + 2);
+  const double step = std::min(loiter_for(tick).turn_radius / 8.0, piece / 64.0);
   const int samples = static_cast<int>(std::ceil(pieces * piece / step));
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < samples; ++i) {
     const double s = i * step;
-    const Vec2 direction = tick.frame_velocity + pattern_speed(tick, s) * loiter_.tangent(s);
-    const double cost = entry_cost(loiter_.position(s), direction, uav_relative, uav_heading);
+    const Vec2 direction = tick.frame_velocity + pattern_speed(tick, s) * loiter_for(tick).tangent(s);
+    const double cost = entry_cost(loiter_for(tick).position(s), direction, uav_relative, uav_heading);
     if (cost < best) {
       best = cost;
       tick.arc = s;
@@ -153,7 +161,7 @@ void FollowPlanner::enter_loiter(FollowTick& tick, const Vec2& uav_relative, dou
 // ds/dt along the loiter pattern so that the UAV's speed in the planning frame is v_p:
 // |v_f + s_dot t(s)| = v_p, the positive root (as the tracking paper's eq. (13) for an orbit).
 double FollowPlanner::pattern_speed(const FollowTick& tick, double s) const {
-  const Vec2 t = loiter_.tangent(s);
+  const Vec2 t = loiter_for(tick).tangent(s);
   const double b = tick.frame_velocity.dot(t);
   const double disc = b * b - tick.frame_velocity.squaredNorm() + tick.uav_speed * tick.uav_speed;
   return std::max(0.0, -b + std::sqrt(std::max(0.0, disc)));
@@ -186,7 +194,7 @@ Vec2 FollowPlanner::relative_position(const FollowTick& tick, double tau) const 
       return rotate(sinusoid_point(tick, phi, arc), tick.track_angle);
     }
     case FollowMode::Loiter:
-      return loiter_.position(advance_arc(tick, tau));
+      return loiter_for(tick).position(advance_arc(tick, tau));
     case FollowMode::Standoff:
       return standoff_relative(tick, tau);
     case FollowMode::Straight:
@@ -245,7 +253,7 @@ double FollowPlanner::predicted_camera(const FollowTick& tick) const {
       break;
     }
     case FollowMode::Loiter: {
-      const double piece = loiter_.piece_length();
+      const double piece = loiter_for(tick).piece_length();
       double t = 0.0;
       for (int j = 0; j <= kSamples; ++j) {
         const double s = piece * j / kSamples;
@@ -255,7 +263,7 @@ double FollowPlanner::predicted_camera(const FollowTick& tick) const {
           t += piece / kSamples / speed;
         }
         tau.push_back(t);
-        rel.push_back(loiter_.position(s));
+        rel.push_back(loiter_for(tick).position(s));
       }
       break;
     }
@@ -380,9 +388,8 @@ FollowTick FollowPlanner::update(double t, const FollowObservation& o) {
                 : tick.speed_ratio >= 1.0                  ? FollowMode::Sinusoid
                                                            : FollowMode::Straight;
   }
+  tick.radius = orbit_radius(frame_speed);
   if (!o.lost) {
-    if (parameters_.strategy == FollowStrategy::Standoff || parameters_.strategy == FollowStrategy::Auto)
-      tick.radius = orbit_radius(frame_speed);
     tick.mode = choose_mode(tick, tick.mode, tick.predicted_camera);
   }
   const Vec2 uav_relative = o.uav_position - tick.offset_point;
@@ -407,14 +414,15 @@ FollowTick FollowPlanner::update(double t, const FollowObservation& o) {
     if (same_mode) {
       tick.arc = previous_.capturing ? previous_.arc : advance_arc(previous_, t - previous_.t);
       if (loiter_.pattern == LoiterPattern::Circle) {
+        const LoiterShape circle = loiter_for(tick);
         // A circle about a set point (section II), flown as a path: once captured, each update
         // restarts it at the UAV's bearing from the centre instead of at a timed point the UAV
         // would have to catch (in wind it plans without, it could not: Fig. 6).
         if (!previous_.capturing) {
-          const double angle = std::atan2(uav_relative.y(), uav_relative.x()) - loiter_.rotation;
-          tick.arc = loiter_.radius * wrap_phase(loiter_.direction * angle);
+          const double angle = std::atan2(uav_relative.y(), uav_relative.x()) - circle.rotation;
+          tick.arc = circle.radius * wrap_phase(circle.direction * angle);
         }
-        tick.arc = std::fmod(tick.arc, loiter_.piece_length());
+        tick.arc = std::fmod(tick.arc, circle.piece_length());
       }
     } else {
       enter_loiter(tick, uav_relative, o.uav_heading);
