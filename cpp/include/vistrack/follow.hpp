@@ -317,6 +317,8 @@ class FollowPlanner {
   // The desired position relative to the offset point, tau >= 0 seconds after `tick` (the
   // pattern of the tick's mode with its parameters held), and its velocity in the planning frame.
   Vec2 relative_position(const FollowTick& tick, double tau) const;
+  // relative_position at increasing taus, in one pass (the loiter's arc integrated once).
+  std::vector<Vec2> relative_positions(const FollowTick& tick, const std::vector<double>& taus) const;
   // The planned ground path from the tick on: O + O_dot tau + relative_position(tick, tau) at
   // tau = 0, step, ..., horizon (the vehicle predicted at its current velocity, as the waypoint is).
   std::vector<Vec2> planned_path(const FollowTick& tick, double horizon, double step) const;
@@ -345,6 +347,8 @@ class FollowPlanner {
 
  private:
   double pattern_speed(const FollowTick& tick, double s) const;  // ds/dt of the loiter pattern
+  double pattern_speed(const FollowTick& tick, const LoiterShape& shape, double s) const;
+  double loiter_step(const FollowTick& tick, const LoiterShape& shape, double s, double h) const;  // RK4
   double advance_arc(const FollowTick& tick, double tau) const;
   double entry_cost(const Vec2& point, const Vec2& direction, const Vec2& uav_relative, double uav_heading) const;
   void enter_sinusoid(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const;

@@ -1,4 +1,5 @@
 // A follow run: the planner's 1 Hz waypoints flown by the flight layer's waypoint follower.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -139,12 +140,26 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   run.capturing.resize(n);
   run.lost.assign(n, 0);
   bool any_lost = false;
-  std::size_t k = 0;
+  // The pattern of each sample's update, relative to the offset point: one pass per update.
+  std::vector<std::size_t> tick_of(n);
+  std::vector<Vec2> relative(n);
+  for (std::size_t i = 0, k = 0; i < n;) {
+    while (k + 1 < run.ticks.size() && run.ticks[k + 1].t <= trajectory.t[i] + 1e-9) ++k;
+    std::size_t end = i;
+    std::vector<double> taus;
+    while (end < n && (k + 1 >= run.ticks.size() || run.ticks[k + 1].t > trajectory.t[end] + 1e-9)) {
+      tick_of[end] = k;
+      taus.push_back(std::max(0.0, trajectory.t[end] - run.ticks[k].t));
+      ++end;
+    }
+    const std::vector<Vec2> positions = planner.relative_positions(run.ticks[k], taus);
+    std::copy(positions.begin(), positions.end(), relative.begin() + static_cast<std::ptrdiff_t>(i));
+    i = end;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const auto r = static_cast<Eigen::Index>(i);
     const double t = trajectory.t[i];
-    while (k + 1 < run.ticks.size() && run.ticks[k + 1].t <= t + 1e-9) ++k;
-    const FollowTick& tick = run.ticks[k];
+    const FollowTick& tick = run.ticks[tick_of[i]];
     const Vec2 g = vehicle.position(t);
     const auto [distance, angle] = detail::scheduled_offset(options.offset_schedule, parameters, t);
     planner.set_offset(distance, angle);
@@ -155,7 +170,7 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
     // The pattern about the true offset point; while lost, about the vehicle's estimate.
     const VehicleEstimate known = reports.estimate(t);
     const Vec2 centre = tick.lost ? known.position : o;
-    run.desired.row(r) = (centre + planner.relative_position(tick, t - tick.t)).transpose();
+    run.desired.row(r) = (centre + relative[i]).transpose();
     run.lost[i] = known.lost ? 1 : 0;
     any_lost = any_lost || known.lost;
     run.target.row(r) << trajectory.target_x[i], trajectory.target_y[i];

@@ -161,28 +161,61 @@ void FollowPlanner::enter_loiter(FollowTick& tick, const Vec2& uav_relative, dou
 // ds/dt along the loiter pattern so that the UAV's speed in the planning frame is v_p:
 // |v_f + s_dot t(s)| = v_p, the positive root (as the tracking paper's eq. (13) for an orbit).
 double FollowPlanner::pattern_speed(const FollowTick& tick, double s) const {
-  const Vec2 t = loiter_for(tick).tangent(s);
+  return pattern_speed(tick, loiter_for(tick), s);
+}
+
+double FollowPlanner::pattern_speed(const FollowTick& tick, const LoiterShape& shape, double s) const {
+  const Vec2 t = shape.tangent(s);
   const double b = tick.frame_velocity.dot(t);
   const double disc = b * b - tick.frame_velocity.squaredNorm() + tick.uav_speed * tick.uav_speed;
   return std::max(0.0, -b + std::sqrt(std::max(0.0, disc)));
+}
+
+double FollowPlanner::loiter_step(const FollowTick& tick, const LoiterShape& shape, double s, double h) const {
+  const double k1 = pattern_speed(tick, shape, s);
+  const double k2 = pattern_speed(tick, shape, s + 0.5 * h * k1);
+  const double k3 = pattern_speed(tick, shape, s + 0.5 * h * k2);
+  const double k4 = pattern_speed(tick, shape, s + h * k3);
+  return s + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
 }
 
 double FollowPlanner::advance_arc(const FollowTick& tick, double tau) const {
   if (!(tau > 0.0)) return tick.arc;
   // Fixed steps from the update, then one partial step: nearby tau share their steps, so the
   // desired position is smooth in tau.
-  const auto rk4 = [&](double s, double h) {
-    const double k1 = pattern_speed(tick, s);
-    const double k2 = pattern_speed(tick, s + 0.5 * h * k1);
-    const double k3 = pattern_speed(tick, s + 0.5 * h * k2);
-    const double k4 = pattern_speed(tick, s + h * k3);
-    return s + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-  };
+  const LoiterShape shape = loiter_for(tick);
   const int whole = static_cast<int>(std::floor(tau / kLoiterStep));
   double s = tick.arc;
-  for (int i = 0; i < whole; ++i) s = rk4(s, kLoiterStep);
+  for (int i = 0; i < whole; ++i) s = loiter_step(tick, shape, s, kLoiterStep);
   const double rest = tau - whole * kLoiterStep;
-  return rest > 0.0 ? rk4(s, rest) : s;
+  return rest > 0.0 ? loiter_step(tick, shape, s, rest) : s;
+}
+
+std::vector<Vec2> FollowPlanner::relative_positions(const FollowTick& tick, const std::vector<double>& taus) const {
+  std::vector<Vec2> out;
+  out.reserve(taus.size());
+  if (tick.mode != FollowMode::Loiter || tick.capturing) {
+    for (double tau : taus) out.push_back(relative_position(tick, tau));
+    return out;
+  }
+  // advance_arc in one pass: the whole steps shared by increasing taus are taken once.
+  const LoiterShape shape = loiter_for(tick);
+  double s = tick.arc;
+  int done = 0;
+  double last = -std::numeric_limits<double>::infinity();
+  for (double tau : taus) {
+    if (!(tau >= last)) detail::fail_field("taus", tau, "must increase");
+    last = tau;
+    if (!(tau > 0.0)) {
+      out.push_back(shape.position(tick.arc));
+      continue;
+    }
+    const int whole = static_cast<int>(std::floor(tau / kLoiterStep));
+    for (; done < whole; ++done) s = loiter_step(tick, shape, s, kLoiterStep);
+    const double rest = tau - whole * kLoiterStep;
+    out.push_back(shape.position(rest > 0.0 ? loiter_step(tick, shape, s, rest) : s));
+  }
+  return out;
 }
 
 Vec2 FollowPlanner::relative_position(const FollowTick& tick, double tau) const {
@@ -347,12 +380,11 @@ FollowMode FollowPlanner::choose_mode(const FollowTick& tick, FollowMode paper_m
 std::vector<Vec2> FollowPlanner::planned_path(const FollowTick& tick, double horizon, double step) const {
   require_positive(horizon, "horizon");
   require_positive(step, "step");
-  std::vector<Vec2> path;
   const auto n = static_cast<std::size_t>(std::ceil(horizon / step));
-  for (std::size_t k = 0; k <= n; ++k) {
-    const double tau = std::min(horizon, static_cast<double>(k) * step);
-    path.push_back(tick.offset_point + tick.offset_velocity * tau + relative_position(tick, tau));
-  }
+  std::vector<double> taus(n + 1);
+  for (std::size_t k = 0; k <= n; ++k) taus[k] = std::min(horizon, static_cast<double>(k) * step);
+  std::vector<Vec2> path = relative_positions(tick, taus);
+  for (std::size_t k = 0; k <= n; ++k) path[k] += tick.offset_point + tick.offset_velocity * taus[k];
   return path;
 }
 
