@@ -102,7 +102,7 @@ struct FollowFlight {
   LegGuidance guidance = LegGuidance::LineFeedback;
   // guidance l1 (CurveL1): a period of 8 s puts L1 = 0.75 * 8 * v / pi = 40 m at the follow
   // examples' 21 m/s, under r_min = 50 m; at ArduPlane's 17 s (L1 = 85 m, made for larger
-  // airframes) Fig. 7's compensated wind run flies a mean 62 m off its path (17 m at 8 s).
+  // airframes) Fig. 7's compensated wind run flies a mean 52 m off its path (13 m at 8 s; bench/vehicle_models.py).
   L1Gains l1{8.0, 0.75};
   void validate() const;
 };
