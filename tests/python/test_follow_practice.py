@@ -229,3 +229,14 @@ def test_pan_tilt_sees_ahead_where_the_roll_gimbal_cannot() -> None:
     assert fixed.threshold < roll.threshold
     with pytest.raises(vt.VistrackError, match=r"^camera\.mount = 'tripod'"):
         follow.DownwardCamera(mount="tripod")
+
+
+def test_a_camera_to_the_horizon_writes_valid_json(tmp_path: Path) -> None:
+    from vistrack.cli import main
+
+    scenario = tmp_path / "wide.yaml"
+    scenario.write_text("vehicle: {legs: [{heading: east, speed: 5, duration: 30}]}\n"
+                        "camera: {mount: pan_tilt, max_gimbal_deg: 60}\nbaseline: false\n")
+    assert main(["follow", str(scenario), "--out", str(tmp_path / "o"), "--no-city", "--quiet", *NO_MEDIA]) == 0
+    text = (tmp_path / "o" / "metrics.json").read_text()
+    assert "Infinity" not in text and json.loads(text)["threshold"]["camera_reach_m"] is None

@@ -172,10 +172,11 @@ class FollowResult:
 
 
 def threshold_record(choice: Any) -> dict[str, Any]:
-    """The threshold the planner used (``FollowRun.threshold``) as plain data."""
+    """The threshold the planner used (``FollowRun.threshold``) as plain data; ``camera_reach_m``
+    is None (JSON null) for a camera whose cone reaches the horizon."""
+    reach = choice.reach if math.isfinite(choice.reach) else None
     return {"h": choice.threshold, "automatic": choice.automatic, "upper_ratio": choice.upper_ratio,
-            "amplitude_at_upper_m": choice.amplitude, "camera_reach_m": choice.reach,
-            "beyond_reach": choice.beyond_reach}
+            "amplitude_at_upper_m": choice.amplitude, "camera_reach_m": reach, "beyond_reach": choice.beyond_reach}
 
 
 def sinusoid_record(ticks: Sequence[FollowTick]) -> Optional[dict[str, Any]]:

@@ -129,8 +129,10 @@ def _threshold_line(m: dict[str, Any]) -> str:
     """The threshold used and the sinusoid flown (effective T, D, A, sigma: min / median / max)."""
     h = m["threshold"]
     how = "auto, from the camera (beyond the paper)" if h["automatic"] else "given"
+    reach = ("to the horizon" if h["camera_reach_m"] is None
+             else f"{h['camera_reach_m']:.0f} m to the side")
     line = (f"Threshold h = {h['h']:.3g} ({how}): at sigma {h['upper_ratio']:.3g} the amplitude is "
-            f"{h['amplitude_at_upper_m']:.0f} m, the camera sees {h['camera_reach_m']:.0f} m to the side")
+            f"{h['amplitude_at_upper_m']:.0f} m, the camera sees {reach}")
     s = m.get("sinusoid")
     if s is None:
         return line + "; no update flew the sinusoid"
