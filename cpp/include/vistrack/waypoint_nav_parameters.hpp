@@ -49,7 +49,12 @@ struct WaypointNavOptions {
   L1Gains l1;
   // Beyond the paper: the leg law knows the mean wind (the wind's constant part, not its gusts)
   // and steers the course over the ground (L1Line::set_wind, LineFeedback::set_wind).
+  // For DWN also: every turning point planned in the air mass of that wind
+  // (air_mass_turning_point).
   bool wind_aware = false;
+  // DWN: re-plan the active turning point every replan_interval seconds (section 2.1's option);
+  // 0, the paper's flights: only when it becomes unreachable. WN methods: must be 0.
+  double replan_interval = 0.0;
   double roll_time_constant = Uav{}.roll_time_constant;     // tau, s
   double max_roll_rate_deg_s = Uav{}.max_roll_rate_deg_s;   // p_max, deg/s
   void validate() const;

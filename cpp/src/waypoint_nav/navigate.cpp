@@ -55,6 +55,8 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
                  ? std::make_unique<DubinsWaypointGuidance>(l1, waypoints, R, options.weights)
                  : std::make_unique<DubinsWaypointGuidance>(law5, waypoints, R, options.weights);
     dwn = g.get();
+    if (options.wind_aware) dwn->set_wind(Vec2(wind.east, wind.north), options.speed);
+    dwn->set_replan_interval(options.replan_interval);
     guidance = std::move(g);
   } else {
     result.waypoint_radius = options.waypoint_radius.value_or(R);
@@ -62,6 +64,7 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
                         ? std::make_unique<WaypointFollower>(l1, waypoints, result.waypoint_radius)
                         : std::make_unique<WaypointFollower>(law5, waypoints, result.waypoint_radius);
     follower->set_passed_line(options.method == NavigationMethod::PassedLine);
+    follower->set_finish_line(true);  // the flight ends past the last waypoint's line, as DWN's
     guidance = std::move(follower);
   }
   const Uav vehicle = options.vehicle();

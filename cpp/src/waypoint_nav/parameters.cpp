@@ -27,6 +27,9 @@ void WaypointNavOptions::validate() const {
     require_non_negative(*waypoint_radius, "waypoint_radius");
   }
   if (max_time) require_positive(*max_time, "max_time");
+  require_non_negative(replan_interval, "replan_interval");
+  if (replan_interval > 0.0 && method != NavigationMethod::Dubins)
+    detail::fail_field("replan_interval", replan_interval, "only DWN re-plans (it is for method 'dwn')");
   l1.validate();
   require_in_range(roll_time_constant, limits::kMinRollTimeConstant, limits::kMaxRollTimeConstant, "s",
                    "roll_time_constant");

@@ -20,9 +20,10 @@ from typing import Any, Optional
 from ..follow.keys import threshold_value
 from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
+from ..report.follow_city import city_orbit_line
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
 from .output import add_report_arguments, output_folder, report_options
-from .types import add_dynamics_argument, number
+from .types import add_dynamics_argument, fdm_choice, number
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -36,7 +37,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--no-city", dest="city", action="store_false", help="skip the city runs")
     parser.add_argument("--threshold", metavar="H", help="follow.threshold over the file's: auto (picked from the "
                         "camera) or the speed ratio h (3: the paper's method)")
-    add_dynamics_argument(parser)
+    add_dynamics_argument(parser, fdm=True)
     parser.add_argument("--export-tolerance", type=number("--export-tolerance", 0.0, 1e7), default=1.0, metavar="M",
                         help="--export keeps the 1 Hz waypoints Douglas-Peucker needs at this tolerance "
                              "(default 1 m; 0: every waypoint)")
@@ -50,8 +51,10 @@ def run(args: argparse.Namespace) -> int:
     options = report_options(args)
     output_folder(args.out)  # a file there is an error now, not after the runs
     scenario = FollowScenario.load(args.scenario)
-    if args.dynamics is not None:
-        scenario.uav.dynamics = args.dynamics
+    dynamics, aircraft = fdm_choice(args)
+    if dynamics is not None:
+        scenario.uav.dynamics = dynamics
+    scenario.aircraft = aircraft or scenario.aircraft
     if args.threshold is not None:
         scenario.parameters.threshold = threshold_value("--threshold", args.threshold)
     city = args.city and scenario.city_available()
@@ -66,8 +69,14 @@ def run(args: argparse.Namespace) -> int:
           + _baseline_summary(record.get("baseline")) + f" -> {args.out}")
     for warning in record.get("warnings", []):
         print(f"warning: {warning}")
+    if "fdm" in record:
+        six = record["fdm"]
+        print(f"6-DOF on {six['aircraft']} (JSBSim): camera {100 * six['camera_fraction']:.1f} %, altitude within "
+              f"{six['altitude_error_max_m']:.2f} m, airspeed within {six['airspeed_error_max_m_s']:.2f} m/s")
     if "note" in record:
         print(f"note: {record['note']}")
+    if (line := city_orbit_line(record.get("city"))) is not None:
+        print(line)
     uav = scenario.uav
     export_mission(args.export, lambda ref: study.follow.to_mission(
         ref, uav.altitude, speed=uav.speed, tolerance=args.export_tolerance), args.origin or scenario.origin, None,

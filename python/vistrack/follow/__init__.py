@@ -22,7 +22,9 @@ through the buildings.
 
 - ``simulation``: the API above; ``scenario``: follow scenarios from YAML and the runs
   ``vistrack follow`` makes (old address: ``vistrack.follow_scenario``); ``files``: vehicle tracks, road paths,
-  trajectories as CSV; ``to_mission``: a run's waypoints as an autopilot mission.
+  trajectories as CSV; ``to_mission``: a run's waypoints as an autopilot mission;
+  ``city_orbit`` (beyond the paper): with a city, an orbit about the vehicle inside the visibility
+  polygon of its predicted position.
 """
 
 from __future__ import annotations

@@ -1,15 +1,23 @@
-"""Parsing of the follow scenario's newer keys (issue 31): ``follow.threshold`` ("auto" or h) and
-the ``reports`` block (the vehicle's 1 Hz reports as both followers get them)."""
+"""Parsing of follow scenario keys: the vehicle's legs (headings as compass words or degrees),
+``follow.threshold`` ("auto" or h) and the ``reports`` block (the vehicle's 1 Hz reports as both
+followers get them)."""
 
 from __future__ import annotations
 
 import math
 from typing import Any, Mapping
 
-from ..schema import fail, number, section
-from .simulation import VehicleReportOptions
+from .._core import limits as _limits
+from ..schema import fail, number, positive, reject_unknown, section
+from .simulation import VehicleLeg, VehicleReportOptions
 
-__all__ = ["REPORT_KEYS", "reports_block", "threshold_value"]
+__all__ = ["HEADINGS", "REPORT_KEYS", "reports_block", "threshold_value", "vehicle_legs"]
+
+# Compass words as angles counter-clockwise from east (radians).
+HEADINGS = {name: math.radians(deg) for name, deg in (
+    ("east", 0.0), ("northeast", 45.0), ("north", 90.0), ("northwest", 135.0), ("west", 180.0),
+    ("southwest", -135.0), ("south", -90.0), ("southeast", -45.0))}
+
 
 
 def threshold_value(key: str, value: Any) -> float | str:
@@ -36,3 +44,34 @@ def reports_block(data: Mapping[str, Any]) -> VehicleReportOptions:
     if "seed" in r:
         values["seed"] = int(number("reports.seed", r["seed"], low=0.0, high=2.0 ** 63))
     return VehicleReportOptions(**values)
+
+
+def _heading(key: str, leg: Mapping[str, Any]) -> float:
+    if "heading" in leg and "heading_deg" in leg:
+        raise fail(key, leg, "give heading (a compass word) or heading_deg, not both")
+    if "heading" in leg:
+        word = leg["heading"]
+        if not isinstance(word, str) or word.lower() not in HEADINGS:
+            raise fail(f"{key}.heading", word, f"must be one of {', '.join(HEADINGS)} (or use heading_deg)")
+        return HEADINGS[word.lower()]
+    # The angle limit (|a| <= MAX_ANGLE rad), in the degrees the key is given in.
+    limit = math.degrees(_limits.MAX_ANGLE)
+    return math.radians(number(f"{key}.heading_deg", leg.get("heading_deg", 0.0), low=-limit, high=limit))
+
+
+def vehicle_legs(items: Any) -> list[VehicleLeg]:
+    """vehicle.legs: [{heading | heading_deg, speed, duration, end_speed}, ...] as VehicleLegs."""
+    if not isinstance(items, list) or not items:
+        raise fail("vehicle.legs", items, "must be a non-empty list of legs")
+    legs = []
+    allowed = {"heading", "heading_deg", "speed", "duration", "end_speed"}
+    for i, leg in enumerate(items):
+        key = f"vehicle.legs[{i}]"
+        if not isinstance(leg, Mapping):
+            raise fail(key, leg, "must be a mapping with heading, speed, duration")
+        reject_unknown(leg, allowed, f"{key}.")
+        speed = number(f"{key}.speed", leg.get("speed", 0.0), low=0.0)
+        end = leg.get("end_speed")
+        legs.append(VehicleLeg(_heading(key, leg), speed, positive(f"{key}.duration", leg.get("duration")),
+                               None if end is None else number(f"{key}.end_speed", end, low=0.0)))
+    return legs

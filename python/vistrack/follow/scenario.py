@@ -44,7 +44,6 @@ from typing import Any, Callable, Mapping, Optional
 import numpy as np
 
 from .._core import Control, Environment, Uav, VisibilityScene
-from .._core import limits as _limits
 from ..flight import Wind
 from ..georeference import Georeference
 from ..io.documents import read_yaml_mapping
@@ -65,8 +64,10 @@ from ..scenario_blocks import (
 )
 from ..schema import beta as schema_beta
 from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
+from .city_orbit import CityOrbitResult, city_orbit_follow
+from .fdm import FollowFdm, fly_follow_fdm
 from .files import read_road_path, read_vehicle_track
-from .keys import reports_block, threshold_value
+from .keys import HEADINGS, reports_block, threshold_value, vehicle_legs
 from .simulation import (
     DownwardCamera,
     FollowFlight,
@@ -87,10 +88,6 @@ __all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy"]
 
 # The follow camera's mounts (vt.follow.DownwardCamera.mount), the default first.
 CAMERA_MOUNTS = ("roll", "pan_tilt", "fixed")
-# Compass words as angles counter-clockwise from east (radians).
-HEADINGS = {name: math.radians(deg) for name, deg in (
-    ("east", 0.0), ("northeast", 45.0), ("north", 90.0), ("northwest", 135.0), ("west", 180.0),
-    ("southwest", -135.0), ("south", -90.0), ("southeast", -45.0))}
 TOP_KEYS = {"description", "georeference", "uav", "vehicle", "follow", "offset", "wind", "wind_estimate", "camera",
             "flight", "baseline", "city", "reports"}
 # Spellings from before the one scenario schema, still read (city.map: see _old_city_map).
@@ -126,6 +123,7 @@ class FollowScenario:
     description: str = ""
     path: Optional[Path] = None
     origin: Optional[Georeference] = None  # where local (0, 0) lies on the Earth (mission export)
+    aircraft: Optional[str] = None  # uav.dynamics: jsbsim: the planner also flown on this 6-DOF aircraft
 
     @classmethod
     def load(cls, path: str | Path) -> "FollowScenario":
@@ -136,7 +134,8 @@ class FollowScenario:
     def from_mapping(cls, data: Mapping[str, Any], base: Path, path: Optional[Path] = None) -> "FollowScenario":
         data = upgrade(_old_city_map(data), RENAMES)
         reject_unknown(data, TOP_KEYS)
-        uav = uav_block(data, default_uav()).uav
+        block = uav_block(data, default_uav(), fdm=True)
+        uav = block.uav
         vehicle, legs, route = _vehicle(data, base)
         parameters = _parameters(data)
         schedule = _offset_schedule(data)
@@ -167,7 +166,7 @@ class FollowScenario:
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
                    baseline_control=control, reports=reports_block(data), city=_city(data, base, route), route=route,
                    description=str(data.get("description", "")),
-                   path=path, origin=georeference_block(data))
+                   path=path, origin=georeference_block(data), aircraft=block.aircraft)
 
     def city_available(self) -> bool:
         """Whether the scenario has a city section whose map and road files exist (the shared
@@ -215,6 +214,13 @@ class FollowScenario:
             orbit = baseline(self.vehicle, self.uav, self.baseline_radius, control=self.baseline_control,
                              parameters=parameters, **common)
         study = FollowStudy(self, parameters, follow, orbit, baseline_reason=reason)
+        if self.aircraft is not None:
+            if self.offset_schedule:
+                raise fail("offset_schedule", len(self.offset_schedule), "is not flown on a 6-DOF aircraft (jsbsim)")
+            say(f"6-DOF follow on {self.aircraft}")
+            study.fdm = fly_follow_fdm(self.vehicle, self.uav, parameters, follow.state[0], aircraft=self.aircraft,
+                                       wind=self.wind, wind_estimate=self.wind_estimate, flight=self.flight,
+                                       camera=self.camera)
         if city and self.city is not None:
             say("city")
             env = self.city.load(self.origin)
@@ -228,6 +234,11 @@ class FollowScenario:
             if flies and study.city_baseline_reason is None:
                 study.city_baseline = baseline(vehicle, uav, self.baseline_radius, control=self.baseline_control,
                                                parameters=parameters, scene=scene, **common)
+            say("city orbit")  # beyond every anchor: orbits inside the visibility polygons (follow.city_orbit)
+            known = self.wind_estimate or ((self.wind.east, self.wind.north) if parameters.wind_compensation else None)
+            # It observes the vehicle at each update itself, about the vehicle (no offset schedule).
+            study.city_orbit = city_orbit_follow(vehicle, uav, scene, parameters=parameters, wind_estimate=known,
+                                                 wind=self.wind, flight=self.flight, camera=self.camera)
         return study
 
 
@@ -244,6 +255,8 @@ class FollowStudy:
     environment: Optional[Environment] = None
     baseline_reason: Optional[str] = None  # why the baseline was not flown (a vehicle faster than the UAV)
     city_baseline_reason: Optional[str] = None
+    fdm: Optional[FollowFdm] = None  # the planner on a 6-DOF JSBSim aircraft (uav.dynamics: jsbsim)
+    city_orbit: Optional[CityOrbitResult] = None  # the city orbit mode's run (follow.city_orbit)
 
     def metrics(self) -> dict[str, Any]:
         """metrics.json: the planner's run at the top level (with a ``note`` when it flew its
@@ -259,11 +272,15 @@ class FollowStudy:
         block = _baseline_metrics(self.baseline, self.baseline_reason)
         if block is not None:
             out["baseline"] = block
+        if self.fdm is not None:
+            out["fdm"] = {"aircraft": self.fdm.trajectory.aircraft, **self.fdm.metrics()}
         if self.city_follow is not None:
             out["city"] = {"follow": _run_metrics(self.city_follow)}
             block = _baseline_metrics(self.city_baseline, self.city_baseline_reason)
             if block is not None:
                 out["city"]["baseline"] = block
+            if self.city_orbit is not None:
+                out["city"]["orbit"] = self.city_orbit.metrics
         return out
 
 
@@ -302,36 +319,6 @@ def _with_compensation(p: FollowParameters, on: bool) -> FollowParameters:
                             strategy_margin=p.strategy_margin)
 
 
-def _heading(key: str, leg: Mapping[str, Any]) -> float:
-    if "heading" in leg and "heading_deg" in leg:
-        raise fail(key, leg, "give heading (a compass word) or heading_deg, not both")
-    if "heading" in leg:
-        word = leg["heading"]
-        if not isinstance(word, str) or word.lower() not in HEADINGS:
-            raise fail(f"{key}.heading", word, f"must be one of {', '.join(HEADINGS)} (or use heading_deg)")
-        return HEADINGS[word.lower()]
-    # The angle limit (|a| <= MAX_ANGLE rad), in the degrees the key is given in.
-    limit = math.degrees(_limits.MAX_ANGLE)
-    return math.radians(number(f"{key}.heading_deg", leg.get("heading_deg", 0.0), low=-limit, high=limit))
-
-
-def _legs(items: Any) -> list[VehicleLeg]:
-    if not isinstance(items, list) or not items:
-        raise fail("vehicle.legs", items, "must be a non-empty list of legs")
-    legs = []
-    allowed = {"heading", "heading_deg", "speed", "duration", "end_speed"}
-    for i, leg in enumerate(items):
-        key = f"vehicle.legs[{i}]"
-        if not isinstance(leg, Mapping):
-            raise fail(key, leg, "must be a mapping with heading, speed, duration")
-        reject_unknown(leg, allowed, f"{key}.")
-        speed = number(f"{key}.speed", leg.get("speed", 0.0), low=0.0)
-        end = leg.get("end_speed")
-        legs.append(VehicleLeg(_heading(key, leg), speed, positive(f"{key}.duration", leg.get("duration")),
-                               None if end is None else number(f"{key}.end_speed", end, low=0.0)))
-    return legs
-
-
 def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[VehicleLeg], Optional[dict]]:
     v = section(data, "vehicle", {"start", "legs", "track", "route"})
     if ("legs" in v) == ("track" in v):
@@ -350,7 +337,7 @@ def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[V
     start = v.get("start", [0.0, 0.0])
     if not isinstance(start, (list, tuple)) or len(start) != 2:
         raise fail("vehicle.start", start, "must be [x, y]")
-    legs = _legs(v["legs"])
+    legs = vehicle_legs(v["legs"])
     xy = np.array([number(f"vehicle.start[{i}]", s) for i, s in enumerate(start)])
     return GroundVehicle.from_legs(legs, xy), legs, route
 

@@ -21,6 +21,8 @@ from ..plotting.motion import Line, MotionScene, Overlay, Sight, Track
 from ..report_options import ReportOptions
 from ..scenario_blocks import uav_dict
 from .document import Document, Heading, Picture, Table, vehicle_line
+from .fdm import fdm_blocks, fdm_figure
+from .follow_city import city_orbit_blocks
 from .media import write_media
 
 PLANNER = "sinusoid planner (the paper)"
@@ -61,6 +63,21 @@ def write_follow(study: FollowStudy, out: Path, title: str = "",
             files.append(write_follow_trajectory(study.city_baseline, out / "city_baseline_trajectory.csv"))
     record = study.metrics()
     document = _document(study, title, [f.name for f in files])
+    if study.fdm is not None:
+        six = study.fdm.trajectory
+        run = study.follow.run
+        state = np.asarray(run.state)
+        picture = fdm_figure(out, (run.t, state[:, 0], state[:, 1], run.bank),
+                             f"{study.scenario.uav.dynamics} model", six,
+                             f"The follow planner on the 6-DOF {six.aircraft} and the kinematic vehicle",
+                             np.asarray(run.vehicle), "ground vehicle")
+        block = {**record["fdm"], "real_time_factor": float((six.t[-1] - six.t[0]) / six.seconds)}
+        rows = [["camera sees the vehicle (%)", f"{100 * record['camera_fraction']:.1f}",
+                 f"{100 * block['camera_fraction']:.1f}"],
+                ["mean distance to the vehicle (m)", f"{record['mean_vehicle_distance_m']:.1f}",
+                 f"{block['mean_vehicle_distance_m']:.1f}"]]
+        document.blocks += [*fdm_blocks(block, rows, ["score", "kinematic", "6-DOF"]), picture]
+        files.append(out / "fdm.png")
     open_scene = motion_scene(study.follow, study.scenario.camera, study.scenario.uav.altitude,
                               f"{title}: open ground")
     more: list[tuple[str, MotionScene, str]] = []
@@ -169,4 +186,5 @@ def _document(study: FollowStudy, title: str, files: Sequence[str]) -> Document:
               "follow_compare.png": "Planner beside the vector-field baseline",
               "follow_city.png": "On a city road, with line of sight"}
     blocks += [Picture(name, caption) for name, caption in titles.items() if name in files]
+    blocks += city_orbit_blocks(study.metrics().get("city"))  # beyond every anchor (follow.city_orbit)
     return Document(f"vistrack report: following a ground vehicle, {title}", summary, blocks)
