@@ -360,7 +360,8 @@ void bind_waypoint_nav(py::module_& parent) {
                      "DWN 'path': the feed-forward's lead, s; None: roll_lag()")
       .def("resolved_tracking", &WaypointNavOptions::resolved_tracking, "What 'auto' means for this vehicle.")
       .def("roll_lag", &WaypointNavOptions::roll_lag,
-           "The roll model's lead time, s: tau + max(0, phi_max - p_max tau) / p_max (0 on dubins).")
+           "The roll model's lag, s: the heading lost to the bank's response to a step 0 -> phi_max, integral of "
+           "(1 - phi / phi_max) dt (tau without the rate limit; 0 on dubins).")
       .def("validate", &WaypointNavOptions::validate, "Raise VistrackError naming the first invalid field.")
       .def("__repr__", [](const WaypointNavOptions& o) {
         Repr text("waypoint_nav.Options");

@@ -80,9 +80,9 @@ struct WaypointNavOptions {
   Uav vehicle() const;
   // The tracking "auto" resolves to for this vehicle.
   DwnTracking resolved_tracking() const;
-  // How long the roll model takes to bank for a full turn, as a lead time (s): the time constant
-  // tau plus the rate-limited part of the roll-in (phi_max - p_max tau) / p_max when the
-  // command step phi_max exceeds p_max tau (the exponential starts from there); 0 for dubins.
+  // The roll model's lag as a lead time (s): the heading lost to the bank's response to a step
+  // command 0 -> phi_max = atan(v^2 / (g R)), integral of (1 - phi(t) / phi_max) dt: tau without
+  // the rate limit, more with it; 0 for dubins (parameters.cpp).
   double roll_lag() const;
 };
 

@@ -61,7 +61,14 @@ double WaypointNavOptions::roll_lag() const {
   if (dynamics == DynamicsModel::Dubins) return 0.0;
   const double max_bank = std::atan(speed * speed / (kStandardGravity * turn_radius));
   const double rate = max_roll_rate_deg_s * 3.14159265358979323846 / 180.0;
-  return roll_time_constant + std::max(0.0, max_bank - rate * roll_time_constant) / rate;
+  const double tau = roll_time_constant;
+  // The heading lag of the bank's response to a step command 0 -> phi_max, the turn rate taken
+  // linear in the bank: D = integral of (1 - phi(t) / phi_max) dt. Without the rate limit
+  // (phi_max <= p_max tau) the exponential gives tau; with it, a ramp at p_max to phi_1 = phi_max -
+  // p_max tau over T = phi_1 / p_max, then the exponential from there.
+  if (max_bank <= rate * tau) return tau;
+  const double ramp_end = max_bank - rate * tau, ramp_time = ramp_end / rate;
+  return ramp_time * (1.0 - 0.5 * ramp_end / max_bank) + rate * tau * tau / max_bank;
 }
 
 }  // namespace vistrack
