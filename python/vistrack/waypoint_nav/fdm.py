@@ -20,9 +20,17 @@ from .._core.flight import L1Line, LineFeedback, WaypointFollower, Wind, paper_g
 from ..fdm import FdmTrajectory, FlightGuidanceLaw, aircraft, fly
 from .navigation import NavigationFlight, Points, default_start, route_array
 
-__all__ = ["ROLL_LEAD", "FdmNavigation", "fdm_flights", "fly_fdm"]
+__all__ = ["FdmNavigation", "fdm_flights", "fly_fdm", "roll_lead"]
 
-ROLL_LEAD = 0.5  # s: DWN "path"'s anticipation on an aircraft (the roll model's time constant)
+
+
+def roll_lead(speed: float, turn_radius: float) -> float:
+    """DWN "path"'s anticipation on an aircraft (s): the lag of the kinematic roll model that flies beside
+    the 6-DOF flight (the default roll time constant 0.5 s and roll rate 70 deg/s, ``Options.roll_lag``);
+    0.52 s for the Aerosonde at cruise. The Aerosonde's own course lag to a bank step is shorter (0.18 s),
+    but its bank limit is the plan's turn, so the follower cannot tighten a late turn: leading by the
+    roll model's lag keeps the arc's error inside, where it can."""
+    return float(_wn.Options(dynamics="roll", turn_radius=turn_radius, speed=speed).roll_lag())
 
 
 @dataclass
@@ -78,7 +86,7 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
     ``replan_interval``: DWN re-plans that often (s; 0: the paper's switch). ``dwn_tracking`` (beyond the
     paper) "path" ("auto", the default: an aircraft banks) follows each planned horizon path in closed loop
     (``DubinsWaypointGuidance.set_path_following``), its curvature read ``path_anticipation`` s ahead (None:
-    the aircraft's ``roll_lead``); "paper": the leg law to each turning point."""
+    ``roll_lead(speed, turn_radius)``); "paper": the leg law to each turning point."""
     route = route_array(waypoints)
     if start is None:
         pose, flown = default_start(route), route[1:]
@@ -101,7 +109,7 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
             planner.set_wind(np.array([wind.east, wind.north]), speed)
         planner.replan_interval = replan_interval
         if dwn_tracking in ("auto", "path"):
-            lead = path_anticipation if path_anticipation is not None else ROLL_LEAD
+            lead = path_anticipation if path_anticipation is not None else roll_lead(speed, turn_radius)
             planner.set_path_following(speed, lead)
         elif dwn_tracking != "paper":
             raise VistrackError(f"dwn_tracking = {dwn_tracking!r}: must be 'auto', 'paper' or 'path'")
