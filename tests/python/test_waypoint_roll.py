@@ -49,14 +49,18 @@ def test_dwn_on_the_roll_model_meets_its_bounds_on_random_routes_and_winds() -> 
     assert paper > 2 * worst["calm"]
 
 
-@pytest.mark.parametrize("guidance", ["law5", "l1"])
-def test_dwn_on_the_roll_model_never_swirls(guidance: str) -> None:
+@pytest.mark.parametrize("guidance,integration", [("law5", "discrete"), ("l1", "discrete"), ("l1", "continuous")])
+def test_dwn_on_the_roll_model_never_swirls(guidance: str, integration: str) -> None:
     """The paper's route in metres, 0.3 v wind from 8 directions, aware or not: every waypoint
-    reached, no loop, with either leg law (used only where no plan is left to follow)."""
+    reached, no loop, with either leg law (used only where no plan is left to follow), discrete or
+    continuous; wind-aware within 0.05 R."""
     for a in np.linspace(0.0, 2 * math.pi, 8, endpoint=False):
         for aware in (False, True):
-            f = wn.fly(ROUTE, wind=wind_at(0.3, a), wind_aware=aware, **{**ROLL, "guidance": guidance})
+            f = wn.fly(ROUTE, wind=wind_at(0.3, a), wind_aware=aware, integration=integration,
+                       **{**ROLL, "guidance": guidance})
             assert f.swirls == 0 and f.all_reached and f.finished
+            if aware:
+                assert f.miss_distances.max() / R <= 0.05
 
 
 @pytest.mark.parametrize("tau,rate", [(0.3, 70.0), (0.5, 30.0)])
