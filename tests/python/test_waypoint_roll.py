@@ -5,6 +5,7 @@ and the paper's DWN stays exactly the paper's on its instant-turn vehicle."""
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -113,3 +114,20 @@ def test_path_tracking_is_for_dwn_only() -> None:
         wn.fly(ROUTE, dwn_tracking="loop", **ROLL)
     with pytest.raises(VistrackError, match=r"path_anticipation = -1"):
         wn.fly(ROUTE, path_anticipation=-1.0, **ROLL)
+
+
+def test_the_waypoints_command_flies_the_path_by_default_and_the_paper_on_request(tmp_path: Path) -> None:
+    """`vistrack waypoints` in metres (the roll model): DWN follows its plan unless --dwn-tracking paper."""
+    import json
+
+    from vistrack.cli import main
+
+    misses = {}
+    for tracking in ("auto", "paper"):
+        out = tmp_path / tracking
+        assert main(["waypoints", str(REPO / "examples" / "waypoints_metres.csv"), "--method", "dwn", "--dwn-tracking",
+                     tracking, "--out", str(out), "--quiet", "--no-html", "--no-animation"]) == 0
+        record = json.loads((out / "metrics.json").read_text())
+        assert record["settings"]["dwn_tracking"] == tracking
+        misses[tracking] = record["flights"][0]["max_miss_over_R"]
+    assert misses["auto"] <= 0.05 < misses["paper"]

@@ -311,15 +311,17 @@ def paper_flights(waypoints: Points, wind: Optional[Wind] = None, radii: Sequenc
     """DWN and WN at each waypoint radius (in units of R) over one route: Figures 11 (no wind) and
     12 (``wind``); with "wn_passed_line" in ``methods`` also ArduPlane's switching at each radius.
     ``options`` go to :func:`fly` (turn_radius, speed, dt, gains, start, ...; ``replan_interval``
-    to DWN's flight only)."""
+    and ``dwn_tracking`` to DWN's flight only)."""
     for method in methods:
         if method not in METHODS:
             raise VistrackError(f"method = {preview(method)}: must be one of " + ", ".join(map(repr, METHODS)))
     R = float(options.get("turn_radius", _OPTIONS.turn_radius))
     replan = options.pop("replan_interval", _OPTIONS.replan_interval)  # DWN's alone
+    tracking = options.pop("dwn_tracking", str(_OPTIONS.dwn_tracking))  # DWN's alone
     flights = []
     if "dwn" in methods:
-        flights.append(fly(waypoints, method="dwn", wind=wind, replan_interval=replan, **options))
+        flights.append(fly(waypoints, method="dwn", wind=wind, replan_interval=replan, dwn_tracking=tracking,
+                           **options))
     for method in ("wn", "wn_passed_line"):
         if method in methods:
             for fraction in radii:
