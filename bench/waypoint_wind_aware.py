@@ -118,17 +118,44 @@ def metres_table() -> None:
     print("| vehicle, legs | DWN, calm (R) | DWN, 0.1 v (R) | DWN wind-aware, 0.1 v (R) | DWN, 0.3 v (R) | "
           "DWN wind-aware, 0.3 v (R) |")
     print("|---|---|---|---|---|---|")
-    for dynamics, guidance in (("dubins", "law5"), ("dubins", "l1"), ("roll", "law5"), ("roll", "l1")):
+    rows = (("dubins", "law5", "paper"), ("dubins", "l1", "paper"), ("roll", "law5", "paper"), ("roll", "l1", "paper"),
+            ("roll", "l1", "path"))
+    for dynamics, guidance, tracking in rows:
         cells = []
         for ratio, aware in ((0.0, False), (0.1, False), (0.1, True), (0.3, False), (0.3, True)):
             worst = 0.0
             for k in range(8 if ratio else 1):
                 a = 2 * math.pi * k / 8
                 wind = vt.flight.Wind(east=ratio * v_m * math.cos(a), north=ratio * v_m * math.sin(a))
-                f = wn.fly(route, wind=wind, wind_aware=aware, dynamics=dynamics, guidance=guidance, **base)
+                f = wn.fly(route, wind=wind, wind_aware=aware, dynamics=dynamics, guidance=guidance,
+                           dwn_tracking=tracking, **base)
                 worst = max(worst, float(f.miss_distances.max()) / R_m)
             cells.append(f"{worst:.3f}")
-        print(f"| {dynamics}, {guidance} | " + " | ".join(cells) + " |")
+        label = "path followed (the default on roll)" if tracking == "path" else f"{guidance} legs"
+        print(f"| {dynamics}, {label} | " + " | ".join(cells) + " |")
+
+
+def roll_random_table(count: int = 50, seed: int = 1) -> None:
+    """DWN on the roll model in metres (the default aircraft) over random routes, each in a random wind
+    direction: the paper's law to the turning points against the planned path followed (beyond the paper)."""
+    uav = vt.Uav()
+    R_m, v_m = uav.min_turn_radius, uav.speed
+    rng = np.random.default_rng(seed)
+    cases = [(wn.random_route(rng, 6, R_m), rng.uniform(0.0, 2 * math.pi)) for _ in range(count)]
+    print(f"| DWN on the roll model ({count} routes) | calm: largest (median) miss (R) | 0.1 v | 0.1 v wind-aware | "
+          "0.3 v wind-aware | flights that swirl | all reached |")
+    print("|---|---|---|---|---|---|---|")
+    for label, tracking in (("paper's law to T_n, L1 legs", "paper"), ("path followed (default)", "path")):
+        cells, swirling, reached = [], 0, 0
+        for ratio, aware in ((0.0, False), (0.1, False), (0.1, True), (0.3, True)):
+            flown = [wn.fly(route, wind=vt.flight.Wind(east=ratio * v_m * math.cos(a), north=ratio * v_m * math.sin(a)),
+                            wind_aware=aware, dynamics="roll", guidance="l1", l1_period=8.0, turn_radius=R_m,
+                            speed=v_m, dwn_tracking=tracking) for route, a in cases]
+            misses = np.concatenate([f.miss_distances for f in flown]) / R_m
+            cells.append(f"{misses.max():.3f} ({np.median(misses):.3f})")
+            swirling += sum(f.swirls > 0 for f in flown)
+            reached += sum(f.all_reached for f in flown)
+        print(f"| {label} | " + " | ".join(cells) + f" | {swirling} | {reached} of {4 * count} |")
 
 
 def main() -> None:
@@ -140,6 +167,8 @@ def main() -> None:
     random_table()
     print()
     metres_table()
+    print()
+    roll_random_table()
 
 
 if __name__ == "__main__":

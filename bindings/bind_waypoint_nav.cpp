@@ -31,7 +31,8 @@ WaypointNavOptions navigation_options(NavigationMethod method, double turn_radiu
                                       const Weights& weights, FlightIntegration integration,
                                       std::optional<double> max_time, DynamicsModel dynamics,
                                       double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
-                                      double l1_period, bool wind_aware, double replan_interval) {
+                                      double l1_period, bool wind_aware, double replan_interval,
+                                      DwnTracking dwn_tracking, std::optional<double> path_anticipation) {
   WaypointNavOptions o;
   o.method = method;
   o.turn_radius = turn_radius;
@@ -49,6 +50,8 @@ WaypointNavOptions navigation_options(NavigationMethod method, double turn_radiu
   o.l1.period = l1_period;
   o.wind_aware = wind_aware;
   o.replan_interval = replan_interval;
+  o.dwn_tracking = dwn_tracking;
+  o.path_anticipation = path_anticipation;
   return o;
 }
 
@@ -219,6 +222,20 @@ void bind_waypoint_nav(py::module_& parent) {
       .def_property("replan_interval", &DubinsWaypointGuidance::replan_interval,
                     &DubinsWaypointGuidance::set_replan_interval,
                     "re-plan the active turning point every so many s (section 2.1); 0: at the reachability switch")
+      .def(
+          "set_path_following",
+          [](DubinsWaypointGuidance& g, double speed, double anticipation, double lookahead_radii,
+             double heading_gain) {
+            g.set_path_following(PathFollowingGains{lookahead_radii, heading_gain, anticipation}, speed);
+          },
+          py::arg("speed"), py::arg("anticipation"), py::arg("lookahead_radii") = PathFollowingGains{}.lookahead_radii,
+          py::arg("heading_gain") = PathFollowingGains{}.heading_gain,
+          "Beyond the paper: fly each planned horizon path (first arc, straight to T_n, arc through W_n, straight "
+          "to W_{n+1}) with PathFollower at airspeed speed, its curvature feed-forward anticipation s ahead (a "
+          "banking vehicle's roll lag), instead of the leg law to T_n; the last waypoint along the last plan's "
+          "tail.")
+      .def_property_readonly("path_following", &DubinsWaypointGuidance::path_following,
+                             "True once set_path_following was called")
       .def_property_readonly(
           "turning_points",
           [](const DubinsWaypointGuidance& g) {
@@ -281,11 +298,12 @@ void bind_waypoint_nav(py::module_& parent) {
                        std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
                        FlightIntegration integration, std::optional<double> max_time, DynamicsModel dynamics,
                        double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
-                       double l1_period, bool wind_aware, double replan_interval) {
+                       double l1_period, bool wind_aware, double replan_interval, DwnTracking dwn_tracking,
+                       std::optional<double> path_anticipation) {
              return make_validated(navigation_options(method, turn_radius, speed, dt, gains, waypoint_radius, weights,
                                                       integration, max_time, dynamics, roll_time_constant,
                                                       max_roll_rate_deg_s, guidance, l1_period, wind_aware,
-                                                      replan_interval));
+                                                      replan_interval, dwn_tracking, path_anticipation));
            }),
            py::kw_only(), py::arg("method") = defaults.method, py::arg("turn_radius") = defaults.turn_radius,
            py::arg("speed") = defaults.speed, py::arg("dt") = defaults.dt,
@@ -295,7 +313,8 @@ void bind_waypoint_nav(py::module_& parent) {
            py::arg("dynamics") = defaults.dynamics, py::arg("roll_time_constant") = defaults.roll_time_constant,
            py::arg("max_roll_rate_deg_s") = defaults.max_roll_rate_deg_s, py::arg("guidance") = defaults.guidance,
            py::arg("l1_period") = defaults.l1.period, py::arg("wind_aware") = defaults.wind_aware,
-           py::arg("replan_interval") = defaults.replan_interval,
+           py::arg("replan_interval") = defaults.replan_interval, py::arg("dwn_tracking") = defaults.dwn_tracking,
+           py::arg("path_anticipation") = py::none(),
            "method 'dwn', 'wn' or 'wn_passed_line'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP "
            "(None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + "
            "2 pi R per waypoint) / v); dynamics 'dubins' or 'roll' (metres and seconds) with the roll model's "
@@ -303,7 +322,9 @@ void bind_waypoint_nav(py::module_& parent) {
            "'l1' (L1 line tracking, period l1_period s, damping 0.75) on every leg; wind_aware: the leg law steers the "
            "course over the ground with the known mean wind (and DWN plans its turning points in the air mass); "
            "replan_interval: DWN re-plans the active turning point every so many seconds (0: only at the "
-           "reachability switch, the paper's flights).")
+           "reachability switch, the paper's flights); dwn_tracking (beyond the paper) 'paper' (the leg law to each "
+           "turning point), 'path' (the planned horizon path followed in closed loop, the roll anticipated "
+           "path_anticipation s ahead, None: the roll model's lag) or 'auto' ('paper' on dubins, 'path' on roll).")
       .def_readwrite("method", &WaypointNavOptions::method, "'dwn' or 'wn'")
       .def_readwrite("turn_radius", &WaypointNavOptions::turn_radius, "R: minimum turn radius and DWN's turning circles")
       .def_readwrite("speed", &WaypointNavOptions::speed, "v")
@@ -332,6 +353,15 @@ void bind_waypoint_nav(py::module_& parent) {
       .def_readwrite("max_roll_rate_deg_s", &WaypointNavOptions::max_roll_rate_deg_s, "roll model: p_max, deg/s")
       .def_readwrite("replan_interval", &WaypointNavOptions::replan_interval,
                      "DWN: re-plan the active turning point every so many seconds; 0: at the reachability switch only")
+      .def_readwrite("dwn_tracking", &WaypointNavOptions::dwn_tracking,
+                     "DWN: 'paper' (the leg law to each turning point), 'path' (the planned path followed, beyond the "
+                     "paper) or 'auto' ('paper' on dubins, 'path' on roll)")
+      .def_readwrite("path_anticipation", &WaypointNavOptions::path_anticipation,
+                     "DWN 'path': the feed-forward's lead, s; None: roll_lag()")
+      .def("resolved_tracking", &WaypointNavOptions::resolved_tracking, "What 'auto' means for this vehicle.")
+      .def("roll_lag", &WaypointNavOptions::roll_lag,
+           "The roll model's lag, s: the heading lost to the bank's response to a step 0 -> phi_max, integral of "
+           "(1 - phi / phi_max) dt (tau without the rate limit; 0 on dubins).")
       .def("validate", &WaypointNavOptions::validate, "Raise VistrackError naming the first invalid field.")
       .def("__repr__", [](const WaypointNavOptions& o) {
         Repr text("waypoint_nav.Options");
@@ -345,6 +375,8 @@ void bind_waypoint_nav(py::module_& parent) {
         if (o.guidance == LegGuidance::L1) text.add("l1_period", o.l1.period);
         if (o.wind_aware) text.add("wind_aware", o.wind_aware);
         if (o.replan_interval > 0.0) text.add("replan_interval", o.replan_interval);
+        if (o.dwn_tracking != DwnTracking::Auto) text.add("dwn_tracking", o.dwn_tracking);
+        if (o.path_anticipation) text.add("path_anticipation", *o.path_anticipation);
         if (o.dynamics == DynamicsModel::Roll)
           text.add("roll_time_constant", o.roll_time_constant).add("max_roll_rate_deg_s", o.max_roll_rate_deg_s);
         return text.str();
@@ -356,11 +388,12 @@ void bind_waypoint_nav(py::module_& parent) {
          double dt, std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
          std::optional<Wind> wind, FlightIntegration integration, std::optional<double> max_time,
          DynamicsModel dynamics, double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
-         double l1_period, bool wind_aware, double replan_interval) {
+         double l1_period, bool wind_aware, double replan_interval, DwnTracking dwn_tracking,
+         std::optional<double> path_anticipation) {
         const WaypointNavOptions o = navigation_options(method, turn_radius, speed, dt, gains, waypoint_radius, weights,
                                                         integration, max_time, dynamics, roll_time_constant,
                                                         max_roll_rate_deg_s, guidance, l1_period, wind_aware,
-                                                        replan_interval);
+                                                        replan_interval, dwn_tracking, path_anticipation);
         const std::vector<Vec2> route = to_points(waypoints, "waypoints");
         const Wind w = wind.value_or(Wind{});
         py::gil_scoped_release release;
@@ -374,9 +407,11 @@ void bind_waypoint_nav(py::module_& parent) {
       py::arg("dynamics") = defaults.dynamics, py::arg("roll_time_constant") = defaults.roll_time_constant,
       py::arg("max_roll_rate_deg_s") = defaults.max_roll_rate_deg_s, py::arg("guidance") = defaults.guidance,
       py::arg("l1_period") = defaults.l1.period, py::arg("wind_aware") = defaults.wind_aware,
-      py::arg("replan_interval") = defaults.replan_interval,
+      py::arg("replan_interval") = defaults.replan_interval, py::arg("dwn_tracking") = defaults.dwn_tracking,
+      py::arg("path_anticipation") = py::none(),
       "Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' "
-      "vehicle, each leg by 'law5' or 'l1'; returns NavigationResult. Releases the GIL.");
+      "vehicle, each leg by 'law5' or 'l1' (DWN: or its planned path followed, dwn_tracking 'path'; 'auto': on the "
+      "roll model); returns NavigationResult. Releases the GIL.");
 
   m.def(
       "navigation_metrics",

@@ -121,6 +121,12 @@ struct TurningPointRecord {
 // at tau_T, line_start: at the end of the first arc, circle_center: at tau_n, exit_point). With
 // w = 0 it is turning_point(). `air_path` (if given) receives the path in the air frame of
 // `pose` (the frame moving with w that coincides with the ground when `pose` is planned).
+// The horizon path as PathFollower pieces from `pose` (its first arc, the straight to T_n, the
+// arc through W_n, the straight to W_{n+1}; empty pieces dropped), then a straight of `extension`
+// past W_{n+1}. Each piece starts where the one before ends.
+std::vector<PathPiece> horizon_pieces(const Configuration& pose, const HorizonPath& path, double turn_radius,
+                                      double extension);
+
 TurningPoint air_mass_turning_point(const Configuration& pose, const Vec2& w_next, const Vec2& w_after,
                                     double turn_radius, double speed, const Vec2& wind,
                                     const FuelWeights& weights = {}, HorizonPath* air_path = nullptr);
@@ -156,6 +162,17 @@ class DubinsWaypointGuidance : public FlightGuidance {
   // last waypoint (its line ends at the waypoint).
   void set_replan_interval(double interval);
   double replan_interval() const { return replan_interval_; }
+  // Beyond the paper, for vehicles that bank (the roll model, a 6-DOF aircraft): each planned
+  // horizon path (first arc, straight to T_n, the arc through W_n, the straight to W_{n+1}) is
+  // flown by PathFollower (curvature feed-forward read gains.anticipation seconds ahead, so the
+  // roll starts before the arc; cross-track and heading feedback), in the air frame when
+  // wind-aware, instead of the leg law to T_n alone: the roll lag is corrected rather than
+  // accumulated. The switch and the re-planning stay the paper's; the last waypoint is flown along
+  // the tail of the last plan (its straight to W_last, extended 2 R past it). Unset: the paper's
+  // law to T_n (the default).
+  // speed: the vehicle's airspeed v (the feed-forward's v kappa, the anticipation's lead v t).
+  void set_path_following(const PathFollowingGains& gains, double speed);
+  bool path_following() const { return path_gains_.has_value(); }
 
   const std::vector<TurningPointRecord>& turning_points() const { return log_; }
   std::size_t active() const { return active_; }
@@ -166,6 +183,7 @@ class DubinsWaypointGuidance : public FlightGuidance {
 
  private:
   void plan(const Configuration& state, double t);
+  void follow(const Configuration& state, double t, const HorizonPath& air_path);
   void check() const;
   Vec2 drifting_target(double t) const { return air_target_ + wind_ * (t - planned_at_); }
 
@@ -184,6 +202,14 @@ class DubinsWaypointGuidance : public FlightGuidance {
   Vec2 air_target_ = Vec2::Zero();  // its point in the air mass at planned_at_
   Vec2 air_line_start_ = Vec2::Zero();
   std::variant<LineFeedback, L1Line> air_law_;  // law_ without wind: the one flown in the air frame
+  std::optional<PathFollowingGains> path_gains_;
+  double path_speed_ = 1.0;
+  std::optional<PathFollower> follower_;  // the active plan's path (path following)
+  double follower_planned_at_ = 0.0;      // its air frame: the ground at that time
+  Configuration follower_frame(const Configuration& state, double t) const {
+    const Vec2 drift = wind_ * (t - follower_planned_at_);
+    return {state.x - drift.x(), state.y - drift.y(), state.psi};
+  }
   bool air_frame_ = false;  // the active line is flown in the air frame
   Vec2 leg_start_ = Vec2::Zero();   // the start of the route's last leg (finish line)
 };

@@ -45,11 +45,27 @@ void DubinsWaypointGuidance::set_replan_interval(double interval) {
   replan_interval_ = interval;
 }
 
+void DubinsWaypointGuidance::set_path_following(const PathFollowingGains& gains, double speed) {
+  gains.validate();
+  require_positive(speed, "speed");
+  path_gains_ = gains;
+  path_speed_ = speed;
+  touch();
+}
+
 double DubinsWaypointGuidance::past_finish_line(const Vec2& p) const {
   const Vec2 leg = waypoints_.back() - leg_start_;
   const double length = leg.norm();
   if (length == 0.0) return (p - waypoints_.back()).norm() == 0.0 ? 0.0 : -1.0;
   return (p - waypoints_.back()).dot(leg) / length;
+}
+
+void DubinsWaypointGuidance::follow(const Configuration& state, double t, const HorizonPath& air_path) {
+  if (!path_gains_) return;
+  follower_.emplace(horizon_pieces(state, air_path, turn_radius_, 2.0 * turn_radius_), path_speed_, turn_radius_,
+                    *path_gains_);
+  follower_planned_at_ = t;
+  follower_->start(state, t);  // the air frame of this plan is the ground now
 }
 
 void DubinsWaypointGuidance::plan(const Configuration& state, double t) {
@@ -74,10 +90,12 @@ void DubinsWaypointGuidance::plan(const Configuration& state, double t) {
                                            airspeed_, wind_, weights_, &air);
       record.air_point = air.point;
       air_line_start_ = air.line_start;
+      follow(state, t, air);
     } else {
       record.path = turning_point(state, waypoints_[active_], waypoints_[active_ + 1], turn_radius_, weights_);
       record.air_point = record.path.point;
       air_line_start_ = record.path.line_start;
+      follow(state, t, record.path);
     }
     target_ = record.path.point;
     line_start_ = record.path.line_start;
@@ -101,6 +119,7 @@ void DubinsWaypointGuidance::start(const Configuration& state, double t) {
   active_ = 0;
   done_ = false;
   log_.clear();
+  follower_.reset();
   leg_start_ = waypoints_.size() >= 2 ? waypoints_[waypoints_.size() - 2] : Vec2(state.x, state.y);
   plan(state, t);
 }
@@ -109,7 +128,9 @@ GuidanceCommand DubinsWaypointGuidance::command(const Configuration& state, doub
   GuidanceCommand c;
   c.target = target_;
   c.target_index = static_cast<int>(active_);
-  if (air_frame_) {
+  if (follower_) {
+    c.turn_rate = follower_->command(follower_frame(state, t), t).turn_rate;
+  } else if (air_frame_) {
     const Vec2 drift = wind_ * (t - planned_at_);
     const Configuration air{state.x - drift.x(), state.y - drift.y(), state.psi};
     c.turn_rate = std::visit([&](const auto& law) { return law.turn_rate(air, air_line_start_, air_target_); },
@@ -122,6 +143,11 @@ GuidanceCommand DubinsWaypointGuidance::command(const Configuration& state, doub
 
 void DubinsWaypointGuidance::advance(const Configuration& state, double t) {
   if (done_) return;
+  if (follower_) {
+    const auto before = follower_->revision();
+    follower_->advance(follower_frame(state, t), t);
+    if (follower_->revision() != before) touch();  // the feed-forward's curvature changed
+  }
   if (active_ + 1 == waypoints_.size()) {
     if (past_finish_line(Vec2(state.x, state.y)) >= 0.0) {
       done_ = true;

@@ -57,6 +57,11 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
     dwn = g.get();
     if (options.wind_aware) dwn->set_wind(Vec2(wind.east, wind.north), options.speed);
     dwn->set_replan_interval(options.replan_interval);
+    if (options.resolved_tracking() == DwnTracking::Path) {
+      PathFollowingGains gains = options.path_gains;
+      gains.anticipation = options.path_anticipation.value_or(options.roll_lag());
+      dwn->set_path_following(gains, options.speed);
+    }
     guidance = std::move(g);
   } else {
     result.waypoint_radius = options.waypoint_radius.value_or(R);

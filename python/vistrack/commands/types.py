@@ -94,8 +94,9 @@ def fdm_choice(args: argparse.Namespace) -> tuple[str | None, str | None]:
     """(kinematic model or None: the scenario's, 6-DOF aircraft or None) from --dynamics and --aircraft."""
     from ..scenario_blocks import FDM_DYNAMICS, aircraft_name
 
+    aircraft = getattr(args, "aircraft", None)  # the sweeps' namespaces have no --aircraft
     if args.dynamics == FDM_DYNAMICS:
-        return None, aircraft_name(args.aircraft)
-    if args.aircraft is not None:
-        raise UsageError(f"--aircraft {args.aircraft} needs --dynamics {FDM_DYNAMICS}")
+        return None, aircraft_name(aircraft)
+    if aircraft is not None:
+        raise UsageError(f"--aircraft {aircraft} needs --dynamics {FDM_DYNAMICS}")
     return args.dynamics, None

@@ -19,6 +19,13 @@ from .types import UsageError, fdm_choice
 L1_PERIOD = 8.0
 
 
+def add_dwn_tracking_argument(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--dwn-tracking", choices=["auto", "paper", "path"], default="auto",
+                        help="how DWN flies its plan: paper (the leg law to each turning point), path (beyond the "
+                             "paper: the planned path followed, the roll anticipated); default auto: paper on the "
+                             "dubins vehicle, path on the roll model and a 6-DOF aircraft")
+
+
 def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any]:
     """The keyword arguments of :func:`wn.fly` the flags ask for, in metres or the paper's units,
     after checking that the route's scale fits them (UsageError before any output)."""
@@ -43,7 +50,7 @@ def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any
             "dynamics": dynamics, "roll_time_constant": Uav().roll_time_constant,
             "max_roll_rate_deg_s": Uav().max_roll_rate_deg_s, "guidance": args.guidance or ("law5" if paper else "l1"),
             "l1_period": args.l1_period, "wind_aware": args.wind_aware,
-            "replan_interval": args.replan_interval}
+            "replan_interval": args.replan_interval, "dwn_tracking": getattr(args, "dwn_tracking", "auto")}
 
 
 def fdm_aircraft(args: argparse.Namespace) -> str | None:

@@ -25,7 +25,7 @@ from .export import add_export_arguments, check_exports, export_mission
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
 from .types import add_dynamics_argument, coordinate, count, length, number, speed
-from .waypoint_units import L1_PERIOD, fdm_aircraft, flight_options
+from .waypoint_units import L1_PERIOD, add_dwn_tracking_argument, fdm_aircraft, flight_options
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -34,8 +34,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                                    description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("route", type=Path, help="route: CSV with columns x,y (metres; the paper's units with "
                                                  "--paper-units), a .plan / .waypoints mission, or GeoJSON")
-    parser.add_argument("--paper-units", action="store_true",
-                        help="the paper's dimensionless units and settings (R 0.7, v 0.8, law (5), Dubins vehicle)")
+    parser.add_argument("--paper-units", action="store_true", help="the paper's units (R 0.7, v 0.8, law (5), Dubins)")
     parser.add_argument("--method", choices=[*wn.METHODS, "both", "all"], default="both",
                         help="dwn, wn (the paper's), wn_passed_line (ArduPlane's switching, beyond the paper); "
                              "both: dwn and wn (the default); all: the three")
@@ -44,8 +43,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--wind", type=finite_numbers("--wind", 2, "0,2", 1e4), default=[0.0, 0.0],
                         help="constant wind east,north: the velocity of the air, pointing where it blows to "
                              "(route units per second; default 0,0)")
-    parser.add_argument("--gusts", type=count("--gusts", 0, 2**63 - 1), metavar="SEED",
-                        help="add Dryden gusts with this seed (light turbulence, MIL-F-8785C, see vt.waypoint_nav)")
+    parser.add_argument("--gusts", type=count("--gusts", 0, 2**63 - 1), metavar="SEED", help="add Dryden gusts "
+                        "with this seed (light turbulence, MIL-F-8785C, see vt.waypoint_nav)")
     parser.add_argument("--turn-radius", type=length("--turn-radius"),
                         help=f"R (default {Uav().min_turn_radius:g} m; {d['turn_radius']} with --paper-units)")
     parser.add_argument("--speed", type=speed("--speed"),
@@ -61,6 +60,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                         "leg law steers the course over the ground, DWN plans its turning points in the air mass")
     parser.add_argument("--replan-interval", type=number("--replan-interval", 0.0, 3600.0), default=0.0,
                         help="DWN re-plans its turning point every so many s (default 0: when unreachable)")
+    add_dwn_tracking_argument(parser)
     parser.add_argument("--gains", type=finite_numbers("--gains", 2, "0.1,5.25"),
                         help="law (5)'s g,h (default the paper's 0.1,5.25, scaled by 0.7 / R in metres)")
     parser.add_argument("--integration", choices=["discrete", "continuous"], default=d["integration"])

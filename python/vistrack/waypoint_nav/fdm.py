@@ -20,7 +20,17 @@ from .._core.flight import L1Line, LineFeedback, WaypointFollower, Wind, paper_g
 from ..fdm import FdmTrajectory, FlightGuidanceLaw, aircraft, fly
 from .navigation import NavigationFlight, Points, default_start, route_array
 
-__all__ = ["FdmNavigation", "fdm_flights", "fly_fdm"]
+__all__ = ["FdmNavigation", "fdm_flights", "fly_fdm", "roll_lead"]
+
+
+
+def roll_lead(speed: float, turn_radius: float) -> float:
+    """DWN "path"'s anticipation on an aircraft (s): the lag of the kinematic roll model that flies beside
+    the 6-DOF flight (the default roll time constant 0.5 s and roll rate 70 deg/s, ``Options.roll_lag``);
+    0.52 s for the Aerosonde at cruise. The Aerosonde's own course lag to a bank step is shorter (0.18 s),
+    but its bank limit is the plan's turn, so the follower cannot tighten a late turn: leading by the
+    roll model's lag keeps the arc's error inside, where it can."""
+    return float(_wn.Options(dynamics="roll", turn_radius=turn_radius, speed=speed).roll_lag())
 
 
 @dataclass
@@ -66,13 +76,17 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
             guidance: str = "l1", l1_period: float = 8.0, gains: Optional[tuple[float, float]] = None,
             waypoint_radius: Optional[float] = None, wind: Optional[Wind] = None, max_time: Optional[float] = None,
             weights: tuple[float, float] = (1.0, 1.0), wind_aware: bool = False,
-            replan_interval: float = 0.0) -> FdmNavigation:
+            replan_interval: float = 0.0, dwn_tracking: str = "auto",
+            path_anticipation: Optional[float] = None) -> FdmNavigation:
     """Fly the route (metres) on the aircraft with DWN (``method="dwn"``) or WN (``"wn"``, acceptance
     radius ``waypoint_radius``, None: R). ``start`` None: at the first waypoint heading to the second.
     ``guidance`` "l1" (period ``l1_period``) or "law5" (``gains``, None: ``paper_gains(R)``). ``max_time``
     None: 3 (route length + 2 pi R per waypoint) / v, as navigate(). ``wind_aware``: the leg law knows the
     constant part of ``wind`` (as navigate(wind_aware=True): DWN plans its turning points in the air mass);
-    ``replan_interval``: DWN re-plans that often (s; 0: the paper's switch)."""
+    ``replan_interval``: DWN re-plans that often (s; 0: the paper's switch). ``dwn_tracking`` (beyond the
+    paper) "path" ("auto", the default: an aircraft banks) follows each planned horizon path in closed loop
+    (``DubinsWaypointGuidance.set_path_following``), its curvature read ``path_anticipation`` s ahead (None:
+    ``roll_lead(speed, turn_radius)``); "paper": the leg law to each turning point."""
     route = route_array(waypoints)
     if start is None:
         pose, flown = default_start(route), route[1:]
@@ -94,6 +108,11 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
         if wind_aware and wind is not None:
             planner.set_wind(np.array([wind.east, wind.north]), speed)
         planner.replan_interval = replan_interval
+        if dwn_tracking in ("auto", "path"):
+            lead = path_anticipation if path_anticipation is not None else roll_lead(speed, turn_radius)
+            planner.set_path_following(speed, lead)
+        elif dwn_tracking != "paper":
+            raise VistrackError(f"dwn_tracking = {dwn_tracking!r}: must be 'auto', 'paper' or 'path'")
     elif method in ("wn", "wn_passed_line"):
         planner = WaypointFollower(law, flown, waypoint_radius if waypoint_radius is not None else turn_radius)
         planner.passed_line = method == "wn_passed_line"
@@ -124,5 +143,6 @@ def fdm_flights(flights: Sequence[NavigationFlight], aircraft_name: str, wind: O
                            guidance=options["guidance"], l1_period=options["l1_period"], gains=options["gains"],
                            waypoint_radius=f.waypoint_radius, wind=wind,
                            wind_aware=bool(options.get("wind_aware", False)),
-                           replan_interval=float(options.get("replan_interval", 0.0)) if f.method == "dwn" else 0.0))
+                           replan_interval=float(options.get("replan_interval", 0.0)) if f.method == "dwn" else 0.0,
+                           dwn_tracking=str(options.get("dwn_tracking", "auto"))))
     return out

@@ -240,6 +240,8 @@ def fly(
     l1_period: float = _OPTIONS.l1_period,
     wind_aware: bool = False,
     replan_interval: float = _OPTIONS.replan_interval,
+    dwn_tracking: str = str(_OPTIONS.dwn_tracking),
+    path_anticipation: Optional[float] = None,
 ) -> NavigationFlight:
     """Fly a route with DWN (``method="dwn"``), WN (``"wn"``: a waypoint is done inside R_WP) or,
     beyond the paper, ArduPlane's WN (``"wn_passed_line"``: also once past the line through the
@@ -253,7 +255,10 @@ def fly(
     ``wind_aware``: the guidance knows the mean wind (``wind`` without its gusts): the leg law
     steers the course over the ground and DWN plans its turning points in the air mass.
     ``replan_interval`` (s, DWN): re-plan the active turning point that often (section 2.1's
-    option); 0, the paper's flights: only when it becomes unreachable. Every flight ends once past
+    option); 0, the paper's flights: only when it becomes unreachable. ``dwn_tracking`` (beyond the
+    paper): "paper" flies the leg law to each turning point, "path" follows each planned horizon
+    path in closed loop with the roll anticipated ``path_anticipation`` s ahead (None: the roll
+    model's lag), "auto" is "paper" on the dubins vehicle and "path" on the roll model. Every flight ends once past
     the line through the last waypoint perpendicular to the last leg, and the last waypoint's miss
     is the distance where the path crosses that line.
     """
@@ -271,7 +276,8 @@ def fly(
                               waypoint_radius=waypoint_radius, weights=weights, wind=wind, integration=integration,
                               max_time=max_time, dynamics=dynamics, roll_time_constant=roll_time_constant,
                               max_roll_rate_deg_s=max_roll_rate_deg_s, guidance=guidance, l1_period=l1_period,
-                              wind_aware=wind_aware, replan_interval=replan_interval)
+                              wind_aware=wind_aware, replan_interval=replan_interval, dwn_tracking=dwn_tracking,
+                              path_anticipation=path_anticipation)
     except VistrackError as error:
         if start is not None:
             raise
@@ -305,15 +311,17 @@ def paper_flights(waypoints: Points, wind: Optional[Wind] = None, radii: Sequenc
     """DWN and WN at each waypoint radius (in units of R) over one route: Figures 11 (no wind) and
     12 (``wind``); with "wn_passed_line" in ``methods`` also ArduPlane's switching at each radius.
     ``options`` go to :func:`fly` (turn_radius, speed, dt, gains, start, ...; ``replan_interval``
-    to DWN's flight only)."""
+    and ``dwn_tracking`` to DWN's flight only)."""
     for method in methods:
         if method not in METHODS:
             raise VistrackError(f"method = {preview(method)}: must be one of " + ", ".join(map(repr, METHODS)))
     R = float(options.get("turn_radius", _OPTIONS.turn_radius))
     replan = options.pop("replan_interval", _OPTIONS.replan_interval)  # DWN's alone
+    tracking = options.pop("dwn_tracking", str(_OPTIONS.dwn_tracking))  # DWN's alone
     flights = []
     if "dwn" in methods:
-        flights.append(fly(waypoints, method="dwn", wind=wind, replan_interval=replan, **options))
+        flights.append(fly(waypoints, method="dwn", wind=wind, replan_interval=replan, dwn_tracking=tracking,
+                           **options))
     for method in ("wn", "wn_passed_line"):
         if method in methods:
             for fraction in radii:
