@@ -4,6 +4,12 @@ vector-field baseline, and again on a Charlotte road with line of sight through 
 Prints markdown tables; with --figures DIR also draws the README's figures.
 
     VISTRACK_BUILD_DIR=build/dev python3 bench/follow_table.py [--figures docs/figures] [--no-city] [--vehicle roll]
+        [--threshold auto|H] [--compare]
+
+--threshold: the planner's h (default 3, the paper's; auto: picked from the camera, the planner's
+default). --compare: instead, issue 31's table: the camera fraction of the fair baseline, the
+paper's planner (h = 3), the default planner (threshold auto), strategy standoff and strategy auto
+on the examples and on three held-out tracks (HELD_OUT: written once, never tuned on).
 
 Charlotte geometry © OpenStreetMap contributors (ODbL).
 """
@@ -23,6 +29,14 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 from vistrack.follow_scenario import FollowScenario, FollowStudy  # noqa: E402
 from vistrack.plotting.follow import figure_compare, figure_paths, figure_speed_ratio  # noqa: E402
 
+# Three vehicles not tuned on (issue 31's held-out tracks): a city block at changing speeds, a
+# country road of gentle bends with a stop, and a fast chase with a U-turn and a crawl.
+HELD_OUT = (
+    ("held-out: block", [("east", 6.0, 90.0), ("north", 12.0, 60.0), ("west", 4.0, 120.0), ("south", 9.0, 80.0)]),
+    ("held-out: bends", [(-20.0, 14.0, 120.0), (10.0, 14.0, 100.0), (35.0, 8.0, 60.0), (35.0, 0.0, 60.0),
+                         (60.0, 11.0, 150.0)]),
+    ("held-out: chase", [("north", 17.0, 80.0), ("south", 17.0, 80.0), ("east", 2.0, 120.0), ("east", 15.0, 90.0)]),
+)
 CASES = (  # name in the table, example file, compensation
     ("Fig. 5 straight", "follow_straight.yaml", True),
     ("Fig. 6 wind, no compensation", "follow_wind.yaml", False),
@@ -58,6 +72,50 @@ def city_row(name: str, study: FollowStudy) -> str:
     return f"| {name} | {cells[0]} | {cells[1]} |"
 
 
+def held_out(legs: list[tuple[object, float, float]]) -> FollowScenario:
+    """A held-out track as a scenario: the examples' UAV and camera, compass words or degrees."""
+    spelled = [{("heading" if isinstance(h, str) else "heading_deg"): h, "speed": v, "duration": d}
+               for h, v, d in legs]
+    return FollowScenario.from_mapping({"uav": {"speed": 21.0, "min_turn_radius": 50.0, "altitude": 200.0},
+                                        "vehicle": {"legs": spelled}, "offset": {"distance": 40.0}}, REPO)
+
+
+STRATEGIES = (("paper, h = 3", "paper", 3.0), ("default (paper, h auto)", "paper", "auto"),
+              ("standoff", "standoff", "auto"), ("auto", "auto", "auto"))
+
+
+def compare(load: object, vehicle: str) -> None:
+    """Issue 31's table: camera fraction per run and strategy, and the done-when checks."""
+    runs = [(name, lambda f=file: load(REPO / "examples" / f), compensation)  # type: ignore[operator]
+            for name, file, compensation in CASES]
+    runs += [(name, lambda legs=legs: held_out(legs), True) for name, legs in HELD_OUT]
+    print(f"Camera fraction (%), {vehicle} vehicle; the baseline knows the vehicle at 1 Hz and flies the "
+          "offset schedule:\n")
+    print("| run | baseline | " + " | ".join(name for name, _, _ in STRATEGIES) + " |")
+    print("|---|---|" + "---|" * len(STRATEGIES))
+    table = []
+    for name, make, compensation in runs:
+        cells, base = [], 0.0
+        for _, strategy, threshold in STRATEGIES:
+            scenario = make()
+            if vehicle == "paper":
+                scenario.uav.dynamics, scenario.flight.guidance = "dubins", "law5"
+            scenario.parameters.strategy, scenario.parameters.threshold = strategy, threshold
+            study = scenario.run(compensation, city=False)
+            base = study.baseline.metrics["camera_fraction"] if study.baseline else float("nan")
+            cells.append(study.follow.metrics["camera_fraction"])
+        table.append((base, cells))
+        print(f"| {name} | {100 * base:.1f} | " + " | ".join(f"{100 * c:.1f}" for c in cells) + " |")
+    mean = [sum(c[i] for _, c in table) / len(table) for i in range(len(STRATEGIES))]
+    base_mean = sum(b for b, _ in table) / len(table)
+    print(f"| mean | {100 * base_mean:.1f} | " + " | ".join(f"{100 * m:.1f}" for m in mean) + " |")
+    default = [c[1] - b for b, c in table]
+    auto = [c[3] - b for b, c in table]
+    print(f"\ndefault planner: worst {100 * min(default):+.1f} points against the baseline (done when >= -5), "
+          f"mean {100 * (mean[1] - base_mean):+.1f} (done when > 0); strategy auto: worst {100 * min(auto):+.1f} "
+          "(done when >= 0)")
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--figures", type=Path, help="folder for the README's figures")
@@ -65,12 +123,21 @@ def main() -> int:
     parser.add_argument("--vehicle", choices=("paper", "roll"), default="paper",
                         help="paper: the Dubins vehicle, each 1 s leg by the law (5) (the paper's numbers); roll: the "
                              "scenario files' default, the roll model with L1 legs (docs/vehicle.md)")
+    parser.add_argument("--threshold", default="3", help="the planner's h: 3 (the paper's) or auto")
+    parser.add_argument("--compare", action="store_true", help="issue 31's table of strategies (see above)")
     args = parser.parse_args()
+    threshold = args.threshold if args.threshold == "auto" else float(args.threshold)
 
     def load(path: Path) -> FollowScenario:
         scenario = FollowScenario.load(path)
-        scenario.uav.dynamics, scenario.flight.guidance = ("dubins", "law5") if args.vehicle == "paper" else ("roll", "l1")
+        scenario.uav.dynamics, scenario.flight.guidance = (("dubins", "law5") if args.vehicle == "paper"
+                                                           else ("roll", "l1"))
+        scenario.parameters.threshold = threshold
         return scenario
+
+    if args.compare:
+        compare(load, args.vehicle)
+        return 0
 
     studies = []
     for name, file, compensation in CASES:

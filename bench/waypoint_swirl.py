@@ -1,8 +1,8 @@
 """Issue 32's swirl threshold: WN as printed (the law (5) to each waypoint, switching at R_WP) on the
 paper's route in the paper's units, in a constant wind of w/v from 16 directions; for each wind
 speed the largest R_WP at which some flight swirls (loops around its active waypoint, counted in
-either direction), in how many directions, and DWN's and ArduPlane-style WN's (wn_passed_line) swirls
-in the same winds. Prints markdown.
+either direction), in how many directions, and DWN's (planned in still air and, wind-aware, in the
+air mass) and ArduPlane-style WN's (wn_passed_line) swirls in the same winds. Prints markdown.
 
     VISTRACK_BUILD_DIR=build/dev python3 bench/waypoint_swirl.py
 """
@@ -31,8 +31,9 @@ def main() -> None:
     route = wn.read_route(REPO / "examples" / "waypoints_paper.csv")
     R, v = wn.DEFAULTS["turn_radius"], wn.DEFAULTS["speed"]
     print("| w / v | largest swirling R_WP (R) | directions swirling there (of 16) | most loops in one flight | "
-          "DWN flights that swirl | ArduPlane's WN flights that swirl (all radii) |")
-    print("|---|---|---|---|---|---|")
+          "DWN flights that swirl | wind-aware DWN flights that swirl | "
+          "ArduPlane's WN flights that swirl (all radii) |")
+    print("|---|---|---|---|---|---|---|")
     for ratio in SPEEDS:
         winds = [vt.flight.Wind(east=ratio * v * math.cos(a), north=ratio * v * math.sin(a))
                  for a in (2 * math.pi * k / DIRECTIONS for k in range(DIRECTIONS))]
@@ -43,10 +44,11 @@ def main() -> None:
             if any(swirls):
                 largest, count = fraction, sum(s > 0 for s in swirls)
         dwn = sum(wn.fly(route, method="dwn", wind=w).swirls > 0 for w in winds)
+        aware = sum(wn.fly(route, method="dwn", wind=w, wind_aware=True).swirls > 0 for w in winds)
         line = sum(wn.fly(route, method="wn_passed_line", waypoint_radius=f * R, wind=w).swirls > 0
                    for f in RADII for w in winds)
         print(f"| {ratio:g} | {'none' if largest is None else f'{largest:g}'} | {count if largest else '-'} | "
-              f"{most} | {dwn} of {len(winds)} | {line} of {len(winds) * len(RADII)} |")
+              f"{most} | {dwn} of {len(winds)} | {aware} of {len(winds)} | {line} of {len(winds) * len(RADII)} |")
 
 
 if __name__ == "__main__":

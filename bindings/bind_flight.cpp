@@ -175,7 +175,11 @@ void bind_flight(py::module_& parent) {
       .def_property_readonly("dt", &LineFeedback::dt, "law step, s")
       .def_property_readonly("gains", [](const LineFeedback& l) { return std::make_pair(l.gains().g, l.gains().h); },
                              "(g, h)")
-      .def_property_readonly("smooth_sign", &LineFeedback::smooth_sign, "whether sign(phi_T) is smoothed");
+      .def_property_readonly("smooth_sign", &LineFeedback::smooth_sign, "whether sign(phi_T) is smoothed")
+      .def("set_wind", &LineFeedback::set_wind, py::arg("mean_wind"),
+           "Wind-aware (beyond the paper): phi_T and s_dot from the course over the ground with this known mean "
+           "wind (east, north), as navigate(wind_aware=True) flies.")
+      .def_property_readonly("wind_aware", &LineFeedback::wind_aware, "whether set_wind was called");
 
   py::class_<L1Line>(m, "L1Line",
                      "L1 line tracking as ArduPlane flies a leg (Park, Deyst & How 2004; AP_L1_Control): lateral "
@@ -190,7 +194,11 @@ void bind_flight(py::module_& parent) {
             return law.turn_rate(configuration(q), line_start, target);
           },
           py::arg("state"), py::arg("line_start"), py::arg("target"), "Turn rate a / v, rad/s.")
-      .def_property_readonly("distance", &L1Line::distance, "L1, length units");
+      .def_property_readonly("distance", &L1Line::distance, "L1, length units")
+      .def("set_wind", &L1Line::set_wind, py::arg("mean_wind"),
+           "Wind-aware (beyond the paper, as ArduPlane flies L1): steer the ground velocity with this known mean "
+           "wind (east, north), as navigate(wind_aware=True) flies.")
+      .def_property_readonly("wind_aware", &L1Line::wind_aware, "whether set_wind was called");
 
   py::class_<FlightGuidance>(m, "FlightGuidance",
                              "A guidance law for fly(): turn-rate command and target from (x, y, psi) and t; its "
@@ -201,6 +209,14 @@ void bind_flight(py::module_& parent) {
              return py::make_tuple(c.turn_rate, py::make_tuple(c.target.x(), c.target.y()), c.target_index);
            },
            py::arg("state"), py::arg("t") = 0.0, "(turn_rate, (target_x, target_y), target_index) at a state.")
+      .def(
+          "start", [](FlightGuidance& g, const Pose& q, double t) { g.start(configuration(q), t); },
+          py::arg("state"), py::arg("t") = 0.0,
+          "Reset the discrete state for a flight from (x, y, psi) at t (an outside vehicle model: vistrack.fdm).")
+      .def(
+          "advance", [](FlightGuidance& g, const Pose& q, double t) { g.advance(configuration(q), t); },
+          py::arg("state"), py::arg("t"),
+          "The stateful logic (switch targets, finish) at an accepted state (an outside vehicle model: vistrack.fdm).")
       .def_property_readonly("done", &FlightGuidance::done, "True once there is nothing more to fly")
       .def_property_readonly("revision", &FlightGuidance::revision, "counts changes of the active target");
 
@@ -242,6 +258,11 @@ void bind_flight(py::module_& parent) {
           "waypoints",
           [](const WaypointFollower& w) { return to_array(w.waypoints()); },
           "array (n, 2)")
+      .def_property("passed_line", &WaypointFollower::passed_line, &WaypointFollower::set_passed_line,
+                    "ArduPlane's switching: a waypoint is also done once past the line through it perpendicular "
+                    "to its leg, and the turn is anticipated (waypoint_nav's 'wn_passed_line')")
+      .def_property("finish_line", &WaypointFollower::finish_line, &WaypointFollower::set_finish_line,
+                    "the flight ends past the last waypoint's perpendicular line, not inside R_WP of it")
       .def_property_readonly("active", &WaypointFollower::active, "index of the active waypoint")
       .def_property_readonly("accepted_at", [](const WaypointFollower& w) { return to_numpy(w.accepted_at()); },
                              "time each waypoint was accepted (NaN: not yet)")

@@ -152,6 +152,10 @@ void bind_simulate(py::module_& m) {
       "Largest |dpsi_d/dt + u_lyap| (85), (106) over r in [tau R, r_max_factor R], all polar angles and "
       "heading errors, for orbit radius R, dR/dt, UAV speed v, POI speed v_g and beta (Fig. 9). "
       "Compare with v / r_min.");
+  m.def("orbit_state", &orbit_state, py::arg("plan"), py::arg("segment_start"), py::arg("t"),
+        "The reference orbit (g, g_dot, R, dR/dt, d2R/dt2) at t on the segment that starts at segment_start "
+        "(one of segment_boundaries(plan)): what the closed loop steers around, for an outside vehicle model "
+        "(vistrack.fdm) with steering().");
   m.def("segment_boundaries", &segment_boundaries, py::arg("plan"),
         "Times where dR/dt or the POI velocity may jump: plan samples and path nodes.");
 }

@@ -31,7 +31,8 @@ WaypointNavOptions navigation_options(NavigationMethod method, double turn_radiu
                                       const Weights& weights, FlightIntegration integration,
                                       std::optional<double> max_time, DynamicsModel dynamics,
                                       double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
-                                      double l1_period, bool wind_aware) {
+                                      double l1_period, bool wind_aware, double replan_interval,
+                                      DwnTracking dwn_tracking, std::optional<double> path_anticipation) {
   WaypointNavOptions o;
   o.method = method;
   o.turn_radius = turn_radius;
@@ -48,6 +49,9 @@ WaypointNavOptions navigation_options(NavigationMethod method, double turn_radiu
   o.guidance = guidance;
   o.l1.period = l1_period;
   o.wind_aware = wind_aware;
+  o.replan_interval = replan_interval;
+  o.dwn_tracking = dwn_tracking;
+  o.path_anticipation = path_anticipation;
   return o;
 }
 
@@ -109,6 +113,18 @@ void bind_waypoint_nav(py::module_& parent) {
       py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
       "Turning point T_n over the horizon (pose C, W_n, W_{n+1}): minimises F = w_a L_a + w_s L_s over theta for "
       "the four cases; theta to 1e-12 rad.");
+  m.def(
+      "air_mass_turning_point",
+      [](const Pose& pose, const Vec2& w_next, const Vec2& w_after, double turn_radius, double speed,
+         const Vec2& wind, const Weights& weights) {
+        return air_mass_turning_point(configuration(pose), w_next, w_after, turn_radius, speed, wind,
+                                      fuel_weights(weights));
+      },
+      py::arg("pose"), py::arg("w_next"), py::arg("w_after"), py::arg("turn_radius"), py::arg("speed"),
+      py::arg("wind"), py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
+      "Turning point planned in the air mass of the mean wind (east, north) at airspeed speed: the horizon "
+      "solved for the waypoints as the air sees them (W - wind tau, tau from the path's arc lengths), mapped back "
+      "to the ground (each point moved by wind x the time the vehicle reaches it). Wind (0, 0): turning_point.");
   py::class_<TurningPointBatch>(m, "TurningPoints", "Turning points of many horizons, one row each.")
       .def_readonly("theta", &TurningPointBatch::theta, "(n,) theta of each optimum, rad")
       .def_readonly("length", &TurningPointBatch::length, "(n,) its weighted length")
@@ -200,6 +216,26 @@ void bind_waypoint_nav(py::module_& parent) {
            py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
            "The same with each leg to a turning point flown by L1 line tracking (law: L1Line).")
       .def_property_readonly("active", &DubinsWaypointGuidance::active, "index of the waypoint being approached")
+      .def("set_wind", &DubinsWaypointGuidance::set_wind, py::arg("mean_wind"), py::arg("speed"),
+           "Plan every turning point in the air mass of the mean wind (east, north) at airspeed speed, the law "
+           "flying the air frame's line (give it a law without wind); (0, 0): the paper's planning.")
+      .def_property("replan_interval", &DubinsWaypointGuidance::replan_interval,
+                    &DubinsWaypointGuidance::set_replan_interval,
+                    "re-plan the active turning point every so many s (section 2.1); 0: at the reachability switch")
+      .def(
+          "set_path_following",
+          [](DubinsWaypointGuidance& g, double speed, double anticipation, double lookahead_radii,
+             double heading_gain) {
+            g.set_path_following(PathFollowingGains{lookahead_radii, heading_gain, anticipation}, speed);
+          },
+          py::arg("speed"), py::arg("anticipation"), py::arg("lookahead_radii") = PathFollowingGains{}.lookahead_radii,
+          py::arg("heading_gain") = PathFollowingGains{}.heading_gain,
+          "Beyond the paper: fly each planned horizon path (first arc, straight to T_n, arc through W_n, straight "
+          "to W_{n+1}) with PathFollower at airspeed speed, its curvature feed-forward anticipation s ahead (a "
+          "banking vehicle's roll lag), instead of the leg law to T_n; the last waypoint along the last plan's "
+          "tail.")
+      .def_property_readonly("path_following", &DubinsWaypointGuidance::path_following,
+                             "True once set_path_following was called")
       .def_property_readonly(
           "turning_points",
           [](const DubinsWaypointGuidance& g) {
@@ -215,7 +251,11 @@ void bind_waypoint_nav(py::module_& parent) {
       .def_property_readonly("pose", [](const TurningPointRecord& r) { return Pose{r.pose.x, r.pose.y, r.pose.psi}; },
                              "(x, y, psi) of the vehicle when planned")
       .def_readonly("path", &TurningPointRecord::path, "the horizon path")
-      .def_readonly("direct", &TurningPointRecord::direct, "the last waypoint, flown to directly");
+      .def_readonly("direct", &TurningPointRecord::direct, "the last waypoint, flown to directly")
+      .def_property_readonly("wind", [](const TurningPointRecord& r) { return r.wind; },
+                             "(east, north) mean wind it was planned in the air mass of; (0, 0): in still air")
+      .def_property_readonly("air_point", [](const TurningPointRecord& r) { return r.air_point; },
+                             "(x, y) the turning point as a point of the air mass when planned (drifts with wind)");
 
   py::class_<NavigationResult>(m, "NavigationResult", "One WN or DWN flight and its metrics.")
       .def_readonly("trajectory", &NavigationResult::trajectory, "vistrack.flight.FlightTrajectory")
@@ -258,10 +298,12 @@ void bind_waypoint_nav(py::module_& parent) {
                        std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
                        FlightIntegration integration, std::optional<double> max_time, DynamicsModel dynamics,
                        double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
-                       double l1_period, bool wind_aware) {
+                       double l1_period, bool wind_aware, double replan_interval, DwnTracking dwn_tracking,
+                       std::optional<double> path_anticipation) {
              return make_validated(navigation_options(method, turn_radius, speed, dt, gains, waypoint_radius, weights,
                                                       integration, max_time, dynamics, roll_time_constant,
-                                                      max_roll_rate_deg_s, guidance, l1_period, wind_aware));
+                                                      max_roll_rate_deg_s, guidance, l1_period, wind_aware,
+                                                      replan_interval, dwn_tracking, path_anticipation));
            }),
            py::kw_only(), py::arg("method") = defaults.method, py::arg("turn_radius") = defaults.turn_radius,
            py::arg("speed") = defaults.speed, py::arg("dt") = defaults.dt,
@@ -271,12 +313,18 @@ void bind_waypoint_nav(py::module_& parent) {
            py::arg("dynamics") = defaults.dynamics, py::arg("roll_time_constant") = defaults.roll_time_constant,
            py::arg("max_roll_rate_deg_s") = defaults.max_roll_rate_deg_s, py::arg("guidance") = defaults.guidance,
            py::arg("l1_period") = defaults.l1.period, py::arg("wind_aware") = defaults.wind_aware,
+           py::arg("replan_interval") = defaults.replan_interval, py::arg("dwn_tracking") = defaults.dwn_tracking,
+           py::arg("path_anticipation") = py::none(),
            "method 'dwn', 'wn' or 'wn_passed_line'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP "
            "(None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + "
            "2 pi R per waypoint) / v); dynamics 'dubins' or 'roll' (metres and seconds) with the roll model's "
            "roll_time_constant (s) and max_roll_rate_deg_s; guidance 'law5' (the paper's law (5) with gains) or "
            "'l1' (L1 line tracking, period l1_period s, damping 0.75) on every leg; wind_aware: the leg law steers the "
-           "course over the ground with the known mean wind.")
+           "course over the ground with the known mean wind (and DWN plans its turning points in the air mass); "
+           "replan_interval: DWN re-plans the active turning point every so many seconds (0: only at the "
+           "reachability switch, the paper's flights); dwn_tracking (beyond the paper) 'paper' (the leg law to each "
+           "turning point), 'path' (the planned horizon path followed in closed loop, the roll anticipated "
+           "path_anticipation s ahead, None: the roll model's lag) or 'auto' ('paper' on dubins, 'path' on roll).")
       .def_readwrite("method", &WaypointNavOptions::method, "'dwn' or 'wn'")
       .def_readwrite("turn_radius", &WaypointNavOptions::turn_radius, "R: minimum turn radius and DWN's turning circles")
       .def_readwrite("speed", &WaypointNavOptions::speed, "v")
@@ -303,6 +351,17 @@ void bind_waypoint_nav(py::module_& parent) {
       .def_readwrite("wind_aware", &WaypointNavOptions::wind_aware,
                      "the leg law knows the mean wind and steers the course over the ground (beyond the paper)")
       .def_readwrite("max_roll_rate_deg_s", &WaypointNavOptions::max_roll_rate_deg_s, "roll model: p_max, deg/s")
+      .def_readwrite("replan_interval", &WaypointNavOptions::replan_interval,
+                     "DWN: re-plan the active turning point every so many seconds; 0: at the reachability switch only")
+      .def_readwrite("dwn_tracking", &WaypointNavOptions::dwn_tracking,
+                     "DWN: 'paper' (the leg law to each turning point), 'path' (the planned path followed, beyond the "
+                     "paper) or 'auto' ('paper' on dubins, 'path' on roll)")
+      .def_readwrite("path_anticipation", &WaypointNavOptions::path_anticipation,
+                     "DWN 'path': the feed-forward's lead, s; None: roll_lag()")
+      .def("resolved_tracking", &WaypointNavOptions::resolved_tracking, "What 'auto' means for this vehicle.")
+      .def("roll_lag", &WaypointNavOptions::roll_lag,
+           "The roll model's lag, s: the heading lost to the bank's response to a step 0 -> phi_max, integral of "
+           "(1 - phi / phi_max) dt (tau without the rate limit; 0 on dubins).")
       .def("validate", &WaypointNavOptions::validate, "Raise VistrackError naming the first invalid field.")
       .def("__repr__", [](const WaypointNavOptions& o) {
         Repr text("waypoint_nav.Options");
@@ -314,6 +373,10 @@ void bind_waypoint_nav(py::module_& parent) {
         if (o.max_time) text.add("max_time", *o.max_time);
         text.add("dynamics", o.dynamics).add("guidance", o.guidance);
         if (o.guidance == LegGuidance::L1) text.add("l1_period", o.l1.period);
+        if (o.wind_aware) text.add("wind_aware", o.wind_aware);
+        if (o.replan_interval > 0.0) text.add("replan_interval", o.replan_interval);
+        if (o.dwn_tracking != DwnTracking::Auto) text.add("dwn_tracking", o.dwn_tracking);
+        if (o.path_anticipation) text.add("path_anticipation", *o.path_anticipation);
         if (o.dynamics == DynamicsModel::Roll)
           text.add("roll_time_constant", o.roll_time_constant).add("max_roll_rate_deg_s", o.max_roll_rate_deg_s);
         return text.str();
@@ -325,10 +388,12 @@ void bind_waypoint_nav(py::module_& parent) {
          double dt, std::pair<double, double> gains, std::optional<double> waypoint_radius, const Weights& weights,
          std::optional<Wind> wind, FlightIntegration integration, std::optional<double> max_time,
          DynamicsModel dynamics, double roll_time_constant, double max_roll_rate_deg_s, LegGuidance guidance,
-         double l1_period, bool wind_aware) {
+         double l1_period, bool wind_aware, double replan_interval, DwnTracking dwn_tracking,
+         std::optional<double> path_anticipation) {
         const WaypointNavOptions o = navigation_options(method, turn_radius, speed, dt, gains, waypoint_radius, weights,
                                                         integration, max_time, dynamics, roll_time_constant,
-                                                        max_roll_rate_deg_s, guidance, l1_period, wind_aware);
+                                                        max_roll_rate_deg_s, guidance, l1_period, wind_aware,
+                                                        replan_interval, dwn_tracking, path_anticipation);
         const std::vector<Vec2> route = to_points(waypoints, "waypoints");
         const Wind w = wind.value_or(Wind{});
         py::gil_scoped_release release;
@@ -342,8 +407,50 @@ void bind_waypoint_nav(py::module_& parent) {
       py::arg("dynamics") = defaults.dynamics, py::arg("roll_time_constant") = defaults.roll_time_constant,
       py::arg("max_roll_rate_deg_s") = defaults.max_roll_rate_deg_s, py::arg("guidance") = defaults.guidance,
       py::arg("l1_period") = defaults.l1.period, py::arg("wind_aware") = defaults.wind_aware,
+      py::arg("replan_interval") = defaults.replan_interval, py::arg("dwn_tracking") = defaults.dwn_tracking,
+      py::arg("path_anticipation") = py::none(),
       "Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' "
-      "vehicle, each leg by 'law5' or 'l1'; returns NavigationResult. Releases the GIL.");
+      "vehicle, each leg by 'law5' or 'l1' (DWN: or its planned path followed, dwn_tracking 'path'; 'auto': on the "
+      "roll model); returns NavigationResult. Releases the GIL.");
+
+  m.def(
+      "navigation_metrics",
+      [](const std::vector<double>& t, const std::vector<double>& x, const std::vector<double>& y,
+         const std::vector<double>& command, const std::vector<int>& target_index, bool finished, const Vec2& start,
+         const InputArray& waypoints, double speed, double turn_radius, const Weights& weights) {
+        const std::size_t n = t.size();
+        if (x.size() != n || y.size() != n || command.size() != n || target_index.size() != n)
+          detail::fail_field("trajectory", static_cast<double>(n),
+                             "t, x, y, command and target_index must have the same length");
+        FlightTrajectory traj;
+        traj.t = t;
+        traj.x = x;
+        traj.y = y;
+        traj.command = command;
+        traj.target_index = target_index;
+        traj.finished = finished;
+        traj.psi.assign(n, 0.0);
+        const NavigationMetrics r =
+            navigation_metrics(traj, start, to_points(waypoints, "waypoints"), speed, turn_radius, fuel_weights(weights));
+        py::dict out;
+        out["miss_distances"] = to_numpy(r.miss_distances);
+        out["closest_times"] = to_numpy(r.closest_times);
+        out["reached"] = std::vector<bool>(r.reached.begin(), r.reached.end());
+        out["all_reached"] = r.all_reached;
+        out["overshoot"] = r.overshoot;
+        out["undershoot"] = r.undershoot;
+        out["swirls"] = r.swirls;
+        out["path_length"] = r.path_length;
+        out["duration"] = r.duration;
+        out["fuel"] = r.fuel;
+        return out;
+      },
+      py::arg("t"), py::arg("x"), py::arg("y"), py::arg("command"), py::arg("target_index"), py::arg("finished"),
+      py::arg("start"), py::arg("waypoints"), py::arg("speed"), py::arg("turn_radius"),
+      py::arg("weights") = Weights{FuelWeights{}.arc, FuelWeights{}.straight},
+      "The metrics of navigate() (miss distances, reached, over- and undershoot, swirls, path length, duration, "
+      "fuel) of a flight flown elsewhere (vistrack.fdm): samples t, x, y, the turn-rate command and the guidance's "
+      "target index, as a dict.");
 }
 
 }  // namespace vistrack::bindings

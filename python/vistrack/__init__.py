@@ -23,6 +23,7 @@ from importlib.metadata import version as _version
 
 from . import (
     _core,
+    city_orbits,
     dubins,
     flight,
     follow,
@@ -177,6 +178,7 @@ __all__ = [
     "check_closed_mesh",
     "check_work",
     "circular_orbits",
+    "city_orbits",
     "constant_radius_plan",
     "dubins",
     "epsilon_max",

@@ -16,11 +16,11 @@ from typing import Any
 
 import numpy as np
 
-from ._core import Environment, PoiPath, VistrackError
+from ._core import Environment, PoiPath, RoadNetwork, VistrackError
 from .georeference import Georeference, degrees
 from .schema import fail, number, reject_unknown
 
-__all__ = ["CRS", "route_ends", "route_nodes", "route_path"]
+__all__ = ["CRS", "road_route", "route_ends", "route_nodes", "route_path"]
 
 CRS = ("lonlat", "local")
 
@@ -55,6 +55,16 @@ def route_ends(value: Mapping[str, Any], key: str) -> dict[str, Any]:
     return ends
 
 
+def road_route(roads: RoadNetwork, via_points: Sequence[Sequence[float]] | Sequence[np.ndarray]) -> list[int]:
+    """Road nodes from the node nearest the first point, through the nodes nearest the others,
+    joined by shortest routes along the road edges (one-way edges their way only)."""
+    via = [roads.nearest_node(np.asarray(p, dtype=float)) for p in via_points]
+    nodes = [via[0]]
+    for a, b in zip(via, via[1:]):
+        nodes += roads.shortest_route(a, b)[1:]
+    return nodes
+
+
 def route_nodes(env: Environment, start: Sequence[float], end: Sequence[float], crs: str = "lonlat",
                 key: str = "route") -> list[int]:
     """Road nodes of the shortest route from the node nearest ``start`` to the node nearest
@@ -65,10 +75,10 @@ def route_nodes(env: Environment, start: Sequence[float], end: Sequence[float], 
     if len(roads.nodes) == 0:
         raise VistrackError(f"{key}: the city has no road network")
     ends = [_local(env, point, crs, f"{key}.{name}") for point, name in ((start, "from"), (end, "to"))]
-    first, last = (roads.nearest_node(point) for point in ends)
     try:
-        return list(roads.shortest_route(first, last))
+        return road_route(roads, ends)
     except VistrackError as error:
+        first, last = (roads.nearest_node(point) for point in ends)
         if "one-way" in str(error):
             raise VistrackError(f"{key}: no road route from = {list(start)} (road node {first}) to = "
                                 f"{list(end)} (road node {last}) that respects one-way streets: one "

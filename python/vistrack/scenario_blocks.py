@@ -57,7 +57,9 @@ DEFAULT_DYNAMICS = "roll"
 # roll: a roll gimbal under the banked body, so the axis tilts by gimbal - bank.
 CAMERA_MOUNTS = ("levelled", "roll")
 UAV_NUMBERS = ("speed", "min_turn_radius", "altitude", "roll_time_constant", "max_roll_rate_deg_s")
-UAV_KEYS = {*UAV_NUMBERS, "dynamics"}
+UAV_KEYS = {*UAV_NUMBERS, "dynamics", "aircraft"}
+# The 6-DOF model: flown beside the kinematic one (vistrack.fdm), on the aircraft uav.aircraft.
+FDM_DYNAMICS = "jsbsim"
 
 
 @dataclass(frozen=True)
@@ -129,6 +131,7 @@ class UavBlock:
 
     uav: Uav
     extra: dict[str, Any]
+    aircraft: Optional[str] = None  # uav.dynamics: jsbsim: the 6-DOF aircraft flown beside the kinematic model
 
     @property
     def dynamics(self) -> str:
@@ -157,18 +160,39 @@ def with_dynamics(uav: Uav, dynamics: str = DEFAULT_DYNAMICS) -> Uav:
     return Uav(**{**uav_dict(uav), "dynamics": dynamics})
 
 
-def uav_block(data: Mapping[str, Any], default: Uav, extra: Sequence[str] = ()) -> UavBlock:
+def uav_block(data: Mapping[str, Any], default: Uav, extra: Sequence[str] = (), fdm: bool = False) -> UavBlock:
     """``uav: {speed, min_turn_radius, altitude, dynamics, roll_time_constant, max_roll_rate_deg_s}``
     over ``default`` (its numbers; the model is :data:`DEFAULT_DYNAMICS` unless given); ``extra``
-    keys are returned unparsed for the product."""
+    keys are returned unparsed for the product. With ``fdm`` (a product that flies a 6-DOF aircraft),
+    also ``dynamics: jsbsim`` and ``aircraft``."""
     found = section(data, "uav", UAV_KEYS | set(extra))
     uav = Uav(**uav_dict(default))
     for key in UAV_NUMBERS:
         if key in found:
             setattr(uav, key, number(f"uav.{key}", found[key]))
-    uav.dynamics = dynamics_name(found.get("dynamics", DEFAULT_DYNAMICS))
+    dynamics = found.get("dynamics", DEFAULT_DYNAMICS)
+    aircraft = None
+    if fdm and isinstance(dynamics, str) and dynamics.lower() == FDM_DYNAMICS:
+        aircraft = aircraft_name(found.get("aircraft"))
+        dynamics = DEFAULT_DYNAMICS  # the kinematic flight beside the 6-DOF one
+    elif "aircraft" in found:
+        raise fail("uav.aircraft", found["aircraft"], f"needs uav.dynamics: {FDM_DYNAMICS}" if fdm
+                   else "a 6-DOF aircraft is not flown by this product")
+    uav.dynamics = dynamics_name(dynamics)
     uav.validate()
-    return UavBlock(uav, {key: found[key] for key in extra if key in found})
+    return UavBlock(uav, {key: found[key] for key in extra if key in found}, aircraft)
+
+
+def aircraft_name(value: Any) -> str:
+    """A 6-DOF aircraft's name, checked against vistrack.fdm's aircraft (None: the default)."""
+    from .fdm.aircraft import DEFAULT_AIRCRAFT, aircraft_names
+
+    if value is None:
+        return DEFAULT_AIRCRAFT
+    names = aircraft_names()
+    if not isinstance(value, str) or value not in names:
+        raise fail("uav.aircraft", value, "must be one of " + ", ".join(names))
+    return value
 
 
 def wind_block(data: Mapping[str, Any]) -> Wind:

@@ -191,8 +191,10 @@ TEST(FollowLoiter, CircleAndRoseValidation) {
   EXPECT_NE(error_message([&] { rose.validate(); }).find("loiter_radius = 100"), std::string::npos);
 }
 
+// The paper's method: h = 3 (the default is "auto", picked from the camera).
 FollowParameters base_parameters() {
   FollowParameters p;
+  p.threshold = 3.0;
   p.wind_compensation = true;
   return p;
 }
@@ -254,8 +256,12 @@ TEST(FollowPlannerTest, DefaultUavIsValid) {
 
 TEST(FollowPlannerTest, ParametersNameTheField) {
   FollowParameters p;
+  p.threshold = 3.0;
   p.hysteresis = 3.5;
   EXPECT_NE(error_message([&] { p.validate(); }).find("follow.hysteresis = 3.5"), std::string::npos);
+  p = FollowParameters{};
+  p.threshold = -1.0;
+  EXPECT_NE(error_message([&] { p.validate(); }).find("follow.threshold = -1"), std::string::npos);
   p = FollowParameters{};
   p.period = -1.0;
   EXPECT_NE(error_message([&] { p.validate(); }).find("follow.period = -1"), std::string::npos);
@@ -446,6 +452,122 @@ TEST(FollowRuns, WindAtTheAirspeedIsAnErrorNamingTheWind) {
   const std::string orbit =
       error_message([&] { orbit_follow(car, uav, Control{}, 100.0, FollowParameters{}, storm); });
   EXPECT_EQ(orbit.rfind("wind", 0), 0u) << orbit;
+}
+
+
+// The auto threshold (issue 31): at the band's upper edge the sinusoid's amplitude is the camera's
+// reach w = H tan(fov / 2 + gimbal); on the curvature floor A = a(sigma_u)^2 rho.
+TEST(FollowThreshold, AutoPutsTheAmplitudeAtTheCameraReach) {
+  const Uav uav{21.0, 50.0, 200.0};
+  const DownwardCamera camera;
+  FollowParameters p;  // threshold "auto"
+  const double w = 200.0 * std::tan(37.0 * kPi / 180.0 + 25.0 * kPi / 180.0);
+  EXPECT_NEAR(camera_reach(camera, 200.0), w, 1e-9);
+  const ThresholdChoice c = camera_threshold(p, uav, camera);
+  EXPECT_TRUE(c.automatic);
+  EXPECT_FALSE(c.beyond_reach);
+  EXPECT_NEAR(c.upper_ratio, c.threshold + 0.5 * p.hysteresis, 1e-12);
+  const double rho = p.turn_margin * uav.min_turn_radius;
+  const double a = sinusoid_slope(c.upper_ratio);
+  EXPECT_NEAR(a * a * rho, w, 1e-6 * w);  // curvature-limited at these numbers
+  EXPECT_NEAR(c.amplitude, w, 1e-6 * w);
+  // A little above sigma_u the amplitude leaves the reach.
+  EXPECT_GT(sinusoid_shape(c.upper_ratio + 0.01, uav.speed, p.period, rho).amplitude, w);
+  // Higher flight sees farther: a larger h. A body-fixed camera (no gimbal): a smaller one.
+  EXPECT_GT(camera_threshold(p, Uav{21.0, 50.0, 400.0}, camera).threshold, c.threshold);
+  DownwardCamera fixed;
+  fixed.max_gimbal = 0.0;
+  EXPECT_LT(camera_threshold(p, uav, fixed).threshold, c.threshold);
+  // The paper's h = 3 puts the amplitude beyond the reach: reported, with its numbers.
+  p.threshold = 3.0;
+  const ThresholdChoice paper = camera_threshold(p, uav, camera);
+  EXPECT_FALSE(paper.automatic);
+  EXPECT_TRUE(paper.beyond_reach);
+  EXPECT_NEAR(paper.amplitude, std::pow(sinusoid_slope(3.25), 2) * rho, 1e-6);
+  // The planner uses the resolved h.
+  p.threshold = kAutoThreshold;
+  EXPECT_NEAR(FollowPlanner(p, uav, Vec2::Zero(), camera).parameters().threshold, c.threshold, 1e-12);
+}
+
+// A camera too narrow for any sinusoid keeps the band's lower edge just above 1.
+TEST(FollowThreshold, NarrowCameraLoitersAboveOne) {
+  DownwardCamera narrow;
+  narrow.fov = 5.0 * kPi / 180.0;
+  narrow.max_gimbal = 0.0;
+  FollowParameters p;
+  const ThresholdChoice c = camera_threshold(p, Uav{21.0, 50.0, 100.0}, narrow);
+  EXPECT_NEAR(c.threshold - 0.5 * p.hysteresis, 1.01, 1e-12);
+  EXPECT_TRUE(c.beyond_reach);
+}
+
+// Reports (issue 31): perfect ones are the truth at each update, carried along its velocity in
+// between; dropouts and latency age the estimate and lose the vehicle after the timeout.
+TEST(FollowReports, EstimateIsTheNewestReportCarriedAlong) {
+  const GroundVehicle car = GroundVehicle::from_legs({{0.0, 10.0, 20.0}, {0.5 * kPi, 10.0, 20.0}});
+  const VehicleReports perfect(car, 0.0, 40.0, 1.0);
+  EXPECT_EQ(perfect.reports().size(), 41u);
+  const VehicleEstimate e = perfect.estimate(20.5);  // the report at 20 s, carried 0.5 s north
+  EXPECT_TRUE(e.position.isApprox(car.position(20.0) + 0.5 * car.velocity(20.0)));
+  EXPECT_NEAR(e.age, 0.5, 1e-12);
+  EXPECT_FALSE(e.lost);
+  VehicleReportOptions options;
+  options.latency = 2.0;
+  options.dropout = 0.7;
+  options.timeout = 3.0;
+  options.seed = 5;
+  const VehicleReports lossy(car, 0.0, 40.0, 1.0, options);
+  EXPECT_LT(lossy.reports().size(), 41u);
+  bool lost = false;
+  for (double t = 0.0; t <= 40.0; t += 0.5) lost = lost || lossy.estimate(t).lost;
+  EXPECT_TRUE(lost);
+  EXPECT_GE(lossy.estimate(1.0).age, 1.0);  // nothing received yet but the first report
+  options.dropout = 1.0;
+  EXPECT_NE(error_message([&] { options.validate(); }).find("reports.dropout = 1"), std::string::npos);
+}
+
+// Standoff: the field (74) from the UAV converges to the orbit of orbit_radius about the offset point.
+TEST(FollowStandoff, ConvergesToTheLemma6Orbit) {
+  FollowParameters p;
+  p.strategy = FollowStrategy::Standoff;
+  const Uav uav{21.0, 50.0, 200.0};
+  FollowPlanner planner(p, uav);
+  FollowObservation o = moving(Vec2(0.0, 6.0), Vec2(400.0, 0.0));
+  const FollowTick tick = planner.update(0.0, o);
+  EXPECT_EQ(tick.mode, FollowMode::Standoff);
+  EXPECT_NEAR(tick.radius, 62.5 * std::pow(1.0 + 6.0 / 21.0, 2), 1e-9);
+  EXPECT_TRUE(planner.relative_position(tick, 0.0).isApprox(Vec2(400.0, 0.0)));
+  EXPECT_NEAR(planner.relative_position(tick, 200.0).norm(), tick.radius, 0.02 * tick.radius);
+  // The UAV moves at v_p in the planning frame: |d(rel + v_f tau)/dtau| = v.
+  const double h = 1e-3;
+  const Vec2 a = planner.relative_position(tick, 100.0), b = planner.relative_position(tick, 100.0 + h);
+  EXPECT_NEAR(((b - a) / h + Vec2(0.0, 6.0)).norm(), 21.0, 0.05);
+}
+
+// Camera mounts: a target ahead is seen by the pan-tilt and not by the roll gimbal; the fixed
+// camera sees only its cone about the body's down axis.
+TEST(FollowCamera, MountsSeeWhatTheirGeometrySays) {
+  DownwardCamera roll, pan, fixed;
+  pan.mount = CameraMount::PanTilt;
+  fixed.mount = CameraMount::Fixed;
+  const Vec3 uav(0.0, 0.0, 200.0);
+  const Vec3 ahead(300.0, 0.0, 0.0), abeam(0.0, 300.0, 0.0), below(50.0, 0.0, 0.0);
+  EXPECT_TRUE(camera_sees(pan, uav, 0.0, 0.0, ahead));
+  EXPECT_FALSE(camera_sees(roll, uav, 0.0, 0.0, ahead));
+  EXPECT_TRUE(camera_sees(roll, uav, 0.0, 0.0, abeam));
+  EXPECT_FALSE(camera_sees(fixed, uav, 0.0, 0.0, abeam));
+  EXPECT_TRUE(camera_sees(fixed, uav, 0.0, 0.0, below));
+  EXPECT_NEAR(camera_reach(fixed, 200.0), 200.0 * std::tan(37.0 * kPi / 180.0), 1e-9);
+  // Banked 30 degrees left, the fixed camera looks 30 degrees right.
+  const Vec3 right(0.0, -200.0 * std::tan(30.0 * kPi / 180.0), 0.0);
+  EXPECT_TRUE(camera_sees(fixed, uav, 0.0, 30.0 * kPi / 180.0, right));
+}
+
+// The waypoint's region of interest: the vehicle one update later at its reported velocity.
+TEST(FollowPlannerTest, PredictsTheVehicleForTheGimbal) {
+  FollowPlanner planner(base_parameters(), Uav{21.0, 50.0, 200.0});
+  FollowObservation o = moving(Vec2(3.0, -4.0));
+  o.vehicle_position = Vec2(10.0, 20.0);
+  EXPECT_TRUE(planner.update(0.0, o).vehicle_predicted.isApprox(Vec2(13.0, 16.0)));
 }
 
 }  // namespace

@@ -21,6 +21,7 @@ import vistrack as vt
 from support.paths import REPO
 from vistrack.follow.scenario import FollowScenario
 from vistrack.sweep import SweepSpec
+from vistrack.sweep.waypoint_nav import _flight_inputs as flight_inputs
 
 LEGS = {"vehicle": {"legs": [{"heading": "east", "speed": 5, "duration": 10}]}}
 
@@ -93,10 +94,11 @@ def test_waypoint_defaults_are_the_bound_struct() -> None:
     assert defaults(wn.fly, *fields) == fields
     assert wn.DEFAULTS == fields  # kept for its readers, built from the struct
     assert (o.turn_radius, o.speed, o.dt, o.gains) == (0.7, 0.8, 0.02, (0.1, 5.25))  # the paper's section 3
-    sweep = SweepSpec.from_dict({"kind": "waypoints", "base": {"waypoints": [[0, 0], [5, 0]]},
-                                 "parameters": {"method": ["wn"]}}).base
-    assert sweep["uav"] == {"speed": o.speed, "min_turn_radius": o.turn_radius}
-    assert (sweep["dt"], sweep["gains"], sweep["weights"]) == (o.dt, list(o.gains), list(o.weights))
+    sweep = SweepSpec.from_dict({"kind": "waypoints", "base": {"waypoints": [[0, 0], [5, 0]], "units": "paper"},
+                                 "parameters": {"method": ["wn"]}}).base  # a sweep in the paper's units
+    flown = flight_inputs(sweep, REPO, seed=0)[1]  # what a case flies: the units' defaults filled in
+    assert (flown["speed"], flown["turn_radius"]) == (o.speed, o.turn_radius)
+    assert (flown["dt"], flown["gains"], flown["weights"]) == (o.dt, o.gains, o.weights)
 
 
 def test_follow_defaults_are_the_bound_structs(tmp_path: Path) -> None:
@@ -166,9 +168,12 @@ def test_changed_struct_defaults_are_seen_everywhere(tmp_path: Path) -> None:
         o = vt.waypoint_nav.fly
         stated["fly"] = defaults(o, "method", "turn_radius", "speed", "dt", "gains", "weights", "integration")
         stated["DEFAULTS"] = vt.waypoint_nav.DEFAULTS
-        base = SweepSpec.from_dict({{"kind": "waypoints", "base": {{"waypoints": [[0, 0], [5, 0]]}},
+        from vistrack.sweep.waypoint_nav import _flight_inputs
+        base = SweepSpec.from_dict({{"kind": "waypoints", "base": {{"waypoints": [[0, 0], [5, 0]], "units": "paper"}},
                                     "parameters": {{"method": ["wn"]}}}}).base
-        stated["waypoint_sweep"] = {{k: base[k] for k in ("uav", "dt", "gains", "weights", "integration", "method")}}
+        flown = _flight_inputs(base, __import__("pathlib").Path("."), 0)[1]
+        stated["waypoint_sweep"] = {{k: flown[k] for k in ("turn_radius", "speed", "dt", "gains", "weights",
+                                                          "integration", "method")}}
         follow = FollowScenario.load({str(follow_file)!r})
         stated["follow"] = [follow.uav.speed, follow.uav.min_turn_radius, follow.uav.altitude, follow.flight.dt,
                             follow.flight.max_time]
@@ -192,8 +197,6 @@ def test_changed_struct_defaults_are_seen_everywhere(tmp_path: Path) -> None:
     options = {"method": "wn", "turn_radius": 0.6, "speed": 0.9, "dt": 0.01, "gains": [0.2, 5.0],
                "weights": [1.5, 1.0], "integration": "continuous"}
     assert stated["fly"] == stated["DEFAULTS"] == options
-    assert stated["waypoint_sweep"] == {"uav": {"speed": 0.9, "min_turn_radius": 0.6},
-                                        **{k: options[k] for k in ("dt", "gains", "weights", "integration",
-                                                                   "method")}}
+    assert stated["waypoint_sweep"] == options
     assert stated["follow"] == [25.0, 60.0, 250.0, 0.05, 99.0]
     assert stated["follow_class"] == [25.0, 60.0, 250.0]

@@ -59,7 +59,7 @@ def test_amplitude_on_arrays_and_at_one() -> None:
 
 def test_one_generated_period_is_sigma_d_long() -> None:
     # The planner's desired path over one period, on the ground, sampled finely.
-    planner = follow.FollowPlanner(follow.FollowParameters(period=60.0), UAV)
+    planner = follow.FollowPlanner(follow.FollowParameters(period=60.0, threshold=3.0), UAV)
     velocity = np.array([0.0, -9.0])
     tick = planner.update(0.0, follow.FollowObservation(vehicle_position=np.zeros(2), vehicle_velocity=velocity,
                                                         vehicle_heading=SOUTH))
@@ -116,6 +116,7 @@ def test_offset_point_in_both_references(reference: str) -> None:
 
 def test_compensation_lowers_the_tracking_error_and_centres_the_path() -> None:
     scenario = FollowScenario.load(EXAMPLES / "follow_wind.yaml")
+    scenario.parameters.threshold = 3.0  # the paper's Figs. 6-7
     on = scenario.run(compensation=True, city=False).follow.metrics
     off = scenario.run(compensation=False, city=False).follow.metrics
     assert on["mean_tracking_error_m"] < 0.5 * off["mean_tracking_error_m"]
@@ -124,7 +125,7 @@ def test_compensation_lowers_the_tracking_error_and_centres_the_path() -> None:
 
 def test_waypoints_at_one_hertz_and_desired_path_followed() -> None:
     vehicle = follow.GroundVehicle.from_legs([follow.VehicleLeg(SOUTH, 10.0, 200.0)])
-    result = follow.simulate(vehicle, UAV)
+    result = follow.simulate(vehicle, UAV, follow.FollowParameters(threshold=3.0))
     assert np.allclose(np.diff(result.waypoint_times), 1.0)
     assert result.waypoints.shape == (len(result.ticks), 2)
     m = result.metrics
@@ -217,7 +218,10 @@ def test_scenario_errors_name_the_key(tmp_path: Path) -> None:
     with pytest.raises(vt.VistrackError, match=r"^follow\.period = 1e\+300: must be a finite number in \(0, 3600\] s$"):
         load("follow: {period: 1e300}\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}").run(city=False)
     with pytest.raises(vt.VistrackError, match=r"^follow\.hysteresis = 4"):
-        load("follow: {hysteresis: 4}\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}")
+        load("follow: {threshold: 3, hysteresis: 4}\nvehicle: {legs: [{heading: east, speed: 5, duration: 10}]}")
+    for bad in ("-1", "1", "fast", "0"):
+        with pytest.raises(vt.VistrackError, match=rf"^follow\.threshold = '?{bad}'?: must be \"auto\" or a number"):
+            load(f"follow: {{threshold: {bad}}}\nvehicle: {{legs: [{{heading: east, speed: 5, duration: 10}}]}}")
     track = tmp_path / "track.csv"
     track.write_text("t,x,y\n0,0,0\n2,10,0\n1,20,0\n")
     with pytest.raises(vt.VistrackError, match=r"^track\.t\[2\] = 1"):
@@ -247,7 +251,7 @@ def test_cli_writes_figures_trajectory_and_metrics(tmp_path: Path) -> None:
 
     out = tmp_path / "stop"
     assert main(["follow", str(EXAMPLES / "follow_stop.yaml"), "--out", str(out), "--no-city", "--quiet",
-                 *NO_MEDIA]) == 0
+                 "--threshold", "3", *NO_MEDIA]) == 0
     metrics = json.loads((out / "metrics.json").read_text())
     for key in ("mean_tracking_error_m", "max_tracking_error_m", "along_track_lag_m", "mode_switches",
                 "time_in_mode_s", "camera_fraction"):

@@ -296,3 +296,8 @@ def test_importing_the_library_loads_no_command_module() -> None:
 
 def test_importing_vistrack_loads_neither_matplotlib_nor_dask() -> None:
     assert _loaded_after("import vistrack", ("matplotlib", "dask", "distributed")) == []
+
+
+def test_importing_vistrack_does_not_load_jsbsim() -> None:
+    """JSBSim loads with the first 6-DOF flight (vistrack.fdm), not with the package."""
+    assert _loaded_after("import vistrack, vistrack.pipeline", ("jsbsim",)) == []

@@ -154,11 +154,21 @@ def test_follow_mission_keeps_the_route_within_the_tolerance(tmp_path: Path) -> 
     generated = result.waypoints
     everything = result.to_mission(CHARLOTTE, 200.0, speed=21.0, tolerance=0.0)
     assert everything.items[0].command == Command.DO_CHANGE_SPEED and everything.items[0].params[1] == 21.0
-    points = np.array([local(i) for i in everything.items[1:]])
+    points = np.array([local(i) for i in everything.items[1:] if i.command == Command.NAV_WAYPOINT])
     np.testing.assert_allclose(points, generated, atol=CM)  # every 1 Hz waypoint, in order
+    # Before each waypoint, the gimbal's region of interest: the vehicle predicted there, on the ground.
+    rois = everything.items[1::2]
+    assert all(i.command == Command.DO_SET_ROI_LOCATION and i.alt == 0.0 for i in rois)
+    assert all(i.command == Command.NAV_WAYPOINT for i in everything.items[2::2])
+    np.testing.assert_allclose(np.array([local(i) for i in rois]), result.roi, atol=CM)
+    car = vt.follow.GroundVehicle.from_legs([vt.follow.VehicleLeg(-math.pi / 2, 10.0, 80.0),
+                                             vt.follow.VehicleLeg(0.0, 0.0, 40.0)])
+    np.testing.assert_allclose(result.roi[:70], [car.position(t + 1.0) for t in result.waypoint_times[:70]],
+                               atol=1e-6)  # a constant velocity: the prediction is exact
+    assert all(i.command == Command.NAV_WAYPOINT for i in result.to_mission(CHARLOTTE, 200.0, roi=False).items)
     np.testing.assert_allclose(CHARLOTTE.to_local(*everything.home[:2]), result.state[0, :2], atol=CM)
     mission = result.to_mission(CHARLOTTE, 200.0, tolerance=1.0)
-    kept = np.array([local(i) for i in mission.items])
+    kept = np.array([local(i) for i in mission.items if i.command == Command.NAV_WAYPOINT])
     assert 2 <= len(kept) < len(generated)
     # Kept points are generated ones (in order, first and last included); every generated
     # waypoint lies within 1 m of the kept route (shapely's distance, not the simplifier).
@@ -219,13 +229,14 @@ def test_cli_follow_export(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -
     scenario = tmp_path / "short.yaml"
     scenario.write_text("origin: [35.0, -80.0]\nuav: {speed: 21.0, min_turn_radius: 50.0, altitude: 200.0}\n"
                         "vehicle: {legs: [{heading: south, speed: 10.0, duration: 80.0}]}\n"
-                        "baseline: false\n")
+                        "follow: {threshold: 3}\nbaseline: false\n")  # the paper's sinusoid starts at the origin
     out = tmp_path / "out"
     assert main(["follow", str(scenario), "--out", str(out), "--quiet", "--export", str(tmp_path / "f.plan"),
                  "--export", str(tmp_path / "f.geojson"), "--origin", "35.2249,-80.8403"]) == 0
     assert capsys.readouterr().out.count("mission items") == 2  # --origin wins over the file's
     mission = vm.load(tmp_path / "f.plan")
-    assert mission.items[0].params[1] == 21.0 and all(i.alt == 200.0 for i in mission.items if i.has_coordinate)
+    assert mission.items[0].params[1] == 21.0 and all(i.alt == 200.0 for i in mission.items
+                                                      if i.command == Command.NAV_WAYPOINT)
     study = vt.follow_scenario.FollowScenario.load(scenario).run(city=False)
     assert mission.items == study.follow.to_mission(Georeference(35.2249, -80.8403), 200.0, speed=21.0).items
     features = json.loads((tmp_path / "f.geojson").read_text())["features"]

@@ -73,8 +73,8 @@ def test_origin_georeferences_the_environment(tmp_path: Path, capsys: pytest.Cap
 @pytest.mark.parametrize(
     "text, message",
     [
-        ("uav: {sped: 3}", r"uav.sped = 3: unknown key; allowed keys in uav: altitude, dynamics, max_roll_rate_deg_s, "
-                            r"min_turn_radius"),
+        ("uav: {sped: 3}", r"uav.sped = 3: unknown key; allowed keys in uav: aircraft, altitude, dynamics, "
+                            r"max_roll_rate_deg_s, min_turn_radius"),
         ("uav: {dynamics: jet}", r"uav.dynamics = 'jet': must be one of roll, dubins"),
         ("colour: red", r"colour = 'red': unknown section"),
         ("uav: {speed: -2}", r"uav.speed = -2: must be a finite number in \[1e-06, 10000\] m/s"),

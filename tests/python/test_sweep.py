@@ -411,7 +411,8 @@ def test_route_sweep_equals_each_route_alone(tmp_path: Path) -> None:
 def test_waypoint_sweep_equals_fly(tmp_path: Path) -> None:
     route_file = REPO / "examples" / "waypoints_paper.csv"
     spec = SweepSpec.from_dict({"name": "wp", "kind": "waypoints",
-                                "base": {"route": str(route_file), "wind": {"east": 0.0, "north": 0.08}},
+                                "base": {"units": "paper", "route": str(route_file),
+                                         "wind": {"east": 0.0, "north": 0.08}},
                                 "parameters": {"method": ["dwn", "wn"], "uav.min_turn_radius": [0.7, -1.0]}})
     result = vt.sweep.run(spec, SERIAL, out=tmp_path, figures=False)
     assert [row["run_status"] for row in result.rows] == ["ok", "failed", "ok", "failed"]
@@ -428,7 +429,7 @@ def test_waypoint_sweep_equals_fly(tmp_path: Path) -> None:
 
 def test_waypoint_sweep_pairs_methods_on_seeded_random_routes(tmp_path: Path) -> None:
     spec = SweepSpec.from_dict({"kind": "waypoints", "seed": 5,
-                                "base": {"random_route": {"count": 4, "legs": [4, 8]},
+                                "base": {"units": "paper", "random_route": {"count": 4, "legs": [4, 8]},
                                          "wind": {"east": 0.1 * math.cos(math.radians(30.0)),
                                                   "north": 0.1 * math.sin(math.radians(30.0)), "gusts": {"seed": 11}}},
                                 "parameters": {"random_route.seed": [1, 2], "method": ["dwn", "wn"]}})
@@ -441,7 +442,7 @@ def test_waypoint_sweep_pairs_methods_on_seeded_random_routes(tmp_path: Path) ->
                           gusts=vt.waypoint_nav.paper_gusts(11))
     assert rows[3]["max_miss_over_R"] == vt.waypoint_nav.fly(route, method="wn", wind=wind).metrics()["max_miss_over_R"]
     # Without a route seed, every case draws its own route from its own seed: reproducibly.
-    own = SweepSpec.from_dict({"kind": "waypoints", "seed": 5, "base": {"random_route": {"count": 4}},
+    own = SweepSpec.from_dict({"kind": "waypoints", "seed": 5, "base": {"units": "paper", "random_route": {"count": 4}},
                                "parameters": {"method": ["dwn", "wn"]}})
     first = vt.sweep.run_cases(own.cases(), SERIAL)
     assert first[0]["route_length"] != first[1]["route_length"]
@@ -451,7 +452,7 @@ def test_waypoint_sweep_pairs_methods_on_seeded_random_routes(tmp_path: Path) ->
 def test_waypoint_gusts_take_the_paper_model_and_the_case_seed() -> None:
     """A gusts block given in part: the paper's gust model for the rest, the case's seed without one."""
     route = [[0.0, 0.0], [5.0, 0.0], [5.0, 5.0]]
-    spec = SweepSpec.from_dict({"kind": "waypoints", "base": {"waypoints": route},
+    spec = SweepSpec.from_dict({"kind": "waypoints", "base": {"units": "paper", "waypoints": route},
                                 "parameters": {"wind.gusts": [{}, {"seed": 3, "intensity": 0.01}]}})
     cases = spec.cases()
     rows = vt.sweep.run_cases(cases, SERIAL)
@@ -474,7 +475,7 @@ def test_old_waypoint_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> Non
     true or a seed. They still load, one line on stdout each, into the cases the new spelling gives."""
     route = str(REPO / "examples" / "waypoints_paper.csv")
     old = {"kind": "waypoints", "seed": 3,
-           "base": {"route": route, "turn_radius": 0.6, "speed": 0.9,
+           "base": {"units": "paper", "route": route, "turn_radius": 0.6, "speed": 0.9,
                     "wind": {"speed": 0.05, "direction_deg": 0.0, "gusts": 7}},
            "parameters": {"turn_radius": [0.6, 0.65], "wind": [{"speed": 0.0, "gusts": False},
                                                                {"speed": 0.05, "direction_deg": 180.0, "gusts": True}],
@@ -483,7 +484,7 @@ def test_old_waypoint_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> Non
     assert set(capsys.readouterr().out.splitlines()) == OLD_WAYPOINT_NOTES
     west = {"east": 0.05 * math.cos(math.pi), "north": 0.05 * math.sin(math.pi)}
     new = {"kind": "waypoints", "seed": 3,
-           "base": {"route": route, "uav": {"min_turn_radius": 0.6, "speed": 0.9},
+           "base": {"units": "paper", "route": route, "uav": {"min_turn_radius": 0.6, "speed": 0.9},
                     "wind": {"east": 0.05, "north": 0.0, "gusts": {"seed": 7}}},
            "parameters": {"uav.min_turn_radius": [0.6, 0.65],
                           "wind": [{"east": 0.0, "north": 0.0, "gusts": False}, {**west, "gusts": {}}],
@@ -492,7 +493,7 @@ def test_old_waypoint_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> Non
     assert capsys.readouterr().out == ""
     assert_same_sweep(spec, again)
     # The old polar keys varied one at a time: the case's wind becomes components when it runs.
-    polar = SweepSpec.from_dict({"kind": "waypoints", "base": {"route": route},
+    polar = SweepSpec.from_dict({"kind": "waypoints", "base": {"units": "paper", "route": route},
                                  "parameters": {"wind.speed": [0.05], "wind.direction_deg": [180.0]}})
     assert capsys.readouterr().out.splitlines() == [POLAR_NOTE] * 2
     case = polar.cases()[0]
@@ -501,7 +502,7 @@ def test_old_waypoint_sweep_spellings(capsys: pytest.CaptureFixture[str]) -> Non
     expected = vt.waypoint_nav.fly(read_route(Path(route)), wind=wind).metrics()
     assert flown["max_miss_over_R"] == expected["max_miss_over_R"] and flown["duration"] == expected["duration"]
     with pytest.raises(vt.VistrackError, match=r"parameters\.uav\.speed = .*given twice"):
-        SweepSpec.from_dict({"kind": "waypoints", "base": {"route": route},
+        SweepSpec.from_dict({"kind": "waypoints", "base": {"units": "paper", "route": route},
                              "parameters": {"speed": [0.8], "uav.speed": [0.9]}})
 
 

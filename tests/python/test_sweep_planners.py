@@ -102,7 +102,8 @@ def follow_alone(period: float, scale: float, compensation: bool) -> dict[str, A
     parameters = vt.follow.FollowParameters(period=period, wind_compensation=compensation)
     run = vt.follow.simulate(vehicle, uav, parameters, wind=(0.0, 5.0), flight=vt.follow.FollowFlight(guidance="l1"))
     base = vt.follow.baseline(vehicle, uav, parameters=parameters, wind=(0.0, 5.0))
-    out = {k: v for k, v in flatten(run.metrics).items() if k not in ("strategy", "centre_offset_m")}
+    out = {k: v for k, v in flatten(run.metrics).items()
+           if k not in ("strategy", "centre_offset_m") and not k.startswith("sinusoid")}  # per run, not swept
     out.update({f"baseline.{k}": v for k, v in flatten(base.metrics).items()
                 if k not in ("strategy", "centre_offset_m")})
     out["centre_offset_east_m"], out["centre_offset_north_m"] = run.metrics["centre_offset_m"]

@@ -473,7 +473,8 @@ def test_per_waypoint_and_per_leg_tables_agree_with_the_flight(calm: list[wn.Nav
         route = np.vstack([flight.start[:2], flight.waypoints])
         np.testing.assert_allclose([leg["length"] for leg in legs], np.linalg.norm(np.diff(route, axis=0), axis=1))
         metrics = flight.metrics()
-        assert metrics["max_miss_before_last_over_R"] == pytest.approx(flight.miss_distances[:-1].max() / R)
+        assert metrics["max_miss_over_R"] == pytest.approx(flight.miss_distances.max() / R)
+        assert metrics["miss_at_last_over_R"] == pytest.approx(flight.miss_distances[-1] / R)
 
 
 def test_cli_writes_the_waypoint_and_leg_tables(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -481,9 +482,9 @@ def test_cli_writes_the_waypoint_and_leg_tables(tmp_path: Path, capsys: pytest.C
     assert main(["waypoints", str(ROUTE), "--paper-units", "--method", "wn", "--waypoint-radius", "0.07",
                  "--quiet", "--out", str(out), "--frames", "4"]) == 0
     printed = capsys.readouterr().out
-    assert "(the last, where the flight ends:" in printed
+    assert "(the last, at its finish line:" in printed
     report = (out / "report.md").read_text()
-    assert "waypoints and legs" in report and "max miss before the last (R)" in report
+    assert "waypoints and legs" in report and "miss at the last (R)" in report
     lines = (out / "waypoints_wn_0.1R.csv").read_text().splitlines()
     assert lines[0] == "waypoint,x,y,miss,miss_over_R,time,overshoot,overshoot_over_R,reached"
     assert len(lines) == 1 + 5 and (out / "legs_wn_0.1R.csv").read_text().startswith("leg,length,time,flown")

@@ -329,6 +329,11 @@ class WaypointFollower : public FlightGuidance {
   // 0 at the last waypoint, which is done on its line).
   void set_passed_line(bool enabled);
   bool passed_line() const { return passed_line_; }
+  // With finish_at_last: the last waypoint is done only once the vehicle is past the line through
+  // it perpendicular to its leg (not inside R_WP): the flight ends on that line (waypoint_nav's
+  // flights, whose last miss is measured there). Off by default.
+  void set_finish_line(bool enabled);
+  bool finish_line() const { return finish_line_; }
   // The acceptance distance of the active waypoint (R_WP unless passed_line).
   double acceptance_distance() const { return acceptance_; }
 
@@ -355,6 +360,7 @@ class WaypointFollower : public FlightGuidance {
   bool next_available(double t) const;
   // How far the vehicle is past the active waypoint's finish line along the leg (m, > 0 past it).
   double past_finish_line(const Vec2& p) const;
+  bool on_finish_line_only() const;
   void update_acceptance();
 
   std::variant<LineFeedback, L1Line> law_;
@@ -367,6 +373,7 @@ class WaypointFollower : public FlightGuidance {
   Vec2 line_start_ = Vec2::Zero();
   bool done_ = false;
   bool passed_line_ = false;
+  bool finish_line_ = false;
   double acceptance_ = 0.0;  // acceptance_distance(), kept by update_acceptance()
 };
 

@@ -56,6 +56,19 @@ double sinusoid_speed_ratio(double amplitude, double period_distance);
 double sinusoid_amplitude(double speed_ratio, double period_distance);
 // The slope amplitude a = A' = 2 pi A / D for a speed ratio (the shape does not depend on D).
 double sinusoid_slope(double speed_ratio);
+
+// The sinusoid the planner flies at a speed ratio: D = max(v_p T / sigma, 2 pi a rho) (the period
+// T raised where the peak curvature a 2 pi / D would exceed 1 / rho, rho = turn_margin r_min), and
+// A = a D / (2 pi) (eq. 10's a = A'). On the curvature floor A = a^2 rho, whatever T is: the
+// `period` key then has no effect (issue 31).
+struct SinusoidShape {
+  double slope = 0.0;            // a = A'
+  double period_distance = 0.0;  // D, m
+  double amplitude = 0.0;        // A, m
+  bool curvature_limited = false;  // D is the floor 2 pi a rho, not v_p T / sigma
+};
+// speed_ratio >= 1, uav_speed > 0, period > 0, turn_radius > 0 (the planned rho).
+SinusoidShape sinusoid_shape(double speed_ratio, double uav_speed, double period, double turn_radius);
 // eq. (5): the along-track rate x_dot = v_p / sqrt(1 + A'^2 cos^2(2 pi x / D)).
 double sinusoid_along_track_rate(double x, double amplitude, double period_distance, double uav_speed);
 // Arc length of y = A sin(2 pi x / D) from x = 0 to x (any real x; odd in x). Incomplete
@@ -113,14 +126,63 @@ class GroundVehicle {
   std::vector<double> headings_;
 };
 
+// ---- What the UAV knows of the vehicle (beyond the paper) -------------------------------------------
+
+// The vehicle's reports, one per update period (section V's 1 Hz), as a radio link delivers them:
+// Gaussian noise on position and velocity, a latency, and dropouts (seeded). All zero: the true
+// state at each update, as the paper's simulation sends it.
+struct VehicleReportOptions {
+  double position_noise = 0.0;  // m, standard deviation per axis
+  double velocity_noise = 0.0;  // m/s, per axis
+  double latency = 0.0;         // s from measurement to reception
+  double dropout = 0.0;         // probability that a report is lost, in [0, 1)
+  double timeout = 5.0;         // s without a fresh report after which the vehicle is lost
+  std::uint64_t seed = 1;
+  void validate() const;
+};
+
+struct VehicleReport {
+  double measured = 0.0;  // s
+  double received = 0.0;  // s
+  Vec2 position = Vec2::Zero();
+  Vec2 velocity = Vec2::Zero();
+  double heading = 0.0;
+};
+
+// The vehicle as known on board at time t: the newest report received, carried along its velocity
+// (position + velocity (t - measured)). `lost`: no report younger than the timeout.
+struct VehicleEstimate {
+  Vec2 position = Vec2::Zero();
+  Vec2 velocity = Vec2::Zero();
+  double heading = 0.0;
+  double age = 0.0;  // t - measured, s
+  bool lost = false;
+};
+
+// Reports measured at t0 + k period up to t_end. The first (at t0) is always received at t0: the
+// vehicle is acquired when the run starts.
+class VehicleReports {
+ public:
+  VehicleReports(const GroundVehicle& vehicle, double t0, double t_end, double period,
+                 const VehicleReportOptions& options = {});
+  VehicleEstimate estimate(double t) const;
+  const std::vector<VehicleReport>& reports() const { return reports_; }
+  const VehicleReportOptions& options() const { return options_; }
+
+ private:
+  std::vector<VehicleReport> reports_;  // by reception time
+  VehicleReportOptions options_;
+};
+
 // ---- Loiter patterns (Fig. 3) ---------------------------------------------------------------------
 
-enum class FollowMode : std::uint8_t { Sinusoid = 0, Loiter = 1, Straight = 2 };
+// Standoff: the tracking paper's vector field (74) about the offset point (beyond this paper).
+enum class FollowMode : std::uint8_t { Sinusoid = 0, Loiter = 1, Straight = 2, Standoff = 3 };
 template <>
 struct EnumNames<FollowMode> {
   static constexpr const char* field = "mode";
   static constexpr EnumName<FollowMode> names[] = {{"sinusoid", FollowMode::Sinusoid}, {"loiter", FollowMode::Loiter},
-      {"straight", FollowMode::Straight}};
+      {"straight", FollowMode::Straight}, {"standoff", FollowMode::Standoff}};
 };
 
 // A closed or endless curve about the loiter centre, by arc length s >= 0: the circle of radius
@@ -145,6 +207,56 @@ struct LoiterShape {
   Vec2 tangent(double s) const;   // unit
 };
 
+// ---- Camera ----------------------------------------------------------------------------------------
+
+// How the camera is carried. "roll": a one-axis roll gimbal that rolls the camera towards the
+// target as far as max_gimbal (the loiter area's model). "pan_tilt": a two-axis gimbal pointed at
+// the target, its axis at most max_gimbal from the body's down axis (pan unlimited). "fixed": the
+// paper's camera on the bottom of the plane (Fig. 12), along the body's down axis.
+enum class CameraMount : std::uint8_t { Roll = 0, PanTilt = 1, Fixed = 2 };
+template <>
+struct EnumNames<CameraMount> {
+  static constexpr const char* field = "camera.mount";
+  static constexpr EnumName<CameraMount> names[] = {{"roll", CameraMount::Roll}, {"pan_tilt", CameraMount::PanTilt},
+      {"fixed", CameraMount::Fixed}};
+};
+
+// A downward conic camera (a 74-degree cone) on its mount. The body banks as in a coordinated
+// turn: phi = atan(v psi_dot / g). The vehicle is seen when the angle between the camera's axis
+// and the line to it is at most fov / 2. A point test for the follow metric; the loiter area
+// computes the footprint ellipse for its disks (peers: to be shared from a lower area).
+struct DownwardCamera {
+  double fov = 74.0 * kPi / 180.0;         // full angle, rad
+  double max_gimbal = 25.0 * kPi / 180.0;  // rad: the roll range, or the pan-tilt's tilt range
+  CameraMount mount = CameraMount::Roll;
+  void validate() const;
+};
+// How far to the side of a level UAV at `altitude` the camera still sees a ground point: with
+// the gimbal turned as far as it goes, w = altitude tan(fov / 2 + max_gimbal) (roll, pan-tilt),
+// altitude tan(fov / 2) for the fixed camera (beyond the paper).
+double camera_reach(const DownwardCamera& camera, double altitude);
+
+// The threshold h the planner uses, and the numbers behind it. With follow.threshold "auto"
+// (kAutoThreshold) h is the largest one whose sinusoid at the band's upper edge sigma_u = h + band / 2
+// keeps its amplitude within the camera's reach: sinusoid_shape(sigma_u).amplitude <= w = camera_reach
+// (on the curvature floor a(sigma_u)^2 rho <= w); found by bisection on the increasing amplitude. h is
+// kept at least 1 + band / 2 + 0.01 (a loiter needs v_p > v_g): a camera too narrow for any sinusoid
+// then loiters whenever the vehicle is slower than the UAV by that margin. With a user's h, the same
+// numbers are reported, and `beyond_reach` says the amplitude exceeds w (a warning, not an error).
+struct ThresholdChoice {
+  double threshold = 0.0;       // h, the one used
+  bool automatic = false;       // picked from the camera
+  double upper_ratio = 0.0;     // sigma_u = h + band / 2
+  double amplitude = 0.0;       // A at sigma_u (the largest the sinusoid flies), m
+  double reach = 0.0;           // w, m
+  bool beyond_reach = false;    // amplitude > reach
+};
+ThresholdChoice camera_threshold(const FollowParameters& parameters, const Uav& uav, const DownwardCamera& camera);
+
+// Whether the ground point `target` (x, y, z) is inside the footprint of the camera on a UAV at
+// `uav` (x, y, z) with heading psi and bank (positive: left wing down).
+bool camera_sees(const DownwardCamera& camera, const Vec3& uav, double psi, double bank, const Vec3& target);
+
 // ---- The planner ----------------------------------------------------------------------------------
 
 // What the planner knows at an update: the vehicle's position and velocity (its 1 Hz report) and
@@ -156,6 +268,9 @@ struct FollowObservation {
   Vec2 uav_position = Vec2::Zero();
   double uav_heading = 0.0;
   Vec2 offset_rate = Vec2::Zero();  // rate of change of the offset vector itself (a moving offset)
+  // No fresh report for the timeout: orbit the vehicle's estimate (vehicle_position, the last known
+  // position carried along its last velocity) without the offset (beyond the paper).
+  bool lost = false;
 };
 
 // One 1 Hz update: the mode, the pattern's parameters and its state at time t.
@@ -172,17 +287,24 @@ struct FollowTick {
   double phase = 0.0;           // sinusoid: phi at t
   double arc = 0.0;             // loiter: s along the pattern at t
   bool capturing = false;       // holding the entry point until the UAV is within one update's flight
+  bool lost = false;            // orbiting the vehicle's estimate (FollowObservation::lost)
+  double radius = 0.0;          // orbit_radius at the frame speed: the standoff's and the loiter circle's, m
+  Vec2 uav_relative = Vec2::Zero();  // standoff: the UAV relative to the offset point at t, where the field starts
+  double predicted_camera = -1.0;    // strategy auto: the chosen pattern's predicted camera fraction (-1: none)
   Vec2 offset_vector = Vec2::Zero();   // O - vehicle at t
   Vec2 offset_point = Vec2::Zero();    // O at t
   Vec2 offset_velocity = Vec2::Zero(); // O's velocity at t (the vehicle's plus the offset's rate)
   Vec2 waypoint = Vec2::Zero();        // the desired position update_period later, predicted
+  Vec2 vehicle_predicted = Vec2::Zero();  // the vehicle update_period later, predicted (a gimbal's ROI)
 };
 
 // The follow planner of sections II-V. update() runs at every update_period.
 class FollowPlanner {
  public:
-  // wind_estimate: the constant wind the UAV estimates (used only with wind_compensation).
-  FollowPlanner(const FollowParameters& parameters, const Uav& uav, const Vec2& wind_estimate = Vec2::Zero());
+  // wind_estimate: the constant wind the UAV estimates (used only with wind_compensation); camera:
+  // what an "auto" threshold is picked for (camera_threshold).
+  FollowPlanner(const FollowParameters& parameters, const Uav& uav, const Vec2& wind_estimate = Vec2::Zero(),
+                const DownwardCamera& camera = DownwardCamera{});
 
   // The update at time t: the mode (with hysteresis), the pattern's state advanced from the
   // previous update, and the next waypoint.
@@ -195,6 +317,8 @@ class FollowPlanner {
   // The desired position relative to the offset point, tau >= 0 seconds after `tick` (the
   // pattern of the tick's mode with its parameters held), and its velocity in the planning frame.
   Vec2 relative_position(const FollowTick& tick, double tau) const;
+  // relative_position at increasing taus, in one pass (the loiter's arc integrated once).
+  std::vector<Vec2> relative_positions(const FollowTick& tick, const std::vector<double>& taus) const;
   // The planned ground path from the tick on: O + O_dot tau + relative_position(tick, tau) at
   // tau = 0, step, ..., horizon (the vehicle predicted at its current velocity, as the waypoint is).
   std::vector<Vec2> planned_path(const FollowTick& tick, double horizon, double step) const;
@@ -204,42 +328,46 @@ class FollowPlanner {
   const Uav& uav() const { return uav_; }
   const Vec2& wind_estimate() const { return wind_; }
   bool has_ticks() const { return has_previous_; }
+  // The threshold in use (parameters().threshold is it, resolved when "auto") and its numbers.
+  const ThresholdChoice& threshold_choice() const { return threshold_; }
+  // The radius of every orbit the planner flies about the offset point: Lemma 6 of the tracking
+  // paper, turn_margin r_min (1 + v_O / v)^2 for an offset point moving at frame_speed in the
+  // planning frame (capped at v), renewed at every update for the standoff orbit and the loiter
+  // circle (unless follow.loiter_radius is given); the rose's turns take it at the fastest offset
+  // point a loiter keeps (sigma at the band's lower edge). The one place that chooses it (a city
+  // mode picks it from the visibility polygon here).
+  double orbit_radius(double frame_speed) const;
+  // Strategy auto's prediction: the fraction of one steady cycle of the tick's pattern (its mode
+  // and shape, sampled in time) in which the camera sees the vehicle, the vehicle predicted at the
+  // offset point's velocity, the bank that of a coordinated turn on the planned air path.
+  double predicted_camera(const FollowTick& tick) const;
 
   // The next mode from sigma with the hysteresis band (exposed for tests).
   FollowMode next_mode(FollowMode current, double speed_ratio) const;
 
  private:
   double pattern_speed(const FollowTick& tick, double s) const;  // ds/dt of the loiter pattern
+  double pattern_speed(const FollowTick& tick, const LoiterShape& shape, double s) const;
+  double loiter_step(const FollowTick& tick, const LoiterShape& shape, double s, double h) const;  // RK4
   double advance_arc(const FollowTick& tick, double tau) const;
   double entry_cost(const Vec2& point, const Vec2& direction, const Vec2& uav_relative, double uav_heading) const;
   void enter_sinusoid(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const;
   void enter_loiter(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const;
   void set_sinusoid_shape(FollowTick& tick) const;
+  Vec2 standoff_relative(const FollowTick& tick, double tau) const;
+  LoiterShape loiter_for(const FollowTick& tick) const;  // the loiter shape of a tick (its circle's radius)
+  FollowMode choose_mode(const FollowTick& tick, FollowMode paper_mode, double& predicted) const;
 
-  FollowParameters parameters_;  // offset_distance / offset_angle: the current offset
+  FollowParameters parameters_;  // offset_distance / offset_angle: the current offset; threshold resolved
   Uav uav_;
+  ThresholdChoice threshold_;
   Vec2 wind_;
+  DownwardCamera camera_;
+  GuidanceGains gains_;
   LoiterShape loiter_;
   FollowTick previous_;
   bool has_previous_ = false;
 };
-
-// ---- Camera ----------------------------------------------------------------------------------------
-
-// A downward conic camera (the loiter area's model: a 74-degree cone) on a one-axis roll gimbal
-// (up to 25 degrees), which rolls the camera towards the target as far as it can; max_gimbal 0
-// is a body-fixed camera (the paper's camera on the bottom of the plane). The body banks as in
-// a coordinated turn: phi = atan(v psi_dot / g). The vehicle is seen when the angle between the
-// camera's axis and the line to it is at most fov / 2. A point test for the follow metric; the
-// loiter area computes the footprint ellipse for its disks (peers: to be shared from a lower area).
-struct DownwardCamera {
-  double fov = 74.0 * kPi / 180.0;         // full angle, rad
-  double max_gimbal = 25.0 * kPi / 180.0;  // rad
-  void validate() const;
-};
-// Whether the ground point `target` (x, y, z) is inside the footprint of the camera on a UAV at
-// `uav` (x, y, z) with heading psi and bank (positive: left wing down).
-bool camera_sees(const DownwardCamera& camera, const Vec3& uav, double psi, double bank, const Vec3& target);
 
 // ---- A follow run: the planner's waypoints flown by the flight layer ------------------------------
 
@@ -255,12 +383,19 @@ struct FollowMetrics {
   double time_sinusoid = 0.0;          // s in each mode
   double time_loiter = 0.0;
   double time_straight = 0.0;
+  double time_standoff = 0.0;
   double time_capturing = 0.0;         // s holding a pattern's entry point until the UAV reached it
   int mode_switches = 0;               // changes of mode between updates
   double camera_fraction = 0.0;        // of the time the vehicle is in the camera footprint
   double mean_vehicle_distance = 0.0;  // horizontal UAV - vehicle, m
   double mean_offset_distance = 0.0;   // horizontal UAV - offset point, m
   Vec2 mean_offset_error = Vec2::Zero();  // mean of UAV - offset point: how far off-centre, m
+  // With imperfect reports: time with the vehicle lost (no report younger than the timeout), the
+  // episodes, and the time from a fresh report after each until the camera sees the vehicle again.
+  double lost_time = 0.0;              // s
+  int lost_episodes = 0;
+  double mean_reacquire_time = 0.0;    // s (0 without episodes)
+  double max_reacquire_time = 0.0;     // s; an episode never reacquired counts to the end
 };
 
 // A change of the offset over time: (t, distance, angle) keys, linear in between, held outside.
@@ -278,6 +413,7 @@ struct FollowRunOptions {
   std::optional<Vec3> start;
   double path_window = 10.0;  // s either side within which the tracking error looks for the path
   std::vector<OffsetKey> offset_schedule;  // empty: the parameters' fixed offset
+  VehicleReportOptions reports;  // what the UAV knows of the vehicle (default: the truth at 1 Hz)
   void validate() const;
 };
 
@@ -294,11 +430,13 @@ struct FollowRun {
   std::vector<std::uint8_t> mode;     // FollowMode of the current update
   std::vector<std::uint8_t> capturing;  // the current update holds its entry point (empty: never)
   std::vector<std::uint8_t> in_view;  // vehicle in the camera footprint
+  std::vector<std::uint8_t> lost;     // the vehicle is lost (empty: never)
   std::vector<double> tracking_error; // distance from the planned path
   std::vector<double> along_track_lag;
   Points2 wind;                       // the true wind at each sample
   // Per update (1 Hz): the planner's state and the waypoint it issued at that time.
   std::vector<FollowTick> ticks;
+  ThresholdChoice threshold;          // the threshold the planner used (camera_threshold)
   FollowMetrics metrics;
   // The generated waypoints and when each was issued (what a mission export needs).
   Points2 waypoints() const;
@@ -318,23 +456,34 @@ void score_follow_run(FollowRun& run, const Uav& uav, const DownwardCamera& came
 // ---- Baseline: the tracking pipeline's vector field about the vehicle ------------------------------
 
 // The guidance vector field (74) and steering law (86) of the visibility-volume tracking paper,
-// orbiting the offset point at a constant radius, as a flight-layer guidance that sees the
-// vehicle's position and velocity at every step (what vistrack.simulate does with a PoiPath, here
-// with stops, turns and wind). The target it reports is the offset point.
+// orbiting the offset point at a constant radius, as a flight-layer guidance (what vistrack.simulate
+// does with a PoiPath, here with stops, turns and wind). A fair comparison with the planner: it
+// knows the vehicle only from the same reports (the estimate: the newest report carried along its
+// velocity) and follows the same offset schedule; lost, it orbits the estimate. The target it
+// reports is the (estimated) offset point.
 class OrbitFollower : public FlightGuidance {
  public:
-  OrbitFollower(const GroundVehicle& vehicle, const FollowPlanner& offsets, const GuidanceGains& gains, double radius);
+  OrbitFollower(const VehicleReports& reports, const FollowParameters& parameters,
+                const std::vector<OffsetKey>& offset_schedule, const GuidanceGains& gains, double radius);
+  // The orbit's centre and its velocity at t.
+  OrbitState orbit(double t) const;
   void start(const Configuration&, double) override {}
   GuidanceCommand command(const Configuration& state, double t) const override;
   void advance(const Configuration&, double) override {}
   bool done() const override { return false; }
 
  private:
-  const GroundVehicle& vehicle_;
-  const FollowPlanner& offsets_;
+  const VehicleReports& reports_;
+  FollowParameters parameters_;
+  std::vector<OffsetKey> schedule_;
   GuidanceGains gains_;
   double radius_;
 };
+
+// The offset vector at t: the schedule's (distance, angle) at t (the parameters' when it is empty),
+// the angle from north or from `vehicle_heading` as the parameters' reference says.
+Vec2 scheduled_offset_vector(const std::vector<OffsetKey>& schedule, const FollowParameters& parameters,
+                             double vehicle_heading, double t);
 
 // Flies the baseline like follow() flies the planner. In the result the desired position is the
 // orbit's nearest point (the tracking error is |r - R|), the mode "loiter", and there are no

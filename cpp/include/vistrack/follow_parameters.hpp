@@ -17,6 +17,20 @@ struct EnumNames<LoiterPattern> {
   static constexpr EnumName<LoiterPattern> names[] = {{"circle", LoiterPattern::Circle}, {"rose", LoiterPattern::Rose}};
 };
 
+// How the planner chooses its pattern at each update. "paper": the sinusoid below the threshold,
+// the loiter above it (sections II-III). "standoff": the vector field (74) of the tracking paper
+// about the offset point whenever the UAV is faster than it (a practitioner's standoff orbit).
+// "auto": at each update the one of sinusoid, loiter and standoff whose steady pattern the camera
+// model predicts to see the vehicle most (FollowPlanner::predicted_camera). Beyond the paper but
+// "paper".
+enum class FollowStrategy : std::uint8_t { Paper = 0, Standoff = 1, Auto = 2 };
+template <>
+struct EnumNames<FollowStrategy> {
+  static constexpr const char* field = "follow.strategy";
+  static constexpr EnumName<FollowStrategy> names[] = {{"paper", FollowStrategy::Paper},
+      {"standoff", FollowStrategy::Standoff}, {"auto", FollowStrategy::Auto}};
+};
+
 // "north": the offset is fixed to the map; "heading": it turns with the vehicle.
 enum class OffsetReference : std::uint8_t { North = 0, Heading = 1 };
 template <>
@@ -26,6 +40,10 @@ struct EnumNames<OffsetReference> {
       {"heading", OffsetReference::Heading}, {"cardinal", OffsetReference::North},
       {"relative", OffsetReference::Heading}};
 };
+
+// FollowParameters::threshold for "auto": the planner picks h from its camera (camera_threshold in
+// follow.hpp) so that the sinusoid's amplitude stays within the camera's reach (beyond the paper).
+inline constexpr double kAutoThreshold = 0.0;
 
 // The follower's vehicle where a scenario gives none: the paper's UAV flies at 20-23 m/s; 200 m
 // above open ground.
@@ -42,8 +60,10 @@ struct FollowParameters {
   double turn_margin = 1.25;
   // Loiter above the threshold h_sigma of the speed ratio sigma = v_p / v_g, with a hysteresis
   // band of this full width centred on it: loiter from sigma > h + band / 2, back to the
-  // sinusoid below h - band / 2.
-  double threshold = 3.0;             // h_sigma (the paper's ~3)
+  // sinusoid below h - band / 2. kAutoThreshold (the default, beyond the paper): the largest h
+  // whose sinusoid stays within the camera's reach at the band's upper edge (camera_threshold);
+  // the paper's h is about 3 ("set to avoid the large amplitude", section II).
+  double threshold = kAutoThreshold;  // h_sigma
   double hysteresis = 0.5;            // full band width, < threshold
   LoiterPattern loiter_pattern = LoiterPattern::Circle;  // Fig. 3
   // Circle: its radius. Rose: the largest distance from the centre. 0: the smallest flyable
@@ -61,6 +81,9 @@ struct FollowParameters {
   // Waypoints are generated every update_period (section V: 1 Hz), each one the desired position
   // update_period later.
   double update_period = 1.0;         // s
+  FollowStrategy strategy = FollowStrategy::Paper;
+  // strategy auto: switch only to a pattern predicted to see the vehicle this much more often.
+  double strategy_margin = 0.05;
   void validate() const;
 };
 
@@ -79,7 +102,7 @@ struct FollowFlight {
   LegGuidance guidance = LegGuidance::LineFeedback;
   // guidance l1 (CurveL1): a period of 8 s puts L1 = 0.75 * 8 * v / pi = 40 m at the follow
   // examples' 21 m/s, under r_min = 50 m; at ArduPlane's 17 s (L1 = 85 m, made for larger
-  // airframes) Fig. 7's compensated wind run flies a mean 62 m off its path (17 m at 8 s).
+  // airframes) Fig. 7's compensated wind run flies a mean 52 m off its path (13 m at 8 s; bench/vehicle_models.py).
   L1Gains l1{8.0, 0.75};
   void validate() const;
 };

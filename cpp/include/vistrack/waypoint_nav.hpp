@@ -5,7 +5,10 @@
 //  * WN: the active waypoint, switching to the next inside the waypoint radius R_WP
 //    (flight.hpp's WaypointFollower);
 //  * DWN: the turning point T_n of the 3-point horizon (current pose C, W_n, W_{n+1}), switching
-//    when T_n enters the reachability zone; the last waypoint is flown to directly.
+//    when T_n enters the reachability zone; the last waypoint is flown to directly. Beyond the
+//    paper, with the mean wind known, T_n is planned in the air mass (air_mass_turning_point), and
+//    T_n may be re-planned more often (section 2.1's option, set_replan_interval).
+// Every flight ends past the line through the last waypoint perpendicular to the last leg.
 //
 // The horizon path (section 2.4, Figure 6): an arc on the vehicle's turning circle (direction d1),
 // the tangent straight to the circle of radius R through W_n (centre W_n + R (cos theta, sin theta),
@@ -99,10 +102,40 @@ struct TurningPointRecord {
   HorizonPath path;             // the horizon path; for the last waypoint (flown directly) only
                                 // point = W_last, line_start = C, feasible, length = |W_last - C|
   bool direct = false;          // the last waypoint, flown to directly
+  // Planned in the air mass (wind-aware DWN): the mean wind used (zero: planned in still air)
+  // and the turning point as a point of the air mass at time t. That point drifts with the wind,
+  // air_point + wind (t' - t), and is on the ground turning point `path.point` when the vehicle
+  // is planned to be there; the reachability zone switches on the drifting point.
+  Vec2 wind = Vec2::Zero();
+  Vec2 air_point = Vec2::Zero();
 };
 
+// The turning point planned in the air mass (beyond the paper; the follow planner's wind
+// compensation, follow.hpp): in the frame moving with the mean wind w the vehicle is a wind-free
+// Dubins vehicle of airspeed v and a ground waypoint W moves at -w, so a path that meets W_n at
+// time tau_n after `pose` was planned meets, in the air, the point W_n - w tau_n. The horizon
+// (section 2.4) is solved there for W_n - w tau_n and W_{n+1} - w tau_{n+1}, the times taken from
+// the path's own arc lengths (tau = s / v) by a fixed-point iteration (a contraction of ratio
+// about |w| / v; at most 100 rounds, to 1e-12 R / v). The path returned is on the ground: each
+// point of the air path is moved by w times the time the vehicle is planned to reach it (point:
+// at tau_T, line_start: at the end of the first arc, circle_center: at tau_n, exit_point). With
+// w = 0 it is turning_point(). `air_path` (if given) receives the path in the air frame of
+// `pose` (the frame moving with w that coincides with the ground when `pose` is planned).
+// The horizon path as PathFollower pieces from `pose` (its first arc, the straight to T_n, the
+// arc through W_n, the straight to W_{n+1}; empty pieces dropped), then a straight of `extension`
+// past W_{n+1}. Each piece starts where the one before ends.
+std::vector<PathPiece> horizon_pieces(const Configuration& pose, const HorizonPath& path, double turn_radius,
+                                      double extension);
+
+TurningPoint air_mass_turning_point(const Configuration& pose, const Vec2& w_next, const Vec2& w_after,
+                                    double turn_radius, double speed, const Vec2& wind,
+                                    const FuelWeights& weights = {}, HorizonPath* air_path = nullptr);
+
 // DWN as a flight guidance: the law (5) to T_n along the first straight; at the reachability
-// switch, the next turning point from the current pose.
+// switch, the next turning point from the current pose. Planned in the air mass (set_wind), the
+// law flies the air frame's line from the vehicle's position in that frame (p - w (t - t_plan)),
+// where the vehicle is wind-free (the law without wind), and the reachability zone switches
+// there too; the last waypoint, a ground point, is flown by the law as given (wind-aware or not).
 class DubinsWaypointGuidance : public FlightGuidance {
  public:
   DubinsWaypointGuidance(const LineFeedback& law, const std::vector<Vec2>& waypoints, double turn_radius,
@@ -117,12 +150,42 @@ class DubinsWaypointGuidance : public FlightGuidance {
   bool done() const override { return done_; }
   double switching_function(const Configuration& state, double t) const override;
 
+  // Wind-aware (beyond the paper): plan every turning point in the air mass of the known mean
+  // wind (air_mass_turning_point) at airspeed `speed`; switching on the turning point drifting
+  // with it. Zero wind: the paper's planning.
+  void set_wind(const Vec2& mean_wind, double speed);
+  // The paper's option (section 2.1: "the trajectory may be updated more frequently than when the
+  // turning point is updated (like under the conditions of high winds)"): every `interval`
+  // seconds (> 0) the turning point of the active waypoint is planned again from the current
+  // pose; 0 (the default) plans only at the reachability switch. Not within 0.3 R of the turning point
+  // (there a step's heading error can make the best path a loop), nor on the direct flight to the
+  // last waypoint (its line ends at the waypoint).
+  void set_replan_interval(double interval);
+  double replan_interval() const { return replan_interval_; }
+  // Beyond the paper, for vehicles that bank (the roll model, a 6-DOF aircraft): each planned
+  // horizon path (first arc, straight to T_n, the arc through W_n, the straight to W_{n+1}) is
+  // flown by PathFollower (curvature feed-forward read gains.anticipation seconds ahead, so the
+  // roll starts before the arc; cross-track and heading feedback), in the air frame when
+  // wind-aware, instead of the leg law to T_n alone: the roll lag is corrected rather than
+  // accumulated. The switch and the re-planning stay the paper's; the last waypoint is flown along
+  // the tail of the last plan (its straight to W_last, extended 2 R past it). Unset: the paper's
+  // law to T_n (the default).
+  // speed: the vehicle's airspeed v (the feed-forward's v kappa, the anticipation's lead v t).
+  void set_path_following(const PathFollowingGains& gains, double speed);
+  bool path_following() const { return path_gains_.has_value(); }
+
   const std::vector<TurningPointRecord>& turning_points() const { return log_; }
   std::size_t active() const { return active_; }
+  // The flight ends once the vehicle is past the line through the last waypoint perpendicular to
+  // the route's last leg (from the previous waypoint, or the start for a single one).
+  double past_finish_line(const Vec2& p) const;
+  double next_change_time(double t) const override;
 
  private:
   void plan(const Configuration& state, double t);
+  void follow(const Configuration& state, double t, const HorizonPath& air_path);
   void check() const;
+  Vec2 drifting_target(double t) const { return air_target_ + wind_ * (t - planned_at_); }
 
   std::variant<LineFeedback, L1Line> law_;
   std::vector<Vec2> waypoints_;
@@ -132,13 +195,33 @@ class DubinsWaypointGuidance : public FlightGuidance {
   Vec2 target_ = Vec2::Zero(), line_start_ = Vec2::Zero();
   bool done_ = false;
   std::vector<TurningPointRecord> log_;
+  Vec2 wind_ = Vec2::Zero();
+  double airspeed_ = 1.0;
+  double replan_interval_ = 0.0;
+  double planned_at_ = 0.0;     // when the active turning point was planned
+  Vec2 air_target_ = Vec2::Zero();  // its point in the air mass at planned_at_
+  Vec2 air_line_start_ = Vec2::Zero();
+  std::variant<LineFeedback, L1Line> air_law_;  // law_ without wind: the one flown in the air frame
+  std::optional<PathFollowingGains> path_gains_;
+  double path_speed_ = 1.0;
+  std::optional<PathFollower> follower_;  // the active plan's path (path following)
+  double follower_planned_at_ = 0.0;      // its air frame: the ground at that time
+  Configuration follower_frame(const Configuration& state, double t) const {
+    const Vec2 drift = wind_ * (t - follower_planned_at_);
+    return {state.x - drift.x(), state.y - drift.y(), state.psi};
+  }
+  bool air_frame_ = false;  // the active line is flown in the air frame
+  Vec2 leg_start_ = Vec2::Zero();   // the start of the route's last leg (finish line)
 };
 
 // ---- Metrics ----------------------------------------------------------------------------------
 
 struct NavigationMetrics {
-  std::vector<double> miss_distances;  // closest approach of the flown path to each waypoint
-  std::vector<double> closest_times;   // time of that closest approach (the sample starting its segment), s
+  // Closest approach of the flown path to each waypoint; for the last one, the distance from it
+  // where the path crosses its finish line (through it, perpendicular to the last leg: where the
+  // flight ends), or the closest approach when the path never crosses it (then not reached).
+  std::vector<double> miss_distances;
+  std::vector<double> closest_times;   // time of that closest approach (the sample starting its segment; the crossing), s
   std::vector<double> overshoots;      // per waypoint: the largest distance outside the turn there
   std::vector<std::uint8_t> reached;   // the guidance got past the waypoint (in order) in time
   bool all_reached = false;

@@ -29,6 +29,16 @@ void WaypointFollower::set_passed_line(bool enabled) {
   touch();
 }
 
+void WaypointFollower::set_finish_line(bool enabled) {
+  finish_line_ = enabled;
+  touch();
+}
+
+// Only the finish line counts at the last waypoint (set_finish_line).
+bool WaypointFollower::on_finish_line_only() const {
+  return finish_line_ && finish_at_last_ && active_ + 1 == waypoints_.size();
+}
+
 // Once per change of the active leg (not per step): the acceptance distance of the active waypoint.
 void WaypointFollower::update_acceptance() {
   acceptance_ = acceptance_radius_;
@@ -94,9 +104,11 @@ void WaypointFollower::advance(const Configuration& state, double t) {
   if (done_) return;
   const Vec2 p(state.x, state.y);
   while (true) {
-    if (std::isnan(accepted_at_[active_]) &&
-        ((p - waypoints_[active_]).norm() <= acceptance_distance() || (passed_line_ && past_finish_line(p) >= 0.0)))
-      accepted_at_[active_] = t;
+    const bool accept = on_finish_line_only()
+                            ? past_finish_line(p) >= 0.0
+                            : (p - waypoints_[active_]).norm() <= acceptance_distance() ||
+                                  (passed_line_ && past_finish_line(p) >= 0.0);
+    if (std::isnan(accepted_at_[active_]) && accept) accepted_at_[active_] = t;
     if (std::isnan(accepted_at_[active_])) return;
     if (next_available(t)) {
       line_start_ = waypoints_[active_];
@@ -116,6 +128,7 @@ void WaypointFollower::advance(const Configuration& state, double t) {
 double WaypointFollower::switching_function(const Configuration& state, double) const {
   if (done_ || !std::isnan(accepted_at_[active_])) return std::numeric_limits<double>::infinity();
   const Vec2 p(state.x, state.y);
+  if (on_finish_line_only()) return -past_finish_line(p);
   const double inside = (p - waypoints_[active_]).norm() - acceptance_distance();
   // <= 0 once either condition holds: the smaller of the two distances to switching.
   return passed_line_ ? std::min(inside, -past_finish_line(p)) : inside;

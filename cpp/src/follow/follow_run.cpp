@@ -1,4 +1,5 @@
 // A follow run: the planner's 1 Hz waypoints flown by the flight layer's waypoint follower.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -20,6 +21,19 @@ namespace {
 // back to a stale one.
 constexpr double kSwitchAtOnce = std::numeric_limits<double>::max();
 
+// What the planner sees at t: the vehicle as the reports know it, and the UAV.
+FollowObservation observe(const VehicleReports& reports, double t, const Vec2& uav, double psi) {
+  const VehicleEstimate e = reports.estimate(t);
+  FollowObservation o;
+  o.vehicle_position = e.position;
+  o.vehicle_velocity = e.velocity;
+  o.vehicle_heading = e.heading;
+  o.lost = e.lost;
+  o.uav_position = uav;
+  o.uav_heading = psi;
+  return o;
+}
+
 FollowObservation observe(const GroundVehicle& vehicle, double t, const Vec2& uav, double psi) {
   FollowObservation o;
   o.vehicle_position = vehicle.position(t);
@@ -32,8 +46,8 @@ FollowObservation observe(const GroundVehicle& vehicle, double t, const Vec2& ua
 
 // On the planned path at the first desired position, heading (in the air) along it.
 Configuration start_on_plan(const GroundVehicle& vehicle, const Uav& uav, const FollowParameters& parameters,
-                            const Vec2& wind_estimate, const Vec2& wind, double t0) {
-  FollowPlanner probe(parameters, uav, wind_estimate);
+                            const Vec2& wind_estimate, const Vec2& wind, double t0, const DownwardCamera& camera) {
+  FollowPlanner probe(parameters, uav, wind_estimate, camera);
   const double heading = vehicle.heading(t0);
   const Vec2 offset_point = vehicle.position(t0) + probe.offset_vector(heading);
   const FollowTick tick = probe.update(t0, observe(vehicle, t0, offset_point, heading));
@@ -42,20 +56,6 @@ Configuration start_on_plan(const GroundVehicle& vehicle, const Uav& uav, const 
   const Vec2 p1 = tick.offset_point + vehicle.velocity(t0) * h + probe.relative_position(tick, h);
   const Vec2 air = (p1 - p0) / h - wind;
   return {p0.x(), p0.y(), air.norm() > 0.0 ? std::atan2(air.y(), air.x()) : heading};
-}
-
-// The offset (distance, angle) of the schedule at t, or the parameters' when it is empty.
-std::pair<double, double> scheduled_offset(const std::vector<OffsetKey>& keys, const FollowParameters& p, double t) {
-  if (keys.empty()) return {p.offset_distance, p.offset_angle};
-  if (t <= keys.front().t) return {keys.front().distance, keys.front().angle};
-  for (std::size_t i = 1; i < keys.size(); ++i) {
-    if (t < keys[i].t) {
-      const double f = (t - keys[i - 1].t) / (keys[i].t - keys[i - 1].t);
-      return {keys[i - 1].distance + f * (keys[i].distance - keys[i - 1].distance),
-              keys[i - 1].angle + f * (keys[i].angle - keys[i - 1].angle)};
-    }
-  }
-  return {keys.back().distance, keys.back().angle};
 }
 
 }  // namespace
@@ -79,22 +79,24 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
                                   : start_on_plan(vehicle, uav, [&] {
                                       FollowParameters at_start = parameters;
                                       std::tie(at_start.offset_distance, at_start.offset_angle) =
-                                          scheduled_offset(options.offset_schedule, parameters, t0);
+                                          detail::scheduled_offset(options.offset_schedule, parameters, t0);
                                       return at_start;
-                                    }(), wind_estimate, steady, t0);
-  FollowPlanner planner(parameters, uav, wind_estimate);
+                                    }(), wind_estimate, steady, t0, options.camera);
+  FollowPlanner planner(parameters, uav, wind_estimate, options.camera);
+  const VehicleReports reports(vehicle, t0, vehicle.end_time(), period, options.reports);
   FollowRun run;
+  run.threshold = planner.threshold_choice();
 
   const LineFeedback law(uav.speed, uav.min_turn_radius, options.flight.dt,
                          LineFeedbackGains::for_turn_radius(uav.min_turn_radius));
 
   // The planner's update at t with the scheduled offset and its rate over the next update.
   const auto plan = [&](double t, const Vec2& p, double psi) {
-    const auto [distance, angle] = scheduled_offset(options.offset_schedule, parameters, t);
+    const auto [distance, angle] = detail::scheduled_offset(options.offset_schedule, parameters, t);
     planner.set_offset(distance, angle);
-    FollowObservation o = observe(vehicle, t, p, psi);
+    FollowObservation o = observe(reports, t, p, psi);
     if (!options.offset_schedule.empty()) {
-      const auto [d1, a1] = scheduled_offset(options.offset_schedule, parameters, t + period);
+      const auto [d1, a1] = detail::scheduled_offset(options.offset_schedule, parameters, t + period);
       const double heading = o.vehicle_heading;
       const Vec2 now = planner.offset_vector(heading);
       planner.set_offset(d1, a1);
@@ -136,25 +138,47 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   detail::size_run_samples(run, trajectory);
   run.mode.resize(n);
   run.capturing.resize(n);
-  std::size_t k = 0;
+  run.lost.assign(n, 0);
+  bool any_lost = false;
+  // The pattern of each sample's update, relative to the offset point: one pass per update.
+  std::vector<std::size_t> tick_of(n);
+  std::vector<Vec2> relative(n);
+  for (std::size_t i = 0, k = 0; i < n;) {
+    while (k + 1 < run.ticks.size() && run.ticks[k + 1].t <= trajectory.t[i] + 1e-9) ++k;
+    std::size_t end = i;
+    std::vector<double> taus;
+    while (end < n && (k + 1 >= run.ticks.size() || run.ticks[k + 1].t > trajectory.t[end] + 1e-9)) {
+      tick_of[end] = k;
+      taus.push_back(std::max(0.0, trajectory.t[end] - run.ticks[k].t));
+      ++end;
+    }
+    const std::vector<Vec2> positions = planner.relative_positions(run.ticks[k], taus);
+    std::copy(positions.begin(), positions.end(), relative.begin() + static_cast<std::ptrdiff_t>(i));
+    i = end;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     const auto r = static_cast<Eigen::Index>(i);
     const double t = trajectory.t[i];
-    while (k + 1 < run.ticks.size() && run.ticks[k + 1].t <= t + 1e-9) ++k;
-    const FollowTick& tick = run.ticks[k];
+    const FollowTick& tick = run.ticks[tick_of[i]];
     const Vec2 g = vehicle.position(t);
-    const auto [distance, angle] = scheduled_offset(options.offset_schedule, parameters, t);
+    const auto [distance, angle] = detail::scheduled_offset(options.offset_schedule, parameters, t);
     planner.set_offset(distance, angle);
     const Vec2 o = g + planner.offset_vector(vehicle.heading(t));
     run.state.row(r) << trajectory.x[i], trajectory.y[i], trajectory.psi[i];
     run.vehicle.row(r) = g.transpose();
     run.offset_point.row(r) = o.transpose();
-    run.desired.row(r) = (o + planner.relative_position(tick, t - tick.t)).transpose();
+    // The pattern about the true offset point; while lost, about the vehicle's estimate.
+    const VehicleEstimate known = reports.estimate(t);
+    const Vec2 centre = tick.lost ? known.position : o;
+    run.desired.row(r) = (centre + relative[i]).transpose();
+    run.lost[i] = known.lost ? 1 : 0;
+    any_lost = any_lost || known.lost;
     run.target.row(r) << trajectory.target_x[i], trajectory.target_y[i];
     run.wind.row(r) << trajectory.wind_east[i], trajectory.wind_north[i];
     run.mode[i] = static_cast<std::uint8_t>(tick.mode);
     run.capturing[i] = tick.capturing ? 1 : 0;
   }
+  if (!any_lost) run.lost.clear();
   score_follow_run(run, uav, options.camera, options.path_window);
   return run;
 }

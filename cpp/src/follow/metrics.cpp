@@ -24,6 +24,7 @@ double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
 void FollowRunOptions::validate() const {
   flight.validate();
   camera.validate();
+  reports.validate();
   require_positive(path_window, "path_window");
   for (std::size_t i = 0; i < offset_schedule.size(); ++i) {
     const std::string field = "offset_schedule[" + std::to_string(i) + "]";
@@ -125,6 +126,7 @@ void score_follow_run(FollowRun& run, const Uav& uav, const DownwardCamera& came
       case FollowMode::Sinusoid: m.time_sinusoid += w; break;
       case FollowMode::Loiter: m.time_loiter += w; break;
       case FollowMode::Straight: m.time_straight += w; break;
+      case FollowMode::Standoff: m.time_standoff += w; break;
     }
     if (!run.capturing.empty() && run.capturing[i]) m.time_capturing += w;
     weight_sum += w;
@@ -138,6 +140,24 @@ void score_follow_run(FollowRun& run, const Uav& uav, const DownwardCamera& came
     m.mean_offset_error = offset_sum / weight_sum;
   }
   m.final_along_track_lag = run.along_track_lag.back();
+  // Lost episodes: the time without a fresh report, and from the first fresh report after each
+  // until the camera sees the vehicle again (to the end when it never does).
+  if (!run.lost.empty()) {
+    double reacquire_sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double w = i + 1 < n ? run.t[i + 1] - run.t[i] : 0.0;
+      if (run.lost[i]) m.lost_time += w;
+      if (i > 0 && run.lost[i - 1] && !run.lost[i]) {
+        ++m.lost_episodes;
+        std::size_t j = i;
+        while (j + 1 < n && !run.in_view[j]) ++j;
+        const double wait = run.t[j] - run.t[i];
+        reacquire_sum += wait;
+        m.max_reacquire_time = std::max(m.max_reacquire_time, wait);
+      }
+    }
+    if (m.lost_episodes > 0) m.mean_reacquire_time = reacquire_sum / m.lost_episodes;
+  }
   m.duration = run.t.back() - run.t.front();
   for (std::size_t k = 1; k < run.ticks.size(); ++k)
     if (run.ticks[k].mode != run.ticks[k - 1].mode) ++m.mode_switches;

@@ -131,6 +131,21 @@ double sinusoid_amplitude(double speed_ratio, double period_distance) {
   return sinusoid_slope(speed_ratio) * period_distance / kTwoPi;
 }
 
+SinusoidShape sinusoid_shape(double speed_ratio, double uav_speed, double period, double turn_radius) {
+  require_positive(uav_speed, "uav_speed");
+  require_positive(period, "period");
+  require_positive(turn_radius, "turn_radius");
+  SinusoidShape shape;
+  shape.slope = sinusoid_slope(speed_ratio);
+  // Peak curvature of y = A sin(2 pi x / D) is a 2 pi / D: keep it within 1 / rho.
+  const double by_period = uav_speed * period / speed_ratio;  // v_g T, v_g = v_p / sigma
+  const double floor = kTwoPi * shape.slope * turn_radius;
+  shape.curvature_limited = floor > by_period;
+  shape.period_distance = std::max(by_period, floor);
+  shape.amplitude = shape.slope * shape.period_distance / kTwoPi;
+  return shape;
+}
+
 double sinusoid_along_track_rate(double x, double amplitude, double period_distance, double uav_speed) {
   require_finite(x, "x");
   require_positive(uav_speed, "uav_speed");

@@ -59,6 +59,30 @@ NavigationMetrics navigation_metrics(const FlightTrajectory& traj, const Vec2& s
     out.closest_times[k] = traj.t[closest];
     from = closest;
   }
+  // The last waypoint: where the path crosses its finish line (the flight ends there), searched
+  // from the previous waypoint's closest approach; without a crossing the closest approach stays.
+  {
+    const Vec2& w = waypoints.back();
+    const Vec2 leg = w - (m >= 2 ? waypoints[m - 2] : start);
+    const double length = leg.norm();
+    std::size_t i0 = 0;
+    if (m >= 2) i0 = static_cast<std::size_t>(std::lower_bound(traj.t.begin(), traj.t.end(), out.closest_times[m - 2]) -
+                                              traj.t.begin());
+    auto along = [&](std::size_t i) { return length > 0.0 ? (position(i) - w).dot(leg) / length : 0.0; };
+    for (std::size_t i = std::min(i0, n - 1); i < n; ++i) {
+      if (along(i) < 0.0) continue;
+      Vec2 crossing = position(i);
+      double time = traj.t[i];
+      if (i > i0) {
+        const double a = along(i - 1), b = along(i), f = b > a ? -a / (b - a) : 1.0;
+        crossing = position(i - 1) + f * (position(i) - position(i - 1));
+        time = traj.t[i - 1] + f * (traj.t[i] - traj.t[i - 1]);
+      }
+      out.miss_distances[m - 1] = (crossing - w).norm();
+      out.closest_times[m - 1] = time;
+      break;
+    }
+  }
 
   // Reached: the guidance moved past W_k (the last: the flight finished).
   out.reached.assign(m, 0);

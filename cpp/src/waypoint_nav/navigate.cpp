@@ -55,6 +55,13 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
                  ? std::make_unique<DubinsWaypointGuidance>(l1, waypoints, R, options.weights)
                  : std::make_unique<DubinsWaypointGuidance>(law5, waypoints, R, options.weights);
     dwn = g.get();
+    if (options.wind_aware) dwn->set_wind(Vec2(wind.east, wind.north), options.speed);
+    dwn->set_replan_interval(options.replan_interval);
+    if (options.resolved_tracking() == DwnTracking::Path) {
+      PathFollowingGains gains = options.path_gains;
+      gains.anticipation = options.path_anticipation.value_or(options.roll_lag());
+      dwn->set_path_following(gains, options.speed);
+    }
     guidance = std::move(g);
   } else {
     result.waypoint_radius = options.waypoint_radius.value_or(R);
@@ -62,6 +69,7 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
                         ? std::make_unique<WaypointFollower>(l1, waypoints, result.waypoint_radius)
                         : std::make_unique<WaypointFollower>(law5, waypoints, result.waypoint_radius);
     follower->set_passed_line(options.method == NavigationMethod::PassedLine);
+    follower->set_finish_line(true);  // the flight ends past the last waypoint's line, as DWN's
     guidance = std::move(follower);
   }
   const Uav vehicle = options.vehicle();

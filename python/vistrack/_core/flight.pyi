@@ -197,6 +197,10 @@ class LineFeedback:
         """
         speed v, turn_radius R, law step dt (psi_max = v dt / R <= pi/2), gains (g, h); smooth_sign: sign(phi_T) -> clamp(phi_T / psi_max, -1, 1) for continuous flight.
         """
+    def set_wind(self, mean_wind: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> None:
+        """
+        Wind-aware (beyond the paper): phi_T and s_dot from the course over the ground with this known mean wind (east, north), as navigate(wind_aware=True) flies.
+        """
     def terms(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], line_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> LineFeedbackTerms:
         """
         Every term of (5) at state (x, y, psi) for the line line_start -> target (LineFeedbackTerms).
@@ -235,6 +239,11 @@ class LineFeedback:
         """
         R
         """
+    @property
+    def wind_aware(self) -> bool:
+        """
+        whether set_wind was called
+        """
 class L1Line:
     """
     L1 line tracking as ArduPlane flies a leg (Park, Deyst & How 2004; AP_L1_Control): lateral acceleration 4 damping^2 v^2 / L1 sin(eta) towards the point L1 = damping period v / pi ahead on the line; continuous in the state (no chatter).
@@ -242,6 +251,10 @@ class L1Line:
     def __init__(self, speed: typing.SupportsFloat | typing.SupportsIndex, period: typing.SupportsFloat | typing.SupportsIndex = 17.0, damping: typing.SupportsFloat | typing.SupportsIndex = 0.75) -> None:
         """
         speed v; period (s, ArduPlane NAVL1_PERIOD 17) and damping (NAVL1_DAMPING 0.75).
+        """
+    def set_wind(self, mean_wind: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> None:
+        """
+        Wind-aware (beyond the paper, as ArduPlane flies L1): steer the ground velocity with this known mean wind (east, north), as navigate(wind_aware=True) flies.
         """
     def turn_rate(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], line_start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> float:
         """
@@ -252,13 +265,26 @@ class L1Line:
         """
         L1, length units
         """
+    @property
+    def wind_aware(self) -> bool:
+        """
+        whether set_wind was called
+        """
 class FlightGuidance:
     """
     A guidance law for fly(): turn-rate command and target from (x, y, psi) and t; its stateful logic runs only after accepted steps.
     """
+    def advance(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], t: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        The stateful logic (switch targets, finish) at an accepted state (an outside vehicle model: vistrack.fdm).
+        """
     def command(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> tuple[float, tuple[float, float], int]:
         """
         (turn_rate, (target_x, target_y), target_index) at a state.
+        """
+    def start(self, state: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], t: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        """
+        Reset the discrete state for a flight from (x, y, psi) at t (an outside vehicle model: vistrack.fdm).
         """
     @property
     def done(self) -> bool:
@@ -324,6 +350,22 @@ class WaypointFollower(FlightGuidance):
         """
         index of the active waypoint
         """
+    @property
+    def finish_line(self) -> bool:
+        """
+        the flight ends past the last waypoint's perpendicular line, not inside R_WP of it
+        """
+    @finish_line.setter
+    def finish_line(self, arg1: bool) -> None:
+        ...
+    @property
+    def passed_line(self) -> bool:
+        """
+        ArduPlane's switching: a waypoint is also done once past the line through it perpendicular to its leg, and the turn is anticipated (waypoint_nav's 'wn_passed_line')
+        """
+    @passed_line.setter
+    def passed_line(self, arg1: bool) -> None:
+        ...
     @property
     def waypoint_radius(self) -> float:
         """

@@ -8,7 +8,7 @@ import numpy.typing
 import typing
 import vistrack._core
 import vistrack._core.flight
-__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'VehicleLeg', 'along_track_rate', 'arc_length', 'camera_sees', 'default_uav', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_slope', 'speed_ratio']
+__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'SinusoidShape', 'ThresholdChoice', 'VehicleLeg', 'VehicleReportOptions', 'along_track_rate', 'arc_length', 'camera_reach', 'camera_sees', 'camera_threshold', 'default_uav', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_shape', 'sinusoid_slope', 'speed_ratio']
 class VehicleLeg:
     """
     One leg of a route: heading (rad from east), speed at its start and end (m/s, linear in between; 0 and 0 is a stop), duration (s).
@@ -117,7 +117,7 @@ class FollowParameters:
     """
     The follow planner's settings (defaults from the C++ struct). Angles in radians.
     """
-    def __init__(self, *, period: typing.SupportsFloat | typing.SupportsIndex = 30.0, turn_margin: typing.SupportsFloat | typing.SupportsIndex = 1.25, threshold: typing.SupportsFloat | typing.SupportsIndex = 3.0, hysteresis: typing.SupportsFloat | typing.SupportsIndex = 0.5, loiter_pattern: str = 'circle', loiter_radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, loiter_direction: str = 'ccw', offset_distance: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_angle: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_reference: str = 'heading', wind_compensation: bool = True, update_period: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> None:
+    def __init__(self, *, period: typing.SupportsFloat | typing.SupportsIndex = 30.0, turn_margin: typing.SupportsFloat | typing.SupportsIndex = 1.25, threshold: typing.Any = 'auto', hysteresis: typing.SupportsFloat | typing.SupportsIndex = 0.5, loiter_pattern: str = 'circle', loiter_radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, loiter_direction: str = 'ccw', offset_distance: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_angle: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_reference: str = 'heading', wind_compensation: bool = True, update_period: typing.SupportsFloat | typing.SupportsIndex = 1.0, strategy: str = 'paper', strategy_margin: typing.SupportsFloat | typing.SupportsIndex = 0.05) -> None:
         """
         Validated parameters.
         """
@@ -190,12 +190,28 @@ class FollowParameters:
     def period(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
-    def threshold(self) -> float:
+    def strategy(self) -> str:
         """
-        h_sigma: loiter above this speed ratio
+        'paper' (sinusoid and loiter), 'standoff' (vector field (74) about the offset point) or 'auto' (per update, the pattern predicted to see the vehicle most)
+        """
+    @strategy.setter
+    def strategy(self, arg1: str) -> None:
+        ...
+    @property
+    def strategy_margin(self) -> float:
+        """
+        strategy auto: switch only for this much more predicted camera fraction
+        """
+    @strategy_margin.setter
+    def strategy_margin(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def threshold(self) -> typing.Any:
+        """
+        h_sigma: loiter above this speed ratio; 'auto': picked from the camera (camera_threshold)
         """
     @threshold.setter
-    def threshold(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+    def threshold(self, arg1: typing.Any) -> None:
         ...
     @property
     def turn_margin(self) -> float:
@@ -266,11 +282,11 @@ class FollowFlight:
         ...
 class DownwardCamera:
     """
-    Downward conic camera (fov the full cone angle) on a roll gimbal that points it at the target as far as max_gimbal allows (0: body-fixed).
+    Downward conic camera (fov the full cone angle) on its mount: 'roll' (a roll gimbal that points it at the target as far as max_gimbal allows), 'pan_tilt' (pointed at the target, at most max_gimbal from the body's down axis) or 'fixed' (the paper's body-fixed camera).
     """
-    def __init__(self, *, fov: typing.SupportsFloat | typing.SupportsIndex = 1.2915436464758039, max_gimbal: typing.SupportsFloat | typing.SupportsIndex = 0.4363323129985824) -> None:
+    def __init__(self, *, fov: typing.SupportsFloat | typing.SupportsIndex = 1.2915436464758039, max_gimbal: typing.SupportsFloat | typing.SupportsIndex = 0.4363323129985824, mount: str = 'roll') -> None:
         """
-        fov: full angle (rad, default 74 degrees); max_gimbal: the gimbal's roll range (rad, default 25 degrees).
+        fov: full angle (rad, default 74 degrees); max_gimbal: the gimbal's range (rad, default 25 degrees); mount: 'roll', 'pan_tilt' or 'fixed'.
         """
     @property
     def fov(self) -> float:
@@ -288,6 +304,72 @@ class DownwardCamera:
     @max_gimbal.setter
     def max_gimbal(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
+    @property
+    def mount(self) -> str:
+        """
+        'roll', 'pan_tilt' or 'fixed'
+        """
+    @mount.setter
+    def mount(self, arg1: str) -> None:
+        ...
+class SinusoidShape:
+    """
+    The sinusoid the planner flies at a speed ratio.
+    """
+    @property
+    def amplitude(self) -> float:
+        """
+        A, m
+        """
+    @property
+    def curvature_limited(self) -> bool:
+        """
+        D is the curvature floor 2 pi a rho
+        """
+    @property
+    def period_distance(self) -> float:
+        """
+        D, m
+        """
+    @property
+    def slope(self) -> float:
+        """
+        a = A' = 2 pi A / D
+        """
+class ThresholdChoice:
+    """
+    The threshold the planner uses and the numbers behind it.
+    """
+    @property
+    def amplitude(self) -> float:
+        """
+        A at sigma_u, m
+        """
+    @property
+    def automatic(self) -> bool:
+        """
+        picked from the camera
+        """
+    @property
+    def beyond_reach(self) -> bool:
+        """
+        A > w
+        """
+    @property
+    def reach(self) -> float:
+        """
+        w, the camera's lateral reach, m
+        """
+    @property
+    def threshold(self) -> float:
+        """
+        h used
+        """
+    @property
+    def upper_ratio(self) -> float:
+        """
+        sigma_u = h + band / 2
+        """
 class LoiterShape:
     """
     The loiter pattern about its centre by arc length (circle or rose).
@@ -324,11 +406,55 @@ class LoiterShape:
         """
         the rose's turn radius rho, m
         """
+class VehicleReportOptions:
+    """
+    The vehicle's 1 Hz reports as a radio link delivers them (beyond the paper).
+    """
+    def __init__(self, *, position_noise: typing.SupportsFloat | typing.SupportsIndex = 0.0, velocity_noise: typing.SupportsFloat | typing.SupportsIndex = 0.0, latency: typing.SupportsFloat | typing.SupportsIndex = 0.0, dropout: typing.SupportsFloat | typing.SupportsIndex = 0.0, timeout: typing.SupportsFloat | typing.SupportsIndex = 5.0, seed: typing.SupportsInt | typing.SupportsIndex = 1) -> None:
+        """
+        position_noise m and velocity_noise m/s (standard deviations per axis), latency s, dropout (probability a report is lost), timeout s (no fresh report for this long: the vehicle is lost), seed.
+        """
+    @property
+    def dropout(self) -> float:
+        """
+        probability
+        """
+    @property
+    def latency(self) -> float:
+        """
+        s
+        """
+    @property
+    def position_noise(self) -> float:
+        """
+        m
+        """
+    @property
+    def seed(self) -> int:
+        ...
+    @property
+    def timeout(self) -> float:
+        """
+        s
+        """
+    @property
+    def velocity_noise(self) -> float:
+        """
+        m/s
+        """
 class FollowObservation:
     """
     What the planner sees at an update.
     """
     def __init__(self, *, vehicle_position: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], vehicle_velocity: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], vehicle_heading: typing.SupportsFloat | typing.SupportsIndex = 0.0, uav_position: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., uav_heading: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_rate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ...) -> None:
+        ...
+    @property
+    def lost(self) -> bool:
+        """
+        no fresh report: orbit the vehicle's estimate
+        """
+    @lost.setter
+    def lost(self, arg0: bool) -> None:
         ...
     @property
     def offset_rate(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
@@ -391,6 +517,11 @@ class FollowTick:
         offset point's velocity in the planning frame
         """
     @property
+    def lost(self) -> bool:
+        """
+        orbiting the vehicle's estimate
+        """
+    @property
     def mode(self) -> str:
         """
         'sinusoid' | 'loiter' | 'straight'
@@ -426,6 +557,16 @@ class FollowTick:
         sinusoid phase, rad
         """
     @property
+    def predicted_camera(self) -> float:
+        """
+        strategy auto: the chosen pattern's predicted camera fraction (-1: none)
+        """
+    @property
+    def radius(self) -> float:
+        """
+        standoff orbit radius, m
+        """
+    @property
     def speed_ratio(self) -> float:
         """
         sigma (inf when the offset point stands in the frame)
@@ -446,6 +587,11 @@ class FollowTick:
         v_p planned with, m/s
         """
     @property
+    def vehicle_predicted(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        the vehicle update_period later, predicted (the waypoint's region of interest), m
+        """
+    @property
     def waypoint(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
         """
         the waypoint issued at t, m
@@ -454,9 +600,9 @@ class FollowPlanner:
     """
     The 1 Hz follow planner of sections II-V.
     """
-    def __init__(self, parameters: FollowParameters, uav: vistrack._core.Uav, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ...) -> None:
+    def __init__(self, parameters: FollowParameters, uav: vistrack._core.Uav, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] = ..., camera: DownwardCamera = ...) -> None:
         """
-        wind_estimate (east, north) m/s is used with compensation.
+        wind_estimate (east, north) m/s is used with compensation; camera: what an 'auto' threshold is picked for.
         """
     def next_mode(self, current: str, speed_ratio: typing.SupportsFloat | typing.SupportsIndex) -> str:
         """
@@ -466,9 +612,17 @@ class FollowPlanner:
         """
         O - vehicle for that heading.
         """
+    def orbit_radius(self, frame_speed: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        Radius of the planner's orbits about an offset point moving at frame_speed (Lemma 6), m.
+        """
     def planned_path(self, tick: FollowTick, horizon: typing.SupportsFloat | typing.SupportsIndex, step: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
         """
         The planned ground path from the tick on, (n, 2): O + O_dot tau + relative_position(tick, tau) at tau = 0, step, ..., horizon (what flight.guidance l1 flies).
+        """
+    def predicted_camera(self, tick: FollowTick) -> float:
+        """
+        The camera fraction predicted over one steady cycle of the tick's pattern (strategy auto).
         """
     def relative_position(self, tick: FollowTick, tau: typing.SupportsFloat | typing.SupportsIndex) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
         """
@@ -487,6 +641,11 @@ class FollowPlanner:
         """
         The loiter pattern in use.
         """
+    @property
+    def threshold_choice(self) -> ThresholdChoice:
+        """
+        The threshold in use.
+        """
 class FollowMetrics:
     """
     Scores of one follow run (lengths in m, times in s).
@@ -503,8 +662,21 @@ class FollowMetrics:
     def final_along_track_lag(self) -> float:
         ...
     @property
+    def lost_episodes(self) -> int:
+        ...
+    @property
+    def lost_time(self) -> float:
+        """
+        s without a report younger than the timeout
+        """
+    @property
     def max_along_track_lag(self) -> float:
         ...
+    @property
+    def max_reacquire_time(self) -> float:
+        """
+        s
+        """
     @property
     def max_tracking_error(self) -> float:
         ...
@@ -520,6 +692,11 @@ class FollowMetrics:
     def mean_offset_error(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
         """
         mean of UAV - offset point (2,)
+        """
+    @property
+    def mean_reacquire_time(self) -> float:
+        """
+        s from a fresh report to the camera
         """
     @property
     def mean_tracking_error(self) -> float:
@@ -542,6 +719,9 @@ class FollowMetrics:
         ...
     @property
     def time_sinusoid(self) -> float:
+        ...
+    @property
+    def time_standoff(self) -> float:
         ...
     @property
     def time_straight(self) -> float:
@@ -576,6 +756,11 @@ class FollowRun:
         vehicle in the camera footprint (0/1)
         """
     @property
+    def lost(self) -> list[int]:
+        """
+        the vehicle is lost (0/1; empty: never)
+        """
+    @property
     def metrics(self) -> FollowMetrics:
         ...
     @property
@@ -602,6 +787,11 @@ class FollowRun:
     def target(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
         """
         (n, 2) the waypoint flown to
+        """
+    @property
+    def threshold(self) -> ThresholdChoice:
+        """
+        the threshold the planner used
         """
     @property
     def ticks(self) -> list[FollowTick]:
@@ -646,21 +836,29 @@ def arc_length(x: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], ampli
     """
     Arc length of the sinusoid from 0 to x (incomplete elliptic integral of the second kind).
     """
+def camera_reach(camera: DownwardCamera, altitude: typing.SupportsFloat | typing.SupportsIndex) -> float:
+    """
+    w = altitude tan(fov / 2 + max_gimbal): how far to the side a level UAV's camera sees, m.
+    """
 def camera_sees(camera: DownwardCamera, uav: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], psi: typing.SupportsFloat | typing.SupportsIndex, bank: typing.SupportsFloat | typing.SupportsIndex, target: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"]) -> bool:
     """
     Whether the ground point target (3,) is in the footprint of the camera at uav (3,).
+    """
+def camera_threshold(parameters: FollowParameters, uav: vistrack._core.Uav, camera: DownwardCamera = ...) -> ThresholdChoice:
+    """
+    The threshold h the planner uses: with threshold 'auto' the largest whose sinusoid's amplitude at h + band/2 stays within camera_reach; else the user's, with its amplitude and reach.
     """
 def default_uav() -> vistrack._core.Uav:
     """
     The follower's vehicle where a scenario gives none, as a new Uav(speed=21, min_turn_radius=50, altitude=200, dynamics='dubins') (the paper's UAV flies at 20-23 m/s).
     """
-def follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] | None = None, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0, offset_schedule: collections.abc.Sequence[tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]] = []) -> FollowRun:
+def follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, wind_estimate: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"] | None = None, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0, offset_schedule: collections.abc.Sequence[tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]] = [], reports: VehicleReportOptions = ...) -> FollowRun:
     """
-    Fly the follow planner's 1 Hz waypoints with the flight layer (the waypoint paper's law (5), a WaypointFollower fed during the flight). wind: the true wind (vistrack.flight.Wind); wind_estimate (east, north): what the planner compensates (None: the true constant wind). start: (x, y, psi) or None (on the planned path). offset_schedule: (t, distance, angle) keys, linear in between.
+    Fly the follow planner's 1 Hz waypoints with the flight layer (the waypoint paper's law (5), a WaypointFollower fed during the flight). wind: the true wind (vistrack.flight.Wind); wind_estimate (east, north): what the planner compensates (None: the true constant wind). start: (x, y, psi) or None (on the planned path). offset_schedule: (t, distance, angle) keys, linear in between. reports: what the UAV knows of the vehicle (VehicleReportOptions; default: the truth at each update).
     """
-def orbit_follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, control: vistrack._core.Control, radius: typing.SupportsFloat | typing.SupportsIndex, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0) -> FollowRun:
+def orbit_follow(vehicle: GroundVehicle, uav: vistrack._core.Uav, control: vistrack._core.Control, radius: typing.SupportsFloat | typing.SupportsIndex, parameters: FollowParameters, wind: vistrack._core.flight.Wind = ..., *, flight: FollowFlight = ..., camera: DownwardCamera = ..., start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"] | None = None, path_window: typing.SupportsFloat | typing.SupportsIndex = 10.0, offset_schedule: collections.abc.Sequence[tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]] = [], reports: VehicleReportOptions = ...) -> FollowRun:
     """
-    The baseline follower: the tracking paper's vector field (74) and steering law (86) orbiting the offset point (from parameters) at a constant radius, flown by the flight layer in the true wind. The result's desired position is the orbit's nearest point.
+    The baseline follower: the tracking paper's vector field (74) and steering law (86) orbiting the offset point (from parameters and offset_schedule) at a constant radius, flown by the flight layer in the true wind, knowing the vehicle from the same reports as the planner (at each update, carried along its velocity in between). The result's desired position is the orbit's nearest point.
     """
 def phase_at_arc(arc: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], amplitude: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period_distance: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
     """
@@ -669,6 +867,10 @@ def phase_at_arc(arc: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], a
 def sinusoid_amplitude(speed_ratio: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period_distance: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
     """
     Amplitude A (m) of y = A sin(2 pi x / D) whose arc length over one period D is speed_ratio * D (eqs. 9-10: sigma = (2/pi) E(-A'^2), A' = 2 pi A / D), to 1e-12 relative. speed_ratio >= 1 (1 gives 0). Scalars or numpy arrays.
+    """
+def sinusoid_shape(speed_ratio: typing.SupportsFloat | typing.SupportsIndex, uav_speed: typing.SupportsFloat | typing.SupportsIndex, period: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex) -> SinusoidShape:
+    """
+    D = max(v_p T / sigma, 2 pi a rho) and A = a D / (2 pi): the sinusoid the planner flies (rho = turn_margin r_min).
     """
 def sinusoid_slope(speed_ratio: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
     """

@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core.flight
-__all__: list[str] = ['CASES', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'Options', 'TurningPoint', 'TurningPointRecord', 'TurningPoints', 'horizon_lengths', 'horizon_path', 'navigate', 'reachability', 'turning_point', 'turning_points']
+__all__: list[str] = ['CASES', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'Options', 'TurningPoint', 'TurningPointRecord', 'TurningPoints', 'air_mass_turning_point', 'horizon_lengths', 'horizon_path', 'navigate', 'navigation_metrics', 'reachability', 'turning_point', 'turning_points']
 class HorizonPath:
     """
     The horizon path C -> arc -> straight -> T_n -> arc through W_n -> straight -> W_{n+1}.
@@ -134,11 +134,32 @@ class DubinsWaypointGuidance(vistrack._core.flight.FlightGuidance):
         """
         The same with each leg to a turning point flown by L1 line tracking (law: L1Line).
         """
+    def set_path_following(self, speed: typing.SupportsFloat | typing.SupportsIndex, anticipation: typing.SupportsFloat | typing.SupportsIndex, lookahead_radii: typing.SupportsFloat | typing.SupportsIndex = 1.0, heading_gain: typing.SupportsFloat | typing.SupportsIndex = 3.0) -> None:
+        """
+        Beyond the paper: fly each planned horizon path (first arc, straight to T_n, arc through W_n, straight to W_{n+1}) with PathFollower at airspeed speed, its curvature feed-forward anticipation s ahead (a banking vehicle's roll lag), instead of the leg law to T_n; the last waypoint along the last plan's tail.
+        """
+    def set_wind(self, mean_wind: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], speed: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        Plan every turning point in the air mass of the mean wind (east, north) at airspeed speed, the law flying the air frame's line (give it a law without wind); (0, 0): the paper's planning.
+        """
     @property
     def active(self) -> int:
         """
         index of the waypoint being approached
         """
+    @property
+    def path_following(self) -> bool:
+        """
+        True once set_path_following was called
+        """
+    @property
+    def replan_interval(self) -> float:
+        """
+        re-plan the active turning point every so many s (section 2.1); 0: at the reachability switch
+        """
+    @replan_interval.setter
+    def replan_interval(self, arg1: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
     @property
     def turning_points(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
         """
@@ -148,6 +169,11 @@ class TurningPointRecord:
     """
     One turning point planned during a DWN flight.
     """
+    @property
+    def air_point(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        (x, y) the turning point as a point of the air mass when planned (drifts with wind)
+        """
     @property
     def direct(self) -> bool:
         """
@@ -172,6 +198,11 @@ class TurningPointRecord:
     def waypoint(self) -> int:
         """
         index of its waypoint in the flown list
+        """
+    @property
+    def wind(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        (east, north) mean wind it was planned in the air mass of; (0, 0): in still air
         """
 class NavigationResult:
     """
@@ -255,12 +286,20 @@ class Options:
     """
     One navigation flight's settings; the defaults (the paper's section 3) are those of navigate() and fly().
     """
-    def __init__(self, *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0, wind_aware: bool = False) -> None:
+    def __init__(self, *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0, wind_aware: bool = False, replan_interval: typing.SupportsFloat | typing.SupportsIndex = 0.0, dwn_tracking: str = 'auto', path_anticipation: typing.SupportsFloat | typing.SupportsIndex | None = None) -> None:
         """
-        method 'dwn', 'wn' or 'wn_passed_line'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP (None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + 2 pi R per waypoint) / v); dynamics 'dubins' or 'roll' (metres and seconds) with the roll model's roll_time_constant (s) and max_roll_rate_deg_s; guidance 'law5' (the paper's law (5) with gains) or 'l1' (L1 line tracking, period l1_period s, damping 0.75) on every leg; wind_aware: the leg law steers the course over the ground with the known mean wind.
+        method 'dwn', 'wn' or 'wn_passed_line'; turn_radius R; speed v; law step dt; gains (g, h); waypoint_radius: WN's R_WP (None: R); weights (w_a, w_s); integration 'discrete' or 'continuous'; max_time (None: 3 (route length + 2 pi R per waypoint) / v); dynamics 'dubins' or 'roll' (metres and seconds) with the roll model's roll_time_constant (s) and max_roll_rate_deg_s; guidance 'law5' (the paper's law (5) with gains) or 'l1' (L1 line tracking, period l1_period s, damping 0.75) on every leg; wind_aware: the leg law steers the course over the ground with the known mean wind (and DWN plans its turning points in the air mass); replan_interval: DWN re-plans the active turning point every so many seconds (0: only at the reachability switch, the paper's flights); dwn_tracking (beyond the paper) 'paper' (the leg law to each turning point), 'path' (the planned horizon path followed in closed loop, the roll anticipated path_anticipation s ahead, None: the roll model's lag) or 'auto' ('paper' on dubins, 'path' on roll).
         """
     def __repr__(self) -> str:
         ...
+    def resolved_tracking(self) -> str:
+        """
+        What 'auto' means for this vehicle.
+        """
+    def roll_lag(self) -> float:
+        """
+        The roll model's lag, s: the heading lost to the bank's response to a step 0 -> phi_max, integral of (1 - phi / phi_max) dt (tau without the rate limit; 0 on dubins).
+        """
     def validate(self) -> None:
         """
         Raise VistrackError naming the first invalid field.
@@ -272,6 +311,14 @@ class Options:
         """
     @dt.setter
     def dt(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def dwn_tracking(self) -> str:
+        """
+        DWN: 'paper' (the leg law to each turning point), 'path' (the planned path followed, beyond the paper) or 'auto' ('paper' on dubins, 'path' on roll)
+        """
+    @dwn_tracking.setter
+    def dwn_tracking(self, arg0: str) -> None:
         ...
     @property
     def dynamics(self) -> str:
@@ -338,6 +385,22 @@ class Options:
     def method(self, arg0: str) -> None:
         ...
     @property
+    def path_anticipation(self) -> float | None:
+        """
+        DWN 'path': the feed-forward's lead, s; None: roll_lag()
+        """
+    @path_anticipation.setter
+    def path_anticipation(self, arg0: typing.SupportsFloat | typing.SupportsIndex | None) -> None:
+        ...
+    @property
+    def replan_interval(self) -> float:
+        """
+        DWN: re-plan the active turning point every so many seconds; 0: at the reachability switch only
+        """
+    @replan_interval.setter
+    def replan_interval(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
     def roll_time_constant(self) -> float:
         """
         roll model: tau, s
@@ -385,6 +448,10 @@ class Options:
     @wind_aware.setter
     def wind_aware(self, arg0: bool) -> None:
         ...
+def air_mass_turning_point(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], w_next: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], w_after: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, speed: typing.SupportsFloat | typing.SupportsIndex, wind: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> TurningPoint:
+    """
+    Turning point planned in the air mass of the mean wind (east, north) at airspeed speed: the horizon solved for the waypoints as the air sees them (W - wind tau, tau from the path's arc lengths), mapped back to the ground (each point moved by wind x the time the vehicle reaches it). Wind (0, 0): turning_point.
+    """
 def horizon_lengths(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], w_next: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], w_after: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex, case: str, thetas: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> numpy.typing.NDArray[numpy.float64]:
     """
     F(theta) of one case at each theta (inf where the path does not exist).
@@ -393,9 +460,13 @@ def horizon_path(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing
     """
     The horizon path of one case at one theta.
     """
-def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), wind: vistrack._core.flight.Wind | None = None, integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0, wind_aware: bool = False) -> NavigationResult:
+def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], *, method: str = 'dwn', turn_radius: typing.SupportsFloat | typing.SupportsIndex = 0.7, speed: typing.SupportsFloat | typing.SupportsIndex = 0.8, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02, gains: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (0.1, 5.25), waypoint_radius: typing.SupportsFloat | typing.SupportsIndex | None = None, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0), wind: vistrack._core.flight.Wind | None = None, integration: str = 'discrete', max_time: typing.SupportsFloat | typing.SupportsIndex | None = None, dynamics: str = 'dubins', roll_time_constant: typing.SupportsFloat | typing.SupportsIndex = 0.5, max_roll_rate_deg_s: typing.SupportsFloat | typing.SupportsIndex = 70.0, guidance: str = 'law5', l1_period: typing.SupportsFloat | typing.SupportsIndex = 17.0, wind_aware: bool = False, replan_interval: typing.SupportsFloat | typing.SupportsIndex = 0.0, dwn_tracking: str = 'auto', path_anticipation: typing.SupportsFloat | typing.SupportsIndex | None = None) -> NavigationResult:
     """
-    Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' vehicle, each leg by 'law5' or 'l1'; returns NavigationResult. Releases the GIL.
+    Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' vehicle, each leg by 'law5' or 'l1' (DWN: or its planned path followed, dwn_tracking 'path'; 'auto': on the roll model); returns NavigationResult. Releases the GIL.
+    """
+def navigation_metrics(t: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], x: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], y: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], command: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], target_index: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex], finished: bool, start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> dict:
+    """
+    The metrics of navigate() (miss distances, reached, over- and undershoot, swirls, path length, duration, fuel) of a flight flown elsewhere (vistrack.fdm): samples t, x, y, the turn-rate command and the guidance's target index, as a dict.
     """
 def reachability(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
     """

@@ -3,7 +3,8 @@
 Flies the paper's planner (sinusoid below the speed-ratio threshold, loiter above it with a
 hysteresis band, an offset point, waypoints at 1 Hz) with the flight layer, beside the tracking
 pipeline's vector-field baseline, and, when the scenario has a city section, both again on a city
-road with line of sight through the buildings. Writes figures, trajectory.csv, metrics.json,
+road with line of sight through the buildings. Writes figures, trajectory.csv, updates.csv (the
+planner's effective sigma, T, D, A per update), metrics.json,
 report.md, trajectory.gif (plan view: vehicle, UAV, camera footprint, wind, line of sight on the
 city road; trajectory_open.gif then adds the open-ground run) and report.html (the same in 3D
 with a time slider, and the report) to --out. Scenario keys: see vistrack/follow/scenario.py and
@@ -16,11 +17,13 @@ import argparse
 from pathlib import Path
 from typing import Any, Optional
 
+from ..follow.keys import threshold_value
 from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
+from ..report.follow_city import city_orbit_line
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
 from .output import add_report_arguments, output_folder, report_options
-from .types import add_dynamics_argument, number
+from .types import add_dynamics_argument, fdm_choice, number
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -32,7 +35,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--no-compensation", dest="compensation", action="store_false", default=None,
                         help="plan without the wind estimate (the paper's Fig. 6)")
     parser.add_argument("--no-city", dest="city", action="store_false", help="skip the city runs")
-    add_dynamics_argument(parser)
+    parser.add_argument("--threshold", metavar="H", help="follow.threshold over the file's: auto (picked from the "
+                        "camera) or the speed ratio h (3: the paper's method)")
+    add_dynamics_argument(parser, fdm=True)
     parser.add_argument("--export-tolerance", type=number("--export-tolerance", 0.0, 1e7), default=1.0, metavar="M",
                         help="--export keeps the 1 Hz waypoints Douglas-Peucker needs at this tolerance "
                              "(default 1 m; 0: every waypoint)")
@@ -46,8 +51,12 @@ def run(args: argparse.Namespace) -> int:
     options = report_options(args)
     output_folder(args.out)  # a file there is an error now, not after the runs
     scenario = FollowScenario.load(args.scenario)
-    if args.dynamics is not None:
-        scenario.uav.dynamics = args.dynamics
+    dynamics, aircraft = fdm_choice(args)
+    if dynamics is not None:
+        scenario.uav.dynamics = dynamics
+    scenario.aircraft = aircraft or scenario.aircraft
+    if args.threshold is not None:
+        scenario.parameters.threshold = threshold_value("--threshold", args.threshold)
     city = args.city and scenario.city_available()
     if args.city and scenario.city is not None and not city:
         print(f"city data not found ({scenario.city.describe()}): skipping the city runs")
@@ -55,11 +64,19 @@ def run(args: argparse.Namespace) -> int:
     record = write_follow(study, args.out, scenario.description, options)
     modes = ", ".join(f"{k} {v:.0f} s" for k, v in record["time_in_mode_s"].items() if v > 0)
     print(f"tracking error {record['mean_tracking_error_m']:.2f} m mean, {record['max_tracking_error_m']:.1f} m max; "
-          f"lag {record['along_track_lag_m']:.1f} m; {modes}; {record['mode_switches']} switches; "
+          f"lag {record['along_track_lag_m']:.1f} m; {modes}; {_count(record['mode_switches'], 'switch')}; "
           f"camera {100 * record['camera_fraction']:.1f} %"
           + _baseline_summary(record.get("baseline")) + f" -> {args.out}")
+    for warning in record.get("warnings", []):
+        print(f"warning: {warning}")
+    if "fdm" in record:
+        six = record["fdm"]
+        print(f"6-DOF on {six['aircraft']} (JSBSim): camera {100 * six['camera_fraction']:.1f} %, altitude within "
+              f"{six['altitude_error_max_m']:.2f} m, airspeed within {six['airspeed_error_max_m_s']:.2f} m/s")
     if "note" in record:
         print(f"note: {record['note']}")
+    if (line := city_orbit_line(record.get("city"))) is not None:
+        print(line)
     uav = scenario.uav
     export_mission(args.export, lambda ref: study.follow.to_mission(
         ref, uav.altitude, speed=uav.speed, tolerance=args.export_tolerance), args.origin or scenario.origin, None,
@@ -73,3 +90,8 @@ def _baseline_summary(block: Optional[dict[str, Any]]) -> str:
     if not block["feasible"]:
         return f" (baseline not flown: {block['reason']})"
     return f" (baseline {100 * block['camera_fraction']:.1f} %)"
+
+
+def _count(n: int, noun: str) -> str:
+    """"1 switch", "2 switches"."""
+    return f"{n} {noun}" if n == 1 else f"{n} {noun}{'es' if noun.endswith(('s', 'sh', 'ch', 'x')) else 's'}"

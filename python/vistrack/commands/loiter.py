@@ -1,14 +1,11 @@
 """``vistrack loiter``: Fly-Through, TLPP and LDLPP loiter plans over areas of interest, scored by
-camera coverage (Wilhelm, Clem, Eberhart 2017).
-
-One scenario file: plans.png (the methods side by side), metrics.json, path_<method>.csv,
-report.md, trajectory.gif (plan view: AOIs, plans, every method's aircraft at once with the camera
-footprint the coverage scores, in the first --wind when given) and report.html (the same in 3D with
-a time slider, and the report). Several files: the same per scenario in sub-folders, plus
-table.md / table.json (ours beside Table 1), fig13_scenarios.png and fig14_comparison.png.
---random N: N seeded random scenarios, the distributions per method (random.md, random.json,
-random_distribution.png).
-"""
+camera coverage (Wilhelm, Clem, Eberhart 2017). One scenario file: plans.png, metrics.json,
+path_<method>.csv, report.md, trajectory.gif (every method's aircraft with the camera footprint
+the coverage scores, in the first --wind when given) and report.html (the same in 3D, and the
+report). Several files: the same per scenario in sub-folders, plus table.md / table.json (ours
+beside Table 1), fig13_scenarios.png and fig14_comparison.png. --random N: N seeded random
+scenarios, the distributions per method. A city block (beyond the paper): loiter circles inside
+each AOI's visibility polygon at uav.altitude, coverage with line of sight."""
 
 from __future__ import annotations
 
@@ -21,10 +18,11 @@ from .._core import VistrackError
 from ..loiter import study as loiter_study
 from ..progress import Progress
 from ..report import loiter as report
+from ..report import loiter_city as report_city
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_missions
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
-from .types import UsageError, add_dynamics_argument, count, length
+from .types import UsageError, add_dynamics_argument, count, fdm_choice, length
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -48,7 +46,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                    help="also fly every plan in winds of these speeds (m/s) from 8 directions")
     p.add_argument("--altitude", type=length("--altitude"),
                    help="mission altitude for --export, m (default: the camera's, 61 m)")
-    add_dynamics_argument(p)
+    add_dynamics_argument(p, fdm=True)
     add_export_arguments(p)
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     add_report_arguments(p)
@@ -75,10 +73,17 @@ def run(args: argparse.Namespace) -> int:
         if not args.scenarios:
             raise UsageError("scenarios: give at least one scenario file, or --random N")
         scenarios = [loiter.load_scenario(path) for path in args.scenarios]
+        dynamics, aircraft = fdm_choice(args)
         for scenario in scenarios:
-            scenario.dynamics = args.dynamics or scenario.dynamics
+            scenario.dynamics, scenario.aircraft = dynamics or scenario.dynamics, aircraft or scenario.aircraft
         rows, written, planned = [], [], 0
         for scenario in scenarios:  # (--export takes one: its plans are these runs')
+            folder = args.out if len(scenarios) == 1 else args.out / scenario.name
+            if scenario.city is not None:  # beyond every anchor: loiter circles in visibility polygons
+                files, lines, plans = report_city.run_city(folder, scenario, args.method, args.order)
+                print(*lines, sep="\n")
+                written, planned = written + files, planned + bool(plans)
+                continue
             refused: dict[str, str] = {}
             runs = loiter_study.evaluate(scenario, args.method, args.order, winds, refused)
             for method, reason in refused.items():
@@ -87,7 +92,6 @@ def run(args: argparse.Namespace) -> int:
                 continue
             planned += 1
             plans = {run.method: run.plan if run.best_plan is None else run.best_plan for run in runs}
-            folder = args.out if len(scenarios) == 1 else args.out / scenario.name
             written += report.write_scenario(folder, scenario, runs, options, given[0] if given else None)
             rows += [run.record(scenario) for run in runs]
             for run in runs:
@@ -101,7 +105,7 @@ def run(args: argparse.Namespace) -> int:
             raise VistrackError("--method: no method given can fly " + ("this layout" if len(scenarios) == 1 else
                                                                          "any of these layouts"))
         if winds and len(scenarios) == 1:
-            print(report.wind_markdown(loiter_study.wind_summary(rows)), end="")
+            print(report.wind_markdown(loiter_study.wind_summary(rows)) + report.fdm_markdown(rows), end="")
         if len(scenarios) > 1:
             written += report.write_table(args.out, scenarios, rows)
             print((args.out / "table.md").read_text(encoding="utf-8"), end="")

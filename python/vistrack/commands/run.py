@@ -10,7 +10,7 @@ from typing import Any
 from ..tracking.scenario import Scenario, default_scenario_text
 from .export import add_export_arguments, check_exports, export_plan
 from .output import add_report_arguments, output_folder, report_options
-from .types import UsageError, add_dynamics_argument, count
+from .types import UsageError, add_dynamics_argument, count, fdm_choice
 
 
 def register(subparsers: Any) -> None:
@@ -29,7 +29,7 @@ def register(subparsers: Any) -> None:
                         help="allow plans that may need up to this many VVs (default: the scenario's "
                              "planning.max_volumes, else 20000; ~4.7 MB each at 1 degree)")
     add_export_arguments(parser)
-    add_dynamics_argument(parser)
+    add_dynamics_argument(parser, fdm=True)
     parser.add_argument("--quiet", action="store_true", help="no progress output")
     parser.add_argument("--print-defaults", action="store_true",
                         help="print a complete scenario with every default and exit")
@@ -53,6 +53,11 @@ def run_scenario(scenario: Scenario, out: Path, cache: str | None, quiet: bool, 
     other = m.get("other_model")
     if other:
         print(f"  the same plan on the {other['dynamics']} model: visible {percent(other['visibility_fraction'])}")
+    six = m.get("fdm")
+    if six:
+        print(f"  6-DOF on {six['aircraft']} (JSBSim): visible {percent(six['simulation']['visibility_fraction'])}, "
+              f"altitude within {six['altitude_error_max_m']:.2f} m, airspeed within "
+              f"{six['airspeed_error_max_m_s']:.2f} m/s")
     for radius, baseline in m["baselines"].items():
         print(f"  constant R = {radius} m: visible {percent(baseline['visibility_fraction'])}")
     cache = m.get("volume_cache")
@@ -80,8 +85,11 @@ def main(args: argparse.Namespace) -> int:
         scenario.origin = args.origin
     if args.max_volumes is not None:
         scenario.planning.max_volumes = args.max_volumes
-    if args.dynamics is not None:
-        scenario.uav.dynamics = args.dynamics
+    dynamics, aircraft = fdm_choice(args)
+    if dynamics is not None:
+        scenario.uav.dynamics = dynamics
+    if aircraft is not None:
+        scenario.aircraft = aircraft
     scenario.report = report_options(args, scenario.report)
     check_exports(args.export, scenario.origin, scenario.environment.path)
     out = output_folder(args.out if args.out else Path("vistrack-out") / scenario.name)

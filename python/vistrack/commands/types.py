@@ -9,7 +9,8 @@ from typing import Any, Callable
 from .. import schema
 from .._core import VistrackError
 
-__all__ = ["UsageError", "add_dynamics_argument", "checked", "coordinate", "count", "length", "number", "speed"]
+__all__ = ["UsageError", "add_dynamics_argument", "checked", "coordinate", "count", "fdm_choice", "length", "number",
+           "speed"]
 
 
 class UsageError(VistrackError):
@@ -73,12 +74,29 @@ def count(flag: str, low: int, high: int) -> Callable[[str], int]:
     return checked(flag, parse, numeric=False)
 
 
-def add_dynamics_argument(parser: argparse.ArgumentParser, default: str | None = None) -> None:
+def add_dynamics_argument(parser: argparse.ArgumentParser, default: str | None = None, fdm: bool = False) -> None:
     """``--dynamics roll|dubins``: the vehicle model every flight of the command uses (None: the
-    scenario's ``uav.dynamics``, whose default is roll)."""
-    from ..scenario_blocks import DYNAMICS
+    scenario's ``uav.dynamics``, whose default is roll). With ``fdm``, also ``jsbsim`` and
+    ``--aircraft NAME``: the flights are flown on the 6-DOF aircraft too (:func:`fdm_choice`)."""
+    from ..scenario_blocks import DYNAMICS, FDM_DYNAMICS
 
-    parser.add_argument("--dynamics", choices=DYNAMICS, default=default,
+    parser.add_argument("--dynamics", choices=(*DYNAMICS, FDM_DYNAMICS) if fdm else DYNAMICS, default=default,
                         help="vehicle model: roll (the bank a first-order, rate-limited state) or dubins (the "
-                             "turn rate at once, the papers' vehicle); default: "
-                             + (default or "the scenario's uav.dynamics, else roll"))
+                             "turn rate at once, the papers' vehicle)"
+                             + ("; jsbsim: also on a 6-DOF JSBSim aircraft with vistrack's autopilot" if fdm else "")
+                             + "; default: " + (default or "the scenario's uav.dynamics, else roll"))
+    if fdm:
+        parser.add_argument("--aircraft", default=None,
+                            help="the 6-DOF aircraft of --dynamics jsbsim (default aerosonde; also c172p)")
+
+
+def fdm_choice(args: argparse.Namespace) -> tuple[str | None, str | None]:
+    """(kinematic model or None: the scenario's, 6-DOF aircraft or None) from --dynamics and --aircraft."""
+    from ..scenario_blocks import FDM_DYNAMICS, aircraft_name
+
+    aircraft = getattr(args, "aircraft", None)  # the sweeps' namespaces have no --aircraft
+    if args.dynamics == FDM_DYNAMICS:
+        return None, aircraft_name(aircraft)
+    if aircraft is not None:
+        raise UsageError(f"--aircraft {aircraft} needs --dynamics {FDM_DYNAMICS}")
+    return args.dynamics, None

@@ -13,10 +13,17 @@ import numpy as np
 from .. import waypoint_nav as wn
 from .._core import Uav
 from ..flight import paper_gains
-from .types import UsageError
+from .types import UsageError, fdm_choice
 
 # The follow runs' L1 period (FollowFlight.l1): L1 = 0.75 * 8 * v / pi = 38 m at 20 m/s, under R = 50 m.
 L1_PERIOD = 8.0
+
+
+def add_dwn_tracking_argument(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--dwn-tracking", choices=["auto", "paper", "path"], default="auto",
+                        help="how DWN flies its plan: paper (the leg law to each turning point), path (beyond the "
+                             "paper: the planned path followed, the roll anticipated); default auto: paper on the "
+                             "dubins vehicle, path on the roll model and a 6-DOF aircraft")
 
 
 def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any]:
@@ -26,7 +33,7 @@ def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any
     paper = args.paper_units
     R = args.turn_radius if args.turn_radius is not None else (d["turn_radius"] if paper else Uav().min_turn_radius)
     v = args.speed if args.speed is not None else (d["speed"] if paper else Uav().speed)
-    dynamics = args.dynamics or ("dubins" if paper else "roll")
+    dynamics = fdm_choice(args)[0] or ("dubins" if paper else "roll")
     if paper and dynamics != "dubins":
         # The roll model needs g in m/s^2; the paper's units are dimensionless.
         raise UsageError(f"--dynamics = {dynamics}: the waypoint paper's dimensionless units (--paper-units) fly the "
@@ -42,4 +49,13 @@ def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any
     return {"turn_radius": R, "speed": v, "dt": args.dt, "integration": args.integration, "gains": gains,
             "dynamics": dynamics, "roll_time_constant": Uav().roll_time_constant,
             "max_roll_rate_deg_s": Uav().max_roll_rate_deg_s, "guidance": args.guidance or ("law5" if paper else "l1"),
-            "l1_period": args.l1_period, "wind_aware": args.wind_aware}
+            "l1_period": args.l1_period, "wind_aware": args.wind_aware,
+            "replan_interval": args.replan_interval, "dwn_tracking": getattr(args, "dwn_tracking", "auto")}
+
+
+def fdm_aircraft(args: argparse.Namespace) -> str | None:
+    """The 6-DOF aircraft of --dynamics jsbsim (None without it); refused in the paper's units."""
+    aircraft = fdm_choice(args)[1]
+    if aircraft is not None and args.paper_units:
+        raise UsageError("--dynamics jsbsim: a 6-DOF aircraft flies routes in metres, not --paper-units")
+    return aircraft

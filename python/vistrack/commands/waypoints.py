@@ -20,11 +20,12 @@ from .._core import Uav
 from ..flight import Wind
 from ..progress import Progress
 from ..report.waypoint_nav import write_waypoints
+from ..waypoint_nav.fdm import fdm_flights
 from .export import add_export_arguments, check_exports, export_mission
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
 from .types import add_dynamics_argument, coordinate, count, length, number, speed
-from .waypoint_units import L1_PERIOD, flight_options
+from .waypoint_units import L1_PERIOD, add_dwn_tracking_argument, fdm_aircraft, flight_options
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -33,8 +34,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                                    description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("route", type=Path, help="route: CSV with columns x,y (metres; the paper's units with "
                                                  "--paper-units), a .plan / .waypoints mission, or GeoJSON")
-    parser.add_argument("--paper-units", action="store_true",
-                        help="the paper's dimensionless units and settings (R 0.7, v 0.8, law (5), Dubins vehicle)")
+    parser.add_argument("--paper-units", action="store_true", help="the paper's units (R 0.7, v 0.8, law (5), Dubins)")
     parser.add_argument("--method", choices=[*wn.METHODS, "both", "all"], default="both",
                         help="dwn, wn (the paper's), wn_passed_line (ArduPlane's switching, beyond the paper); "
                              "both: dwn and wn (the default); all: the three")
@@ -43,8 +43,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--wind", type=finite_numbers("--wind", 2, "0,2", 1e4), default=[0.0, 0.0],
                         help="constant wind east,north: the velocity of the air, pointing where it blows to "
                              "(route units per second; default 0,0)")
-    parser.add_argument("--gusts", type=count("--gusts", 0, 2**63 - 1), metavar="SEED",
-                        help="add Dryden gusts with this seed (light turbulence, MIL-F-8785C, see vt.waypoint_nav)")
+    parser.add_argument("--gusts", type=count("--gusts", 0, 2**63 - 1), metavar="SEED", help="add Dryden gusts "
+                        "with this seed (light turbulence, MIL-F-8785C, see vt.waypoint_nav)")
     parser.add_argument("--turn-radius", type=length("--turn-radius"),
                         help=f"R (default {Uav().min_turn_radius:g} m; {d['turn_radius']} with --paper-units)")
     parser.add_argument("--speed", type=speed("--speed"),
@@ -56,8 +56,11 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                              "law5 with --paper-units")
     parser.add_argument("--l1-period", type=number("--l1-period", 0.0, 3600.0, low_open=True), default=L1_PERIOD,
                         help=f"guidance l1: the L1 period, s (default {L1_PERIOD:g}, as the follow runs fly)")
-    parser.add_argument("--wind-aware", action="store_true",
-                        help="the leg law knows the mean wind (--wind) and steers the course over the ground")
+    parser.add_argument("--wind-aware", action="store_true", help="the guidance knows the mean wind (--wind): the "
+                        "leg law steers the course over the ground, DWN plans its turning points in the air mass")
+    parser.add_argument("--replan-interval", type=number("--replan-interval", 0.0, 3600.0), default=0.0,
+                        help="DWN re-plans its turning point every so many s (default 0: when unreachable)")
+    add_dwn_tracking_argument(parser)
     parser.add_argument("--gains", type=finite_numbers("--gains", 2, "0.1,5.25"),
                         help="law (5)'s g,h (default the paper's 0.1,5.25, scaled by 0.7 / R in metres)")
     parser.add_argument("--integration", choices=["discrete", "continuous"], default=d["integration"])
@@ -71,7 +74,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                         help="flight altitude for --export and the gusts in metres, m (default 60)")
     add_export_arguments(parser)
     add_report_arguments(parser)
-    add_dynamics_argument(parser, None)
+    add_dynamics_argument(parser, None, fdm=True)
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     parser.add_argument("--out", type=Path, default=Path("waypoints_out"), help="output folder")
     parser.set_defaults(func=run)
@@ -80,12 +83,11 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     route = wn.read_route(args.route, args.origin, "ROUTE")
     origin = args.origin or wn.route_georeference(args.route, "ROUTE")  # a mission's home places its export
-    options = flight_options(args, route)
+    options, aircraft = flight_options(args, route), fdm_aircraft(args)
     check_exports(args.export, origin, None)  # no origin: an error before any output
     output_folder(args.out)  # a file there is an error now, not after the flights
     east, north = args.wind
-    # Gusts: the paper's reading of its units (1 = 20 m, 1 s), or metres at the flight altitude.
-    model = None if args.paper_units else {"altitude": args.altitude, "length_unit": 1.0, "speed_unit": 1.0}
+    model = None if args.paper_units else {"altitude": args.altitude, "length_unit": 1.0, "speed_unit": 1.0}  # gusts
     wind = Wind(east=east, north=north, gusts=None if args.gusts is None else wn.paper_gusts(args.gusts, model))
     R = options["turn_radius"]
     radii = wn.PAPER_RADII if args.waypoint_radius is None else [r / R for r in args.waypoint_radius]
@@ -99,7 +101,8 @@ def run(args: argparse.Namespace) -> int:
                                 gust_model=model, progress=bar, **options)
     settings = {**options, "units": "paper" if args.paper_units else "metres", "wind": [east, north],
                 "gusts_seed": args.gusts, "radii_over_R": list(radii)}
-    write_waypoints(args.out, flights, wind, str(args.route), settings, weights, mc, report_options(args))
+    six = [] if aircraft is None else fdm_flights(flights, aircraft, wind, args.altitude, options)
+    write_waypoints(args.out, flights, wind, str(args.route), settings, weights, mc, report_options(args), six)
     # The mission carries DWN's turning points when DWN flew, else the first WN flight's waypoints.
     export_mission(args.export, lambda ref: flights[0].to_mission(ref, args.altitude, speed=options["speed"]),
                    origin)
@@ -107,10 +110,11 @@ def run(args: argparse.Namespace) -> int:
           + ("" if args.paper_units else " (metres, m/s)"))
     for f in flights:
         smooth = f.flight.smoothness()
-        before, last = f.miss_distances[:-1], f.miss_distances[-1]
-        print(f"{f.label:>18}: max miss {(before.max() if len(before) else last) / R:.3f} R (the last, where the "
-              f"flight ends: {last / R:.3f} R), overshoot {f.overshoot / R:.3f} R, "
+        print(f"{f.label:>18}: max miss {f.miss_distances.max() / R:.3f} R (the last, at its finish line: "
+              f"{f.miss_distances[-1] / R:.3f} R), overshoot {f.overshoot / R:.3f} R, "
               f"swirls {f.swirls}, path {f.path_length:.4g}, time {f.duration:.4g}, all reached {f.all_reached}, "
               f"{smooth.roll_reversals_per_s:.2f} roll reversals/s")
+    for f6 in six:
+        print(f"{'6-DOF ' + f6.method:>18}: max miss {f6.summary()['max_miss_over_R']:.3f} R on {aircraft}")
     print(f"-> {args.out}")
     return 0

@@ -22,7 +22,9 @@ through the buildings.
 
 - ``simulation``: the API above; ``scenario``: follow scenarios from YAML and the runs
   ``vistrack follow`` makes (old address: ``vistrack.follow_scenario``); ``files``: vehicle tracks, road paths,
-  trajectories as CSV; ``to_mission``: a run's waypoints as an autopilot mission.
+  trajectories as CSV; ``to_mission``: a run's waypoints as an autopilot mission;
+  ``city_orbit`` (beyond the paper): with a city, an orbit about the vehicle inside the visibility
+  polygon of its predicted position.
 """
 
 from __future__ import annotations
@@ -42,27 +44,33 @@ from .simulation import (
     GroundVehicle,
     LoiterShape,
     VehicleLeg,
+    VehicleReportOptions,
     along_track_rate,
     arc_length,
     baseline,
     baseline_infeasibility,
     baseline_radius,
     camera_footprint,
+    camera_reach,
     camera_sees,
+    camera_threshold,
     coordinated_bank,
     default_uav,
     line_of_sight,
     phase_at_arc,
     simulate,
     sinusoid_amplitude,
+    sinusoid_shape,
     sinusoid_slope,
     speed_ratio,
+    threshold_warning,
 )
 
 __all__ = [
     "MODES", "CityRoad", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowScenario", "FollowStudy", "FollowTick", "GroundVehicle",
-    "LoiterShape", "VehicleLeg", "along_track_rate", "arc_length", "baseline", "baseline_infeasibility",
-    "baseline_radius", "camera_footprint", "camera_sees", "coordinated_bank", "default_uav", "line_of_sight",
-    "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_slope", "speed_ratio",
+    "LoiterShape", "VehicleLeg", "VehicleReportOptions", "along_track_rate", "arc_length", "baseline",
+    "baseline_infeasibility", "baseline_radius", "camera_footprint", "camera_reach", "camera_sees", "camera_threshold",
+    "coordinated_bank", "default_uav", "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude",
+    "sinusoid_shape", "sinusoid_slope", "speed_ratio", "threshold_warning",
 ]

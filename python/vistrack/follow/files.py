@@ -9,7 +9,7 @@ import numpy as np
 
 from ..io.tables import numeric_rows
 
-__all__ = ["read_road_path", "read_vehicle_track", "write_follow_trajectory"]
+__all__ = ["read_road_path", "read_vehicle_track", "write_follow_trajectory", "write_follow_updates"]
 
 
 def read_vehicle_track(path: str | Path, key: str = "vehicle.track") -> tuple[np.ndarray, np.ndarray]:
@@ -49,6 +49,28 @@ def write_follow_trajectory(result: Any, path: str | Path) -> Path:
     for i in range(len(mode)):
         cells = [repr(float(v[i])) for v in values[:16]] + [str(mode[i])] + [str(int(v[i])) for v in values[16:]]
         lines.append(",".join(cells))
+    file = Path(path)
+    file.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return file
+
+
+UPDATE_COLUMNS = ("t", "mode", "speed_ratio", "period_s", "period_distance_m", "amplitude_m", "phase", "capturing",
+                  "offset_x", "offset_y", "waypoint_x", "waypoint_y")
+
+
+def write_follow_updates(result: Any, path: str | Path) -> Path:
+    """The planner's updates (1 Hz) as CSV, one per line: t, the mode, the speed ratio sigma and
+    the sinusoid's effective period T (s), period distance D and amplitude A (m; blank outside the
+    sinusoid: T as flown, after the curvature floor), its phase, whether the update held a pattern's
+    entry point, the offset point and the waypoint issued. ``result``: a FollowResult."""
+    lines = [",".join(UPDATE_COLUMNS)]
+    for tick in result.run.ticks:
+        sinusoid = tick.mode == "sinusoid"
+        shape = [repr(float(v)) if sinusoid else "" for v in (tick.period, tick.period_distance, tick.amplitude,
+                                                              tick.phase)]
+        lines.append(",".join([repr(float(tick.t)), tick.mode, repr(float(tick.speed_ratio)), *shape,
+                               str(int(tick.capturing)), *(repr(float(v)) for v in tick.offset_point),
+                               *(repr(float(v)) for v in tick.waypoint)]))
     file = Path(path)
     file.write_text("\n".join(lines) + "\n", encoding="utf-8")
     return file

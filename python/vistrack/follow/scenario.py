@@ -15,14 +15,18 @@ counter-clockwise from east unless a compass word is given)::
       route: {from: [lon, lat], to: [lon, lat], crs: lonlat}   # with legs: the city run drives their
                                   # speeds along this road route of the city (vistrack.routes)
     follow: {period, turn_margin, threshold, hysteresis, loiter_pattern, loiter_radius,
-             loiter_direction, compensation, update_period}
+             loiter_direction, compensation, update_period, strategy, strategy_margin}
+                                  # threshold: auto (default) or h; strategy: paper (default), standoff, auto
     offset: {distance: 0, angle_deg: 0, reference: heading, changes: [{t, distance, angle_deg}]}
     wind: {east: 0, north: 10, gusts: {seed, intensity, length_scale}}  # the true wind (towards)
     wind_estimate: {east: 0, north: 10}      # what the planner compensates (default: the true wind)
-    camera: {fov_deg: 74, max_gimbal_deg: 25, mount: roll}
+    camera: {fov_deg: 74, max_gimbal_deg: 25, mount: roll}   # or pan_tilt (pointed at the vehicle,
+                                  # max_gimbal_deg from the body's down axis), fixed (the paper's camera)
     flight: {dt: 0.02, integration: discrete, max_time: 0, guidance: l1, l1_period: 8, l1_damping: 0.75}
                                   # guidance law5: each 1 s leg by the paper's law (5)
     baseline: {radius: 0, beta: 0.025, k_psi: 20, direction: ccw}   # radius 0: Lemma 6; false: none
+    reports: {position_noise: 0, velocity_noise: 0, latency: 0, dropout: 0, timeout: 5, seed: 1}
+                                  # the vehicle's 1 Hz reports as both followers get them (beyond the paper)
     city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude
                                   # (a CSV polyline; or vehicle.route on the city's road network)
 
@@ -40,7 +44,6 @@ from typing import Any, Callable, Mapping, Optional
 import numpy as np
 
 from .._core import Control, Environment, Uav, VisibilityScene
-from .._core import limits as _limits
 from ..flight import Wind
 from ..georeference import Georeference
 from ..io.documents import read_yaml_mapping
@@ -61,7 +64,10 @@ from ..scenario_blocks import (
 )
 from ..schema import beta as schema_beta
 from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
+from .city_orbit import CityOrbitResult, city_orbit_follow
+from .fdm import FollowFdm, fly_follow_fdm
 from .files import read_road_path, read_vehicle_track
+from .keys import HEADINGS, reports_block, threshold_value, vehicle_legs
 from .simulation import (
     DownwardCamera,
     FollowFlight,
@@ -69,21 +75,21 @@ from .simulation import (
     FollowResult,
     GroundVehicle,
     VehicleLeg,
+    VehicleReportOptions,
     baseline,
     baseline_infeasibility,
     default_uav,
     planner_note,
     simulate,
+    threshold_warning,
 )
 
 __all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy"]
 
-# Compass words as angles counter-clockwise from east (radians).
-HEADINGS = {name: math.radians(deg) for name, deg in (
-    ("east", 0.0), ("northeast", 45.0), ("north", 90.0), ("northwest", 135.0), ("west", 180.0),
-    ("southwest", -135.0), ("south", -90.0), ("southeast", -45.0))}
+# The follow camera's mounts (vt.follow.DownwardCamera.mount), the default first.
+CAMERA_MOUNTS = ("roll", "pan_tilt", "fixed")
 TOP_KEYS = {"description", "georeference", "uav", "vehicle", "follow", "offset", "wind", "wind_estimate", "camera",
-            "flight", "baseline", "city"}
+            "flight", "baseline", "city", "reports"}
 # Spellings from before the one scenario schema, still read (city.map: see _old_city_map).
 RENAMES = (Rename("origin", "georeference", origin_to_georeference),)
 # How scenario files fly the plan unless they say: its planned path by L1 guidance (beyond the
@@ -111,11 +117,13 @@ class FollowScenario:
     flight: FollowFlight = field(default_factory=lambda: FollowFlight(guidance=DEFAULT_LEG_GUIDANCE))
     baseline_radius: Optional[float] = None  # None: Lemma 6 (vt.follow.baseline_radius)
     baseline_control: Optional[Control] = field(default_factory=Control)  # None: no baseline
+    reports: VehicleReportOptions = field(default_factory=VehicleReportOptions)
     city: Optional[City] = None
     route: Optional[dict[str, Any]] = None  # vehicle.route {from, to, crs}: the city run's road route
     description: str = ""
     path: Optional[Path] = None
     origin: Optional[Georeference] = None  # where local (0, 0) lies on the Earth (mission export)
+    aircraft: Optional[str] = None  # uav.dynamics: jsbsim: the planner also flown on this 6-DOF aircraft
 
     @classmethod
     def load(cls, path: str | Path) -> "FollowScenario":
@@ -126,7 +134,8 @@ class FollowScenario:
     def from_mapping(cls, data: Mapping[str, Any], base: Path, path: Optional[Path] = None) -> "FollowScenario":
         data = upgrade(_old_city_map(data), RENAMES)
         reject_unknown(data, TOP_KEYS)
-        uav = uav_block(data, default_uav()).uav
+        block = uav_block(data, default_uav(), fdm=True)
+        uav = block.uav
         vehicle, legs, route = _vehicle(data, base)
         parameters = _parameters(data)
         schedule = _offset_schedule(data)
@@ -137,8 +146,8 @@ class FollowScenario:
             estimate = (number("wind_estimate.east", e.get("east", 0.0)),
                         number("wind_estimate.north", e.get("north", 0.0)))
         defaults = DownwardCamera()
-        c = camera_block(data, math.degrees(defaults.fov), math.degrees(defaults.max_gimbal), mounts=("roll",))
-        camera = DownwardCamera(fov=math.radians(c.fov_deg), max_gimbal=math.radians(c.max_gimbal_deg))
+        c = camera_block(data, math.degrees(defaults.fov), math.degrees(defaults.max_gimbal), mounts=CAMERA_MOUNTS)
+        camera = DownwardCamera(fov=math.radians(c.fov_deg), max_gimbal=math.radians(c.max_gimbal_deg), mount=c.mount)
         f, fd = section(data, "flight", {"dt", "integration", "max_time", "guidance", "l1_period", "l1_damping"}), \
             FollowFlight()
         integration = f.get("integration", fd.integration)
@@ -155,9 +164,9 @@ class FollowScenario:
         radius, control = _baseline(data)
         return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
-                   baseline_control=control, city=_city(data, base, route), route=route,
+                   baseline_control=control, reports=reports_block(data), city=_city(data, base, route), route=route,
                    description=str(data.get("description", "")),
-                   path=path, origin=georeference_block(data))
+                   path=path, origin=georeference_block(data), aircraft=block.aircraft)
 
     def city_available(self) -> bool:
         """Whether the scenario has a city section whose map and road files exist (the shared
@@ -192,10 +201,11 @@ class FollowScenario:
         parameters = self.parameters
         if compensation is not None:
             parameters = _with_compensation(parameters, compensation)
-        common: dict[str, Any] = {"wind": self.wind, "flight": self.flight, "camera": self.camera}
+        # Both followers get the same offset schedule and the same reports (a fair baseline).
+        common: dict[str, Any] = {"wind": self.wind, "flight": self.flight, "camera": self.camera,
+                                  "offset_schedule": self.offset_schedule, "reports": self.reports}
         say("follow")
-        follow = simulate(self.vehicle, self.uav, parameters, wind_estimate=self.wind_estimate,
-                          offset_schedule=self.offset_schedule, **common)
+        follow = simulate(self.vehicle, self.uav, parameters, wind_estimate=self.wind_estimate, **common)
         flies = self.baseline_control is not None
         orbit = None
         reason = baseline_infeasibility(self.vehicle, self.uav) if flies else None
@@ -204,6 +214,13 @@ class FollowScenario:
             orbit = baseline(self.vehicle, self.uav, self.baseline_radius, control=self.baseline_control,
                              parameters=parameters, **common)
         study = FollowStudy(self, parameters, follow, orbit, baseline_reason=reason)
+        if self.aircraft is not None:
+            if self.offset_schedule:
+                raise fail("offset_schedule", len(self.offset_schedule), "is not flown on a 6-DOF aircraft (jsbsim)")
+            say(f"6-DOF follow on {self.aircraft}")
+            study.fdm = fly_follow_fdm(self.vehicle, self.uav, parameters, follow.state[0], aircraft=self.aircraft,
+                                       wind=self.wind, wind_estimate=self.wind_estimate, flight=self.flight,
+                                       camera=self.camera)
         if city and self.city is not None:
             say("city")
             env = self.city.load(self.origin)
@@ -211,12 +228,17 @@ class FollowScenario:
             vehicle = self.city_vehicle(env)
             uav = self.uav
             study.environment = env
-            study.city_follow = simulate(vehicle, uav, parameters, wind_estimate=self.wind_estimate,
-                                         offset_schedule=self.offset_schedule, scene=scene, **common)
+            study.city_follow = simulate(vehicle, uav, parameters, wind_estimate=self.wind_estimate, scene=scene,
+                                         **common)
             study.city_baseline_reason = baseline_infeasibility(vehicle, uav) if flies else None
             if flies and study.city_baseline_reason is None:
                 study.city_baseline = baseline(vehicle, uav, self.baseline_radius, control=self.baseline_control,
                                                parameters=parameters, scene=scene, **common)
+            say("city orbit")  # beyond every anchor: orbits inside the visibility polygons (follow.city_orbit)
+            known = self.wind_estimate or ((self.wind.east, self.wind.north) if parameters.wind_compensation else None)
+            # It observes the vehicle at each update itself, about the vehicle (no offset schedule).
+            study.city_orbit = city_orbit_follow(vehicle, uav, scene, parameters=parameters, wind_estimate=known,
+                                                 wind=self.wind, flight=self.flight, camera=self.camera)
         return study
 
 
@@ -233,24 +255,40 @@ class FollowStudy:
     environment: Optional[Environment] = None
     baseline_reason: Optional[str] = None  # why the baseline was not flown (a vehicle faster than the UAV)
     city_baseline_reason: Optional[str] = None
+    fdm: Optional[FollowFdm] = None  # the planner on a 6-DOF JSBSim aircraft (uav.dynamics: jsbsim)
+    city_orbit: Optional[CityOrbitResult] = None  # the city orbit mode's run (follow.city_orbit)
 
     def metrics(self) -> dict[str, Any]:
         """metrics.json: the planner's run at the top level (with a ``note`` when it flew its
         straight mode), then the baseline (``feasible``; when false, the ``reason`` instead of its
         scores) and the city runs."""
         out = _run_metrics(self.follow)
+        warnings = self.warnings()
+        if warnings:
+            out["warnings"] = warnings
         out["uav"] = uav_dict(self.scenario.uav)
         out["wind_compensation"] = bool(self.parameters.wind_compensation)
         out["updates"] = len(self.follow.ticks)
         block = _baseline_metrics(self.baseline, self.baseline_reason)
         if block is not None:
             out["baseline"] = block
+        if self.fdm is not None:
+            out["fdm"] = {"aircraft": self.fdm.trajectory.aircraft, **self.fdm.metrics()}
         if self.city_follow is not None:
             out["city"] = {"follow": _run_metrics(self.city_follow)}
             block = _baseline_metrics(self.city_baseline, self.city_baseline_reason)
             if block is not None:
                 out["city"]["baseline"] = block
+            if self.city_orbit is not None:
+                out["city"]["orbit"] = self.city_orbit.metrics
         return out
+
+
+    def warnings(self) -> list[str]:
+        """What the user should know about the settings (a threshold whose sinusoid the camera cannot
+        follow), once per distinct message."""
+        found = [threshold_warning(r) for r in (self.follow, self.city_follow) if r is not None]
+        return list(dict.fromkeys(w for w in found if w is not None))
 
 
 def _run_metrics(result: FollowResult) -> dict[str, Any]:
@@ -277,37 +315,8 @@ def _with_compensation(p: FollowParameters, on: bool) -> FollowParameters:
                             hysteresis=p.hysteresis, loiter_pattern=p.loiter_pattern, loiter_radius=p.loiter_radius,
                             loiter_direction=p.loiter_direction, offset_distance=p.offset_distance,
                             offset_angle=p.offset_angle, offset_reference=p.offset_reference,
-                            wind_compensation=on, update_period=p.update_period)
-
-
-def _heading(key: str, leg: Mapping[str, Any]) -> float:
-    if "heading" in leg and "heading_deg" in leg:
-        raise fail(key, leg, "give heading (a compass word) or heading_deg, not both")
-    if "heading" in leg:
-        word = leg["heading"]
-        if not isinstance(word, str) or word.lower() not in HEADINGS:
-            raise fail(f"{key}.heading", word, f"must be one of {', '.join(HEADINGS)} (or use heading_deg)")
-        return HEADINGS[word.lower()]
-    # The angle limit (|a| <= MAX_ANGLE rad), in the degrees the key is given in.
-    limit = math.degrees(_limits.MAX_ANGLE)
-    return math.radians(number(f"{key}.heading_deg", leg.get("heading_deg", 0.0), low=-limit, high=limit))
-
-
-def _legs(items: Any) -> list[VehicleLeg]:
-    if not isinstance(items, list) or not items:
-        raise fail("vehicle.legs", items, "must be a non-empty list of legs")
-    legs = []
-    allowed = {"heading", "heading_deg", "speed", "duration", "end_speed"}
-    for i, leg in enumerate(items):
-        key = f"vehicle.legs[{i}]"
-        if not isinstance(leg, Mapping):
-            raise fail(key, leg, "must be a mapping with heading, speed, duration")
-        reject_unknown(leg, allowed, f"{key}.")
-        speed = number(f"{key}.speed", leg.get("speed", 0.0), low=0.0)
-        end = leg.get("end_speed")
-        legs.append(VehicleLeg(_heading(key, leg), speed, positive(f"{key}.duration", leg.get("duration")),
-                               None if end is None else number(f"{key}.end_speed", end, low=0.0)))
-    return legs
+                            wind_compensation=on, update_period=p.update_period, strategy=p.strategy,
+                            strategy_margin=p.strategy_margin)
 
 
 def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[VehicleLeg], Optional[dict]]:
@@ -328,23 +337,25 @@ def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[V
     start = v.get("start", [0.0, 0.0])
     if not isinstance(start, (list, tuple)) or len(start) != 2:
         raise fail("vehicle.start", start, "must be [x, y]")
-    legs = _legs(v["legs"])
+    legs = vehicle_legs(v["legs"])
     xy = np.array([number(f"vehicle.start[{i}]", s) for i, s in enumerate(start)])
     return GroundVehicle.from_legs(legs, xy), legs, route
 
 
 def _parameters(data: Mapping[str, Any]) -> FollowParameters:
     f = section(data, "follow", {"period", "turn_margin", "threshold", "hysteresis", "loiter_pattern",
-                                 "loiter_radius", "loiter_direction", "compensation", "update_period"})
+                                 "loiter_radius", "loiter_direction", "compensation", "update_period", "strategy",
+                                 "strategy_margin"})
     o = section(data, "offset", {"distance", "angle_deg", "reference", "changes"})
     d = FollowParameters()
     compensation = f.get("compensation", d.wind_compensation)
     if not isinstance(compensation, bool):
         raise fail("follow.compensation", compensation, "must be true or false")
-    checks = {"period": positive, "turn_margin": positive, "threshold": positive, "update_period": positive,
+    checks = {"period": positive, "turn_margin": positive, "threshold": threshold_value, "update_period": positive,
+              "strategy_margin": lambda k, x: number(k, x, low=0.0, high=1.0),
               "hysteresis": lambda k, x: number(k, x, low=0.0), "loiter_radius": lambda k, x: number(k, x, low=0.0)}
     values: dict[str, Any] = {name: check(f"follow.{name}", f[name]) for name, check in checks.items() if name in f}
-    for name in ("loiter_pattern", "loiter_direction"):
+    for name in ("loiter_pattern", "loiter_direction", "strategy"):
         if name in f:
             values[name] = str(f[name])
     try:

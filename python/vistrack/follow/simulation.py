@@ -32,9 +32,13 @@ FollowTick = _follow.FollowTick
 GroundVehicle = _follow.GroundVehicle
 LoiterShape = _follow.LoiterShape
 VehicleLeg = _follow.VehicleLeg
+VehicleReportOptions = _follow.VehicleReportOptions
 along_track_rate = _follow.along_track_rate
 arc_length = _follow.arc_length
+camera_reach = _follow.camera_reach
 camera_sees = _follow.camera_sees
+camera_threshold = _follow.camera_threshold
+sinusoid_shape = _follow.sinusoid_shape
 coordinated_bank = _flight.coordinated_bank  # one formula, the flight layer's
 default_uav = _follow.default_uav  # a new Uav: the follower's where a scenario gives none
 phase_at_arc = _follow.phase_at_arc
@@ -42,15 +46,15 @@ sinusoid_amplitude = _follow.sinusoid_amplitude
 sinusoid_slope = _follow.sinusoid_slope
 speed_ratio = _follow.speed_ratio
 
-MODES = ("sinusoid", "loiter", "straight")
+MODES = ("sinusoid", "loiter", "straight", "standoff")
 
 __all__ = [
     "MODES", "DownwardCamera", "FollowFlight", "FollowMetrics", "FollowObservation", "FollowParameters",
     "FollowPlanner", "FollowResult", "FollowRun", "FollowTick", "GroundVehicle", "LoiterShape", "VehicleLeg",
-    "along_track_rate", "arc_length", "baseline", "baseline_infeasibility", "baseline_radius", "camera_footprint",
-    "camera_sees",
-    "coordinated_bank", "default_uav",
-    "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_slope", "speed_ratio",
+    "VehicleReportOptions", "along_track_rate", "arc_length", "baseline", "baseline_infeasibility", "baseline_radius",
+    "camera_footprint", "camera_reach", "camera_sees", "camera_threshold", "coordinated_bank", "default_uav",
+    "line_of_sight", "phase_at_arc", "simulate", "sinusoid_amplitude", "sinusoid_record", "sinusoid_shape",
+    "sinusoid_slope", "speed_ratio", "threshold_record", "threshold_warning",
 ]
 
 
@@ -61,7 +65,7 @@ class FollowResult:
     ``run`` is the core ``FollowRun``; ``line_of_sight`` (n,) is set when a scene was given."""
 
     run: FollowRun
-    strategy: str = "sinusoid"  # "sinusoid" (the paper's planner) or "orbit" (the baseline)
+    strategy: str = "sinusoid"  # "sinusoid" (the planner, any follow.strategy) or "orbit" (the baseline)
     line_of_sight: Optional[np.ndarray] = None
 
     @property
@@ -114,15 +118,21 @@ class FollowResult:
         """(k,) when each waypoint was issued (s)."""
         return np.asarray(self.run.waypoint_times)
 
+    @property
+    def roi(self) -> np.ndarray:
+        """(k, 2) the vehicle's predicted position at each waypoint (where a gimbal should point)."""
+        return np.array([k.vehicle_predicted for k in self.run.ticks], dtype=float).reshape(-1, 2)
+
     def to_mission(self, georeference: Georeference | Sequence[float], altitude: float, *,
                    speed: Optional[float] = None, tolerance: float = 1.0, return_to_launch: bool = False,
-                   firmware: str = "ardupilot", altitude_mode: str = "relative") -> Mission:
+                   firmware: str = "ardupilot", altitude_mode: str = "relative", roi: bool = True) -> Mission:
         """The generated 1 Hz waypoints as an autopilot mission, decimated by Douglas-Peucker at
         ``tolerance`` m (0: every waypoint), home at the UAV's start; ``speed`` (the UAV's airspeed)
-        adds DO_CHANGE_SPEED. See :func:`vistrack.follow.to_mission.follow_mission`."""
+        adds DO_CHANGE_SPEED; ``roi``: a DO_SET_ROI_LOCATION before each waypoint at the vehicle's
+        predicted position (beyond the paper). See :func:`vistrack.follow.to_mission.follow_mission`."""
         return follow_mission(self.waypoints, georeference, altitude, home=self.state[0, :2], speed=speed,
                               tolerance=tolerance, return_to_launch=return_to_launch, firmware=firmware,
-                              altitude_mode=altitude_mode)
+                              altitude_mode=altitude_mode, roi=self.roi if roi else None)
 
     @property
     def metrics(self) -> dict[str, Any]:
@@ -138,20 +148,59 @@ class FollowResult:
             "final_along_track_lag_m": m.final_along_track_lag,
             "mode_switches": m.mode_switches,
             "time_capturing_s": m.time_capturing,
-            "time_in_mode_s": {"sinusoid": m.time_sinusoid, "loiter": m.time_loiter, "straight": m.time_straight},
+            "time_in_mode_s": {"sinusoid": m.time_sinusoid, "loiter": m.time_loiter, "straight": m.time_straight,
+                               "standoff": m.time_standoff},
             "camera_fraction": m.camera_fraction,
             "mean_vehicle_distance_m": m.mean_vehicle_distance,
             "mean_offset_distance_m": m.mean_offset_distance,
             "centre_offset_m": [float(v) for v in m.mean_offset_error],
+            "lost_s": m.lost_time,
+            "lost_episodes": m.lost_episodes,
+            "reacquire_s": {"mean": m.mean_reacquire_time, "max": m.max_reacquire_time},
             "smoothness": _flight.flight_smoothness(self.run.t, self.run.bank).as_dict() if len(self.run.t) >= 2
             else None,
         }
+        if self.strategy != "orbit":
+            out["threshold"] = threshold_record(self.run.threshold)
+            out["sinusoid"] = sinusoid_record(self.run.ticks)
         if self.line_of_sight is not None:
             weights = np.diff(self.t, append=self.t[-1])  # each sample holds until the next
             total = float(weights.sum()) or 1.0
             out["line_of_sight_fraction"] = float(weights @ self.line_of_sight) / total
             out["camera_and_line_of_sight_fraction"] = float(weights @ (self.line_of_sight & self.in_view)) / total
         return out
+
+
+def threshold_record(choice: Any) -> dict[str, Any]:
+    """The threshold the planner used (``FollowRun.threshold``) as plain data; ``camera_reach_m``
+    is None (JSON null) for a camera whose cone reaches the horizon."""
+    reach = choice.reach if math.isfinite(choice.reach) else None
+    return {"h": choice.threshold, "automatic": choice.automatic, "upper_ratio": choice.upper_ratio,
+            "amplitude_at_upper_m": choice.amplitude, "camera_reach_m": reach, "beyond_reach": choice.beyond_reach}
+
+
+def sinusoid_record(ticks: Sequence[FollowTick]) -> Optional[dict[str, Any]]:
+    """The effective sinusoid over the updates that flew it: min, median and max of sigma, T (s,
+    after the curvature floor), D and A (m); None when no update did (per update: updates.csv)."""
+    rows = np.array([(k.speed_ratio, k.period, k.period_distance, k.amplitude) for k in ticks if k.mode == "sinusoid"])
+    if len(rows) == 0:
+        return None
+    names = ("speed_ratio", "period_s", "period_distance_m", "amplitude_m")
+    return {name: [float(rows[:, i].min()), float(np.median(rows[:, i])), float(rows[:, i].max())]
+            for i, name in enumerate(names)}
+
+
+def threshold_warning(result: FollowResult) -> Optional[str]:
+    """A warning when the user's threshold lets the sinusoid's amplitude exceed the camera's reach
+    (with the numbers), else None (an "auto" threshold never does)."""
+    if result.strategy == "orbit":
+        return None
+    c = result.run.threshold
+    if c.automatic or not c.beyond_reach:
+        return None
+    return (f"follow.threshold = {c.threshold:g}: at the band's upper edge (sigma {c.upper_ratio:g}) the sinusoid's "
+            f"amplitude is {c.amplitude:.0f} m, beyond the {c.reach:.0f} m the camera sees to the side at this "
+            "altitude (threshold: auto keeps it within)")
 
 
 def _wind(wind: Wind | Sequence[float] | None) -> Wind:
@@ -196,21 +245,24 @@ def simulate(vehicle: GroundVehicle, uav: Uav, parameters: Optional[FollowParame
              wind: Wind | Sequence[float] | None = None, wind_estimate: Optional[Sequence[float]] = None,
              flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
              start: Optional[Sequence[float]] = None, offset_schedule: Sequence[tuple[float, float, float]] = (),
-             scene: Optional[VisibilityScene] = None, vehicle_height: float = 0.5) -> FollowResult:
+             scene: Optional[VisibilityScene] = None, vehicle_height: float = 0.5,
+             reports: Optional[VehicleReportOptions] = None) -> FollowResult:
     """Plan and fly a follow run: the planner's 1 Hz waypoints flown by the flight layer.
 
     wind: the true wind (``vt.flight.Wind`` or (east, north) m/s); wind_estimate: what the
     planner compensates (default: the true constant wind; compensation is
     ``parameters.wind_compensation``). start: (x, y, psi), default on the planned path.
     offset_schedule: (t, distance, angle) keys, linear in between (Fig. 8 moves the loiter ahead).
-    With a scene, ``line_of_sight`` is evaluated at every sample."""
+    reports: what the UAV knows of the vehicle (noise, latency, dropouts, timeout; default the truth
+    at each update). With a scene, ``line_of_sight`` is evaluated at every sample."""
     true_wind = _wind(wind)
     estimate = (None if wind_estimate is None
                 else np.array(_numbers(wind_estimate, 2, "wind_estimate", "(east, north) m/s")))
     run = _follow.follow(vehicle, uav, parameters or FollowParameters(), true_wind, wind_estimate=estimate,
                          flight=flight or FollowFlight(), camera=camera or DownwardCamera(),
                          start=_start(start),
-                         offset_schedule=[_offset_key(k, key) for k, key in enumerate(offset_schedule)])
+                         offset_schedule=[_offset_key(k, key) for k, key in enumerate(offset_schedule)],
+                         reports=reports or VehicleReportOptions())
     visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
     return FollowResult(run, "sinusoid", visible)
 
@@ -255,16 +307,21 @@ def baseline(vehicle: GroundVehicle, uav: Uav, radius: Optional[float] = None, *
              parameters: Optional[FollowParameters] = None, wind: Wind | Sequence[float] | None = None,
              flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
              start: Optional[Sequence[float]] = None, scene: Optional[VisibilityScene] = None,
-             vehicle_height: float = 0.5) -> FollowResult:
+             vehicle_height: float = 0.5, offset_schedule: Sequence[tuple[float, float, float]] = (),
+             reports: Optional[VehicleReportOptions] = None) -> FollowResult:
     """The tracking pipeline's guidance vector field (74) and steering law (86) at a constant
-    radius about the offset point of ``parameters`` (default radius: :func:`baseline_radius`),
-    flown by the flight layer in the true wind. Its desired position is the orbit's nearest point,
-    so its tracking error is |r - R|."""
+    radius about the offset point of ``parameters`` and ``offset_schedule`` (default radius:
+    :func:`baseline_radius`), flown by the flight layer in the true wind. A fair comparison: it
+    knows the vehicle from the same reports as the planner (``reports``; at each update, carried
+    along the reported velocity in between). Its desired position is the orbit's nearest point, so
+    its tracking error is |r - R|."""
     parameters = parameters or FollowParameters()
     r = baseline_radius(vehicle, uav, parameters) if radius is None else length("baseline.radius", radius)
     run = _follow.orbit_follow(vehicle, uav, control or Control(), r, parameters, _wind(wind),
                                flight=flight or FollowFlight(), camera=camera or DownwardCamera(),
-                               start=_start(start))
+                               start=_start(start),
+                               offset_schedule=[_offset_key(k, key) for k, key in enumerate(offset_schedule)],
+                               reports=reports or VehicleReportOptions())
     visible = None if scene is None else line_of_sight(scene, run, uav.altitude, vehicle_height)
     return FollowResult(run, "orbit", visible)
 
@@ -286,16 +343,30 @@ def camera_footprint(camera: DownwardCamera, uav: Sequence[float], psi: float, b
     left = np.array([-math.sin(psi), math.cos(psi), 0.0])
     tz = float(target[2]) if len(target) > 2 else 0.0
     r = np.array([float(target[0]) - x, float(target[1]) - y, tz - z])
-    # As camera_sees (cpp/src/follow/camera.cpp): gimbal roll gamma = bank + the target's lateral
-    # angle, within +-max_gimbal; the camera's roll from level is bank - gamma.
-    lateral = math.atan2(float(r @ left), float(-(r @ up)))
-    gamma = min(max(bank + lateral, -camera.max_gimbal), camera.max_gimbal)
-    roll = bank - gamma
-    axis = -(math.cos(roll) * up + math.sin(roll) * left)
-    across = np.cross(axis, forward)
+    # As camera_sees (cpp/src/follow/camera.cpp): the body's down axis banked by phi; a roll gimbal
+    # rolls by gamma = bank + the target's lateral angle within +-max_gimbal; a pan-tilt points at
+    # the target within max_gimbal of the down axis; a fixed camera looks along it.
+    body_down = -(math.cos(bank) * up + math.sin(bank) * left)
+    if camera.mount == "fixed":
+        axis = body_down
+    elif camera.mount == "pan_tilt":
+        to_target = r / max(float(np.linalg.norm(r)), 1e-12)
+        off = math.acos(min(1.0, max(-1.0, float(to_target @ body_down))))
+        side = to_target - (to_target @ body_down) * body_down
+        norm = float(np.linalg.norm(side))
+        turn = min(off, camera.max_gimbal)
+        axis = body_down if norm < 1e-12 else math.cos(turn) * body_down + math.sin(turn) * side / norm
+    else:
+        lateral = math.atan2(float(r @ left), float(-(r @ up)))
+        gamma = min(max(bank + lateral, -camera.max_gimbal), camera.max_gimbal)
+        roll = bank - gamma
+        axis = -(math.cos(roll) * up + math.sin(roll) * left)
+    ahead = forward - (forward @ axis) * axis  # the cone's basis about its axis
+    ahead /= max(float(np.linalg.norm(ahead)), 1e-12)
+    across = np.cross(axis, ahead)
     half = 0.5 * camera.fov
     angles = np.linspace(0.0, 2.0 * math.pi, points, endpoint=False)
-    rays = (math.cos(half) * axis[None, :] + math.sin(half) * (np.outer(np.cos(angles), forward)
+    rays = (math.cos(half) * axis[None, :] + math.sin(half) * (np.outer(np.cos(angles), ahead)
                                                               + np.outer(np.sin(angles), across)))
     down = -rays[:, 2]
     horizontal = np.hypot(rays[:, 0], rays[:, 1])

@@ -116,15 +116,13 @@ class OsmCity:
     osm_ids: list[str]
 
 
-def _origin(handler: Any, origin: Any, where: str) -> Georeference:
+def _origin(bbox: Optional[list[float]], origin: Any, where: str) -> Georeference:
     if origin is not None:
         return Georeference.from_value(origin)
-    rings = [outer for c in handler.candidates for outer, _ in c.polygons] + [w.lon_lat for w in handler.roads]
-    if not rings:
+    if bbox is None:
         raise VistrackError(f"{where}: no buildings or drivable roads in the file")
-    points = np.concatenate(rings)
-    centre = 0.5 * (points.min(axis=0) + points.max(axis=0))  # rounded like the GeoJSON loader's
-    return Georeference(round(float(centre[1]) * 1e7) / 1e7, round(float(centre[0]) * 1e7) / 1e7)
+    lon, lat = 0.5 * (bbox[0] + bbox[2]), 0.5 * (bbox[1] + bbox[3])  # rounded like the GeoJSON loader's
+    return Georeference(round(lat * 1e7) / 1e7, round(lon * 1e7) / 1e7)
 
 
 def _environment(prints: list[Footprint], skipped: list[tuple[str, str]]) -> tuple[Environment, list[Footprint]]:
@@ -167,7 +165,8 @@ def read_osm(path: str | Path, *, level_height: float = LEVEL_HEIGHT, roof_heigh
     except RuntimeError as error:  # pyosmium's parse errors
         raise VistrackError(f"{key} = {path}: not a readable OSM file ({' '.join(str(error).split())})") from None
     handler.finish()
-    georeference = _origin(handler, origin, f"{key} = {path}")
+    bbox = _bbox(handler)
+    georeference = _origin(bbox, origin, f"{key} = {path}")
     prints, skipped, clipped = footprints(handler.candidates, georeference.to_local)
     env, prints = _environment(prints, skipped)
     env.origin = georeference
@@ -180,12 +179,13 @@ def read_osm(path: str | Path, *, level_height: float = LEVEL_HEIGHT, roof_heigh
         roof_height=roof_height, default_height=default_height, objects=dict(sorted(objects.items())),
         footprints=env.num_buildings, height_sources=dict(Counter(f.source for f in prints)),
         bad_tags=dict(handler.counts.bad_tags), raised_base=sum(f.base > 0 for f in prints), clipped=clipped,
-        bbox_lon_lat=_bbox(handler), tallest=_tallest(prints), roads=roads)
+        bbox_lon_lat=bbox, tallest=_tallest(prints), roads=roads)
     summary.seconds = time.perf_counter() - start
     return OsmCity(env, georeference, summary, [f.osm_id for f in prints])
 
 
 def _bbox(handler: Any) -> Optional[list[float]]:
+    """[lon_min, lat_min, lon_max, lat_max] of every building ring and road, or None."""
     rings = [outer for c in handler.candidates for outer, _ in c.polygons] + [w.lon_lat for w in handler.roads]
     if not rings:
         return None

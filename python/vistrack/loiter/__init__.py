@@ -12,6 +12,8 @@ covered at a time step when at least 75 % of its disk lies in the footprint.
 - ``flying``: a plan flown through the flight layer in wind, and scored
 - ``study``: every method on a scenario, random studies at scale (old address: ``vistrack.loiter_study``)
 - ``to_mission``: a plan as an autopilot mission; ``methods`` attaches it as ``Plan.to_mission``
+- ``city``, ``city_coverage`` (beyond the paper): loiter circles inside each AOI's visibility
+  polygon over a city, coverage with line of sight (a scenario's ``city`` block)
 
 >>> import vistrack as vt
 >>> plan = vt.loiter.plan([(300, 200), (600, 500)], method="ldlpp")

@@ -10,7 +10,15 @@ import numpy as np
 from .. import schema
 from .._core import Uav
 from ..io.documents import read_yaml_mapping
-from ..scenario_blocks import Rename, camera_block, georeference_block, origin_to_georeference, uav_block, upgrade
+from ..scenario_blocks import (
+    Rename,
+    camera_block,
+    city_block,
+    georeference_block,
+    origin_to_georeference,
+    uav_block,
+    upgrade,
+)
 from .planning import Camera, Coverage, CoverageOptions, Parameters, Plan, segment_roles
 from .scenario import Scenario
 
@@ -27,7 +35,7 @@ def read_loiter_scenario(path: str | Path) -> Scenario:
     """A loiter scenario file (examples/loiter_*.yaml); every bad value names its key."""
     data = upgrade(read_yaml_mapping(path, "scenario"), RENAMES)
     allowed = {"name", "aois", "start", "end", "uav", "aoi_radius", "turns", "camera", "threshold", "dt", "paper",
-               "georeference"}
+               "georeference", "city", "off_centre"}
     schema.reject_unknown(data, allowed)
 
     raw_aois = data.get("aois")
@@ -62,6 +70,8 @@ def read_loiter_scenario(path: str | Path) -> Scenario:
         dynamics=str(uav.dynamics),
         roll_time_constant=uav.roll_time_constant,
         max_roll_rate_deg_s=uav.max_roll_rate_deg_s,
+        city=city_block(data, Path(path).parent),
+        off_centre=schema.boolean("off_centre", data.get("off_centre", False)),
     )
     # The planner's own checks (overlapping circles, R < r, start inside a circle) name the key.
     scenario.plan("tlpp")

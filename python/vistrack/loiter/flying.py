@@ -3,6 +3,8 @@ the flown path with the scenario's camera."""
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from .. import flight
@@ -50,7 +52,7 @@ def fly(plan: Plan, wind: Wind | tuple[float, float] | None = None, dt: float = 
                       max_time=3.0 * plan.flight_time + 600.0, integration=integration, uav=uav)
 
 
-def flown_samples(trajectory: FlightTrajectory, dt: float = _COVERAGE.dt) -> tuple[np.ndarray, np.ndarray]:
+def flown_samples(trajectory: Any, dt: float = _COVERAGE.dt) -> tuple[np.ndarray, np.ndarray]:
     """A flown trajectory every ``dt`` (whole multiples of its output step): (n, 4) rows x, y, psi and
     the turn rate applied there (the input of :func:`coverage`), and the index of the path piece
     (plan segment) being flown at each."""
@@ -80,12 +82,13 @@ def loiter_coverage_fraction(plan: Plan, segments: np.ndarray, cov: Coverage,
 
 
 def fly_and_score(scenario: Scenario, plan: Plan, wind: tuple[float, float], planned: Coverage | None = None,
-                  keep_trajectory: bool = True) -> dict[str, object]:
+                  keep_trajectory: bool = True, trajectory: Any = None) -> dict[str, object]:
     """Fly ``plan`` in the constant ``wind`` (east, north) and score the flown path with the
     scenario's camera against the plan: flight time, covered time (total and per AOI), the share of
-    the loiter time with the AOI covered, and how far the path was blown off the plan."""
+    the loiter time with the AOI covered, and how far the path was blown off the plan. ``trajectory``:
+    a flight flown elsewhere in that wind to score instead (``vistrack.loiter.fdm``: a 6-DOF one)."""
     planned = planned if planned is not None else scenario.coverage(plan)
-    trajectory = fly(plan, wind, uav=scenario.uav())
+    trajectory = trajectory if trajectory is not None else fly(plan, wind, uav=scenario.uav())
     samples, segments = flown_samples(trajectory, scenario.dt)
     flown = coverage(samples, scenario.aois, scenario.camera, scenario.threshold, scenario.dt, speed=scenario.speed,
                      aoi_radius=scenario.aoi_radius)
@@ -110,7 +113,7 @@ def fly_and_score(scenario: Scenario, plan: Plan, wind: tuple[float, float], pla
     return record
 
 
-def _cross_track(plan: Plan, trajectory: FlightTrajectory) -> np.ndarray:
+def _cross_track(plan: Plan, trajectory: Any) -> np.ndarray:
     """Distance of each flown sample from the planned path (nearest point of a 1 m sampling)."""
     from scipy.spatial import cKDTree
 

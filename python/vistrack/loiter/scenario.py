@@ -9,7 +9,7 @@ import numpy as np
 
 from .._core import Uav, VistrackError
 from ..georeference import Georeference
-from ..scenario_blocks import DEFAULT_DYNAMICS
+from ..scenario_blocks import DEFAULT_DYNAMICS, City
 from .planning import AREA_SIZE, Camera, Coverage, CoverageOptions, Parameters, Plan, Point, coverage, plan
 
 __all__ = ["Scenario", "random_aois", "random_scenario"]
@@ -41,6 +41,9 @@ class Scenario:
     dynamics: str = DEFAULT_DYNAMICS    # the flown vehicle's model (uav.dynamics)
     roll_time_constant: float = _VEHICLE.roll_time_constant   # s, the roll model's
     max_roll_rate_deg_s: float = _VEHICLE.max_roll_rate_deg_s
+    aircraft: str | None = None  # uav.dynamics: jsbsim: the wind flights also flown on this 6-DOF aircraft
+    city: City | None = None  # beyond the paper: loiter circles inside visibility polygons (loiter.city)
+    off_centre: bool = False  # with a city: an AOI without a circle about it may loiter on one off it
 
     def uav(self) -> Uav:
         """The vehicle that flies the plans: the scenario's speed, turn radius, camera altitude and model."""

@@ -12,6 +12,8 @@ import numpy as np
 
 from .._core import VistrackError
 from .._core import limits as _limits
+from ..fdm.aircraft import aircraft
+from .fdm import fdm_score
 from .flying import fly_and_score
 from .planning import METHOD_NAMES, METHODS, Coverage, Plan, metrics
 from .scenario import Scenario, random_aois
@@ -114,6 +116,8 @@ def evaluate(scenario: Scenario, methods: Sequence[str] = METHODS, order: str = 
     each plan in those constant (east, north) winds and scores the flown paths. With ``refused``,
     a method that cannot fly the layout is skipped and its reason stored there by method (LDLPP
     needs room for its turns); without, its VistrackError is raised."""
+    if scenario.aircraft is not None and winds:  # refused before any plan when the aircraft cannot fly it
+        aircraft(scenario.aircraft).check_plan(scenario.speed, scenario.turn_radius)
     runs = []
     for method in methods:
         try:
@@ -130,6 +134,8 @@ def evaluate(scenario: Scenario, methods: Sequence[str] = METHODS, order: str = 
             run.best_coverage = scenario.coverage(run.best_plan)
         for wind in winds:
             record = fly_and_score(scenario, plan, wind, planned=run.coverage)
+            if scenario.aircraft is not None:  # the same flight on the 6-DOF aircraft, beside it
+                record["fdm"] = fdm_score(scenario, plan, wind, run.coverage, scenario.aircraft)
             run.wind_paths.append((f"wind ({wind[0]:g}, {wind[1]:g}) m/s", np.asarray(record.pop("_trajectory"))))
             run.wind.append(record)
         runs.append(run)

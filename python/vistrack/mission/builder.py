@@ -199,6 +199,11 @@ class MissionBuilder:
             self.waypoint(point, altitude, acceptance_radius=acceptance_radius)
         return self
 
+    def roi(self, point: ArrayLike, altitude: float = 0.0) -> MissionBuilder:
+        """DO_SET_ROI_LOCATION at local (x, y) and ``altitude`` (default 0: the ground, in the
+        mission's altitude mode): the autopilot points a gimbal there from the next items on."""
+        return self._located(Command.DO_SET_ROI_LOCATION, point, altitude, (0.0, 0.0, 0.0, 0.0), "roi")
+
     def change_speed(self, speed: float, *, ground_speed: bool = False) -> MissionBuilder:
         """DO_CHANGE_SPEED: param1 0 airspeed / 1 ground speed, param2 the speed (m/s), param3
         throttle -1 (unchanged)."""

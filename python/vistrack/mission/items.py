@@ -22,6 +22,7 @@ class Command(IntEnum):
     NAV_LOITER_TIME = 19
     NAV_RETURN_TO_LAUNCH = 20
     DO_CHANGE_SPEED = 178
+    DO_SET_ROI_LOCATION = 195  # point a gimbal at a location (a region of interest)
 
 
 class Frame(IntEnum):

@@ -165,7 +165,8 @@ def mission_geojson(mission: Mission) -> dict[str, Any]:
     for seq, item in enumerate(mission.items, start=1):
         if not item.has_coordinate:
             continue
-        route.append([item.lon, item.lat])
+        if item.command != Command.DO_SET_ROI_LOCATION:  # where a gimbal looks, not where the route goes
+            route.append([item.lon, item.lat])
         features.append({"type": "Feature",
                          "properties": {"kind": "mission_item", "seq": seq, "command": item.command,
                                         "name": item.name, "params": list(item.params), "altitude_m": item.alt,

@@ -14,7 +14,7 @@ from ..follow import MODES, FollowResult, speed_ratio
 from .city import plot_buildings
 from .common import OSM_CREDIT, add_credit, plot_bank, pyplot, save_figure
 
-MODE_COLORS = {"sinusoid": "tab:blue", "loiter": "tab:orange", "straight": "tab:red"}
+MODE_COLORS = {"sinusoid": "tab:blue", "loiter": "tab:orange", "straight": "tab:red", "standoff": "tab:purple"}
 
 
 def _segments_by(mask: np.ndarray) -> list[slice]:

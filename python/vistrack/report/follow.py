@@ -11,7 +11,7 @@ import numpy as np
 
 from .._core import Environment
 from ..follow import DownwardCamera, FollowResult, camera_footprint
-from ..follow.files import write_follow_trajectory
+from ..follow.files import write_follow_trajectory, write_follow_updates
 from ..follow.scenario import FollowStudy
 from ..follow.simulation import planner_note
 from ..io import write_json
@@ -21,6 +21,8 @@ from ..plotting.motion import Line, MotionScene, Overlay, Sight, Track
 from ..report_options import ReportOptions
 from ..scenario_blocks import uav_dict
 from .document import Document, Heading, Picture, Table, vehicle_line
+from .fdm import fdm_blocks, fdm_figure
+from .follow_city import city_orbit_blocks
 from .media import write_media
 
 PLANNER = "sinusoid planner (the paper)"
@@ -43,8 +45,10 @@ def write_follow(study: FollowStudy, out: Path, title: str = "",
     label = "with wind compensation" if p.wind_compensation else "without wind compensation"
     title = f"{title} ({label})" if title else label
     files = [figure_paths(study.follow, out / "follow_paths.png", title),
-             figure_scores(study.follow, p.threshold, p.hysteresis, out / "follow_scores.png", title),
-             write_follow_trajectory(study.follow, out / "trajectory.csv")]
+             figure_scores(study.follow, study.follow.run.threshold.threshold, p.hysteresis, out / "follow_scores.png",
+                           title),
+             write_follow_trajectory(study.follow, out / "trajectory.csv"),
+             write_follow_updates(study.follow, out / "updates.csv")]
     if study.baseline is not None:
         files.append(figure_compare([(PLANNER, study.follow), (BASELINE, study.baseline)],
                                     out / "follow_compare.png", title))
@@ -59,6 +63,21 @@ def write_follow(study: FollowStudy, out: Path, title: str = "",
             files.append(write_follow_trajectory(study.city_baseline, out / "city_baseline_trajectory.csv"))
     record = study.metrics()
     document = _document(study, title, [f.name for f in files])
+    if study.fdm is not None:
+        six = study.fdm.trajectory
+        run = study.follow.run
+        state = np.asarray(run.state)
+        picture = fdm_figure(out, (run.t, state[:, 0], state[:, 1], run.bank),
+                             f"{study.scenario.uav.dynamics} model", six,
+                             f"The follow planner on the 6-DOF {six.aircraft} and the kinematic vehicle",
+                             np.asarray(run.vehicle), "ground vehicle")
+        block = {**record["fdm"], "real_time_factor": float((six.t[-1] - six.t[0]) / six.seconds)}
+        rows = [["camera sees the vehicle (%)", f"{100 * record['camera_fraction']:.1f}",
+                 f"{100 * block['camera_fraction']:.1f}"],
+                ["mean distance to the vehicle (m)", f"{record['mean_vehicle_distance_m']:.1f}",
+                 f"{block['mean_vehicle_distance_m']:.1f}"]]
+        document.blocks += [*fdm_blocks(block, rows, ["score", "kinematic", "6-DOF"]), picture]
+        files.append(out / "fdm.png")
     open_scene = motion_scene(study.follow, study.scenario.camera, study.scenario.uav.altitude,
                               f"{title}: open ground")
     more: list[tuple[str, MotionScene, str]] = []
@@ -123,6 +142,23 @@ def _row(name: str, m: dict[str, Any]) -> list[str]:
             "-" if both is None else f"{100 * both:.1f}"]
 
 
+def _threshold_line(m: dict[str, Any]) -> str:
+    """The threshold used and the sinusoid flown (effective T, D, A, sigma: min / median / max)."""
+    h = m["threshold"]
+    how = "auto, from the camera (beyond the paper)" if h["automatic"] else "given"
+    reach = ("to the horizon" if h["camera_reach_m"] is None
+             else f"{h['camera_reach_m']:.0f} m to the side")
+    line = (f"Threshold h = {h['h']:.3g} ({how}): at sigma {h['upper_ratio']:.3g} the amplitude is "
+            f"{h['amplitude_at_upper_m']:.0f} m, the camera sees {reach}")
+    s = m.get("sinusoid")
+    if s is None:
+        return line + "; no update flew the sinusoid"
+    cells = ", ".join(f"{label} {' / '.join(f'{v:.3g}' for v in s[key])}" for label, key in
+                      (("sigma", "speed_ratio"), ("T s", "period_s"), ("D m", "period_distance_m"),
+                       ("A m", "amplitude_m")))
+    return line + f"; sinusoid flown (min / median / max, per update in updates.csv): {cells}"
+
+
 def _document(study: FollowStudy, title: str, files: Sequence[str]) -> Document:
     s = study.scenario
     rows = [_row(PLANNER, study.follow.metrics)]
@@ -138,6 +174,8 @@ def _document(study: FollowStudy, title: str, files: Sequence[str]) -> Document:
                f"Wind {s.wind.east:g} east, {s.wind.north:g} north ({wind:.3g} m/s); {len(study.follow.ticks)} "
                "updates at 1 Hz",
                vehicle_line(uav_dict(s.uav), study.follow.metrics["smoothness"])]
+    summary += [_threshold_line(study.follow.metrics)]
+    summary += [f"Warning: {w}" for w in study.warnings()]
     summary += [f"Planner: {note}" for note in [planner_note(study.follow)] if note is not None]
     summary += [f"Baseline not flown{where}: {reason}" for where, reason in
                 (("", study.baseline_reason), (" on the city road", study.city_baseline_reason)) if reason is not None]
@@ -148,4 +186,5 @@ def _document(study: FollowStudy, title: str, files: Sequence[str]) -> Document:
               "follow_compare.png": "Planner beside the vector-field baseline",
               "follow_city.png": "On a city road, with line of sight"}
     blocks += [Picture(name, caption) for name, caption in titles.items() if name in files]
+    blocks += city_orbit_blocks(study.metrics().get("city"))  # beyond every anchor (follow.city_orbit)
     return Document(f"vistrack report: following a ground vehicle, {title}", summary, blocks)

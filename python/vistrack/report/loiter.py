@@ -169,6 +169,10 @@ def scenario_document(scenario: loiter.Scenario, runs: Sequence[MethodRun], file
     winds = wind_summary([run.record(scenario) for run in runs])
     if winds:
         blocks += [Heading("Flown in unknown wind"), wind_table(winds), WIND_NOTE]
+    six = fdm_wind_summary([run.record(scenario) for run in runs])
+    if six:
+        blocks += [Heading(f"The same flights on the 6-DOF {scenario.aircraft} (JSBSim, vistrack's autopilot)"),
+                   wind_table(six), WIND_NOTE]
     return Document(f"vistrack report: loiter, {scenario.name}", summary_lines, blocks)
 
 
@@ -228,6 +232,17 @@ def wind_table(rows: Sequence[dict[str, Any]]) -> Table:
     return Table(header, [[METHOD_NAMES[r["method"]], f"{r['wind_speed']:g}", str(r["flights"]),
                            f"{q(r['loiter_covered'], 100.0)} %", q(r["flight_time_ratio"], 1.0, 2),
                            q(r["coverage_time_ratio"], 1.0, 2), q(r["max_cross_track_m"])] for r in rows])
+
+
+def fdm_wind_summary(rows: Sequence[dict[str, Any]]) -> list[dict[str, Any]]:
+    """wind_summary of the 6-DOF flights flown beside the kinematic ones (each wind record's ``fdm``)."""
+    return wind_summary([{**r, "wind": [w["fdm"] for w in r.get("wind", []) if "fdm" in w]} for r in rows])
+
+
+def fdm_markdown(rows: Sequence[dict[str, Any]]) -> str:
+    """The 6-DOF flights' wind table under its own heading ("" when none flew)."""
+    six = fdm_wind_summary(rows)
+    return "" if not six else "\n6-DOF (JSBSim) flights of the same plans:\n\n" + wind_markdown(six)
 
 
 def wind_markdown(rows: Sequence[dict[str, Any]]) -> str:

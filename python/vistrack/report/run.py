@@ -18,6 +18,7 @@ from .._core import (
 )
 from ..io import write_json, write_plan, write_trajectory
 from ..plotting import OSM_CREDIT, evenly_spaced_indices, figure_volume_3d, new_figure, plot_city, save_figure
+from ..plotting.fdm import figure_fdm
 from ..plotting.interactive import volume_layers
 from ..plotting.motion import tracking_scene
 from ..plotting.orbits import figure_metric, figure_orbits, figure_radius
@@ -114,6 +115,20 @@ def write_report(result: RunResult, out: Path) -> list[Path]:
     pictures.append(Picture("errors.png", "Figure 11: errors and control",
                             "Radial error r - R, heading and heading error, and the steering command against time."))
 
+    if result.fdm is not None:
+        sim = result.simulation
+        state = np.asarray(sim.state)
+        six = result.fdm.trajectory
+        kinematic = (np.asarray(sim.t), state[:, 0], state[:, 1], np.asarray(sim.bank))
+        figure_fdm(kinematic, f"{s.uav.dynamics} model", six, out / "fdm.png",
+                   title=f"{s.name}: the plan on the 6-DOF {six.aircraft} and the kinematic vehicle",
+                   reference=np.asarray(sim.poi)[:, :2], reference_label="POI path")
+        files.append(out / "fdm.png")
+        pictures.append(Picture("fdm.png", "6-DOF flight (JSBSim) beside the kinematic one",
+                                "The same guidance (vector field (74), steering law (86)) flown by vistrack's "
+                                f"autopilot on {six.aircraft} in JSBSim, trimmed level at {six.speed:g} m/s and "
+                                f"{six.altitude_command:g} m: ground tracks, altitude, airspeed and bank."))
+
     # The most constrained sample (smallest MaxRadius): where the buildings shape the VV most.
     k = int(np.argmin(result.plan.max_radii))
     plan = result.plan
@@ -178,6 +193,15 @@ def _document(result: RunResult, pictures: list[Picture]) -> Document:
     other = m.get("other_model")
     if other:
         rows.append([f"visibility-informed R(t), {other['dynamics']} model", percent(other["visibility_fraction"])])
+    six = m.get("fdm")
+    if six:
+        rows.append([f"visibility-informed R(t), 6-DOF {six['aircraft']} (JSBSim)",
+                     percent(six["simulation"]["visibility_fraction"])])
+        summary.append(f"6-DOF flight on {six['aircraft']} (JSBSim, vistrack's autopilot): POI in view "
+                       f"{percent(six['simulation']['visibility_fraction'])}; altitude within "
+                       f"{six['altitude_error_max_m']:.2f} m and airspeed within "
+                       f"{six['airspeed_error_max_m_s']:.2f} m/s "
+                       f"of the commands; {six['real_time_factor']:.0f} x real time")
     rows += [[f"constant R = {b['radius_m']:g} m", percent(b["visibility_fraction"])] for b in m["baselines"].values()]
     blocks.append(Table(["orbit", "visibility"], rows))
     blocks.append("Files: `metrics.json`, `plan.json`, `trajectory.csv`, `volumes/*.ply`.")

@@ -19,7 +19,9 @@ from ..plotting.waypoint_nav import (
 )
 from ..report_options import ReportOptions
 from ..waypoint_nav import MonteCarlo, NavigationFlight
+from ..waypoint_nav.fdm import FdmNavigation
 from .document import Document, Heading, Picture, Table, vehicle_line
+from .fdm import fdm_block, fdm_blocks, fdm_figure
 from .media import write_media
 
 TRACK_COLORS = ("tab:red", "tab:blue", "tab:orange", "tab:purple", "tab:brown", "tab:olive")
@@ -45,8 +47,10 @@ def motion_scene(flights: Sequence[NavigationFlight], wind: Optional[Wind], titl
 
 def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Optional[Wind], route_name: str,
                     settings: dict[str, Any], weights: Optional[dict[str, Any]] = None,
-                    mc: Optional[MonteCarlo] = None, report: Optional[ReportOptions] = None) -> dict[str, Any]:
-    """Writes the folder and returns the record stored in metrics.json."""
+                    mc: Optional[MonteCarlo] = None, report: Optional[ReportOptions] = None,
+                    six_dof: Sequence[FdmNavigation] = ()) -> dict[str, Any]:
+    """Writes the folder and returns the record stored in metrics.json (with ``six_dof``, the same flights
+    on a JSBSim aircraft: its ``fdm`` block and fdm.png)."""
     out.mkdir(parents=True, exist_ok=True)
     record: dict[str, Any] = {"route": route_name, "settings": settings, "flights": [], "figures": []}
     for flight in flights:
@@ -71,6 +75,8 @@ def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Option
         record["monte_carlo"] = summary
         record["figures"].append(figure_monte_carlo(mc, out / "monte_carlo.png").name)
     document = _document(flights, record, route_name)
+    if six_dof:
+        _add_fdm(out, flights, six_dof, record, document)
     made = write_media(out, motion_scene(flights, wind, f"{route_name}: DWN against WN"), document, report)
     record["report_files"] = made
     (out / "report.md").write_text(document.markdown(), encoding="utf-8")
@@ -81,15 +87,16 @@ def write_waypoints(out: Path, flights: Sequence[NavigationFlight], wind: Option
 def _document(flights: Sequence[NavigationFlight], record: dict[str, Any], route_name: str) -> Document:
     R = flights[0].turn_radius
     entries = record["flights"]  # each flight's metrics(), computed once in write_waypoints
-    rows = [[e["label"], "-" if e["max_miss_before_last_over_R"] is None else f"{e['max_miss_before_last_over_R']:.3f}",
-             f"{e['miss_distances_over_R'][-1]:.3f}", f"{e['overshoot_over_R']:.3f}", str(e["swirls"]),
-             f"{e['path_length']:.4g}", f"{e['duration']:.4g}", "yes" if e["all_reached"] else "no",
+    rows = [[e["label"], f"{e['max_miss_over_R']:.3f}", f"{e['miss_at_last_over_R']:.3f}",
+             f"{e['overshoot_over_R']:.3f}", str(e["swirls"]), f"{e['path_length']:.4g}", f"{e['duration']:.4g}",
+             "yes" if e["all_reached"] else "no",
              "-" if e["smoothness"] is None else f"{e['smoothness']['roll_reversals_per_s']:.2f}"] for e in entries]
     blocks: list[Any] = [Heading("Flights"),
-                         Table(["flight", "max miss before the last (R)", "miss at the last (R)", "overshoot (R)",
+                         Table(["flight", "max miss (R)", "miss at the last (R)", "overshoot (R)",
                                 "swirls", "path length", "time", "all reached", "roll reversals/s"], rows),
-                         "The flight ends at the last waypoint, so its miss there is the stopping rule's, shown "
-                         "apart."]
+                         "Every waypoint counts in the max miss. The flight ends on the line through the last "
+                         "waypoint perpendicular to the last leg; the last miss is the distance where the path "
+                         "crosses it."]
     for e in entries:
         blocks += [Heading(f"{e['label']}: waypoints and legs"),
                    Table(["waypoint", "miss (R)", "at t (s)", "overshoot (R)", "reached"],
@@ -121,3 +128,27 @@ def _document(flights: Sequence[NavigationFlight], record: dict[str, Any], route
                              "max_roll_rate_deg_s": settings.get("max_roll_rate_deg_s")}, None),
                f"Wind {settings['wind']} (unknown to the guidance)"]
     return Document("vistrack report: waypoint navigation", summary, blocks)
+
+
+def _add_fdm(out: Path, flights: Sequence[NavigationFlight], six_dof: Sequence[FdmNavigation],
+             record: dict[str, Any], document: Document) -> None:
+    """metrics.json's fdm block, fdm.png (DWN, or the first flight) and the report's 6-DOF table."""
+    summaries = [f.summary() for f in six_dof]
+    block = fdm_block(six_dof[0].trajectory.aircraft, [f.trajectory for f in six_dof], summaries)
+    record["fdm"] = block
+    kinematic = {(f.method, f.waypoint_radius): f for f in flights}
+    rows = []
+    for six, summary in zip(six_dof, summaries):
+        twin = kinematic[(six.method, six.waypoint_radius if six.method != "dwn" else None)]
+        rows.append([twin.label, f"{twin.metrics()['max_miss_over_R']:.3f}",
+                     f"{summary['max_miss_over_R']:.3f}", "yes" if summary["all_reached"] else "no",
+                     f"{six.trajectory.altitude_error_max:.2f}", f"{six.trajectory.airspeed_error_max:.2f}"])
+    first = six_dof[0]
+    twin = kinematic[(first.method, first.waypoint_radius if first.method != "dwn" else None)]
+    k = twin.flight
+    picture = fdm_figure(out, (k.t, k.x, k.y, k.bank), f"{twin.label}, {record['settings'].get('dynamics')} model",
+                         first.trajectory, f"{twin.label} on the 6-DOF {block['aircraft']} and the kinematic vehicle",
+                         twin.route_points, "route")
+    header = ["flight", "max miss, kinematic (R)", "6-DOF (R)", "6-DOF all reached",
+              "altitude err max (m)", "airspeed err max (m/s)"]
+    document.blocks += [*fdm_blocks(block, rows, header), picture]

@@ -32,7 +32,7 @@ __all__ = ["FOLLOW", "follow_metrics"]
 _SECTIONS = {
     "uav": ("speed", "min_turn_radius", "altitude"),
     "vehicle": ("start", "legs", "track", "speed_scale"),
-    "follow": ("period", "turn_margin", "threshold", "hysteresis", "loiter_pattern", "loiter_radius",
+    "follow": ("period", "turn_margin", "threshold", "hysteresis", "loiter_pattern", "loiter_radius", "strategy",
                "loiter_direction", "compensation", "update_period"),
     "offset": ("distance", "angle_deg", "reference", "changes"),
     "wind": ("east", "north", "gusts"),
@@ -43,11 +43,14 @@ _SECTIONS = {
 }
 _RUN_METRICS = ("duration_s", "mean_tracking_error_m", "max_tracking_error_m", "along_track_lag_m",
                 "max_along_track_lag_m", "final_along_track_lag_m", "mode_switches", "time_capturing_s",
-                "time_in_mode_s.sinusoid", "time_in_mode_s.loiter", "time_in_mode_s.straight", "camera_fraction",
-                "mean_vehicle_distance_m", "mean_offset_distance_m", "centre_offset_east_m", "centre_offset_north_m",
-                "smoothness.bank_rms_deg", "smoothness.roll_reversals_per_s", "smoothness.roll_reversals",
-                "smoothness.max_roll_rate_deg_s")
-_METRICS = (*_RUN_METRICS, "note", "wind_compensation", "updates", "uav.*",
+                "time_in_mode_s.sinusoid", "time_in_mode_s.loiter", "time_in_mode_s.straight",
+                "time_in_mode_s.standoff", "camera_fraction", "mean_vehicle_distance_m", "mean_offset_distance_m",
+                "centre_offset_east_m", "centre_offset_north_m", "smoothness.bank_rms_deg",
+                "smoothness.roll_reversals_per_s", "smoothness.roll_reversals", "smoothness.max_roll_rate_deg_s",
+                "lost_s", "lost_episodes", "reacquire_s.mean", "reacquire_s.max")
+# The planner's alone: the threshold it used (the sinusoid it flew is per run: metrics.json, updates.csv).
+_PLANNER_METRICS = ("threshold.*",)
+_METRICS = (*_RUN_METRICS, *_PLANNER_METRICS, "note", "wind_compensation", "updates", "uav.*",
             *(f"baseline.{m}" for m in _RUN_METRICS), "baseline.radius_m", "baseline.feasible", "baseline.reason")
 
 
@@ -102,6 +105,8 @@ def follow_metrics(scenario: FollowScenario) -> dict[str, Any]:
     """One case's metrics (flat): the follower's run and the baseline's (``vistrack follow
     --no-city``'s metrics.json without the strategy names, the centre offset split in two)."""
     record = scenario.run(city=False).metrics()
+    record.pop("sinusoid", None)
+    record.pop("warnings", None)
     for run in (record, record.get("baseline")):
         if run is not None and "centre_offset_m" in run:  # an infeasible baseline has its reason only
             run.pop("strategy", None)

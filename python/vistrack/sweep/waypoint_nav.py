@@ -1,26 +1,40 @@
 """The ``waypoints`` case kind: one flight of Dubins waypoint navigation (DWN) or classical
 waypoint navigation (WN) over a route (:func:`vistrack.waypoint_nav.fly`, what ``vistrack
-waypoints`` flies per method), in a wind the guidance does not know.
+waypoints`` flies per method), in a wind the guidance does not know unless ``wind_aware``.
 
 Its base is a mapping (inline or a YAML file) of :func:`~vistrack.waypoint_nav.fly`'s settings in
-the shared ``uav`` and ``wind`` blocks; missing keys take the paper's defaults
-(``vt.waypoint_nav.Options``)::
+the shared ``uav`` and ``wind`` blocks. Like ``vistrack waypoints`` it works in metres and m/s
+unless ``units: paper`` asks for the waypoint paper's dimensionless set; missing keys take the
+defaults of those units::
 
-    route: waypoints_paper.csv      # CSV x,y; or waypoints: [[x, y], ...];
+    units: metres                   # metres: the default aircraft (vt.Uav: 20 m/s, R 50 m) on the
+                                    # roll model, each leg flown by L1 (period 8 s), law (5)'s gains
+                                    # scaled by 0.7 / R; gusts in metres at uav.altitude (60 m).
+                                    # paper: section 3 (R 0.7, v 0.8, law (5) with g 0.1, h 5.25,
+                                    # the Dubins vehicle; gusts read with 1 = 20 m, 1 s)
+    route: waypoints_metres.csv     # CSV x,y; or waypoints: [[x, y], ...];
                                     # or random_route: {count: 6, legs: [4, 10], seed: 0} (legs in
                                     # units of R, as vt.waypoint_nav.random_route; no seed: the case's)
     start: null                     # [x, y, psi]; null: at the first waypoint, heading to the second
-    method: dwn                     # dwn | wn
+    method: dwn                     # dwn | wn | wn_passed_line
     waypoint_radius: null           # WN's R_WP (null: R)
-    uav: {speed: 0.8, min_turn_radius: 0.7}     # v and R (the flight is planar: no altitude used)
+    uav: {speed: 20, min_turn_radius: 50, altitude: 60, dynamics: roll}   # paper: {speed: 0.8,
+                                    # min_turn_radius: 0.7}, the Dubins vehicle only
     dt: 0.02
-    gains: [0.1, 5.25]
+    gains: null                     # law (5)'s [g, h]; null: the paper's, scaled by 0.7 / R in metres
+    guidance: null                  # l1 | law5; null: l1 in metres, law5 in the paper's units
+    l1_period: 8.0
+    wind_aware: false               # the guidance knows the mean wind (DWN plans in the air mass)
+    replan_interval: 0.0            # DWN re-plans every so many s (0: at the reachability switch)
     weights: [1.0, 1.0]
     integration: discrete           # discrete | continuous
     max_time: null
     wind: {east: 0.0, north: 0.0, gusts: null}  # gusts: {seed, intensity, length_scale} (Dryden);
-                                                # missing keys: the paper's gust model
+                                                # missing keys: the gust model of the units
                                                 # (vt.waypoint_nav.paper_gusts) seeded by the case
+
+A route in metres whose longest leg is under 2 R, or one in the paper's units longer than 100 R,
+is refused naming ``route`` (the other units are likely meant), as the command does.
 
 Spellings from before the one schema still load, one line on stdout each: ``turn_radius`` and
 ``speed`` (now ``uav.min_turn_radius``, ``uav.speed``), ``wind: {speed, direction_deg}`` (now
@@ -37,13 +51,13 @@ plus ``waypoints``, ``route_length``, ``path_ratio`` (flown length over the rout
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Any, Mapping, Optional
 
 import numpy as np
 
 from .. import waypoint_nav as wn
 from .._core import Uav
-from ..flight import Wind
+from ..flight import Wind, paper_gains
 from ..io import read_route
 from ..scenario_blocks import Rename, uav_block, wind_block
 from ..schema import fail, integer, number, pair, positive, reject_unknown, resolve_path
@@ -62,8 +76,14 @@ from .spellings import gust_seed, silent, upgrade_base, upgrade_parameter
 __all__ = ["RENAMES", "WAYPOINTS"]
 
 _SOURCES = ("route", "waypoints", "random_route")
-_SETTINGS = ("start", "method", "waypoint_radius", "uav", "dt", "gains", "weights", "integration", "max_time", "wind")
-_UAV = ("speed", "min_turn_radius")
+_SETTINGS = ("units", "start", "method", "waypoint_radius", "uav", "dt", "gains", "weights", "integration", "max_time",
+             "wind", "guidance", "l1_period", "wind_aware", "replan_interval")
+_UAV = ("speed", "min_turn_radius", "altitude", "dynamics")
+_UNITS = ("metres", "paper")
+# The metres defaults of ``vistrack waypoints`` (commands/waypoint_units.py): the follow runs' L1
+# period and the command's --altitude.
+_L1_PERIOD = 8.0
+_ALTITUDE = 60.0
 _WIND = ("east", "north", "gusts")
 _GUSTS = ("seed", "intensity", "length_scale")
 _RANDOM = ("count", "legs", "seed")
@@ -85,11 +105,16 @@ def _defaults(data: Mapping[str, Any], folder: Path) -> dict[str, Any]:
     """The base with every setting present (the paper's defaults: the bound Options') and file
     paths absolute."""
     reject_unknown(data, (*_SOURCES, *_SETTINGS))
+    units = data.get("units", "metres")
+    if units not in _UNITS:
+        raise fail("units", units, 'must be "metres" or "paper"')
     d, calm = wn.Options(), Wind()
-    full: dict[str, Any] = {"start": None, "method": d.method, "waypoint_radius": None,
-                            "uav": {"speed": d.speed, "min_turn_radius": d.turn_radius}, "dt": d.dt,
-                            "gains": list(d.gains), "weights": list(d.weights), "integration": d.integration,
-                            "max_time": None, "wind": {"east": calm.east, "north": calm.north, "gusts": None}}
+    # uav: the units' defaults fill it when a case flies (_units_uav), so that units may vary too.
+    full: dict[str, Any] = {"units": units, "start": None, "method": d.method, "waypoint_radius": None, "uav": {},
+                            "dt": d.dt, "gains": None, "weights": list(d.weights), "integration": d.integration,
+                            "max_time": None, "wind": {"east": calm.east, "north": calm.north, "gusts": None},
+                            "guidance": None, "l1_period": _L1_PERIOD, "wind_aware": False,
+                            "replan_interval": d.replan_interval}
     overlay(full, {k: v for k, v in data.items() if k in _SETTINGS})  # a block given in part keeps the rest
     sources = [k for k in _SOURCES if data.get(k) is not None]
     if len(sources) != 1:
@@ -131,37 +156,69 @@ def _route(data: Mapping[str, Any], folder: Path, seed: int, turn_radius: float)
     return wn.random_route(np.random.default_rng(seed), count, turn_radius, legs)
 
 
-def _wind(value: Any, seed: int) -> Wind:
-    """The shared wind block; gusts given in part take the rest from the paper's gust model, seeded
-    by the case (a wind varied by the old wind.speed or direction_deg is turned into components)."""
+def _wind(value: Any, seed: int, model: Optional[dict[str, float]]) -> Wind:
+    """The shared wind block; gusts given in part take the rest from the gust model of the units
+    (``model`` for wn.paper_gusts), seeded by the case (a wind varied by the old wind.speed or
+    direction_deg is turned into components)."""
     if not isinstance(value, Mapping):
         raise fail("wind", value, "must be {east, north, gusts}")
     wind = gust_seed(value, silent)
     if isinstance(wind.get("gusts"), Mapping):
-        paper = wn.paper_gusts(seed)
-        model = {"seed": paper.seed, "intensity": paper.intensity, "length_scale": paper.length_scale}
-        wind["gusts"] = {**model, **wind["gusts"]}
+        paper = wn.paper_gusts(seed, model)
+        defaults = {"seed": paper.seed, "intensity": paper.intensity, "length_scale": paper.length_scale}
+        wind["gusts"] = {**defaults, **wind["gusts"]}
     return wind_block({"wind": wind})
+
+
+def _units_uav(paper: bool) -> Uav:
+    """The vehicle of the units: the paper's section 3 (R 0.7, v 0.8), or in metres the default
+    aircraft at the command's --altitude (which places the gusts)."""
+    if paper:
+        d = wn.Options()
+        return Uav(speed=d.speed, min_turn_radius=d.turn_radius)
+    uav = Uav()
+    uav.altitude = _ALTITUDE
+    return uav
 
 
 def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np.ndarray, dict[str, Any]]:
     """The route and fly()'s keyword arguments, validated (errors name the key and the value)."""
+    units = data.get("units", "metres")
+    if units not in _UNITS:
+        raise fail("units", units, 'must be "metres" or "paper"')
+    paper = units == "paper"
     defaults = wn.Options()
-    uav = uav_block(data, Uav(speed=defaults.speed, min_turn_radius=defaults.turn_radius)).uav
+    uav = uav_block(data, _units_uav(paper)).uav
     given = data.get("uav", {}).get("dynamics") if isinstance(data.get("uav"), Mapping) else None
-    if given is not None and str(uav.dynamics) != "dubins":
-        # The roll model needs g in m/s^2; these flights are in the paper's dimensionless units.
-        raise fail("uav.dynamics", given, "the waypoint paper's dimensionless units fly the Dubins vehicle only")
+    if paper and given is not None and str(uav.dynamics) != "dubins":
+        # The roll model needs g in m/s^2; the paper's units are dimensionless.
+        raise fail("uav.dynamics", given, "the waypoint paper's dimensionless units (units: paper) fly the Dubins "
+                                          "vehicle only")
+    R = uav.min_turn_radius
+    model = None if paper else {"altitude": uav.altitude, "length_unit": 1.0, "speed_unit": 1.0}
+    gains = data.get("gains")
+    guidance = data.get("guidance") or ("law5" if paper else "l1")
     options: dict[str, Any] = {
-        "method": data["method"], "turn_radius": uav.min_turn_radius, "speed": uav.speed,
-        "dt": positive("dt", data["dt"]), "gains": pair("gains", data["gains"], "a pair [a, b]"),
+        "method": data["method"], "turn_radius": R, "speed": uav.speed, "dt": positive("dt", data["dt"]),
+        "gains": pair("gains", gains, "a pair [a, b]") if gains is not None else
+        (tuple(defaults.gains) if paper else paper_gains(R)),
         "weights": pair("weights", data["weights"], "a pair [a, b]"), "integration": data["integration"],
-        "wind": _wind(data["wind"], seed),
+        "wind": _wind(data["wind"], seed, model), "guidance": guidance,
+        "l1_period": positive("l1_period", data.get("l1_period", _L1_PERIOD)),
+        "wind_aware": data.get("wind_aware", False),
+        "replan_interval": number("replan_interval", data.get("replan_interval", 0.0), low=0.0),
     }
-    if options["method"] not in ("dwn", "wn"):
-        raise fail("method", options["method"], 'must be "dwn" or "wn"')
+    if not paper:
+        options.update({"dynamics": str(uav.dynamics), "roll_time_constant": uav.roll_time_constant,
+                        "max_roll_rate_deg_s": uav.max_roll_rate_deg_s})
+    if options["method"] not in wn.METHODS:
+        raise fail("method", options["method"], "must be one of " + ", ".join(f'"{m}"' for m in wn.METHODS))
     if options["integration"] not in ("discrete", "continuous"):
         raise fail("integration", options["integration"], 'must be "discrete" or "continuous"')
+    if guidance not in ("l1", "law5"):
+        raise fail("guidance", guidance, 'must be "l1" or "law5"')
+    if not isinstance(options["wind_aware"], bool):
+        raise fail("wind_aware", options["wind_aware"], "must be true or false")
     if data.get("waypoint_radius") is not None:
         options["waypoint_radius"] = positive("waypoint_radius", data["waypoint_radius"])
     if data.get("max_time") is not None:
@@ -171,7 +228,16 @@ def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np
         if not isinstance(start, list) or len(start) != 3:
             raise fail("start", start, "must be [x, y, psi] or null")
         options["start"] = tuple(number(f"start[{i}]", c) for i, c in enumerate(start))
-    return _route(data, folder, seed, uav.min_turn_radius), options
+    route = _route(data, folder, seed, R)
+    longest = float(np.max(np.linalg.norm(np.diff(route, axis=0), axis=1)))
+    given = data.get("route") or ("random_route" if data.get("random_route") is not None else "waypoints")
+    if not paper and longest < 2.0 * R:
+        raise fail("route", given, f"its longest leg, {longest:.4g} m, is under 2 R = {2 * R:.4g} m: a route in the "
+                                   "paper's units? set units: paper")
+    if paper and longest > 100.0 * R:
+        raise fail("route", given, f"its longest leg is {longest:.4g} = {longest / R:.4g} R with units: paper: a "
+                                   "route in metres? drop units: paper")
+    return route, options
 
 
 def _run(data: dict[str, Any], context: CaseContext) -> CaseOutput:

@@ -30,10 +30,12 @@ from .._core import (
     constant_radius_plan,
     simulate,
 )
+from ..fdm.aircraft import aircraft
 from ..flight import flight_smoothness
 from ..progress import Stages
 from ..scenario_blocks import uav_dict, with_dynamics
-from .metrics import locus_summary, simulation_metrics
+from .fdm import fly_tracking, tracking_fdm_metrics
+from .metrics import CONVERGE_AFTER, locus_summary, simulation_metrics
 from .result import RunResult
 from .scenario import Scenario
 
@@ -62,6 +64,8 @@ def compute(scenario: Scenario, *, quiet: bool = True, cache_dir: str | Path | N
     the Embree scene and the VV cache are built once; the results are the same as without them.
     ``metric_spacings``: the fixed spacings of Figure 4's metric runs (none: only the adaptive one).
     """
+    if scenario.aircraft is not None:  # a plan the aircraft cannot fly is refused before any work
+        aircraft(scenario.aircraft).check_plan(scenario.uav.speed, scenario.uav.min_turn_radius)
     stages = Stages(quiet)
     env = environment if environment is not None else stages.run("environment", scenario.environment.load,
                                                                    scenario.origin)
@@ -89,12 +93,16 @@ def compute(scenario: Scenario, *, quiet: bool = True, cache_dir: str | Path | N
     # vehicle, the roll model).
     other = other_model(scenario.uav)
     other_run = stages.run(f"closed loop, {other.dynamics} model", closed_loop, plan, x0, other, *loop[1:])
+    six_dof = None
+    if scenario.aircraft is not None:
+        six_dof = stages.run(f"6-DOF flight on {scenario.aircraft} (JSBSim)", fly_tracking, plan, x0, scenario.uav,
+                             scenario.control, planner.scene, scenario.aircraft)
     baselines = {}
     for radius in scenario.baselines:
         baseline = constant_radius_plan(poi, radius, scenario.uav)
         baselines[radius] = stages.run(f"baseline R = {radius:g} m", closed_loop, baseline,
                                        start_on_orbit(baseline, scenario.control.direction), *loop)
-    result = RunResult(scenario, env, poi, plan, simulation, planner, baselines, metric_runs, other_run)
+    result = RunResult(scenario, env, poi, plan, simulation, planner, baselines, metric_runs, other_run, six_dof)
     result.timings = stages.timings
     result.metrics = _metrics(result)
     if cache_dir is not None:
@@ -163,4 +171,5 @@ def _metrics(result: RunResult) -> dict[str, Any]:
         "baselines": {f"{r:g}": {"radius_m": r, "visibility_fraction": b.visibility_fraction}
                       for r, b in result.baselines.items()},
         "timings_s": {k: round(v, 4) for k, v in result.timings.items()},
+        **({"fdm": tracking_fdm_metrics(result.fdm, CONVERGE_AFTER)} if result.fdm is not None else {}),
     }

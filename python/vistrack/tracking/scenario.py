@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Mapping, Sequence
+from typing import Any, Mapping
 
 import numpy as np
 import yaml
@@ -23,7 +23,6 @@ from .._core import (
     Planning,
     PoiMotion,
     PoiPath,
-    RoadNetwork,
     Sensor,
     SimulationOptions,
     Uav,
@@ -33,7 +32,7 @@ from ..georeference import Georeference
 from ..io.documents import parse_yaml
 from ..io.text import read_text
 from ..report_options import ReportOptions, report_options
-from ..routes import route_ends, route_nodes
+from ..routes import road_route, route_ends, route_nodes
 from ..scenario_blocks import (
     City,
     Rename,
@@ -62,16 +61,6 @@ from ..schema import (
 __all__ = ["EnvironmentSpec", "PoiSpec", "ReportOptions", "Scenario", "default_scenario_text", "road_route"]
 
 DEMO_SCENARIO = Path(__file__).parent.parent / "scenarios" / "demo.yaml"
-
-
-def road_route(roads: RoadNetwork, via_points: Sequence[Sequence[float]]) -> list[int]:
-    """Road nodes from the node nearest the first point, through the nodes nearest the others,
-    joined by shortest routes along the road edges."""
-    via = [roads.nearest_node(np.asarray(p, dtype=float)) for p in via_points]
-    nodes = [via[0]]
-    for a, b in zip(via, via[1:]):
-        nodes += roads.shortest_route(a, b)[1:]
-    return nodes
 
 
 EnvironmentSpec = City  # the scenario's city block (the name predates the one schema)
@@ -111,6 +100,7 @@ class Scenario:
     poi: PoiSpec = field(default_factory=PoiSpec)
     uav: Uav = field(default_factory=lambda: with_dynamics(Uav()))  # the scenario files' model (roll)
     start: tuple[float, float, float] | None = None  # UAV start (x, y, psi); None: on the orbit
+    aircraft: str | None = None  # uav.dynamics: jsbsim: also flown on this 6-DOF aircraft (vistrack.fdm)
     sensor: Sensor = field(default_factory=Sensor)
     planning: Planning = field(default_factory=Planning)
     control: Control = field(default_factory=Control)
@@ -156,8 +146,8 @@ class Scenario:
         scenario.origin = georeference_block(data)
         scenario.environment = city_block(data, base) or City()
         scenario.poi = _poi(section(data, "poi", {"path", "waypoints", "nodes", "route", "speed"}), base)
-        uav = uav_block(data, Uav(), extra=("start",))
-        scenario.uav, scenario.start = uav.uav, _start(uav.extra)
+        uav = uav_block(data, Uav(), extra=("start",), fdm=True)
+        scenario.uav, scenario.start, scenario.aircraft = uav.uav, _start(uav.extra), uav.aircraft
         scenario.sensor = _sensor(section(data, "sensor", {"d_max", "altitude_band"}))
         scenario.planning = _planning(section(
             data, "planning", {"spacing", "cutoff", "resolution_deg", "min_spacing", "max_depth", "rate_margin",
@@ -197,7 +187,8 @@ class Scenario:
             "georeference": None if origin is None else {"lat": origin.lat, "lon": origin.lon, "alt": origin.alt},
             "city": env,
             "poi": poi,
-            "uav": {**uav_dict(self.uav), "start": list(self.start) if self.start is not None else None},
+            "uav": {**uav_dict(self.uav), "start": list(self.start) if self.start is not None else None,
+                    **({"dynamics": "jsbsim", "aircraft": self.aircraft} if self.aircraft else {})},
             "sensor": {"d_max": self.sensor.d_max, "altitude_band": list(band) if band else None},
             "planning": {"spacing": self.planning.spacing, "cutoff": self.planning.cutoff,
                          "resolution_deg": self.planning.resolution_deg,

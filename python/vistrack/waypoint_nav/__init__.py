@@ -4,7 +4,10 @@ Xu, *Dubins Waypoint Navigation of Small-Class Unmanned Aerial Vehicles* (OJOp 2
 Both fly on the flight layer (:mod:`vistrack.flight`) with the paper's feedback law (5). WN
 steers to the active waypoint and switches inside the waypoint radius R_WP; DWN steers to the
 turning point T_n of the horizon (pose, W_n, W_{n+1}) and moves on when T_n enters the
-reachability zone; the last waypoint is flown to directly.
+reachability zone; the last waypoint is flown to directly. Every flight ends on the line through
+the last waypoint perpendicular to the last leg. With ``wind_aware=True`` DWN plans its turning
+points in the air mass of the known mean wind (:func:`air_mass_turning_point`); ``replan_interval``
+re-plans the active turning point more often (the paper's option of section 2.1).
 
 - :func:`turning_point` solves the horizon exactly (four turn cases, theta to 1e-12 rad);
   :func:`horizon_path` and :func:`horizon_lengths` give the path and F(theta) of one case.
@@ -36,10 +39,12 @@ from .navigation import (
     NavigationFlight,
     Options,
     TurningPoint,
+    air_mass_turning_point,
     default_start,
     fly,
     horizon_lengths,
     horizon_path,
+    navigation_metrics,
     paper_flights,
     paper_gusts,
     reachability,
@@ -63,11 +68,13 @@ __all__ = [
     "NavigationFlight",
     "Options",
     "TurningPoint",
+    "air_mass_turning_point",
     "default_start",
     "fly",
     "horizon_lengths",
     "horizon_path",
     "monte_carlo",
+    "navigation_metrics",
     "paper_flights",
     "paper_gusts",
     "random_route",

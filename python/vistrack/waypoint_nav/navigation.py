@@ -20,8 +20,9 @@ from ..preview import preview
 
 __all__ = [
     "CASES", "DEFAULTS", "METHODS", "PAPER_GUST_MODEL", "PAPER_RADII", "DubinsWaypointGuidance", "HorizonPath",
-    "NavigationFlight", "Options", "TurningPoint", "fly", "horizon_lengths", "horizon_path", "paper_flights",
-    "paper_gusts", "reachability", "theta_against_weight", "turning_point", "turning_points",
+    "NavigationFlight", "Options", "TurningPoint", "air_mass_turning_point", "fly", "horizon_lengths", "horizon_path",
+    "navigation_metrics", "paper_flights", "paper_gusts", "reachability", "theta_against_weight", "turning_point",
+    "turning_points",
 ]
 
 # DWN, the paper's WN and (beyond the paper) WN switching as ArduPlane does.
@@ -31,11 +32,13 @@ Options = _wn.Options
 TurningPoint = _wn.TurningPoint
 DubinsWaypointGuidance = _wn.DubinsWaypointGuidance
 turning_point = _wn.turning_point
+air_mass_turning_point = _wn.air_mass_turning_point  # wind-aware DWN: the horizon planned in the air mass
 turning_points = _wn.turning_points  # batch: poses (n, 3), w_next, w_after (n, 2)
 CASES: tuple[str, ...] = tuple(_wn.CASES)
 horizon_path = _wn.horizon_path
 horizon_lengths = _wn.horizon_lengths
 reachability = _wn.reachability
+navigation_metrics = _wn.navigation_metrics  # of a flight flown elsewhere (vistrack.fdm)
 
 _OPTIONS = Options()  # every default below: the bound C++ struct's (the paper's section 3)
 # The same as a mapping, for the callers that read one (a copy: changing it changes no default).
@@ -89,7 +92,8 @@ class NavigationFlight:
     """One WN or DWN flight along ``waypoints`` (the flown ones, after ``start``) and its metrics.
 
     ``trajectory`` is (n, 4): t, x, y, psi; ``flight`` the full record (commands, targets, wind).
-    Lengths are in the route's units; ``miss_distances[k]`` is the closest approach to waypoint k.
+    Lengths are in the route's units; ``miss_distances[k]`` is the closest approach to waypoint k
+    (for the last one, the distance where the path crosses its finish line, where the flight ends).
     """
 
     method: str
@@ -209,9 +213,8 @@ class NavigationFlight:
             "fuel": self.fuel,
             "turning_points": self.turning_points.tolist(),
             "smoothness": self.flight.smoothness().as_dict() if len(self.flight.t) >= 2 else None,
-            # The flight stops at the last waypoint by construction: the misses before it, stated.
-            "max_miss_before_last_over_R": float(self.miss_distances[:-1].max() / R) if len(self.miss_distances) > 1
-            else None,
+            # Every waypoint counts: the last one's miss is where the path crosses its finish line.
+            "miss_at_last_over_R": float(self.miss_distances[-1] / R),
             "waypoints": self.waypoint_table(),
             "legs": self.leg_table(),
         }
@@ -236,6 +239,9 @@ def fly(
     guidance: str = str(_OPTIONS.guidance),
     l1_period: float = _OPTIONS.l1_period,
     wind_aware: bool = False,
+    replan_interval: float = _OPTIONS.replan_interval,
+    dwn_tracking: str = str(_OPTIONS.dwn_tracking),
+    path_anticipation: Optional[float] = None,
 ) -> NavigationFlight:
     """Fly a route with DWN (``method="dwn"``), WN (``"wn"``: a waypoint is done inside R_WP) or,
     beyond the paper, ArduPlane's WN (``"wn_passed_line"``: also once past the line through the
@@ -246,6 +252,15 @@ def fly(
     R); DWN has none. ``wind`` is unknown to the guidance; ``max_time`` None: 3 (route length +
     2 pi R per waypoint) / v. ``weights`` (w_a, w_s) weigh arcs and straights in the turning
     points and in ``fuel``; ``integration`` "discrete" (the paper's) or "continuous".
+    ``wind_aware``: the guidance knows the mean wind (``wind`` without its gusts): the leg law
+    steers the course over the ground and DWN plans its turning points in the air mass.
+    ``replan_interval`` (s, DWN): re-plan the active turning point that often (section 2.1's
+    option); 0, the paper's flights: only when it becomes unreachable. ``dwn_tracking`` (beyond the
+    paper): "paper" flies the leg law to each turning point, "path" follows each planned horizon
+    path in closed loop with the roll anticipated ``path_anticipation`` s ahead (None: the roll
+    model's lag), "auto" is "paper" on the dubins vehicle and "path" on the roll model. Every flight ends once past
+    the line through the last waypoint perpendicular to the last leg, and the last waypoint's miss
+    is the distance where the path crosses that line.
     """
     route = route_array(waypoints)
     if start is None:
@@ -261,7 +276,8 @@ def fly(
                               waypoint_radius=waypoint_radius, weights=weights, wind=wind, integration=integration,
                               max_time=max_time, dynamics=dynamics, roll_time_constant=roll_time_constant,
                               max_roll_rate_deg_s=max_roll_rate_deg_s, guidance=guidance, l1_period=l1_period,
-                              wind_aware=wind_aware)
+                              wind_aware=wind_aware, replan_interval=replan_interval, dwn_tracking=dwn_tracking,
+                              path_anticipation=path_anticipation)
     except VistrackError as error:
         if start is not None:
             raise
@@ -294,14 +310,18 @@ def paper_flights(waypoints: Points, wind: Optional[Wind] = None, radii: Sequenc
                   methods: Sequence[str] = ("dwn", "wn"), **options: Any) -> list[NavigationFlight]:
     """DWN and WN at each waypoint radius (in units of R) over one route: Figures 11 (no wind) and
     12 (``wind``); with "wn_passed_line" in ``methods`` also ArduPlane's switching at each radius.
-    ``options`` go to :func:`fly` (turn_radius, speed, dt, gains, start, ...)."""
+    ``options`` go to :func:`fly` (turn_radius, speed, dt, gains, start, ...; ``replan_interval``
+    and ``dwn_tracking`` to DWN's flight only)."""
     for method in methods:
         if method not in METHODS:
             raise VistrackError(f"method = {preview(method)}: must be one of " + ", ".join(map(repr, METHODS)))
     R = float(options.get("turn_radius", _OPTIONS.turn_radius))
+    replan = options.pop("replan_interval", _OPTIONS.replan_interval)  # DWN's alone
+    tracking = options.pop("dwn_tracking", str(_OPTIONS.dwn_tracking))  # DWN's alone
     flights = []
     if "dwn" in methods:
-        flights.append(fly(waypoints, method="dwn", wind=wind, **options))
+        flights.append(fly(waypoints, method="dwn", wind=wind, replan_interval=replan, dwn_tracking=tracking,
+                           **options))
     for method in ("wn", "wn_passed_line"):
         if method in methods:
             for fraction in radii:

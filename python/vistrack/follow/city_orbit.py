@@ -1,0 +1,342 @@
+"""Following over a city (beyond every anchor): an orbit about the vehicle inside the visibility
+polygon of its predicted position, computed online.
+
+At every update (1 Hz) the follower observes the vehicle (position and velocity), predicts where it
+will be half an update later, and asks :mod:`vistrack.city_orbits` for that point's visibility
+polygon (VP) at the flight altitude and MaxRadius about it (VVs cached by position on a grid, so at
+most one new VV per update). The orbit's radius is the turn-limited radius R_turn (Lemma 6 at the
+vehicle's current speed, with the planner's turn margin) when MaxRadius - margin >= R_turn: a circle
+about the vehicle inside its VP, so the line of sight holds; ``radius="max"`` flies MaxRadius -
+margin instead (the tracking paper's choice, farthest from the vehicle). Where no such circle fits,
+the flyable circle of radius R_turn inside the VP nearest the vehicle (off-centre, moving with it),
+and where none fits anywhere, R_turn about the vehicle (the line of sight may break).
+
+The orbit is flown by the flight layer as the follower flies its plan: L1 guidance (``CurveL1``)
+along the orbit's predicted ground track, renewed at every update.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Optional, Sequence
+
+import numpy as np
+
+from .. import flight as _flight
+from .._core import Control, GuidanceGains, OrbitState, Uav, VisibilityScene, VistrackError, steering
+from ..city_orbits import OrbitRoom, VolumeCache, orbit_room
+from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, Wind, camera_sees
+
+__all__ = ["CityOrbitOptions", "CityOrbitResult", "OrbitUpdate", "camera_radius", "city_orbit_follow", "orbit_track"]
+
+RADIUS_CHOICES = ("lemma6", "camera", "max")
+
+
+@dataclass
+class CityOrbitOptions:
+    """reach: the VP is measured out to this far at the altitude (the VV's d_max follows); grid:
+    the VV cache's cell (m); margin: kept between the orbit and the VP's boundary (m); radius:
+    "turn" (the smallest flyable) or "max" (MaxRadius - margin); off_centre: where no circle
+    fits about the vehicle, fly one off it inside the VP; lead: how far ahead (s) the VV is cast."""
+
+    reach: float = 400.0
+    resolution_deg: float = 1.0
+    grid: float = 5.0
+    margin: float = 3.0
+    radius: str = "lemma6"
+    off_centre: bool = True
+    lead: float = 0.5
+    vehicle_height: float = 0.5
+    guidance: str = "field"
+    lookahead: tuple[float, ...] = (3.0, 6.0)
+    camera_reach: bool = False  # True: an off-centre circle only as far as the camera sees the vehicle from it
+    off_margin: float = 0.0  # m more kept for an off-centre circle (the UAV joins it late)
+    l1_period: float = 12.0  # s, the L1 period flying the orbit (0: the flight's, FollowFlight.l1_period)
+
+    def validate(self) -> None:
+        for name in ("reach", "resolution_deg", "grid"):
+            value = getattr(self, name)
+            if not (math.isfinite(value) and value > 0.0):
+                raise VistrackError(f"city_orbit.{name} = {value}: must be > 0")
+        for name in ("margin", "lead", "vehicle_height"):
+            value = getattr(self, name)
+            if not (math.isfinite(value) and value >= 0.0):
+                raise VistrackError(f"city_orbit.{name} = {value}: must be >= 0")
+        if not (math.isfinite(self.l1_period) and self.l1_period >= 0.0):
+            raise VistrackError(f"city_orbit.l1_period = {self.l1_period}: must be >= 0")
+        if self.guidance not in ("field", "circle"):
+            raise VistrackError(f"city_orbit.guidance = {self.guidance!r}: must be 'field' or 'circle'")
+        if any(not (math.isfinite(t) and t > 0.0) for t in self.lookahead):
+            raise VistrackError(f"city_orbit.lookahead = {self.lookahead}: times must be > 0")
+        if self.radius not in RADIUS_CHOICES:
+            raise VistrackError(f"city_orbit.radius = {self.radius!r}: must be one of " + ", ".join(RADIUS_CHOICES))
+
+
+@dataclass
+class OrbitUpdate:
+    """One update: the orbit's centre offset from the vehicle, its radius, MaxRadius about the
+    predicted position, the turn-limited radius, whether a flyable circle fits about the vehicle
+    and anywhere in the VP, and whether this update cast a new VV."""
+
+    t: float
+    shift: tuple[float, float]
+    radius: float
+    max_radius: float
+    turn_radius: float
+    fits_about: bool
+    fits_anywhere: bool
+    new_volume: bool
+
+
+@dataclass
+class CityOrbitResult:
+    """The flown city orbit: samples (t, state x y psi, bank, vehicle), the updates, and per
+    sample the line of sight and whether the camera sees the vehicle."""
+
+    t: np.ndarray
+    state: np.ndarray
+    bank: np.ndarray
+    vehicle: np.ndarray
+    updates: list[OrbitUpdate]
+    line_of_sight: np.ndarray
+    in_view: np.ndarray
+    volumes: int
+    strategy: str = "city_orbit"
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def metrics(self) -> dict[str, Any]:
+        weights = np.diff(self.t, append=self.t[-1])  # each sample holds until the next
+        total = float(weights.sum()) or 1.0
+        times = np.array([u.t for u in self.updates])
+        held = np.diff(times, append=float(self.t[-1]))  # each update holds until the next
+        span = float(held.sum()) or 1.0
+        return {
+            "strategy": self.strategy, "duration_s": float(self.t[-1] - self.t[0]),
+            "camera_fraction": float(weights @ self.in_view) / total,
+            "line_of_sight_fraction": float(weights @ self.line_of_sight) / total,
+            "camera_and_line_of_sight_fraction": float(weights @ (self.in_view & self.line_of_sight)) / total,
+            "flyable_circle_about_vehicle_fraction": float(held @ [u.fits_about for u in self.updates]) / span,
+            "flyable_circle_in_polygon_fraction": float(held @ [u.fits_anywhere for u in self.updates]) / span,
+            "mean_radius_m": float(np.mean([u.radius for u in self.updates])),
+            "mean_vehicle_distance_m": float(weights @ np.hypot(*(self.state[:, :2] - self.vehicle).T)) / total,
+            "updates": len(self.updates), "volumes": self.volumes,
+            "max_new_volumes_per_update": int(max((u.new_volume for u in self.updates), default=0)),
+        }
+
+
+def camera_radius(uav: Uav, camera: DownwardCamera, gravity: float = 9.80665) -> float:
+    """The largest orbit radius at which the camera sees the orbit's centre even at the steepest
+    bank the UAV can fly, atan(v^2 / (g r_min)): the centre's angle off the vertical, atan(R / h),
+    plus that bank within the half field of view plus the gimbal's range."""
+    steepest = math.atan(uav.speed ** 2 / (gravity * uav.min_turn_radius))
+    room = 0.5 * camera.fov + camera.max_gimbal - steepest
+    return uav.altitude * math.tan(max(room, 0.0))
+
+
+def shift_reach(uav: Uav, camera: DownwardCamera, radius: float, gravity: float = 9.80665) -> float:
+    """How far an orbit of ``radius`` may be off the vehicle with the camera still seeing it from
+    the far side in a steady turn: h tan(fov/2 + gimbal - bank) - radius, bank = atan(v^2/(g R))."""
+    bank = math.atan(uav.speed ** 2 / (gravity * radius))
+    return uav.altitude * math.tan(max(0.5 * camera.fov + camera.max_gimbal - bank, 0.0)) - radius
+
+
+def common_shift(rooms: Sequence[tuple[np.ndarray, OrbitRoom]], radius: float, previous: np.ndarray,
+                 hold: float = 20.0, reach: float = math.inf) -> Optional[np.ndarray]:
+    """The offset from the vehicle of a circle of ``radius`` that moves with it and lies inside
+    every room's VP at the vehicle's position there (the rooms of its predicted positions), nearest
+    the vehicle, at most ``reach`` m from it; the ``previous`` offset while it still fits and is
+    less than ``hold`` m farther (no jumps for a few metres); None when there is none."""
+    import shapely
+
+    common: Any = None
+    for where, room in rooms:
+        inner = shapely.affinity.translate(room.inner(radius), -where[0], -where[1])
+        common = inner if common is None else shapely.intersection(common, inner)
+        if common.is_empty:
+            return None
+    if common is None:
+        return None
+    target = shapely.Point(0.0, 0.0)
+    if math.isfinite(reach):
+        common = shapely.intersection(common, target.buffer(max(reach, 0.0), quad_segs=16))
+        if common.is_empty:
+            return None
+    at, first = rooms[0]
+    boundary: Any = first.region().boundary  # type: ignore[attr-defined]
+    for piece in sorted((g for g in shapely.get_parts(common) if not g.is_empty), key=lambda g: g.distance(target)):
+        x, y = shapely.shortest_line(piece, target).coords[0]
+        centre = shapely.Point(x + at[0], y + at[1])
+        if boundary.distance(centre) >= radius * (1.0 - 6e-3) - 0.1:  # not a buffer sliver
+            best = np.array([x, y])
+            if common.contains(shapely.Point(*previous)) and np.hypot(*previous) < np.hypot(*best) + hold:
+                return np.asarray(previous, dtype=float)
+            return best
+    return None
+
+
+def field_track(q: Sequence[float] | np.ndarray, center: np.ndarray, velocity: np.ndarray, radius: float,
+                gains: GuidanceGains, horizon: float, step: float = 0.1) -> np.ndarray:
+    """The ground path (n, 2) the tracking paper's vector field (74) and steering law (86) would
+    fly from the UAV's pose ``q`` (x, y, psi) about a centre moving from ``center`` at ``velocity``
+    at ``radius``, for ``horizon`` s (turn rate clamped as the gains say): a flyable path that
+    joins the orbit, for L1 to follow."""
+    x, y, psi = (float(v) for v in q[:3])
+    points = [(x, y)]
+    for k in range(math.ceil(horizon / step)):
+        orbit = OrbitState(center=center + velocity * (k * step), center_velocity=velocity, radius=radius)
+        rate = steering(np.array([x, y, psi]), orbit, gains).command
+        x += gains.speed * math.cos(psi) * step
+        y += gains.speed * math.sin(psi) * step
+        psi += rate * step
+        points.append((x, y))
+    return np.array(points)
+
+
+def orbit_track(center: np.ndarray, velocity: np.ndarray, radius: float, start: np.ndarray, speed: float,
+                horizon: float, step: float = 0.25, ccw: bool = True) -> np.ndarray:
+    """The ground track (n, 2) of a UAV at ground speed ``speed`` circling at ``radius`` a centre
+    that moves from ``center`` at ``velocity``, from the bearing of ``start`` for ``horizon`` s."""
+    sign = 1.0 if ccw else -1.0
+    offset = np.asarray(start, dtype=float) - center
+    theta = math.atan2(offset[1], offset[0]) if np.hypot(*offset) > 1e-9 else 0.0
+    points = []
+    for k in range(math.ceil(horizon / step) + 1):
+        tau = k * step
+        c = center + velocity * tau
+        points.append(c + radius * np.array([math.cos(theta), math.sin(theta)]))
+        along = sign * np.array([-math.sin(theta), math.cos(theta)])  # direction of travel on the circle
+        v_along = float(velocity @ along)
+        # |v_c + R w along| = speed, w >= 0 (a centre faster than the UAV: the circle is not flyable; hold w = 0).
+        disc = v_along ** 2 - float(velocity @ velocity) + speed ** 2
+        omega = max(0.0, (-v_along + math.sqrt(max(disc, 0.0))) / radius)
+        theta += sign * omega * step
+    return np.array(points)
+
+
+def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, *,
+                      parameters: Optional[FollowParameters] = None, wind: Optional[Wind] = None,
+                      flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
+                      options: Optional[CityOrbitOptions] = None, ccw: bool = True,
+                      wind_estimate: Optional[Sequence[float]] = None) -> CityOrbitResult:
+    """Fly the city orbit about ``vehicle`` at world z = ground + ``uav.altitude`` (see the module)
+    in the true ``wind``; ``wind_estimate`` (east, north): what the planner knows of it (None: no
+    wind), planned in the air mass as the follower does."""
+    parameters = parameters or FollowParameters()
+    flight = flight or FollowFlight()
+    camera = camera or DownwardCamera()
+    options = options or CityOrbitOptions()
+    options.validate()
+    uav.validate()
+    altitude = scene.ground_level + uav.altitude
+    cache = VolumeCache(scene, math.hypot(uav.altitude, options.reach), options.resolution_deg, options.grid)
+    t0, t_end = vehicle.start_time, vehicle.end_time
+    period = parameters.update_period
+    l1_period = options.l1_period if options.l1_period > 0.0 else flight.l1_period
+    horizon = 3.0 * flight.l1_damping * l1_period / math.pi + 2.0 * period
+    updates: list[OrbitUpdate] = []
+    seen_radius = camera_radius(uav, camera)
+
+    gains = GuidanceGains.from_parameters(uav, Control(direction="ccw" if ccw else "cw"))
+    air = np.zeros(2) if wind_estimate is None else np.asarray(wind_estimate, dtype=float)
+
+    def track(q: np.ndarray, center: np.ndarray, v: np.ndarray, radius: float) -> np.ndarray:
+        """The path for L1 in the air mass (the centre moves at v - wind there), as it lies at the
+        update; the air mass, and the path with it, drifts with the wind until the next."""
+        if options.guidance == "field" and len(q) >= 3:
+            return field_track(q, center, v - air, radius, gains, horizon)
+        return orbit_track(center, v - air, radius, q[:2], uav.speed, horizon, ccw=ccw)
+
+    def rooms_ahead(p: np.ndarray, v: np.ndarray) -> list[tuple[np.ndarray, OrbitRoom]]:
+        """(vehicle position, room) at the lead and at the look-ahead times: the lead's VV always
+        (new when not cached), the farthest look-ahead's when no VV was cast yet in this update,
+        the others only when cached: at most one new VV per update."""
+        found: list[tuple[np.ndarray, OrbitRoom]] = []
+        times = [options.lead, *sorted(options.lookahead, reverse=True)]
+        for k, tau in enumerate(times):
+            where = p + v * tau
+            point = np.asarray(scene.poi_on_surface(np.array([[where[0], where[1], options.vehicle_height]])))[0]
+            if k > 0 and not cache.has(point) and (k > 1 or cache.computed > computed_before[0]):
+                continue
+            try:
+                found.append((where, orbit_room(scene, point, altitude, cache=cache)))
+            except VistrackError:  # a prediction inside a building: no room there
+                if k == 0:
+                    return []
+        return found
+
+    computed_before = [0]
+
+    def update(t: float, q: np.ndarray) -> np.ndarray:
+        p, v = np.asarray(vehicle.position(t)), np.asarray(vehicle.velocity(t))
+        relative = float(np.hypot(*(v - air)))  # the vehicle's speed in the air mass
+        # The smallest circle the UAV can fly (the planner's 1.25 r_min), and Lemma 6's radius at the
+        # vehicle's speed through the air (the smallest it can hold about a vehicle moving that fast).
+        turn = parameters.turn_margin * uav.min_turn_radius
+        lemma6 = turn * (1.0 + min(relative / uav.speed, 1.0)) ** 2
+        margin = options.margin + float(np.hypot(*v)) * options.lead  # the vehicle's way from the prediction
+        computed_before[0] = cache.computed
+        last = updates[-1] if updates else None
+        rooms = rooms_ahead(p, v)
+        if not rooms:  # the prediction stands in a building: keep the last orbit's shape
+            shift, radius = (np.array(last.shift), last.radius) if last else (np.zeros(2), turn)
+            updates.append(OrbitUpdate(t, (float(shift[0]), float(shift[1])), radius, 0.0, turn, False, False,
+                                       cache.computed > computed_before[0]))
+            return track(q, p + shift, v, radius)
+        now = rooms[0][1]
+        room_about = min(r.max_radius for _, r in rooms)  # the room about the vehicle over the look-ahead
+        about = now.max_radius - margin >= turn
+        wanted = max(turn, min(lemma6, seen_radius)) if options.radius == "camera" else lemma6
+        shift, radius, anywhere = np.zeros(2), lemma6, about
+        if room_about - margin >= turn:
+            radius = room_about - margin if options.radius == "max" else min(wanted, room_about - margin)
+        else:
+            previous = np.zeros(2) if last is None else np.array(last.shift)
+            for size in (wanted, lemma6, turn):
+                found = common_shift(rooms, size + margin + options.off_margin, previous,
+                                     reach=shift_reach(uav, camera, size) if options.camera_reach else math.inf)
+                if found is not None:
+                    shift, radius = found, size
+                    break
+            anywhere = about or now.flyable_circle(turn + margin) is not None
+            if not options.off_centre:
+                shift, radius = np.zeros(2), max(turn, min(lemma6, now.max_radius - margin))
+        updates.append(OrbitUpdate(t, (float(shift[0]), float(shift[1])), float(radius), now.max_radius, turn,
+                                   about, anywhere, cache.computed > computed_before[0]))
+        return track(q, p + shift, v, radius)
+
+    heading = float(vehicle.heading(t0))
+    p0 = np.asarray(vehicle.position(t0))
+    nominal = p0 + 200.0 * np.array([math.cos(heading), math.sin(heading)])
+    path = update(t0, nominal)
+    start = (float(path[0, 0]), float(path[0, 1]),
+             math.atan2(path[1, 1] - path[0, 1], path[1, 0] - path[0, 0]))
+    guidance = _flight.CurveL1(uav.speed, path, l1_period, flight.l1_damping)
+    next_update = [t0 + period]
+    planned: list[Any] = [t0, path]  # when the path was planned, and the path (in the air mass then)
+    drifts = bool(np.any(air != 0.0))
+
+    def on_step(t: float, q: Sequence[float]) -> None:
+        if t >= next_update[0] - 1e-9 and t < t_end - 1e-9:
+            planned[0], planned[1] = t, update(t, np.array([q[0], q[1], q[2]]))
+            while next_update[0] <= t + 1e-9:
+                next_update[0] += period
+        elif not drifts:
+            return
+        guidance.set_path(planned[1] + air * (t - planned[0]))
+
+    duration = flight.max_time if flight.max_time > 0.0 else t_end - t0
+    trajectory = _flight.fly(guidance, start, uav.speed, uav.min_turn_radius, wind=wind, dt=flight.dt,
+                             max_time=duration, integration=flight.integration, t0=t0, on_step=on_step, uav=uav)
+    t = np.asarray(trajectory.t)
+    state = np.column_stack([trajectory.x, trajectory.y, trajectory.psi])
+    bank = np.asarray(trajectory.bank)
+    where = np.array([vehicle.position(float(s)) for s in t])
+    in_view = np.array([camera_sees(camera, np.array([x, y, uav.altitude]), psi, b, np.array([gx, gy, 0.0]))
+                        for (x, y, psi), b, (gx, gy) in zip(state, bank, where)], dtype=bool)
+    n = len(t)
+    ground = np.asarray(scene.poi_on_surface(np.column_stack([where, np.full(n, options.vehicle_height)])))
+    sky = np.column_stack([state[:, :2], np.full(n, altitude)])
+    visible = np.asarray(scene.line_of_sight(sky, ground), dtype=bool)
+    return CityOrbitResult(t, state, bank, where, updates, visible, in_view, cache.computed)

@@ -1,0 +1,109 @@
+"""Following over a city (issue 31 part 6): the city orbit inside the visibility polygon of the
+vehicle's predicted position (oracles: analytic MaxRadius of a tower, Embree line of sight of every
+flown sample; at most one new VV per update)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import vistrack as vt
+from support.paths import EXAMPLES
+from support.refusal import refuses
+from vistrack.follow import FollowScenario, GroundVehicle, VehicleLeg
+from vistrack.follow.city_orbit import CityOrbitOptions, camera_radius, city_orbit_follow
+
+
+def _box(x0: float, x1: float, y0: float, y1: float) -> np.ndarray:
+    return np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]])
+
+
+def _parked(duration: float = 120.0) -> GroundVehicle:
+    return GroundVehicle.from_legs([VehicleLeg(math.pi / 2, 0.0, duration)])
+
+
+UAV = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=300.0)
+
+
+def _sight(scene: vt.VisibilityScene, result: object) -> np.ndarray:
+    """The oracle: one Embree ray per sample from the UAV to the vehicle 0.5 m above the surface."""
+    state, vehicle = result.state, result.vehicle  # type: ignore[attr-defined]
+    ground = scene.poi_on_surface(np.column_stack([vehicle, np.full(len(vehicle), 0.5)]))
+    sky = np.column_stack([state[:, :2], np.full(len(state), scene.ground_level + 300.0)])
+    return np.asarray(scene.line_of_sight(sky, ground))
+
+
+def test_a_circle_fits_about_the_vehicle() -> None:
+    """A tower (above the flight) 100 m east: MaxRadius 100 m >= 1.25 r_min + margin, so the UAV
+    orbits the parked vehicle at 62.5 m and sees it all the time once on the orbit."""
+    scene = vt.VisibilityScene(vt.Environment.from_buildings([(_box(100, 140, -200, 200), 400.0)]))
+    result = city_orbit_follow(_parked(), UAV, scene)
+    m = result.metrics
+    assert result.updates[0].max_radius == pytest.approx(100.0, abs=1.0)
+    assert all(u.fits_about and u.radius == pytest.approx(62.5) for u in result.updates)
+    assert np.array_equal(_sight(scene, result), result.line_of_sight)
+    assert m["line_of_sight_fraction"] >= 0.99 and m["camera_fraction"] >= 0.99
+    assert m["volumes"] == 1 and m["max_new_volumes_per_update"] <= 1
+
+
+def test_no_circle_about_the_vehicle_flies_one_off_it() -> None:
+    """Towers 35 m east and north: no 62.5 m circle about the vehicle; the orbit moves south-west
+    inside the polygon, the vehicle stays in sight."""
+    scene = vt.VisibilityScene(vt.Environment.from_buildings(
+        [(_box(35, 80, -300, 300), 400.0), (_box(-300, 35, 35, 80), 400.0)]))
+    result = city_orbit_follow(_parked(), UAV, scene)
+    late = result.t > 40.0  # after joining the orbit
+    assert not result.updates[-1].fits_about and result.updates[-1].fits_anywhere
+    shift = np.array(result.updates[-1].shift)
+    assert shift[0] < -20.0 and shift[1] < -20.0
+    assert _sight(scene, result)[late].mean() >= 0.99
+    assert result.metrics["flyable_circle_in_polygon_fraction"] == 1.0
+
+
+def test_options_name_the_field() -> None:
+    scene = vt.VisibilityScene(vt.Environment.from_buildings([(_box(100, 140, -200, 200), 400.0)]))
+    refuses(lambda: city_orbit_follow(_parked(), UAV, scene, options=CityOrbitOptions(radius="big")),
+            "city_orbit.radius", "big")
+    refuses(lambda: city_orbit_follow(_parked(), UAV, scene, options=CityOrbitOptions(grid=0.0)), "city_orbit.grid")
+    assert camera_radius(UAV, vt.follow.DownwardCamera()) == pytest.approx(
+        300.0 * math.tan(math.radians(37 + 25) - math.atan(21.0 ** 2 / (9.80665 * 50.0))))
+
+
+def test_charlotte_stop_run_beats_the_baseline(charlotte: Path, tmp_path: Path) -> None:
+    """examples/follow_stop_city.yaml: camera and line of sight together at least 10 points above
+    the baseline's, a flyable visible circle at least 90 % of the time, at most one new VV per
+    update; the report shows the table."""
+    scenario = FollowScenario.load(EXAMPLES / "follow_stop_city.yaml")
+    study = scenario.run()
+    city = study.metrics()["city"]
+    orbit, base = city["orbit"], city["baseline"]
+    assert orbit["camera_and_line_of_sight_fraction"] >= base["camera_and_line_of_sight_fraction"] + 0.10
+    assert orbit["flyable_circle_in_polygon_fraction"] >= 0.90
+    assert orbit["max_new_volumes_per_update"] <= 1 and orbit["volumes"] <= orbit["updates"]
+    assert study.city_orbit is not None and study.environment is not None
+    sight = _sight(vt.VisibilityScene(study.environment), study.city_orbit)
+    assert np.array_equal(sight, study.city_orbit.line_of_sight)
+    from vistrack.report.follow_city import city_orbit_blocks
+
+    text = "\n".join(str(b) for b in city_orbit_blocks(city))
+    assert "flyable circle" in text
+
+
+def test_camera_reach_bounds_the_offset() -> None:
+    """``camera_reach``: an off-centre orbit no farther off the vehicle than the camera still sees
+    it from in a steady turn (h tan(fov/2 + gimbal - bank) - R)."""
+    from vistrack.follow.city_orbit import shift_reach
+
+    scene = vt.VisibilityScene(vt.Environment.from_buildings(
+        [(_box(35, 80, -300, 300), 400.0), (_box(-300, 35, 35, 80), 400.0)]))
+    # The circle needs its centre >= 65.5 m from both faces: an offset of at least 43 m.
+    last = city_orbit_follow(_parked(60.0), UAV, scene, options=CityOrbitOptions(camera_reach=True)).updates[-1]
+    reach = shift_reach(UAV, vt.follow.DownwardCamera(), last.radius)  # 85 m at 300 m
+    assert 43.0 <= np.hypot(*last.shift) <= reach + 1e-6
+    low = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=200.0)
+    assert shift_reach(low, vt.follow.DownwardCamera(), 62.5) < 43.0  # 36 m: too far for the camera
+    last = city_orbit_follow(_parked(60.0), low, scene, options=CityOrbitOptions(camera_reach=True)).updates[-1]
+    assert last.shift == (0.0, 0.0) and last.fits_anywhere  # it stays about the vehicle
