@@ -194,15 +194,18 @@ def orbit_room(env: Scene, point: Sequence[float], altitude: float, d_max: float
     the ground or inside a building, or an altitude not above the point."""
     scene = cache.scene if cache is not None else visibility_scene(env)
     x, y, z = _ground_point(scene, point, altitude)
+    band = cache.altitude_band if cache is not None else None
+    if cache is not None and scene.inside_obstacle(np.add(cache.snapped((x, y, z)), (0.0, 0.0, 0.05))):
+        # The cell's point is inside a wall (the point is near one; 5 cm up, as a point on the ground is on
+        # a footprint's boundary): cast from the point itself, uncached.
+        d_max, resolution_deg, cache = cache.d_max, cache.resolution_deg, None
     if cache is None:
-        vv = visibility_volume(scene, (x, y, z), d_max, None, resolution_deg)
+        vv = visibility_volume(scene, (x, y, z), d_max, band, resolution_deg)
     else:
         key = (cache.key((x, y, z)), float(altitude))
         if key in cache.rooms:  # the cell's VP at this altitude, sliced already
             cache.lookups += 1
-            known = cache.rooms[key]
-            x, y, z = known.point
-            return known
+            return cache.rooms[key]
         x, y, _ = cache.snapped((x, y, z))  # the cell's point: MaxRadius about the point the VV is cast from
         vv = cache.volume((x, y, z))
     polygons = list(_core.plane_visibility_polygon(vv, float(altitude)))

@@ -71,6 +71,16 @@ def test_cache_counts_volumes_and_snaps_points() -> None:
     assert a.polygons[0].area == pytest.approx(b.polygons[0].area)
 
 
+def test_a_point_whose_cell_lies_in_a_wall_is_cast_from_itself() -> None:
+    """The cell's point (59.0 -> 60 on the 5 m grid) is inside the wall starting at x = 59.5: the VV
+    is cast from the point itself (uncached), whose MaxRadius is its distance to the face behind it."""
+    env = vt.Environment.from_buildings([(_box(59.5, 90, -80, 80), 400.0)])
+    cache = co.VolumeCache(env, d_max=500.0, grid=5.0)
+    room = co.orbit_room(env, (59.0, 0.0, 0.0), 300.0, cache=cache)
+    assert room.point == (59.0, 0.0, 0.0) and cache.computed == 0
+    assert room.max_radius == pytest.approx(0.5, abs=0.05)
+
+
 def test_bad_input_names_the_field() -> None:
     env = vt.Environment.from_buildings([(_box(60, 90, -80, 80), 100.0)])
     refuses(lambda: co.orbit_room(env, (0.0, 0.0, -5.0), 300.0), "point z", "-5")

@@ -131,3 +131,30 @@ def test_the_waypoints_command_flies_the_path_by_default_and_the_paper_on_reques
         assert record["settings"]["dwn_tracking"] == tracking
         misses[tracking] = record["flights"][0]["max_miss_over_R"]
     assert misses["auto"] <= 0.05 < misses["paper"]
+
+
+@pytest.mark.parametrize("flag", [["--replan-interval", "1"], ["--dwn-tracking", "path"]])
+def test_the_waypoints_command_refuses_dwn_flags_without_dwn(flag: list[str], tmp_path: Path,
+                                                             capsys: pytest.CaptureFixture[str]) -> None:
+    """DWN's own flags with --method wn fly no DWN: an error naming the flag, before any output."""
+    from vistrack.cli import main
+
+    out = tmp_path / "out"
+    code = main(["waypoints", str(REPO / "examples" / "waypoints_metres.csv"), "--method", "wn", *flag,
+                 "--out", str(out), "--quiet"])
+    assert code != 0
+    assert f"{flag[0]} = {flag[1]}: it is DWN's, and --method wn flies no DWN" in capsys.readouterr().err
+    assert not out.exists()
+
+
+def test_a_skipped_turning_point_leaves_no_stale_path() -> None:
+    """Started beside the first of two waypoints, its turning point is unreachable and skipped: the last
+    waypoint is then flown to directly, as the paper's law does (the path of the skipped plan, followed
+    on, looped back through it: 300 m longer)."""
+    route = np.array([[300.0, 0.0], [300.0, 600.0]])
+    options = {"turn_radius": 50.0, "speed": 20.0, "dynamics": "roll", "guidance": "l1", "start": (295.0, -5.0, 0.0)}
+    path = wn.fly(route, dwn_tracking="path", **options)
+    paper = wn.fly(route, dwn_tracking="paper", **options)
+    assert [r.direct for r in path.turning_point_records] == [False, True]
+    assert path.path_length == pytest.approx(paper.path_length, rel=0.02)
+    assert path.all_reached and path.swirls == 0

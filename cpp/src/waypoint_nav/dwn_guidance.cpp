@@ -69,6 +69,7 @@ void DubinsWaypointGuidance::follow(const Configuration& state, double t, const 
 }
 
 void DubinsWaypointGuidance::plan(const Configuration& state, double t) {
+  bool skipped = false;  // a turning point planned in this call was already unreachable
   while (true) {
     TurningPointRecord record;
     record.t = t;
@@ -84,6 +85,9 @@ void DubinsWaypointGuidance::plan(const Configuration& state, double t) {
       record.path.first_straight = record.path.length = (record.path.point - record.path.line_start).norm();
       record.wind = Vec2::Zero();  // a ground point: it does not drift
       air_line_start_ = record.path.line_start;
+      // The path followed so far ends along the last leg, unless its turning point was skipped as
+      // unreachable: then the leg law flies straight to the last waypoint.
+      if (skipped) follower_.reset();
     } else if (wind_.norm() > 0.0) {
       HorizonPath air;
       record.path = air_mass_turning_point(state, waypoints_[active_], waypoints_[active_ + 1], turn_radius_,
@@ -112,6 +116,7 @@ void DubinsWaypointGuidance::plan(const Configuration& state, double t) {
     if (!unreachable(state, air_target_, turn_radius_)) return;
     // Already unreachable from here (behind, or inside a turning circle): the next one.
     ++active_;
+    skipped = true;
   }
 }
 

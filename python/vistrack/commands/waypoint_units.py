@@ -13,13 +13,16 @@ import numpy as np
 from .. import waypoint_nav as wn
 from .._core import Uav
 from ..flight import paper_gains
-from .types import UsageError, fdm_choice
+from .types import UsageError, fdm_choice, number
 
 # The follow runs' L1 period (FollowFlight.l1): L1 = 0.75 * 8 * v / pi = 38 m at 20 m/s, under R = 50 m.
 L1_PERIOD = 8.0
 
 
-def add_dwn_tracking_argument(parser: argparse.ArgumentParser) -> None:
+def add_dwn_arguments(parser: argparse.ArgumentParser) -> None:
+    """DWN's own flags: --replan-interval and --dwn-tracking (refused when no DWN flight flies)."""
+    parser.add_argument("--replan-interval", type=number("--replan-interval", 0.0, 3600.0), default=0.0,
+                        help="DWN re-plans its turning point every so many s (default 0: when unreachable)")
     parser.add_argument("--dwn-tracking", choices=["auto", "paper", "path"], default="auto",
                         help="how DWN flies its plan: paper (the leg law to each turning point), path (beyond the "
                              "paper: the planned path followed, the roll anticipated); default auto: paper on the "
@@ -34,6 +37,12 @@ def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any
     R = args.turn_radius if args.turn_radius is not None else (d["turn_radius"] if paper else Uav().min_turn_radius)
     v = args.speed if args.speed is not None else (d["speed"] if paper else Uav().speed)
     dynamics = fdm_choice(args)[0] or ("dubins" if paper else "roll")
+    if getattr(args, "method", "dwn") not in ("dwn", "both", "all"):
+        for flag, value, default in (("--replan-interval", args.replan_interval, 0.0),
+                                     ("--dwn-tracking", getattr(args, "dwn_tracking", "auto"), "auto")):
+            if value != default:
+                shown = value if isinstance(value, str) else f"{value:g}"
+                raise UsageError(f"{flag} = {shown}: it is DWN's, and --method {args.method} flies no DWN")
     if paper and dynamics != "dubins":
         # The roll model needs g in m/s^2; the paper's units are dimensionless.
         raise UsageError(f"--dynamics = {dynamics}: the waypoint paper's dimensionless units (--paper-units) fly the "

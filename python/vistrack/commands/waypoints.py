@@ -25,7 +25,7 @@ from .export import add_export_arguments, check_exports, export_mission
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
 from .types import add_dynamics_argument, coordinate, count, length, number, speed
-from .waypoint_units import L1_PERIOD, add_dwn_tracking_argument, fdm_aircraft, flight_options
+from .waypoint_units import L1_PERIOD, add_dwn_arguments, fdm_aircraft, flight_options
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -58,9 +58,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
                         help=f"guidance l1: the L1 period, s (default {L1_PERIOD:g}, as the follow runs fly)")
     parser.add_argument("--wind-aware", action="store_true", help="the guidance knows the mean wind (--wind): the "
                         "leg law steers the course over the ground, DWN plans its turning points in the air mass")
-    parser.add_argument("--replan-interval", type=number("--replan-interval", 0.0, 3600.0), default=0.0,
-                        help="DWN re-plans its turning point every so many s (default 0: when unreachable)")
-    add_dwn_tracking_argument(parser)
+    add_dwn_arguments(parser)
     parser.add_argument("--gains", type=finite_numbers("--gains", 2, "0.1,5.25"),
                         help="law (5)'s g,h (default the paper's 0.1,5.25, scaled by 0.7 / R in metres)")
     parser.add_argument("--integration", choices=["discrete", "continuous"], default=d["integration"])
@@ -115,6 +113,7 @@ def run(args: argparse.Namespace) -> int:
               f"swirls {f.swirls}, path {f.path_length:.4g}, time {f.duration:.4g}, all reached {f.all_reached}, "
               f"{smooth.roll_reversals_per_s:.2f} roll reversals/s")
     for f6 in six:
-        print(f"{'6-DOF ' + f6.method:>18}: max miss {f6.summary()['max_miss_over_R']:.3f} R on {aircraft}")
+        label = f6.method + ("" if f6.waypoint_radius is None else f" {f6.waypoint_radius / R:g}R")
+        print(f"{'6-DOF ' + label:>18}: max miss {f6.summary()['max_miss_over_R']:.3f} R on {aircraft}")
     print(f"-> {args.out}")
     return 0

@@ -15,10 +15,11 @@ from typing import Any
 import yaml
 
 from .._core import VistrackError
+from .._core.loiter import STANDARD_GRAVITY
 
 AIRCRAFT_DIR = Path(__file__).resolve().parent / "aircraft"
 DEFAULT_AIRCRAFT = "aerosonde"
-GRAVITY = 9.80665  # m/s^2
+GRAVITY = STANDARD_GRAVITY  # m/s^2, the core's
 
 
 @dataclass(frozen=True)
@@ -122,6 +123,21 @@ def aircraft(name: str = DEFAULT_AIRCRAFT) -> Aircraft:
     if not path.is_file():
         raise VistrackError(f"aircraft = {name!r} is unknown: expected one of {aircraft_names()}")
     data = yaml.safe_load(path.read_text())
+    if not isinstance(data, dict):
+        raise VistrackError(f"aircraft {name!r}: {path} is not a mapping")
+    try:
+        plane = _aircraft(name, data)
+    except (KeyError, TypeError, ValueError) as error:
+        raise VistrackError(f"aircraft {name!r}: {path}: missing or bad key {error}") from None
+    r = plane.rates
+    if not (0 < r.guidance_hz <= r.autopilot_hz <= r.fdm_hz and r.autopilot_hz % r.guidance_hz == 0
+            and r.fdm_hz % r.autopilot_hz == 0):
+        raise VistrackError(f"aircraft {name!r}: rates = {r}: guidance_hz must divide autopilot_hz, which must "
+                            "divide fdm_hz")
+    return plane
+
+
+def _aircraft(name: str, data: dict[str, Any]) -> Aircraft:
     env, gains = _section(data, "envelope", name), _section(data, "gains", name)
     rates, controls = _section(data, "rates", name), _section(data, "controls", name)
     roll, pitch, alt = gains["roll"], gains["pitch"], gains["altitude"]

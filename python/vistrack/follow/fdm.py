@@ -59,7 +59,7 @@ def fly_follow_fdm(vehicle: Any, uav: Uav, parameters: Any, start: Sequence[floa
     camera = camera or _follow.DownwardCamera()
     wind = wind or Wind()
     estimate = np.array(wind_estimate if wind_estimate is not None else (wind.east, wind.north), dtype=float)
-    planner = _follow.FollowPlanner(parameters, uav, estimate)
+    planner = _follow.FollowPlanner(parameters, uav, estimate, camera)  # threshold auto reads the camera
     t0 = vehicle.start_time
     duration = flight.max_time if flight.max_time > 0.0 else vehicle.end_time - t0
     period = parameters.update_period

@@ -217,6 +217,11 @@ class FollowScenario:
         if self.aircraft is not None:
             if self.offset_schedule:
                 raise fail("offset_schedule", len(self.offset_schedule), "is not flown on a 6-DOF aircraft (jsbsim)")
+            r = self.reports  # the 6-DOF planner observes the vehicle exactly at each update
+            if (r.position_noise, r.velocity_noise, r.latency, r.dropout) != (0.0, 0.0, 0.0, 0.0):
+                raise fail("reports", {"position_noise": r.position_noise, "velocity_noise": r.velocity_noise,
+                                       "latency": r.latency, "dropout": r.dropout},
+                           "imperfect vehicle reports are not flown on a 6-DOF aircraft (jsbsim)")
             say(f"6-DOF follow on {self.aircraft}")
             study.fdm = fly_follow_fdm(self.vehicle, self.uav, parameters, follow.state[0], aircraft=self.aircraft,
                                        wind=self.wind, wind_estimate=self.wind_estimate, flight=self.flight,

@@ -9,7 +9,6 @@ the loiter time covered, the cross-track distance from the plan.
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
@@ -17,6 +16,7 @@ import numpy as np
 from .. import flight
 from ..fdm import FdmTrajectory, FlightGuidanceLaw
 from ..fdm import fly as fly_6dof
+from ..fdm.aircraft import GRAVITY
 from ..flight import flight_smoothness
 from .flying import fly_and_score, path_pieces
 from .planning import Coverage, Plan
@@ -24,7 +24,6 @@ from .scenario import Scenario
 
 __all__ = ["FdmFlown", "fdm_score", "fly_fdm"]
 
-GRAVITY = 9.80665
 # The PathFollower's anticipation on the 6-DOF aircraft: about the autopilot's roll response (s).
 ANTICIPATION = 0.5
 
@@ -69,5 +68,5 @@ def fdm_score(scenario: Scenario, plan: Plan, wind: tuple[float, float], planned
     record.update(aircraft=aircraft, altitude_error_max_m=flown.fdm.altitude_error_max,
                   airspeed_error_max_m_s=flown.fdm.airspeed_error_max,
                   real_time_factor=float((flown.t[-1] - flown.t[0]) / flown.fdm.seconds) if flown.fdm.seconds else
-                  math.nan)
+                  None)
     return record

@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Optional
+from typing import Any, Optional
 
 import numpy as np
 
@@ -33,21 +33,10 @@ def figure_fdm(kinematic: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray],
     ax.set_title("ground track")
     ax.legend(loc="best", fontsize=8)
 
-    ax = axes[0, 1]
-    ax.plot(six_dof.t, six_dof.altitude, color="tab:red", lw=1.0, label="6-DOF")
-    ax.axhline(six_dof.altitude_command, color="k", ls="--", lw=0.8, label="command")
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("altitude (m)")
-    ax.set_title(f"altitude: largest error {six_dof.altitude_error_max:.2f} m")
-    ax.legend(loc="best", fontsize=8)
-
-    ax = axes[1, 0]
-    ax.plot(six_dof.t, six_dof.airspeed, color="tab:red", lw=1.0, label="6-DOF")
-    ax.axhline(six_dof.speed, color="k", ls="--", lw=0.8, label="command (the kinematic vehicle's)")
-    ax.set_xlabel("t (s)")
-    ax.set_ylabel("true airspeed (m/s)")
-    ax.set_title(f"airspeed: largest error {six_dof.airspeed_error_max:.2f} m/s")
-    ax.legend(loc="best", fontsize=8)
+    _held(axes[0, 1], six_dof.t, six_dof.altitude, six_dof.altitude_command, "command", "altitude (m)",
+          f"altitude: largest error {six_dof.altitude_error_max:.2f} m")
+    _held(axes[1, 0], six_dof.t, six_dof.airspeed, six_dof.speed, "command (the kinematic vehicle's)",
+          "true airspeed (m/s)", f"airspeed: largest error {six_dof.airspeed_error_max:.2f} m/s")
 
     ax = axes[1, 1]
     ax.plot(t, np.degrees(bank), color="tab:blue", lw=1.0, label=kinematic_label)
@@ -62,3 +51,14 @@ def figure_fdm(kinematic: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray],
     if title:
         fig.suptitle(title)
     return save_figure(fig, path)
+
+
+def _held(ax: Any, t: np.ndarray, value: np.ndarray, command: float, command_label: str, ylabel: str,
+          title: str) -> None:
+    """One panel: a quantity the autopilot holds, against its command."""
+    ax.plot(t, value, color="tab:red", lw=1.0, label="6-DOF")
+    ax.axhline(command, color="k", ls="--", lw=0.8, label=command_label)
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(loc="best", fontsize=8)
