@@ -132,14 +132,15 @@ void bind_follow(py::module_& parent) {
                        const std::string& loiter_pattern, double loiter_radius, Circulation loiter_direction,
                        double offset_distance, double offset_angle, const std::string& offset_reference,
                        bool wind_compensation, double update_period, const std::string& strategy,
-                       double strategy_margin) {
+                       double strategy_margin, double standoff_radius) {
              const double threshold = threshold_of(threshold_value);
              FollowParameters p{period, turn_margin, threshold, hysteresis,
                                 from_name<LoiterPattern>(loiter_pattern, "follow.loiter_pattern"), loiter_radius,
                                 loiter_direction, offset_distance, offset_angle,
                                 from_name<OffsetReference>(offset_reference, "follow.offset_reference"),
                                 wind_compensation, update_period,
-                                from_name<FollowStrategy>(strategy, "follow.strategy"), strategy_margin};
+                                from_name<FollowStrategy>(strategy, "follow.strategy"), strategy_margin,
+                                standoff_radius};
              p.validate();
              return p;
            }),
@@ -150,7 +151,7 @@ void bind_follow(py::module_& parent) {
            py::arg("offset_angle") = defaults.offset_angle, py::arg("offset_reference") = to_string(defaults.offset_reference),
            py::arg("wind_compensation") = defaults.wind_compensation, py::arg("update_period") = defaults.update_period,
            py::arg("strategy") = to_string(defaults.strategy), py::arg("strategy_margin") = defaults.strategy_margin,
-           "Validated parameters.")
+           py::arg("standoff_radius") = defaults.standoff_radius, "Validated parameters.")
       .def_readwrite("period", &FollowParameters::period, "T: time for the vehicle to cover one period, s")
       .def_readwrite("turn_margin", &FollowParameters::turn_margin, "tightest planned turn / r_min")
       .def_property(
@@ -181,6 +182,8 @@ void bind_follow(py::module_& parent) {
           "the pattern predicted to see the vehicle most)")
       .def_readwrite("strategy_margin", &FollowParameters::strategy_margin,
                      "strategy auto: switch only for this much more predicted camera fraction")
+      .def_readwrite("standoff_radius", &FollowParameters::standoff_radius,
+                     "m; the standoff orbit's constant radius (the baseline's); 0: the smallest flyable per update")
       .def("validate", &FollowParameters::validate, "Raise VistrackError naming the first invalid field.");
 
   const FollowFlight flight_defaults;

@@ -68,6 +68,8 @@ def test_options_name_the_field() -> None:
     refuses(lambda: city_orbit_follow(_parked(), UAV, scene, options=CityOrbitOptions(radius="big")),
             "city_orbit.radius", "big")
     refuses(lambda: city_orbit_follow(_parked(), UAV, scene, options=CityOrbitOptions(grid=0.0)), "city_orbit.grid")
+    refuses(lambda: city_orbit_follow(_parked(), UAV, scene, options=CityOrbitOptions(choose="best")),
+            "city_orbit.choose", "best")
     assert camera_radius(UAV, vt.follow.DownwardCamera()) == pytest.approx(
         300.0 * math.tan(math.radians(37 + 25) - math.atan(21.0 ** 2 / (9.80665 * 50.0))))
 
@@ -90,6 +92,25 @@ def test_charlotte_stop_run_beats_the_baseline(charlotte: Path, tmp_path: Path) 
 
     text = "\n".join(str(b) for b in city_orbit_blocks(city))
     assert "flyable circle" in text
+
+
+def test_charlotte_straight_run_chooses_by_predicted_sight(charlotte: Path) -> None:
+    """examples/follow_straight_city.yaml (Fig. 5's speeds): the radius about the vehicle grows at most
+    ``grow`` m per update, where no circle fits about the vehicle the predicted flight picks the
+    off-centre circle or one about the vehicle (both happen), and camera and line of sight together
+    are 5 points above the baseline (88.0 % against 81.5 %; 82.0 % before both; the issue's 10 points
+    are not reached on this run)."""
+    study = FollowScenario.load(EXAMPLES / "follow_straight_city.yaml").run()
+    city = study.metrics()["city"]
+    orbit, base = city["orbit"], city["baseline"]
+    assert orbit["camera_and_line_of_sight_fraction"] >= base["camera_and_line_of_sight_fraction"] + 0.05
+    assert orbit["max_new_volumes_per_update"] <= 1
+    assert study.city_orbit is not None
+    updates = study.city_orbit.updates
+    kinds = {u.shift == (0.0, 0.0) for u in updates if not u.fits_about}
+    assert kinds == {True, False}
+    growth = [b.radius - a.radius for a, b in zip(updates, updates[1:]) if a.shift == b.shift == (0.0, 0.0)]
+    assert sum(g > CityOrbitOptions().grow + 1e-9 for g in growth) <= 0.01 * len(growth)
 
 
 def test_camera_reach_bounds_the_offset() -> None:

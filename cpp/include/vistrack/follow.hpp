@@ -337,6 +337,9 @@ class FollowPlanner {
   // point a loiter keeps (sigma at the band's lower edge). The one place that chooses it (a city
   // mode picks it from the visibility polygon here).
   double orbit_radius(double frame_speed) const;
+  // The standoff orbit's radius at this update: follow.standoff_radius when given (the baseline's
+  // constant radius), else the tick's orbit_radius.
+  double standoff_radius(const FollowTick& tick) const;
   // Strategy auto's prediction: the fraction of one steady cycle of the tick's pattern (its mode
   // and shape, sampled in time) in which the camera sees the vehicle, the vehicle predicted at the
   // offset point's velocity, the bank that of a coordinated turn on the planned air path.
@@ -467,6 +470,8 @@ class OrbitFollower : public FlightGuidance {
                 const std::vector<OffsetKey>& offset_schedule, const GuidanceGains& gains, double radius);
   // The orbit's centre and its velocity at t.
   OrbitState orbit(double t) const;
+  // A new radius (the planner's standoff orbit renews it at each update).
+  void set_radius(double radius);
   void start(const Configuration&, double) override {}
   GuidanceCommand command(const Configuration& state, double t) const override;
   void advance(const Configuration&, double) override {}

@@ -84,6 +84,10 @@ struct FollowParameters {
   FollowStrategy strategy = FollowStrategy::Paper;
   // strategy auto: switch only to a pattern predicted to see the vehicle this much more often.
   double strategy_margin = 0.05;
+  // The standoff orbit's radius: 0, the smallest flyable for the offset point's current speed
+  // (Lemma 6 of the tracking paper, as the loiter circle); > 0, this constant radius (the
+  // baseline's: a scenario sets the baseline's radius here for strategies standoff and auto).
+  double standoff_radius = 0.0;       // m
   void validate() const;
 };
 

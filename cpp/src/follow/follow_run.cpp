@@ -51,12 +51,46 @@ Configuration start_on_plan(const GroundVehicle& vehicle, const Uav& uav, const 
   const double heading = vehicle.heading(t0);
   const Vec2 offset_point = vehicle.position(t0) + probe.offset_vector(heading);
   const FollowTick tick = probe.update(t0, observe(vehicle, t0, offset_point, heading));
+  if (tick.mode == FollowMode::Standoff) {
+    // On the orbit at the vehicle's heading, heading along the field (74) there: as the baseline.
+    const OrbitState orbit{tick.offset_point, tick.offset_velocity, tick.radius, 0.0};
+    const Vec2 p = orbit.center + tick.radius * Vec2(std::cos(heading), std::sin(heading));
+    return {p.x(), p.y(), vector_field(p, orbit, GuidanceGains::from(uav, Control{})).heading};
+  }
   const double h = 0.01;
   const Vec2 p0 = tick.offset_point + probe.relative_position(tick, 0.0);
   const Vec2 p1 = tick.offset_point + vehicle.velocity(t0) * h + probe.relative_position(tick, h);
   const Vec2 air = (p1 - p0) / h - wind;
   return {p0.x(), p0.y(), air.norm() > 0.0 ? std::atan2(air.y(), air.x()) : heading};
 }
+
+// The plan flown: the standoff orbit by the tracking paper's steering law (86) on its field (74)
+// about the offset point as the reports know it (the baseline's law, OrbitFollower), every other
+// pattern by the leg or path follower, which keeps its state throughout.
+class PlanGuidance : public FlightGuidance {
+ public:
+  PlanGuidance(FlightGuidance& legs, OrbitFollower& orbit) : legs_(legs), orbit_(orbit) {}
+  void fly_standoff(bool on, double radius) {
+    if (on) orbit_.set_radius(radius);
+    standoff_ = on;
+    touch();
+  }
+  void start(const Configuration& state, double t) override { legs_.start(state, t); }
+  GuidanceCommand command(const Configuration& state, double t) const override {
+    return standoff_ ? orbit_.command(state, t) : legs_.command(state, t);
+  }
+  void advance(const Configuration& state, double t) override { legs_.advance(state, t); }
+  bool done() const override { return legs_.done(); }
+  double switching_function(const Configuration& state, double t) const override {
+    return standoff_ ? std::numeric_limits<double>::infinity() : legs_.switching_function(state, t);
+  }
+  double next_change_time(double t) const override { return legs_.next_change_time(t); }
+
+ private:
+  FlightGuidance& legs_;
+  OrbitFollower& orbit_;
+  bool standoff_ = false;
+};
 
 }  // namespace
 
@@ -116,7 +150,15 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
   std::optional<CurveL1> path_follower;
   if (curve) path_follower.emplace(uav.speed, planned(), options.flight.l1);
   else follower.emplace(law, std::vector<Vec2>{run.ticks.back().waypoint}, kSwitchAtOnce, false);
-  FlightGuidance& guidance = curve ? static_cast<FlightGuidance&>(*path_follower) : *follower;
+  FlightGuidance& legs = curve ? static_cast<FlightGuidance&>(*path_follower) : *follower;
+  OrbitFollower orbit(reports, parameters, options.offset_schedule, GuidanceGains::from(uav, Control{}),
+                      uav.min_turn_radius);
+  PlanGuidance guidance(legs, orbit);
+  const auto fly_tick = [&] {
+    const FollowTick& tick = run.ticks.back();
+    guidance.fly_standoff(tick.mode == FollowMode::Standoff && !tick.lost, tick.radius);
+  };
+  fly_tick();
 
   // Every update_period: observe, plan, issue the next waypoint (available at once).
   double next_update = t0 + period;
@@ -125,6 +167,7 @@ FollowRun follow(const GroundVehicle& vehicle, const Uav& uav, const FollowParam
     plan(t, Vec2(q.x, q.y), q.psi);
     if (curve) path_follower->set_path(planned());
     else follower->add_waypoint(run.ticks.back().waypoint, t);
+    fly_tick();
     while (next_update <= t + 1e-9) next_update += period;
   };
   FlightOptions flight;

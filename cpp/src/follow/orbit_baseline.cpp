@@ -15,6 +15,12 @@ OrbitFollower::OrbitFollower(const VehicleReports& reports, const FollowParamete
   require_positive(radius_, "radius");
 }
 
+void OrbitFollower::set_radius(double radius) {
+  require_positive(radius, "radius");
+  if (radius != radius_) touch();
+  radius_ = radius;
+}
+
 OrbitState OrbitFollower::orbit(double t) const {
   const VehicleEstimate e = reports_.estimate(t);
   OrbitState orbit;

@@ -29,6 +29,7 @@ void FollowParameters::validate() const {
   require_positive(update_period, "follow.update_period");
   if (!(strategy_margin >= 0.0 && strategy_margin <= 1.0))
     detail::fail_field("follow.strategy_margin", strategy_margin, "must be a fraction in [0, 1]");
+  require_in_range(standoff_radius, 0.0, limits::kMaxLength, "m", "follow.standoff_radius");
 }
 
 void FollowFlight::validate() const {

@@ -81,6 +81,10 @@ double FollowPlanner::orbit_radius(double frame_speed) const {
   return parameters_.turn_margin * uav_.min_turn_radius * std::pow(1.0 + ratio, 2);
 }
 
+double FollowPlanner::standoff_radius(const FollowTick& tick) const {
+  return parameters_.standoff_radius > 0.0 ? parameters_.standoff_radius : tick.radius;
+}
+
 Vec2 FollowPlanner::offset_vector(double vehicle_heading) const {
   const double angle = parameters_.offset_angle + (parameters_.offset_reference == OffsetReference::Heading ? vehicle_heading : 0.0);
   return parameters_.offset_distance * Vec2(std::cos(angle), std::sin(angle));
@@ -349,25 +353,34 @@ FollowMode FollowPlanner::choose_mode(const FollowTick& tick, FollowMode paper_m
       break;
   }
   if (tick.speed_ratio < 1.0) return FollowMode::Straight;
-  // Hold a pattern being captured; otherwise the best predicted, leaving the current one only for a
-  // margin more.
+  // Hold a pattern being captured; otherwise the best predicted, leaving the standoff orbit or the
+  // current pattern only for a margin more.
   if (has_previous_ && !previous_.lost && previous_.capturing && previous_.mode != FollowMode::Straight)
     return previous_.mode;
   FollowMode best = FollowMode::Sinusoid;
-  double best_fraction = -1.0, current_fraction = -1.0;
+  double best_fraction = -1.0, current_fraction = -1.0, standoff_fraction = -1.0;
   for (FollowMode mode : {FollowMode::Sinusoid, FollowMode::Loiter, FollowMode::Standoff}) {
     if (mode != FollowMode::Sinusoid && !orbits) continue;
     // A nearly standing offset point: the sinusoid's amplitude grows without bound (eq. 10).
     if (mode == FollowMode::Sinusoid && !(tick.speed_ratio <= kMaxSinusoidRatio)) continue;
     FollowTick candidate = tick;
     candidate.mode = mode;
+    if (mode == FollowMode::Standoff) candidate.radius = standoff_radius(tick);
     if (mode == FollowMode::Sinusoid) set_sinusoid_shape(candidate);
     const double fraction = predicted_camera(candidate);
+    if (mode == FollowMode::Standoff) standoff_fraction = fraction;
     if (fraction > best_fraction) {
       best_fraction = fraction;
       best = mode;
     }
     if (has_previous_ && !previous_.lost && previous_.mode == mode) current_fraction = fraction;
+  }
+  // The standoff orbit (the baseline's own pattern, flown by its law) is the default: another
+  // pattern must be predicted to see the vehicle a margin more often, as the steady cycle knows
+  // neither the roll lag nor the capture.
+  if (orbits && best != FollowMode::Standoff && best_fraction <= standoff_fraction + parameters_.strategy_margin) {
+    predicted = standoff_fraction;
+    return FollowMode::Standoff;
   }
   if (current_fraction >= 0.0 && best_fraction <= current_fraction + parameters_.strategy_margin) {
     predicted = current_fraction;
@@ -424,6 +437,7 @@ FollowTick FollowPlanner::update(double t, const FollowObservation& o) {
   if (!o.lost) {
     tick.mode = choose_mode(tick, tick.mode, tick.predicted_camera);
   }
+  if (tick.mode == FollowMode::Standoff) tick.radius = standoff_radius(tick);
   const Vec2 uav_relative = o.uav_position - tick.offset_point;
   // Losing or regaining the vehicle moves the centre: the pattern is entered afresh.
   const bool same_mode = has_previous_ && previous_.mode == tick.mode && previous_.lost == tick.lost;

@@ -7,9 +7,11 @@ polygon (VP) at the flight altitude and MaxRadius about it (VVs cached by positi
 most one new VV per update). The orbit's radius is the turn-limited radius R_turn (Lemma 6 at the
 vehicle's current speed, with the planner's turn margin) when MaxRadius - margin >= R_turn: a circle
 about the vehicle inside its VP, so the line of sight holds; ``radius="max"`` flies MaxRadius -
-margin instead (the tracking paper's choice, farthest from the vehicle). Where no such circle fits,
-the flyable circle of radius R_turn inside the VP nearest the vehicle (off-centre, moving with it),
-and where none fits anywhere, R_turn about the vehicle (the line of sight may break).
+margin instead (the tracking paper's choice, farthest from the vehicle); the radius grows by at most
+``grow`` m per update. Where no such circle fits, the flyable circle of radius R_turn inside the VP
+nearest the vehicle (off-centre, moving with it) or the largest flyable about the vehicle, whichever
+the flight predicted along the field (74)/(86) keeps in line of sight and camera more over the
+look-ahead; where none fits anywhere, R_turn about the vehicle (the line of sight may break).
 
 The orbit is flown by the flight layer as the follower flies its plan: L1 guidance (``CurveL1``)
 along the orbit's predicted ground track, renewed at every update.
@@ -53,12 +55,19 @@ class CityOrbitOptions:
     camera_reach: bool = False  # True: an off-centre circle only as far as the camera sees the vehicle from it
     off_margin: float = 0.0  # m more kept for an off-centre circle (the UAV joins it late)
     l1_period: float = 12.0  # s, the L1 period flying the orbit (0: the flight's, FollowFlight.l1_period)
+    grow: float = 1.0  # m per update the orbit's radius may grow by (it shrinks at once, to keep in its VP)
+    choose: str = "predicted"  # where no circle fits about the vehicle: "predicted" (off-centre or about, by
+    # the predicted flight's line of sight and camera) or "off_centre" (always off-centre when one fits)
 
     def validate(self) -> None:
         for name in ("reach", "resolution_deg", "grid"):
             value = getattr(self, name)
             if not (math.isfinite(value) and value > 0.0):
                 raise VistrackError(f"city_orbit.{name} = {value}: must be > 0")
+        if self.choose not in ("predicted", "off_centre"):
+            raise VistrackError(f"city_orbit.choose = {self.choose!r}: must be 'predicted' or 'off_centre'")
+        if not self.grow > 0.0:
+            raise VistrackError(f"city_orbit.grow = {self.grow}: must be > 0 (m per update)")
         for name in ("margin", "lead", "vehicle_height"):
             value = getattr(self, name)
             if not (math.isfinite(value) and value >= 0.0):
@@ -267,6 +276,34 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
         return found
 
     computed_before = [0]
+    h_look = max(options.lookahead, default=options.lead) + period  # the choice's prediction
+
+    def predicted_seen(q: np.ndarray, p: np.ndarray, v: np.ndarray, centre: np.ndarray, radius: float,
+                       rooms: list[tuple[np.ndarray, OrbitRoom]]) -> float:
+        """The fraction of the next h_look s in which the field's path about ``centre`` keeps the
+        vehicle (predicted at v) inside the VP of the nearest predicted position's room and in the
+        camera (the coordinated bank of the path's turn), from the cast VVs only (no new one)."""
+        import shapely
+
+        step = 0.1
+        path = field_track(q, centre, v - air, radius, gains, h_look, step)
+        tau = np.arange(len(path)) * step
+        ground = path + np.outer(tau, air)  # the air-mass path drifts with the wind
+        times = np.array([options.lead, *sorted(options.lookahead, reverse=True)])[: len(rooms)]
+        heading = np.unwrap(np.arctan2(*np.diff(ground, axis=0).T[::-1]))
+        rate = np.gradient(heading, step) if len(heading) > 1 else np.zeros_like(heading)
+        seen = 0
+        for k in range(len(heading)):
+            where = p + v * tau[k]
+            j = int(np.argmin(np.abs(times - tau[k])))
+            at, room = rooms[j]
+            rel = ground[k] - where + at
+            if not shapely.contains_xy(room.region(), rel[0], rel[1]):
+                continue
+            bank = math.atan(uav.speed * rate[k] / 9.80665)
+            seen += bool(camera_sees(camera, np.array([ground[k][0], ground[k][1], uav.altitude]), heading[k], bank,
+                                     np.array([where[0], where[1], 0.0])))
+        return seen / max(len(heading), 1)
 
     def update(t: float, q: np.ndarray) -> np.ndarray:
         p, v = np.asarray(vehicle.position(t)), np.asarray(vehicle.velocity(t))
@@ -291,6 +328,8 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
         shift, radius, anywhere = np.zeros(2), lemma6, about
         if room_about - margin >= turn:
             radius = room_about - margin if options.radius == "max" else min(wanted, room_about - margin)
+            if last is not None and not np.any(last.shift):
+                radius = max(turn, min(radius, last.radius + options.grow))
         else:
             previous = np.zeros(2) if last is None else np.array(last.shift)
             for size in (wanted, lemma6, turn):
@@ -300,8 +339,15 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
                     shift, radius = found, size
                     break
             anywhere = about or now.flyable_circle(turn + margin) is not None
+            centred = max(turn, min(lemma6, now.max_radius - margin))
             if not options.off_centre:
-                shift, radius = np.zeros(2), max(turn, min(lemma6, now.max_radius - margin))
+                shift, radius = np.zeros(2), centred
+            elif options.choose == "predicted" and np.any(shift) and len(q) >= 3:
+                # Off-centre or about the vehicle: whichever flight (the field's path from the UAV)
+                # is predicted to keep line of sight and camera more over the look-ahead.
+                off = predicted_seen(q, p, v, p + shift, radius, rooms)
+                if predicted_seen(q, p, v, p, centred, rooms) > off:
+                    shift, radius = np.zeros(2), centred
         updates.append(OrbitUpdate(t, (float(shift[0]), float(shift[1])), float(radius), now.max_radius, turn,
                                    about, anywhere, cache.computed > computed_before[0]))
         return track(q, p + shift, v, radius)

@@ -15,7 +15,8 @@ counter-clockwise from east unless a compass word is given)::
       route: {from: [lon, lat], to: [lon, lat], crs: lonlat}   # with legs: the city run drives their
                                   # speeds along this road route of the city (vistrack.routes)
     follow: {period, turn_margin, threshold, hysteresis, loiter_pattern, loiter_radius,
-             loiter_direction, compensation, update_period, strategy, strategy_margin}
+             loiter_direction, compensation, update_period, strategy, strategy_margin,
+             standoff_radius}  # standoff_radius: m, the standoff orbit's (0: Lemma 6 per update)
                                   # threshold: auto (default) or h; strategy: paper (default), standoff, auto
     offset: {distance: 0, angle_deg: 0, reference: heading, changes: [{t, distance, angle_deg}]}
     wind: {east: 0, north: 10, gusts: {seed, intensity, length_scale}}  # the true wind (towards)
@@ -82,6 +83,9 @@ from .simulation import (
     planner_note,
     simulate,
     threshold_warning,
+)
+from .simulation import (
+    baseline_radius as lemma6_radius,
 )
 
 __all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy"]
@@ -201,6 +205,10 @@ class FollowScenario:
         parameters = self.parameters
         if compensation is not None:
             parameters = _with_compensation(parameters, compensation)
+        if parameters.strategy == "auto" and parameters.standoff_radius == 0.0:
+            # Auto's standoff candidate is the baseline's orbit: its constant radius (and its law, follow_run.cpp).
+            parameters = _with_compensation(parameters, parameters.wind_compensation)
+            parameters.standoff_radius = self.baseline_radius or lemma6_radius(self.vehicle, self.uav, parameters)
         # Both followers get the same offset schedule and the same reports (a fair baseline).
         common: dict[str, Any] = {"wind": self.wind, "flight": self.flight, "camera": self.camera,
                                   "offset_schedule": self.offset_schedule, "reports": self.reports}
@@ -321,7 +329,7 @@ def _with_compensation(p: FollowParameters, on: bool) -> FollowParameters:
                             loiter_direction=p.loiter_direction, offset_distance=p.offset_distance,
                             offset_angle=p.offset_angle, offset_reference=p.offset_reference,
                             wind_compensation=on, update_period=p.update_period, strategy=p.strategy,
-                            strategy_margin=p.strategy_margin)
+                            strategy_margin=p.strategy_margin, standoff_radius=p.standoff_radius)
 
 
 def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[VehicleLeg], Optional[dict]]:
@@ -350,7 +358,7 @@ def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[V
 def _parameters(data: Mapping[str, Any]) -> FollowParameters:
     f = section(data, "follow", {"period", "turn_margin", "threshold", "hysteresis", "loiter_pattern",
                                  "loiter_radius", "loiter_direction", "compensation", "update_period", "strategy",
-                                 "strategy_margin"})
+                                 "strategy_margin", "standoff_radius"})
     o = section(data, "offset", {"distance", "angle_deg", "reference", "changes"})
     d = FollowParameters()
     compensation = f.get("compensation", d.wind_compensation)
@@ -358,7 +366,8 @@ def _parameters(data: Mapping[str, Any]) -> FollowParameters:
         raise fail("follow.compensation", compensation, "must be true or false")
     checks = {"period": positive, "turn_margin": positive, "threshold": threshold_value, "update_period": positive,
               "strategy_margin": lambda k, x: number(k, x, low=0.0, high=1.0),
-              "hysteresis": lambda k, x: number(k, x, low=0.0), "loiter_radius": lambda k, x: number(k, x, low=0.0)}
+              "hysteresis": lambda k, x: number(k, x, low=0.0), "loiter_radius": lambda k, x: number(k, x, low=0.0),
+              "standoff_radius": lambda k, x: number(k, x, low=0.0)}
     values: dict[str, Any] = {name: check(f"follow.{name}", f[name]) for name, check in checks.items() if name in f}
     for name in ("loiter_pattern", "loiter_direction", "strategy"):
         if name in f:
