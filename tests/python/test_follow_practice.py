@@ -185,6 +185,17 @@ def test_strategy_auto_picks_the_pattern_it_predicts_best() -> None:
                                                         vehicle_velocity=np.array([0.0, -10.0]),
                                                         vehicle_heading=SOUTH))
     assert tick.mode in ("sinusoid", "loiter", "standoff") and 0.0 <= tick.predicted_camera <= 1.0
+    # each single pattern's tick for the same observation, scored by the same prediction: auto's choice is
+    # within its switching margin of the best of them
+    others = []
+    for strategy in ("paper", "standoff"):
+        single = follow.FollowPlanner(follow.FollowParameters(strategy=strategy), UAV)
+        other = single.update(0.0, follow.FollowObservation(vehicle_position=np.zeros(2),
+                                                            vehicle_velocity=np.array([0.0, -10.0]),
+                                                            vehicle_heading=SOUTH))
+        others.append(planner.predicted_camera(other))
+    margin = follow.FollowParameters(strategy="auto").strategy_margin
+    assert tick.predicted_camera >= max(others) - margin - 1e-9
     # a standing vehicle: never the sinusoid (its amplitude would be unbounded)
     vehicle = follow.GroundVehicle.from_legs([follow.VehicleLeg(NORTH, 8.0, 100.0),
                                               follow.VehicleLeg(NORTH, 0.0, 100.0)])

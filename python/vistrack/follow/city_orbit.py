@@ -27,7 +27,9 @@ import numpy as np
 
 from .. import flight as _flight
 from .._core import Control, GuidanceGains, OrbitState, Uav, VisibilityScene, VistrackError, steering
+from .._core.loiter import STANDARD_GRAVITY
 from ..city_orbits import OrbitRoom, VolumeCache, orbit_room
+from ..preview import preview
 from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, Wind, camera_sees
 
 __all__ = ["CityOrbitOptions", "CityOrbitResult", "OrbitUpdate", "camera_radius", "city_orbit_follow", "orbit_track"]
@@ -39,7 +41,8 @@ RADIUS_CHOICES = ("lemma6", "camera", "max")
 class CityOrbitOptions:
     """reach: the VP is measured out to this far at the altitude (the VV's d_max follows); grid:
     the VV cache's cell (m); margin: kept between the orbit and the VP's boundary (m); radius:
-    "turn" (the smallest flyable) or "max" (MaxRadius - margin); off_centre: where no circle
+    "lemma6" (Lemma 6's at the vehicle's speed, cut to MaxRadius - margin), "camera" (the largest
+    whose centre the camera sees at the steepest bank) or "max" (MaxRadius - margin); off_centre: where no circle
     fits about the vehicle, fly one off it inside the VP; lead: how far ahead (s) the VV is cast."""
 
     reach: float = 400.0
@@ -86,7 +89,7 @@ class CityOrbitOptions:
 class OrbitUpdate:
     """One update: the orbit's centre offset from the vehicle, its radius, MaxRadius about the
     predicted position, the turn-limited radius, whether a flyable circle fits about the vehicle
-    and anywhere in the VP, and whether this update cast a new VV."""
+    and anywhere in the VP, and how many VVs this update cast."""
 
     t: float
     shift: tuple[float, float]
@@ -95,7 +98,7 @@ class OrbitUpdate:
     turn_radius: float
     fits_about: bool
     fits_anywhere: bool
-    new_volume: bool
+    new_volumes: int
 
 
 @dataclass
@@ -131,24 +134,30 @@ class CityOrbitResult:
             "mean_radius_m": float(np.mean([u.radius for u in self.updates])),
             "mean_vehicle_distance_m": float(weights @ np.hypot(*(self.state[:, :2] - self.vehicle).T)) / total,
             "updates": len(self.updates), "volumes": self.volumes,
-            "max_new_volumes_per_update": int(max((u.new_volume for u in self.updates), default=0)),
+            "max_new_volumes_per_update": int(max((u.new_volumes for u in self.updates), default=0)),
         }
 
 
-def camera_radius(uav: Uav, camera: DownwardCamera, gravity: float = 9.80665) -> float:
+def _reach_angle(camera: DownwardCamera) -> float:
+    """The camera's farthest angle off the body's down axis: half its field of view, plus the gimbal's
+    range unless it is fixed to the body (as the core's camera_reach)."""
+    return 0.5 * camera.fov + (0.0 if camera.mount == "fixed" else camera.max_gimbal)
+
+
+def camera_radius(uav: Uav, camera: DownwardCamera, gravity: float = STANDARD_GRAVITY) -> float:
     """The largest orbit radius at which the camera sees the orbit's centre even at the steepest
     bank the UAV can fly, atan(v^2 / (g r_min)): the centre's angle off the vertical, atan(R / h),
     plus that bank within the half field of view plus the gimbal's range."""
     steepest = math.atan(uav.speed ** 2 / (gravity * uav.min_turn_radius))
-    room = 0.5 * camera.fov + camera.max_gimbal - steepest
+    room = _reach_angle(camera) - steepest
     return uav.altitude * math.tan(max(room, 0.0))
 
 
-def shift_reach(uav: Uav, camera: DownwardCamera, radius: float, gravity: float = 9.80665) -> float:
+def shift_reach(uav: Uav, camera: DownwardCamera, radius: float, gravity: float = STANDARD_GRAVITY) -> float:
     """How far an orbit of ``radius`` may be off the vehicle with the camera still seeing it from
     the far side in a steady turn: h tan(fov/2 + gimbal - bank) - radius, bank = atan(v^2/(g R))."""
     bank = math.atan(uav.speed ** 2 / (gravity * radius))
-    return uav.altitude * math.tan(max(0.5 * camera.fov + camera.max_gimbal - bank, 0.0)) - radius
+    return uav.altitude * math.tan(max(_reach_angle(camera) - bank, 0.0)) - radius
 
 
 def common_shift(rooms: Sequence[tuple[np.ndarray, OrbitRoom]], radius: float, previous: np.ndarray,
@@ -249,6 +258,8 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
 
     gains = GuidanceGains.from_parameters(uav, Control(direction="ccw" if ccw else "cw"))
     air = np.zeros(2) if wind_estimate is None else np.asarray(wind_estimate, dtype=float)
+    if air.shape != (2,) or not np.all(np.isfinite(air)):
+        raise VistrackError(f"wind_estimate = {preview(wind_estimate)}: expected (east, north), finite m/s")
 
     def track(q: np.ndarray, center: np.ndarray, v: np.ndarray, radius: float) -> np.ndarray:
         """The path for L1 in the air mass (the centre moves at v - wind there), as it lies at the
@@ -319,7 +330,7 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
         if not rooms:  # the prediction stands in a building: keep the last orbit's shape
             shift, radius = (np.array(last.shift), last.radius) if last else (np.zeros(2), turn)
             updates.append(OrbitUpdate(t, (float(shift[0]), float(shift[1])), radius, 0.0, turn, False, False,
-                                       cache.computed > computed_before[0]))
+                                       cache.computed - computed_before[0]))
             return track(q, p + shift, v, radius)
         now = rooms[0][1]
         room_about = min(r.max_radius for _, r in rooms)  # the room about the vehicle over the look-ahead
@@ -349,7 +360,7 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
                 if predicted_seen(q, p, v, p, centred, rooms) > off:
                     shift, radius = np.zeros(2), centred
         updates.append(OrbitUpdate(t, (float(shift[0]), float(shift[1])), float(radius), now.max_radius, turn,
-                                   about, anywhere, cache.computed > computed_before[0]))
+                                   about, anywhere, cache.computed - computed_before[0]))
         return track(q, p + shift, v, radius)
 
     heading = float(vehicle.heading(t0))
