@@ -71,7 +71,7 @@ def read_loiter_scenario(path: str | Path) -> Scenario:
         roll_time_constant=uav.roll_time_constant,
         max_roll_rate_deg_s=uav.max_roll_rate_deg_s,
         city=city_block(data, Path(path).parent),
-        off_centre=schema.boolean("off_centre", data.get("off_centre", False)),
+        off_centre=schema.boolean("off_centre", data.get("off_centre", True)),
     )
     # The planner's own checks (overlapping circles, R < r, start inside a circle) name the key.
     scenario.plan("tlpp")

@@ -43,7 +43,7 @@ class Scenario:
     max_roll_rate_deg_s: float = _VEHICLE.max_roll_rate_deg_s
     aircraft: str | None = None  # uav.dynamics: jsbsim: the wind flights also flown on this 6-DOF aircraft
     city: City | None = None  # beyond the paper: loiter circles inside visibility polygons (loiter.city)
-    off_centre: bool = False  # with a city: an AOI without a circle about it may loiter on one off it
+    off_centre: bool = True  # with a city: an AOI without a circle about it may loiter on one off it
 
     def uav(self) -> Uav:
         """The vehicle that flies the plans: the scenario's speed, turn radius, camera altitude and model."""

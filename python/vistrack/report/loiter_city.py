@@ -18,6 +18,8 @@ from .document import Document, Picture, Table
 def city_lines(scenario: Scenario, result: CityLoiter) -> list[str]:
     """What the command prints: each AOI that has no flyable circle, then each method's numbers."""
     lines = [f"{scenario.name} {room.reason}" for room in result.rooms if not room.flyable]
+    lines += [f"{scenario.name} aoi {room.index}: no flyable circle about it; loiters on one {room.shift:.0f} m off it "
+              "inside its visibility polygon (off_centre)" for room in result.rooms if room.flyable and room.shift > 0]
     lines += [f"{scenario.name} {method}: skipped, cannot fly this layout: {reason}"
               for method, reason in result.refused.items()]
     for run in result.runs:
