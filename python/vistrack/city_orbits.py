@@ -65,6 +65,16 @@ class OrbitRoom:
                 shapely.Polygon(np.asarray(p.outer), [np.asarray(h) for h in p.holes]) for p in self.polygons])
         return self._region
 
+    def fits(self, centre: Sequence[float], radius: float) -> bool:
+        """Whether a circle of ``radius`` about ``centre`` (x, y) lies in the VP: its centre at least
+        that far from the boundary, to the inward buffer's chord error (arcs of 8 segments a quarter
+        turn lie within 0.5 % of the radius inside; the polygon simplified by 0.1 m), which tells a
+        real piece of :meth:`inner` from a GEOS sliver."""
+        import shapely
+
+        boundary = self.region().boundary  # type: ignore[attr-defined]
+        return bool(boundary.distance(shapely.Point(float(centre[0]), float(centre[1]))) >= radius * (1.0 - 6e-3) - 0.1)
+
     def inner(self, radius: float) -> Any:
         """The centres of the circles of ``radius`` inside the VP: its inward buffer (of the polygon
         simplified to 0.1 m), kept per radius. GEOS can leave slivers in narrow wedges: check a
@@ -99,18 +109,14 @@ class OrbitRoom:
             return Circle((self.point[0], self.point[1]), radius)
         import shapely
 
-        region = self.region()
         room = self.inner(radius)
         here = shapely.Point(self.point[0], self.point[1])
         # GEOS's inward buffer can leave slivers in narrow wedges of the polygon: take the nearest
-        # piece whose nearest point really has the radius to the boundary (to the buffer's chord
-        # error: arcs of 8 segments a quarter turn lie within 0.5 % of the radius inside; the
-        # polygon simplified by 0.1 m).
+        # piece whose nearest point really fits the circle.
         pieces = sorted((p for p in shapely.get_parts(room) if not p.is_empty), key=lambda piece: piece.distance(here))
-        boundary = region.boundary  # type: ignore[attr-defined]
         for piece in pieces:
             nearest = shapely.shortest_line(piece, here).coords[0]  # on the piece, nearest the point
-            if boundary.distance(shapely.Point(nearest)) >= radius * (1.0 - 6e-3) - 0.1:
+            if self.fits(nearest, radius):
                 return Circle((float(nearest[0]), float(nearest[1])), radius)
         return None
 

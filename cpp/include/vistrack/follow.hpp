@@ -349,7 +349,7 @@ class FollowPlanner {
   FollowMode next_mode(FollowMode current, double speed_ratio) const;
 
  private:
-  double pattern_speed(const FollowTick& tick, double s) const;  // ds/dt of the loiter pattern
+  // ds/dt of the loiter pattern (take loiter_for(tick) once per loop: it builds the shape).
   double pattern_speed(const FollowTick& tick, const LoiterShape& shape, double s) const;
   double loiter_step(const FollowTick& tick, const LoiterShape& shape, double s, double h) const;  // RK4
   double advance_arc(const FollowTick& tick, double tau) const;

@@ -145,16 +145,17 @@ void FollowPlanner::enter_sinusoid(FollowTick& tick, const Vec2& uav_relative, d
 void FollowPlanner::enter_loiter(FollowTick& tick, const Vec2& uav_relative, double uav_heading) const {
   // Over enough of the pattern to see every point of the circle, or every orientation of the
   // rose's line.
-  const double piece = loiter_for(tick).piece_length();
+  const LoiterShape shape = loiter_for(tick);  // once: the loop below samples it up to 400 x 64 times
+  const double piece = shape.piece_length();
   const int pieces =
-      loiter_for(tick).pattern == LoiterPattern::Circle ? 1 : std::min(400, static_cast<int>(std::ceil(kTwoPi / loiter_for(tick).delta())) + 2);
-  const double step = std::min(loiter_for(tick).turn_radius / 8.0, piece / 64.0);
+      shape.pattern == LoiterPattern::Circle ? 1 : std::min(400, static_cast<int>(std::ceil(kTwoPi / shape.delta())) + 2);
+  const double step = std::min(shape.turn_radius / 8.0, piece / 64.0);
   const int samples = static_cast<int>(std::ceil(pieces * piece / step));
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < samples; ++i) {
     const double s = i * step;
-    const Vec2 direction = tick.frame_velocity + pattern_speed(tick, s) * loiter_for(tick).tangent(s);
-    const double cost = entry_cost(loiter_for(tick).position(s), direction, uav_relative, uav_heading);
+    const Vec2 direction = tick.frame_velocity + pattern_speed(tick, shape, s) * shape.tangent(s);
+    const double cost = entry_cost(shape.position(s), direction, uav_relative, uav_heading);
     if (cost < best) {
       best = cost;
       tick.arc = s;
@@ -164,10 +165,6 @@ void FollowPlanner::enter_loiter(FollowTick& tick, const Vec2& uav_relative, dou
 
 // ds/dt along the loiter pattern so that the UAV's speed in the planning frame is v_p:
 // |v_f + s_dot t(s)| = v_p, the positive root (as the tracking paper's eq. (13) for an orbit).
-double FollowPlanner::pattern_speed(const FollowTick& tick, double s) const {
-  return pattern_speed(tick, loiter_for(tick), s);
-}
-
 double FollowPlanner::pattern_speed(const FollowTick& tick, const LoiterShape& shape, double s) const {
   const Vec2 t = shape.tangent(s);
   const double b = tick.frame_velocity.dot(t);
@@ -290,17 +287,18 @@ double FollowPlanner::predicted_camera(const FollowTick& tick) const {
       break;
     }
     case FollowMode::Loiter: {
-      const double piece = loiter_for(tick).piece_length();
+      const LoiterShape shape = loiter_for(tick);
+      const double piece = shape.piece_length();
       double t = 0.0;
       for (int j = 0; j <= kSamples; ++j) {
         const double s = piece * j / kSamples;
         if (j > 0) {
-          const double speed = pattern_speed(tick, s - 0.5 * piece / kSamples);
+          const double speed = pattern_speed(tick, shape, s - 0.5 * piece / kSamples);
           if (!(speed > 0.0)) return 0.0;
           t += piece / kSamples / speed;
         }
         tau.push_back(t);
-        rel.push_back(loiter_for(tick).position(s));
+        rel.push_back(shape.position(s));
       }
       break;
     }

@@ -266,7 +266,9 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     // across the byte-sized flag writes); the surfaces only when it passes.
     const double* r = far.data();
     const Surface* sf = surface.data();
-    auto gap = [&](int p, int q) { return std::abs(r[p] - r[q]) > kJumpCandidate * std::max(r[p], r[q]); };
+    // One jump criterion for the vectorized pre-filter and the exact test.
+    auto gap_between = [](double x, double y) { return std::abs(x - y) > kJumpCandidate * std::max(x, y); };
+    auto gap = [&](int p, int q) { return gap_between(r[p], r[q]); };
     auto plane_pair = [&](int p, int q) { return sf[p] == sf[q] && is_plane(sf[p]); };
     // Rows between the poles first test every quad without branches (a loop the compiler
     // vectorizes; most quads have no gap), then look at the few that have one.
@@ -280,8 +282,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
         const double* hi = r + row.hi;
         for (int j = 0; j + 1 < na; ++j) {
           const double a = lo[j], b = lo[j + 1], c = hi[j], d = hi[j + 1];
-          const bool g = (std::abs(a - d) > kJumpCandidate * std::max(a, d)) | (std::abs(a - b) > kJumpCandidate * std::max(a, b)) |
-                         (std::abs(a - c) > kJumpCandidate * std::max(a, c));
+          const bool g = gap_between(a, d) | gap_between(a, b) | gap_between(a, c);
           any_gap[static_cast<std::size_t>(j)] = g ? 1 : 0;
         }
         any_gap[static_cast<std::size_t>(na - 1)] = 1;  // the wrapping quad: tested below

@@ -15,20 +15,6 @@ double radial_measure(double near, double far) {
   return far > near ? (far * far * far - near * near * near) / 3.0 : 0.0;
 }
 
-// The trapezoid weight of each corner of row `row` (0..num_elevation): half a cell of the row
-// below plus half a cell of the row above, cells of d_az * (sin(el_hi) - sin(el_lo)) for the grid
-// pinned in visibility.hpp. Computed here so that the fast path depends on the data contract only.
-double corner_weight(const DirectionGrid& grid, int row) {
-  const double d_el = kPi / grid.num_elevation;
-  const double d_az = kTwoPi / grid.num_azimuth;
-  auto cell = [&](int i) {
-    if (i < 0 || i >= grid.num_elevation) return 0.0;
-    const double lo = -0.5 * kPi + i * d_el;
-    return d_az * (std::sin(lo + d_el) - std::sin(lo));
-  };
-  return 0.5 * (cell(row - 1) + cell(row));
-}
-
 void require_intervals(const VisibilityVolume& v, const std::string& name) {
   if (v.grid.num_elevation <= 0 || v.grid.num_azimuth <= 0)
     detail::fail_field(name + ".grid", std::to_string(v.grid.num_elevation) + "x" + std::to_string(v.grid.num_azimuth),
@@ -73,7 +59,7 @@ double grid_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b) {
       const double both = radial_measure(std::max(na, nb), std::min(fa, fb));
       row_sum += radial_measure(na, fa) + radial_measure(nb, fb) - 2.0 * both;
     }
-    total += corner_weight(a.grid, row) * row_sum;
+    total += a.grid.corner_weight(row) * row_sum;  // the trapezoid weight of the row
   }
   return std::max(total, 0.0);
 }

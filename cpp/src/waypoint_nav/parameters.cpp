@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "vistrack/error.hpp"
+#include "vistrack/geometry.hpp"
 #include "vistrack/limits.hpp"
 #include "vistrack/waypoint_nav_parameters.hpp"
 
@@ -18,7 +19,7 @@ void WaypointNavOptions::validate() const {
   require_speed(speed, "speed");
   require_positive(dt, "dt");
   const double psi_max = speed * dt / turn_radius;
-  if (psi_max > 0.5 * 3.14159265358979323846)
+  if (psi_max > 0.5 * kPi)
     detail::fail_field("dt", dt, "psi_max = v dt / R = " + detail::computed_text(psi_max) + " rad exceeds pi/2");
   gains.validate();
   weights.validate();
@@ -60,7 +61,7 @@ DwnTracking WaypointNavOptions::resolved_tracking() const {
 double WaypointNavOptions::roll_lag() const {
   if (dynamics == DynamicsModel::Dubins) return 0.0;
   const double max_bank = std::atan(speed * speed / (kStandardGravity * turn_radius));
-  const double rate = max_roll_rate_deg_s * 3.14159265358979323846 / 180.0;
+  const double rate = max_roll_rate_deg_s * kPi / 180.0;
   const double tau = roll_time_constant;
   // The heading lag of the bank's response to a step command 0 -> phi_max, the turn rate taken
   // linear in the bank: D = integral of (1 - phi(t) / phi_max) dt. Without the rate limit

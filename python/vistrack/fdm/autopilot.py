@@ -32,6 +32,7 @@ class Autopilot:
     def __init__(self, aircraft: Aircraft, trim: Trim, altitude: float, airspeed: float):
         self.gains = aircraft.gains
         self.max_bank = math.radians(aircraft.envelope.max_bank_deg)
+        self.max_pitch = math.radians(aircraft.gains.max_pitch_deg)
         self.trim = trim
         self.altitude = altitude
         self.airspeed = airspeed
@@ -59,7 +60,7 @@ class Autopilot:
 
         altitude_error = self.altitude - s.altitude
         cos_phi = max(math.cos(s.phi), 0.3)
-        max_pitch = math.radians(g.max_pitch_deg)
+        max_pitch = self.max_pitch
         feed_forward = trim.alpha * (1.0 / cos_phi - 1.0)
         theta_c = g.altitude_kp * altitude_error + g.altitude_ki * self._altitude_i + feed_forward
         if -max_pitch < theta_c < max_pitch:

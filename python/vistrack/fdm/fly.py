@@ -126,12 +126,12 @@ def fly(guidance: Guidance, start: tuple[float, float, float], *, speed: float, 
     model.start(speed, trimmed.alpha, (float(winds[0, 0]), float(winds[0, 1])),
                 (0.0, trimmed.elevator, 0.0, trimmed.throttle))
     pilot = Autopilot(plane, trimmed, altitude, speed)
-    sim_start = model.state().t  # one step after the initial condition: the flight's t0
+    s = model.state()
+    sim_start = s.t  # one step after the initial condition: the flight's t0
     out = np.full((13, n), np.nan)
     k = 0
     finished = False
-    for k in range(n):
-        s = model.state()
+    for k in range(n):  # s: the state after the previous guidance step's autopilot steps
         t = t0 + (s.t - sim_start)
         x, y, psi = s.x, s.y, s.psi
         model.set_wind(float(winds[k, 0]), float(winds[k, 1]))

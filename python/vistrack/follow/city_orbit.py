@@ -30,7 +30,16 @@ from .._core import Control, GuidanceGains, OrbitState, Uav, VisibilityScene, Vi
 from .._core.loiter import STANDARD_GRAVITY
 from ..city_orbits import OrbitRoom, VolumeCache, orbit_room
 from ..preview import preview
-from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, Wind, camera_sees
+from .simulation import (
+    DownwardCamera,
+    FollowFlight,
+    FollowParameters,
+    GroundVehicle,
+    Wind,
+    camera_reach,
+    camera_sees,
+    coordinated_bank,
+)
 
 __all__ = ["CityOrbitOptions", "CityOrbitResult", "OrbitUpdate", "camera_radius", "city_orbit_follow", "orbit_track"]
 
@@ -139,9 +148,9 @@ class CityOrbitResult:
 
 
 def _reach_angle(camera: DownwardCamera) -> float:
-    """The camera's farthest angle off the body's down axis: half its field of view, plus the gimbal's
-    range unless it is fixed to the body (as the core's camera_reach)."""
-    return 0.5 * camera.fov + (0.0 if camera.mount == "fixed" else camera.max_gimbal)
+    """The camera's farthest angle off the body's down axis (the core's camera_reach at 1 m up):
+    half its field of view, plus the gimbal's range unless it is fixed to the body."""
+    return math.atan(camera_reach(camera, 1.0))
 
 
 def camera_radius(uav: Uav, camera: DownwardCamera, gravity: float = STANDARD_GRAVITY) -> float:
@@ -182,11 +191,9 @@ def common_shift(rooms: Sequence[tuple[np.ndarray, OrbitRoom]], radius: float, p
         if common.is_empty:
             return None
     at, first = rooms[0]
-    boundary: Any = first.region().boundary  # type: ignore[attr-defined]
     for piece in sorted((g for g in shapely.get_parts(common) if not g.is_empty), key=lambda g: g.distance(target)):
         x, y = shapely.shortest_line(piece, target).coords[0]
-        centre = shapely.Point(x + at[0], y + at[1])
-        if boundary.distance(centre) >= radius * (1.0 - 6e-3) - 0.1:  # not a buffer sliver
+        if first.fits((x + at[0], y + at[1]), radius):  # not a buffer sliver
             best = np.array([x, y])
             if common.contains(shapely.Point(*previous)) and np.hypot(*previous) < np.hypot(*best) + hold:
                 return np.asarray(previous, dtype=float)
@@ -311,7 +318,7 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
             rel = ground[k] - where + at
             if not shapely.contains_xy(room.region(), rel[0], rel[1]):
                 continue
-            bank = math.atan(uav.speed * rate[k] / 9.80665)
+            bank = coordinated_bank(uav.speed, rate[k])
             seen += bool(camera_sees(camera, np.array([ground[k][0], ground[k][1], uav.altitude]), heading[k], bank,
                                      np.array([where[0], where[1], 0.0])))
         return seen / max(len(heading), 1)
@@ -389,7 +396,7 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
     t = np.asarray(trajectory.t)
     state = np.column_stack([trajectory.x, trajectory.y, trajectory.psi])
     bank = np.asarray(trajectory.bank)
-    where = np.array([vehicle.position(float(s)) for s in t])
+    where = np.asarray(vehicle.sample(t))
     in_view = np.array([camera_sees(camera, np.array([x, y, uav.altitude]), psi, b, np.array([gx, gy, 0.0]))
                         for (x, y, psi), b, (gx, gy) in zip(state, bank, where)], dtype=bool)
     n = len(t)

@@ -18,7 +18,7 @@ from .._core import VistrackError
 from .._core import waypoint_nav as _wn
 from .._core.flight import L1Line, LineFeedback, WaypointFollower, Wind, paper_gains
 from ..fdm import FdmTrajectory, FlightGuidanceLaw, aircraft, fly
-from .navigation import NavigationFlight, Points, default_start, route_array
+from .navigation import NavigationFlight, Points, default_start, flight_scores, route_array
 
 __all__ = ["FdmNavigation", "fdm_flights", "fly_fdm", "roll_lead"]
 
@@ -51,24 +51,10 @@ class FdmNavigation:
 
     def summary(self) -> dict[str, Any]:
         """metrics.json's numbers of the flight (lengths also in R), with the aircraft's errors."""
-        R = self.turn_radius
-        miss = self.miss_distances
         m = self.metrics
-        return {
-            "method": self.method,
-            "miss_distances": miss.tolist(),
-            "miss_distances_over_R": (miss / R).tolist(),
-            "max_miss_over_R": float(miss.max() / R),
-            "miss_at_last_over_R": float(miss[-1] / R),
-            "reached": list(m["reached"]),
-            "all_reached": bool(m["all_reached"]),
-            "finished": self.trajectory.finished,
-            "swirls": int(m["swirls"]),
-            "overshoot_over_R": float(m["overshoot"]) / R,
-            "undershoot_over_R": float(m["undershoot"]) / R,
-            "path_length": float(m["path_length"]),
-            "duration": float(m["duration"]),
-        }
+        return {"method": self.method, **flight_scores(
+            self.turn_radius, self.miss_distances, m["reached"], self.trajectory.finished, m["swirls"], m["overshoot"],
+            m["undershoot"], m["path_length"], m["duration"], m["fuel"])}
 
 
 def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, method: str = "dwn",
@@ -92,8 +78,7 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
         pose, flown = default_start(route), route[1:]
     else:
         pose, flown = (float(start[0]), float(start[1]), float(start[2])), route
-    plane = aircraft(aircraft_name)
-    plane.check_plan(speed, turn_radius)
+    plane = aircraft(aircraft_name)  # fly() refuses a plan outside its envelope before flying
     if guidance == "l1":
         law: Any = L1Line(speed, period=l1_period)
     elif guidance == "law5":
@@ -103,6 +88,7 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
         raise VistrackError(f"guidance = {guidance!r}: must be 'l1' or 'law5'")
     if wind_aware and wind is not None:
         law.set_wind(np.array([wind.east, wind.north]))
+    acceptance = waypoint_radius if waypoint_radius is not None else turn_radius  # WN's R_WP
     if method == "dwn":  # as navigate(): planned in the air mass when wind-aware, re-planned if asked
         planner: Any = _wn.DubinsWaypointGuidance(law, flown, turn_radius, weights)
         if wind_aware and wind is not None:
@@ -114,7 +100,7 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
         elif dwn_tracking != "paper":
             raise VistrackError(f"dwn_tracking = {dwn_tracking!r}: must be 'auto', 'paper' or 'path'")
     elif method in ("wn", "wn_passed_line"):
-        planner = WaypointFollower(law, flown, waypoint_radius if waypoint_radius is not None else turn_radius)
+        planner = WaypointFollower(law, flown, acceptance)
         planner.passed_line = method == "wn_passed_line"
         planner.finish_line = True  # as navigate(): the flight ends past the last waypoint's line
     else:
@@ -127,8 +113,8 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
     metrics = _wn.navigation_metrics(list(traj.t), list(traj.x), list(traj.y), list(traj.turn_rate_command),
                                      [int(i) for i in traj.target_index], traj.finished, np.asarray(pose[:2]),
                                      flown, speed, turn_radius, weights)
-    radius = None if method == "dwn" else (waypoint_radius if waypoint_radius is not None else turn_radius)
-    return FdmNavigation(method, radius, float(turn_radius), pose, flown, traj, dict(metrics))
+    return FdmNavigation(method, None if method == "dwn" else acceptance, float(turn_radius), pose, flown, traj,
+                         dict(metrics))
 
 
 def fdm_flights(flights: Sequence[NavigationFlight], aircraft_name: str, wind: Optional[Wind], altitude: float,

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 from typing import Any, Optional, Sequence, Union
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .._core import VistrackError
 from .._core import waypoint_nav as _wn
@@ -192,32 +193,44 @@ class NavigationFlight:
 
     def metrics(self) -> dict[str, Any]:
         """The metrics as plain data (JSON), lengths also in units of R."""
-        R = self.turn_radius
+        scores = flight_scores(self.turn_radius, self.miss_distances, self.reached, self.finished, self.swirls,
+                               self.overshoot, self.undershoot, self.path_length, self.duration, self.fuel)
         return {
             "method": self.method,
             "label": self.label,
             "waypoint_radius": self.waypoint_radius,
-            "miss_distances": self.miss_distances.tolist(),
-            "miss_distances_over_R": (self.miss_distances / R).tolist(),
-            "max_miss_over_R": float(self.miss_distances.max() / R),
-            "reached": [bool(r) for r in self.reached],
-            "all_reached": self.all_reached,
-            "finished": self.finished,
-            "swirls": self.swirls,
-            "overshoot": self.overshoot,
-            "overshoot_over_R": self.overshoot / R,
-            "undershoot": self.undershoot,
-            "undershoot_over_R": self.undershoot / R,
-            "path_length": self.path_length,
-            "duration": self.duration,
-            "fuel": self.fuel,
+            **scores,
             "turning_points": self.turning_points.tolist(),
             "smoothness": self.flight.smoothness().as_dict() if len(self.flight.t) >= 2 else None,
-            # Every waypoint counts: the last one's miss is where the path crosses its finish line.
-            "miss_at_last_over_R": float(self.miss_distances[-1] / R),
             "waypoints": self.waypoint_table(),
             "legs": self.leg_table(),
         }
+
+
+def flight_scores(R: float, miss_distances: ArrayLike, reached: ArrayLike, finished: bool, swirls: int,
+                  overshoot: float, undershoot: float, path_length: float, duration: float,
+                  fuel: float) -> dict[str, Any]:
+    """A flight's scores as metrics.json keeps them (lengths also in units of R), for the kinematic
+    flights and the 6-DOF ones alike. Every waypoint counts: the last one's miss is where the path
+    crosses its finish line."""
+    miss = np.asarray(miss_distances, dtype=float)
+    return {
+        "miss_distances": miss.tolist(),
+        "miss_distances_over_R": (miss / R).tolist(),
+        "max_miss_over_R": float(miss.max() / R),
+        "miss_at_last_over_R": float(miss[-1] / R),
+        "reached": [bool(r) for r in np.asarray(reached)],
+        "all_reached": bool(np.all(reached)),
+        "finished": bool(finished),
+        "swirls": int(swirls),
+        "overshoot": float(overshoot),
+        "overshoot_over_R": float(overshoot) / R,
+        "undershoot": float(undershoot),
+        "undershoot_over_R": float(undershoot) / R,
+        "path_length": float(path_length),
+        "duration": float(duration),
+        "fuel": float(fuel),
+    }
 
 
 def fly(
