@@ -548,6 +548,15 @@ TEST(VisibilityVolume, GridRowsNextToACreaseAreTraced) {
   for (const Vec3& g : {Vec3(0, 0, d_max * std::sin(0.9 * kPi / 180.0)), Vec3(0, 0, d_max * std::sin(3.1 * kPi / 180.0))}) {
     const VisibilityVolume vv = visibility_volume(scene, g, d_max, std::nullopt, 1.0);
     expect_brute_force_intervals(scene, vv);
+    // The case this test is for: the mesh dropped a grid row next to the crease, so its intervals
+    // came from rays of their own.
+    int dropped = 0;
+    for (int i = 0; i <= vv.grid.num_elevation; ++i) {
+      const double row = std::sin(-0.5 * kPi + i * kPi / vv.grid.num_elevation);
+      dropped += std::none_of(vv.mesh_row_sines.begin(), vv.mesh_row_sines.end(),
+                              [&](double s) { return std::abs(s - row) < 1e-9; });
+    }
+    EXPECT_GE(dropped, 1) << "g.z = " << g.z();
     const VisibilityVolume banded = visibility_volume(scene, Vec3(0, 0, 0.5), d_max, std::make_pair(g.z() + 0.5, 300.0), 1.0);
     expect_brute_force_intervals(scene, banded);
   }
