@@ -92,6 +92,20 @@ def test_cli_writes_updates_csv_and_threshold(tmp_path: Path, capsys: pytest.Cap
     assert "Threshold h = 3" in (out / "report.md").read_text()
 
 
+def test_cli_strategy_overrides_the_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from vistrack.cli import main
+
+    out = tmp_path / "standoff"
+    assert main(["follow", str(EXAMPLES / "follow_straight.yaml"), "--out", str(out), "--no-city",
+                 "--strategy", "standoff", *NO_MEDIA]) == 0
+    metrics = json.loads((out / "metrics.json").read_text())
+    # The file says nothing of the strategy (paper: loiter all 400 s); standoff flies every second.
+    assert metrics["time_in_mode_s"]["standoff"] == pytest.approx(400.0)
+    assert metrics["time_in_mode_s"]["loiter"] == 0.0
+    assert main(["follow", str(EXAMPLES / "follow_straight.yaml"), "--strategy", "sideways"]) == 2
+    assert "invalid choice: 'sideways'" in capsys.readouterr().err
+
+
 def test_one_switch_is_singular() -> None:
     from vistrack.commands.follow import _count
 

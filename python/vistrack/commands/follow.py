@@ -17,7 +17,7 @@ import argparse
 from pathlib import Path
 from typing import Any, Optional
 
-from ..follow.keys import threshold_value
+from ..follow.keys import STRATEGIES, threshold_value
 from ..follow.scenario import FollowScenario
 from ..report.follow import write_follow
 from ..report.follow_city import city_orbit_line
@@ -37,6 +37,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--no-city", dest="city", action="store_false", help="skip the city runs")
     parser.add_argument("--threshold", metavar="H", help="follow.threshold over the file's: auto (picked from the "
                         "camera) or the speed ratio h (3: the paper's method)")
+    parser.add_argument("--strategy", choices=STRATEGIES, help="follow.strategy over the file's: paper (sinusoid "
+                        "and loiter), standoff (vector field (74) about the offset point) or auto (per update)")
     add_dynamics_argument(parser, fdm=True)
     parser.add_argument("--export-tolerance", type=number("--export-tolerance", 0.0, 1e7), default=1.0, metavar="M",
                         help="--export keeps the 1 Hz waypoints Douglas-Peucker needs at this tolerance "
@@ -57,6 +59,8 @@ def run(args: argparse.Namespace) -> int:
     scenario.aircraft = aircraft or scenario.aircraft
     if args.threshold is not None:
         scenario.parameters.threshold = threshold_value("--threshold", args.threshold)
+    if args.strategy is not None:
+        scenario.parameters.strategy = args.strategy
     city = args.city and scenario.city_available()
     if args.city and scenario.city is not None and not city:
         print(f"city data not found ({scenario.city.describe()}): skipping the city runs")

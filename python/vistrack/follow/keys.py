@@ -11,13 +11,15 @@ from .._core import limits as _limits
 from ..schema import fail, number, positive, reject_unknown, section
 from .simulation import VehicleLeg, VehicleReportOptions
 
-__all__ = ["HEADINGS", "REPORT_KEYS", "reports_block", "threshold_value", "vehicle_legs"]
+__all__ = ["HEADINGS", "REPORT_KEYS", "STRATEGIES", "reports_block", "threshold_value", "vehicle_legs"]
 
 # Compass words as angles counter-clockwise from east (radians).
 HEADINGS = {name: math.radians(deg) for name, deg in (
     ("east", 0.0), ("northeast", 45.0), ("north", 90.0), ("northwest", 135.0), ("west", 180.0),
     ("southwest", -135.0), ("south", -90.0), ("southeast", -45.0))}
 
+
+STRATEGIES = ("paper", "standoff", "auto")  # follow.strategy (FollowStrategy in the core)
 
 
 def threshold_value(key: str, value: Any) -> float | str:
