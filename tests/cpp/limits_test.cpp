@@ -279,7 +279,8 @@ TEST(Limits, WorkIsEstimatedBeforeAnyVolume) {
   const WorkEstimate usual = estimate_work(poi, planning);
   EXPECT_GT(usual.volumes, 13.0);  // 12 initial intervals plus the end
   EXPECT_LT(usual.volumes, 300.0);
-  EXPECT_NEAR(usual.bytes_per_volume, 72.0 * 180 * 360, 1.0);
+  // 16 bytes per corner, 56 per cell and the walls' 3000 sqrt(cells) (volume_bytes).
+  EXPECT_NEAR(usual.bytes_per_volume, 16.0 * 181 * 360 + 56.0 * 180 * 360 + 3000.0 * std::sqrt(180.0 * 360.0), 1.0);
   planning.spacing = 0.001;
   planning.min_spacing = 0.001;
   const WorkEstimate tiny = estimate_work(poi, planning);

@@ -136,6 +136,19 @@ def test_batch_errors_name_the_row(box_env):
         vt.visibility_volumes(box_env, np.zeros((3, 2)), 100.0)
 
 
+def test_vv_memory_is_estimated_from_above(charlotte):
+    # What visibility_volumes and the planner's work estimate budget per VV (test_work_estimates: the refusals).
+    env = vt.Environment.from_mesh(str(charlotte / "uptown_charlotte.obj"), up="y")
+    scene = vt.visibility_scene(env)
+    poi = vt.PoiPath.from_csv(str(charlotte / "paths" / "paper_slow.csv"), speed=5.0)
+    for res in (5.0, 2.0, 1.0):
+        for t in np.linspace(0.0, poi.duration, 4):
+            vv = vt.visibility_volume(scene, poi.position(t), 400.0, None, res)  # a ground POI: the most walls
+            held = (vv.vertices.nbytes + vv.faces.nbytes + vv.near.nbytes + vv.far.nbytes
+                    + 4 * len(vv.mesh_triangle_faces) + 8 * len(vv.mesh_row_sines))
+            assert held <= vt.volume_bytes(res), (res, t, held, vt.volume_bytes(res))
+
+
 def test_save_round_trip(open_field, tmp_path: Path):
     vv = vt.visibility_volume(open_field, (0.0, 0.0, 0.0), 100.0, resolution_deg=10.0)
     for name in ("vv.obj", "vv.ply"):

@@ -128,7 +128,8 @@ VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, 
 VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double d_max,
                                    std::optional<std::pair<double, double>> altitude_band = std::nullopt,
                                    double resolution_deg = kDefaultResolutionDeg);
-// Memory of one VV on a grid of resolution_deg degrees: its intervals and its mesh (72 bytes per cell).
+// Memory of one VV on a grid of resolution_deg degrees, estimated from above: its intervals (16 bytes
+// per corner) and its mesh (56 bytes per cell, plus its walls: 3000 sqrt(cells)).
 double volume_bytes(double resolution_deg);
 // VVs for many POI positions (rows of `pois`), in parallel over the points (TBB); refused naming
 // pois when they would hold more than limits::kMaxWorkBytes (volume_bytes each).
