@@ -305,6 +305,30 @@ TEST(VisibilityVolume, BoxBuildingPolygonMatchesBruteForce) {
   }
 }
 
+// A jump's wall is aimed at the occluding triangle's edge (two rays pin it to 1e-4 of a grid edge)
+// instead of bisected to 1/64: the shadow of a box's vertical edge in a slice lies on the vertical
+// plane through g and the edge, to 1e-5 rad at 1 degree (bisection left up to 1.4e-4 rad).
+TEST(VisibilityVolume, WallsSitOnTheSilhouette) {
+  const Box box{Vec3(40, -20, 0), Vec3(60, 20, 30)};
+  const VisibilityScene scene(boxes_env({box}));
+  const Vec3 g(0, 0, 0.5);
+  const VisibilityVolume vv = visibility_volume(scene, g, 200.0, std::nullopt, 1.0);
+  expect_valid(vv, "box");
+  const std::vector<Polygon> vp = visibility_polygon(vv, 20.0);
+  ASSERT_EQ(vp.size(), 1u);
+  int on_shadow = 0;
+  for (const Vec2& p : vp[0].outer) {
+    const double distance = (p - g.head<2>()).norm(), azimuth = std::atan2(p.y() - g.y(), p.x() - g.x());
+    if (distance < 50.0 || distance > 150.0) continue;  // past the near wall (44.7 m), short of d_max
+    for (double edge : {std::atan2(20.0, 40.0), std::atan2(-20.0, 40.0)})
+      if (std::abs(azimuth - edge) < 0.5 * kPi / 180.0) {
+        EXPECT_NEAR(azimuth, edge, 1e-5) << "vertex " << p.transpose();
+        ++on_shadow;
+      }
+  }
+  EXPECT_GE(on_shadow, 2);  // both shadow lines were looked at
+}
+
 TEST(LineOfSight, MatchesExactSegmentBoxTest) {
   const std::vector<Box> boxes = {{Vec3(40, -20, 0), Vec3(60, 20, 30)}, {Vec3(-50, 30, 0), Vec3(-10, 80, 70)}};
   const Environment env = boxes_env(boxes);

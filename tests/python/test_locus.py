@@ -213,13 +213,16 @@ SETUPS = {
 
 
 def dense_max_radius(scene: vt.VisibilityScene, poi: vt.PoiPath, times: np.ndarray, d_max: float,
-                     altitude: float) -> np.ndarray:
-    """MaxRadius of the VP (1-degree VVs, edge-walking slicer) at the given times: independent of
-    the planner's samples and of the check's line-of-sight probe."""
+                     altitude: float) -> tuple[np.ndarray, np.ndarray]:
+    """MaxRadius of the VP (1-degree VVs, edge-walking slicer) at the given times, and the POIs:
+    independent of the planner's samples and of the check's line-of-sight probe. Batches of 100
+    VVs (400 at once would pass visibility_volumes' memory budget)."""
     points = np.array([np.ravel(scene.poi_on_surface(np.ravel(poi.position(t)))) for t in times])
-    volumes = vt.visibility_volumes(scene, points, d_max, None, 1.0)
-    return np.array([vt.max_inscribed_radius(vt.plane_visibility_polygon(vv, altitude), np.ravel(poi.position(t))[:2])
-                     for vv, t in zip(volumes, times)]), volumes
+    radii = [vt.max_inscribed_radius(vt.plane_visibility_polygon(vv, altitude), np.ravel(poi.position(t))[:2])
+             for start in range(0, len(points), 100)
+             for vv, t in zip(vt.visibility_volumes(scene, points[start:start + 100], d_max, None, 1.0),
+                              times[start:start + 100])]
+    return np.array(radii), points
 
 
 @pytest.mark.parametrize("name", list(SETUPS))
@@ -232,13 +235,14 @@ def test_smooth_locus_stays_inside_the_visibility_polygons(name: str, shared_dat
     plan = planner.plan(poi, uav, vt.Planning(**planning_args))
     assert plan.feasible, plan.infeasibility
     times = np.linspace(0.0, poi.duration, 400)
-    truth, volumes = dense_max_radius(planner.scene, poi, times, d_max, uav.altitude)
+    truth, points = dense_max_radius(planner.scene, poi, times, d_max, uav.altitude)
     radius = plan.radius_at(times)
     assert (radius <= truth).all(), \
         f"{(radius > truth).sum()} of 400 times outside, by up to {(radius - truth).max():.2f} m"
     # The edge-walking slicer is CGAL's slicer, where the locus comes closest.
     for k in np.argsort(truth - radius)[:2]:
-        exact = vt.max_inscribed_radius(volumes[k].slice(uav.altitude), np.ravel(poi.position(times[k]))[:2])
+        vv = vt.visibility_volume(planner.scene, points[k], d_max, None, 1.0)
+        exact = vt.max_inscribed_radius(vv.slice(uav.altitude), np.ravel(poi.position(times[k]))[:2])
         assert exact == pytest.approx(truth[k], abs=1e-6)
     # Feasible everywhere, between samples too: Lemma 5, Lemma 6 and the d2R/dt2 bound.
     reference = plan.reference
@@ -293,7 +297,9 @@ def test_smooth_locus_is_flown_in_view(name: str, visibility: float, after_15: f
 
 
 @pytest.mark.parametrize("name, visibility, after_15", [
-    ("campus", 0.968, 0.2), ("paper_small", 0.986, 0.1), ("paper_slow", 1.0, 13.9)])
+    # The paper's locus leaves the VPs between samples, so its numbers follow the VPs' last details:
+    # the aimed walls (issue 35) moved campus from 0.968 and paper_small from 0.986.
+    ("campus", 0.966, 0.2), ("paper_small", 0.988, 0.1), ("paper_slow", 1.0, 13.9)])
 def test_papers_locus_reproduces_the_numbers_before_the_smooth_one(name: str, visibility: float, after_15: float,
                                                                    shared_data: Path) -> None:
     seen, error_15, _, result = flown(name, "paper")

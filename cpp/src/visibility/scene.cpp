@@ -110,6 +110,11 @@ EmbreeScene::EmbreeScene(const Environment& env)
     obstacle_geometry = rtcAttachGeometry(scene, geometry);
     rtcReleaseGeometry(geometry);
     check_device(device, "loading the obstacle triangles");
+    triangles.resize(9 * static_cast<std::size_t>(mesh.faces.rows()));
+    for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k)
+          triangles[9 * static_cast<std::size_t>(f) + 3 * c + k] = vertices[3 * mesh.faces(f, c) + k];
     on_ground.resize(static_cast<std::size_t>(mesh.faces.rows()));
     for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f) {
       double top = -std::numeric_limits<double>::infinity();
@@ -131,8 +136,8 @@ EmbreeScene::EmbreeScene(const Environment& env)
     std::copy(corners.begin(), corners.end(), vertices);
     auto* indices = static_cast<unsigned*>(
         rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), 2));
-    const std::array<unsigned, 6> triangles{0, 1, 2, 0, 2, 3};
-    std::copy(triangles.begin(), triangles.end(), indices);
+    const std::array<unsigned, 6> ground_triangles{0, 1, 2, 0, 2, 3};
+    std::copy(ground_triangles.begin(), ground_triangles.end(), indices);
     rtcCommitGeometry(geometry);
     ground_geometry = rtcAttachGeometry(scene, geometry);
     rtcReleaseGeometry(geometry);
@@ -147,7 +152,7 @@ EmbreeScene::~EmbreeScene() {
 }
 
 void EmbreeScene::trace(const Vec3& world_origin, const float* dirs, std::size_t n, float t_near, float t_far,
-                        float* t_hit, bool* hit_ground, const float* t_far_each) const {
+                        float* t_hit, bool* hit_ground, const float* t_far_each, std::uint32_t* hit_triangle) const {
   const float o[3] = {static_cast<float>(world_origin.x() - origin.x()),
                       static_cast<float>(world_origin.y() - origin.y()),
                       static_cast<float>(world_origin.z() - origin.z())};
@@ -166,9 +171,10 @@ void EmbreeScene::trace(const Vec3& world_origin, const float* dirs, std::size_t
     for (std::size_t k = 0; k < count; ++k) {
       const bool hit = batch[k].hit.geomID != RTC_INVALID_GEOMETRY_ID;
       t_hit[start + k] = hit ? batch[k].ray.tfar : std::numeric_limits<float>::infinity();
-      if (hit_ground != nullptr)
-        hit_ground[start + k] = hit && (batch[k].hit.geomID == ground_geometry ||
-                                        (batch[k].hit.geomID == obstacle_geometry && on_ground[batch[k].hit.primID]));
+      const bool on_plane = hit && (batch[k].hit.geomID == ground_geometry ||
+                                    (batch[k].hit.geomID == obstacle_geometry && on_ground[batch[k].hit.primID]));
+      if (hit_ground != nullptr) hit_ground[start + k] = on_plane;
+      if (hit_triangle != nullptr) hit_triangle[start + k] = hit && !on_plane ? batch[k].hit.primID : kNoTriangle;
     }
   }
 }

@@ -10,8 +10,8 @@
 namespace vistrack::detail {
 
 // An edge of the mesh's triangulation of the sphere (samples u < w: the grid's corners, then the
-// midpoints of split edges) across which r jumps, bracketed by bisection: the ray at lambda_lo of
-// the way from u to w is on u's side of the jump, the ray at lambda_hi on w's side.
+// midpoints of split edges) across which r jumps, bracketed by aimed rays or bisection: the ray at
+// lambda_lo of the way from u to w is on u's side of the jump, the ray at lambda_hi on w's side.
 struct Jump {
   int u = 0;
   int w = 0;
@@ -24,6 +24,9 @@ struct Jump {
   double hi_far = 0.0;
   Surface lo_surface = Surface::radial;
   Surface hi_surface = Surface::radial;
+  std::uint32_t lo_triangle = ~std::uint32_t{0};  // the obstacle triangle that ends r there, if any
+  std::uint32_t hi_triangle = ~std::uint32_t{0};
+  int aimed = 0;  // probes aimed at the occluder's edge so far
   bool confirmed = false;
   int split = -1;   // the midpoint sample when the edge was split (it held two jumps)
   int vertex = -1;  // the two mesh vertices on the jump's ray (vertex: u's side, vertex + 1: w's)
@@ -59,10 +62,13 @@ struct StarMeshScratch {
   std::vector<Vec3> directions;
   std::vector<double> mid_far;
   std::vector<Surface> mid_surface;
+  std::vector<std::uint32_t> mid_triangle;
+  std::vector<double> probe;  // the lambda of each active jump's ray this round
   // Samples past the corners: midpoints of split edges.
   std::vector<Vec3> extra_direction;
   std::vector<double> extra_far;
   std::vector<Surface> extra_surface;
+  std::vector<std::uint32_t> extra_triangle;
   std::vector<std::int32_t> extra_parent;  // the split edge's Jump
   std::vector<std::int32_t> extra_vertex;
   std::vector<std::int32_t> complex_slots;   // slots with a split or a jump, ascending
@@ -75,12 +81,14 @@ struct StarMeshScratch {
 };
 
 // The closed mesh of a VV whose POI lies in the band (near = 0 along every ray): the radial
-// surface r = far over the live corners (far[v], surface[v] per corner of `sphere`), with radial
-// walls at the jumps of r located by bisection with more rays, and the grid's triangles split
+// surface r = far over the live corners (far[v], surface[v] per corner of `sphere`, and the
+// obstacle triangle triangle[v] that ended the corner's ray), with radial walls at the jumps of r
+// located with more rays (aimed at the edge of the occluding triangle, else by bisection), and the grid's triangles split
 // where an edge holds two jumps. Sets vv.mesh, vv.volume and vv.mesh_triangle_faces (the faces
 // built over each triangle slot of `sphere`).
 void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs, const std::vector<double>& far,
-                     const std::vector<Surface>& surface, const TraceContext& tracer, StarMeshScratch& scratch,
-                     VisibilityVolume& vv, VolumeCost* cost = nullptr);
+                     const std::vector<Surface>& surface, const std::vector<std::uint32_t>& triangle,
+                     const TraceContext& tracer, StarMeshScratch& scratch, VisibilityVolume& vv,
+                     VolumeCost* cost = nullptr);
 
 }  // namespace vistrack::detail

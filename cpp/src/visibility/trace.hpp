@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "visibility/clearance.hpp"
 #include "visibility/embree_scene.hpp"
@@ -58,7 +59,8 @@ struct TraceContext {
 // start + m (m < count <= 64) and their azimuth columns (any column whose closed span holds the
 // azimuth); store(k, d, hit) receives the first obstacle hit (+inf when none, and for rays not
 // traced). Ground hits count as none: the ground is applied exactly by visible_interval, and a
-// ray grazing the ground from a POI on it must not stop.
+// ray grazing the ground from a POI on it must not stop. A store taking a fourth argument also
+// gets the obstacle triangle hit (EmbreeScene::kNoTriangle when none).
 template <class Fill, class Store>
 void trace_range(const TraceContext& c, std::size_t begin, std::size_t end, Fill fill, Store store) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -72,6 +74,8 @@ void trace_range(const TraceContext& c, std::size_t begin, std::size_t end, Fill
   std::array<Vec3, kChunk> d;
   std::array<int, kChunk> column{};
   std::array<double, kChunk> hit{};
+  constexpr bool wants_triangle = std::is_invocable_v<Store&, std::size_t, const Vec3&, double, std::uint32_t>;
+  std::array<std::uint32_t, kChunk> triangle{}, hit_triangle{};
   std::size_t traced_total = 0;
   std::chrono::steady_clock::duration in_embree{};
   const bool timed = c.counts != nullptr && c.counts->timed;
@@ -81,6 +85,7 @@ void trace_range(const TraceContext& c, std::size_t begin, std::size_t end, Fill
     std::size_t traced = 0;
     for (std::size_t k = 0; k < count; ++k) {
       hit[k] = kInf;
+      if constexpr (wants_triangle) hit_triangle[k] = EmbreeScene::kNoTriangle;
       const double sin_el = d[k].z();
       if (c.clearance.clear(sin_el, column[k])) continue;
       const double bound = visible_far_bound(s, sin_el);
@@ -91,12 +96,19 @@ void trace_range(const TraceContext& c, std::size_t begin, std::size_t end, Fill
     }
     if (traced > 0) {
       const auto before = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
-      c.embree.trace(s.g, rays.data(), traced, 0.0f, t_far, t.data(), ground.data(), t_max.data());
+      c.embree.trace(s.g, rays.data(), traced, 0.0f, t_far, t.data(), ground.data(), t_max.data(),
+                     wants_triangle ? triangle.data() : nullptr);
       if (timed) in_embree += std::chrono::steady_clock::now() - before;
     }
     for (std::size_t m = 0; m < traced; ++m)
-      if (!ground[m]) hit[slot[m]] = static_cast<double>(t[m]);
-    for (std::size_t k = 0; k < count; ++k) store(start + k, d[k], hit[k]);
+      if (!ground[m]) {
+        hit[slot[m]] = static_cast<double>(t[m]);
+        if constexpr (wants_triangle) hit_triangle[slot[m]] = triangle[m];
+      }
+    for (std::size_t k = 0; k < count; ++k) {
+      if constexpr (wants_triangle) store(start + k, d[k], hit[k], hit_triangle[k]);
+      else store(start + k, d[k], hit[k]);
+    }
     traced_total += traced;
   }
   if (c.counts != nullptr) {

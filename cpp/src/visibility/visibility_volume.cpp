@@ -95,6 +95,7 @@ struct Workspace {
   detail::Clearance clearance;
   std::vector<double> corner_far;
   std::vector<detail::Surface> corner_surface;
+  std::vector<std::uint32_t> corner_triangle;  // the obstacle triangle each corner ray hit
   std::vector<Interval> corner;  // shell meshes
   std::vector<int> missing_rows;  // grid corner rows that are no vertex row of the mesh
   detail::StarMeshScratch star;
@@ -257,8 +258,10 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   if (s.poi_in_band) {
     w.corner_far.resize(n_corners);
     w.corner_surface.resize(n_corners);
-    detail::trace_all(tracer, n_corners, corner_ray, [&](std::size_t k, const Vec3& d, double hit) {
+    w.corner_triangle.resize(n_corners);
+    detail::trace_all(tracer, n_corners, corner_ray, [&](std::size_t k, const Vec3& d, double hit, std::uint32_t triangle) {
       w.corner_far[k] = detail::star_far(s, d.z(), hit, w.corner_surface[k]);
+      w.corner_triangle[k] = triangle;
     });
   } else {
     w.corner.resize(n_corners);
@@ -269,7 +272,8 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   grid_intervals(vv, s, sphere, row_sines, dirs, tracer, w);
   trace_timer.stop();
   if (s.poi_in_band) {
-    detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, tracer, w.star, vv, cost);
+    detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, w.corner_triangle, tracer, w.star, vv,
+                            cost);
     vv.mesh_row_sines = row_sines;
   } else {
     detail::PhaseTimer mesh_timer(cost ? &cost->mesh_s : nullptr);
