@@ -1,6 +1,8 @@
 // Rays that certainly meet no obstacle (see clearance.hpp).
 #include "visibility/clearance.hpp"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -118,7 +120,7 @@ void Clearance::none(int na) {
   sin_hi.assign(static_cast<std::size_t>(na), 2.0);
 }
 
-void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach, int na) {
+void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach, int na, bool parallel) {
   num_azimuth = na;
   // tau ranges, first as tangents (lo: +inf, hi: -inf while nothing reaches the column).
   sin_lo.assign(static_cast<std::size_t>(na), kInf);
@@ -126,13 +128,10 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
   double all_lo = kInf, all_hi = -kInf;  // triangles over g reach every column
   const double d_az = kTwoPi / na;
   const double gx = g.x(), gy = g.y(), gz = g.z();
-  if (index.size() > 0) {
-    const double margin = reach + index.overhang;
-    const int ix0 = std::max(0, static_cast<int>(std::floor((gx - margin - index.x0) / index.cell)));
-    const int ix1 = std::min(index.nx - 1, static_cast<int>(std::floor((gx + margin - index.x0) / index.cell)));
-    const int iy0 = std::max(0, static_cast<int>(std::floor((gy - margin - index.y0) / index.cell)));
-    const int iy1 = std::min(index.ny - 1, static_cast<int>(std::floor((gy + margin - index.y0) / index.cell)));
-    for (int iy = iy0; iy <= iy1; ++iy) {
+  // The buckets' rows [row_begin, row_end) between columns ix0..ix1 into (lo, hi, every_lo, every_hi).
+  auto scan = [&](int ix0, int ix1, int row_begin, int row_end, std::vector<double>& col_lo, std::vector<double>& col_hi,
+                  double& every_lo, double& every_hi) {
+    for (int iy = row_begin; iy < row_end; ++iy) {
       for (int ix = ix0; ix <= ix1; ++ix) {
         const auto b = static_cast<std::size_t>(iy * index.nx + ix);
         if (index.bucket_start[b] == index.bucket_start[b + 1]) continue;
@@ -175,19 +174,42 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
           const double d1 = relative(pbx, pby), d2 = relative(pcx, pcy);
           const double span_lo = a0 + std::min({0.0, d1, d2}), span_hi = a0 + std::max({0.0, d1, d2});
           if (rho_min <= 1e-9 || span_hi - span_lo > kPi - 1e-3) {
-            all_lo = std::min(all_lo, lo);
-            all_hi = std::max(all_hi, hi);
+            every_lo = std::min(every_lo, lo);
+            every_hi = std::max(every_hi, hi);
             continue;
           }
           const int j0 = static_cast<int>(std::floor((span_lo - kAngleSlack) / d_az));
           const int j1 = static_cast<int>(std::floor((span_hi + kAngleSlack) / d_az));
           for (int j = j0; j <= j1; ++j) {
             const auto c = static_cast<std::size_t>(j < 0 ? j + na : (j >= na ? j - na : j));
-            sin_lo[c] = std::min(sin_lo[c], lo);
-            sin_hi[c] = std::max(sin_hi[c], hi);
+            col_lo[c] = std::min(col_lo[c], lo);
+            col_hi[c] = std::max(col_hi[c], hi);
           }
         }
       }
+    }
+  };
+  if (index.size() > 0) {
+    const double margin = reach + index.overhang;
+    const int ix0 = std::max(0, static_cast<int>(std::floor((gx - margin - index.x0) / index.cell)));
+    const int ix1 = std::min(index.nx - 1, static_cast<int>(std::floor((gx + margin - index.x0) / index.cell)));
+    const int iy0 = std::max(0, static_cast<int>(std::floor((gy - margin - index.y0) / index.cell)));
+    const int iy1 = std::min(index.ny - 1, static_cast<int>(std::floor((gy + margin - index.y0) / index.cell)));
+    if (parallel && iy1 > iy0) {
+      const int middle = iy0 + (iy1 - iy0 + 1) / 2;
+      half_lo.assign(static_cast<std::size_t>(na), kInf);
+      half_hi.assign(static_cast<std::size_t>(na), -kInf);
+      double half_all_lo = kInf, half_all_hi = -kInf;
+      tbb::parallel_invoke([&] { scan(ix0, ix1, iy0, middle, sin_lo, sin_hi, all_lo, all_hi); },
+                           [&] { scan(ix0, ix1, middle, iy1 + 1, half_lo, half_hi, half_all_lo, half_all_hi); });
+      for (std::size_t c = 0; c < sin_lo.size(); ++c) {
+        sin_lo[c] = std::min(sin_lo[c], half_lo[c]);
+        sin_hi[c] = std::max(sin_hi[c], half_hi[c]);
+      }
+      all_lo = std::min(all_lo, half_all_lo);
+      all_hi = std::max(all_hi, half_all_hi);
+    } else {
+      scan(ix0, ix1, iy0, iy1 + 1, sin_lo, sin_hi, all_lo, all_hi);
     }
   }
   for (std::size_t c = 0; c < sin_lo.size(); ++c) {

@@ -43,12 +43,14 @@ struct ObstacleIndex {
 struct Clearance {
   int num_azimuth = 0;
   std::vector<double> sin_lo, sin_hi;
+  std::vector<double> half_lo, half_hi;  // the second half's columns when computed in parallel
   bool clear(double sin_el, int column) const {
     return sin_el > sin_hi[static_cast<std::size_t>(column)] || sin_el < sin_lo[static_cast<std::size_t>(column)];
   }
   // The bounds for rays from g (relative to the local origin) that end within `reach` of it, on
-  // na columns. Reuses the vectors' storage.
-  void compute(const ObstacleIndex& index, const Vec3& g, double reach, int na);
+  // na columns. Reuses the vectors' storage. `parallel`: the buckets' rows in two halves on TBB's
+  // threads (min and max merge exactly: the same bounds either way).
+  void compute(const ObstacleIndex& index, const Vec3& g, double reach, int na, bool parallel = false);
   // Every ray traced (no bounds): the result then equals tracing everything.
   void none(int na);
 };

@@ -233,7 +233,7 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   WorkspaceLease lease;
   Workspace& w = *lease;
   detail::PhaseTimer bounds_timer(cost ? &cost->bounds_s : nullptr);
-  w.clearance.compute(embree.obstacles, g - embree.origin, d_max, na);
+  w.clearance.compute(embree.obstacles, g - embree.origin, d_max, na, parallel);
   bounds_timer.stop();
   detail::RayCounts counts;
   counts.timed = cost != nullptr;
