@@ -54,6 +54,8 @@ const double kBracketWidth = std::ldexp(1.0, -kBisections);  // a jump is locate
 const double kAimStep = std::ldexp(1.0, -12);
 constexpr int kMaxAimed = 4;  // per jump (each miss walks to the next triangle of the occluder)
 constexpr std::uint32_t kNoTriangle = EmbreeScene::kNoTriangle;
+constexpr std::size_t kJumpBlock = 128;  // jumps located together (two chunks of rays per early round)
+constexpr int kPendingSplit = -2;        // Jump::split of an edge to split, before it is numbered
 
 // slot_flags bits
 constexpr std::uint8_t kLive = 1;     // all three corners see something
@@ -390,68 +392,90 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     if (probe != middle) ++jump.aimed;
     return probe;
   };
-  auto& active = sc.active;
-  auto& directions = sc.directions;
+  // The jumps are located in fixed blocks of kJumpBlock, each running all its rounds on its own
+  // (in parallel when the VV is spread over the threads): a round's rays are traced in chunks of
+  // one block's jumps, so the result does not depend on the number of threads. A first pass's
+  // splits are numbered afterwards, in jump order.
   auto bisect = [&](std::size_t first, bool allow_split) {
-    active.clear();
-    for (std::size_t k = first; k < jumps.size(); ++k) active.push_back(static_cast<std::int32_t>(k));
-    for (int round = 0; round < kBisections + kMaxAimed && !active.empty(); ++round) {
-      // The first round of a first pass probes the middles: a middle ray unlike both ends splits the edge.
-      const bool middles = allow_split && round == 0;
-      directions.resize(active.size());
-      sc.probe.resize(active.size());
-      for (std::size_t m = 0; m < active.size(); ++m) {
-        Jump& jump = jumps[static_cast<std::size_t>(active[m])];
-        const double lambda = middles ? 0.5 * (jump.lambda_lo + jump.lambda_hi) : probe_of(jump);
-        sc.probe[m] = lambda;
-        directions[m] = ((1.0 - lambda) * sample_direction(jump.u) + lambda * sample_direction(jump.w)).normalized();
-      }
-      sc.mid_far.resize(active.size());
-      sc.mid_surface.resize(active.size());
-      sc.mid_triangle.resize(active.size());
-      trace_all(
-          tracer, active.size(),
-          [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
-            for (std::size_t m = 0; m < count; ++m) {
-              d[m] = directions[start + m];
-              column[m] = (jumps[static_cast<std::size_t>(active[start + m])].slot / 2) % na;
-            }
-          },
-          [&](std::size_t m, const Vec3& d, double hit, std::uint32_t hit_triangle) {
-            sc.mid_far[m] = star_far(s, d.z(), hit, sc.mid_surface[m]);
-            sc.mid_triangle[m] = hit_triangle;
-          });
-      std::size_t kept = 0;
-      for (std::size_t m = 0; m < active.size(); ++m) {
-        Jump& jump = jumps[static_cast<std::size_t>(active[m])];
-        const double mid = sc.mid_far[m];
-        const Surface mid_surface = sc.mid_surface[m];
-        if (middles && mid > alive_gap && differ(jump.lo_far, jump.lo_surface, mid, mid_surface) &&
-            differ(mid, mid_surface, jump.hi_far, jump.hi_surface)) {
-          jump.split = nv + static_cast<int>(sc.extra_far.size());
-          sc.extra_direction.push_back(directions[m]);
-          sc.extra_far.push_back(mid);
-          sc.extra_surface.push_back(mid_surface);
-          sc.extra_triangle.push_back(sc.mid_triangle[m]);
-          sc.extra_parent.push_back(active[m]);
-          continue;
+    const std::size_t end = jumps.size();
+    sc.middle.resize(end - first);
+    auto run_block = [&](std::size_t begin, std::size_t stop) {
+      FlushDenormals flush;
+      std::vector<std::int32_t> active;
+      std::vector<Vec3> direction;
+      std::vector<double> probe, mid_far;
+      std::vector<Surface> mid_surface;
+      std::vector<std::uint32_t> mid_triangle;
+      for (std::size_t k = begin; k < stop; ++k) active.push_back(static_cast<std::int32_t>(k));
+      for (int round = 0; round < kBisections + kMaxAimed && !active.empty(); ++round) {
+        // The first round of a first pass probes the middles: a middle ray unlike both ends splits the edge.
+        const bool middles = allow_split && round == 0;
+        const std::size_t n = active.size();
+        direction.resize(n);
+        probe.resize(n);
+        for (std::size_t m = 0; m < n; ++m) {
+          Jump& jump = jumps[static_cast<std::size_t>(active[m])];
+          const double lambda = middles ? 0.5 * (jump.lambda_lo + jump.lambda_hi) : probe_of(jump);
+          probe[m] = lambda;
+          direction[m] = ((1.0 - lambda) * sample_direction(jump.u) + lambda * sample_direction(jump.w)).normalized();
         }
-        const double lambda = sc.probe[m];
-        if (std::abs(mid - jump.lo_far) >= std::abs(jump.hi_far - mid)) {
-          jump.lambda_hi = lambda;
-          jump.hi_far = mid;
-          jump.hi_surface = mid_surface;
-          jump.hi_triangle = sc.mid_triangle[m];
-        } else {
-          jump.lambda_lo = lambda;
-          jump.lo_far = mid;
-          jump.lo_surface = mid_surface;
-          jump.lo_triangle = sc.mid_triangle[m];
+        mid_far.resize(n);
+        mid_surface.resize(n);
+        mid_triangle.resize(n);
+        trace_range(
+            tracer, 0, n,
+            [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
+              for (std::size_t m = 0; m < count; ++m) {
+                d[m] = direction[start + m];
+                column[m] = (jumps[static_cast<std::size_t>(active[start + m])].slot / 2) % na;
+              }
+            },
+            [&](std::size_t m, const Vec3& d, double hit, std::uint32_t hit_triangle) {
+              mid_far[m] = star_far(s, d.z(), hit, mid_surface[m]);
+              mid_triangle[m] = hit_triangle;
+            });
+        std::size_t kept = 0;
+        for (std::size_t m = 0; m < n; ++m) {
+          Jump& jump = jumps[static_cast<std::size_t>(active[m])];
+          const double mid = mid_far[m];
+          if (middles && mid > alive_gap && differ(jump.lo_far, jump.lo_surface, mid, mid_surface[m]) &&
+              differ(mid, mid_surface[m], jump.hi_far, jump.hi_surface)) {
+            jump.split = kPendingSplit;
+            sc.middle[static_cast<std::size_t>(active[m]) - first] = {direction[m], mid, mid_surface[m], mid_triangle[m]};
+            continue;
+          }
+          if (std::abs(mid - jump.lo_far) >= std::abs(jump.hi_far - mid)) {
+            jump.lambda_hi = probe[m];
+            jump.hi_far = mid;
+            jump.hi_surface = mid_surface[m];
+            jump.hi_triangle = mid_triangle[m];
+          } else {
+            jump.lambda_lo = probe[m];
+            jump.lo_far = mid;
+            jump.lo_surface = mid_surface[m];
+            jump.lo_triangle = mid_triangle[m];
+          }
+          if (jump.lambda_hi - jump.lambda_lo > kBracketWidth * (1.0 + 1e-9) && open(jump) && !settled(jump))
+            active[kept++] = active[m];
         }
-        if (jump.lambda_hi - jump.lambda_lo > kBracketWidth * (1.0 + 1e-9) && open(jump) && !settled(jump))
-          active[kept++] = active[m];
+        active.resize(kept);
       }
-      active.resize(kept);
+    };
+    const std::size_t blocks = (end - first + kJumpBlock - 1) / kJumpBlock;
+    for_each_index(tracer.parallel && blocks > 1, static_cast<int>(blocks), [&](int b) {
+      const std::size_t begin = first + static_cast<std::size_t>(b) * kJumpBlock;
+      run_block(begin, std::min(end, begin + kJumpBlock));
+    });
+    for (std::size_t k = first; k < end; ++k) {
+      Jump& jump = jumps[k];
+      if (jump.split != kPendingSplit) continue;
+      const Middle& middle = sc.middle[k - first];
+      jump.split = nv + static_cast<int>(sc.extra_far.size());
+      sc.extra_direction.push_back(middle.direction);
+      sc.extra_far.push_back(middle.far);
+      sc.extra_surface.push_back(middle.surface);
+      sc.extra_triangle.push_back(middle.triangle);
+      sc.extra_parent.push_back(static_cast<std::int32_t>(k));
     }
   };
   bisect(0, true);

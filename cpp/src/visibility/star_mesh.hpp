@@ -53,17 +53,21 @@ class EdgeMap {
   std::size_t size_ = 0;
 };
 
+// A split edge's middle ray: its direction, r there and the surface (and triangle) that ends it.
+struct Middle {
+  Vec3 direction = Vec3::Zero();
+  double far = 0.0;
+  Surface surface = Surface::radial;
+  std::uint32_t triangle = ~std::uint32_t{0};
+};
+
 // Buffers of one star mesh, kept between VVs so that a batch allocates them once.
 struct StarMeshScratch {
   std::vector<std::uint8_t> alive, slot_flags, candidate, row_gap;
   std::vector<Jump> jumps;
   EdgeMap edges;
-  std::vector<std::int32_t> active;
-  std::vector<Vec3> directions;
-  std::vector<double> mid_far;
-  std::vector<Surface> mid_surface;
-  std::vector<std::uint32_t> mid_triangle;
-  std::vector<double> probe;  // the lambda of each active jump's ray this round
+  // The middle ray of each jump of a first pass that splits its edge (numbered after the pass).
+  std::vector<Middle> middle;
   // Samples past the corners: midpoints of split edges.
   std::vector<Vec3> extra_direction;
   std::vector<double> extra_far;
