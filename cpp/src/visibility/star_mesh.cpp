@@ -286,23 +286,31 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   auto& edges = sc.edges;
   jumps.clear();
   edges.reset(1024);
-  auto consider = [&](int t, int e, int p, int q) {
-    if (p > q || !live(t)) return;
-    if (!all_alive && !live(sphere.neighbour(t, e))) return;
-    Jump jump;
-    jump.u = p;
-    jump.w = q;
-    jump.slot = t;
-    jump.edge = e;
-    jump.lo_far = far[p];
-    jump.lo_surface = surface[p];
-    jump.hi_far = far[q];
-    jump.hi_surface = surface[q];
-    jump.lo_triangle = triangle[p];
-    jump.hi_triangle = triangle[q];
-    jumps.push_back(jump);
-  };
-  {
+  // The rows in fixed chunks (in parallel when the VV is spread over the threads), each with its
+  // own list, joined in row order: the same jumps in the same order either way.
+  constexpr int kRowChunk = 16;
+  const int chunks = (ne + kRowChunk - 1) / kRowChunk;
+  sc.chunk_jumps.resize(static_cast<std::size_t>(chunks));
+  sc.chunk_gap.resize(static_cast<std::size_t>(chunks));
+  for_each_index(tracer.parallel, chunks, [&](int chunk) {
+    std::vector<Jump>& found = sc.chunk_jumps[static_cast<std::size_t>(chunk)];
+    found.clear();
+    auto consider = [&](int t, int e, int p, int q) {
+      if (p > q || !live(t)) return;
+      if (!all_alive && !live(sphere.neighbour(t, e))) return;
+      Jump jump;
+      jump.u = p;
+      jump.w = q;
+      jump.slot = t;
+      jump.edge = e;
+      jump.lo_far = far[p];
+      jump.lo_surface = surface[p];
+      jump.hi_far = far[q];
+      jump.hi_surface = surface[q];
+      jump.lo_triangle = triangle[p];
+      jump.hi_triangle = triangle[q];
+      found.push_back(jump);
+    };
     // A cheap test on r first (raw pointers: the compiler cannot keep vector data in registers
     // across the byte-sized flag writes); the surfaces only when it passes.
     const double* r = far.data();
@@ -313,9 +321,9 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     auto plane_pair = [&](int p, int q) { return sf[p] == sf[q] && is_plane(sf[p]); };
     // Rows between the poles first test every quad without branches (a loop the compiler
     // vectorizes; most quads have no gap), then look at the few that have one.
-    auto& any_gap = sc.row_gap;
+    std::vector<std::uint8_t>& any_gap = sc.chunk_gap[static_cast<std::size_t>(chunk)];
     any_gap.resize(static_cast<std::size_t>(na));
-    for (int i = 0; i < ne; ++i) {
+    for (int i = chunk * kRowChunk; i < std::min(ne, (chunk + 1) * kRowChunk); ++i) {
       const SphereGrid::QuadRow row = sphere.quad_row(i);
       const bool inner = !row.south && !row.north;
       if (inner) {
@@ -339,7 +347,8 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
         if (left && !plane_pair(v00, v10)) consider(t + 1, 2, v10, v00), consider(sphere.ta(i, j - 1), 1, v00, v10);
       }
     }
-  }
+  });
+  for (const std::vector<Jump>& found : sc.chunk_jumps) jumps.insert(jumps.end(), found.begin(), found.end());
   for (std::size_t k = 0; k < jumps.size(); ++k) {
     jumps[k].other = sphere.neighbour(jumps[k].slot, jumps[k].edge);
     edges.insert(EdgeMap::key(jumps[k].u, jumps[k].w), static_cast<std::int32_t>(k));
@@ -574,10 +583,16 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
 
   // A triangle takes at most two jump edges, joined by one wall that must not twist (the nearer
   // side at one end nearer at the other too): drop the weakest jump of any other triangle until
-  // none is left. Dropping only lowers counts, so this ends.
-  for (bool changed = true; changed;) {
-    changed = false;
-    for (int t : complex_slots) {
+  // none is left. Dropping only lowers counts, so this ends. A triangle can only come to need a
+  // drop when one of its jumps is dropped: after the first pass over every complex slot, each
+  // pass visits (in the same ascending order) only the slots on both sides of the last pass's
+  // drops, which drops exactly what passes over every slot would.
+  auto& visit = sc.twist_visit;
+  auto& dropped_at = sc.twist_next;
+  visit.assign(complex_slots.begin(), complex_slots.end());
+  while (!visit.empty()) {
+    dropped_at.clear();
+    for (int t : visit) {
       if (!live(t)) continue;
       for_each_piece(t, [&](const Triangle& c) {
         const std::array<Jump*, 3> edge = jumps_of(c);
@@ -596,9 +611,13 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
         for (Jump* j : edge)
           if (j != nullptr && (weakest == nullptr || j->gap() < weakest->gap())) weakest = j;
         weakest->confirmed = false;
-        changed = true;
+        dropped_at.push_back(weakest->slot);
+        if (weakest->other >= 0) dropped_at.push_back(weakest->other);
       });
     }
+    std::sort(dropped_at.begin(), dropped_at.end());
+    dropped_at.erase(std::unique(dropped_at.begin(), dropped_at.end()), dropped_at.end());
+    visit.swap(dropped_at);
   }
   refine_timer.stop();
   if (cost != nullptr) {

@@ -63,7 +63,9 @@ struct Middle {
 
 // Buffers of one star mesh, kept between VVs so that a batch allocates them once.
 struct StarMeshScratch {
-  std::vector<std::uint8_t> alive, slot_flags, candidate, row_gap;
+  std::vector<std::uint8_t> alive, slot_flags, candidate;
+  std::vector<std::vector<Jump>> chunk_jumps;        // the jump candidates found per chunk of rows
+  std::vector<std::vector<std::uint8_t>> chunk_gap;  // per chunk of rows: which quads have a gap
   std::vector<Jump> jumps;
   EdgeMap edges;
   // The middle ray of each jump of a first pass that splits its edge (numbered after the pass).
@@ -76,6 +78,7 @@ struct StarMeshScratch {
   std::vector<std::int32_t> extra_parent;  // the split edge's Jump
   std::vector<std::int32_t> extra_vertex;
   std::vector<std::int32_t> complex_slots;   // slots with a split or a jump, ascending
+  std::vector<std::int32_t> twist_visit, twist_next;  // slots the twist check visits in a pass, and the next's
   std::vector<std::int32_t> corner_vertex;   // mesh vertex of each used corner, else -1
   bool corner_identity = false;              // corner_vertex holds v -> v (every corner used)
   std::vector<std::int32_t> row_centroid;    // first centroid vertex of each sphere row
