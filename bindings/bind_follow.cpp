@@ -184,7 +184,10 @@ void bind_follow(py::module_& parent) {
                      "strategy auto: switch only for this much more predicted camera fraction")
       .def_readwrite("standoff_radius", &FollowParameters::standoff_radius,
                      "m; the standoff orbit's constant radius (the baseline's); 0: the smallest flyable per update")
-      .def("validate", &FollowParameters::validate, "Raise VistrackError naming the first invalid field.");
+      .def("validate", &FollowParameters::validate, "Raise VistrackError naming the first invalid field.")
+      .def("__copy__", [](const FollowParameters& p) { return p; }, "A copy (copy.copy): every field.")
+      .def("__deepcopy__", [](const FollowParameters& p, const py::dict&) { return p; }, py::arg("memo"),
+           "A copy (copy.deepcopy): the fields are values.");
 
   const FollowFlight flight_defaults;
   py::class_<FollowFlight>(m, "FollowFlight",

@@ -106,6 +106,21 @@ def test_cli_strategy_overrides_the_file(tmp_path: Path, capsys: pytest.CaptureF
     assert "invalid choice: 'sideways'" in capsys.readouterr().err
 
 
+def test_parameters_copy_every_field_and_stay_independent() -> None:
+    import copy
+
+    p = follow.FollowParameters(period=20.0, threshold=3.0, hysteresis=0.3, strategy="auto", strategy_margin=0.1,
+                                standoff_radius=120.0, offset_distance=50.0, offset_angle=0.5, update_period=2.0,
+                                loiter_radius=90.0, wind_compensation=False)
+    fields = [name for name in dir(p) if not name.startswith("_") and not callable(getattr(p, name))]
+    assert len(fields) >= 15
+    for q in (copy.copy(p), copy.deepcopy(p)):
+        assert {name: getattr(q, name) for name in fields} == {name: getattr(p, name) for name in fields}
+        q.wind_compensation = True
+        q.standoff_radius = 1.0
+        assert p.wind_compensation is False and p.standoff_radius == 120.0
+
+
 def test_one_switch_is_singular() -> None:
     from vistrack.commands.follow import _count
 

@@ -117,6 +117,14 @@ class FollowParameters:
     """
     The follow planner's settings (defaults from the C++ struct). Angles in radians.
     """
+    def __copy__(self) -> FollowParameters:
+        """
+        A copy (copy.copy): every field.
+        """
+    def __deepcopy__(self, memo: dict) -> FollowParameters:
+        """
+        A copy (copy.deepcopy): the fields are values.
+        """
     def __init__(self, *, period: typing.SupportsFloat | typing.SupportsIndex = 30.0, turn_margin: typing.SupportsFloat | typing.SupportsIndex = 1.25, threshold: typing.Any = 'auto', hysteresis: typing.SupportsFloat | typing.SupportsIndex = 0.5, loiter_pattern: str = 'circle', loiter_radius: typing.SupportsFloat | typing.SupportsIndex = 0.0, loiter_direction: str = 'ccw', offset_distance: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_angle: typing.SupportsFloat | typing.SupportsIndex = 0.0, offset_reference: str = 'heading', wind_compensation: bool = True, update_period: typing.SupportsFloat | typing.SupportsIndex = 1.0, strategy: str = 'paper', strategy_margin: typing.SupportsFloat | typing.SupportsIndex = 0.05, standoff_radius: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
         """
         Validated parameters.

@@ -37,6 +37,7 @@ uav, wind, camera, city and georeference are the blocks every scenario shares
 
 from __future__ import annotations
 
+import copy
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -324,12 +325,9 @@ def _baseline_metrics(result: Optional[FollowResult], reason: Optional[str]) -> 
 
 
 def _with_compensation(p: FollowParameters, on: bool) -> FollowParameters:
-    return FollowParameters(period=p.period, turn_margin=p.turn_margin, threshold=p.threshold,
-                            hysteresis=p.hysteresis, loiter_pattern=p.loiter_pattern, loiter_radius=p.loiter_radius,
-                            loiter_direction=p.loiter_direction, offset_distance=p.offset_distance,
-                            offset_angle=p.offset_angle, offset_reference=p.offset_reference,
-                            wind_compensation=on, update_period=p.update_period, strategy=p.strategy,
-                            strategy_margin=p.strategy_margin, standoff_radius=p.standoff_radius)
+    copied = copy.copy(p)
+    copied.wind_compensation = on
+    return copied
 
 
 def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[VehicleLeg], Optional[dict]]:
