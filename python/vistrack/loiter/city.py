@@ -93,6 +93,13 @@ class CityLoiter:
         }
 
 
+def _street_point(scene: VisibilityScene, x: float, y: float, height: float) -> tuple[np.ndarray, bool]:
+    """The point ``height`` above the surface at (x, y), and whether it stands in the street: the
+    surface there is the ground (not a roof) and the point is in no building."""
+    point = np.asarray(scene.poi_on_surface(np.array([[x, y, height]])))[0]
+    return point, not (point[2] > scene.ground_level + height + 0.5 or scene.inside_obstacle(point))
+
+
 def aoi_rooms(scene: VisibilityScene, aois: np.ndarray, altitude: float, turn_radius: float,
               margin: float = DEFAULT_MARGIN, height: float = PoiMotion().height) -> list[AoiRoom]:
     """Each AOI (x, y) placed ``height`` above the surface, its VP at world z = ``altitude`` and
@@ -102,8 +109,8 @@ def aoi_rooms(scene: VisibilityScene, aois: np.ndarray, altitude: float, turn_ra
     rooms = []
     ground = scene.ground_level
     for i, (x, y) in enumerate(np.asarray(aois, dtype=float)):
-        point = np.asarray(scene.poi_on_surface(np.array([[x, y, height]])))[0]
-        if point[2] > ground + height + 0.5 or scene.inside_obstacle(point):
+        point, in_street = _street_point(scene, x, y, height)
+        if not in_street:
             raise VistrackError(f"aois[{i}] = ({x:g}, {y:g}): on or inside a building (surface at "
                                 f"{point[2] - height:.1f} m, the ground at {ground:.1f} m); city AOIs stand in the "
                                 "street")
@@ -219,8 +226,7 @@ def random_street_aois(scene: VisibilityScene, count: int, rng: np.random.Genera
         c = rng.uniform(-half_size, half_size, 2)
         if np.hypot(*c) < clearance or any(np.hypot(*(c - o)) < separation for o in chosen):
             continue
-        point = np.asarray(scene.poi_on_surface(np.array([[c[0], c[1], height]])))[0]
-        if point[2] > scene.ground_level + height + 0.5 or scene.inside_obstacle(point):
+        if not _street_point(scene, c[0], c[1], height)[1]:
             continue
         chosen.append(c)
         if len(chosen) == count:
