@@ -189,7 +189,7 @@ def _ground_point(scene: VisibilityScene, point: Sequence[float], altitude: floa
     return x, y, z
 
 
-def orbit_room(env: Scene, point: Sequence[float] | np.ndarray, altitude: float, d_max: float = _core.Sensor().d_max,
+def orbit_room(env: Scene, point: Sequence[float], altitude: float, d_max: float = _core.Sensor().d_max,
                resolution_deg: float = _core.Planning().resolution_deg,
                cache: Optional[VolumeCache] = None) -> OrbitRoom:
     """The VP of the ground ``point`` (x, y, z world) at world z = ``altitude`` and MaxRadius about

@@ -93,11 +93,12 @@ class CityLoiter:
         }
 
 
-def _street_point(scene: VisibilityScene, x: float, y: float, height: float) -> tuple[np.ndarray, bool]:
+def _street_point(scene: VisibilityScene, x: float, y: float, height: float) -> tuple[tuple[float, float, float], bool]:
     """The point ``height`` above the surface at (x, y), and whether it stands in the street: the
     surface there is the ground (not a roof) and the point is in no building."""
-    point = np.asarray(scene.poi_on_surface(np.array([[x, y, height]])))[0]
-    return point, not (point[2] > scene.ground_level + height + 0.5 or scene.inside_obstacle(point))
+    px, py, pz = (float(v) for v in np.asarray(scene.poi_on_surface(np.array([[x, y, height]])))[0])
+    street = not (pz > scene.ground_level + height + 0.5 or scene.inside_obstacle(np.array([px, py, pz])))
+    return (px, py, pz), street
 
 
 def aoi_rooms(scene: VisibilityScene, aois: np.ndarray, altitude: float, turn_radius: float,
