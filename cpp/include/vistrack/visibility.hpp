@@ -168,7 +168,11 @@ double mesh_volume(const TriangleMesh& mesh);
 // checksum of everything before it. Bump the version whenever the layout or the output of
 // visibility_volume changes, so stale cache files miss instead of being reused.
 // Version 4: near/far per grid corner (version 3 had them per cell, on rays of their own).
-inline constexpr std::uint32_t kVolumeFileVersion = 4;
+// Version 5: the same layout; the walls at the jumps are aimed at the occluder's edge (issue 35).
+// Version 4 files are still read (their walls were bisected); the cache's keys name version 5, so
+// a cache of version 4 files misses and recomputes.
+inline constexpr std::uint32_t kVolumeFileVersion = 5;
+inline constexpr std::uint32_t kOldestReadableVolumeFileVersion = 4;
 
 // Writes `vv` to `path` through a temporary file in the same folder renamed over `path`, so
 // readers see the old file or the whole new one, never half a file. Error naming the path when

@@ -197,9 +197,10 @@ std::optional<VisibilityVolume> read_volume_file(const std::string& path) {
   char magic[sizeof kMagic];
   payload.get_array(magic, sizeof magic);
   const auto version = payload.get<std::uint32_t>();
-  if (version != kVolumeFileVersion)
-    payload.fail("format version " + std::to_string(version) + ", this build reads version " +
-                 std::to_string(kVolumeFileVersion) + (version == 3 ? " (version 3 kept intervals per cell; recompute the VV)" : ""));
+  if (version < kOldestReadableVolumeFileVersion || version > kVolumeFileVersion)
+    payload.fail("format version " + std::to_string(version) + ", this build reads versions " +
+                 std::to_string(kOldestReadableVolumeFileVersion) + " to " + std::to_string(kVolumeFileVersion) +
+                 (version == 3 ? " (version 3 kept intervals per cell; recompute the VV)" : ""));
   std::uint64_t stored = 0;
   for (std::size_t b = 0; b < trailer; ++b)
     stored |= std::uint64_t(static_cast<unsigned char>(bytes[body + b])) << (8 * b);
