@@ -354,9 +354,10 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     edges.insert(EdgeMap::key(jumps[k].u, jumps[k].w), static_cast<std::int32_t>(k));
   }
 
-  // Bisection of the jumps from `first` on: kBisections rounds of rays, each keeping the half of
-  // the bracket with the larger gap (a jump keeps its gap, a smooth but steep r(w) loses half of it
-  // per round). A bracket whose gap falls to the confirmation level is smooth: it leaves the
+  // Locating the jumps from `first` on: rounds of one ray per bracket (aimed, see probe_of, else
+  // at its middle), each keeping the part of the bracket with the larger gap (a jump keeps its
+  // gap, a smooth but steep r(w) loses half of it per bisecting round), until the bracket is
+  // kBracketWidth wide. A bracket whose gap falls to the confirmation level is smooth: it leaves the
   // rounds early, and so does a settled one (little volume at stake). Both ends on one plane is no
   // jump: the ground seen at grazing angles changes fast but stays flat. With allow_split, an edge
   // whose middle ray differs from both ends is split there instead.
