@@ -40,9 +40,11 @@ def dense_check(planner: vt.OrbitPlanner, plan: vt.VisibilityOrbitPlan, scenario
     times = np.linspace(0.0, poi.duration, count)
     scene = planner.scene
     points = np.array([np.ravel(scene.poi_on_surface(np.ravel(poi.position(t)))) for t in times])
-    volumes = vt.visibility_volumes(scene, points, scenario.sensor.d_max, None, scenario.planning.resolution_deg)
-    truth = np.array([vt.max_inscribed_radius(vt.plane_visibility_polygon(vv, scenario.uav.altitude),
-                                              np.ravel(poi.position(t))[:2]) for vv, t in zip(volumes, times)])
+    truth = np.array([  # batches of 100 VVs (400 at once would pass visibility_volumes' memory budget)
+        vt.max_inscribed_radius(vt.plane_visibility_polygon(vv, scenario.uav.altitude), np.ravel(poi.position(t))[:2])
+        for start in range(0, count, 100)
+        for vv, t in zip(vt.visibility_volumes(scene, points[start:start + 100], scenario.sensor.d_max, None,
+                                               scenario.planning.resolution_deg), times[start:start + 100])])
     over = plan.radius_at(times) - truth
     outside = int((over > 1e-9).sum())
     if outside:
