@@ -2,7 +2,7 @@
 how many AOIs get a flyable circle inside their visibility polygon, and the share of each flyable
 AOI's loiter time its centre is in line of sight (brute-force Embree rays from the planned path).
 
-    VISTRACK_DATA=../shared/data python bench/loiter_city_random.py [layouts] [first_seed]
+    VISTRACK_BUILD_DIR=build/dev python3 bench/loiter_city_random.py [layouts] [first_seed]
 """
 
 from __future__ import annotations
@@ -14,11 +14,16 @@ from pathlib import Path
 
 import numpy as np
 
-import vistrack as vt
-from vistrack.loiter import Scenario
-from vistrack.loiter.city import plan_city, random_street_aois
+REPO = Path(__file__).resolve().parents[1]
+if os.environ.get("VISTRACK_BUILD_DIR"):
+    sys.path.insert(0, str(REPO / "tests" / "python"))
+    import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-DATA = Path(os.environ.get("VISTRACK_DATA", Path(__file__).resolve().parents[2] / "shared" / "data"))
+import vistrack as vt  # noqa: E402
+from vistrack.loiter import Scenario  # noqa: E402
+from vistrack.loiter.city import plan_city, random_street_aois  # noqa: E402
+
+DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
 
 
 def main() -> None:
