@@ -409,13 +409,10 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   auto bisect = [&](std::size_t first, bool allow_split) {
     const std::size_t end = jumps.size();
     sc.middle.resize(end - first);
-    auto run_block = [&](std::size_t begin, std::size_t stop) {
+    auto run_block = [&](std::size_t begin, std::size_t stop, JumpBlock& block) {
       FlushDenormals flush;
-      std::vector<std::int32_t> active;
-      std::vector<Vec3> direction;
-      std::vector<double> probe, mid_far;
-      std::vector<Surface> mid_surface;
-      std::vector<std::uint32_t> mid_triangle;
+      auto& [active, direction, probe, mid_far, mid_surface, mid_triangle] = block;
+      active.clear();
       for (std::size_t k = begin; k < stop; ++k) active.push_back(static_cast<std::int32_t>(k));
       for (int round = 0; round < kBisections + kMaxAimed && !active.empty(); ++round) {
         // The first round of a first pass probes the middles: a middle ray unlike both ends splits the edge.
@@ -472,9 +469,10 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       }
     };
     const std::size_t blocks = (end - first + kJumpBlock - 1) / kJumpBlock;
+    if (sc.blocks.size() < blocks) sc.blocks.resize(blocks);
     for_each_index(tracer.parallel && blocks > 1, static_cast<int>(blocks), [&](int b) {
       const std::size_t begin = first + static_cast<std::size_t>(b) * kJumpBlock;
-      run_block(begin, std::min(end, begin + kJumpBlock));
+      run_block(begin, std::min(end, begin + kJumpBlock), sc.blocks[static_cast<std::size_t>(b)]);
     });
     for (std::size_t k = first; k < end; ++k) {
       Jump& jump = jumps[k];

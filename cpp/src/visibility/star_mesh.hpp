@@ -61,6 +61,16 @@ struct Middle {
   std::uint32_t triangle = ~std::uint32_t{0};
 };
 
+// One block of jumps being located: its active jumps and this round's rays (directions, lambdas,
+// and what each found).
+struct JumpBlock {
+  std::vector<std::int32_t> active;
+  std::vector<Vec3> direction;
+  std::vector<double> probe, mid_far;
+  std::vector<Surface> mid_surface;
+  std::vector<std::uint32_t> mid_triangle;
+};
+
 // Buffers of one star mesh, kept between VVs so that a batch allocates them once.
 struct StarMeshScratch {
   std::vector<std::uint8_t> alive, slot_flags, candidate;
@@ -70,6 +80,7 @@ struct StarMeshScratch {
   EdgeMap edges;
   // The middle ray of each jump of a first pass that splits its edge (numbered after the pass).
   std::vector<Middle> middle;
+  std::vector<JumpBlock> blocks;  // one per block of jumps (each block is located by one thread)
   // Samples past the corners: midpoints of split edges.
   std::vector<Vec3> extra_direction;
   std::vector<double> extra_far;
