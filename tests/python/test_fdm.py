@@ -46,6 +46,8 @@ def test_trim_holds_straight_and_level_for_60_s_with_the_controls_frozen(name: s
     model = JsbsimModel(plane, (0.0, 0.0, 0.5), 300.0)
     found = trim(model, speed)
     assert found.residual < 1e-3
+    if plane.trim == "newton":  # the project's trim stops at 1e-3; docs/fdm.md claims below 1e-6
+        assert found.residual < 1e-6
     heights = []
     for _ in range(60):
         model.run(plane.rates.fdm_hz)  # one second, no autopilot: the trimmed commands alone

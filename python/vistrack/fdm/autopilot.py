@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 
+from .._core.flight import coordinated_bank
 from .aircraft import GRAVITY, Aircraft
 from .model import AircraftState
 from .trim import Trim
@@ -44,7 +45,7 @@ class Autopilot:
         """The Euler bank (rad, + right wing down) of the coordinated turn at ``turn_rate`` (rad/s, + to the
         left, counter-clockwise) at the commanded airspeed: the lift's bank mu = atan(v r / g), the body's
         phi = atan(tan(mu) / cos(alpha)) (level flight, no sideslip), within the bank limit."""
-        mu = math.atan(self.airspeed * turn_rate / GRAVITY)
+        mu = coordinated_bank(self.airspeed, turn_rate)
         phi = math.atan(math.tan(mu) / max(math.cos(alpha), 0.5))
         return -_clamp(phi, -self.max_bank, self.max_bank)
 

@@ -91,11 +91,6 @@ class FdmTrajectory:
         """Largest |airspeed - command|, m/s."""
         return float(np.max(np.abs(self.airspeed - self.speed)))
 
-    @property
-    def state(self) -> np.ndarray:
-        """(n, 3): x, y, psi."""
-        return np.column_stack([self.x, self.y, self.psi])
-
 
 def fly(guidance: Guidance, start: tuple[float, float, float], *, speed: float, altitude: float,
         duration: float, turn_radius: float, aircraft: str | Aircraft = "aerosonde", wind: Optional[Wind] = None,
@@ -134,7 +129,8 @@ def fly(guidance: Guidance, start: tuple[float, float, float], *, speed: float, 
     for k in range(n):  # s: the state after the previous guidance step's autopilot steps
         t = t0 + (s.t - sim_start)
         x, y, psi = s.x, s.y, s.psi
-        model.set_wind(float(winds[k, 0]), float(winds[k, 1]))
+        if wind is not None:  # calm air: start() set it, nothing changes
+            model.set_wind(float(winds[k, 0]), float(winds[k, 1]))
         rate = guidance.turn_rate(t, x, y, psi)
         bank_c = pilot.bank_command(rate, s.alpha)
         out[:, k] = (t, x, y, psi, s.altitude, s.airspeed, -s.phi, -bank_c, rate, 0.0, winds[k, 0], winds[k, 1],

@@ -65,7 +65,6 @@ class CityOrbitOptions:
     guidance: str = "field"
     lookahead: tuple[float, ...] = (3.0, 6.0)
     camera_reach: bool = False  # True: an off-centre circle only as far as the camera sees the vehicle from it
-    off_margin: float = 0.0  # m more kept for an off-centre circle (the UAV joins it late)
     l1_period: float = 12.0  # s, the L1 period flying the orbit (0: the flight's, FollowFlight.l1_period)
     grow: float = 1.0  # m per update the orbit's radius may grow by (it shrinks at once, to keep in its VP)
     choose: str = "predicted"  # where no circle fits about the vehicle: "predicted" (off-centre or about, by
@@ -351,7 +350,7 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
         else:
             previous = np.zeros(2) if last is None else np.array(last.shift)
             for size in (wanted, lemma6, turn):
-                found = common_shift(rooms, size + margin + options.off_margin, previous,
+                found = common_shift(rooms, size + margin, previous,
                                      reach=shift_reach(uav, camera, size) if options.camera_reach else math.inf)
                 if found is not None:
                     shift, radius = found, size

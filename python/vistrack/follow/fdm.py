@@ -17,7 +17,7 @@ from typing import Any, Optional, Sequence
 
 import numpy as np
 
-from .._core import Uav, VistrackError
+from .._core import Uav
 from .._core import follow as _follow
 from .._core.flight import CurveL1, Wind
 from ..fdm import FdmTrajectory, FlightGuidanceLaw, fly
@@ -88,6 +88,4 @@ def fly_follow_fdm(vehicle: Any, uav: Uav, parameters: Any, start: Sequence[floa
     in_view = np.array([_follow.camera_sees(camera, np.array([x, y, h]), psi, bank, np.array([g[0], g[1], 0.0]))
                         for x, y, h, psi, bank, g in zip(traj.x, traj.y, traj.altitude, traj.psi, traj.bank, where)],
                        dtype=bool)
-    if not len(in_view):
-        raise VistrackError("follow: the 6-DOF flight has no samples")
     return FollowFdm(traj, where, in_view)

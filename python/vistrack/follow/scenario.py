@@ -208,7 +208,7 @@ class FollowScenario:
             parameters = _with_compensation(parameters, compensation)
         if parameters.strategy == "auto" and parameters.standoff_radius == 0.0:
             # Auto's standoff candidate is the baseline's orbit: its constant radius (and its law, follow_run.cpp).
-            parameters = _with_compensation(parameters, parameters.wind_compensation)
+            parameters = copy.copy(parameters)  # not the scenario's own
             parameters.standoff_radius = self.baseline_radius or lemma6_radius(self.vehicle, self.uav, parameters)
         # Both followers get the same offset schedule and the same reports (a fair baseline).
         common: dict[str, Any] = {"wind": self.wind, "flight": self.flight, "camera": self.camera,

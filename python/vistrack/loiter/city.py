@@ -76,7 +76,11 @@ class CityLoiter:
     radius: Optional[float]
     runs: list[CityRun] = field(default_factory=list)
     refused: dict[str, str] = field(default_factory=dict)
-    volumes: int = 0
+
+    @property
+    def volumes(self) -> int:
+        """VVs computed: one per AOI."""
+        return len(self.rooms)
 
     @property
     def flyable(self) -> list[int]:
@@ -173,7 +177,7 @@ def plan_city(scenario: Scenario, methods: Sequence[str], env: Optional[Environm
     radius = loiter_radius(rooms, scenario.aoi_radius, scenario.turn_radius, margin)
     if scenario.off_centre if off_centre is None else off_centre:
         move_off_centre(rooms, radius, margin, max_shift)
-    result = CityLoiter(world, rooms, radius if any(r.flyable for r in rooms) else None, volumes=len(rooms))
+    result = CityLoiter(world, rooms, radius if any(r.flyable for r in rooms) else None)
     if result.radius is None:
         return result
     flyable = result.flyable

@@ -129,6 +129,6 @@ def fdm_flights(flights: Sequence[NavigationFlight], aircraft_name: str, wind: O
                            guidance=options["guidance"], l1_period=options["l1_period"], gains=options["gains"],
                            waypoint_radius=f.waypoint_radius, wind=wind,
                            wind_aware=bool(options.get("wind_aware", False)),
-                           replan_interval=float(options.get("replan_interval", 0.0)) if f.method == "dwn" else 0.0,
+                           replan_interval=float(options.get("replan_interval", 0.0)),  # DWN's only
                            dwn_tracking=str(options.get("dwn_tracking", "auto"))))
     return out
