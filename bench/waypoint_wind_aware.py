@@ -2,7 +2,7 @@
 said; L1 legs with the follow runs' L1 / R = 0.76): DWN (planned in still air, the paper's), DWN
 re-planning every 0.5 s (section 2.1's option), wind-aware DWN (turning points planned in the air
 mass), WN as printed, ArduPlane's WN (wn_passed_line), and wind-aware leg laws. Every waypoint
-counts: the last one's miss is measured where the flight ends, on its finish line. Prints three
+counts: the last one's miss is measured where the flight ends, on its finish line. Prints five
 markdown tables:
 
 1. the paper's route (examples/waypoints_paper.csv) without wind and in 0.1 v wind from the bottom
@@ -13,7 +13,10 @@ markdown tables:
    and median miss over every waypoint of every flight, flights that swirl;
 4. in metres (examples/waypoints_metres.csv, the default aircraft: 20 m/s, R 50 m, L1 period 8 s,
    law (5)'s gains scaled by 0.7 / R) on both vehicle models, DWN planned in still air and in the
-   air mass, wind of 0, 0.1 v and 0.3 v from 8 directions: the largest miss.
+   air mass, wind of 0, 0.1 v and 0.3 v from 8 directions: the largest miss;
+5. DWN on the roll model in metres (the default aircraft), 50 random routes each in a random wind
+   direction: the paper's law to the turning points against the planned path followed
+   (dwn_tracking "path"), calm, 0.1 v, 0.1 v wind-aware and 0.3 v wind-aware: largest and median miss.
 
     VISTRACK_BUILD_DIR=build/dev python3 bench/waypoint_wind_aware.py
 """

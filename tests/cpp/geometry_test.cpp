@@ -52,3 +52,12 @@ TEST(Geometry, SimplePolygons) {
 
 }  // namespace
 }  // namespace vistrack
+
+TEST(Geometry, PastFinishLineIsTheSignedDistanceAlongTheLeg) {
+  using vistrack::Vec2;
+  EXPECT_DOUBLE_EQ(vistrack::past_finish_line(Vec2(12, 3), Vec2(0, 0), Vec2(10, 0)), 2.0);
+  EXPECT_DOUBLE_EQ(vistrack::past_finish_line(Vec2(5, -7), Vec2(0, 0), Vec2(10, 0)), -5.0);
+  // Any direction: the leg (1, 1) -> (4, 5) has length 5; (4, 5) + 2 * (3, 4) / 5 + a sideways step.
+  EXPECT_NEAR(vistrack::past_finish_line(Vec2(4 + 1.2 - 4, 5 + 1.6 + 3), Vec2(1, 1), Vec2(4, 5)), 2.0, 1e-12);
+  EXPECT_EQ(vistrack::past_finish_line(Vec2(3, 3), Vec2(1, 1), Vec2(1, 1)), 0.0);  // no leg
+}

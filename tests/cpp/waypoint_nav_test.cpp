@@ -332,6 +332,9 @@ TEST(WaypointNavFlight, AirMassPlanningPassesEveryWaypointInWind) {
     for (const TurningPointRecord& r : aware.turning_points) {
       if (!r.direct) {
         EXPECT_GT((r.path.point - r.air_point).norm(), 0.0);
+        // By the air mass's drift until the vehicle gets there (arc and straight at the airspeed).
+        const Vec2 drifted = r.air_point + r.wind * ((r.path.first_arc + r.path.first_straight) / options.speed);
+        EXPECT_LT((drifted - r.path.point).norm(), 1e-9 * options.turn_radius);
       }
     }
   }

@@ -39,6 +39,9 @@ struct EnumNames<Circulation> {
 double wrap_to_pi(double angle);
 // Angle in [0, 2 pi); Error for a non-finite angle.
 double wrap_to_two_pi(double angle);
+// How far p lies past the finish line of the leg from -> to (the line through `to` perpendicular to
+// the leg), along the leg: > 0 past it. 0 for a leg of no length (its end is where it starts).
+double past_finish_line(const Vec2& p, const Vec2& from, const Vec2& to);
 
 // A closed ring of points; the last point is not a repeat of the first.
 using Ring = std::vector<Vec2>;

@@ -55,10 +55,7 @@ void WaypointFollower::update_acceptance() {
 }
 
 double WaypointFollower::past_finish_line(const Vec2& p) const {
-  const Vec2 leg = waypoints_[active_] - line_start_;
-  const double length = leg.norm();
-  if (length == 0.0) return 0.0;  // no leg: the waypoint is where the line starts
-  return (p - waypoints_[active_]).dot(leg) / length;
+  return vistrack::past_finish_line(p, line_start_, waypoints_[active_]);
 }
 
 void WaypointFollower::add_waypoint(const Vec2& point, double available_from) {

@@ -18,6 +18,12 @@ double wrap_to_pi(double angle) {
   return wrapped;
 }
 
+double past_finish_line(const Vec2& p, const Vec2& from, const Vec2& to) {
+  const Vec2 leg = to - from;
+  const double length = leg.norm();
+  return length > 0.0 ? (p - to).dot(leg) / length : 0.0;
+}
+
 double wrap_to_two_pi(double angle) {
   if (!std::isfinite(angle)) detail::fail_field("angle", angle, "must be a finite number of radians");
   double wrapped = std::fmod(angle, kTwoPi);

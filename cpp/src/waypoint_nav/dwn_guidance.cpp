@@ -54,10 +54,7 @@ void DubinsWaypointGuidance::set_path_following(const PathFollowingGains& gains,
 }
 
 double DubinsWaypointGuidance::past_finish_line(const Vec2& p) const {
-  const Vec2 leg = waypoints_.back() - leg_start_;
-  const double length = leg.norm();
-  if (length == 0.0) return (p - waypoints_.back()).norm() == 0.0 ? 0.0 : -1.0;
-  return (p - waypoints_.back()).dot(leg) / length;
+  return vistrack::past_finish_line(p, leg_start_, waypoints_.back());
 }
 
 void DubinsWaypointGuidance::follow(const Configuration& state, double t, const HorizonPath& air_path) {
@@ -88,18 +85,14 @@ void DubinsWaypointGuidance::plan(const Configuration& state, double t) {
       // The path followed so far ends along the last leg, unless its turning point was skipped as
       // unreachable: then the leg law flies straight to the last waypoint.
       if (skipped) follower_.reset();
-    } else if (wind_.norm() > 0.0) {
+    } else {
+      // In calm air the air mass is the ground: the same turning point as turning_point's, to the bit.
       HorizonPath air;
       record.path = air_mass_turning_point(state, waypoints_[active_], waypoints_[active_ + 1], turn_radius_,
                                            airspeed_, wind_, weights_, &air);
       record.air_point = air.point;
       air_line_start_ = air.line_start;
       follow(state, t, air);
-    } else {
-      record.path = turning_point(state, waypoints_[active_], waypoints_[active_ + 1], turn_radius_, weights_);
-      record.air_point = record.path.point;
-      air_line_start_ = record.path.line_start;
-      follow(state, t, record.path);
     }
     target_ = record.path.point;
     line_start_ = record.path.line_start;
@@ -160,17 +153,18 @@ void DubinsWaypointGuidance::advance(const Configuration& state, double t) {
     }
     return;
   }
-  if (unreachable(state, drifting_target(t), turn_radius_)) {
+  const Vec2 target = drifting_target(t);
+  if (unreachable(state, target, turn_radius_)) {
     ++active_;
     plan(state, t);
     return;
   }
+  if (!(replan_interval_ > 0.0 && t >= planned_at_ + replan_interval_ * (1.0 - 1e-9))) return;
   // Close to the turning point the horizon is ill-conditioned: the straight left to T_n is shorter
   // than a step's heading error can absorb, and the best path from a slightly deviated pose may be
   // a loop (seen re-planning every step in 0.3 v wind). Within 0.3 R of T_n (measured: from R on
   // the corrections for an unknown wind stop too early) the line to it is flown as planned.
-  const bool near = (drifting_target(t) - Vec2(state.x, state.y)).norm() <= 0.3 * turn_radius_;
-  if (replan_interval_ > 0.0 && !near && t >= planned_at_ + replan_interval_ * (1.0 - 1e-9)) {
+  if ((target - Vec2(state.x, state.y)).norm() > 0.3 * turn_radius_) {
     log_.pop_back();  // the active waypoint's turning point, planned again from here
     plan(state, t);
   }

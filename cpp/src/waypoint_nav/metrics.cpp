@@ -63,12 +63,11 @@ NavigationMetrics navigation_metrics(const FlightTrajectory& traj, const Vec2& s
   // from the previous waypoint's closest approach; without a crossing the closest approach stays.
   {
     const Vec2& w = waypoints.back();
-    const Vec2 leg = w - (m >= 2 ? waypoints[m - 2] : start);
-    const double length = leg.norm();
+    const Vec2 leg_start = m >= 2 ? waypoints[m - 2] : start;
     std::size_t i0 = 0;
     if (m >= 2) i0 = static_cast<std::size_t>(std::lower_bound(traj.t.begin(), traj.t.end(), out.closest_times[m - 2]) -
                                               traj.t.begin());
-    auto along = [&](std::size_t i) { return length > 0.0 ? (position(i) - w).dot(leg) / length : 0.0; };
+    auto along = [&](std::size_t i) { return past_finish_line(position(i), leg_start, w); };
     for (std::size_t i = std::min(i0, n - 1); i < n; ++i) {
       if (along(i) < 0.0) continue;
       Vec2 crossing = position(i);
