@@ -26,7 +26,7 @@ import numpy as np
 
 from . import _core
 from ._core import Environment, Polygon, VisibilityScene, VisibilityVolume, VistrackError
-from .visibility import visibility_scene, visibility_volume
+from .visibility import shapely_region, visibility_scene, visibility_volume
 
 __all__ = ["Circle", "OrbitRoom", "VolumeCache", "orbit_room", "slice_radius_bound"]
 
@@ -55,14 +55,12 @@ class OrbitRoom:
     max_radius: float
     _region: object = field(default=None, repr=False)
     _inner: dict[float, Any] = field(default_factory=dict, repr=False)
+    _boundary: object = field(default=None, repr=False)
 
     def region(self) -> object:
         """The VP as one shapely geometry (built once)."""
         if self._region is None:
-            import shapely  # a dependency of the package; imported here to keep `import vistrack` light
-
-            self._region = shapely.union_all([
-                shapely.Polygon(np.asarray(p.outer), [np.asarray(h) for h in p.holes]) for p in self.polygons])
+            self._region = shapely_region(self.polygons)
         return self._region
 
     def fits(self, centre: Sequence[float], radius: float) -> bool:
@@ -72,7 +70,9 @@ class OrbitRoom:
         real piece of :meth:`inner` from a GEOS sliver."""
         import shapely
 
-        boundary = self.region().boundary  # type: ignore[attr-defined]
+        if self._boundary is None:
+            self._boundary = self.region().boundary  # type: ignore[attr-defined]
+        boundary: Any = self._boundary
         return bool(boundary.distance(shapely.Point(float(centre[0]), float(centre[1]))) >= radius * (1.0 - 6e-3) - 0.1)
 
     def inner(self, radius: float) -> Any:

@@ -9,7 +9,7 @@ from __future__ import annotations
 import ctypes
 import math
 import sys
-from typing import Optional, Sequence, Tuple, Union
+from typing import Any, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -127,6 +127,13 @@ def poi_positions(scene: VisibilityScene, points: Optional[np.ndarray] = None, p
     return np.asarray(scene.poi_on_surface(chosen))
 
 
+def shapely_region(polygons: Sequence[_core.Polygon]) -> Any:
+    """A visibility polygon (its polygons with holes) as one shapely geometry."""
+    import shapely  # a dependency of the package; imported here to keep `import vistrack` light
+
+    return shapely.union_all([shapely.Polygon(np.asarray(p.outer), [np.asarray(h) for h in p.holes]) for p in polygons])
+
+
 def polygon_agreement(scene: VisibilityScene, vv: VisibilityVolume, altitude: float, step: float = 1.0) -> float:
     """How well the VP of ``vv`` at world z = ``altitude`` matches eq. (4) itself: the IoU of the
     polygon's area and the lattice points (spacing ``step`` m, offset from the POI's vertical,
@@ -137,8 +144,7 @@ def polygon_agreement(scene: VisibilityScene, vv: VisibilityVolume, altitude: fl
     if not (step > 0.0):
         raise _core.VistrackError(f"step = {step}: must be > 0")
     g = np.asarray(vv.poi, dtype=float)
-    region = shapely.union_all([shapely.Polygon(np.asarray(p.outer), [np.asarray(r) for r in p.holes])
-                                for p in _core.plane_visibility_polygon(vv, altitude)])
+    region = shapely_region(_core.plane_visibility_polygon(vv, altitude))
     offsets = np.arange(-vv.d_max, vv.d_max, step) + 0.37 * step
     x, y = np.meshgrid(g[0] + offsets, g[1] + offsets)
     points = np.stack([x.ravel(), y.ravel(), np.full(x.size, float(altitude))], axis=1)

@@ -414,3 +414,16 @@ def test_direction_grid_refuses_indices_out_of_range() -> None:
     refuses(lambda: grid.elevation(-1), "-1")
     refuses(lambda: grid.azimuth(10**9), "1000000000")
     assert math.isfinite(grid.elevation(0))
+
+
+def test_shapely_region_keeps_holes_and_joins_polygons() -> None:
+    import shapely
+
+    from vistrack.visibility import shapely_region
+
+    square = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]])
+    hole = np.array([[2.0, 2.0], [4.0, 2.0], [4.0, 4.0], [2.0, 4.0]])
+    region = shapely_region([vt.Polygon(square, [hole]), vt.Polygon(square + np.array([20.0, 0.0]))])
+    assert region.area == pytest.approx(100.0 - 4.0 + 100.0)
+    assert not region.contains(shapely.Point(3.0, 3.0))  # in the hole
+    assert shapely_region([]).is_empty
