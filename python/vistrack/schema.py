@@ -157,7 +157,10 @@ def resolve_path(base: Path, value: Any, key: str) -> Path:
     """A file path from a file, relative paths taken from the file's folder ``base``."""
     if not isinstance(value, (str, Path)) or not str(value):
         raise fail(key, value, "must be a file path")
-    path = Path(value).expanduser()
+    try:
+        path = Path(value).expanduser()
+    except RuntimeError:  # "~name/..." for a user this machine does not have
+        raise fail(key, value, "cannot be resolved (its '~' names no home directory here)") from None
     try:
         return (path if path.is_absolute() else base / path).resolve()
     except RuntimeError:  # Path.resolve's "Symlink loop" (an OSError from Python 3.13)

@@ -71,6 +71,16 @@ def test_symlink_loops_in_a_scenario_name_the_key(tmp_path: Path) -> None:
     refuses(lambda: Scenario.load(loop), "scenario", "symlink loop")
 
 
+def test_a_tilde_naming_no_home_directory_names_the_key(tmp_path: Path) -> None:
+    """Found by CI's fuzzer: ``~name/...`` for a user this machine does not have was Path.expanduser's
+    ``RuntimeError: Could not determine home directory``; now the one resolver names the key."""
+    from vistrack.scenario import Scenario
+
+    scenario = tmp_path / "tilde.yaml"
+    scenario.write_text('city: {mesh: "~no_such_user_vistrack/city.obj"}\n')
+    refuses(lambda: Scenario.load(scenario), "city.mesh", "no home directory")
+
+
 def test_input_files_must_be_regular_files(tmp_path: Path) -> None:
     """Issue 29: a FIFO blocked every reader forever and /dev/zero was read until memory ran out;
     every reader now refuses what is not a regular file before opening it, and files above
