@@ -74,6 +74,25 @@ def test_options_name_the_field() -> None:
         300.0 * math.tan(math.radians(37 + 25) - math.atan(21.0 ** 2 / (9.80665 * 50.0))))
 
 
+def test_scenario_files_set_the_options() -> None:
+    """A follow scenario's ``city_orbit`` block sets every CityOrbitOptions field by its name; a bad
+    value names the key."""
+    base = {"vehicle": {"legs": [{"heading": "south", "speed": 10, "duration": 60}]}}
+    assert FollowScenario.from_mapping(base, Path(".")).city_orbit == CityOrbitOptions()
+    block = {"grow": 2, "lookahead": [4, 8.5], "camera_reach": True, "radius": "max", "choose": "off_centre",
+             "margin": 5}
+    options = FollowScenario.from_mapping({**base, "city_orbit": block}, Path(".")).city_orbit
+    assert options == CityOrbitOptions(grow=2.0, lookahead=(4.0, 8.5), camera_reach=True, radius="max",
+                                       choose="off_centre", margin=5.0)
+    for bad, key, shown in (({"radius": "big"}, "city_orbit.radius", "big"), ({"grow": 0}, "city_orbit.grow", "0"),
+                            ({"lookahead": []}, "city_orbit.lookahead", "[]"),
+                            ({"lookahead": [3, "x"]}, "city_orbit.lookahead[1]", "x"),
+                            ({"camera_reach": 1}, "city_orbit.camera_reach", "1"),
+                            ({"margin": float("nan")}, "city_orbit.margin", "nan"),
+                            ({"guidance": 3}, "city_orbit.guidance", "3"), ({"lead2": 1}, "city_orbit.lead2", "")):
+        refuses(lambda bad=bad: FollowScenario.from_mapping({**base, "city_orbit": bad}, Path(".")), key, shown)
+
+
 def test_charlotte_stop_run_beats_the_baseline(charlotte: Path, tmp_path: Path) -> None:
     """examples/follow_stop_city.yaml: camera and line of sight together at least 10 points above
     the baseline's, a flyable visible circle at least 90 % of the time, at most one new VV per

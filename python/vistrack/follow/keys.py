@@ -1,17 +1,20 @@
 """Parsing of follow scenario keys: the vehicle's legs (headings as compass words or degrees),
-``follow.threshold`` ("auto" or h) and the ``reports`` block (the vehicle's 1 Hz reports as both
-followers get them)."""
+``follow.threshold`` ("auto" or h), the ``reports`` block (the vehicle's 1 Hz reports as both
+followers get them) and the ``city_orbit`` block (the city orbit's options)."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Any, Mapping
 
 from .._core import limits as _limits
-from ..schema import fail, number, positive, reject_unknown, section
+from ..schema import boolean, fail, number, positive, reject_unknown, section
+from .city_orbit import CityOrbitOptions
 from .simulation import VehicleLeg, VehicleReportOptions
 
-__all__ = ["HEADINGS", "REPORT_KEYS", "STRATEGIES", "reports_block", "threshold_value", "vehicle_legs"]
+__all__ = ["HEADINGS", "REPORT_KEYS", "STRATEGIES", "city_orbit_block", "reports_block", "threshold_value",
+           "vehicle_legs"]
 
 # Compass words as angles counter-clockwise from east (radians).
 HEADINGS = {name: math.radians(deg) for name, deg in (
@@ -46,6 +49,28 @@ def reports_block(data: Mapping[str, Any]) -> VehicleReportOptions:
     if "seed" in r:
         values["seed"] = int(number("reports.seed", r["seed"], low=0.0, high=2.0 ** 63))
     return VehicleReportOptions(**values)
+
+
+def city_orbit_block(data: Mapping[str, Any]) -> CityOrbitOptions:
+    """``city_orbit``: the city orbit's options, every field of ``CityOrbitOptions`` by its name
+    (lookahead a list of seconds); its ``validate`` names a bad value."""
+    options = CityOrbitOptions()
+    for key, value in section(data, "city_orbit", {f.name for f in dataclasses.fields(options)}).items():
+        name = f"city_orbit.{key}"
+        default = getattr(options, key)
+        if isinstance(default, bool):
+            value = boolean(name, value)
+        elif isinstance(default, float):
+            value = number(name, value)
+        elif key == "lookahead":
+            if not isinstance(value, list) or not value:
+                raise fail(name, value, "must be a non-empty list of times (s)")
+            value = tuple(number(f"{name}[{i}]", t) for i, t in enumerate(value))
+        elif not isinstance(value, str):
+            raise fail(name, value, "must be text")
+        setattr(options, key, value)
+    options.validate()
+    return options
 
 
 def _heading(key: str, leg: Mapping[str, Any]) -> float:

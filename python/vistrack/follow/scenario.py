@@ -30,6 +30,8 @@ counter-clockwise from east unless a compass word is given)::
                                   # the vehicle's 1 Hz reports as both followers get them (beyond the paper)
     city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude
                                   # (a CSV polyline; or vehicle.route on the city's road network)
+    city_orbit: {reach: 400, margin: 3, radius: lemma6, grow: 1, choose: predicted, lookahead: [3, 6]}
+                                  # the city orbit's options (vt.follow.city_orbit.CityOrbitOptions)
 
 uav, wind, camera, city and georeference are the blocks every scenario shares
 (:mod:`vistrack.scenario_blocks`).
@@ -66,10 +68,10 @@ from ..scenario_blocks import (
 )
 from ..schema import beta as schema_beta
 from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
-from .city_orbit import CityOrbitResult, city_orbit_follow
+from .city_orbit import CityOrbitOptions, CityOrbitResult, city_orbit_follow
 from .fdm import FollowFdm, fly_follow_fdm
 from .files import read_road_path, read_vehicle_track
-from .keys import HEADINGS, reports_block, threshold_value, vehicle_legs
+from .keys import HEADINGS, city_orbit_block, reports_block, threshold_value, vehicle_legs
 from .simulation import (
     DownwardCamera,
     FollowFlight,
@@ -94,7 +96,7 @@ __all__ = ["HEADINGS", "TOP_KEYS", "CityRoad", "FollowScenario", "FollowStudy"]
 # The follow camera's mounts (vt.follow.DownwardCamera.mount), the default first.
 CAMERA_MOUNTS = ("roll", "pan_tilt", "fixed")
 TOP_KEYS = {"description", "georeference", "uav", "vehicle", "follow", "offset", "wind", "wind_estimate", "camera",
-            "flight", "baseline", "city", "reports"}
+            "flight", "baseline", "city", "reports", "city_orbit"}
 # Spellings from before the one scenario schema, still read (city.map: see _old_city_map).
 RENAMES = (Rename("origin", "georeference", origin_to_georeference),)
 # How scenario files fly the plan unless they say: its planned path by L1 guidance (beyond the
@@ -124,6 +126,7 @@ class FollowScenario:
     baseline_control: Optional[Control] = field(default_factory=Control)  # None: no baseline
     reports: VehicleReportOptions = field(default_factory=VehicleReportOptions)
     city: Optional[City] = None
+    city_orbit: CityOrbitOptions = field(default_factory=CityOrbitOptions)
     route: Optional[dict[str, Any]] = None  # vehicle.route {from, to, crs}: the city run's road route
     description: str = ""
     path: Optional[Path] = None
@@ -170,6 +173,7 @@ class FollowScenario:
         return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
                    baseline_control=control, reports=reports_block(data), city=_city(data, base, route), route=route,
+                   city_orbit=city_orbit_block(data),
                    description=str(data.get("description", "")),
                    path=path, origin=georeference_block(data), aircraft=block.aircraft)
 
@@ -252,7 +256,8 @@ class FollowScenario:
             known = self.wind_estimate or ((self.wind.east, self.wind.north) if parameters.wind_compensation else None)
             # It observes the vehicle at each update itself, about the vehicle (no offset schedule).
             study.city_orbit = city_orbit_follow(vehicle, uav, scene, parameters=parameters, wind_estimate=known,
-                                                 wind=self.wind, flight=self.flight, camera=self.camera)
+                                                 wind=self.wind, flight=self.flight, camera=self.camera,
+                                                 options=self.city_orbit)
         return study
 
 
