@@ -414,6 +414,24 @@ void bind_waypoint_nav(py::module_& parent) {
       "roll model); returns NavigationResult. Releases the GIL.");
 
   m.def(
+      "navigation_guidance",
+      [](const InputArray& waypoints, const Pose& start, const WaypointNavOptions& options, std::optional<Wind> wind) {
+        return navigation_guidance(to_points(waypoints, "waypoints"), configuration(start), options,
+                                   wind.value_or(Wind{}));
+      },
+      py::arg("waypoints"), py::arg("start"), py::arg("options"), py::arg("wind") = py::none(),
+      "The guidance navigate() flies for these waypoints (n, 2) from start (x, y, psi) with these Options: a "
+      "DubinsWaypointGuidance or a WaypointFollower, for any vehicle that flies a FlightGuidance (vistrack.fdm's "
+      "aircraft too); wind: its constant part is known to the guidance when options.wind_aware.");
+  m.def(
+      "navigation_time_limit",
+      [](const InputArray& waypoints, const Pose& start, const WaypointNavOptions& options) {
+        return navigation_time_limit(to_points(waypoints, "waypoints"), configuration(start), options);
+      },
+      py::arg("waypoints"), py::arg("start"), py::arg("options"),
+      "navigate()'s time limit (s): options.max_time, else 3 (route length from start + 2 pi R per waypoint) / v.");
+
+  m.def(
       "navigation_metrics",
       [](const std::vector<double>& t, const std::vector<double>& x, const std::vector<double>& y,
          const std::vector<double>& command, const std::vector<int>& target_index, bool finished, const Vec2& start,

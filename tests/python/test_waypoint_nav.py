@@ -508,3 +508,33 @@ def test_wind_aware_legs_steer_the_course_and_miss_less(route: np.ndarray) -> No
     np.testing.assert_allclose(calm_aware.trajectory, calm.trajectory, atol=1e-9)
     with pytest.raises(VistrackError, match="wind"):
         wn.fly(route, wind=vt.flight.Wind(east=0.9), wind_aware=True)
+
+
+def test_navigation_guidance_is_what_navigate_flies(route: np.ndarray) -> None:
+    """navigation_guidance (the guidance a 6-DOF aircraft flies, vistrack.waypoint_nav.fdm) flown by
+    vistrack.flight.fly gives navigate()'s flight to the bit, for DWN and WN, each leg law, with a
+    wind-aware DWN; navigation_time_limit is navigate()'s limit; WN refuses DWN's re-planning."""
+    from vistrack._core import waypoint_nav as core
+
+    pose, flown = (float(route[0, 0]), float(route[0, 1]), 0.3), route[1:]
+    wind = vt.flight.Wind(east=0.1, north=-0.05)
+    for kwargs, kind in (({"method": "dwn"}, core.DubinsWaypointGuidance),
+                         ({"method": "dwn", "guidance": "l1", "wind_aware": True}, core.DubinsWaypointGuidance),
+                         ({"method": "wn", "waypoint_radius": 0.2}, vt.flight.WaypointFollower),
+                         ({"method": "wn_passed_line", "guidance": "l1"}, vt.flight.WaypointFollower)):
+        options = core.Options(**kwargs)
+        guidance = core.navigation_guidance(flown, pose, options, wind)
+        assert isinstance(guidance, kind)
+        limit = core.navigation_time_limit(flown, pose, options)
+        expected = core.navigate(flown, pose, wind=wind, **kwargs)
+        assert limit == expected.max_time
+        flight = vt.flight.fly(guidance, pose, options.speed, options.turn_radius, wind=wind, dt=options.dt,
+                               max_time=limit)
+        assert np.array_equal(flight.x, expected.trajectory.x) and np.array_equal(flight.y, expected.trajectory.y)
+    length = np.linalg.norm(flown[0] - route[0]) + np.linalg.norm(np.diff(flown, axis=0), axis=1).sum()
+    assert core.navigation_time_limit(flown, pose, core.Options()) == pytest.approx(
+        3 * (length + 2 * math.pi * 0.7 * len(flown)) / 0.8, rel=1e-12)
+    assert core.navigation_time_limit(flown, pose, core.Options(max_time=12.5)) == 12.5
+    refuses(lambda: core.navigation_guidance(flown, pose, core.Options(method="wn", replan_interval=5.0)),
+            "replan_interval")
+    refuses(lambda: core.navigation_guidance(flown[:0], pose, core.Options()), "waypoints")

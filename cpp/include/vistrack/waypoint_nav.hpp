@@ -32,6 +32,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -257,5 +258,17 @@ struct NavigationResult {
 // with v dt / R <= pi/2, wind below the airspeed.
 NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuration& start,
                           const WaypointNavOptions& options, const Wind& wind = {});
+
+// The guidance navigate() flies, for any vehicle that flies a FlightGuidance (the 6-DOF aircraft
+// too): DWN (DubinsWaypointGuidance) or WN (WaypointFollower, R_WP = waypoint_radius or R; past-line
+// switching for wn_passed_line), each leg by the law (5) (its sign smoothed when the integration is
+// continuous) or L1; with wind_aware the leg law, and DWN's planning, know `wind`'s constant part;
+// DWN re-plans and follows its paths as the options say. Every flight ends past the last
+// waypoint's line. Validates as navigate() does.
+std::unique_ptr<FlightGuidance> navigation_guidance(const std::vector<Vec2>& waypoints, const Configuration& start,
+                                                    const WaypointNavOptions& options, const Wind& wind = {});
+// navigate()'s time limit: options.max_time, else 3 (route length from start + 2 pi R per waypoint) / v.
+double navigation_time_limit(const std::vector<Vec2>& waypoints, const Configuration& start,
+                             const WaypointNavOptions& options);
 
 }  // namespace vistrack

@@ -27,19 +27,11 @@ void validate_route(const std::vector<Vec2>& waypoints, const Configuration& sta
 
 }  // namespace
 
-NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuration& start,
-                          const WaypointNavOptions& options, const Wind& wind) {
+std::unique_ptr<FlightGuidance> navigation_guidance(const std::vector<Vec2>& waypoints, const Configuration& start,
+                                                    const WaypointNavOptions& options, const Wind& wind) {
   options.validate();  // the wind is checked by fly(), against the airspeed
   const double R = options.turn_radius;
   validate_route(waypoints, start, R);
-
-  NavigationResult result;
-  result.method = options.method;
-  double route = (waypoints.front() - Vec2(start.x, start.y)).norm();
-  for (std::size_t k = 1; k < waypoints.size(); ++k) route += (waypoints[k] - waypoints[k - 1]).norm();
-  result.max_time = options.max_time.value_or(
-      3.0 * (route + kTwoPi * R * static_cast<double>(waypoints.size())) / options.speed);
-
   // Continuous flight smooths sign(phi_T) (see LineFeedback).
   LineFeedback law5(options.speed, R, options.dt, options.gains, options.integration == FlightIntegration::Continuous);
   L1Line l1(options.speed, options.l1);
@@ -48,13 +40,10 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
     law5.set_wind(mean);
     l1.set_wind(mean);
   }
-  std::unique_ptr<FlightGuidance> guidance;
-  DubinsWaypointGuidance* dwn = nullptr;
+  const bool by_l1 = options.guidance == LegGuidance::L1;
   if (options.method == NavigationMethod::Dubins) {
-    auto g = options.guidance == LegGuidance::L1
-                 ? std::make_unique<DubinsWaypointGuidance>(l1, waypoints, R, options.weights)
-                 : std::make_unique<DubinsWaypointGuidance>(law5, waypoints, R, options.weights);
-    dwn = g.get();
+    auto dwn = by_l1 ? std::make_unique<DubinsWaypointGuidance>(l1, waypoints, R, options.weights)
+                     : std::make_unique<DubinsWaypointGuidance>(law5, waypoints, R, options.weights);
     if (options.wind_aware) dwn->set_wind(Vec2(wind.east, wind.north), options.speed);
     dwn->set_replan_interval(options.replan_interval);
     if (options.resolved_tracking() == DwnTracking::Path) {
@@ -62,25 +51,39 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
       gains.anticipation = options.path_anticipation.value_or(options.roll_lag());
       dwn->set_path_following(gains, options.speed);
     }
-    guidance = std::move(g);
-  } else {
-    result.waypoint_radius = options.waypoint_radius.value_or(R);
-    auto follower = options.guidance == LegGuidance::L1
-                        ? std::make_unique<WaypointFollower>(l1, waypoints, result.waypoint_radius)
-                        : std::make_unique<WaypointFollower>(law5, waypoints, result.waypoint_radius);
-    follower->set_passed_line(options.method == NavigationMethod::PassedLine);
-    follower->set_finish_line(true);  // the flight ends past the last waypoint's line, as DWN's
-    guidance = std::move(follower);
+    return dwn;
   }
-  const Uav vehicle = options.vehicle();
+  const double acceptance = options.waypoint_radius.value_or(R);
+  auto follower = by_l1 ? std::make_unique<WaypointFollower>(l1, waypoints, acceptance)
+                        : std::make_unique<WaypointFollower>(law5, waypoints, acceptance);
+  follower->set_passed_line(options.method == NavigationMethod::PassedLine);
+  follower->set_finish_line(true);  // the flight ends past the last waypoint's line, as DWN's
+  return follower;
+}
+
+double navigation_time_limit(const std::vector<Vec2>& waypoints, const Configuration& start,
+                             const WaypointNavOptions& options) {
+  if (options.max_time) return *options.max_time;
+  double route = waypoints.empty() ? 0.0 : (waypoints.front() - Vec2(start.x, start.y)).norm();
+  for (std::size_t k = 1; k < waypoints.size(); ++k) route += (waypoints[k] - waypoints[k - 1]).norm();
+  return 3.0 * (route + kTwoPi * options.turn_radius * static_cast<double>(waypoints.size())) / options.speed;
+}
+
+NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuration& start,
+                          const WaypointNavOptions& options, const Wind& wind) {
+  const std::unique_ptr<FlightGuidance> guidance = navigation_guidance(waypoints, start, options, wind);
+  NavigationResult result;
+  result.method = options.method;
+  if (options.method != NavigationMethod::Dubins) result.waypoint_radius = options.waypoint_radius.value_or(options.turn_radius);
+  result.max_time = navigation_time_limit(waypoints, start, options);
   FlightOptions flight;
   flight.integration = options.integration;
   flight.dt = options.dt;
   flight.max_time = result.max_time;
-  result.trajectory = fly(vehicle, wind, *guidance, start, flight);
-  if (dwn) result.turning_points = dwn->turning_points();
-  result.metrics = navigation_metrics(result.trajectory, Vec2(start.x, start.y), waypoints, options.speed, R,
-                                      options.weights);
+  result.trajectory = fly(options.vehicle(), wind, *guidance, start, flight);
+  if (const auto* dwn = dynamic_cast<const DubinsWaypointGuidance*>(guidance.get())) result.turning_points = dwn->turning_points();
+  result.metrics = navigation_metrics(result.trajectory, Vec2(start.x, start.y), waypoints, options.speed,
+                                      options.turn_radius, options.weights);
   return result;
 }
 

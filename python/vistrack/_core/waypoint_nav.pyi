@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core.flight
-__all__: list[str] = ['CASES', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'Options', 'TurningPoint', 'TurningPointRecord', 'TurningPoints', 'air_mass_turning_point', 'horizon_lengths', 'horizon_path', 'navigate', 'navigation_metrics', 'reachability', 'turning_point', 'turning_points']
+__all__: list[str] = ['CASES', 'DubinsWaypointGuidance', 'HorizonPath', 'NavigationResult', 'Options', 'TurningPoint', 'TurningPointRecord', 'TurningPoints', 'air_mass_turning_point', 'horizon_lengths', 'horizon_path', 'navigate', 'navigation_guidance', 'navigation_metrics', 'navigation_time_limit', 'reachability', 'turning_point', 'turning_points']
 class HorizonPath:
     """
     The horizon path C -> arc -> straight -> T_n -> arc through W_n -> straight -> W_{n+1}.
@@ -464,9 +464,17 @@ def navigate(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64],
     """
     Fly every waypoint (n, 2) in order from start (x, y, psi) with 'dwn' or 'wn' on the 'dubins' or 'roll' vehicle, each leg by 'law5' or 'l1' (DWN: or its planned path followed, dwn_tracking 'path'; 'auto': on the roll model); returns NavigationResult. Releases the GIL.
     """
+def navigation_guidance(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], options: Options, wind: vistrack._core.flight.Wind | None = None) -> vistrack._core.flight.FlightGuidance:
+    """
+    The guidance navigate() flies for these waypoints (n, 2) from start (x, y, psi) with these Options: a DubinsWaypointGuidance or a WaypointFollower, for any vehicle that flies a FlightGuidance (vistrack.fdm's aircraft too); wind: its constant part is known to the guidance when options.wind_aware.
+    """
 def navigation_metrics(t: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], x: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], y: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], command: collections.abc.Sequence[typing.SupportsFloat | typing.SupportsIndex], target_index: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex], finished: bool, start: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], speed: typing.SupportsFloat | typing.SupportsIndex, turn_radius: typing.SupportsFloat | typing.SupportsIndex, weights: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] = (1.0, 1.0)) -> dict:
     """
     The metrics of navigate() (miss distances, reached, over- and undershoot, swirls, path length, duration, fuel) of a flight flown elsewhere (vistrack.fdm): samples t, x, y, the turn-rate command and the guidance's target index, as a dict.
+    """
+def navigation_time_limit(waypoints: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], start: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], options: Options) -> float:
+    """
+    navigate()'s time limit (s): options.max_time, else 3 (route length from start + 2 pi R per waypoint) / v.
     """
 def reachability(pose: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex], points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 2]"], turn_radius: typing.SupportsFloat | typing.SupportsIndex) -> numpy.typing.NDArray[numpy.float64]:
     """

@@ -14,9 +14,8 @@ from typing import Any, Optional, Sequence
 
 import numpy as np
 
-from .._core import VistrackError
 from .._core import waypoint_nav as _wn
-from .._core.flight import L1Line, LineFeedback, WaypointFollower, Wind, paper_gains
+from .._core.flight import Wind, paper_gains
 from ..fdm import FdmTrajectory, FlightGuidanceLaw, aircraft, fly
 from .navigation import NavigationFlight, Points, default_start, flight_scores, route_array
 
@@ -72,49 +71,31 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
     ``replan_interval``: DWN re-plans that often (s; 0: the paper's switch). ``dwn_tracking`` (beyond the
     paper) "path" ("auto", the default: an aircraft banks) follows each planned horizon path in closed loop
     (``DubinsWaypointGuidance.set_path_following``), its curvature read ``path_anticipation`` s ahead (None:
-    ``roll_lead(speed, turn_radius)``); "paper": the leg law to each turning point."""
+    ``roll_lead(speed, turn_radius)``); "paper": the leg law to each turning point. ``replan_interval`` and
+    ``dwn_tracking`` "path" are DWN's: a WN flight refuses them, as navigate() does."""
     route = route_array(waypoints)
     if start is None:
         pose, flown = default_start(route), route[1:]
     else:
         pose, flown = (float(start[0]), float(start[1]), float(start[2])), route
     plane = aircraft(aircraft_name)  # fly() refuses a plan outside its envelope before flying
-    if guidance == "l1":
-        law: Any = L1Line(speed, period=l1_period)
-    elif guidance == "law5":
-        law = LineFeedback(speed, turn_radius, 1.0 / plane.rates.guidance_hz,
-                           gains if gains is not None else paper_gains(turn_radius), smooth_sign=True)
-    else:
-        raise VistrackError(f"guidance = {guidance!r}: must be 'l1' or 'law5'")
-    if wind_aware and wind is not None:
-        law.set_wind(np.array([wind.east, wind.north]))
-    acceptance = waypoint_radius if waypoint_radius is not None else turn_radius  # WN's R_WP
-    if method == "dwn":  # as navigate(): planned in the air mass when wind-aware, re-planned if asked
-        planner: Any = _wn.DubinsWaypointGuidance(law, flown, turn_radius, weights)
-        if wind_aware and wind is not None:
-            planner.set_wind(np.array([wind.east, wind.north]), speed)
-        planner.replan_interval = replan_interval
-        if dwn_tracking in ("auto", "path"):
-            lead = path_anticipation if path_anticipation is not None else roll_lead(speed, turn_radius)
-            planner.set_path_following(speed, lead)
-        elif dwn_tracking != "paper":
-            raise VistrackError(f"dwn_tracking = {dwn_tracking!r}: must be 'auto', 'paper' or 'path'")
-    elif method in ("wn", "wn_passed_line"):
-        planner = WaypointFollower(law, flown, acceptance)
-        planner.passed_line = method == "wn_passed_line"
-        planner.finish_line = True  # as navigate(): the flight ends past the last waypoint's line
-    else:
-        raise VistrackError(f"method = {method!r}: must be 'dwn', 'wn' or 'wn_passed_line' for a 6-DOF flight")
-    points = np.vstack([np.asarray(pose[:2]), flown])
-    length = float(np.sum(np.linalg.norm(np.diff(points, axis=0), axis=1)))
-    limit = max_time if max_time is not None else 3.0 * (length + 2 * np.pi * turn_radius * len(flown)) / speed
+    # navigate()'s own guidance (C++ navigation_guidance), on the aircraft's guidance period; the law (5)'s
+    # sign smoothed as in a continuous flight, and DWN "auto" following its paths with the roll model's lead.
+    options = _wn.Options(method=method, turn_radius=turn_radius, speed=speed, dt=1.0 / plane.rates.guidance_hz,
+                          gains=gains if gains is not None else paper_gains(turn_radius),
+                          waypoint_radius=waypoint_radius, weights=weights, integration="continuous",
+                          max_time=max_time, dynamics="roll", guidance=guidance, l1_period=l1_period,
+                          wind_aware=wind_aware and wind is not None, replan_interval=replan_interval,
+                          dwn_tracking=dwn_tracking, path_anticipation=path_anticipation)
+    planner = _wn.navigation_guidance(flown, pose, options, wind)
+    limit = _wn.navigation_time_limit(flown, pose, options)
     traj = fly(FlightGuidanceLaw(planner, pose), pose, speed=speed, altitude=altitude, duration=limit,
                turn_radius=turn_radius, aircraft=plane, wind=wind)
     metrics = _wn.navigation_metrics(list(traj.t), list(traj.x), list(traj.y), list(traj.turn_rate_command),
                                      [int(i) for i in traj.target_index], traj.finished, np.asarray(pose[:2]),
                                      flown, speed, turn_radius, weights)
-    return FdmNavigation(method, None if method == "dwn" else acceptance, float(turn_radius), pose, flown, traj,
-                         dict(metrics))
+    acceptance = None if method == "dwn" else (waypoint_radius if waypoint_radius is not None else turn_radius)
+    return FdmNavigation(method, acceptance, float(turn_radius), pose, flown, traj, dict(metrics))
 
 
 def fdm_flights(flights: Sequence[NavigationFlight], aircraft_name: str, wind: Optional[Wind], altitude: float,
@@ -124,11 +105,12 @@ def fdm_flights(flights: Sequence[NavigationFlight], aircraft_name: str, wind: O
     kinematic flights had)."""
     out = []
     for f in flights:
+        dwn = f.method == "dwn"  # re-planning and the tracking choice are DWN's only
         out.append(fly_fdm(f.waypoints, f.start, method=f.method, turn_radius=f.turn_radius,
                            speed=options["speed"], altitude=altitude, aircraft_name=aircraft_name,
                            guidance=options["guidance"], l1_period=options["l1_period"], gains=options["gains"],
                            waypoint_radius=f.waypoint_radius, wind=wind,
                            wind_aware=bool(options.get("wind_aware", False)),
-                           replan_interval=float(options.get("replan_interval", 0.0)),  # DWN's only
-                           dwn_tracking=str(options.get("dwn_tracking", "auto"))))
+                           replan_interval=float(options.get("replan_interval", 0.0)) if dwn else 0.0,
+                           dwn_tracking=str(options.get("dwn_tracking", "auto")) if dwn else "auto"))
     return out
