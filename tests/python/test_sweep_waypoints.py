@@ -99,3 +99,24 @@ def test_units_may_vary_as_a_parameter() -> None:
     assert rows[0]["run_status"] == "ok" and rows[0]["max_miss_over_R"] == wn.fly(read_route(PAPER)).metrics()[
         "max_miss_over_R"]
     assert rows[1]["run_status"] == "failed" and "set units: paper" in rows[1]["run_error"]
+
+
+def test_the_units_rules_the_command_and_the_sweep_share() -> None:
+    """vistrack.waypoint_nav.units: each unit system's vehicle, leg law and gains, and the route scale
+    check at its edges (a longest leg of exactly 2 R in metres, or 100 R in the paper's units, fits)."""
+    from vistrack.waypoint_nav.units import ALTITUDE, leg_gains, leg_guidance, route_scale_error, units_uav
+
+    paper, metres = units_uav(True), units_uav(False)
+    assert (paper.speed, paper.min_turn_radius) == (wn.DEFAULTS["speed"], wn.DEFAULTS["turn_radius"])
+    assert (metres.speed, metres.min_turn_radius, metres.altitude) == (vt.Uav().speed, vt.Uav().min_turn_radius,
+                                                                       ALTITUDE)
+    assert leg_gains(True, 0.7) == tuple(wn.DEFAULTS["gains"]) and leg_gains(False, 50.0) == vt.flight.paper_gains(50.0)
+    assert (leg_guidance(True), leg_guidance(False)) == ("law5", "l1")
+    R = 50.0
+    for longest, fits in ((2.0 * R, True), (2.0 * R - 1e-9, False)):
+        route = np.array([[0.0, 0.0], [0.5 * R, 0.0], [0.5 * R, longest]])
+        assert (route_scale_error(route, R, paper=False) is None) == fits
+    for longest, fits in ((100.0 * 0.7, True), (100.0 * 0.7 + 1e-9, False)):
+        route = np.array([[0.0, 0.0], [longest, 0.0]])
+        assert (route_scale_error(route, 0.7, paper=True) is None) == fits
+    assert "under 2 R = 100 m" in str(route_scale_error(np.array([[0.0, 0.0], [60.0, 0.0]]), R, paper=False))

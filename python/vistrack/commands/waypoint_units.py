@@ -10,13 +10,11 @@ from typing import Any
 
 import numpy as np
 
-from .. import waypoint_nav as wn
 from .._core import Uav
-from ..flight import paper_gains
+from ..waypoint_nav.units import ALTITUDE, L1_PERIOD, leg_gains, leg_guidance, route_scale_error, units_uav
 from .types import UsageError, fdm_choice, number
 
-# The follow runs' L1 period (FollowFlight.l1): L1 = 0.75 * 8 * v / pi = 38 m at 20 m/s, under R = 50 m.
-L1_PERIOD = 8.0
+__all__ = ["ALTITUDE", "L1_PERIOD", "add_dwn_arguments", "fdm_aircraft", "flight_options"]
 
 
 def add_dwn_arguments(parser: argparse.ArgumentParser) -> None:
@@ -32,10 +30,10 @@ def add_dwn_arguments(parser: argparse.ArgumentParser) -> None:
 def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any]:
     """The keyword arguments of :func:`wn.fly` the flags ask for, in metres or the paper's units,
     after checking that the route's scale fits them (UsageError before any output)."""
-    d = wn.DEFAULTS
     paper = args.paper_units
-    R = args.turn_radius if args.turn_radius is not None else (d["turn_radius"] if paper else Uav().min_turn_radius)
-    v = args.speed if args.speed is not None else (d["speed"] if paper else Uav().speed)
+    units = units_uav(paper)
+    R = args.turn_radius if args.turn_radius is not None else units.min_turn_radius
+    v = args.speed if args.speed is not None else units.speed
     dynamics = fdm_choice(args)[0] or ("dubins" if paper else "roll")
     if getattr(args, "method", "dwn") not in ("dwn", "both", "all"):
         for flag, value, default in (("--replan-interval", args.replan_interval, 0.0),
@@ -47,17 +45,13 @@ def flight_options(args: argparse.Namespace, route: np.ndarray) -> dict[str, Any
         # The roll model needs g in m/s^2; the paper's units are dimensionless.
         raise UsageError(f"--dynamics = {dynamics}: the waypoint paper's dimensionless units (--paper-units) fly the "
                          "Dubins vehicle only (the roll model needs a route in metres)")
-    longest = float(np.max(np.linalg.norm(np.diff(route, axis=0), axis=1)))
-    if not paper and longest < 2.0 * R:
-        raise UsageError(f"ROUTE = {args.route}: its longest leg is {longest:.4g} m, under 2 R = {2 * R:.4g} m: "
-                         "a route in the paper's units? pass --paper-units")
-    if paper and longest > 100.0 * R:
-        raise UsageError(f"ROUTE = {args.route}: its longest leg is {longest:.4g} = {longest / R:.4g} R with "
-                         f"--paper-units (R = {R:g}): a route in metres? drop --paper-units")
-    gains = tuple(args.gains) if args.gains is not None else (tuple(d["gains"]) if paper else paper_gains(R))
+    if (problem := route_scale_error(route, R, paper)) is not None:
+        switch = "drop --paper-units" if paper else "pass --paper-units"
+        raise UsageError(f"ROUTE = {args.route}: {problem} {switch}")
+    gains = tuple(args.gains) if args.gains is not None else leg_gains(paper, R)
     return {"turn_radius": R, "speed": v, "dt": args.dt, "integration": args.integration, "gains": gains,
             "dynamics": dynamics, "roll_time_constant": Uav().roll_time_constant,
-            "max_roll_rate_deg_s": Uav().max_roll_rate_deg_s, "guidance": args.guidance or ("law5" if paper else "l1"),
+            "max_roll_rate_deg_s": Uav().max_roll_rate_deg_s, "guidance": args.guidance or leg_guidance(paper),
             "l1_period": args.l1_period, "wind_aware": args.wind_aware,
             "replan_interval": args.replan_interval, "dwn_tracking": getattr(args, "dwn_tracking", "auto")}
 

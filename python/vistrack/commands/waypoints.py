@@ -25,7 +25,7 @@ from .export import add_export_arguments, check_exports, export_mission
 from .lists import finite_numbers, positive_numbers
 from .output import add_report_arguments, output_folder, report_options
 from .types import add_dynamics_argument, coordinate, count, length, number, speed
-from .waypoint_units import L1_PERIOD, add_dwn_arguments, fdm_aircraft, flight_options
+from .waypoint_units import ALTITUDE, L1_PERIOD, add_dwn_arguments, fdm_aircraft, flight_options
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -68,8 +68,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     parser.add_argument("--seed", type=count("--seed", 0, 2**63 - 1), default=0, help="Monte Carlo seed (default 0)")
     parser.add_argument("--monte-carlo-wind", type=finite_numbers("--monte-carlo-wind", 2, "0,0.2"),
                         default=[0.0, 0.2], help="Monte Carlo wind speeds, fractions of v (default 0,0.2)")
-    parser.add_argument("--altitude", type=coordinate("--altitude"), default=60.0,
-                        help="flight altitude for --export and the gusts in metres, m (default 60)")
+    parser.add_argument("--altitude", type=coordinate("--altitude"), default=ALTITUDE,
+                        help=f"flight altitude for --export and the gusts in metres, m (default {ALTITUDE:g})")
     add_export_arguments(parser)
     add_report_arguments(parser)
     add_dynamics_argument(parser, None, fdm=True)

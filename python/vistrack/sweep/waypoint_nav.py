@@ -56,11 +56,11 @@ from typing import Any, Mapping, Optional
 import numpy as np
 
 from .. import waypoint_nav as wn
-from .._core import Uav
-from ..flight import Wind, paper_gains
+from ..flight import Wind
 from ..io import read_route
 from ..scenario_blocks import Rename, uav_block, wind_block
 from ..schema import fail, integer, number, pair, positive, reject_unknown, resolve_path
+from ..waypoint_nav.units import L1_PERIOD, leg_gains, leg_guidance, route_scale_error, units_uav
 from .kinds import (
     CaseContext,
     CaseKind,
@@ -80,10 +80,6 @@ _SETTINGS = ("units", "start", "method", "waypoint_radius", "uav", "dt", "gains"
              "wind", "guidance", "l1_period", "wind_aware", "replan_interval")
 _UAV = ("speed", "min_turn_radius", "altitude", "dynamics")
 _UNITS = ("metres", "paper")
-# The metres defaults of ``vistrack waypoints`` (commands/waypoint_units.py): the follow runs' L1
-# period and the command's --altitude.
-_L1_PERIOD = 8.0
-_ALTITUDE = 60.0
 _WIND = ("east", "north", "gusts")
 _GUSTS = ("seed", "intensity", "length_scale")
 _RANDOM = ("count", "legs", "seed")
@@ -109,11 +105,11 @@ def _defaults(data: Mapping[str, Any], folder: Path) -> dict[str, Any]:
     if units not in _UNITS:
         raise fail("units", units, 'must be "metres" or "paper"')
     d, calm = wn.Options(), Wind()
-    # uav: the units' defaults fill it when a case flies (_units_uav), so that units may vary too.
+    # uav: the units' defaults fill it when a case flies (units_uav), so that units may vary too.
     full: dict[str, Any] = {"units": units, "start": None, "method": d.method, "waypoint_radius": None, "uav": {},
                             "dt": d.dt, "gains": None, "weights": list(d.weights), "integration": d.integration,
                             "max_time": None, "wind": {"east": calm.east, "north": calm.north, "gusts": None},
-                            "guidance": None, "l1_period": _L1_PERIOD, "wind_aware": False,
+                            "guidance": None, "l1_period": L1_PERIOD, "wind_aware": False,
                             "replan_interval": d.replan_interval}
     overlay(full, {k: v for k, v in data.items() if k in _SETTINGS})  # a block given in part keeps the rest
     sources = [k for k in _SOURCES if data.get(k) is not None]
@@ -170,25 +166,13 @@ def _wind(value: Any, seed: int, model: Optional[dict[str, float]]) -> Wind:
     return wind_block({"wind": wind})
 
 
-def _units_uav(paper: bool) -> Uav:
-    """The vehicle of the units: the paper's section 3 (R 0.7, v 0.8), or in metres the default
-    aircraft at the command's --altitude (which places the gusts)."""
-    if paper:
-        d = wn.Options()
-        return Uav(speed=d.speed, min_turn_radius=d.turn_radius)
-    uav = Uav()
-    uav.altitude = _ALTITUDE
-    return uav
-
-
 def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np.ndarray, dict[str, Any]]:
     """The route and fly()'s keyword arguments, validated (errors name the key and the value)."""
     units = data.get("units", "metres")
     if units not in _UNITS:
         raise fail("units", units, 'must be "metres" or "paper"')
     paper = units == "paper"
-    defaults = wn.Options()
-    uav = uav_block(data, _units_uav(paper)).uav
+    uav = uav_block(data, units_uav(paper)).uav
     given = data.get("uav", {}).get("dynamics") if isinstance(data.get("uav"), Mapping) else None
     if paper and given is not None and str(uav.dynamics) != "dubins":
         # The roll model needs g in m/s^2; the paper's units are dimensionless.
@@ -197,14 +181,13 @@ def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np
     R = uav.min_turn_radius
     model = None if paper else {"altitude": uav.altitude, "length_unit": 1.0, "speed_unit": 1.0}
     gains = data.get("gains")
-    guidance = data.get("guidance") or ("law5" if paper else "l1")
+    guidance = data.get("guidance") or leg_guidance(paper)
     options: dict[str, Any] = {
         "method": data["method"], "turn_radius": R, "speed": uav.speed, "dt": positive("dt", data["dt"]),
-        "gains": pair("gains", gains, "a pair [a, b]") if gains is not None else
-        (tuple(defaults.gains) if paper else paper_gains(R)),
+        "gains": pair("gains", gains, "a pair [a, b]") if gains is not None else leg_gains(paper, R),
         "weights": pair("weights", data["weights"], "a pair [a, b]"), "integration": data["integration"],
         "wind": _wind(data["wind"], seed, model), "guidance": guidance,
-        "l1_period": positive("l1_period", data.get("l1_period", _L1_PERIOD)),
+        "l1_period": positive("l1_period", data.get("l1_period", L1_PERIOD)),
         "wind_aware": data.get("wind_aware", False),
         "replan_interval": number("replan_interval", data.get("replan_interval", 0.0), low=0.0),
     }
@@ -229,14 +212,9 @@ def _flight_inputs(data: Mapping[str, Any], folder: Path, seed: int) -> tuple[np
             raise fail("start", start, "must be [x, y, psi] or null")
         options["start"] = tuple(number(f"start[{i}]", c) for i, c in enumerate(start))
     route = _route(data, folder, seed, R)
-    longest = float(np.max(np.linalg.norm(np.diff(route, axis=0), axis=1)))
-    given = data.get("route") or ("random_route" if data.get("random_route") is not None else "waypoints")
-    if not paper and longest < 2.0 * R:
-        raise fail("route", given, f"its longest leg, {longest:.4g} m, is under 2 R = {2 * R:.4g} m: a route in the "
-                                   "paper's units? set units: paper")
-    if paper and longest > 100.0 * R:
-        raise fail("route", given, f"its longest leg is {longest:.4g} = {longest / R:.4g} R with units: paper: a "
-                                   "route in metres? drop units: paper")
+    if (problem := route_scale_error(route, R, paper)) is not None:
+        given = data.get("route") or ("random_route" if data.get("random_route") is not None else "waypoints")
+        raise fail("route", given, problem + (" drop units: paper" if paper else " set units: paper"))
     return route, options
 
 
