@@ -63,6 +63,19 @@ def test_no_circle_about_the_vehicle_flies_one_off_it() -> None:
     assert result.metrics["flyable_circle_in_polygon_fraction"] == 1.0
 
 
+def test_off_centre_only_about_a_slow_vehicle() -> None:
+    """off_centre_max_speed: beside the same towers, a vehicle driving north at 4 m/s gets off-centre
+    circles by default and none with a 1 m/s limit, while a parked one still gets them."""
+    scene = vt.VisibilityScene(vt.Environment.from_buildings(
+        [(_box(35, 80, -300, 300), 400.0), (_box(-300, 35, 35, 80), 400.0)]))
+    driving = GroundVehicle.from_legs([VehicleLeg(math.pi / 2, 4.0, 40.0)], start=(0.0, -200.0))
+    moved = [u for u in city_orbit_follow(driving, UAV, scene).updates if np.any(u.shift)]
+    assert moved
+    limited = CityOrbitOptions(off_centre_max_speed=1.0)
+    assert not any(np.any(u.shift) for u in city_orbit_follow(driving, UAV, scene, options=limited).updates)
+    assert np.any(city_orbit_follow(_parked(60.0), UAV, scene, options=limited).updates[-1].shift)
+
+
 def test_options_name_the_field() -> None:
     scene = vt.VisibilityScene(vt.Environment.from_buildings([(_box(100, 140, -200, 200), 400.0)]))
     refuses(lambda: city_orbit_follow(_parked(), UAV, scene, options=CityOrbitOptions(radius="big")),
@@ -80,16 +93,19 @@ def test_scenario_files_set_the_options() -> None:
     base = {"vehicle": {"legs": [{"heading": "south", "speed": 10, "duration": 60}]}}
     assert FollowScenario.from_mapping(base, Path(".")).city_orbit == CityOrbitOptions()
     block = {"grow": 2, "lookahead": [4, 8.5], "camera_reach": True, "radius": "max", "choose": "off_centre",
-             "margin": 5}
+             "margin": 5, "off_centre_max_speed": 1}
     options = FollowScenario.from_mapping({**base, "city_orbit": block}, Path(".")).city_orbit
     assert options == CityOrbitOptions(grow=2.0, lookahead=(4.0, 8.5), camera_reach=True, radius="max",
-                                       choose="off_centre", margin=5.0)
+                                       choose="off_centre", margin=5.0, off_centre_max_speed=1.0)
+    block = {"off_centre_max_speed": None}
+    assert FollowScenario.from_mapping({**base, "city_orbit": block}, Path(".")).city_orbit.off_centre_max_speed is None
     for bad, key, shown in (({"radius": "big"}, "city_orbit.radius", "big"), ({"grow": 0}, "city_orbit.grow", "0"),
                             ({"lookahead": []}, "city_orbit.lookahead", "[]"),
                             ({"lookahead": [3, "x"]}, "city_orbit.lookahead[1]", "x"),
                             ({"camera_reach": 1}, "city_orbit.camera_reach", "1"),
                             ({"margin": float("nan")}, "city_orbit.margin", "nan"),
-                            ({"guidance": 3}, "city_orbit.guidance", "3"), ({"lead2": 1}, "city_orbit.lead2", "")):
+                            ({"guidance": 3}, "city_orbit.guidance", "3"),
+                            ({"off_centre_max_speed": -1}, "city_orbit.off_centre_max_speed", "-1"), ({"lead2": 1}, "city_orbit.lead2", "")):
         refuses(lambda bad=bad: FollowScenario.from_mapping({**base, "city_orbit": bad}, Path(".")), key, shown)
 
 

@@ -52,7 +52,8 @@ class CityOrbitOptions:
     the VV cache's cell (m); margin: kept between the orbit and the VP's boundary (m); radius:
     "lemma6" (Lemma 6's at the vehicle's speed, cut to MaxRadius - margin), "camera" (the largest
     whose centre the camera sees at the steepest bank) or "max" (MaxRadius - margin); off_centre: where no circle
-    fits about the vehicle, fly one off it inside the VP; lead: how far ahead (s) the VV is cast."""
+    fits about the vehicle, fly one off it inside the VP (off_centre_max_speed: only about a vehicle at most that
+    fast, m/s); lead: how far ahead (s) the VV is cast."""
 
     reach: float = 400.0
     resolution_deg: float = 1.0
@@ -67,6 +68,9 @@ class CityOrbitOptions:
     camera_reach: bool = False  # True: an off-centre circle only as far as the camera sees the vehicle from it
     l1_period: float = 12.0  # s, the L1 period flying the orbit (0: the flight's, FollowFlight.l1_period)
     grow: float = 1.0  # m per update the orbit's radius may grow by (it shrinks at once, to keep in its VP)
+    # m/s: an off-centre circle only about a vehicle this slow or slower (None: at any speed). A parked
+    # vehicle's polygon stands still; a moving one's sweeps along the street and the circle jumps with it.
+    off_centre_max_speed: Optional[float] = None
     choose: str = "predicted"  # where no circle fits about the vehicle: "predicted" (off-centre or about, by
     # the predicted flight's line of sight and camera) or "off_centre" (always off-centre when one fits)
 
@@ -77,6 +81,9 @@ class CityOrbitOptions:
                 raise VistrackError(f"city_orbit.{name} = {value}: must be > 0")
         if self.choose not in ("predicted", "off_centre"):
             raise VistrackError(f"city_orbit.choose = {self.choose!r}: must be 'predicted' or 'off_centre'")
+        limit = self.off_centre_max_speed
+        if limit is not None and not (math.isfinite(limit) and limit >= 0.0):
+            raise VistrackError(f"city_orbit.off_centre_max_speed = {limit}: must be >= 0 (m/s) or None")
         if not self.grow > 0.0:
             raise VistrackError(f"city_orbit.grow = {self.grow}: must be > 0 (m per update)")
         for name in ("margin", "lead", "vehicle_height"):
@@ -357,7 +364,8 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
                     break
             anywhere = about or now.flyable_circle(turn + margin) is not None
             centred = max(turn, min(lemma6, now.max_radius - margin))
-            if not options.off_centre:
+            limit = options.off_centre_max_speed
+            if not options.off_centre or (limit is not None and float(np.hypot(*v)) > limit):
                 shift, radius = np.zeros(2), centred
             elif options.choose == "predicted" and np.any(shift) and len(q) >= 3:
                 # Off-centre or about the vehicle: whichever flight (the field's path from the UAV)

@@ -58,7 +58,9 @@ def city_orbit_block(data: Mapping[str, Any]) -> CityOrbitOptions:
     for key, value in section(data, "city_orbit", {f.name for f in dataclasses.fields(options)}).items():
         name = f"city_orbit.{key}"
         default = getattr(options, key)
-        if isinstance(default, bool):
+        if key == "off_centre_max_speed":  # a speed, or null for none
+            value = None if value is None else number(name, value, low=0.0)
+        elif isinstance(default, bool):
             value = boolean(name, value)
         elif isinstance(default, float):
             value = number(name, value)

@@ -1,0 +1,87 @@
+"""The city orbit (vistrack.follow.city_orbit) on the Charlotte road runs with other options: each
+file's city orbit flown with its scenario's ``city_orbit`` block overridden by ``--set KEY=VALUE``
+(any CityOrbitOptions field, YAML values: ``--set camera_reach=true --set lookahead=[3,6,12]``), and
+its camera, line of sight and both, beside the same run with the file's options. The numbers the
+follow docs quote for options not on by default come from here:
+
+    VISTRACK_BUILD_DIR=build/dev python3 bench/follow_city_options.py --set camera_reach=true
+    VISTRACK_BUILD_DIR=build/dev python3 bench/follow_city_options.py --set camera_reach=true \\
+        examples/follow_helsinki_osm.yaml
+
+Default files: examples/follow_{straight,wind,stop,truck}_city.yaml (the shared Charlotte data).
+Charlotte geometry (c) OpenStreetMap contributors (ODbL).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+REPO = Path(__file__).resolve().parents[1]
+if os.environ.get("VISTRACK_BUILD_DIR"):
+    sys.path.insert(0, str(REPO / "tests" / "python"))
+    import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
+
+from vistrack import VisibilityScene  # noqa: E402
+from vistrack.follow import FollowScenario  # noqa: E402
+from vistrack.follow.city_orbit import city_orbit_follow  # noqa: E402
+from vistrack.follow.keys import city_orbit_block  # noqa: E402
+
+FILES = [REPO / "examples" / f"follow_{name}_city.yaml" for name in ("straight", "wind", "stop", "truck")]
+KEYS = ("camera_fraction", "line_of_sight_fraction", "camera_and_line_of_sight_fraction")
+
+
+def fly(scenario: FollowScenario, scene: VisibilityScene, env: Any) -> dict[str, Any]:
+    """The city orbit as ``FollowScenario.run`` flies it (the same wind knowledge, flight and camera)."""
+    p = scenario.parameters
+    known = scenario.wind_estimate or ((scenario.wind.east, scenario.wind.north) if p.wind_compensation else None)
+    return city_orbit_follow(scenario.city_vehicle(env), scenario.uav, scene, parameters=p, wind_estimate=known,
+                             wind=scenario.wind, flight=scenario.flight, camera=scenario.camera,
+                             options=scenario.city_orbit).metrics
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("files", nargs="*", type=Path, default=FILES)
+    parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                        help="a city_orbit option (YAML value); repeatable")
+    args = parser.parse_args()
+    changes: dict[str, Any] = {}
+    for item in args.set:
+        key, _, value = item.partition("=")
+        changes[key.strip()] = yaml.safe_load(value)
+    print(f"city orbit with {changes or 'the files options'} against the files' options; camera / line of sight / "
+          "both, %")
+    print("| file | the file's options | with the change | both, change (points) |\n|---|---|---|---|")
+    for file in args.files:
+        scenario = FollowScenario.load(file)
+        if not scenario.city_available():
+            print(f"| {file.name} | skipped: its city data is missing | | |")
+            continue
+        env = scenario.city.load(scenario.origin)  # type: ignore[union-attr]
+        scene = VisibilityScene(env)
+        start = time.perf_counter()
+        before = fly(scenario, scene, env)
+        scenario.city_orbit = city_orbit_block({"city_orbit": {**_fields(scenario), **changes}})
+        after = fly(scenario, scene, env)
+        shown = [" / ".join(f"{100 * m[k]:.1f}" for k in KEYS) for m in (before, after)]
+        delta = 100 * (after[KEYS[2]] - before[KEYS[2]])
+        print(f"| {file.name} | {shown[0]} | {shown[1]} | {delta:+.1f} |  ({time.perf_counter() - start:.0f} s)")
+    return 0
+
+
+def _fields(scenario: FollowScenario) -> dict[str, Any]:
+    """The scenario's city_orbit options as a block (lookahead as a list)."""
+    options = vars(scenario.city_orbit).copy()
+    options["lookahead"] = list(options["lookahead"])
+    return options
+
+
+if __name__ == "__main__":
+    sys.exit(main())
