@@ -123,7 +123,10 @@ def test_the_waypoints_command_flies_jsbsim_beside_the_kinematic_flights(tmp_pat
     assert block["flights"][0]["all_reached"]
     assert block["altitude_error_max_m"] < 10.0 and block["airspeed_error_max_m_s"] < 2.0
     assert (out / "fdm.png").is_file()
-    assert "6-DOF flights on aerosonde" in (out / "report.md").read_text()
+    report = (out / "report.md").read_text()
+    assert "6-DOF flights on aerosonde" in report
+    row = next(line for line in report.splitlines() if line.startswith("| DWN") and "yes" in line)
+    assert f"| {record['flights'][0]['max_miss_over_R']:.3f} |" in row  # the kinematic twin's, as in metrics.json
 
 
 def test_the_follow_truck_on_the_6dof_uav_sees_the_vehicle_as_the_kinematic_one(tmp_path: Path) -> None:

@@ -105,7 +105,8 @@ def test_scenario_files_set_the_options() -> None:
                             ({"camera_reach": 1}, "city_orbit.camera_reach", "1"),
                             ({"margin": float("nan")}, "city_orbit.margin", "nan"),
                             ({"guidance": 3}, "city_orbit.guidance", "3"),
-                            ({"off_centre_max_speed": -1}, "city_orbit.off_centre_max_speed", "-1"), ({"lead2": 1}, "city_orbit.lead2", "")):
+                            ({"off_centre_max_speed": -1}, "city_orbit.off_centre_max_speed", "-1"),
+                            ({"lead2": 1}, "city_orbit.lead2", "")):
         refuses(lambda bad=bad: FollowScenario.from_mapping({**base, "city_orbit": bad}, Path(".")), key, shown)
 
 

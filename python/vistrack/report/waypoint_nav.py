@@ -137,10 +137,12 @@ def _add_fdm(out: Path, flights: Sequence[NavigationFlight], six_dof: Sequence[F
     block = fdm_block(six_dof[0].trajectory.aircraft, [f.trajectory for f in six_dof], summaries)
     record["fdm"] = block
     kinematic = {(f.method, f.waypoint_radius): f for f in flights}
+    entries = {(f.method, f.waypoint_radius): e for f, e in zip(flights, record["flights"])}  # metrics(), once
     rows = []
     for six, summary in zip(six_dof, summaries):
-        twin = kinematic[(six.method, six.waypoint_radius if six.method != "dwn" else None)]
-        rows.append([twin.label, f"{twin.metrics()['max_miss_over_R']:.3f}",
+        key = (six.method, six.waypoint_radius if six.method != "dwn" else None)
+        twin = kinematic[key]
+        rows.append([twin.label, f"{entries[key]['max_miss_over_R']:.3f}",
                      f"{summary['max_miss_over_R']:.3f}", "yes" if summary["all_reached"] else "no",
                      f"{six.trajectory.altitude_error_max:.2f}", f"{six.trajectory.airspeed_error_max:.2f}"])
     first = six_dof[0]
