@@ -34,6 +34,7 @@ from scipy.optimize import minimize_scalar  # noqa: E402
 
 from timing import best_of, timed  # noqa: E402
 from vistrack import waypoint_nav as wn  # noqa: E402
+from vistrack._core import waypoint_nav as core_wn  # noqa: E402
 from vistrack.io import read_route  # noqa: E402
 
 TWO_PI = 2.0 * math.pi
@@ -139,7 +140,7 @@ def main() -> None:
     flight = {}
     for method in ("dwn", "wn"):
         flight[method] = best_of(20, lambda m_=method: wn.fly(route, method=m_))
-    core = best_of(20, lambda: wn._wn.navigate(route[1:], wn.default_start(route)))
+    core = best_of(20, lambda: core_wn.navigate(route[1:], wn.default_start(route)))
 
     report = {
         "turning_points_per_second": ours_rate,
