@@ -538,3 +538,5 @@ def test_navigation_guidance_is_what_navigate_flies(route: np.ndarray) -> None:
     refuses(lambda: core.navigation_guidance(flown, pose, core.Options(method="wn", replan_interval=5.0)),
             "replan_interval")
     refuses(lambda: core.navigation_guidance(flown[:0], pose, core.Options()), "waypoints")
+    refuses(lambda: core.navigation_time_limit(flown, pose, core.Options(speed=0.0)), "speed")
+    refuses(lambda: core.navigation_time_limit(np.array([[0.0, math.nan]]), pose, core.Options()), "waypoints[0].y")

@@ -268,6 +268,7 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
 std::unique_ptr<FlightGuidance> navigation_guidance(const std::vector<Vec2>& waypoints, const Configuration& start,
                                                     const WaypointNavOptions& options, const Wind& wind = {});
 // navigate()'s time limit: options.max_time, else 3 (route length from start + 2 pi R per waypoint) / v.
+// Validates as navigate() does.
 double navigation_time_limit(const std::vector<Vec2>& waypoints, const Configuration& start,
                              const WaypointNavOptions& options);
 

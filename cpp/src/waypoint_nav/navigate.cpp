@@ -63,8 +63,10 @@ std::unique_ptr<FlightGuidance> navigation_guidance(const std::vector<Vec2>& way
 
 double navigation_time_limit(const std::vector<Vec2>& waypoints, const Configuration& start,
                              const WaypointNavOptions& options) {
+  options.validate();
+  validate_route(waypoints, start, options.turn_radius);
   if (options.max_time) return *options.max_time;
-  double route = waypoints.empty() ? 0.0 : (waypoints.front() - Vec2(start.x, start.y)).norm();
+  double route = (waypoints.front() - Vec2(start.x, start.y)).norm();
   for (std::size_t k = 1; k < waypoints.size(); ++k) route += (waypoints[k] - waypoints[k - 1]).norm();
   return 3.0 * (route + kTwoPi * options.turn_radius * static_cast<double>(waypoints.size())) / options.speed;
 }
@@ -74,14 +76,16 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
   const std::unique_ptr<FlightGuidance> guidance = navigation_guidance(waypoints, start, options, wind);
   NavigationResult result;
   result.method = options.method;
-  if (options.method != NavigationMethod::Dubins) result.waypoint_radius = options.waypoint_radius.value_or(options.turn_radius);
+  if (options.method != NavigationMethod::Dubins)
+    result.waypoint_radius = options.waypoint_radius.value_or(options.turn_radius);
   result.max_time = navigation_time_limit(waypoints, start, options);
   FlightOptions flight;
   flight.integration = options.integration;
   flight.dt = options.dt;
   flight.max_time = result.max_time;
   result.trajectory = fly(options.vehicle(), wind, *guidance, start, flight);
-  if (const auto* dwn = dynamic_cast<const DubinsWaypointGuidance*>(guidance.get())) result.turning_points = dwn->turning_points();
+  if (const auto* dwn = dynamic_cast<const DubinsWaypointGuidance*>(guidance.get()))
+    result.turning_points = dwn->turning_points();
   result.metrics = navigation_metrics(result.trajectory, Vec2(start.x, start.y), waypoints, options.speed,
                                       options.turn_radius, options.weights);
   return result;
