@@ -290,7 +290,7 @@ class Numbers:
 def _call(numbers: Numbers) -> Any:
     """One API call chosen and fed by the input."""
     n = numbers
-    which = n.integer(0, 20)
+    which = n.integer(0, 21)
     if which == 0:
         return vt.dubins.shortest_path((n.number(), n.number(), n.number()), (n.number(), n.number(), n.number()),
                                        n.number()).sample(max(n.number(), 1e-3) if n.byte() & 1 else 1.0)
@@ -375,6 +375,10 @@ def _call(numbers: Numbers) -> Any:
                                  (n.number(), n.number()), (n.number(), n.number()), n.number(), n.number(),
                                  n.number(), n.integer(-1, 4), "best" if n.byte() & 1 else "given")
         return [planned.length, planned.flight_time, planned.transit_time]
+    if which == 21:
+        options = vt.waypoint_nav.Options(turn_radius=n.number(), speed=n.number(), dt=n.number(),
+                                          max_time=n.number() if n.byte() & 1 else None)
+        return vt.waypoint_nav.navigation_time_limit(n.rows(2, 4), (n.number(), n.number(), n.number()), options)
     return vt.dubins.length_to_circle((n.number(), n.number(), n.number()), n.number(), (n.number(), n.number()),
                                       n.number(), [n.number() for _ in range(3)])
 

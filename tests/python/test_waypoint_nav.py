@@ -516,6 +516,8 @@ def test_navigation_guidance_is_what_navigate_flies(route: np.ndarray) -> None:
     wind-aware DWN; navigation_time_limit is navigate()'s limit; WN refuses DWN's re-planning."""
     from vistrack._core import waypoint_nav as core
 
+    assert wn.navigation_guidance is core.navigation_guidance and wn.navigation_time_limit is core.navigation_time_limit
+
     pose, flown = (float(route[0, 0]), float(route[0, 1]), 0.3), route[1:]
     wind = vt.flight.Wind(east=0.1, north=-0.05)
     for kwargs, kind in (({"method": "dwn"}, core.DubinsWaypointGuidance),

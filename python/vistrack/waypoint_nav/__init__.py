@@ -14,7 +14,8 @@ re-plans the active turning point more often (the paper's option of section 2.1)
 - :func:`fly` flies a route and returns a :class:`NavigationFlight` with the trajectory and the
   metrics (miss distances, reached, overshoot, swirls, path length, duration, fuel). Its
   ``turning_points`` are the DWN turning points in the order flown: the route an autopilot would
-  be given instead of the waypoints.
+  be given instead of the waypoints. :func:`navigation_guidance` is the guidance it flies, for a vehicle
+  flown elsewhere (the 6-DOF aircraft of ``waypoint_nav.fdm``), with :func:`navigation_time_limit`.
 - :func:`paper_flights` flies the comparison of the paper's Figures 11 and 12 (DWN, and WN at
   R_WP = 0.1R, 0.5R, R); :func:`theta_against_weight` is Figure 10;
   :func:`monte_carlo` goes beyond the paper: random routes and winds, with and without gusts.
@@ -44,7 +45,9 @@ from .navigation import (
     fly,
     horizon_lengths,
     horizon_path,
+    navigation_guidance,
     navigation_metrics,
+    navigation_time_limit,
     paper_flights,
     paper_gusts,
     reachability,
@@ -74,7 +77,9 @@ __all__ = [
     "horizon_lengths",
     "horizon_path",
     "monte_carlo",
+    "navigation_guidance",
     "navigation_metrics",
+    "navigation_time_limit",
     "paper_flights",
     "paper_gusts",
     "random_route",

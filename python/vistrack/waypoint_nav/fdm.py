@@ -17,7 +17,15 @@ import numpy as np
 from .._core import waypoint_nav as _wn
 from .._core.flight import Wind, paper_gains
 from ..fdm import FdmTrajectory, FlightGuidanceLaw, aircraft, fly
-from .navigation import NavigationFlight, Points, default_start, flight_scores, route_array
+from .navigation import (
+    NavigationFlight,
+    Points,
+    default_start,
+    flight_scores,
+    navigation_guidance,
+    navigation_time_limit,
+    route_array,
+)
 
 __all__ = ["FdmNavigation", "fdm_flights", "fly_fdm", "roll_lead"]
 
@@ -87,8 +95,8 @@ def fly_fdm(waypoints: Points, start: Optional[Sequence[float]] = None, *, metho
                           max_time=max_time, dynamics="roll", guidance=guidance, l1_period=l1_period,
                           wind_aware=wind_aware and wind is not None, replan_interval=replan_interval,
                           dwn_tracking=dwn_tracking, path_anticipation=path_anticipation)
-    planner = _wn.navigation_guidance(flown, pose, options, wind)
-    limit = _wn.navigation_time_limit(flown, pose, options)
+    planner = navigation_guidance(flown, pose, options, wind)
+    limit = navigation_time_limit(flown, pose, options)
     traj = fly(FlightGuidanceLaw(planner, pose), pose, speed=speed, altitude=altitude, duration=limit,
                turn_radius=turn_radius, aircraft=plane, wind=wind)
     metrics = _wn.navigation_metrics(list(traj.t), list(traj.x), list(traj.y), list(traj.turn_rate_command),

@@ -22,8 +22,8 @@ from ..preview import preview
 __all__ = [
     "CASES", "DEFAULTS", "METHODS", "PAPER_GUST_MODEL", "PAPER_RADII", "DubinsWaypointGuidance", "HorizonPath",
     "NavigationFlight", "Options", "TurningPoint", "air_mass_turning_point", "fly", "horizon_lengths", "horizon_path",
-    "navigation_metrics", "paper_flights", "paper_gusts", "reachability", "theta_against_weight", "turning_point",
-    "turning_points",
+    "navigation_guidance", "navigation_metrics", "navigation_time_limit", "paper_flights", "paper_gusts",
+    "reachability", "theta_against_weight", "turning_point", "turning_points",
 ]
 
 # DWN, the paper's WN and (beyond the paper) WN switching as ArduPlane does.
@@ -40,6 +40,8 @@ horizon_path = _wn.horizon_path
 horizon_lengths = _wn.horizon_lengths
 reachability = _wn.reachability
 navigation_metrics = _wn.navigation_metrics  # of a flight flown elsewhere (vistrack.fdm)
+navigation_guidance = _wn.navigation_guidance  # fly()'s guidance, for a vehicle flown elsewhere (vistrack.fdm)
+navigation_time_limit = _wn.navigation_time_limit
 
 _OPTIONS = Options()  # every default below: the bound C++ struct's (the paper's section 3)
 # The same as a mapping, for the callers that read one (a copy: changing it changes no default).
