@@ -16,10 +16,9 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "tests" / "python"))
-import conftest  # noqa: E402,F401  (imports vistrack from the build tree when VISTRACK_BUILD_DIR is set)
-
-import vistrack as vt  # noqa: E402
-from timing import best_of  # noqa: E402
+import conftest  # imports vistrack from the build tree when VISTRACK_BUILD_DIR is set
+import vistrack as vt
+from timing import best_of
 
 DATA = conftest.SHARED_DATA / "charlotte"
 

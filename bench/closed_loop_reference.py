@@ -60,7 +60,8 @@ def plan_segments(times, radii, waypoints, speed) -> tuple[list[Segment], list[f
         k = min(int(np.searchsorted(times, a, side="right")) - 1, len(times) - 2)
         rate = (radii[k + 1] - radii[k]) / (times[k + 1] - times[k])
         radius = radii[k] + rate * (a - times[k])
-        segments.append(Segment(a, poi_position(waypoints, nodes, a), poi_velocity(waypoints, nodes, speed, a), radius, rate))
+        segments.append(Segment(a, poi_position(waypoints, nodes, a), poi_velocity(waypoints, nodes, speed, a),
+                                radius, rate))
     return segments, merged
 
 

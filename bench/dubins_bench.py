@@ -28,8 +28,8 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(HERE.parent / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-from vistrack import dubins  # noqa: E402
-from timing import best_of  # noqa: E402
+from timing import best_of
+from vistrack import dubins
 
 try:
     from ompl import base as ob
@@ -149,7 +149,8 @@ def throughput(rho: float, per_path: int, batch: int, repeat: int, seed: int) ->
                                       "ns_per_path": 1e9 * t_ompl_distance / per_path},
         "vistrack_python_shortest_length": {"paths_per_s": per_path / t_ours_length,
                                             "ns_per_path": 1e9 * t_ours_length / per_path},
-        "vistrack_python_shortest_path": {"paths_per_s": per_path / t_ours_path, "ns_per_path": 1e9 * t_ours_path / per_path},
+        "vistrack_python_shortest_path": {"paths_per_s": per_path / t_ours_path,
+                                          "ns_per_path": 1e9 * t_ours_path / per_path},
         "vistrack_batch_all_cores": {"paths_per_s": batch / t_batch_all, "ns_per_path": 1e9 * t_batch_all / batch,
                                      "cpu_ns_per_path": 1e9 * cpu_all / batch},
         "vistrack_batch_one_core": {"paths_per_s": batch / t_batch_one, "ns_per_path": 1e9 * t_batch_one / batch},
@@ -180,7 +181,7 @@ def main() -> int:
         flag = "" if abs(row["difference"]) <= 1e-9 * max(1.0, row["ompl"]) else "   <- differs"
         print(f"{row['case']:42s} vistrack {row['vistrack']:.12g}  ompl {row['ompl']:.12g}{flag}")
     speed = throughput(args.rho, min(args.pairs, 100_000), args.batch, args.repeat, args.seed + 1)
-    print("\n== throughput (random pairs within 10 rho, '_near': within 2 rho; wall clock, best of %d) ==" % args.repeat)
+    print(f"\n== throughput (random pairs within 10 rho, '_near': within 2 rho; wall clock, best of {args.repeat}) ==")
     for name, row in speed.items():
         extra = f"  (cpu {row['cpu_ns_per_path']:.0f} ns/path over all threads)" if "cpu_ns_per_path" in row else ""
         print(f"{name:32s} {row['paths_per_s'] / 1e6:8.3f} M paths/s  {row['ns_per_path']:9.1f} ns/path{extra}")
@@ -198,7 +199,8 @@ def main() -> int:
         speed["vistrack_batch_one_core"]["paths_per_s"] / base,
         speed["vistrack_batch_all_cores"]["paths_per_s"] / base))
     if args.json:
-        args.json.write_text(json.dumps({"load": load, "agreement": agree, "degenerate": cases, "throughput": speed}, indent=2))
+        record = {"load": load, "agreement": agree, "degenerate": cases, "throughput": speed}
+        args.json.write_text(json.dumps(record, indent=2))
     return 0
 
 

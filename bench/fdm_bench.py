@@ -23,13 +23,13 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import numpy as np  # noqa: E402
+import numpy as np
 
-from timing import timed  # noqa: E402
-from vistrack.scenario import Scenario  # noqa: E402
-from vistrack.scenario_blocks import with_dynamics  # noqa: E402
-from vistrack.tracking.fdm import fly_tracking  # noqa: E402
-from vistrack.tracking.pipeline import closed_loop, compute, start_on_orbit  # noqa: E402
+from timing import timed
+from vistrack.scenario import Scenario
+from vistrack.scenario_blocks import with_dynamics
+from vistrack.tracking.fdm import fly_tracking
+from vistrack.tracking.pipeline import closed_loop, compute, start_on_orbit
 
 DATA = REPO.parent / "shared" / "data"
 

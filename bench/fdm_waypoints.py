@@ -32,9 +32,9 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import vistrack as vt  # noqa: E402
-from vistrack import fdm  # noqa: E402
-from vistrack.waypoint_nav.fdm import fly_fdm, roll_lead  # noqa: E402
+import vistrack as vt
+from vistrack import fdm
+from vistrack.waypoint_nav.fdm import fly_fdm, roll_lead
 
 PLANE = fdm.aircraft("aerosonde")
 V = PLANE.envelope.cruise_speed

@@ -28,9 +28,9 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(HERE.parent / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-from timing import best_of, timed  # noqa: E402
-from vistrack import follow  # noqa: E402
-from vistrack.follow_scenario import FollowScenario  # noqa: E402
+from timing import best_of, timed
+from vistrack import follow
+from vistrack.follow_scenario import FollowScenario
 
 try:
     from scipy.optimize import brentq

@@ -28,10 +28,10 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-from vistrack import VisibilityScene  # noqa: E402
-from vistrack.follow import FollowScenario  # noqa: E402
-from vistrack.follow.city_orbit import city_orbit_follow  # noqa: E402
-from vistrack.follow.keys import city_orbit_block  # noqa: E402
+from vistrack import VisibilityScene
+from vistrack.follow import FollowScenario
+from vistrack.follow.city_orbit import city_orbit_follow
+from vistrack.follow.keys import city_orbit_block
 
 FILES = [REPO / "examples" / f"follow_{name}_city.yaml" for name in ("straight", "wind", "stop", "truck")]
 KEYS = ("camera_fraction", "line_of_sight_fraction", "camera_and_line_of_sight_fraction")

@@ -27,8 +27,8 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-from vistrack.follow_scenario import FollowScenario, FollowStudy  # noqa: E402
-from vistrack.plotting.follow import figure_compare, figure_paths, figure_speed_ratio  # noqa: E402
+from vistrack.follow_scenario import FollowScenario, FollowStudy
+from vistrack.plotting.follow import figure_compare, figure_paths, figure_speed_ratio
 
 # Three vehicles not tuned on (issue 31's held-out tracks): a city block at changing speeds, a
 # country road of gentle bends with a stop, and a fast chase with a U-turn and a crawl.

@@ -27,8 +27,8 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import vistrack as vt  # noqa: E402
-from vistrack.scenario import Scenario  # noqa: E402
+import vistrack as vt
+from vistrack.scenario import Scenario
 
 EXAMPLES = {"campus": "examples/campus_flight_test.yaml", "paper_small": "examples/charlotte_paper_small.yaml",
             "paper_slow": "examples/charlotte_paper_slow.yaml", "demo": "python/vistrack/scenarios/demo.yaml"}

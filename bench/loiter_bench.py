@@ -33,10 +33,10 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(HERE.parent / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import shapely  # noqa: E402
+import shapely
 
-from timing import timed  # noqa: E402
-from vistrack import loiter  # noqa: E402
+from timing import timed
+from vistrack import loiter
 
 VERTICES = 256
 UNIT = np.linspace(0.0, 2.0 * math.pi, VERTICES, endpoint=False)

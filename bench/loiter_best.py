@@ -22,7 +22,7 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-from vistrack import loiter  # noqa: E402
+from vistrack import loiter
 
 
 def layout_table(count: int, seed: int) -> None:

@@ -21,9 +21,9 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import vistrack as vt  # noqa: E402
-from vistrack.loiter.city import plan_city  # noqa: E402
-from vistrack.loiter.files import read_loiter_scenario  # noqa: E402
+import vistrack as vt
+from vistrack.loiter.city import plan_city
+from vistrack.loiter.files import read_loiter_scenario
 
 METHODS = ("fly_through", "tlpp", "ldlpp", "ldlpp_best")
 

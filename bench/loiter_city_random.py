@@ -19,9 +19,9 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import vistrack as vt  # noqa: E402
-from vistrack.loiter import Scenario  # noqa: E402
-from vistrack.loiter.city import plan_city, random_street_aois  # noqa: E402
+import vistrack as vt
+from vistrack.loiter import Scenario
+from vistrack.loiter.city import plan_city, random_street_aois
 
 DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
 

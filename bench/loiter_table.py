@@ -18,8 +18,8 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-from vistrack import loiter  # noqa: E402
-from vistrack.loiter.study import PAPER_AREA_PER_SECOND  # noqa: E402
+from vistrack import loiter
+from vistrack.loiter.study import PAPER_AREA_PER_SECOND
 
 ROLES = ("transit", "entry", "loiter", "exit")
 

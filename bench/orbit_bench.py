@@ -6,7 +6,8 @@ Boolean volume through manifold3d (PyPI), side by side in one run.
 
     VISTRACK_BUILD_DIR=build/dev python3 bench/orbit_bench.py [--pairs 6] [--repeat 3] [--skip-xor]
 
-Goals (issue 5): <= 50 ms per pair on the fast path (radial, the planner's metric); the whole paper_slow plan <= 3 s on 2 cores.
+Goals (issue 5): <= 50 ms per pair on the fast path (radial, the planner's metric); the whole paper_slow plan
+<= 3 s on 2 cores.
 Goal (issue 12): the smooth locus within 2x of the paper's planning time.
 Charlotte geometry © OpenStreetMap contributors (ODbL).
 """
@@ -27,8 +28,8 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 import numpy as np
 
 import vistrack as vt
+from timing import timed
 from vistrack.io import load_environment
-from timing import timed  # noqa: E402
 
 DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
 
@@ -53,21 +54,23 @@ def locus_timings(charlotte: vt.Environment, repeat: int) -> None:
     """Planning time of the smooth locus (check + smooth R(t)) against the paper's, cold (a new
     scene and VV cache each time), on paper_slow, paper_small and the campus."""
     campus = load_environment(str(DATA / "campus" / "campus.obj"), "y")
-    runs = [("paper_slow", charlotte, "charlotte/paths/paper_slow.csv", 5.0, vt.Uav(speed=20.0, min_turn_radius=50.0,
-             altitude=300.0), 400.0, dict(spacing=20.0, cutoff=20e6)),
-            ("paper_small", charlotte, "charlotte/paths/paper_small.csv", 5.0, vt.Uav(speed=20.0, min_turn_radius=5.0,
-             altitude=50.0), 100.0, dict(spacing=20.0, cutoff=500e3)),
-            ("campus", campus, "campus/flight_test_path.csv", 0.35, vt.Uav(speed=3.0, min_turn_radius=5.0, altitude=35.0),
-             50.0, dict(spacing=20.0, cutoff=1e5))]
+    runs = [("paper_slow", charlotte, "charlotte/paths/paper_slow.csv", 5.0,
+             vt.Uav(speed=20.0, min_turn_radius=50.0, altitude=300.0), 400.0, {"spacing": 20.0, "cutoff": 20e6}),
+            ("paper_small", charlotte, "charlotte/paths/paper_small.csv", 5.0,
+             vt.Uav(speed=20.0, min_turn_radius=5.0, altitude=50.0), 100.0, {"spacing": 20.0, "cutoff": 500e3}),
+            ("campus", campus, "campus/flight_test_path.csv", 0.35,
+             vt.Uav(speed=3.0, min_turn_radius=5.0, altitude=35.0), 50.0, {"spacing": 20.0, "cutoff": 1e5})]
     print("\nplanning time, smooth locus (check + smooth R(t)) against the paper's (Algorithm 1 only), cold:")
     for name, env, path, speed, uav, d_max, planning in runs:
         poi = vt.PoiPath.from_csv(str(DATA / path), speed)
         sensor = vt.Sensor(d_max=d_max)
-        t_paper, _ = timed(lambda: vt.plan_orbits(env, poi, uav, sensor, vt.Planning(**planning, locus="paper")), repeat)
+        paper = vt.Planning(**planning, locus="paper")
+        t_paper, _ = timed(lambda: vt.plan_orbits(env, poi, uav, sensor, paper), repeat)
         t_smooth, plan = timed(lambda: vt.plan_orbits(env, poi, uav, sensor, vt.Planning(**planning)), repeat)
         c = plan.check
         print(f"  {name:11s} paper {t_paper:.3f} s, smooth {t_smooth:.3f} s: x{t_smooth / t_paper:.2f} "
-              f"({len(c.times)} check points, {c.rounds} rounds; goal <= x2: {'met' if t_smooth <= 2 * t_paper else 'NOT met'})")
+              f"({len(c.times)} check points, {c.rounds} rounds; "
+              f"goal <= x2: {'met' if t_smooth <= 2 * t_paper else 'NOT met'})")
 
 
 def main() -> int:
@@ -87,7 +90,6 @@ def main() -> int:
     poi = vt.PoiPath.from_csv(str(path), 5.0)
     uav = vt.Uav(speed=20.0, min_turn_radius=50.0, altitude=300.0)
     sensor = vt.Sensor(d_max=400.0)
-    planning = vt.Planning(spacing=20.0, cutoff=20e6, resolution_deg=1.0)
 
     print(f"machine: {os.cpu_count()} cores; vistrack {vt.__version__}")
     # The whole plan, cold: a new scene and an empty VV cache each time.

@@ -27,9 +27,9 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
 import osmium
-from timing import timed
 
 import vistrack as vt
+from timing import timed
 
 DATA = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data")) / "osm"
 FILES = ("Helsinki.osm.pbf", "West-Oakland.osm.bz2", "planet_10.068,48.135_10.071,48.137.osm")

@@ -25,16 +25,16 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(HERE.parent / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from the build tree)
 
-import vistrack as vt  # noqa: E402
-from closed_loop_reference import simulate_reference  # noqa: E402
-from timing import timed as best_time  # noqa: E402
+import vistrack as vt
+from closed_loop_reference import simulate_reference
+from timing import timed as best_time
 
 DATA = Path(os.environ.get("VISTRACK_DATA", HERE.parent.parent / "shared" / "data"))
 
 
 def morphing_plan(poi, uav, r_first, r_last, wiggle, period=6.0):
     """R(t) from r_first to r_last with a wiggle, sampled every `period` s (plan JSON round trip)."""
-    times = list(np.arange(0.0, poi.duration, period)) + [poi.duration]
+    times = [*np.arange(0.0, poi.duration, period).tolist(), poi.duration]
     radii = [r_first + (r_last - r_first) * t / poi.duration + wiggle * math.sin(t / 4) for t in times]
     text = json.loads(vt.constant_radius_plan(poi, r_first, uav).to_json())
     text["times"], text["radii"], text["max_radii"] = times, radii, radii

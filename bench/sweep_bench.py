@@ -30,8 +30,8 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 
     build_tree.preload_in_dask_workers()
 
-import vistrack as vt  # noqa: E402
-from vistrack.sweep import SERIAL, SweepSpec, run_cases  # noqa: E402
+import vistrack as vt
+from vistrack.sweep import SERIAL, SweepSpec, run_cases
 
 
 def bench_spec(resolution: float) -> SweepSpec:

@@ -17,11 +17,11 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import numpy as np  # noqa: E402
+import numpy as np
 
-import vistrack as vt  # noqa: E402
-from vistrack.scenario import Scenario  # noqa: E402
-from vistrack.tracking.pipeline import compute  # noqa: E402
+import vistrack as vt
+from vistrack.scenario import Scenario
+from vistrack.tracking.pipeline import compute
 
 DATA = REPO.parent / "shared" / "data"
 

@@ -21,11 +21,11 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import numpy as np  # noqa: E402
+import numpy as np
 
-import vistrack as vt  # noqa: E402
-from vistrack import follow  # noqa: E402
-from vistrack.follow_scenario import FollowScenario  # noqa: E402
+import vistrack as vt
+from vistrack import follow
+from vistrack.follow_scenario import FollowScenario
 
 MODELS = (("dubins", "law5"), ("roll", "l1"), ("roll", "law5"), ("dubins", "l1"))
 FOLLOW_CASES = (("parked vehicle (Fig. 8's loiter)", None, True), ("Fig. 5 straight", "follow_straight.yaml", True),

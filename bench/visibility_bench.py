@@ -32,9 +32,9 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import vistrack as vt  # noqa: E402
-from timing import best_of  # noqa: E402
-from vistrack import _core  # noqa: E402
+import vistrack as vt
+from timing import best_of
+from vistrack import _core
 
 REPO = Path(__file__).resolve().parents[1]
 
@@ -53,7 +53,8 @@ def directions(resolution_deg: float) -> np.ndarray:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--data", type=Path, default=Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data")))
+    parser.add_argument("--data", type=Path,
+                        default=Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data")))
     parser.add_argument("--points", type=int, default=10, help="POIs along paper_slow.csv")
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--d-max", type=float, default=400.0)
@@ -164,7 +165,8 @@ def main() -> int:
             print(f"  fraction of Embree's floor reached: one VV {100 * row['floor_fraction_single']:.0f} %, "
                   f"batch {100 * row['floor_fraction_batch']:.0f} % (peer ratio x{row['ratio_vv_vs_peer']:.1f})")
     for row in results:
-        print(f"{row['resolution_deg']:g} deg: first hits agree with the peer on {100 * row['hit_agreement']:.2f}% of rays "
+        print(f"{row['resolution_deg']:g} deg: first hits agree with the peer on "
+              f"{100 * row['hit_agreement']:.2f}% of rays "
               f"(within 5 cm); batch {row['ratio_batch_vs_peer']:.1f}x the peer's rays/s")
     one, per_s = results[0]["ms_per_vv"], 1e3 / results[0]["batch_ms_per_vv"]
     print(f"1 deg: a VV with its volume and its mesh (always built together) {one:.2f} ms alone, "

@@ -30,12 +30,12 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(HERE.parent / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-from scipy.optimize import minimize_scalar  # noqa: E402
+from scipy.optimize import minimize_scalar
 
-from timing import best_of, timed  # noqa: E402
-from vistrack import waypoint_nav as wn  # noqa: E402
-from vistrack._core import waypoint_nav as core_wn  # noqa: E402
-from vistrack.io import read_route  # noqa: E402
+from timing import best_of, timed
+from vistrack import waypoint_nav as wn
+from vistrack._core import waypoint_nav as core_wn
+from vistrack.io import read_route
 
 TWO_PI = 2.0 * math.pi
 CASES = [(1, 1), (1, -1), (-1, 1), (-1, -1)]  # (d1, d2) in wn.CASES order

@@ -22,8 +22,8 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import vistrack as vt  # noqa: E402
-from vistrack import waypoint_nav as wn  # noqa: E402
+import vistrack as vt
+from vistrack import waypoint_nav as wn
 
 R, V = 50.0, 20.0
 ROUTE = wn.read_route(REPO / "examples" / "waypoints_metres.csv")

@@ -19,8 +19,8 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import vistrack as vt  # noqa: E402
-from vistrack import waypoint_nav as wn  # noqa: E402
+import vistrack as vt
+from vistrack import waypoint_nav as wn
 
 RADII = (0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.3, 0.5)
 SPEEDS = (0.0, 0.1, 0.2, 0.3, 0.5, 0.6)

@@ -36,8 +36,8 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-import vistrack as vt  # noqa: E402
-from vistrack import waypoint_nav as wn  # noqa: E402
+import vistrack as vt
+from vistrack import waypoint_nav as wn
 
 R, V = wn.DEFAULTS["turn_radius"], wn.DEFAULTS["speed"]
 # L1 legs with the follow runs' L1 / R (8 s at 20 m/s and R 50 m: L1 = 0.76 R), in the paper's units:
