@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Quick start, second command: install what is needed, then run every test (GoogleTest through
-# ctest, ruff on the package, tests and benchmarks, mypy on the package, the docs site, then pytest). Exits non-zero when any check fails.
+# ctest, ruff on the package, tests and benchmarks, mypy on the package, the docs site, then
+# pytest). Exits non-zero when any check fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=build/test
