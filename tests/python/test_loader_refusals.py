@@ -81,6 +81,18 @@ def test_a_tilde_naming_no_home_directory_names_the_key(tmp_path: Path) -> None:
     refuses(lambda: Scenario.load(scenario), "city.mesh", "no home directory")
 
 
+def test_waypoints_of_two_lengths_name_the_point(tmp_path: Path) -> None:
+    """Found by the fuzzer (seed 3): poi.waypoints mixing [x, y] and [x, y, z] loaded, then numpy's
+    ValueError (an inhomogeneous array) escaped where the path was built; now the loader names it."""
+    from vistrack.scenario import Scenario
+
+    scenario = tmp_path / "mixed.yaml"
+    scenario.write_text("poi: {waypoints: [[-290, -210], [-100, -210, 50]]}\n")
+    refuses(lambda: Scenario.load(scenario), "poi.waypoints[1]", "must have 2 coordinates, as poi.waypoints[0]")
+    scenario.write_text("poi: {waypoints: [[-290, -210, 0], [-100, -210, 50], [0, 0]]}\n")
+    refuses(lambda: Scenario.load(scenario), "poi.waypoints[2]", "must have 3 coordinates")
+
+
 def test_input_files_must_be_regular_files(tmp_path: Path) -> None:
     """Issue 29: a FIFO blocked every reader forever and /dev/zero was read until memory ran out;
     every reader now refuses what is not a regular file before opening it, and files above

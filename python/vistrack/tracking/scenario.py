@@ -242,6 +242,8 @@ def _poi(section: dict[str, Any], base: Path) -> PoiSpec:
             if not isinstance(point, list) or len(point) not in sizes:
                 allowed = "must be [x, y] or [x, y, z]" if key == "waypoints" else "must be [x, y]"
                 raise fail(f"poi.{key}[{i}]", point, allowed)
+            if i > 0 and len(point) != len(value[0]):  # one array of rows: every point as long as the first
+                raise fail(f"poi.{key}[{i}]", point, f"must have {len(value[0])} coordinates, as poi.{key}[0]")
             points.append([coordinate(f"poi.{key}[{i}][{k}]", c) for k, c in enumerate(point)])
         setattr(spec, key, points)
     else:
