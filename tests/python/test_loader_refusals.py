@@ -93,6 +93,31 @@ def test_waypoints_of_two_lengths_name_the_point(tmp_path: Path) -> None:
     refuses(lambda: Scenario.load(scenario), "poi.waypoints[2]", "must have 3 coordinates")
 
 
+def test_numeric_tables_refuse_values_that_are_not_finite(tmp_path: Path) -> None:
+    """Found by the fuzzer (seed 8): a vehicle track's "1E5160" read as inf (and "nan" as NaN) and
+    came back from the reader; every numeric table now names the line."""
+    from vistrack.follow.files import read_road_path, read_vehicle_track
+
+    track = tmp_path / "track.csv"
+    for bad in ("1E5160", "nan", "-inf"):
+        track.write_text(f"t,x,y\n0,0,0\n10,{bad},5\n")
+        refuses(lambda: read_vehicle_track(track), "vehicle.track", "line 3", "not a finite number", bad)
+        refuses(lambda: read_road_path(track), "road", "line 3")
+    track.write_text("t,x,y\n0,0,0\n10,100,5\n")
+    times, positions = read_vehicle_track(track)
+    assert times.tolist() == [0.0, 10.0] and positions.tolist() == [[0.0, 0.0], [100.0, 5.0]]
+
+
+def test_a_plan_whose_firmware_type_is_not_a_number_names_the_key(tmp_path: Path) -> None:
+    """Found by the fuzzer (seed 9): a .plan with a list as mission.firmwareType was a TypeError
+    (unhashable type) where the firmware was looked up."""
+    plan = tmp_path / "bad.plan"
+    for code in ("[3]", "true", "\"3\""):
+        plan.write_text('{"fileType": "Plan", "version": 1, "mission": {"version": 2, "firmwareType": '
+                        + code + ', "items": []}}')
+        refuses(lambda: vt.mission.load(plan), "mission.firmwareType", "must be 3 (ArduPilot) or 12 (PX4)")
+
+
 def test_input_files_must_be_regular_files(tmp_path: Path) -> None:
     """Issue 29: a FIFO blocked every reader forever and /dev/zero was read until memory ran out;
     every reader now refuses what is not a regular file before opening it, and files above

@@ -4,6 +4,7 @@ sweep's results table (``results.csv`` + ``results.parquet``)."""
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Optional
 
@@ -101,7 +102,7 @@ def write_flight(trajectory: "FlightTrajectory", path: str | Path) -> Path:
 
 def numeric_rows(path: str | Path, key: str, columns: tuple[int, ...]) -> np.ndarray:
     """The rows of a comma-separated numeric file (a header line is skipped), each with one of
-    ``columns`` counts; VistrackError naming the key, the line and the value otherwise."""
+    ``columns`` counts of finite numbers; VistrackError naming the key, the line and the value otherwise."""
     rows: list[list[float]] = []
     for number, line in enumerate(read_text(path, key).splitlines(), start=1):
         cells = [c.strip() for c in line.split(",")]
@@ -116,6 +117,9 @@ def numeric_rows(path: str | Path, key: str, columns: tuple[int, ...]) -> np.nda
         if len(values) not in columns:
             raise VistrackError(f"{key} = {path}: line {number} has {len(values)} values, expected "
                                 f"{' or '.join(str(c) for c in columns)}")
+        if not all(math.isfinite(v) for v in values):  # "nan", "inf", or one too large for a double
+            raise VistrackError(f"{key} = {path}: line {number} holds a value that is not a finite number: "
+                                f"{preview(line.strip())}")
         rows.append(values[: min(columns)])
     if len(rows) < 2:
         raise VistrackError(f"{key} = {path}: needs at least two rows, found {len(rows)}")
