@@ -25,6 +25,14 @@ void validate_route(const std::vector<Vec2>& waypoints, const Configuration& sta
   require_angle(start.psi, "start.psi");
 }
 
+// navigation_time_limit on inputs already validated.
+double time_limit(const std::vector<Vec2>& waypoints, const Configuration& start, const WaypointNavOptions& options) {
+  if (options.max_time) return *options.max_time;
+  double route = (waypoints.front() - Vec2(start.x, start.y)).norm();
+  for (std::size_t k = 1; k < waypoints.size(); ++k) route += (waypoints[k] - waypoints[k - 1]).norm();
+  return 3.0 * (route + kTwoPi * options.turn_radius * static_cast<double>(waypoints.size())) / options.speed;
+}
+
 }  // namespace
 
 std::unique_ptr<FlightGuidance> navigation_guidance(const std::vector<Vec2>& waypoints, const Configuration& start,
@@ -65,10 +73,7 @@ double navigation_time_limit(const std::vector<Vec2>& waypoints, const Configura
                              const WaypointNavOptions& options) {
   options.validate();
   validate_route(waypoints, start, options.turn_radius);
-  if (options.max_time) return *options.max_time;
-  double route = (waypoints.front() - Vec2(start.x, start.y)).norm();
-  for (std::size_t k = 1; k < waypoints.size(); ++k) route += (waypoints[k] - waypoints[k - 1]).norm();
-  return 3.0 * (route + kTwoPi * options.turn_radius * static_cast<double>(waypoints.size())) / options.speed;
+  return time_limit(waypoints, start, options);
 }
 
 NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuration& start,
@@ -78,7 +83,7 @@ NavigationResult navigate(const std::vector<Vec2>& waypoints, const Configuratio
   result.method = options.method;
   if (options.method != NavigationMethod::Dubins)
     result.waypoint_radius = options.waypoint_radius.value_or(options.turn_radius);
-  result.max_time = navigation_time_limit(waypoints, start, options);
+  result.max_time = time_limit(waypoints, start, options);  // validated by navigation_guidance
   FlightOptions flight;
   flight.integration = options.integration;
   flight.dt = options.dt;
