@@ -10,9 +10,13 @@ last where the flight crosses its finish line). Prints four markdown tables:
 2. the wind-aware path-following 6-DOF flight with the air moving towards 8 directions (every 45 degrees
    from east) in 0.1 v and 4 directions in 0.3 v: the largest miss per direction and the range;
 3. that flight in 0.1 v from the south with the path anticipation 0.3-0.9 s (default: roll_lead);
-4. the same planned with 1.1 R (bank to spare) at 0.3, 0.5 and 0.7 s, misses still in R.
+4. the same planned with 1.1 R (bank to spare) at 0.3, 0.5 and 0.7 s, misses still in R;
+5. the Aerosonde's answer to a step of the commanded turn rate from 0 to v / R (level, calm, 300 m): the
+   bank's rise, the turn rate it settles to, and how long its course trails an instantaneous turn
+   (beside the roll model's lag, roll_lead).
 
     VISTRACK_BUILD_DIR=build/dev python3 bench/fdm_waypoints.py [--skip-directions] [--skip-anticipation]
+        [--only-step]
 """
 
 from __future__ import annotations
@@ -122,12 +126,51 @@ def anticipation_tables() -> None:
         f"{largest(six_dof(wind, True, anticipation=a, turn_radius=1.1 * R)):.3f}" for a in leads) + " |")
 
 
+class _RateStep:
+    """Turn rate 0 until STEP_AT s, then v / R (the plan's turn)."""
+
+    done = False
+
+    def turn_rate(self, t: float, x: float, y: float, psi: float) -> float:
+        return 0.0 if t < STEP_AT else V / R
+
+    def advance(self, t: float, x: float, y: float, psi: float) -> None:
+        pass
+
+
+STEP_AT = 2.0
+
+
+def bank_step_table() -> None:
+    flight = fdm.fly(_RateStep(), (0.0, 0.0, 0.0), speed=V, altitude=300.0, duration=12.0, turn_radius=R)
+    t = flight.t
+    bank = np.degrees(flight.bank)
+    course = np.unwrap(np.arctan2(np.gradient(flight.y, t), np.gradient(flight.x, t)))
+    steady = (t > STEP_AT + 4.0) & (t < STEP_AT + 8.0)
+    settled = float(np.mean(bank[steady]))
+    rate, intercept = np.polyfit(t[steady], course[steady], 1)
+    before = course[t <= STEP_AT][-1]
+    # The course trails a turn begun at once at the step: (rate (t - t_step) - (course - course_0)) / rate.
+    lag_own = (before - intercept) / rate - STEP_AT
+    lag_plan = float(np.mean(t[steady] - STEP_AT - (course[steady] - before) / (V / R)))
+    rise = t[np.argmax(bank >= 0.9 * settled)] - STEP_AT
+    print("| commanded turn rate v / R | settled bank | bank at 90 % after | settled course rate | course lag at that "
+          "rate | course lag against v / R | roll model's lag (roll_lead) |")
+    print("|---|---|---|---|---|---|---|")
+    print(f"| {V / R:.3f} rad/s | {settled:.1f} deg | {rise:.2f} s | {rate:.3f} rad/s | {lag_own:.2f} s | "
+          f"{lag_plan:.2f} s | {roll_lead(V, R):.2f} s |")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--skip-directions", action="store_true", help="no wind-direction table")
     parser.add_argument("--skip-anticipation", action="store_true", help="no anticipation tables")
+    parser.add_argument("--only-step", action="store_true", help="only the turn-rate step table")
     args = parser.parse_args()
     start = time.perf_counter()
+    if args.only_step:
+        bank_step_table()
+        return
     print(f"R = {R:.1f} m, v = {V:.0f} m/s, roll lead {roll_lead(V, R):.2f} s\n")
     misses_table()
     if not args.skip_directions:
@@ -136,6 +179,8 @@ def main() -> None:
     if not args.skip_anticipation:
         print()
         anticipation_tables()
+    print()
+    bank_step_table()
     print(f"\n{time.perf_counter() - start:.1f} s")
 
 

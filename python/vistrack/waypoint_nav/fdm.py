@@ -34,9 +34,10 @@ __all__ = ["FdmNavigation", "fdm_flights", "fly_fdm", "roll_lead"]
 def roll_lead(speed: float, turn_radius: float) -> float:
     """DWN "path"'s anticipation on an aircraft (s): the lag of the kinematic roll model that flies beside
     the 6-DOF flight (the default roll time constant 0.5 s and roll rate 70 deg/s, ``Options.roll_lag``);
-    0.52 s for the Aerosonde at cruise. The Aerosonde's own course lag to a bank step is shorter (0.18 s),
-    but its bank limit is the plan's turn, so the follower cannot tighten a late turn: leading by the
-    roll model's lag keeps the arc's error inside, where it can."""
+    0.52 s for the Aerosonde at cruise. The Aerosonde's course trails a step of the commanded turn rate to
+    v / R by 0.36 s at the rate it settles to, 0.59 s against v / R (``bench/fdm_waypoints.py --only-step``);
+    its bank limit is the plan's turn, so the follower cannot tighten a late turn: leading by about that lag
+    keeps the arc's error inside, where it can."""
     return float(_wn.Options(dynamics="roll", turn_radius=turn_radius, speed=speed).roll_lag())
 
 
