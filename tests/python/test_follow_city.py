@@ -13,8 +13,9 @@ import pytest
 import vistrack as vt
 from support.paths import EXAMPLES
 from support.refusal import refuses
-from vistrack.follow import FollowScenario, GroundVehicle, VehicleLeg
-from vistrack.follow.city_orbit import CityOrbitOptions, camera_radius, city_orbit_follow
+from vistrack.city_orbits import orbit_room
+from vistrack.follow import DownwardCamera, FollowScenario, GroundVehicle, VehicleLeg
+from vistrack.follow.city_orbit import CityOrbitOptions, camera_radius, city_orbit_follow, predicted_view
 
 
 def _box(x0: float, x1: float, y0: float, y1: float) -> np.ndarray:
@@ -164,3 +165,28 @@ def test_camera_reach_bounds_the_offset() -> None:
     assert shift_reach(low, vt.follow.DownwardCamera(), 62.5) < 43.0  # 36 m: too far for the camera
     last = city_orbit_follow(_parked(60.0), low, scene, options=CityOrbitOptions(camera_reach=True)).updates[-1]
     assert last.shift == (0.0, 0.0) and last.fits_anywhere  # it stays about the vehicle
+
+
+def test_predicted_view_takes_heading_and_bank_from_the_air_path() -> None:
+    """In wind the camera turns with the body: a UAV circling 80 m about a vehicle that drifts with the
+    air (8 m/s north) keeps it on its inside at 14.9 deg off the vertical while the body-fixed camera
+    is tilted 29.3 deg outwards (the coordinated bank of 21 m/s on 80 m), 44.2 deg off its axis at every
+    sample: never seen with a 40-deg half field of view, always with 50. The ground track's course and
+    turn rate (a trochoid: its bank 22-42 deg) would say otherwise in both."""
+    scene = vt.VisibilityScene(vt.Environment.from_buildings([(_box(900, 950, 900, 950), 50.0)]))
+    room = orbit_room(scene, (0.0, 0.0, 0.5), 300.0, d_max=500.0)
+    step, speed, radius = 0.1, 21.0, 80.0
+    angle = speed / radius * step * np.arange(71)
+    path = radius * np.column_stack([np.cos(angle), np.sin(angle)])  # counter-clockwise, in the air mass
+    air = np.array([0.0, 8.0])
+    args = (path, step, air, np.zeros(2), air, [(np.zeros(2), room)], np.array([0.5]), UAV)
+    assert predicted_view(*args, DownwardCamera(fov=math.radians(80.0), mount="fixed")) == 0.0
+    assert predicted_view(*args, DownwardCamera(fov=math.radians(100.0), mount="fixed")) == 1.0
+    # Calm air, a parked vehicle: the same circle over the ground, the same answers.
+    calm = (path, step, np.zeros(2), np.zeros(2), np.zeros(2), [(np.zeros(2), room)], np.array([0.5]), UAV)
+    assert predicted_view(*calm, DownwardCamera(fov=math.radians(80.0), mount="fixed")) == 0.0
+    assert predicted_view(*calm, DownwardCamera(fov=math.radians(100.0), mount="fixed")) == 1.0
+    # Outside the polygon nothing counts: the same flight 2 km away from the room's centre.
+    far = [(np.array([2000.0, 0.0]), room)]
+    assert predicted_view(path, step, air, np.zeros(2), air, far, np.array([0.5]), UAV,
+                          DownwardCamera(fov=math.radians(100.0), mount="fixed")) == 0.0

@@ -41,7 +41,8 @@ from .simulation import (
     coordinated_bank,
 )
 
-__all__ = ["CityOrbitOptions", "CityOrbitResult", "OrbitUpdate", "camera_radius", "city_orbit_follow", "orbit_track"]
+__all__ = ["CityOrbitOptions", "CityOrbitResult", "OrbitUpdate", "camera_radius", "city_orbit_follow", "orbit_track",
+           "predicted_view"]
 
 RADIUS_CHOICES = ("lemma6", "camera", "max")
 
@@ -225,6 +226,36 @@ def field_track(q: Sequence[float] | np.ndarray, center: np.ndarray, velocity: n
     return np.array(points)
 
 
+def predicted_view(path: np.ndarray, step: float, air: np.ndarray, p: np.ndarray, v: np.ndarray,
+                   rooms: Sequence[tuple[np.ndarray, OrbitRoom]], times: np.ndarray, uav: Uav,
+                   camera: DownwardCamera) -> float:
+    """The fraction of the samples of ``path`` (n, 2), an air-mass path sampled every ``step`` s from
+    now, at which the vehicle (at p + v tau) is inside the VP of the room nearest in time (``rooms[j]``
+    = (the vehicle's position it was cast for, the room), reached at ``times[j]`` s) and in the camera.
+    Over the ground the UAV is at path + air tau; its heading and coordinated bank are the air-mass
+    path's (the body's, which the camera is fixed to: in wind the ground track's course and turn rate
+    differ from them)."""
+    import shapely
+
+    tau = np.arange(len(path) - 1) * step
+    if len(tau) == 0 or len(rooms) == 0:
+        return 0.0
+    ground = path[:-1] + np.outer(tau, air)  # the air-mass path drifts with the wind
+    heading = np.unwrap(np.arctan2(*np.diff(path, axis=0).T[::-1]))
+    rate = np.gradient(heading, step) if len(heading) > 1 else np.zeros_like(heading)
+    where = p + np.outer(tau, v)
+    nearest = np.argmin(np.abs(np.subtract.outer(tau, np.asarray(times)[: len(rooms)])), axis=1)
+    inside = np.zeros(len(tau), dtype=bool)
+    for j, (at, room) in enumerate(rooms):
+        mine = nearest == j
+        rel = ground[mine] - where[mine] + at  # the UAV where it stands from the vehicle, in the room's frame
+        inside[mine] = shapely.contains_xy(room.region(), rel[:, 0], rel[:, 1])
+    seen = sum(camera_sees(camera, np.array([ground[k, 0], ground[k, 1], uav.altitude]), heading[k],
+                           coordinated_bank(uav.speed, rate[k]), np.array([where[k, 0], where[k, 1], 0.0]))
+               for k in np.flatnonzero(inside))
+    return seen / len(tau)
+
+
 def orbit_track(center: np.ndarray, velocity: np.ndarray, radius: float, start: np.ndarray, speed: float,
                 horizon: float, step: float = 0.25, ccw: bool = True) -> np.ndarray:
     """The ground track (n, 2) of a UAV at ground speed ``speed`` circling at ``radius`` a centre
@@ -304,30 +335,12 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
 
     def predicted_seen(q: np.ndarray, p: np.ndarray, v: np.ndarray, centre: np.ndarray, radius: float,
                        rooms: list[tuple[np.ndarray, OrbitRoom]]) -> float:
-        """The fraction of the next h_look s in which the field's path about ``centre`` keeps the
-        vehicle (predicted at v) inside the VP of the nearest predicted position's room and in the
-        camera (the coordinated bank of the path's turn), from the cast VVs only (no new one)."""
-        import shapely
-
+        """predicted_view of the field's path about ``centre`` from the UAV's pose ``q`` over the
+        next h_look s, from the cast VVs only (no new one)."""
         step = 0.1
-        path = field_track(q, centre, v - air, radius, gains, h_look, step)
-        tau = np.arange(len(path)) * step
-        ground = path + np.outer(tau, air)  # the air-mass path drifts with the wind
         times = np.array([options.lead, *sorted(options.lookahead, reverse=True)])[: len(rooms)]
-        heading = np.unwrap(np.arctan2(*np.diff(ground, axis=0).T[::-1]))
-        rate = np.gradient(heading, step) if len(heading) > 1 else np.zeros_like(heading)
-        seen = 0
-        for k in range(len(heading)):
-            where = p + v * tau[k]
-            j = int(np.argmin(np.abs(times - tau[k])))
-            at, room = rooms[j]
-            rel = ground[k] - where + at
-            if not shapely.contains_xy(room.region(), rel[0], rel[1]):
-                continue
-            bank = coordinated_bank(uav.speed, rate[k])
-            seen += bool(camera_sees(camera, np.array([ground[k][0], ground[k][1], uav.altitude]), heading[k], bank,
-                                     np.array([where[0], where[1], 0.0])))
-        return seen / max(len(heading), 1)
+        return predicted_view(field_track(q, centre, v - air, radius, gains, h_look, step), step, air, p, v,
+                              rooms, times, uav, camera)
 
     def update(t: float, q: np.ndarray) -> np.ndarray:
         p, v = np.asarray(vehicle.position(t)), np.asarray(vehicle.velocity(t))
