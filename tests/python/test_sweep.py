@@ -112,6 +112,8 @@ def test_grid_and_zip_cases() -> None:
      "parameters.uav.altitude.step = 0"),
     ({"base": CHEAP_BASE, "parameters": {"control.beta": {"random": "cauchy", "count": 2}}},
      "parameters.control.beta.random = 'cauchy'"),
+    ({"base": CHEAP_BASE, "parameters": {"control.beta": {"random": {"count": 4}, "count": 2}}},
+     "parameters.control.beta.random = {'count': 4}: must be one of"),
     ({"base": CHEAP_BASE, "parameters": {"control.beta": {"random": "uniform", "low": 1, "count": 2}}},
      "random: uniform takes exactly count, high, low, random"),
     ({"base": CHEAP_BASE, "combine": "zip", "parameters": {"uav.altitude": [1, 2], "control.beta": [1]}},

@@ -232,7 +232,7 @@ _DRAWS = {"uniform": ("low", "high"), "normal": ("mean", "std"), "integers": ("l
 
 def _draws(key: str, value: Mapping[str, Any], rng: np.random.Generator) -> list[Any]:
     law = value["random"]
-    if law not in _DRAWS:
+    if not isinstance(law, str) or law not in _DRAWS:  # a mapping or list is unhashable: name it
         raise fail(f"{key}.random", law, "must be one of " + ", ".join(_DRAWS))
     expected = {"random", "count", *_DRAWS[law]}
     if set(value) != expected:
