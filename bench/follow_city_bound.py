@@ -101,9 +101,11 @@ def score_trace(scene: VisibilityScene, camera: DownwardCamera, uav: Any, vehicl
                for (p, h, b), s, g in zip(trace, sight, target))
 
 
-def interpolate(value: np.ndarray, heading: np.ndarray, points: np.ndarray, n_side: int) -> np.ndarray:
-    """value (h, m) on the grid at fractional heading indices ``heading`` (p,) and positions (p, 2);
-    linear in heading, bilinear in position, 0 outside the grid."""
+def stencil(shape: tuple[int, int], heading: np.ndarray, points: np.ndarray,
+            n_side: int) -> tuple[np.ndarray, np.ndarray]:
+    """Where a value (h, m) on the grid is read at fractional heading indices ``heading`` (p,) and
+    positions (p, 2): flat indices and weights (8, p), linear in heading, bilinear in position; weight 0
+    outside the grid."""
     u = (points[:, 0] + HALF) / SPACING
     w = (points[:, 1] + HALF) / SPACING
     inside = (u >= 0) & (u <= n_side - 1) & (w >= 0) & (w <= n_side - 1)
@@ -112,28 +114,48 @@ def interpolate(value: np.ndarray, heading: np.ndarray, points: np.ndarray, n_si
     fu, fw = u - i, w - j
     h0 = np.floor(heading).astype(int)
     fh = heading - h0
-    out = np.zeros(len(points))
+    cell = i * n_side + j
+    index, weight = [], []
     for dh, wh in ((0, 1.0 - fh), (1, fh)):
-        row = (h0 + dh) % value.shape[0]
-        cell = i * n_side + j
-        out += wh * ((1 - fu) * (1 - fw) * value[row, cell] + fu * (1 - fw) * value[row, cell + n_side]
-                     + (1 - fu) * fw * value[row, cell + 1] + fu * fw * value[row, cell + n_side + 1])
-    return np.where(inside, out, 0.0)
+        row = ((h0 + dh) % shape[0]) * shape[1]
+        for offset, wc in ((0, (1 - fu) * (1 - fw)), (n_side, fu * (1 - fw)), (1, (1 - fu) * fw),
+                           (n_side + 1, fu * fw)):
+            index.append(row + cell + offset)
+            weight.append(np.where(inside, wh * wc, 0.0))
+    return np.array(index), np.array(weight)
 
 
-def add_best_next(now: np.ndarray, later: np.ndarray, moves: dict[tuple[int, int], Any], rel: np.ndarray,
-                  headings: np.ndarray, drift: np.ndarray, n_side: int) -> None:
-    """One step of backward induction: now[bank] += the most value of ``later`` over the commands, the
-    next state reached by the command's second (``moves``: displacement, turn, final bank level) plus
+def interpolate(value: np.ndarray, heading: np.ndarray, points: np.ndarray, n_side: int) -> np.ndarray:
+    """value (h, m) on the grid at fractional heading indices ``heading`` (p,) and positions (p, 2)
+    (the stencil's reading), 0 outside the grid."""
+    index, weight = stencil(value.shape, heading, points, n_side)
+    return np.sum(value.reshape(-1)[index] * weight, axis=0)
+
+
+def transitions(moves: dict[tuple[int, int], Any], rel: np.ndarray, headings: np.ndarray, drift: np.ndarray,
+                n_side: int) -> list[tuple[int, int, np.ndarray, np.ndarray]]:
+    """For each (bank, command): the bank, the bank after, and the stencil of the next state of every
+    (heading, grid point): the command's second (``moves``: displacement, turn, final bank level) plus
     ``drift`` (the wind minus the vehicle's way), relative to the vehicle then."""
     cos_h, sin_h = np.cos(headings)[:, None], np.sin(headings)[:, None]
-    best = np.zeros_like(now)  # values are counts, >= 0
+    out = []
     for (b0, _command), ((dx, dy), turn, b1) in moves.items():
         tx = rel[None, :, 0] + cos_h * dx - sin_h * dy + drift[0]
         ty = rel[None, :, 1] + sin_h * dx + cos_h * dy + drift[1]
         turned = np.broadcast_to((np.arange(len(headings)) + turn / HEADING_STEP)[:, None], tx.shape)
-        after = interpolate(later[b1], turned.ravel(), np.column_stack([tx.ravel(), ty.ravel()]), n_side)
-        np.maximum(best[b0], after.reshape(tx.shape), out=best[b0])
+        index, weight = stencil((len(headings), len(rel)), turned.ravel(), np.column_stack([tx.ravel(), ty.ravel()]),
+                                n_side)
+        out.append((b0, b1, index, weight))
+    return out
+
+
+def add_best_next(now: np.ndarray, later: np.ndarray, steps: list[tuple[int, int, np.ndarray, np.ndarray]]) -> None:
+    """One step of backward induction: now[bank] += the most value of ``later`` over the commands
+    (``steps``: transitions())."""
+    best = np.zeros_like(now)  # values are counts, >= 0
+    for b0, b1, index, weight in steps:
+        after = np.sum(later[b1].reshape(-1)[index] * weight, axis=0)
+        np.maximum(best[b0], after.reshape(best.shape[1:]), out=best[b0])
     now += best
 
 
@@ -191,7 +213,8 @@ def estimate(file: Path) -> dict[str, Any]:
         sight = np.asarray(scene.line_of_sight(sky, np.repeat(ground[None, :], len(rel), axis=0)), dtype=bool)
         now = (cams & sight[None, None, :]).astype(float)
         if k + 1 < steps:
-            add_best_next(now, values[k + 1], moves, rel, headings, wind - (where[k + 1] - where[k]), n_side)
+            drift = wind - (where[k + 1] - where[k])
+            add_best_next(now, values[k + 1], transitions(moves, rel, headings, drift, n_side))
         values[k] = now.astype(np.float32)
     seconds = time.perf_counter() - started
     return {"value": float(values[0].max()) / steps, "seconds": seconds,

@@ -85,6 +85,7 @@ def follow(file: Path, horizon: int, prediction: str = "velocity") -> dict[str, 
     def plan(future: np.ndarray) -> np.ndarray:
         """The value one second ahead (bank, heading, position relative to the predicted vehicle)."""
         later = None
+        cached: dict[tuple[float, float], list] = {}  # transitions by drift: one set per update at a velocity
         for j in range(horizon, 0, -1):
             q = future[j]
             ground = np.asarray(scene.poi_on_surface(np.array([[q[0], q[1], bound.VEHICLE_HEIGHT]])))[0]
@@ -92,7 +93,11 @@ def follow(file: Path, horizon: int, prediction: str = "velocity") -> dict[str, 
             sight = np.asarray(scene.line_of_sight(sky, np.repeat(ground[None, :], len(rel), axis=0)), dtype=bool)
             now = (cams & sight[None, None, :]).astype(float)
             if later is not None:
-                bound.add_best_next(now, later, moves, rel, headings, air - (future[j + 1] - q), n_side)
+                drift = air - (future[j + 1] - q)
+                key = (round(float(drift[0]), 9), round(float(drift[1]), 9))
+                if key not in cached:
+                    cached[key] = bound.transitions(moves, rel, headings, drift, n_side)
+                bound.add_best_next(now, later, cached[key])
             later = now
         assert later is not None
         return later
