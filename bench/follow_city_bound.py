@@ -28,6 +28,7 @@ import math
 import os
 import sys
 import time
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -171,59 +172,79 @@ def state_value(value: np.ndarray, banks: np.ndarray, bank: float, heading: floa
     return out
 
 
+@dataclass
+class Programme:
+    """The dynamic programme's pieces for one scenario: the bank levels, the relative grid, the camera
+    table, the roll model's second for each (bank, command) and the flight altitude (world z)."""
+
+    model: RollModel
+    banks: np.ndarray
+    rel: np.ndarray
+    n_side: int
+    headings: np.ndarray
+    cams: np.ndarray  # (bank, heading, grid point)
+    moves: dict[tuple[int, int], Any]
+    altitude: float
+
+    @classmethod
+    def of(cls, scenario: FollowScenario, scene: VisibilityScene) -> "Programme":
+        uav, camera = scenario.uav, scenario.camera
+        model = RollModel(uav)
+        full = math.atan(uav.speed ** 2 / (9.80665 * uav.min_turn_radius))
+        banks = np.array([-1.0, -0.5, 0.0, 0.5, 1.0]) * full
+        axis = np.arange(-HALF, HALF + 1e-9, SPACING)
+        gx, gy = np.meshgrid(axis, axis, indexing="ij")
+        rel = np.column_stack([gx.ravel(), gy.ravel()])
+        headings = np.arange(round(2.0 * math.pi / HEADING_STEP)) * HEADING_STEP
+        cams = np.stack([camera_table(camera, uav.altitude, rel, headings, b) for b in banks])
+        rng = np.random.default_rng(1)
+        for _ in range(300):  # the vectorised camera against the library's
+            b, h, m = rng.integers(len(banks)), rng.integers(len(headings)), rng.integers(len(rel))
+            if bool(cams[b, h, m]) != bool(camera_sees(camera, np.array([rel[m, 0], rel[m, 1], uav.altitude]),
+                                                       headings[h], banks[b], np.zeros(3))):
+                raise RuntimeError("the camera table disagrees with camera_sees")
+        # Each (bank, command): the second's displacement (rotated by the heading later), turn and final bank.
+        moves = {}
+        for b0, bank in enumerate(banks):
+            for c, command in enumerate(banks):
+                shift, turn, final = one_second(model, uav.speed, bank, command)
+                moves[b0, c] = (shift, turn, int(np.argmin(np.abs(banks - final))))
+        return cls(model, banks, rel, len(axis), headings, cams, moves, scene.ground_level + uav.altitude)
+
+    def scored(self, scene: VisibilityScene, at: np.ndarray) -> np.ndarray:
+        """(bank, heading, grid point): 1 where a ray from the grid point reaches the vehicle at ``at``
+        (0.5 m above the surface) and the camera sees it."""
+        ground = np.asarray(scene.poi_on_surface(np.array([[at[0], at[1], VEHICLE_HEIGHT]])))[0]
+        sky = np.column_stack([self.rel + at, np.full(len(self.rel), self.altitude)])
+        sight = np.asarray(scene.line_of_sight(sky, np.repeat(ground[None, :], len(self.rel), axis=0)), dtype=bool)
+        return (self.cams & sight[None, None, :]).astype(float)
+
+
 def estimate(file: Path) -> dict[str, Any]:
     scenario = FollowScenario.load(file)
     env = scenario.city.load(scenario.origin)  # type: ignore[union-attr]
     scene = VisibilityScene(env)
     vehicle = scenario.city_vehicle(env)
-    uav, camera = scenario.uav, scenario.camera
     wind = np.array([scenario.wind.east, scenario.wind.north])
-    v = uav.speed
-    model = RollModel(uav)
-    full = math.atan(v * v / (9.80665 * uav.min_turn_radius))
-    banks = np.array([-1.0, -0.5, 0.0, 0.5, 1.0]) * full
     ticks = np.arange(math.floor(vehicle.end_time - vehicle.start_time) + 1) + vehicle.start_time
     where = np.asarray(vehicle.sample(ticks))
     steps = len(ticks)
-    axis = np.arange(-HALF, HALF + 1e-9, SPACING)
-    n_side = len(axis)
-    gx, gy = np.meshgrid(axis, axis, indexing="ij")
-    rel = np.column_stack([gx.ravel(), gy.ravel()])
-    headings = np.arange(round(2.0 * math.pi / HEADING_STEP)) * HEADING_STEP
-    cams = np.stack([camera_table(camera, uav.altitude, rel, headings, b) for b in banks])  # (bank, h, m)
-    rng = np.random.default_rng(1)
-    for _ in range(300):  # the vectorised camera against the library's
-        b, h, m = rng.integers(len(banks)), rng.integers(len(headings)), rng.integers(len(rel))
-        if bool(cams[b, h, m]) != bool(camera_sees(camera, np.array([rel[m, 0], rel[m, 1], uav.altitude]),
-                                                   headings[h], banks[b], np.zeros(3))):
-            raise RuntimeError("the camera table disagrees with camera_sees")
-    # Each (bank, command): the second's displacement (rotated by the heading below), turn and final bank.
-    moves = {}
-    for b0, bank in enumerate(banks):
-        for c, command in enumerate(banks):
-            shift, turn, final = one_second(model, v, bank, command)
-            moves[b0, c] = (shift, turn, int(np.argmin(np.abs(banks - final))))
-    altitude = scene.ground_level + uav.altitude
-    value = np.zeros((len(banks), len(headings), len(rel)))
-    values: list[np.ndarray] = [value] * steps
+    pro = Programme.of(scenario, scene)
+    values: list[np.ndarray] = [np.zeros(0, dtype=np.float32)] * steps
     started = time.perf_counter()
     for k in range(steps - 1, -1, -1):
-        ground = np.asarray(scene.poi_on_surface(np.array([[where[k, 0], where[k, 1], VEHICLE_HEIGHT]])))[0]
-        sky = np.column_stack([rel + where[k], np.full(len(rel), altitude)])
-        sight = np.asarray(scene.line_of_sight(sky, np.repeat(ground[None, :], len(rel), axis=0)), dtype=bool)
-        now = (cams & sight[None, None, :]).astype(float)
+        now = pro.scored(scene, where[k])
         if k + 1 < steps:
             drift = wind - (where[k + 1] - where[k])
-            add_best_next(now, values[k + 1], transitions(moves, rel, headings, drift, n_side))
+            add_best_next(now, values[k + 1], transitions(pro.moves, pro.rel, pro.headings, drift, pro.n_side))
         values[k] = now.astype(np.float32)
     seconds = time.perf_counter() - started
     return {"value": float(values[0].max()) / steps, "seconds": seconds,
-            **fly(values, scene, scenario, vehicle, model, banks, where, ticks, wind, altitude, n_side)}
+            **fly(values, scene, scenario, vehicle, pro, where, ticks, wind)}
 
 
-def fly(values: list[np.ndarray], scene: VisibilityScene, scenario: FollowScenario, vehicle: Any, model: RollModel,
-        banks: np.ndarray, where: np.ndarray, ticks: np.ndarray, wind: np.ndarray, altitude: float,
-        n_side: int) -> dict[str, Any]:
+def fly(values: list[np.ndarray], scene: VisibilityScene, scenario: FollowScenario, vehicle: Any, pro: Programme,
+        where: np.ndarray, ticks: np.ndarray, wind: np.ndarray) -> dict[str, Any]:
     """From the runs' start (200 m ahead of the vehicle along its heading, level), each second the command
     whose next state has the most value; scored every 0.1 s (a ray and camera_sees)."""
     uav, camera = scenario.uav, scenario.camera
@@ -233,14 +254,15 @@ def fly(values: list[np.ndarray], scene: VisibilityScene, scenario: FollowScenar
     seen, samples, commands = 0, 0, []
     for k in range(len(ticks)):
         best = (-1.0, 0, position, heading, bank, [])
-        for c, command in enumerate(banks):
-            p, h, b, trace = fly_second(model, uav.speed, wind, position, heading, bank, command)
-            score = state_value(values[k + 1], banks, b, h, p - where[k + 1], n_side) if k + 1 < len(ticks) else 0.0
+        for c, command in enumerate(pro.banks):
+            p, h, b, trace = fly_second(pro.model, uav.speed, wind, position, heading, bank, command)
+            score = (state_value(values[k + 1], pro.banks, b, h, p - where[k + 1], pro.n_side)
+                     if k + 1 < len(ticks) else 0.0)
             if score > best[0]:
                 best = (score, c, p, h, b, trace)
         _, c, position, heading, bank, trace = best
         commands.append(c)
-        seen += score_trace(scene, camera, uav, vehicle, ticks[k], trace, altitude)
+        seen += score_trace(scene, camera, uav, vehicle, ticks[k], trace, pro.altitude)
         samples += len(trace)
         if ticks[k] >= vehicle.end_time - 1e-9:
             break

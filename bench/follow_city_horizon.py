@@ -34,7 +34,6 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 
 import follow_city_bound as bound
 from vistrack import VisibilityScene
-from vistrack.flight import RollModel
 from vistrack.follow import FollowScenario
 
 SPACING, HALF = 20.0, 400.0  # m: the planner's relative-position grid (coarser than the bound's)
@@ -51,22 +50,7 @@ def follow(file: Path, horizon: int, prediction: str = "velocity") -> dict[str, 
     p = scenario.parameters
     known = scenario.wind_estimate or ((scenario.wind.east, scenario.wind.north) if p.wind_compensation else (0, 0))
     air = np.asarray(known, dtype=float)
-    v = uav.speed
-    model = RollModel(uav)
-    full = math.atan(v * v / (9.80665 * uav.min_turn_radius))
-    banks = np.array([-1.0, -0.5, 0.0, 0.5, 1.0]) * full
-    axis = np.arange(-HALF, HALF + 1e-9, SPACING)
-    n_side = len(axis)
-    gx, gy = np.meshgrid(axis, axis, indexing="ij")
-    rel = np.column_stack([gx.ravel(), gy.ravel()])
-    headings = np.arange(round(2.0 * math.pi / bound.HEADING_STEP)) * bound.HEADING_STEP
-    cams = np.stack([bound.camera_table(camera, uav.altitude, rel, headings, b) for b in banks])
-    moves = {}
-    for b0, bank in enumerate(banks):
-        for c, command in enumerate(banks):
-            shift, turn, final = bound.one_second(model, v, bank, command)
-            moves[b0, c] = (shift, turn, int(np.argmin(np.abs(banks - final))))
-    altitude = scene.ground_level + uav.altitude
+    pro = bound.Programme.of(scenario, scene)
 
     track = np.asarray(vehicle.positions)  # the road the vehicle drives, for --predict road
     arc = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(track, axis=0).T))])
@@ -88,15 +72,12 @@ def follow(file: Path, horizon: int, prediction: str = "velocity") -> dict[str, 
         cached: dict[tuple[float, float], list] = {}  # transitions by drift: one set per update at a velocity
         for j in range(horizon, 0, -1):
             q = future[j]
-            ground = np.asarray(scene.poi_on_surface(np.array([[q[0], q[1], bound.VEHICLE_HEIGHT]])))[0]
-            sky = np.column_stack([rel + q, np.full(len(rel), altitude)])
-            sight = np.asarray(scene.line_of_sight(sky, np.repeat(ground[None, :], len(rel), axis=0)), dtype=bool)
-            now = (cams & sight[None, None, :]).astype(float)
+            now = pro.scored(scene, q)
             if later is not None:
                 drift = air - (future[j + 1] - q)
                 key = (round(float(drift[0]), 9), round(float(drift[1]), 9))
                 if key not in cached:
-                    cached[key] = bound.transitions(moves, rel, headings, drift, n_side)
+                    cached[key] = bound.transitions(pro.moves, pro.rel, pro.headings, drift, pro.n_side)
                 bound.add_best_next(now, later, cached[key])
             later = now
         assert later is not None
@@ -114,14 +95,14 @@ def follow(file: Path, horizon: int, prediction: str = "velocity") -> dict[str, 
         future = predicted(t, np.asarray(vehicle.position(t)), np.asarray(vehicle.velocity(t)))
         value = plan(future)
         best: tuple[float, np.ndarray, float, float, list] | None = None
-        for command in banks:
-            q, h, b, trace = bound.fly_second(model, v, wind, position, heading, bank, command)
-            score = bound.state_value(value, banks, b, h, q - future[1], n_side)
+        for command in pro.banks:
+            q, h, b, trace = bound.fly_second(pro.model, uav.speed, wind, position, heading, bank, command)
+            score = bound.state_value(value, pro.banks, b, h, q - future[1], pro.n_side)
             if best is None or score > best[0]:
                 best = (score, q, h, b, trace)
         assert best is not None
         _, position, heading, bank, trace = best
-        seen += bound.score_trace(scene, camera, uav, vehicle, t, trace, altitude)
+        seen += bound.score_trace(scene, camera, uav, vehicle, t, trace, pro.altitude)
         samples += len(trace)
         k += 1
     return {"both": seen / max(samples, 1), "seconds": time.perf_counter() - started, "updates": k}
