@@ -87,7 +87,7 @@ def follow(file: Path, horizon: int, prediction: str = "velocity") -> dict[str, 
     heading = float(vehicle.heading(t0))
     position = np.asarray(vehicle.position(t0)) + 200.0 * np.array([math.cos(heading), math.sin(heading)])
     bank = 0.0
-    seen = samples = 0
+    seen = samples = lost = 0
     started = time.perf_counter()
     k = 0
     while t0 + k <= t_end - 1e-9:
@@ -98,14 +98,18 @@ def follow(file: Path, horizon: int, prediction: str = "velocity") -> dict[str, 
         for command in pro.banks:
             q, h, b, trace = bound.fly_second(pro.model, uav.speed, wind, position, heading, bank, command)
             score = bound.state_value(value, pro.banks, b, h, q - future[1], pro.n_side)
+            if score <= 0.0:  # nothing seen over the horizon from any next state (off the grid): head for it
+                away = future[1] - q
+                score = -abs(math.remainder(math.atan2(away[1], away[0]) - h, 2.0 * math.pi))
             if best is None or score > best[0]:
                 best = (score, q, h, b, trace)
         assert best is not None
+        lost += best[0] <= 0.0
         _, position, heading, bank, trace = best
         seen += bound.score_trace(scene, camera, uav, vehicle, t, trace, pro.altitude)
         samples += len(trace)
         k += 1
-    return {"both": seen / max(samples, 1), "seconds": time.perf_counter() - started, "updates": k}
+    return {"both": seen / max(samples, 1), "seconds": time.perf_counter() - started, "updates": k, "lost": lost}
 
 
 def main() -> int:
@@ -117,14 +121,15 @@ def main() -> int:
                              "future (foresight)")
     args = parser.parse_args()
     how = {"velocity": "at its velocity", "road": "along its road", "true": "its true future"}[args.predict]
-    print(f"| file | receding horizon ({args.horizon} s, the vehicle {how}), camera and line of sight | updates |"
-          "\n|---|---|---|")
+    print(f"| file | receding horizon ({args.horizon} s, the vehicle {how}), camera and line of sight | updates | "
+          "updates with nothing in sight over the horizon (heading for the vehicle) |\n|---|---|---|---|")
     for file in args.files:
         if not FollowScenario.load(file).city_available():
-            print(f"| {file.name} | skipped: its city data is missing | |")
+            print(f"| {file.name} | skipped: its city data is missing | | |")
             continue
         out = follow(file, args.horizon, args.predict)
-        print(f"| {file.name} | {100 * out['both']:.1f} % | {out['updates']} |  ({out['seconds']:.0f} s)", flush=True)
+        print(f"| {file.name} | {100 * out['both']:.1f} % | {out['updates']} | {out['lost']} |"
+              f"  ({out['seconds']:.0f} s)", flush=True)
     return 0
 
 
