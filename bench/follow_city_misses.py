@@ -18,17 +18,16 @@ import sys
 from pathlib import Path
 
 import numpy as np
-import yaml
 
 REPO = Path(__file__).resolve().parents[1]
 if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
+from follow_city_options import changed, city_orbit, parse_sets
 from vistrack import VisibilityScene
 from vistrack.follow import FollowScenario
-from vistrack.follow.city_orbit import CityOrbitResult, city_orbit_follow
-from vistrack.follow.keys import city_orbit_block
+from vistrack.follow.city_orbit import CityOrbitResult
 
 FULL_BANK_DEG = 40.0  # the roll model's bank limit at 21 m/s and r_min 50 m is 42 degrees
 
@@ -76,18 +75,9 @@ def main() -> int:
         print(f"{args.file.name}: skipped, its city data is missing (../shared/data)")
         return 0
     if args.set:
-        options = vars(scenario.city_orbit).copy()
-        options["lookahead"] = list(options["lookahead"])
-        for item in args.set:
-            key, _, value = item.partition("=")
-            options[key.strip()] = yaml.safe_load(value)
-        scenario.city_orbit = city_orbit_block({"city_orbit": options})
+        changed(scenario, parse_sets(args.set))
     env = scenario.city.load(scenario.origin)  # type: ignore[union-attr]
-    p = scenario.parameters
-    known = scenario.wind_estimate or ((scenario.wind.east, scenario.wind.north) if p.wind_compensation else None)
-    result = city_orbit_follow(scenario.city_vehicle(env), scenario.uav, VisibilityScene(env), parameters=p,
-                               wind_estimate=known, wind=scenario.wind, flight=scenario.flight,
-                               camera=scenario.camera, options=scenario.city_orbit)
+    result = city_orbit(scenario, VisibilityScene(env), env)
     print(f"{args.file.name}, city orbit ({'options ' + ' '.join(args.set) if args.set else 'the file options'})")
     report(result)
     return 0

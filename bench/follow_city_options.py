@@ -30,20 +30,38 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 
 from vistrack import VisibilityScene
 from vistrack.follow import FollowScenario
-from vistrack.follow.city_orbit import city_orbit_follow
+from vistrack.follow.city_orbit import CityOrbitResult, city_orbit_follow
 from vistrack.follow.keys import city_orbit_block
 
 FILES = [REPO / "examples" / f"follow_{name}_city.yaml" for name in ("straight", "wind", "stop", "truck")]
 KEYS = ("camera_fraction", "line_of_sight_fraction", "camera_and_line_of_sight_fraction")
 
 
-def fly(scenario: FollowScenario, scene: VisibilityScene, env: Any) -> dict[str, Any]:
+def city_orbit(scenario: FollowScenario, scene: VisibilityScene, env: Any) -> CityOrbitResult:
     """The city orbit as ``FollowScenario.run`` flies it (the same wind knowledge, flight and camera)."""
     p = scenario.parameters
     known = scenario.wind_estimate or ((scenario.wind.east, scenario.wind.north) if p.wind_compensation else None)
     return city_orbit_follow(scenario.city_vehicle(env), scenario.uav, scene, parameters=p, wind_estimate=known,
                              wind=scenario.wind, flight=scenario.flight, camera=scenario.camera,
-                             options=scenario.city_orbit).metrics
+                             options=scenario.city_orbit)
+
+
+def fly(scenario: FollowScenario, scene: VisibilityScene, env: Any) -> dict[str, Any]:
+    return city_orbit(scenario, scene, env).metrics
+
+
+def changed(scenario: FollowScenario, changes: dict[str, Any]) -> None:
+    """The scenario's city_orbit options with ``changes`` (by name, YAML values) applied and validated."""
+    scenario.city_orbit = city_orbit_block({"city_orbit": {**_fields(scenario), **changes}})
+
+
+def parse_sets(items: list[str]) -> dict[str, Any]:
+    """``--set KEY=VALUE`` items as {key: YAML value}."""
+    changes: dict[str, Any] = {}
+    for item in items:
+        key, _, value = item.partition("=")
+        changes[key.strip()] = yaml.safe_load(value)
+    return changes
 
 
 def main() -> int:
@@ -52,10 +70,7 @@ def main() -> int:
     parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                         help="a city_orbit option (YAML value); repeatable")
     args = parser.parse_args()
-    changes: dict[str, Any] = {}
-    for item in args.set:
-        key, _, value = item.partition("=")
-        changes[key.strip()] = yaml.safe_load(value)
+    changes = parse_sets(args.set)
     print(f"city orbit with {changes or 'the files options'} against the files' options; camera / line of sight / "
           "both, %")
     print("| file | the file's options | with the change | both, change (points) |\n|---|---|---|---|")
@@ -68,7 +83,7 @@ def main() -> int:
         scene = VisibilityScene(env)
         start = time.perf_counter()
         before = fly(scenario, scene, env)
-        scenario.city_orbit = city_orbit_block({"city_orbit": {**_fields(scenario), **changes}})
+        changed(scenario, changes)
         after = fly(scenario, scene, env)
         shown = [" / ".join(f"{100 * m[k]:.1f}" for k in KEYS) for m in (before, after)]
         delta = 100 * (after[KEYS[2]] - before[KEYS[2]])

@@ -312,13 +312,15 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
             return field_track(q, center, v - air, radius, gains, horizon)
         return orbit_track(center, v - air, radius, q[:2], uav.speed, horizon, ccw=ccw)
 
+    # When the rooms of rooms_ahead are reached: the lead's, then the look-ahead's, farthest first.
+    look_times = np.array([options.lead, *sorted(options.lookahead, reverse=True)])
+
     def rooms_ahead(p: np.ndarray, v: np.ndarray) -> list[tuple[np.ndarray, OrbitRoom]]:
         """(vehicle position, room) at the lead and at the look-ahead times: the lead's VV always
         (new when not cached), the farthest look-ahead's when no VV was cast yet in this update,
         the others only when cached: at most one new VV per update."""
         found: list[tuple[np.ndarray, OrbitRoom]] = []
-        times = [options.lead, *sorted(options.lookahead, reverse=True)]
-        for k, tau in enumerate(times):
+        for k, tau in enumerate(look_times):
             where = p + v * tau
             point = np.asarray(scene.poi_on_surface(np.array([[where[0], where[1], options.vehicle_height]])))[0]
             if k > 0 and not cache.has(point) and (k > 1 or cache.computed > computed_before[0]):
@@ -338,9 +340,8 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
         """predicted_view of the field's path about ``centre`` from the UAV's pose ``q`` over the
         next h_look s, from the cast VVs only (no new one)."""
         step = 0.1
-        times = np.array([options.lead, *sorted(options.lookahead, reverse=True)])[: len(rooms)]
         return predicted_view(field_track(q, centre, v - air, radius, gains, h_look, step), step, air, p, v,
-                              rooms, times, uav, camera)
+                              rooms, look_times[: len(rooms)], uav, camera)
 
     def update(t: float, q: np.ndarray) -> np.ndarray:
         p, v = np.asarray(vehicle.position(t)), np.asarray(vehicle.velocity(t))

@@ -74,8 +74,8 @@ def _plan_from_json(text: str, source: str) -> Mission:
         raise fail(f"{source}: mission.version", mission.get("version") if isinstance(mission, dict) else mission,
                    "vistrack reads mission version 2")
     code = mission.get("firmwareType", -1)
-    codes = {code: name for name, code in FIRMWARE_TYPES.items()}
-    firmware = codes.get(code) if isinstance(code, int) and not isinstance(code, bool) else None
+    names = {number: name for name, number in FIRMWARE_TYPES.items()}
+    firmware = names.get(code) if isinstance(code, int) and not isinstance(code, bool) else None
     if firmware is None:
         raise fail(f"{source}: mission.firmwareType", mission.get("firmwareType"), "must be 3 (ArduPilot) or 12 (PX4)")
     raw_items = mission.get("items")
