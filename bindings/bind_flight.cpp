@@ -236,6 +236,14 @@ void bind_flight(py::module_& parent) {
       .def_property_readonly("distance", &CurveL1::distance, "L1, length units")
       .def_property_readonly("path", [](const CurveL1& g) { return to_array(g.path()); }, "array (n, 2)");
 
+  py::class_<TurnRateHold, FlightGuidance>(
+      m, "TurnRateHold",
+      "Holds a commanded turn rate, set during flight (set_turn_rate from on_step): the roll model banks towards "
+      "atan(v rate / g), the Dubins vehicle turns at once. Never done by itself.")
+      .def(py::init<double>(), py::arg("turn_rate") = 0.0, "turn_rate: rad/s, finite (the vehicle clamps it).")
+      .def("set_turn_rate", &TurnRateHold::set_turn_rate, py::arg("turn_rate"), "From the next step on (rad/s).")
+      .def_property_readonly("turn_rate", &TurnRateHold::turn_rate, "rad/s");
+
   py::class_<WaypointFollower, FlightGuidance>(
       m, "WaypointFollower",
       "Classical waypoint navigation on the law (5): the line from the previous waypoint (the start for the "

@@ -46,5 +46,6 @@ void bind_waypoint_nav(pybind11::module_& m);  // vistrack._core.waypoint_nav
 void bind_path_following(pybind11::module_& m);  // flight.PathFollower, bindings/bind_path_following.cpp
 void bind_loiter(pybind11::module_& m);  // loiter planners and coverage, bindings/bind_loiter.cpp
 void bind_follow(pybind11::module_& m);  // vistrack._core.follow
+void bind_follow_horizon(pybind11::module_& m);  // follow.HorizonPlanner, after bind_follow
 
 }  // namespace vistrack::bindings

@@ -54,4 +54,5 @@ PYBIND11_MODULE(_core, m) {
   vistrack::bindings::bind_path_following(m);
   vistrack::bindings::bind_loiter(m);
   vistrack::bindings::bind_follow(m);
+  vistrack::bindings::bind_follow_horizon(m);
 }

@@ -46,6 +46,7 @@ CurveL1 = _flight.CurveL1
 FlightGuidance = _flight.FlightGuidance
 WaypointFollower = _flight.WaypointFollower
 PathFollower = _flight.PathFollower  # lines and arcs (flight.hpp, Path following; the loiter plans)
+TurnRateHold = _flight.TurnRateHold  # a commanded turn rate held (the horizon city follower)
 FlightTrajectory = _flight.FlightTrajectory
 dryden_low_altitude = _flight.dryden_low_altitude
 fly = _flight.fly
@@ -65,6 +66,7 @@ __all__ = [
     "LineFeedback",
     "PathFollower",
     "RollModel",
+    "TurnRateHold",
     "WaypointFollower",
     "Wind",
     "WindField",

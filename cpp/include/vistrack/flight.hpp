@@ -309,6 +309,25 @@ class CurveL1 : public FlightGuidance {
   std::vector<Vec2> path_;
 };
 
+// Holds a commanded turn rate, set during flight from fly()'s on_step (the horizon follower's bank
+// command as g tan(bank) / v, follow_horizon.hpp): the roll model banks towards atan(v rate / g),
+// the Dubins vehicle turns at once. Never done by itself.
+class TurnRateHold : public FlightGuidance {
+ public:
+  explicit TurnRateHold(double turn_rate = 0.0) { set_turn_rate(turn_rate); }
+  // Finite (the vehicle clamps it to +-v/R); from the next step on.
+  void set_turn_rate(double turn_rate);
+  double turn_rate() const { return rate_; }
+
+  void start(const Configuration&, double) override {}
+  GuidanceCommand command(const Configuration& state, double t) const override;
+  void advance(const Configuration&, double) override {}
+  bool done() const override { return false; }
+
+ private:
+  double rate_ = 0.0;
+};
+
 // Classical waypoint navigation (WN) on the law (5) (or L1Line): fly the line from the previous waypoint
 // (the start position for the first) to the active waypoint; switch to the next one when within
 // the acceptance radius R_WP. With finish_at_last the guidance is done at the last waypoint;

@@ -7,7 +7,7 @@ import numpy
 import numpy.typing
 import typing
 import vistrack._core
-__all__: list[str] = ['CurveL1', 'DrydenLowAltitude', 'FlightGuidance', 'FlightSmoothness', 'FlightTrajectory', 'Gusts', 'L1Line', 'LineFeedback', 'LineFeedbackTerms', 'PathFollower', 'PathTracking', 'RollModel', 'WaypointFollower', 'Wind', 'WindField', 'coordinated_bank', 'dryden_low_altitude', 'flight_smoothness', 'fly', 'paper_gains']
+__all__: list[str] = ['CurveL1', 'DrydenLowAltitude', 'FlightGuidance', 'FlightSmoothness', 'FlightTrajectory', 'Gusts', 'L1Line', 'LineFeedback', 'LineFeedbackTerms', 'PathFollower', 'PathTracking', 'RollModel', 'TurnRateHold', 'WaypointFollower', 'Wind', 'WindField', 'coordinated_bank', 'dryden_low_altitude', 'flight_smoothness', 'fly', 'paper_gains']
 class Gusts:
     """
     Dryden turbulence (MIL-F-8785C, horizontal): RMS intensity sigma_u = sigma_v (speed units), length scale L_u = L_v (length units), seed. Reproducible from the seed.
@@ -321,6 +321,23 @@ class CurveL1(FlightGuidance):
     def path(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
         """
         array (n, 2)
+        """
+class TurnRateHold(FlightGuidance):
+    """
+    Holds a commanded turn rate, set during flight (set_turn_rate from on_step): the roll model banks towards atan(v rate / g), the Dubins vehicle turns at once. Never done by itself.
+    """
+    def __init__(self, turn_rate: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> None:
+        """
+        turn_rate: rad/s, finite (the vehicle clamps it).
+        """
+    def set_turn_rate(self, turn_rate: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        """
+        From the next step on (rad/s).
+        """
+    @property
+    def turn_rate(self) -> float:
+        """
+        rad/s
         """
 class WaypointFollower(FlightGuidance):
     """

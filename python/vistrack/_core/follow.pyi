@@ -8,7 +8,7 @@ import numpy.typing
 import typing
 import vistrack._core
 import vistrack._core.flight
-__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'LoiterShape', 'SinusoidShape', 'ThresholdChoice', 'VehicleLeg', 'VehicleReportOptions', 'along_track_rate', 'arc_length', 'camera_reach', 'camera_sees', 'camera_threshold', 'default_uav', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_shape', 'sinusoid_slope', 'speed_ratio']
+__all__: list[str] = ['DownwardCamera', 'FollowFlight', 'FollowMetrics', 'FollowObservation', 'FollowParameters', 'FollowPlanner', 'FollowRun', 'FollowTick', 'GroundVehicle', 'HorizonChoice', 'HorizonOptions', 'HorizonPlanner', 'HorizonSecond', 'LoiterShape', 'SinusoidShape', 'ThresholdChoice', 'VehicleLeg', 'VehicleReportOptions', 'along_track_rate', 'arc_length', 'camera_reach', 'camera_sees', 'camera_threshold', 'default_uav', 'follow', 'orbit_follow', 'phase_at_arc', 'sinusoid_amplitude', 'sinusoid_shape', 'sinusoid_slope', 'speed_ratio']
 class VehicleLeg:
     """
     One leg of a route: heading (rad from east), speed at its start and end (m/s, linear in between; 0 and 0 is a stop), duration (s).
@@ -843,6 +843,136 @@ class FollowRun:
     def wind(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 2]"]:
         """
         (n, 2) true wind
+        """
+class HorizonOptions:
+    """
+    The horizon follower's programme: horizon (s, whole), the relative-position grid (spacing and half_width, m), heading_step_deg, vehicle_height (m above the surface, where the rays end) and the integration step dt (s) of a second's flight.
+    """
+    def __init__(self, *, horizon: typing.SupportsInt | typing.SupportsIndex = 24, spacing: typing.SupportsFloat | typing.SupportsIndex = 20.0, half_width: typing.SupportsFloat | typing.SupportsIndex = 400.0, heading_step_deg: typing.SupportsFloat | typing.SupportsIndex = 10.0, vehicle_height: typing.SupportsFloat | typing.SupportsIndex = 0.5, dt: typing.SupportsFloat | typing.SupportsIndex = 0.02) -> None:
+        """
+        Every field by keyword; VistrackError naming a bad one.
+        """
+    @property
+    def dt(self) -> float:
+        """
+        s
+        """
+    @property
+    def half_width(self) -> float:
+        """
+        m, the grid's half-width about the vehicle
+        """
+    @property
+    def heading_step_deg(self) -> float:
+        """
+        degrees
+        """
+    @property
+    def horizon(self) -> int:
+        """
+        s of prediction
+        """
+    @property
+    def spacing(self) -> float:
+        """
+        m, the grid's step
+        """
+    @property
+    def vehicle_height(self) -> float:
+        """
+        m above the surface
+        """
+class HorizonSecond:
+    """
+    The UAV after a second with a bank command held.
+    """
+    @property
+    def bank(self) -> float:
+        """
+        rad
+        """
+    @property
+    def heading(self) -> float:
+        """
+        rad (not wrapped)
+        """
+    @property
+    def position(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[2, 1]"]:
+        """
+        (2,), m
+        """
+class HorizonChoice:
+    """
+    The horizon follower's command for the next second.
+    """
+    @property
+    def bank_command(self) -> float:
+        """
+        rad, positive left wing down
+        """
+    @property
+    def heading_for_vehicle(self) -> bool:
+        """
+        nothing in sight from any command's end: the command steers for the vehicle
+        """
+    @property
+    def next(self) -> HorizonSecond:
+        """
+        the UAV a second later as planned (HorizonSecond)
+        """
+    @property
+    def turn_rate(self) -> float:
+        """
+        rad/s, g tan(bank_command) / v
+        """
+    @property
+    def value(self) -> float:
+        """
+        seconds in sight the programme expects over the horizon
+        """
+class HorizonPlanner:
+    """
+    Receding-horizon dynamic programming over bank commands (one per second, five levels) with the vehicle predicted over the horizon; a second scores when a ray reaches the vehicle and the camera sees it.
+    """
+    def __init__(self, scene: vistrack._core.VisibilityScene, uav: vistrack._core.Uav, camera: DownwardCamera, flight_altitude: typing.SupportsFloat | typing.SupportsIndex, options: HorizonOptions = ...) -> None:
+        """
+        flight_altitude: world z of the flight (ground level + uav.altitude). The camera table is built here.
+        """
+    def choose(self, vehicle: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], wind: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], position: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], heading: typing.SupportsFloat | typing.SupportsIndex, bank: typing.SupportsFloat | typing.SupportsIndex) -> HorizonChoice:
+        """
+        The command for the next second (HorizonChoice). vehicle: (horizon + 1, 2), its predicted positions at 0, 1, ..., horizon s; wind: (2,), the wind the follower knows; the UAV's position (2,), heading, bank.
+        """
+    def first_values(self, vehicle: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], wind: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> numpy.typing.NDArray[numpy.float32]:
+        """
+        V_1: (bank level, heading index, east index, north index), the seconds in sight from each state a second ahead over the rest of the horizon.
+        """
+    def fly_second(self, position: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], heading: typing.SupportsFloat | typing.SupportsIndex, bank: typing.SupportsFloat | typing.SupportsIndex, bank_command: typing.SupportsFloat | typing.SupportsIndex, wind: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"]) -> HorizonSecond:
+        """
+        The UAV's second with bank_command held (HorizonSecond), integrated as the flight layer's discrete step.
+        """
+    def value_at(self, values: typing.Annotated[numpy.typing.ArrayLike, numpy.float32], relative: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2, 1]"], heading: typing.SupportsFloat | typing.SupportsIndex, bank: typing.SupportsFloat | typing.SupportsIndex) -> float:
+        """
+        first_values at a continuous state (relative: UAV - vehicle, (2,)): linear in bank and heading, bilinear in position, 0 off the grid.
+        """
+    @property
+    def banks(self) -> list[float]:
+        """
+        the five bank levels, rad
+        """
+    @property
+    def grid_side(self) -> int:
+        """
+        grid points per axis
+        """
+    @property
+    def heading_count(self) -> int:
+        """
+        headings on the grid
+        """
+    @property
+    def options(self) -> HorizonOptions:
+        """
+        HorizonOptions
         """
 def along_track_rate(x: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], amplitude: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], period_distance: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], uav_speed: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> typing.Any:
     """

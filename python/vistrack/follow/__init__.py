@@ -23,8 +23,10 @@ through the buildings.
 - ``simulation``: the API above; ``scenario``: follow scenarios from YAML and the runs
   ``vistrack follow`` makes (old address: ``vistrack.follow_scenario``); ``files``: vehicle tracks, road paths,
   trajectories as CSV; ``to_mission``: a run's waypoints as an autopilot mission;
-  ``city_orbit`` (beyond the paper): with a city, an orbit about the vehicle inside the visibility
-  polygon of its predicted position.
+  ``city_horizon`` (beyond the paper, the default city follower): with a city, bank commands planned
+  each second over a 24 s prediction of the vehicle by dynamic programming with rays through the city;
+  ``city_orbit`` (``planner: orbit``): an orbit about the vehicle inside the visibility polygon of its
+  predicted position; ``city_runs``: their shared result.
 """
 
 from __future__ import annotations

@@ -20,16 +20,18 @@ along the orbit's predicted ground track, renewed at every update.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Optional, Sequence
 
 import numpy as np
 
 from .. import flight as _flight
 from .._core import Control, GuidanceGains, OrbitState, Uav, VisibilityScene, VistrackError, steering
+from .._core.follow import HorizonOptions
 from .._core.loiter import STANDARD_GRAVITY
 from ..city_orbits import OrbitRoom, VolumeCache, orbit_room
 from ..preview import preview
+from .city_runs import CityOrbitResult, OrbitUpdate, circle_exists, scored_flight
 from .simulation import (
     DownwardCamera,
     FollowFlight,
@@ -45,6 +47,7 @@ __all__ = ["CityOrbitOptions", "CityOrbitResult", "OrbitUpdate", "camera_radius"
            "predicted_view"]
 
 RADIUS_CHOICES = ("lemma6", "camera", "max")
+PLANNERS = ("horizon", "orbit")
 
 
 @dataclass
@@ -74,6 +77,10 @@ class CityOrbitOptions:
     off_centre_max_speed: Optional[float] = None
     choose: str = "predicted"  # where no circle fits about the vehicle: "predicted" (off-centre or about, by
     # the predicted flight's line of sight and camera) or "off_centre" (always off-centre when one fits)
+    # The city follower: "horizon" (follow.city_horizon: receding-horizon bank commands, the default) or
+    # "orbit" (this module's orbit inside the visibility polygon, the issue's part 6); its look-ahead, s.
+    planner: str = "horizon"
+    horizon: int = HorizonOptions().horizon
 
     def validate(self) -> None:
         for name in ("reach", "resolution_deg", "grid"):
@@ -97,61 +104,12 @@ class CityOrbitOptions:
             raise VistrackError(f"city_orbit.guidance = {self.guidance!r}: must be 'field' or 'circle'")
         if any(not (math.isfinite(t) and t > 0.0) for t in self.lookahead):
             raise VistrackError(f"city_orbit.lookahead = {self.lookahead}: times must be > 0")
+        if self.planner not in PLANNERS:
+            raise VistrackError(f"city_orbit.planner = {self.planner!r}: must be one of " + ", ".join(PLANNERS))
+        if isinstance(self.horizon, bool) or not isinstance(self.horizon, int) or not 1 <= self.horizon <= 600:
+            raise VistrackError(f"city_orbit.horizon = {self.horizon!r}: must be a whole number of seconds, 1-600")
         if self.radius not in RADIUS_CHOICES:
             raise VistrackError(f"city_orbit.radius = {self.radius!r}: must be one of " + ", ".join(RADIUS_CHOICES))
-
-
-@dataclass
-class OrbitUpdate:
-    """One update: the orbit's centre offset from the vehicle, its radius, MaxRadius about the
-    predicted position, the turn-limited radius, whether a flyable circle fits about the vehicle
-    and anywhere in the VP, and how many VVs this update cast."""
-
-    t: float
-    shift: tuple[float, float]
-    radius: float
-    max_radius: float
-    turn_radius: float
-    fits_about: bool
-    fits_anywhere: bool
-    new_volumes: int
-
-
-@dataclass
-class CityOrbitResult:
-    """The flown city orbit: samples (t, state x y psi, bank, vehicle), the updates, and per
-    sample the line of sight and whether the camera sees the vehicle."""
-
-    t: np.ndarray
-    state: np.ndarray
-    bank: np.ndarray
-    vehicle: np.ndarray
-    updates: list[OrbitUpdate]
-    line_of_sight: np.ndarray
-    in_view: np.ndarray
-    volumes: int
-    strategy: str = "city_orbit"
-    notes: list[str] = field(default_factory=list)
-
-    @property
-    def metrics(self) -> dict[str, Any]:
-        weights = np.diff(self.t, append=self.t[-1])  # each sample holds until the next
-        total = float(weights.sum()) or 1.0
-        times = np.array([u.t for u in self.updates])
-        held = np.diff(times, append=float(self.t[-1]))  # each update holds until the next
-        span = float(held.sum()) or 1.0
-        return {
-            "strategy": self.strategy, "duration_s": float(self.t[-1] - self.t[0]),
-            "camera_fraction": float(weights @ self.in_view) / total,
-            "line_of_sight_fraction": float(weights @ self.line_of_sight) / total,
-            "camera_and_line_of_sight_fraction": float(weights @ (self.in_view & self.line_of_sight)) / total,
-            "flyable_circle_about_vehicle_fraction": float(held @ [u.fits_about for u in self.updates]) / span,
-            "flyable_circle_in_polygon_fraction": float(held @ [u.fits_anywhere for u in self.updates]) / span,
-            "mean_radius_m": float(np.mean([u.radius for u in self.updates])),
-            "mean_vehicle_distance_m": float(weights @ np.hypot(*(self.state[:, :2] - self.vehicle).T)) / total,
-            "updates": len(self.updates), "volumes": self.volumes,
-            "max_new_volumes_per_update": int(max((u.new_volumes for u in self.updates), default=0)),
-        }
 
 
 def _reach_angle(camera: DownwardCamera) -> float:
@@ -361,9 +319,9 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
             return track(q, p + shift, v, radius)
         now = rooms[0][1]
         room_about = min(r.max_radius for _, r in rooms)  # the room about the vehicle over the look-ahead
-        about = now.max_radius - margin >= turn
+        about, anywhere = circle_exists(now, turn, margin)
         wanted = max(turn, min(lemma6, seen_radius)) if options.radius == "camera" else lemma6
-        shift, radius, anywhere = np.zeros(2), lemma6, about
+        shift, radius = np.zeros(2), lemma6
         if room_about - margin >= turn:
             radius = room_about - margin if options.radius == "max" else min(wanted, room_about - margin)
             if last is not None and not np.any(last.shift):
@@ -376,7 +334,6 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
                 if found is not None:
                     shift, radius = found, size
                     break
-            anywhere = about or now.flyable_circle(turn + margin) is not None
             centred = max(turn, min(lemma6, now.max_radius - margin))
             limit = options.off_centre_max_speed
             if not options.off_centre or (limit is not None and float(np.hypot(*v)) > limit):
@@ -414,14 +371,4 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
     duration = flight.max_time if flight.max_time > 0.0 else t_end - t0
     trajectory = _flight.fly(guidance, start, uav.speed, uav.min_turn_radius, wind=wind, dt=flight.dt,
                              max_time=duration, integration=flight.integration, t0=t0, on_step=on_step, uav=uav)
-    t = np.asarray(trajectory.t)
-    state = np.column_stack([trajectory.x, trajectory.y, trajectory.psi])
-    bank = np.asarray(trajectory.bank)
-    where = np.asarray(vehicle.sample(t))
-    in_view = np.array([camera_sees(camera, np.array([x, y, uav.altitude]), psi, b, np.array([gx, gy, 0.0]))
-                        for (x, y, psi), b, (gx, gy) in zip(state, bank, where)], dtype=bool)
-    n = len(t)
-    ground = np.asarray(scene.poi_on_surface(np.column_stack([where, np.full(n, options.vehicle_height)])))
-    sky = np.column_stack([state[:, :2], np.full(n, altitude)])
-    visible = np.asarray(scene.line_of_sight(sky, ground), dtype=bool)
-    return CityOrbitResult(t, state, bank, where, updates, visible, in_view, cache.computed)
+    return scored_flight(trajectory, vehicle, scene, uav, camera, options.vehicle_height, updates, cache.computed)

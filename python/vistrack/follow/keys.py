@@ -64,6 +64,11 @@ def city_orbit_block(data: Mapping[str, Any]) -> CityOrbitOptions:
             value = boolean(name, value)
         elif isinstance(default, float):
             value = number(name, value)
+        elif key == "horizon":  # whole seconds
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) \
+                    or value != int(value):
+                raise fail(name, value, "must be a whole number of seconds")
+            value = int(value)
         elif key == "lookahead":
             if not isinstance(value, list) or not value:
                 raise fail(name, value, "must be a non-empty list of times (s)")

@@ -30,8 +30,9 @@ counter-clockwise from east unless a compass word is given)::
                                   # the vehicle's 1 Hz reports as both followers get them (beyond the paper)
     city: {mesh: city.obj, up: y, road: road.csv}   # the legs' speeds on a road, at uav.altitude
                                   # (a CSV polyline; or vehicle.route on the city's road network)
-    city_orbit: {reach: 400, margin: 3, radius: lemma6, grow: 1, choose: predicted, lookahead: [3, 6]}
-                                  # the city orbit's options (vt.follow.city_orbit.CityOrbitOptions)
+    city_orbit: {planner: horizon, horizon: 24, reach: 400, margin: 3, radius: lemma6, lookahead: [3, 6]}
+                                  # the city follower (vt.follow.city_orbit.CityOrbitOptions): bank commands
+                                  # over a 24 s horizon (follow.city_horizon), or planner: orbit
 
 uav, wind, camera, city and georeference are the blocks every scenario shares
 (:mod:`vistrack.scenario_blocks`).
@@ -68,6 +69,7 @@ from ..scenario_blocks import (
 )
 from ..schema import beta as schema_beta
 from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
+from .city_horizon import city_horizon_follow
 from .city_orbit import CityOrbitOptions, CityOrbitResult, city_orbit_follow
 from .fdm import FollowFdm, fly_follow_fdm
 from .files import read_road_path, read_vehicle_track
@@ -252,12 +254,14 @@ class FollowScenario:
             if flies and study.city_baseline_reason is None:
                 study.city_baseline = baseline(vehicle, uav, self.baseline_radius, control=self.baseline_control,
                                                parameters=parameters, scene=scene, **common)
-            say("city orbit")  # beyond every anchor: orbits inside the visibility polygons (follow.city_orbit)
+            # Beyond every anchor (follow.city_horizon, or follow.city_orbit's orbits inside the visibility
+            # polygons); it observes the vehicle at each update itself, about the vehicle (no offset schedule).
+            say(f"city {self.city_orbit.planner}")
             known = self.wind_estimate or ((self.wind.east, self.wind.north) if parameters.wind_compensation else None)
-            # It observes the vehicle at each update itself, about the vehicle (no offset schedule).
-            study.city_orbit = city_orbit_follow(vehicle, uav, scene, parameters=parameters, wind_estimate=known,
-                                                 wind=self.wind, flight=self.flight, camera=self.camera,
-                                                 options=self.city_orbit)
+            city_follow = city_horizon_follow if self.city_orbit.planner == "horizon" else city_orbit_follow
+            study.city_orbit = city_follow(vehicle, uav, scene, parameters=parameters, wind_estimate=known,
+                                           wind=self.wind, flight=self.flight, camera=self.camera,
+                                           options=self.city_orbit)
         return study
 
 
@@ -275,7 +279,7 @@ class FollowStudy:
     baseline_reason: Optional[str] = None  # why the baseline was not flown (a vehicle faster than the UAV)
     city_baseline_reason: Optional[str] = None
     fdm: Optional[FollowFdm] = None  # the planner on a 6-DOF JSBSim aircraft (uav.dynamics: jsbsim)
-    city_orbit: Optional[CityOrbitResult] = None  # the city orbit mode's run (follow.city_orbit)
+    city_orbit: Optional[CityOrbitResult] = None  # the city follower's run (follow.city_horizon or city_orbit)
 
     def metrics(self) -> dict[str, Any]:
         """metrics.json: the planner's run at the top level (with a ``note`` when it flew its

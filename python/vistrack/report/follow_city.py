@@ -1,6 +1,6 @@
-"""The city orbit mode in a follow report (beyond every anchor): camera, line of sight, both, and
-the share of the time a flyable circle existed inside the visibility polygon, beside the
-planner's and the baseline's runs on the same city road."""
+"""The city follower in a follow report (beyond every anchor: the horizon follower by default, or the
+city orbit): camera, line of sight, both, and the share of the time a flyable circle existed inside
+the visibility polygon, beside the planner's and the baseline's runs on the same city road."""
 
 from __future__ import annotations
 
@@ -13,13 +13,20 @@ def _percent(value: Optional[float]) -> str:
     return "-" if value is None else f"{100 * value:.1f}"
 
 
+def _name(orbit: dict[str, Any]) -> str:
+    return "horizon follower" if orbit.get("strategy") == "city_horizon" else "city orbit"
+
+
 def city_orbit_blocks(city: Optional[dict[str, Any]]) -> list[Any]:
     """A heading and a table of the city runs (metrics.json's ``city`` block), or nothing."""
     if not city or "orbit" not in city:
         return []
     rows = []
+    orbit = city["orbit"]
+    ours = ("horizon follower (bank commands over 24 s ahead)" if _name(orbit) == "horizon follower"
+            else "city orbit (inside the visibility polygon)")
     for name, key in (("planner (sinusoid and loiter)", "follow"), ("vector-field baseline", "baseline"),
-                      ("city orbit (inside the visibility polygon)", "orbit")):
+                      (ours, "orbit")):
         m = city.get(key)
         if not m or m.get("feasible") is False:
             continue
@@ -27,22 +34,23 @@ def city_orbit_blocks(city: Optional[dict[str, Any]]) -> list[Any]:
                      _percent(m.get("camera_and_line_of_sight_fraction")),
                      _percent(m.get("flyable_circle_about_vehicle_fraction")),
                      _percent(m.get("flyable_circle_in_polygon_fraction"))])
-    orbit = city["orbit"]
-    note = (f"City orbit (beyond every anchor): {orbit['volumes']} visibility volumes over {orbit['updates']} "
-            f"updates (at most {orbit['max_new_volumes_per_update']} new per update), mean radius "
-            f"{orbit['mean_radius_m']:.0f} m. A flyable circle: radius at least the turn-limited 1.25 r_min, "
-            "less a margin, inside the visibility polygon of the vehicle's predicted position.")
+    shape = (f"mean radius {orbit['mean_radius_m']:.0f} m" if "mean_radius_m" in orbit else
+             f"{orbit.get('updates_heading_for_vehicle', 0)} updates with nothing in sight over the horizon")
+    note = (f"{_name(orbit).capitalize()} (beyond every anchor): {orbit['volumes']} visibility volumes over "
+            f"{orbit['updates']} updates (at most {orbit['max_new_volumes_per_update']} new per update), {shape}. "
+            "A flyable circle: radius at least the turn-limited 1.25 r_min, less a margin, inside the visibility "
+            "polygon of the vehicle's predicted position.")
     return [Heading("On the city road: line of sight and flyable circles"),
             Table(["run", "camera (%)", "line of sight (%)", "both (%)", "flyable circle about the vehicle (%)",
                    "flyable circle in the polygon (%)"], rows), note]
 
 
 def city_orbit_line(city: Optional[dict[str, Any]]) -> Optional[str]:
-    """The command's line for the city orbit, or None."""
+    """The command's line for the city follower, or None."""
     if not city or "orbit" not in city:
         return None
     o, base = city["orbit"], city.get("baseline") or {}
-    line = (f"city orbit: camera and line of sight {100 * o['camera_and_line_of_sight_fraction']:.1f} % (camera "
+    line = (f"{_name(o)}: camera and line of sight {100 * o['camera_and_line_of_sight_fraction']:.1f} % (camera "
             f"{100 * o['camera_fraction']:.1f} %, line of sight {100 * o['line_of_sight_fraction']:.1f} %)")
     if "camera_and_line_of_sight_fraction" in base:
         line += f", baseline {100 * base['camera_and_line_of_sight_fraction']:.1f} %"
