@@ -24,7 +24,7 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
-from follow_city_options import changed, city_orbit, parse_sets
+from follow_city_options import changed, city_follower, parse_sets
 from vistrack import VisibilityScene
 from vistrack.follow import FollowScenario
 from vistrack.follow.city_orbit import CityOrbitResult
@@ -74,10 +74,9 @@ def main() -> int:
     if not scenario.city_available():
         print(f"{args.file.name}: skipped, its city data is missing (../shared/data)")
         return 0
-    if args.set:
-        changed(scenario, parse_sets(args.set))
+    changed(scenario, {"planner": "orbit", **parse_sets(args.set)})  # the city orbit's updates are analysed
     env = scenario.city.load(scenario.origin)  # type: ignore[union-attr]
-    result = city_orbit(scenario, VisibilityScene(env), env)
+    result = city_follower(scenario, VisibilityScene(env), env)
     print(f"{args.file.name}, city orbit ({'options ' + ' '.join(args.set) if args.set else 'the file options'})")
     report(result)
     return 0

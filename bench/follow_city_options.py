@@ -1,8 +1,9 @@
-"""The city orbit (vistrack.follow.city_orbit) on the Charlotte road runs with other options: each
-file's city orbit flown with its scenario's ``city_orbit`` block overridden by ``--set KEY=VALUE``
-(any CityOrbitOptions field, YAML values: ``--set camera_reach=true --set lookahead=[3,6,12]``), and
-its camera, line of sight and both, beside the same run with the file's options. The numbers the
-follow docs quote for options not on by default come from here:
+"""A city follower on the Charlotte road runs with other options: each file's city follower (``--planner``:
+the city orbit, vistrack.follow.city_orbit, by default; or the horizon follower, follow.city_horizon) flown
+with its scenario's ``city_orbit`` block overridden by ``--set KEY=VALUE`` (any CityOrbitOptions field, YAML
+values: ``--set camera_reach=true --set lookahead=[3,6,12]``), and its camera, line of sight and both,
+beside the same run with the file's options. The numbers the follow docs quote for options not on by
+default come from here:
 
     VISTRACK_BUILD_DIR=build/dev python3 bench/follow_city_options.py --set camera_reach=true
     VISTRACK_BUILD_DIR=build/dev python3 bench/follow_city_options.py --set camera_reach=true \\
@@ -30,6 +31,7 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 
 from vistrack import VisibilityScene
 from vistrack.follow import FollowScenario
+from vistrack.follow.city_horizon import city_horizon_follow
 from vistrack.follow.city_orbit import CityOrbitResult, city_orbit_follow
 from vistrack.follow.keys import city_orbit_block
 
@@ -37,17 +39,18 @@ FILES = [REPO / "examples" / f"follow_{name}_city.yaml" for name in ("straight",
 KEYS = ("camera_fraction", "line_of_sight_fraction", "camera_and_line_of_sight_fraction")
 
 
-def city_orbit(scenario: FollowScenario, scene: VisibilityScene, env: Any) -> CityOrbitResult:
-    """The city orbit as ``FollowScenario.run`` flies it (the same wind knowledge, flight and camera)."""
+def city_follower(scenario: FollowScenario, scene: VisibilityScene, env: Any) -> CityOrbitResult:
+    """The city follower of the scenario's ``city_orbit.planner`` as ``FollowScenario.run`` flies it (the
+    same wind knowledge, flight and camera)."""
     p = scenario.parameters
     known = scenario.wind_estimate or ((scenario.wind.east, scenario.wind.north) if p.wind_compensation else None)
-    return city_orbit_follow(scenario.city_vehicle(env), scenario.uav, scene, parameters=p, wind_estimate=known,
-                             wind=scenario.wind, flight=scenario.flight, camera=scenario.camera,
-                             options=scenario.city_orbit)
+    follow = city_horizon_follow if scenario.city_orbit.planner == "horizon" else city_orbit_follow
+    return follow(scenario.city_vehicle(env), scenario.uav, scene, parameters=p, wind_estimate=known,
+                  wind=scenario.wind, flight=scenario.flight, camera=scenario.camera, options=scenario.city_orbit)
 
 
 def fly(scenario: FollowScenario, scene: VisibilityScene, env: Any) -> dict[str, Any]:
-    return city_orbit(scenario, scene, env).metrics
+    return city_follower(scenario, scene, env).metrics
 
 
 def changed(scenario: FollowScenario, changes: dict[str, Any]) -> None:
@@ -69,10 +72,12 @@ def main() -> int:
     parser.add_argument("files", nargs="*", type=Path, default=FILES)
     parser.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                         help="a city_orbit option (YAML value); repeatable")
+    parser.add_argument("--planner", choices=("orbit", "horizon"), default="orbit",
+                        help="the city follower flown (default: the city orbit)")
     args = parser.parse_args()
     changes = parse_sets(args.set)
-    print(f"city orbit with {changes or 'the files options'} against the files' options; camera / line of sight / "
-          "both, %")
+    print(f"city {args.planner} with {changes or 'the files options'} against the files' options; camera / line "
+          "of sight / both, %")
     print("| file | the file's options | with the change | both, change (points) |\n|---|---|---|---|")
     for file in args.files:
         scenario = FollowScenario.load(file)
@@ -82,6 +87,7 @@ def main() -> int:
         env = scenario.city.load(scenario.origin)  # type: ignore[union-attr]
         scene = VisibilityScene(env)
         start = time.perf_counter()
+        changed(scenario, {"planner": args.planner})
         before = fly(scenario, scene, env)
         changed(scenario, changes)
         after = fly(scenario, scene, env)

@@ -1,4 +1,4 @@
-// vistrack._core.follow: the receding-horizon city follower's programme (follow_horizon.hpp).
+// vistrack._core.follow: the receding-horizon city follower's programme (follow.hpp, The horizon city follower).
 // Registered into the follow submodule after bind_follow.
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "vistrack/follow_horizon.hpp"
+#include "vistrack/follow.hpp"
 
 namespace py = pybind11;
 

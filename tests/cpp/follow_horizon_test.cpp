@@ -1,5 +1,5 @@
-// The receding-horizon city follower's programme (follow_horizon.hpp) and the guidance that flies
-// it (TurnRateHold): a second's flight against the flight layer's own discrete flight, the
+// The receding-horizon city follower's programme (follow.hpp, The horizon city follower) and the
+// guidance that flies it (TurnRateHold): a second's flight against the flight layer's own discrete flight, the
 // one-second value against camera_sees and an analytic tower shadow, an open field where every
 // second is seen, a lost vehicle steered for, and bad input named.
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@
 #include "vistrack/environment.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/flight.hpp"
-#include "vistrack/follow_horizon.hpp"
+#include "vistrack/follow.hpp"
 
 using namespace vistrack;
 using vistrack::testing::error_message;

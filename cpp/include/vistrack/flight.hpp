@@ -310,7 +310,7 @@ class CurveL1 : public FlightGuidance {
 };
 
 // Holds a commanded turn rate, set during flight from fly()'s on_step (the horizon follower's bank
-// command as g tan(bank) / v, follow_horizon.hpp): the roll model banks towards atan(v rate / g),
+// command as g tan(bank) / v, follow.hpp): the roll model banks towards atan(v rate / g),
 // the Dubins vehicle turns at once. Never done by itself.
 class TurnRateHold : public FlightGuidance {
  public:

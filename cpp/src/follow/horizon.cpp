@@ -1,4 +1,4 @@
-// The receding-horizon city follower's dynamic programme (follow_horizon.hpp).
+// The receding-horizon city follower's dynamic programme (follow.hpp, The horizon city follower).
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "vistrack/error.hpp"
-#include "vistrack/follow_horizon.hpp"
+#include "vistrack/follow.hpp"
 
 namespace vistrack {
 

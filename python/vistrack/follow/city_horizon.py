@@ -3,7 +3,7 @@ issue's orbit inside the visibility polygon, which it replaces as the default ci
 
 At every update (1 Hz) the follower observes the vehicle (position and velocity), predicts it at
 that velocity over the next ``horizon`` seconds, and asks the core's dynamic programme
-(:class:`vistrack._core.follow.HorizonPlanner`, cpp/include/vistrack/follow_horizon.hpp) for the
+(:class:`vistrack._core.follow.HorizonPlanner`, cpp/include/vistrack/follow.hpp) for the
 bank command to hold over the next second: the one from which the most seconds of camera and line of
 sight can follow over the horizon, with the UAV's roll model, its turn limit and the wind the follower
 knows. A second is in sight when an Embree ray from the flight altitude reaches the predicted vehicle
