@@ -85,6 +85,7 @@ def _reference_first_values(planner: HorizonPlanner, scene: vt.VisibilityScene, 
     return later
 
 
+@pytest.mark.sanitize
 def test_programme_is_backward_induction() -> None:
     """A tower above the flight, a vehicle driving north-east at 7 m/s, a wind: the core's V_1 equals
     the loops' to float precision, and its choice is the argmax of V_1 over the commands' seconds."""
@@ -137,6 +138,7 @@ def test_flown_behind_a_tower_keeps_the_vehicle_in_sight() -> None:
     assert len(commands) >= 3  # it steers, not only circles
 
 
+@pytest.mark.sanitize
 def test_bad_options_are_named() -> None:
     scene = vt.VisibilityScene(vt.Environment.from_buildings(TOWER))
     parked = GroundVehicle.from_legs([VehicleLeg(0.0, 0.0, 10.0)])
