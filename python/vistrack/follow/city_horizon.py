@@ -33,9 +33,8 @@ from .. import flight as _flight
 from .._core import Uav, VisibilityScene, VistrackError
 from .._core.follow import HorizonOptions, HorizonPlanner
 from ..city_orbits import VolumeCache, orbit_room
-from ..preview import preview
 from .city_orbit import CityOrbitOptions
-from .city_runs import CityOrbitResult, circle_exists, scored_flight
+from .city_runs import CityOrbitResult, circle_exists, city_defaults, scored_flight
 from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, Wind
 
 __all__ = ["HorizonUpdate", "city_horizon_follow"]
@@ -69,15 +68,9 @@ def city_horizon_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene
     module) in the true ``wind``; ``wind_estimate`` (east, north): what the planner knows of it (None:
     no wind). ``options``: the city block (its ``horizon``, ``reach``, ``grid``, ``margin``, ``lead``,
     ``vehicle_height`` and ``resolution_deg`` apply)."""
-    parameters = parameters or FollowParameters()
-    flight = flight or FollowFlight()
-    camera = camera or DownwardCamera()
     options = options or CityOrbitOptions()
     options.validate()
-    uav.validate()
-    air = np.zeros(2) if wind_estimate is None else np.asarray(wind_estimate, dtype=float)
-    if air.shape != (2,) or not np.all(np.isfinite(air)):
-        raise VistrackError(f"wind_estimate = {preview(wind_estimate)}: expected (east, north), finite m/s")
+    parameters, flight, camera, air = city_defaults(uav, parameters, flight, camera, wind_estimate)
     altitude = scene.ground_level + uav.altitude
     steps = 1.0 / flight.dt
     dt = flight.dt if abs(steps - round(steps)) < 1e-6 else HorizonOptions().dt  # the flight's, if it divides 1 s

@@ -30,8 +30,7 @@ from .._core import Control, GuidanceGains, OrbitState, Uav, VisibilityScene, Vi
 from .._core.follow import HorizonOptions
 from .._core.loiter import STANDARD_GRAVITY
 from ..city_orbits import OrbitRoom, VolumeCache, orbit_room
-from ..preview import preview
-from .city_runs import CityOrbitResult, OrbitUpdate, circle_exists, scored_flight
+from .city_runs import CityOrbitResult, OrbitUpdate, circle_exists, city_defaults, scored_flight
 from .simulation import (
     DownwardCamera,
     FollowFlight,
@@ -243,12 +242,9 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
     """Fly the city orbit about ``vehicle`` at world z = ground + ``uav.altitude`` (see the module)
     in the true ``wind``; ``wind_estimate`` (east, north): what the planner knows of it (None: no
     wind), planned in the air mass as the follower does."""
-    parameters = parameters or FollowParameters()
-    flight = flight or FollowFlight()
-    camera = camera or DownwardCamera()
     options = options or CityOrbitOptions()
     options.validate()
-    uav.validate()
+    parameters, flight, camera, air = city_defaults(uav, parameters, flight, camera, wind_estimate)
     altitude = scene.ground_level + uav.altitude
     cache = VolumeCache(scene, math.hypot(uav.altitude, options.reach), options.resolution_deg, options.grid)
     t0, t_end = vehicle.start_time, vehicle.end_time
@@ -259,9 +255,6 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
     seen_radius = camera_radius(uav, camera)
 
     gains = GuidanceGains.from_parameters(uav, Control(direction="ccw" if ccw else "cw"))
-    air = np.zeros(2) if wind_estimate is None else np.asarray(wind_estimate, dtype=float)
-    if air.shape != (2,) or not np.all(np.isfinite(air)):
-        raise VistrackError(f"wind_estimate = {preview(wind_estimate)}: expected (east, north), finite m/s")
 
     def track(q: np.ndarray, center: np.ndarray, v: np.ndarray, radius: float) -> np.ndarray:
         """The path for L1 in the air mass (the centre moves at v - wind there), as it lies at the

@@ -5,15 +5,28 @@ sample, and whether a flyable visible circle existed (the issue's measure of the
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Sequence
+from typing import Any, Optional, Sequence
 
 import numpy as np
 
-from .._core import Uav, VisibilityScene
+from .._core import Uav, VisibilityScene, VistrackError
 from ..city_orbits import OrbitRoom
-from .simulation import DownwardCamera, GroundVehicle, camera_sees
+from ..preview import preview
+from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, camera_sees
 
-__all__ = ["CityOrbitResult", "OrbitUpdate", "circle_exists", "scored_flight"]
+__all__ = ["CityOrbitResult", "OrbitUpdate", "circle_exists", "city_defaults", "scored_flight"]
+
+
+def city_defaults(uav: Uav, parameters: Optional[FollowParameters], flight: Optional[FollowFlight],
+                  camera: Optional[DownwardCamera], wind_estimate: Optional[Sequence[float]]
+                  ) -> tuple[FollowParameters, FollowFlight, DownwardCamera, np.ndarray]:
+    """A city follower's inputs with their defaults, checked: the UAV, and the wind the planner knows
+    as (east, north) (zero for None)."""
+    uav.validate()
+    air = np.zeros(2) if wind_estimate is None else np.asarray(wind_estimate, dtype=float)
+    if air.shape != (2,) or not np.all(np.isfinite(air)):
+        raise VistrackError(f"wind_estimate = {preview(wind_estimate)}: expected (east, north), finite m/s")
+    return parameters or FollowParameters(), flight or FollowFlight(), camera or DownwardCamera(), air
 
 
 @dataclass
