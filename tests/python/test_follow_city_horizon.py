@@ -157,11 +157,12 @@ def test_bad_options_are_named() -> None:
                                        Path(".")).city_orbit == CityOrbitOptions(horizon=12, planner="orbit")
 
 
-@pytest.mark.parametrize("name", ["straight", "wind"])
+@pytest.mark.parametrize("name", ["straight", "wind", "stop"])
 def test_charlotte_runs_clear_the_city_bar(charlotte: Path, name: str) -> None:
-    """examples/follow_{straight,wind}_city.yaml, where the city orbit falls short: the default city
-    follower (horizon) keeps camera and line of sight together at least 10 points above the baseline,
-    a flyable visible circle at least 90 % of the time, at most one new VV per update."""
+    """examples/follow_{straight,wind,stop}_city.yaml (the first two where the city orbit falls short;
+    the truck, 1055 s, is measured by bench/follow_city_horizon.py): the default city follower
+    (horizon) keeps camera and line of sight together at least 10 points above the baseline, a
+    flyable visible circle at least 90 % of the time, at most one new VV per update."""
     study = FollowScenario.load(EXAMPLES / f"follow_{name}_city.yaml").run()
     city = study.metrics()["city"]
     ours, base = city["orbit"], city["baseline"]

@@ -71,17 +71,18 @@ def city_horizon_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene
     options = options or CityOrbitOptions()
     options.validate()
     parameters, flight, camera, air = city_defaults(uav, parameters, flight, camera, wind_estimate)
-    altitude = scene.ground_level + uav.altitude
-    steps = 1.0 / flight.dt
-    dt = flight.dt if abs(steps - round(steps)) < 1e-6 else HorizonOptions().dt  # the flight's, if it divides 1 s
-    planner = HorizonPlanner(scene, uav, camera, altitude,
-                             HorizonOptions(horizon=options.horizon, vehicle_height=options.vehicle_height, dt=dt))
-    cache = VolumeCache(scene, math.hypot(uav.altitude, options.reach), options.resolution_deg, options.grid)
-    t0, t_end = vehicle.start_time, vehicle.end_time
     period = 1.0  # the programme's step: one bank command per second
     if parameters.update_period != period:
         raise VistrackError(f"follow.update_period = {parameters.update_period}: the horizon city follower plans "
                             "one bank command per second (1 s), or use city_orbit.planner: orbit")
+    altitude = scene.ground_level + uav.altitude
+    steps = 1.0 / flight.dt
+    # A second integrated in the flight's steps when they divide it (the planner's bank then is the flight's).
+    dt = flight.dt if abs(steps - round(steps)) < 1e-6 else HorizonOptions().dt
+    planner = HorizonPlanner(scene, uav, camera, altitude,
+                             HorizonOptions(horizon=options.horizon, vehicle_height=options.vehicle_height, dt=dt))
+    cache = VolumeCache(scene, math.hypot(uav.altitude, options.reach), options.resolution_deg, options.grid)
+    t0, t_end = vehicle.start_time, vehicle.end_time
     turn = parameters.turn_margin * uav.min_turn_radius  # the smallest circle the UAV can fly (the planner's)
     ahead = np.arange(options.horizon + 1, dtype=float)
     updates: list[HorizonUpdate] = []

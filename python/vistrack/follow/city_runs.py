@@ -47,8 +47,9 @@ class OrbitUpdate:
 
 @dataclass
 class CityOrbitResult:
-    """The flown city orbit: samples (t, state x y psi, bank, vehicle), the updates, and per
-    sample the line of sight and whether the camera sees the vehicle."""
+    """A flown city follower (``strategy``: "city_orbit" or "city_horizon"): samples (t, state x y
+    psi, bank, vehicle), the updates, and per sample the line of sight and whether the camera sees
+    the vehicle."""
 
     t: np.ndarray
     state: np.ndarray
