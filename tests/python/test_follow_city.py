@@ -41,8 +41,10 @@ def test_a_circle_fits_about_the_vehicle() -> None:
     """A tower (above the flight) 100 m east: MaxRadius 100 m >= 1.25 r_min + margin, so the UAV
     orbits the parked vehicle at 62.5 m and sees it all the time once on the orbit."""
     scene = vt.VisibilityScene(vt.Environment.from_buildings([(_box(100, 140, -200, 200), 400.0)]))
-    result = city_orbit_follow(_parked(), UAV, scene)
+    reports: list[tuple[int, int]] = []
+    result = city_orbit_follow(_parked(), UAV, scene, progress=lambda done, total: reports.append((done, total)))
     m = result.metrics
+    assert reports == [(k, 120) for k in range(1, 121)]  # one report per update
     assert result.updates[0].max_radius == pytest.approx(100.0, abs=1.0)
     assert all(u.fits_about and u.radius == pytest.approx(62.5) for u in result.updates)
     assert np.array_equal(_sight(scene, result), result.line_of_sight)

@@ -125,8 +125,10 @@ def test_flown_behind_a_tower_keeps_the_vehicle_in_sight() -> None:
     sample; one VV per update at most; the roll model flies the commands (bank within its limit)."""
     scene = vt.VisibilityScene(vt.Environment.from_buildings(TOWER))
     parked = GroundVehicle.from_legs([VehicleLeg(math.pi / 2, 0.0, 90.0)])
-    result = city_horizon_follow(parked, UAV, scene)
+    reports: list[tuple[int, int]] = []
+    result = city_horizon_follow(parked, UAV, scene, progress=lambda done, total: reports.append((done, total)))
     m = result.metrics
+    assert reports == [(k, 90) for k in range(1, 91)]  # one report per update
     assert result.strategy == "city_horizon" and m["updates"] == 90
     assert np.array_equal(_sight(scene, result), result.line_of_sight)
     assert m["line_of_sight_fraction"] == 1.0

@@ -19,6 +19,7 @@ from typing import Any, Optional
 
 from ..follow.keys import STRATEGIES, threshold_value
 from ..follow.scenario import FollowScenario
+from ..progress import Progress
 from ..report.follow import write_follow
 from ..report.follow_city import city_orbit_line
 from .export import DEFAULT_EXPORT_ORIGIN, add_export_arguments, export_mission
@@ -64,7 +65,17 @@ def run(args: argparse.Namespace) -> int:
     city = args.city and scenario.city_available()
     if args.city and scenario.city is not None and not city:
         print(f"city data not found ({scenario.city.describe()}): skipping the city runs")
-    study = scenario.run(args.compensation, city, None if args.quiet else lambda name: print(f"{name} ...", flush=True))
+    bars: list[Progress] = []
+
+    def stage(name: str) -> Progress:
+        """A line per run, and a bar that the runs reporting their updates (the city follower's) draw."""
+        print(f"{name} ...", flush=True)
+        bars.append(Progress(name, unit="update"))
+        return bars[-1]
+
+    study = scenario.run(args.compensation, city, None if args.quiet else stage)
+    for bar in bars:
+        bar.close()
     record = write_follow(study, args.out, scenario.description, options)
     modes = ", ".join(f"{k} {v:.0f} s" for k, v in record["time_in_mode_s"].items() if v > 0)
     print(f"tracking error {record['mean_tracking_error_m']:.2f} m mean, {record['max_tracking_error_m']:.1f} m max; "

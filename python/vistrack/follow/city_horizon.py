@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Optional, Sequence
+from typing import Callable, Optional, Sequence
 
 import numpy as np
 
@@ -34,7 +34,7 @@ from .._core import Uav, VisibilityScene, VistrackError
 from .._core.follow import HorizonOptions, HorizonPlanner
 from ..city_orbits import VolumeCache, orbit_room
 from .city_orbit import CityOrbitOptions
-from .city_runs import CityOrbitResult, circle_exists, city_defaults, scored_flight
+from .city_runs import CityOrbitResult, circle_exists, city_defaults, flight_span, scored_flight
 from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, Wind
 
 __all__ = ["HorizonUpdate", "city_horizon_follow"]
@@ -63,11 +63,12 @@ def city_horizon_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene
                         parameters: Optional[FollowParameters] = None, wind: Optional[Wind] = None,
                         flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
                         options: Optional[CityOrbitOptions] = None,
-                        wind_estimate: Optional[Sequence[float]] = None) -> CityOrbitResult:
+                        wind_estimate: Optional[Sequence[float]] = None,
+                        progress: Optional[Callable[[int, int], None]] = None) -> CityOrbitResult:
     """Fly the horizon follower about ``vehicle`` at world z = ground + ``uav.altitude`` (see the
     module) in the true ``wind``; ``wind_estimate`` (east, north): what the planner knows of it (None:
     no wind). ``options``: the city block (its ``horizon``, ``reach``, ``grid``, ``margin``, ``lead``,
-    ``vehicle_height`` and ``resolution_deg`` apply)."""
+    ``vehicle_height`` and ``resolution_deg`` apply). ``progress(done, total)``: after each update."""
     options = options or CityOrbitOptions()
     options.validate()
     parameters, flight, camera, air = city_defaults(uav, parameters, flight, camera, wind_estimate)
@@ -84,6 +85,7 @@ def city_horizon_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene
     cache = VolumeCache(scene, math.hypot(uav.altitude, options.reach), options.resolution_deg, options.grid)
     t0, t_end = vehicle.start_time, vehicle.end_time
     turn = parameters.turn_margin * uav.min_turn_radius  # the smallest circle the UAV can fly (the planner's)
+    duration, total = flight_span(vehicle, flight, period)
     ahead = np.arange(options.horizon + 1, dtype=float)
     updates: list[HorizonUpdate] = []
 
@@ -104,6 +106,8 @@ def city_horizon_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene
         updates.append(HorizonUpdate(t, choice.bank_command, choice.value, choice.heading_for_vehicle, max_radius,
                                      turn, about, anywhere, cache.computed - before))
         held[0] = choice.next.bank  # the roll model's bank after the second with the command held
+        if progress is not None:
+            progress(min(len(updates), total), total)
         return choice.turn_rate
 
     heading0 = float(vehicle.heading(t0))
@@ -118,7 +122,6 @@ def city_horizon_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene
             while next_update[0] <= t + 1e-9:
                 next_update[0] += period
 
-    duration = flight.max_time if flight.max_time > 0.0 else t_end - t0
     trajectory = _flight.fly(guidance, (float(start[0]), float(start[1]), heading0), uav.speed, uav.min_turn_radius,
                              wind=wind, dt=flight.dt, max_time=duration, integration=flight.integration, t0=t0,
                              on_step=on_step, uav=uav)

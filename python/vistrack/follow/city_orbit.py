@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Optional, Sequence
+from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 
@@ -30,7 +30,7 @@ from .._core import Control, GuidanceGains, OrbitState, Uav, VisibilityScene, Vi
 from .._core.follow import HorizonOptions
 from .._core.loiter import STANDARD_GRAVITY
 from ..city_orbits import OrbitRoom, VolumeCache, orbit_room
-from .city_runs import CityOrbitResult, OrbitUpdate, circle_exists, city_defaults, scored_flight
+from .city_runs import CityOrbitResult, OrbitUpdate, circle_exists, city_defaults, flight_span, scored_flight
 from .simulation import (
     DownwardCamera,
     FollowFlight,
@@ -238,10 +238,11 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
                       parameters: Optional[FollowParameters] = None, wind: Optional[Wind] = None,
                       flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
                       options: Optional[CityOrbitOptions] = None, ccw: bool = True,
-                      wind_estimate: Optional[Sequence[float]] = None) -> CityOrbitResult:
+                      wind_estimate: Optional[Sequence[float]] = None,
+                      progress: Optional[Callable[[int, int], None]] = None) -> CityOrbitResult:
     """Fly the city orbit about ``vehicle`` at world z = ground + ``uav.altitude`` (see the module)
     in the true ``wind``; ``wind_estimate`` (east, north): what the planner knows of it (None: no
-    wind), planned in the air mass as the follower does."""
+    wind), planned in the air mass as the follower does. ``progress(done, total)``: after each update."""
     options = options or CityOrbitOptions()
     options.validate()
     parameters, flight, camera, air = city_defaults(uav, parameters, flight, camera, wind_estimate)
@@ -249,6 +250,7 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
     cache = VolumeCache(scene, math.hypot(uav.altitude, options.reach), options.resolution_deg, options.grid)
     t0, t_end = vehicle.start_time, vehicle.end_time
     period = parameters.update_period
+    duration, total = flight_span(vehicle, flight, period)
     l1_period = options.l1_period if options.l1_period > 0.0 else flight.l1_period
     horizon = 3.0 * flight.l1_damping * l1_period / math.pi + 2.0 * period
     updates: list[OrbitUpdate] = []
@@ -294,6 +296,11 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
         return predicted_view(field_track(q, centre, v - air, radius, gains, h_look, step), step, air, p, v,
                               rooms, look_times[: len(rooms)], uav, camera)
 
+    def record(done: OrbitUpdate) -> None:
+        updates.append(done)
+        if progress is not None:
+            progress(min(len(updates), total), total)
+
     def update(t: float, q: np.ndarray) -> np.ndarray:
         p, v = np.asarray(vehicle.position(t)), np.asarray(vehicle.velocity(t))
         relative = float(np.hypot(*(v - air)))  # the vehicle's speed in the air mass
@@ -307,7 +314,7 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
         rooms = rooms_ahead(p, v)
         if not rooms:  # the prediction stands in a building: keep the last orbit's shape
             shift, radius = (np.array(last.shift), last.radius) if last else (np.zeros(2), turn)
-            updates.append(OrbitUpdate(t, (float(shift[0]), float(shift[1])), radius, 0.0, turn, False, False,
+            record(OrbitUpdate(t, (float(shift[0]), float(shift[1])), radius, 0.0, turn, False, False,
                                        cache.computed - computed_before[0]))
             return track(q, p + shift, v, radius)
         now = rooms[0][1]
@@ -337,8 +344,8 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
                 off = predicted_seen(q, p, v, p + shift, radius, rooms)
                 if predicted_seen(q, p, v, p, centred, rooms) > off:
                     shift, radius = np.zeros(2), centred
-        updates.append(OrbitUpdate(t, (float(shift[0]), float(shift[1])), float(radius), now.max_radius, turn,
-                                   about, anywhere, cache.computed - computed_before[0]))
+        record(OrbitUpdate(t, (float(shift[0]), float(shift[1])), float(radius), now.max_radius, turn, about,
+                           anywhere, cache.computed - computed_before[0]))
         return track(q, p + shift, v, radius)
 
     heading = float(vehicle.heading(t0))
@@ -361,7 +368,6 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
             return
         guidance.set_path(planned[1] + air * (t - planned[0]))
 
-    duration = flight.max_time if flight.max_time > 0.0 else t_end - t0
     trajectory = _flight.fly(guidance, start, uav.speed, uav.min_turn_radius, wind=wind, dt=flight.dt,
                              max_time=duration, integration=flight.integration, t0=t0, on_step=on_step, uav=uav)
     return scored_flight(trajectory, vehicle, scene, uav, camera, options.vehicle_height, updates, cache.computed)

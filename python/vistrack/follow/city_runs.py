@@ -4,6 +4,7 @@ sample, and whether a flyable visible circle existed (the issue's measure of the
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any, Optional, Sequence
 
@@ -14,7 +15,7 @@ from ..city_orbits import OrbitRoom
 from ..preview import preview
 from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, camera_sees
 
-__all__ = ["CityOrbitResult", "OrbitUpdate", "circle_exists", "city_defaults", "scored_flight"]
+__all__ = ["CityOrbitResult", "OrbitUpdate", "circle_exists", "city_defaults", "flight_span", "scored_flight"]
 
 
 def city_defaults(uav: Uav, parameters: Optional[FollowParameters], flight: Optional[FollowFlight],
@@ -27,6 +28,14 @@ def city_defaults(uav: Uav, parameters: Optional[FollowParameters], flight: Opti
     if air.shape != (2,) or not np.all(np.isfinite(air)):
         raise VistrackError(f"wind_estimate = {preview(wind_estimate)}: expected (east, north), finite m/s")
     return parameters or FollowParameters(), flight or FollowFlight(), camera or DownwardCamera(), air
+
+
+def flight_span(vehicle: GroundVehicle, flight: FollowFlight, period: float) -> tuple[float, int]:
+    """A city follower's flight time (the vehicle's track, or flight.max_time when set) and how many
+    updates it makes in it (at the start, then every ``period`` before the track ends)."""
+    duration = flight.max_time if flight.max_time > 0.0 else vehicle.end_time - vehicle.start_time
+    end = min(vehicle.end_time, vehicle.start_time + duration)
+    return duration, max(1, math.ceil((end - vehicle.start_time) / period - 1e-9))
 
 
 @dataclass

@@ -204,10 +204,10 @@ class FollowScenario:
         return GroundVehicle.along_path(road, self.legs)
 
     def run(self, compensation: Optional[bool] = None, city: bool = True,
-            stage: Optional[Callable[[str], None]] = None) -> "FollowStudy":
+            stage: Optional[Callable[[str], Any]] = None) -> "FollowStudy":
         """The planner's run, the baseline's, and with ``city`` (when the scenario has one) both
         again on the city road with line of sight. compensation overrides the file's.
-        ``stage(name)`` is called before each run (progress)."""
+        ``stage(name)`` runs before each run; what it returns, if callable, gets the city follower's progress."""
         say = stage or (lambda _name: None)
         parameters = self.parameters
         if compensation is not None:
@@ -256,12 +256,12 @@ class FollowScenario:
                                                parameters=parameters, scene=scene, **common)
             # Beyond every anchor (follow.city_horizon, or follow.city_orbit's orbits inside the visibility
             # polygons); it observes the vehicle at each update itself, about the vehicle (no offset schedule).
-            say(f"city {self.city_orbit.planner}")
+            bar = say(f"city {self.city_orbit.planner}")
             known = self.wind_estimate or ((self.wind.east, self.wind.north) if parameters.wind_compensation else None)
             city_follow = city_horizon_follow if self.city_orbit.planner == "horizon" else city_orbit_follow
             study.city_orbit = city_follow(vehicle, uav, scene, parameters=parameters, wind_estimate=known,
                                            wind=self.wind, flight=self.flight, camera=self.camera,
-                                           options=self.city_orbit)
+                                           options=self.city_orbit, progress=bar if callable(bar) else None)
         return study
 
 

@@ -23,7 +23,7 @@ def city_orbit_blocks(city: Optional[dict[str, Any]]) -> list[Any]:
         return []
     rows = []
     orbit = city["orbit"]
-    ours = ("horizon follower (bank commands over 24 s ahead)" if _name(orbit) == "horizon follower"
+    ours = ("horizon follower (bank commands planned ahead)" if _name(orbit) == "horizon follower"
             else "city orbit (inside the visibility polygon)")
     for name, key in (("planner (sinusoid and loiter)", "follow"), ("vector-field baseline", "baseline"),
                       (ours, "orbit")):
