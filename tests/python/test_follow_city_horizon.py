@@ -138,6 +138,12 @@ def test_flown_behind_a_tower_keeps_the_vehicle_in_sight() -> None:
     assert np.max(np.abs(result.bank)) <= math.atan(UAV.speed ** 2 / (9.80665 * UAV.min_turn_radius)) + 1e-9
     commands = {round(u.bank_command, 9) for u in result.updates}
     assert len(commands) >= 3  # it steers, not only circles
+    from vistrack.report.follow_city import city_orbit_blocks, city_orbit_line
+
+    line = city_orbit_line({"orbit": m})
+    assert line is not None and line.startswith("horizon follower: camera and line of sight ")
+    text = "\n".join(str(b) for b in city_orbit_blocks({"orbit": m}))
+    assert "Horizon follower (beyond every anchor)" in text and "0 updates with nothing in sight" in text
 
 
 @pytest.mark.sanitize

@@ -315,7 +315,7 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
         if not rooms:  # the prediction stands in a building: keep the last orbit's shape
             shift, radius = (np.array(last.shift), last.radius) if last else (np.zeros(2), turn)
             record(OrbitUpdate(t, (float(shift[0]), float(shift[1])), radius, 0.0, turn, False, False,
-                                       cache.computed - computed_before[0]))
+                               cache.computed - computed_before[0]))
             return track(q, p + shift, v, radius)
         now = rooms[0][1]
         room_about = min(r.max_radius for _, r in rooms)  # the room about the vehicle over the look-ahead
