@@ -15,9 +15,9 @@ import vistrack as vt
 from support.paths import EXAMPLES
 from support.refusal import refuses
 from vistrack._core.follow import HorizonOptions, HorizonPlanner
-from vistrack.follow import DownwardCamera, FollowParameters, FollowScenario, GroundVehicle, VehicleLeg
+from vistrack.follow import DownwardCamera, FollowFlight, FollowParameters, FollowScenario, GroundVehicle, VehicleLeg
 from vistrack.follow.city_horizon import city_horizon_follow
-from vistrack.follow.city_orbit import CityOrbitOptions
+from vistrack.follow.city_orbit import CityOrbitOptions, city_orbit_follow
 from vistrack.follow.simulation import camera_sees
 
 UAV = vt.Uav(speed=21.0, min_turn_radius=50.0, altitude=300.0, dynamics="roll")
@@ -157,6 +157,14 @@ def test_bad_options_are_named() -> None:
     refuses(lambda: city_horizon_follow(parked, UAV, scene, parameters=FollowParameters(update_period=2.0)),
             "follow.update_period", "2")
     refuses(lambda: city_horizon_follow(parked, UAV, scene, wind_estimate=(math.nan, 0.0)), "wind_estimate")
+    refuses(lambda: city_horizon_follow(parked, UAV, scene, start=(0.0, math.inf, 0.0)), "start")
+    refuses(lambda: city_orbit_follow(parked, UAV, scene, start=(0.0, 0.0)), "start")
+    # A given start is where both followers' flights begin (5 s flights).
+    short = FollowFlight(max_time=5.0)
+    for follow in (city_horizon_follow, city_orbit_follow):
+        flown = follow(parked, UAV, scene, flight=short, start=(-150.0, 20.0, 1.0))
+        np.testing.assert_allclose(flown.state[0], [-150.0, 20.0, 1.0])
+        assert flown.t[-1] == pytest.approx(5.0) and len(flown.updates) == 5
     base = {"vehicle": {"legs": [{"heading": "south", "speed": 10, "duration": 60}]}}
     for bad, shown in ((2.5, "2.5"), ("x", "x"), (True, "True")):
         refuses(lambda bad=bad: FollowScenario.from_mapping({**base, "city_orbit": {"horizon": bad}}, Path(".")),

@@ -34,7 +34,7 @@ from .._core import Uav, VisibilityScene, VistrackError
 from .._core.follow import HorizonOptions, HorizonPlanner
 from ..city_orbits import VolumeCache, orbit_room
 from .city_orbit import CityOrbitOptions
-from .city_runs import CityOrbitResult, circle_exists, city_defaults, flight_span, scored_flight
+from .city_runs import CityOrbitResult, circle_exists, city_defaults, flight_span, scored_flight, start_pose
 from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, Wind
 
 __all__ = ["HorizonUpdate", "city_horizon_follow"]
@@ -64,11 +64,13 @@ def city_horizon_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene
                         flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
                         options: Optional[CityOrbitOptions] = None,
                         wind_estimate: Optional[Sequence[float]] = None,
-                        progress: Optional[Callable[[int, int], None]] = None) -> CityOrbitResult:
+                        progress: Optional[Callable[[int, int], None]] = None,
+                        start: Optional[Sequence[float]] = None) -> CityOrbitResult:
     """Fly the horizon follower about ``vehicle`` at world z = ground + ``uav.altitude`` (see the
     module) in the true ``wind``; ``wind_estimate`` (east, north): what the planner knows of it (None:
     no wind). ``options``: the city block (its ``horizon``, ``reach``, ``grid``, ``margin``, ``lead``,
-    ``vehicle_height`` and ``resolution_deg`` apply). ``progress(done, total)``: after each update."""
+    ``vehicle_height`` and ``resolution_deg`` apply). ``progress(done, total)``: after each update;
+    ``start``: the UAV's (x, y, psi), level (default: 200 m ahead of the vehicle along its heading)."""
     options = options or CityOrbitOptions()
     options.validate()
     parameters, flight, camera, air = city_defaults(uav, parameters, flight, camera, wind_estimate)
@@ -110,19 +112,22 @@ def city_horizon_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene
             progress(min(len(updates), total), total)
         return choice.turn_rate
 
-    heading0 = float(vehicle.heading(t0))
-    start = np.asarray(vehicle.position(t0)) + 200.0 * np.array([math.cos(heading0), math.sin(heading0)])
+    pose = start_pose(start)
+    if pose is None:
+        heading = float(vehicle.heading(t0))
+        ahead_of = np.asarray(vehicle.position(t0)) + 200.0 * np.array([math.cos(heading), math.sin(heading)])
+        pose = (float(ahead_of[0]), float(ahead_of[1]), heading)
     held = [0.0]  # the bank the planner commanded its way to (the flight starts level)
-    guidance = _flight.TurnRateHold(update(t0, start, heading0, 0.0))
+    guidance = _flight.TurnRateHold(update(t0, np.array(pose[:2]), pose[2], 0.0))
     next_update = [t0 + period]
 
     def on_step(t: float, q: Sequence[float]) -> None:
-        if t >= next_update[0] - 1e-9 and t < t_end - 1e-9:
+        if t >= next_update[0] - 1e-9 and t < min(t_end, t0 + duration) - 1e-9:  # no update at the end
             guidance.set_turn_rate(update(t, np.array([q[0], q[1]]), float(q[2]), held[0]))
             while next_update[0] <= t + 1e-9:
                 next_update[0] += period
 
-    trajectory = _flight.fly(guidance, (float(start[0]), float(start[1]), heading0), uav.speed, uav.min_turn_radius,
+    trajectory = _flight.fly(guidance, pose, uav.speed, uav.min_turn_radius,
                              wind=wind, dt=flight.dt, max_time=duration, integration=flight.integration, t0=t0,
                              on_step=on_step, uav=uav)
     return scored_flight(trajectory, vehicle, scene, uav, camera, options.vehicle_height, updates, cache.computed,

@@ -30,7 +30,15 @@ from .._core import Control, GuidanceGains, OrbitState, Uav, VisibilityScene, Vi
 from .._core.follow import HorizonOptions
 from .._core.loiter import STANDARD_GRAVITY
 from ..city_orbits import OrbitRoom, VolumeCache, orbit_room
-from .city_runs import CityOrbitResult, OrbitUpdate, circle_exists, city_defaults, flight_span, scored_flight
+from .city_runs import (
+    CityOrbitResult,
+    OrbitUpdate,
+    circle_exists,
+    city_defaults,
+    flight_span,
+    scored_flight,
+    start_pose,
+)
 from .simulation import (
     DownwardCamera,
     FollowFlight,
@@ -239,10 +247,12 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
                       flight: Optional[FollowFlight] = None, camera: Optional[DownwardCamera] = None,
                       options: Optional[CityOrbitOptions] = None, ccw: bool = True,
                       wind_estimate: Optional[Sequence[float]] = None,
-                      progress: Optional[Callable[[int, int], None]] = None) -> CityOrbitResult:
+                      progress: Optional[Callable[[int, int], None]] = None,
+                      start: Optional[Sequence[float]] = None) -> CityOrbitResult:
     """Fly the city orbit about ``vehicle`` at world z = ground + ``uav.altitude`` (see the module)
     in the true ``wind``; ``wind_estimate`` (east, north): what the planner knows of it (None: no
-    wind), planned in the air mass as the follower does. ``progress(done, total)``: after each update."""
+    wind), planned in the air mass as the follower does. ``progress(done, total)``: after each update;
+    ``start``: the UAV's (x, y, psi) (default: on the first update's path, 200 m ahead of the vehicle)."""
     options = options or CityOrbitOptions()
     options.validate()
     parameters, flight, camera, air = city_defaults(uav, parameters, flight, camera, wind_estimate)
@@ -348,19 +358,22 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
                            anywhere, cache.computed - computed_before[0]))
         return track(q, p + shift, v, radius)
 
-    heading = float(vehicle.heading(t0))
-    p0 = np.asarray(vehicle.position(t0))
-    nominal = p0 + 200.0 * np.array([math.cos(heading), math.sin(heading)])
-    path = update(t0, nominal)
-    start = (float(path[0, 0]), float(path[0, 1]),
-             math.atan2(path[1, 1] - path[0, 1], path[1, 0] - path[0, 0]))
+    given = start_pose(start)
+    if given is None:
+        heading = float(vehicle.heading(t0))
+        nominal = np.asarray(vehicle.position(t0)) + 200.0 * np.array([math.cos(heading), math.sin(heading)])
+        path = update(t0, nominal)
+        pose = (float(path[0, 0]), float(path[0, 1]), math.atan2(path[1, 1] - path[0, 1], path[1, 0] - path[0, 0]))
+    else:
+        path = update(t0, np.array(given))
+        pose = given
     guidance = _flight.CurveL1(uav.speed, path, l1_period, flight.l1_damping)
     next_update = [t0 + period]
     planned: list[Any] = [t0, path]  # when the path was planned, and the path (in the air mass then)
     drifts = bool(np.any(air != 0.0))
 
     def on_step(t: float, q: Sequence[float]) -> None:
-        if t >= next_update[0] - 1e-9 and t < t_end - 1e-9:
+        if t >= next_update[0] - 1e-9 and t < min(t_end, t0 + duration) - 1e-9:  # no update at the end
             planned[0], planned[1] = t, update(t, np.array([q[0], q[1], q[2]]))
             while next_update[0] <= t + 1e-9:
                 next_update[0] += period
@@ -368,6 +381,6 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
             return
         guidance.set_path(planned[1] + air * (t - planned[0]))
 
-    trajectory = _flight.fly(guidance, start, uav.speed, uav.min_turn_radius, wind=wind, dt=flight.dt,
+    trajectory = _flight.fly(guidance, pose, uav.speed, uav.min_turn_radius, wind=wind, dt=flight.dt,
                              max_time=duration, integration=flight.integration, t0=t0, on_step=on_step, uav=uav)
     return scored_flight(trajectory, vehicle, scene, uav, camera, options.vehicle_height, updates, cache.computed)

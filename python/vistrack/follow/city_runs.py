@@ -15,7 +15,18 @@ from ..city_orbits import OrbitRoom
 from ..preview import preview
 from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, camera_sees
 
-__all__ = ["CityOrbitResult", "OrbitUpdate", "circle_exists", "city_defaults", "flight_span", "scored_flight"]
+__all__ = ["CityOrbitResult", "OrbitUpdate", "circle_exists", "city_defaults", "flight_span", "scored_flight",
+           "start_pose"]
+
+
+def start_pose(start: Optional[Sequence[float]]) -> Optional[tuple[float, float, float]]:
+    """A city follower's start (x, y, psi), checked; None: the follower's own (200 m ahead of the vehicle)."""
+    if start is None:
+        return None
+    pose = np.asarray(start, dtype=float)
+    if pose.shape != (3,) or not np.all(np.isfinite(pose)):
+        raise VistrackError(f"start = {preview(start)}: expected (x, y, psi), finite")
+    return float(pose[0]), float(pose[1]), float(pose[2])
 
 
 def city_defaults(uav: Uav, parameters: Optional[FollowParameters], flight: Optional[FollowFlight],
