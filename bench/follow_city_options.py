@@ -43,7 +43,7 @@ def city_follower(scenario: FollowScenario, scene: VisibilityScene, env: Any) ->
     """The city follower of the scenario's ``city_orbit.planner`` as ``FollowScenario.run`` flies it (the
     same wind knowledge, flight and camera)."""
     p = scenario.parameters
-    known = scenario.wind_estimate or ((scenario.wind.east, scenario.wind.north) if p.wind_compensation else None)
+    known = scenario.known_wind(p)
     follow = city_horizon_follow if scenario.city_orbit.planner == "horizon" else city_orbit_follow
     return follow(scenario.city_vehicle(env), scenario.uav, scene, parameters=p, wind_estimate=known,
                   wind=scenario.wind, flight=scenario.flight, camera=scenario.camera, options=scenario.city_orbit)

@@ -42,7 +42,7 @@ def from_start(scenario: FollowScenario, scene: VisibilityScene, env: Any, pose:
     """Camera and line of sight together for the baseline, the orbit and the horizon follower from ``pose``,
     each as ``FollowScenario.run`` flies it (the same wind knowledge, flight, camera and reports)."""
     vehicle, p = scenario.city_vehicle(env), scenario.parameters
-    known = scenario.wind_estimate or ((scenario.wind.east, scenario.wind.north) if p.wind_compensation else None)
+    known = scenario.known_wind(p)
     base = baseline(vehicle, scenario.uav, scenario.baseline_radius, control=scenario.baseline_control, parameters=p,
                     wind=scenario.wind, flight=scenario.flight, camera=scenario.camera,
                     offset_schedule=scenario.offset_schedule, reports=scenario.reports, scene=scene, start=pose)

@@ -189,3 +189,15 @@ def test_charlotte_runs_clear_the_city_bar(charlotte: Path, name: str) -> None:
     assert study.city_orbit is not None and study.environment is not None
     assert np.array_equal(_sight(vt.VisibilityScene(study.environment), study.city_orbit),
                           study.city_orbit.line_of_sight)
+
+
+def test_the_planner_knows_the_estimate_else_the_compensated_wind() -> None:
+    """FollowScenario.known_wind, what every follower plans with: wind_estimate when given, else the
+    true mean wind when compensating, else none."""
+    base = {"vehicle": {"legs": [{"heading": "south", "speed": 10, "duration": 60}]}, "wind": {"east": 3, "north": -1}}
+    scenario = FollowScenario.from_mapping({**base, "follow": {"compensation": True}}, Path("."))
+    assert scenario.known_wind(scenario.parameters) == (3.0, -1.0)
+    scenario = FollowScenario.from_mapping({**base, "follow": {"compensation": False}}, Path("."))
+    assert scenario.known_wind(scenario.parameters) is None
+    scenario = FollowScenario.from_mapping({**base, "wind_estimate": {"east": 1, "north": 2}}, Path("."))
+    assert scenario.known_wind(scenario.parameters) == (1.0, 2.0)

@@ -179,6 +179,10 @@ class FollowScenario:
                    description=str(data.get("description", "")),
                    path=path, origin=georeference_block(data), aircraft=block.aircraft)
 
+    def known_wind(self, parameters: FollowParameters) -> Optional[tuple[float, float]]:
+        """The wind the planner knows: wind_estimate, else the true mean wind when it compensates, else none."""
+        return self.wind_estimate or ((self.wind.east, self.wind.north) if parameters.wind_compensation else None)
+
     def city_available(self) -> bool:
         """Whether the scenario has a city section whose map and road files exist (the shared
         data is optional: without it the city runs are skipped)."""
@@ -211,7 +215,8 @@ class FollowScenario:
         say = stage or (lambda _name: None)
         parameters = self.parameters
         if compensation is not None:
-            parameters = _with_compensation(parameters, compensation)
+            parameters = copy.copy(parameters)  # not the scenario's own
+            parameters.wind_compensation = compensation
         if parameters.strategy == "auto" and parameters.standoff_radius == 0.0:
             # Auto's standoff candidate is the baseline's orbit: its constant radius (and its law, follow_run.cpp).
             parameters = copy.copy(parameters)  # not the scenario's own
@@ -257,7 +262,7 @@ class FollowScenario:
             # Beyond every anchor (follow.city_horizon, or follow.city_orbit's orbits inside the visibility
             # polygons); it observes the vehicle at each update itself, about the vehicle (no offset schedule).
             bar = say(f"city {self.city_orbit.planner}")
-            known = self.wind_estimate or ((self.wind.east, self.wind.north) if parameters.wind_compensation else None)
+            known = self.known_wind(parameters)
             city_follow = city_horizon_follow if self.city_orbit.planner == "horizon" else city_orbit_follow
             study.city_orbit = city_follow(vehicle, uav, scene, parameters=parameters, wind_estimate=known,
                                            wind=self.wind, flight=self.flight, camera=self.camera,
@@ -331,12 +336,6 @@ def _baseline_metrics(result: Optional[FollowResult], reason: Optional[str]) -> 
     out: dict[str, Any] = {"feasible": True, **result.metrics}
     out["radius_m"] = float(np.median(np.linalg.norm(result.desired - result.offset_point, axis=1)))
     return out
-
-
-def _with_compensation(p: FollowParameters, on: bool) -> FollowParameters:
-    copied = copy.copy(p)
-    copied.wind_compensation = on
-    return copied
 
 
 def _vehicle(data: Mapping[str, Any], base: Path) -> tuple[GroundVehicle, list[VehicleLeg], Optional[dict]]:
