@@ -20,7 +20,7 @@ import os
 import sys
 import time
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterator
 
 import yaml
 
@@ -39,18 +39,31 @@ FILES = [REPO / "examples" / f"follow_{name}_city.yaml" for name in ("straight",
 KEYS = ("camera_fraction", "line_of_sight_fraction", "camera_and_line_of_sight_fraction")
 
 
-def city_follower(scenario: FollowScenario, scene: VisibilityScene, env: Any) -> CityOrbitResult:
+def city_follower(scenario: FollowScenario, scene: VisibilityScene, env: Any, **extra: Any) -> CityOrbitResult:
     """The city follower of the scenario's ``city_orbit.planner`` as ``FollowScenario.run`` flies it (the
-    same wind knowledge, flight and camera)."""
+    same wind knowledge, flight and camera); ``extra``: more of the follower's arguments (``start``)."""
     p = scenario.parameters
     known = scenario.known_wind(p)
     follow = city_horizon_follow if scenario.city_orbit.planner == "horizon" else city_orbit_follow
     return follow(scenario.city_vehicle(env), scenario.uav, scene, parameters=p, wind_estimate=known,
-                  wind=scenario.wind, flight=scenario.flight, camera=scenario.camera, options=scenario.city_orbit)
+                  wind=scenario.wind, flight=scenario.flight, camera=scenario.camera, options=scenario.city_orbit,
+                  **extra)
 
 
 def fly(scenario: FollowScenario, scene: VisibilityScene, env: Any) -> dict[str, Any]:
     return city_follower(scenario, scene, env).metrics
+
+
+def cities(files: list[Path], columns: int) -> Iterator[tuple[Path, FollowScenario, Any, VisibilityScene]]:
+    """Each file whose city data is present: (file, scenario, its city, the city's scene); for the others
+    a table row of ``columns`` cells saying it was skipped."""
+    for file in files:
+        scenario = FollowScenario.load(file)
+        if not scenario.city_available():
+            print(f"| {file.name} | skipped: its city data is missing |" + " |" * (columns - 2))
+            continue
+        env = scenario.city.load(scenario.origin)  # type: ignore[union-attr]
+        yield file, scenario, env, VisibilityScene(env)
 
 
 def changed(scenario: FollowScenario, changes: dict[str, Any]) -> None:
@@ -79,13 +92,7 @@ def main() -> int:
     print(f"city {args.planner} with {changes or 'the files options'} against the files' options; camera / line "
           "of sight / both, %")
     print("| file | the file's options | with the change | both, change (points) |\n|---|---|---|---|")
-    for file in args.files:
-        scenario = FollowScenario.load(file)
-        if not scenario.city_available():
-            print(f"| {file.name} | skipped: its city data is missing | | |")
-            continue
-        env = scenario.city.load(scenario.origin)  # type: ignore[union-attr]
-        scene = VisibilityScene(env)
+    for file, scenario, env, scene in cities(args.files, 4):
         start = time.perf_counter()
         changed(scenario, {"planner": args.planner})
         before = fly(scenario, scene, env)

@@ -27,10 +27,9 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
     sys.path.insert(0, str(REPO / "tests" / "python"))
     import conftest  # noqa: F401  (imports vistrack from python/ with the build tree's _core)
 
+from follow_city_options import changed, cities, city_follower
 from vistrack import VisibilityScene
 from vistrack.follow import FollowScenario
-from vistrack.follow.city_horizon import city_horizon_follow
-from vistrack.follow.city_orbit import city_orbit_follow
 from vistrack.follow.simulation import baseline
 
 FILES = [REPO / "examples" / f"follow_{name}_city.yaml" for name in ("straight", "wind")]
@@ -41,16 +40,15 @@ def from_start(scenario: FollowScenario, scene: VisibilityScene, env: Any, pose:
                ) -> dict[str, float]:
     """Camera and line of sight together for the baseline, the orbit and the horizon follower from ``pose``,
     each as ``FollowScenario.run`` flies it (the same wind knowledge, flight, camera and reports)."""
-    vehicle, p = scenario.city_vehicle(env), scenario.parameters
-    known = scenario.known_wind(p)
-    base = baseline(vehicle, scenario.uav, scenario.baseline_radius, control=scenario.baseline_control, parameters=p,
-                    wind=scenario.wind, flight=scenario.flight, camera=scenario.camera,
-                    offset_schedule=scenario.offset_schedule, reports=scenario.reports, scene=scene, start=pose)
-    common: dict[str, Any] = {"parameters": p, "wind_estimate": known, "wind": scenario.wind, "flight": scenario.flight,
-                              "camera": scenario.camera, "options": scenario.city_orbit, "start": pose}
-    return {"baseline": base.metrics[BOTH],
-            "orbit": city_orbit_follow(vehicle, scenario.uav, scene, **common).metrics[BOTH],
-            "horizon": city_horizon_follow(vehicle, scenario.uav, scene, **common).metrics[BOTH]}
+    base = baseline(scenario.city_vehicle(env), scenario.uav, scenario.baseline_radius,
+                    control=scenario.baseline_control, parameters=scenario.parameters, wind=scenario.wind,
+                    flight=scenario.flight, camera=scenario.camera, offset_schedule=scenario.offset_schedule,
+                    reports=scenario.reports, scene=scene, start=pose)
+    out = {"baseline": base.metrics[BOTH]}
+    for planner in ("orbit", "horizon"):
+        changed(scenario, {"planner": planner})
+        out[planner] = city_follower(scenario, scene, env, start=pose).metrics[BOTH]
+    return out
 
 
 def main() -> int:
@@ -62,13 +60,7 @@ def main() -> int:
     bearings = [float(b) for b in args.bearings.split(",")]
     print("| file | start (bearing, distance) | baseline | city orbit | horizon follower | horizon over the baseline |")
     print("|---|---|---|---|---|---|")
-    for file in args.files:
-        scenario = FollowScenario.load(file)
-        if not scenario.city_available():
-            print(f"| {file.name} | skipped: its city data is missing | | | | |")
-            continue
-        env = scenario.city.load(scenario.origin)  # type: ignore[union-attr]
-        scene = VisibilityScene(env)
+    for file, scenario, env, scene in cities(args.files, 6):
         vehicle = scenario.city_vehicle(env)
         t0 = vehicle.start_time
         heading = float(vehicle.heading(t0))

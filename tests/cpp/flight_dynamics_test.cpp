@@ -20,18 +20,6 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
-class ConstantTurn : public FlightGuidance {
- public:
-  explicit ConstantTurn(double rate) : rate_(rate) {}
-  void start(const Configuration&, double) override {}
-  GuidanceCommand command(const Configuration&, double) const override { return {rate_, Vec2::Zero(), -1}; }
-  void advance(const Configuration&, double) override {}
-  bool done() const override { return false; }
-
- private:
-  double rate_;
-};
-
 // L1 line tracking on one fixed line from a to b.
 class OnLine : public FlightGuidance {
  public:
@@ -123,7 +111,7 @@ TEST(RollModel, CoordinatedTurnHasRadiusVSquaredOverGTanPhi) {
   const double v = 20.0, phi = 30.0 * kDeg;
   const double radius = v * v / (kStandardGravity * std::tan(phi));
   for (auto integration : {FlightIntegration::Discrete, FlightIntegration::Continuous}) {
-    ConstantTurn guidance(kStandardGravity * std::tan(phi) / v);
+    TurnRateHold guidance(kStandardGravity * std::tan(phi) / v);
     const auto traj = fly(roll_uav(v, 50.0), Wind{}, guidance, {0, 0, 0}, options(integration, 0.01, 60.0));
     // The circle's centre from three far-apart samples after the transient; every later sample on it.
     const std::size_t n = traj.size();
@@ -191,7 +179,7 @@ TEST(RollModel, DubinsFlightIgnoresTheRollParametersAndBanksAtOnce) {
   Uav b;
   b.roll_time_constant = 3.0;
   b.max_roll_rate_deg_s = 5.0;
-  ConstantTurn ga(0.3), gb(0.3);
+  TurnRateHold ga(0.3), gb(0.3);
   const auto ta = fly(a, Wind{}, ga, {0, 0, 0}, options(FlightIntegration::Discrete, 0.02, 10.0));
   const auto tb = fly(b, Wind{}, gb, {0, 0, 0}, options(FlightIntegration::Discrete, 0.02, 10.0));
   EXPECT_EQ(ta.x, tb.x);

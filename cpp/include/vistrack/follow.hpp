@@ -583,6 +583,7 @@ class HorizonPlanner {
   };
   std::vector<float> rewards(const Vec2& vehicle) const;
   void add_best_next(std::vector<float>& now, const std::vector<float>& later, const Vec2& drift) const;
+  Vec2 grid_offset(std::size_t m) const;  // grid point m (i * n + j) relative to the vehicle
 
   VisibilityScene scene_;
   Uav uav_;
@@ -592,6 +593,8 @@ class HorizonPlanner {
   RollModel roll_;
   std::vector<double> banks_;
   std::size_t side_ = 0, headings_ = 0;
+  double half_ = 0.0;          // m: the grid's half-width, a whole number of steps
+  double heading_step_ = 0.0;  // rad
   std::vector<unsigned char> camera_table_;  // (bank level, heading, grid point): the camera sees the vehicle
   std::vector<Move> moves_;                  // (level before, command level)
 };

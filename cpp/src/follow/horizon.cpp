@@ -34,6 +34,12 @@ AxisReading axis_reading(double offset, std::size_t side) {
   return out;
 }
 
+// v (a grid's values, n per row) read bilinearly at the cell whose lower corner is `corner`.
+double bilinear(const float* v, std::size_t corner, std::size_t n, double fu, double fw) {
+  return (1.0 - fu) * ((1.0 - fw) * v[corner] + fw * v[corner + 1]) +
+         fu * ((1.0 - fw) * v[corner + n] + fw * v[corner + n + 1]);
+}
+
 }  // namespace
 
 void HorizonOptions::validate() const {
@@ -64,18 +70,18 @@ HorizonPlanner::HorizonPlanner(const VisibilityScene& scene, const Uav& uav, con
   banks_ = {-full, -0.5 * full, 0.0, 0.5 * full, full};
   side_ = 2 * static_cast<std::size_t>(std::floor(options_.half_width / options_.spacing + 1e-9)) + 1;
   headings_ = static_cast<std::size_t>(std::lround(360.0 / options_.heading_step_deg));
+  half_ = 0.5 * static_cast<double>(side_ - 1) * options_.spacing;
+  heading_step_ = 2.0 * kPi / static_cast<double>(headings_);
   const std::size_t cells = side_ * side_;
-  const double half = 0.5 * static_cast<double>(side_ - 1) * options_.spacing;
-  const double step = 2.0 * kPi / static_cast<double>(headings_);
   // The camera from each grid point, heading and bank (the vehicle at the grid's origin, on the ground).
   camera_table_.assign(banks_.size() * headings_ * cells, 0);
   for (std::size_t b = 0; b < banks_.size(); ++b)
     for (std::size_t h = 0; h < headings_; ++h)
       for (std::size_t m = 0; m < cells; ++m) {
-        const Vec3 at(-half + static_cast<double>(m / side_) * options_.spacing,
-                      -half + static_cast<double>(m % side_) * options_.spacing, uav_.altitude);
+        const Vec2 at = grid_offset(m);
         camera_table_[(b * headings_ + h) * cells + m] =
-            camera_sees(camera_, at, static_cast<double>(h) * step, banks_[b], Vec3::Zero()) ? 1 : 0;
+            camera_sees(camera_, Vec3(at.x(), at.y(), uav_.altitude), static_cast<double>(h) * heading_step_,
+                        banks_[b], Vec3::Zero()) ? 1 : 0;
       }
   for (std::size_t b = 0; b < banks_.size(); ++b)
     for (double command : banks_) {
@@ -85,6 +91,11 @@ HorizonPlanner::HorizonPlanner(const VisibilityScene& scene, const Uav& uav, con
         if (std::abs(banks_[k] - s.bank) < std::abs(banks_[level] - s.bank)) level = k;
       moves_.push_back({s.position, s.heading, level});
     }
+}
+
+Vec2 HorizonPlanner::grid_offset(std::size_t m) const {
+  return {-half_ + static_cast<double>(m / side_) * options_.spacing,
+          -half_ + static_cast<double>(m % side_) * options_.spacing};
 }
 
 HorizonSecond HorizonPlanner::fly_second(const Vec2& position, double heading, double bank, double bank_command,
@@ -103,13 +114,12 @@ HorizonSecond HorizonPlanner::fly_second(const Vec2& position, double heading, d
 
 std::vector<float> HorizonPlanner::rewards(const Vec2& vehicle) const {
   const std::size_t cells = side_ * side_;
-  const double half = 0.5 * static_cast<double>(side_ - 1) * options_.spacing;
   const Vec3 target = scene_.poi_on_surface(Vec3(vehicle.x(), vehicle.y(), options_.vehicle_height));
   Points3 sky(static_cast<Eigen::Index>(cells), 3), ground(static_cast<Eigen::Index>(cells), 3);
   for (std::size_t m = 0; m < cells; ++m) {
     const auto row = static_cast<Eigen::Index>(m);
-    sky.row(row) << vehicle.x() - half + static_cast<double>(m / side_) * options_.spacing,
-        vehicle.y() - half + static_cast<double>(m % side_) * options_.spacing, altitude_;
+    const Vec2 at = vehicle + grid_offset(m);
+    sky.row(row) << at.x(), at.y(), altitude_;
     ground.row(row) = target.transpose();
   }
   const std::vector<bool> sight = scene_.line_of_sight(sky, ground);
@@ -120,11 +130,10 @@ std::vector<float> HorizonPlanner::rewards(const Vec2& vehicle) const {
 
 void HorizonPlanner::add_best_next(std::vector<float>& now, const std::vector<float>& later, const Vec2& drift) const {
   const std::size_t cells = side_ * side_, levels = banks_.size();
-  const double step = 2.0 * kPi / static_cast<double>(headings_);
   // For each (level before, heading): the most value over the commands of the next state.
   tbb::parallel_for(std::size_t{0}, levels * headings_, [&](std::size_t task) {
     const std::size_t b0 = task / headings_, h = task % headings_;
-    const double angle = static_cast<double>(h) * step;
+    const double angle = static_cast<double>(h) * heading_step_;
     const double c = std::cos(angle), s = std::sin(angle);
     std::vector<float> best(cells, 0.0f);  // values are counts, >= 0
     for (std::size_t command = 0; command < levels; ++command) {
@@ -133,7 +142,7 @@ void HorizonPlanner::add_best_next(std::vector<float>& now, const std::vector<fl
                      s * move.shift.x() + c * move.shift.y() + drift.y());
       const AxisReading east = axis_reading(way.x() / options_.spacing, side_);
       const AxisReading north = axis_reading(way.y() / options_.spacing, side_);
-      const double turned = static_cast<double>(h) + move.turn / step;
+      const double turned = static_cast<double>(h) + move.turn / heading_step_;
       const double lower = std::floor(turned);
       const double fh = turned - lower;
       const auto wrap = [&](double index) {
@@ -153,13 +162,8 @@ void HorizonPlanner::add_best_next(std::vector<float>& now, const std::vector<fl
           double fw = north.fraction;
           if (bj == -2) bj = static_cast<std::ptrdiff_t>(side_) - 2, fw = 1.0;
           const auto corner = static_cast<std::size_t>(bi) * side_ + static_cast<std::size_t>(bj);
-          double value = 0.0;
-          for (int r = 0; r < 2; ++r) {
-            const float* v = rows[r];
-            const double corners = (1.0 - fu) * ((1.0 - fw) * v[corner] + fw * v[corner + 1]) +
-                                   fu * ((1.0 - fw) * v[corner + side_] + fw * v[corner + side_ + 1]);
-            value += (r == 0 ? 1.0 - fh : fh) * corners;
-          }
+          const double value = (1.0 - fh) * bilinear(rows[0], corner, side_, fu, fw) +
+                               fh * bilinear(rows[1], corner, side_, fu, fw);
           float& b = best[i * side_ + j];
           b = std::max(b, static_cast<float>(value));
         }
@@ -195,15 +199,13 @@ double HorizonPlanner::value_at(const std::vector<float>& values, const Vec2& re
   const std::size_t cells = side_ * side_;
   if (values.size() != banks_.size() * headings_ * cells)
     detail::fail_field("values", values.size(), "must be first_values' array");
-  const double half = 0.5 * static_cast<double>(side_ - 1) * options_.spacing;
-  const double u = (relative.x() + half) / options_.spacing, w = (relative.y() + half) / options_.spacing;
+  const double u = (relative.x() + half_) / options_.spacing, w = (relative.y() + half_) / options_.spacing;
   const double last = static_cast<double>(side_ - 1);
   if (!(u >= 0.0 && u <= last && w >= 0.0 && w <= last)) return 0.0;
   const auto i = static_cast<std::size_t>(std::min(std::floor(u), last - 1.0));
   const auto j = static_cast<std::size_t>(std::min(std::floor(w), last - 1.0));
   const double fu = u - static_cast<double>(i), fw = w - static_cast<double>(j);
-  const double step = 2.0 * kPi / static_cast<double>(headings_);
-  const double turned = std::fmod(std::fmod(heading, 2.0 * kPi) + 2.0 * kPi, 2.0 * kPi) / step;
+  const double turned = std::fmod(std::fmod(heading, 2.0 * kPi) + 2.0 * kPi, 2.0 * kPi) / heading_step_;
   const auto h0 = static_cast<std::size_t>(std::floor(turned)) % headings_;
   const double fh = turned - std::floor(turned);
   // The bank linearly between its two nearest levels (clamped to the outer ones).
@@ -215,10 +217,7 @@ double HorizonPlanner::value_at(const std::vector<float>& values, const Vec2& re
   for (std::size_t db = 0; db < 2; ++db)
     for (std::size_t dh = 0; dh < 2; ++dh) {
       const float* v = &values[((b0 + db) * headings_ + (h0 + dh) % headings_) * cells];
-      const std::size_t corner = i * side_ + j;
-      const double weight = (db ? fb : 1.0 - fb) * (dh ? fh : 1.0 - fh);
-      out += weight * ((1.0 - fu) * ((1.0 - fw) * v[corner] + fw * v[corner + 1]) +
-                       fu * ((1.0 - fw) * v[corner + side_] + fw * v[corner + side_ + 1]));
+      out += (db ? fb : 1.0 - fb) * (dh ? fh : 1.0 - fh) * bilinear(v, i * side_ + j, side_, fu, fw);
     }
   return out;
 }

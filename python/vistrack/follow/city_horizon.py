@@ -34,7 +34,7 @@ from .._core import Uav, VisibilityScene, VistrackError
 from .._core.follow import HorizonOptions, HorizonPlanner
 from ..city_orbits import VolumeCache, orbit_room
 from .city_orbit import CityOrbitOptions
-from .city_runs import CityOrbitResult, circle_exists, city_defaults, flight_span, scored_flight, start_pose
+from .city_runs import CityOrbitResult, UpdateClock, circle_exists, city_defaults, scored_flight, start_pose
 from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, Wind
 
 __all__ = ["HorizonUpdate", "city_horizon_follow"]
@@ -44,7 +44,7 @@ __all__ = ["HorizonUpdate", "city_horizon_follow"]
 class HorizonUpdate:
     """One update: the bank commanded (rad), the seconds in sight the programme expected over the
     horizon, whether it steered for the vehicle (nothing in sight from any command), and as the
-    city orbit's updates: MaxRadius about the vehicle's position half an update ahead, the
+    city orbit's updates: MaxRadius about the vehicle's position ``lead`` s ahead, the
     turn-limited radius, whether a flyable visible circle fitted about it and anywhere in its
     visibility polygon, and how many VVs the update cast."""
 
@@ -85,9 +85,8 @@ def city_horizon_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene
     planner = HorizonPlanner(scene, uav, camera, altitude,
                              HorizonOptions(horizon=options.horizon, vehicle_height=options.vehicle_height, dt=dt))
     cache = VolumeCache(scene, math.hypot(uav.altitude, options.reach), options.resolution_deg, options.grid)
-    t0, t_end = vehicle.start_time, vehicle.end_time
     turn = parameters.turn_margin * uav.min_turn_radius  # the smallest circle the UAV can fly (the planner's)
-    duration, total = flight_span(vehicle, flight, period)
+    clock = UpdateClock(vehicle, flight, period)
     ahead = np.arange(options.horizon + 1, dtype=float)
     updates: list[HorizonUpdate] = []
 
@@ -109,26 +108,19 @@ def city_horizon_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene
                                      turn, about, anywhere, cache.computed - before))
         held[0] = choice.next.bank  # the roll model's bank after the second with the command held
         if progress is not None:
-            progress(min(len(updates), total), total)
+            progress(min(len(updates), clock.total), clock.total)
         return choice.turn_rate
 
-    pose = start_pose(start)
-    if pose is None:
-        heading = float(vehicle.heading(t0))
-        ahead_of = np.asarray(vehicle.position(t0)) + 200.0 * np.array([math.cos(heading), math.sin(heading)])
-        pose = (float(ahead_of[0]), float(ahead_of[1]), heading)
+    pose = start_pose(vehicle, start)
     held = [0.0]  # the bank the planner commanded its way to (the flight starts level)
-    guidance = _flight.TurnRateHold(update(t0, np.array(pose[:2]), pose[2], 0.0))
-    next_update = [t0 + period]
+    guidance = _flight.TurnRateHold(update(clock.t0, np.array(pose[:2]), pose[2], 0.0))
 
     def on_step(t: float, q: Sequence[float]) -> None:
-        if t >= next_update[0] - 1e-9 and t < min(t_end, t0 + duration) - 1e-9:  # no update at the end
+        if clock.due(t):
             guidance.set_turn_rate(update(t, np.array([q[0], q[1]]), float(q[2]), held[0]))
-            while next_update[0] <= t + 1e-9:
-                next_update[0] += period
 
-    trajectory = _flight.fly(guidance, pose, uav.speed, uav.min_turn_radius,
-                             wind=wind, dt=flight.dt, max_time=duration, integration=flight.integration, t0=t0,
-                             on_step=on_step, uav=uav)
+    trajectory = _flight.fly(guidance, pose, uav.speed, uav.min_turn_radius, wind=wind, dt=flight.dt,
+                             max_time=clock.duration, integration=flight.integration, t0=clock.t0, on_step=on_step,
+                             uav=uav)
     return scored_flight(trajectory, vehicle, scene, uav, camera, options.vehicle_height, updates, cache.computed,
                          strategy="city_horizon")

@@ -33,9 +33,9 @@ from ..city_orbits import OrbitRoom, VolumeCache, orbit_room
 from .city_runs import (
     CityOrbitResult,
     OrbitUpdate,
+    UpdateClock,
     circle_exists,
     city_defaults,
-    flight_span,
     scored_flight,
     start_pose,
 )
@@ -258,9 +258,8 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
     parameters, flight, camera, air = city_defaults(uav, parameters, flight, camera, wind_estimate)
     altitude = scene.ground_level + uav.altitude
     cache = VolumeCache(scene, math.hypot(uav.altitude, options.reach), options.resolution_deg, options.grid)
-    t0, t_end = vehicle.start_time, vehicle.end_time
     period = parameters.update_period
-    duration, total = flight_span(vehicle, flight, period)
+    clock = UpdateClock(vehicle, flight, period)
     l1_period = options.l1_period if options.l1_period > 0.0 else flight.l1_period
     horizon = 3.0 * flight.l1_damping * l1_period / math.pi + 2.0 * period
     updates: list[OrbitUpdate] = []
@@ -309,7 +308,7 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
     def record(done: OrbitUpdate) -> None:
         updates.append(done)
         if progress is not None:
-            progress(min(len(updates), total), total)
+            progress(min(len(updates), clock.total), clock.total)
 
     def update(t: float, q: np.ndarray) -> np.ndarray:
         p, v = np.asarray(vehicle.position(t)), np.asarray(vehicle.velocity(t))
@@ -358,29 +357,23 @@ def city_orbit_follow(vehicle: GroundVehicle, uav: Uav, scene: VisibilityScene, 
                            anywhere, cache.computed - computed_before[0]))
         return track(q, p + shift, v, radius)
 
-    given = start_pose(start)
-    if given is None:
-        heading = float(vehicle.heading(t0))
-        nominal = np.asarray(vehicle.position(t0)) + 200.0 * np.array([math.cos(heading), math.sin(heading)])
-        path = update(t0, nominal)
+    t0, pose = clock.t0, start_pose(vehicle, start)
+    if start is None:  # the first path from the default start's position; the flight starts on it
+        path = update(t0, np.array(pose[:2]))
         pose = (float(path[0, 0]), float(path[0, 1]), math.atan2(path[1, 1] - path[0, 1], path[1, 0] - path[0, 0]))
     else:
-        path = update(t0, np.array(given))
-        pose = given
+        path = update(t0, np.array(pose))
     guidance = _flight.CurveL1(uav.speed, path, l1_period, flight.l1_damping)
-    next_update = [t0 + period]
     planned: list[Any] = [t0, path]  # when the path was planned, and the path (in the air mass then)
     drifts = bool(np.any(air != 0.0))
 
     def on_step(t: float, q: Sequence[float]) -> None:
-        if t >= next_update[0] - 1e-9 and t < min(t_end, t0 + duration) - 1e-9:  # no update at the end
+        if clock.due(t):
             planned[0], planned[1] = t, update(t, np.array([q[0], q[1], q[2]]))
-            while next_update[0] <= t + 1e-9:
-                next_update[0] += period
         elif not drifts:
             return
         guidance.set_path(planned[1] + air * (t - planned[0]))
 
     trajectory = _flight.fly(guidance, pose, uav.speed, uav.min_turn_radius, wind=wind, dt=flight.dt,
-                             max_time=duration, integration=flight.integration, t0=t0, on_step=on_step, uav=uav)
+                             max_time=clock.duration, integration=flight.integration, t0=t0, on_step=on_step, uav=uav)
     return scored_flight(trajectory, vehicle, scene, uav, camera, options.vehicle_height, updates, cache.computed)

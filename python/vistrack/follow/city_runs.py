@@ -15,14 +15,18 @@ from ..city_orbits import OrbitRoom
 from ..preview import preview
 from .simulation import DownwardCamera, FollowFlight, FollowParameters, GroundVehicle, camera_sees
 
-__all__ = ["CityOrbitResult", "OrbitUpdate", "circle_exists", "city_defaults", "flight_span", "scored_flight",
+__all__ = ["CityOrbitResult", "OrbitUpdate", "UpdateClock", "circle_exists", "city_defaults", "scored_flight",
            "start_pose"]
 
 
-def start_pose(start: Optional[Sequence[float]]) -> Optional[tuple[float, float, float]]:
-    """A city follower's start (x, y, psi), checked; None: the follower's own (200 m ahead of the vehicle)."""
+def start_pose(vehicle: GroundVehicle, start: Optional[Sequence[float]]) -> tuple[float, float, float]:
+    """A city follower's start (x, y, psi): ``start`` checked, or by default 200 m ahead of the vehicle
+    along its heading, heading its way."""
     if start is None:
-        return None
+        t0 = vehicle.start_time
+        heading = float(vehicle.heading(t0))
+        ahead = np.asarray(vehicle.position(t0)) + 200.0 * np.array([math.cos(heading), math.sin(heading)])
+        return float(ahead[0]), float(ahead[1]), heading
     pose = np.asarray(start, dtype=float)
     if pose.shape != (3,) or not np.all(np.isfinite(pose)):
         raise VistrackError(f"start = {preview(start)}: expected (x, y, psi), finite")
@@ -41,12 +45,25 @@ def city_defaults(uav: Uav, parameters: Optional[FollowParameters], flight: Opti
     return parameters or FollowParameters(), flight or FollowFlight(), camera or DownwardCamera(), air
 
 
-def flight_span(vehicle: GroundVehicle, flight: FollowFlight, period: float) -> tuple[float, int]:
-    """A city follower's flight time (the vehicle's track, or flight.max_time when set) and how many
-    updates it makes in it (at the start, then every ``period`` before the track ends)."""
-    duration = flight.max_time if flight.max_time > 0.0 else vehicle.end_time - vehicle.start_time
-    end = min(vehicle.end_time, vehicle.start_time + duration)
-    return duration, max(1, math.ceil((end - vehicle.start_time) / period - 1e-9))
+class UpdateClock:
+    """When a city follower updates: at the vehicle's start time, then every ``period`` while the flight
+    lasts (the vehicle's track, or ``flight.max_time`` when set), never at its last instant. ``duration``:
+    the flight's; ``total``: how many updates it makes."""
+
+    def __init__(self, vehicle: GroundVehicle, flight: FollowFlight, period: float) -> None:
+        self.t0, self.period = vehicle.start_time, period
+        self.duration = flight.max_time if flight.max_time > 0.0 else vehicle.end_time - vehicle.start_time
+        self.end = min(vehicle.end_time, self.t0 + self.duration)
+        self.total = max(1, math.ceil((self.end - self.t0) / period - 1e-9))
+        self.next = self.t0 + period
+
+    def due(self, t: float) -> bool:
+        """Whether the flight's step at ``t`` is an update (then the next one is set)."""
+        if t < self.next - 1e-9 or t >= self.end - 1e-9:
+            return False
+        while self.next <= t + 1e-9:
+            self.next += self.period
+        return True
 
 
 @dataclass
@@ -96,10 +113,9 @@ class CityOrbitResult:
             "camera_and_line_of_sight_fraction": float(weights @ (self.in_view & self.line_of_sight)) / total,
             "flyable_circle_about_vehicle_fraction": float(held @ [u.fits_about for u in self.updates]) / span,
             "flyable_circle_in_polygon_fraction": float(held @ [u.fits_anywhere for u in self.updates]) / span,
-            **({"mean_radius_m": float(np.mean([u.radius for u in self.updates]))}
-               if all(isinstance(u, OrbitUpdate) for u in self.updates) else
-               {"updates_heading_for_vehicle": sum(bool(getattr(u, "heading_for_vehicle", False))
-                                                   for u in self.updates)}),
+            **({"updates_heading_for_vehicle": sum(u.heading_for_vehicle for u in self.updates)}
+               if self.strategy == "city_horizon" else
+               {"mean_radius_m": float(np.mean([u.radius for u in self.updates]))}),
             "mean_vehicle_distance_m": float(weights @ np.hypot(*(self.state[:, :2] - self.vehicle).T)) / total,
             "updates": len(self.updates), "volumes": self.volumes,
             "max_new_volumes_per_update": int(max((u.new_volumes for u in self.updates), default=0)),
