@@ -155,12 +155,35 @@ def polygon_agreement(scene: VisibilityScene, vv: VisibilityVolume, altitude: fl
     return float(np.sum(truth & ours) / either) if either else 1.0
 
 
-def reference_volume(scene: VisibilityScene, g: Sequence[float], d_max: float, resolution_deg: float = 0.2) -> float:
-    """The volume of the VV at ``g`` without a band by brute force, independent of the VV's code:
-    one ray per cell of a ``resolution_deg`` grid through a point staggered inside it (Weyl
-    sequences, as the VV's cell rays were before file format 4), min(first hit, exact ground
-    plane, d_max), summed with the cells' solid angles. The accuracy benchmarks' and tests'
-    reference (0.2 degrees: 1.6 M rays)."""
+class ReferenceRays:
+    """The rays of :func:`reference_volume`: one per cell of a ``resolution_deg`` grid, in the
+    grid's row-major order (``num_elevation`` rows from the south pole, ``num_azimuth`` columns).
+    ``directions`` (n, 3) are unit vectors, ``distances`` (n,) the visible distance along each
+    (min(first hit, exact ground plane, d_max)) and ``solid_angles`` (n,) the cell each ray
+    stands for (they sum to 4 pi)."""
+
+    def __init__(self, directions: np.ndarray, distances: np.ndarray, solid_angles: np.ndarray,
+                 num_elevation: int, num_azimuth: int) -> None:
+        self.directions = directions
+        self.distances = distances
+        self.solid_angles = solid_angles
+        self.num_elevation = num_elevation
+        self.num_azimuth = num_azimuth
+
+    @property
+    def volume(self) -> float:
+        """The sum of the cells' cones, solid angle times distance cubed over 3 (m^3)."""
+        return float(np.sum(self.solid_angles * self.distances**3) / 3.0)
+
+
+def reference_rays(
+    scene: VisibilityScene, g: Sequence[float], d_max: float, resolution_deg: float = 0.2
+) -> ReferenceRays:
+    """The brute-force rays behind :func:`reference_volume`, independent of the VV's code: one ray
+    per cell of a ``resolution_deg`` grid through a point staggered inside it (Weyl sequences, as
+    the VV's cell rays were before file format 4, uniform in solid angle), min(first hit, exact
+    ground plane, d_max) along each. bench/vv_error_sources.py compares a VV's mesh with them ray
+    by ray."""
     grid = _core.DirectionGrid.from_resolution(resolution_deg)
     ne, na = grid.num_elevation, grid.num_azimuth
     x = np.mod(0.5 + 0.7548776662466927 * np.arange(ne), 1.0)[:, None]
@@ -175,5 +198,12 @@ def reference_volume(scene: VisibilityScene, g: Sequence[float], d_max: float, r
     far = np.minimum(np.asarray(scene.first_hits(origin, dirs, d_max)).ravel(), d_max)
     down = dirs[:, 2] < 0.0
     far[down] = np.minimum(far[down], np.maximum(0.0, (scene.ground_level - origin[2]) / dirs[down, 2]))
-    cells = np.array([grid.solid_angle(i) for i in range(ne)])
-    return float(np.sum(cells[:, None] * far.reshape(ne, na) ** 3) / 3.0)
+    cells = np.repeat(np.array([grid.solid_angle(i) for i in range(ne)]), na)
+    return ReferenceRays(dirs, far, cells, ne, na)
+
+
+def reference_volume(scene: VisibilityScene, g: Sequence[float], d_max: float, resolution_deg: float = 0.2) -> float:
+    """The volume of the VV at ``g`` without a band by brute force, independent of the VV's code:
+    the cones of :func:`reference_rays` (one ray per cell of a ``resolution_deg`` grid) summed.
+    The accuracy benchmarks' and tests' reference (0.2 degrees: 1.6 M rays)."""
+    return reference_rays(scene, g, d_max, resolution_deg).volume

@@ -125,31 +125,34 @@ TEST(VolumeFile, RoundTripIsBitIdentical) {
   EXPECT_EQ(folder.count(), 2u);  // no temporary files left behind
 }
 
-// Version 4 files (the same layout, walls bisected) are still read. The checksum is recomputed here
-// as the format defines it: FNV-1a-64 over 8-byte little-endian words, then the tail byte by byte.
-TEST(VolumeFile, Version4FilesAreRead) {
+// Version 4 and 5 files (the same layout: walls bisected, then aimed, no split at a building's
+// foot) are still read. The checksum is recomputed here as the format defines it: FNV-1a-64 over
+// 8-byte little-endian words, then the tail byte by byte.
+TEST(VolumeFile, OlderVersionsOfTheSameLayoutAreRead) {
   const vt::VisibilityScene scene(city());
-  TempFolder folder("version4");
+  TempFolder folder("older");
   const vt::VisibilityVolume vv = vt::visibility_volume(scene, vt::Vec3(0.3, -1.7, 1.5), 120.0, std::nullopt, kResolution);
-  const std::string path = folder.file("v4.bin");
-  vt::write_volume_file(vv, path);
-  std::vector<char> bytes = file_bytes(path);
-  ASSERT_EQ(bytes[8], char(vt::kVolumeFileVersion));
-  bytes[8] = char(4);
-  const std::size_t body = bytes.size() - 8;
-  std::uint64_t h = 14695981039346656037ULL;
-  std::size_t k = 0;
-  for (; k + 8 <= body; k += 8) {
-    std::uint64_t word = 0;
-    for (int b = 0; b < 8; ++b) word |= std::uint64_t(static_cast<unsigned char>(bytes[k + std::size_t(b)])) << (8 * b);
-    h = (h ^ word) * 1099511628211ULL;
+  for (const char older : {char(4), char(5)}) {
+    const std::string path = folder.file("older.bin");
+    vt::write_volume_file(vv, path);
+    std::vector<char> bytes = file_bytes(path);
+    ASSERT_EQ(bytes[8], char(vt::kVolumeFileVersion));
+    bytes[8] = older;
+    const std::size_t body = bytes.size() - 8;
+    std::uint64_t h = 14695981039346656037ULL;
+    std::size_t k = 0;
+    for (; k + 8 <= body; k += 8) {
+      std::uint64_t word = 0;
+      for (int b = 0; b < 8; ++b) word |= std::uint64_t(static_cast<unsigned char>(bytes[k + std::size_t(b)])) << (8 * b);
+      h = (h ^ word) * 1099511628211ULL;
+    }
+    for (; k < body; ++k) h = (h ^ static_cast<unsigned char>(bytes[k])) * 1099511628211ULL;
+    for (int b = 0; b < 8; ++b) bytes[body + std::size_t(b)] = char((h >> (8 * b)) & 0xffU);
+    write_bytes(path, bytes);
+    const std::optional<vt::VisibilityVolume> back = vt::read_volume_file(path);
+    ASSERT_TRUE(back.has_value());
+    expect_bit_identical(vv, *back);
   }
-  for (; k < body; ++k) h = (h ^ static_cast<unsigned char>(bytes[k])) * 1099511628211ULL;
-  for (int b = 0; b < 8; ++b) bytes[body + std::size_t(b)] = char((h >> (8 * b)) & 0xffU);
-  write_bytes(path, bytes);
-  const std::optional<vt::VisibilityVolume> back = vt::read_volume_file(path);
-  ASSERT_TRUE(back.has_value());
-  expect_bit_identical(vv, *back);
 }
 
 TEST(VolumeFile, MissingIsNulloptAndBadFilesAreErrorsNamingThePath) {
@@ -182,7 +185,7 @@ TEST(VolumeFile, MissingIsNulloptAndBadFilesAreErrorsNamingThePath) {
   bad("version.bin", version, "format version");
   // Version 3 files (intervals per cell on rays of their own) are refused in one line naming it.
   version[8] = char(3);
-  bad("version3.bin", version, "format version 3, this build reads versions 4 to 5 (version 3 kept intervals per cell");
+  bad("version3.bin", version, "format version 3, this build reads versions 4 to 6 (version 3 kept intervals per cell");
   // Garbage after a valid magic and version.
   std::vector<char> tail(bytes.begin(), bytes.begin() + 12);
   tail.resize(5000, '\x7f');
@@ -215,9 +218,9 @@ TEST(VolumeCacheKey, ChangesWithEveryInputAndOnlyThen) {
   distinct.insert(base);
   EXPECT_EQ(distinct.size(), variants.size() + 1);
   // A fixed value: the key must stay stable across runs, builds and hosts (files on disk).
-  // Independently computed as FNV-1a-64 over struct.pack('<QQddddQd', 5, 0, 0, 0, 0, 400, 0, 1)
-  // (5 = kVolumeFileVersion; version 4 gave vv-e7100185431828dd.bin).
-  EXPECT_EQ(vt::volume_cache_file_name(key(0, vt::Vec3(0, 0, 0), 400.0, none, 1.0)), "vv-774b841f327369fc.bin");
+  // Independently computed as FNV-1a-64 over struct.pack('<QQddddQd', 6, 0, 0, 0, 0, 400, 0, 1)
+  // (6 = kVolumeFileVersion; versions 4 and 5 gave vv-e7100185431828dd.bin and vv-774b841f327369fc.bin).
+  EXPECT_EQ(vt::volume_cache_file_name(key(0, vt::Vec3(0, 0, 0), 400.0, none, 1.0)), "vv-95dd72858c5bfb5b.bin");
   EXPECT_TRUE(std::regex_match(vt::volume_cache_file_name(base), std::regex("vv-[0-9a-f]{16}\\.bin")));
   EXPECT_EQ(vt::volume_cache_file_name(0x1fULL), "vv-000000000000001f.bin");
   // Randomized: different positions never collide in a few thousand draws.

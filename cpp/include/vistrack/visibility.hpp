@@ -169,9 +169,10 @@ double mesh_volume(const TriangleMesh& mesh);
 // visibility_volume changes, so stale cache files miss instead of being reused.
 // Version 4: near/far per grid corner (version 3 had them per cell, on rays of their own).
 // Version 5: the same layout; the walls at the jumps are aimed at the occluder's edge (issue 35).
-// Version 4 files are still read (their walls were bisected); the cache's keys name version 5, so
-// a cache of version 4 files misses and recomputes.
-inline constexpr std::uint32_t kVolumeFileVersion = 5;
+// Version 6: the same layout; edges from the ground to a wall are split at the building's foot.
+// Versions 4 and 5 are still read as they are; the cache's keys name the current version, so a
+// cache of older files misses and recomputes.
+inline constexpr std::uint32_t kVolumeFileVersion = 6;
 inline constexpr std::uint32_t kOldestReadableVolumeFileVersion = 4;
 
 // Writes `vv` to `path` through a temporary file in the same folder renamed over `path`, so

@@ -10,7 +10,7 @@
 namespace vistrack::detail {
 
 // An edge of the mesh's triangulation of the sphere (samples u < w: the grid's corners, then the
-// midpoints of split edges) across which r jumps, bracketed by aimed rays or bisection: the ray at
+// points where edges were split) across which r jumps, bracketed by aimed rays or bisection: the ray at
 // lambda_lo of the way from u to w is on u's side of the jump, the ray at lambda_hi on w's side.
 struct Jump {
   int u = 0;
@@ -28,7 +28,7 @@ struct Jump {
   std::uint32_t hi_triangle = ~std::uint32_t{0};
   int aimed = 0;  // probes aimed at the occluder's edge so far
   bool confirmed = false;
-  int split = -1;   // the midpoint sample when the edge was split (it held two jumps)
+  int split = -1;   // the sample where the edge was split (it held two jumps, or a building's foot)
   int vertex = -1;  // the two mesh vertices on the jump's ray (vertex: u's side, vertex + 1: w's)
   double gap() const { return hi_far > lo_far ? hi_far - lo_far : lo_far - hi_far; }
 };
@@ -53,7 +53,8 @@ class EdgeMap {
   std::size_t size_ = 0;
 };
 
-// A split edge's middle ray: its direction, r there and the surface (and triangle) that ends it.
+// The ray where an edge is split (its middle, or a building's foot): its direction, r there and the
+// surface (and triangle) that ends it.
 struct Middle {
   Vec3 direction = Vec3::Zero();
   double far = 0.0;
@@ -62,13 +63,14 @@ struct Middle {
 };
 
 // One block of jumps being located: its active jumps and this round's rays (directions, lambdas,
-// and what each found).
+// what each found, and whether it was aimed at a building's foot).
 struct JumpBlock {
   std::vector<std::int32_t> active;
   std::vector<Vec3> direction;
   std::vector<double> probe, mid_far;
   std::vector<Surface> mid_surface;
   std::vector<std::uint32_t> mid_triangle;
+  std::vector<std::uint8_t> kink_ray;
 };
 
 // Buffers of one star mesh, kept between VVs so that a batch allocates them once.
@@ -81,7 +83,7 @@ struct StarMeshScratch {
   // The middle ray of each jump of a first pass that splits its edge (numbered after the pass).
   std::vector<Middle> middle;
   std::vector<JumpBlock> blocks;  // one per block of jumps (each block is located by one thread)
-  // Samples past the corners: midpoints of split edges.
+  // Samples past the corners: the points where edges were split.
   std::vector<Vec3> extra_direction;
   std::vector<double> extra_far;
   std::vector<Surface> extra_surface;
