@@ -264,29 +264,26 @@ def test_charlotte_mesh_holds_the_volume_of_a_fine_grid(charlotte, charlotte_sce
         assert vv.grid_volume() == pytest.approx(reference, rel=5e-3), g
 
 
-def test_charlotte_mesh_meets_the_fine_grid_volume_at_20_positions(charlotte, charlotte_scene):
-    """The accuracy bound: the 1-degree mesh volume within 0.05 % of the per-direction
-    volume of a 0.2-degree grid (brute force, reference_volume) at 20 POIs along paper_slow
-    (d_max 400 m; measured <= 0.041 %: bench/vv_error_sources.py --path paper_slow --d-max 400
-    --points 20)."""
-    path = vt.PoiPath.from_csv(str(charlotte / "paths" / "paper_slow.csv"), speed=5.0)
-    pois, _ = path_pois(charlotte_scene, charlotte / "paths" / "paper_slow.csv", np.linspace(0.0, path.duration, 20))
+@pytest.mark.parametrize(
+    ("name", "d_max", "points", "bound"),
+    [
+        # measured <= 0.041 %: bench/vv_error_sources.py --path paper_slow --d-max 400 --points 20
+        ("paper_slow", 400.0, 20, 5e-4),
+        # issue 35's bound at bench/accuracy.py's 10 POIs: measured <= 0.087 % (0.110 % before
+        # edges were split at the buildings' feet)
+        ("paper_small", 100.0, 10, 1.1e-3),
+    ],
+)
+def test_charlotte_mesh_meets_the_fine_grid_volume(charlotte, charlotte_scene, name, d_max, points, bound):
+    """The accuracy bounds: the 1-degree mesh volume within 0.05 % (d_max 400 m) and 0.11 % (d_max
+    100 m) of the per-direction volume of a 0.2-degree grid (brute force, reference_volume) at POIs
+    evenly spaced in time along the path."""
+    path = vt.PoiPath.from_csv(str(charlotte / "paths" / f"{name}.csv"), speed=5.0)
+    pois, _ = path_pois(charlotte_scene, charlotte / "paths" / f"{name}.csv", np.linspace(0.0, path.duration, points))
     for g in pois:
-        reference = reference_volume(charlotte_scene, g, 400.0)
-        volume = vt.visibility_volume(charlotte_scene, g, 400.0, None, 1.0).volume
-        assert abs(volume / reference - 1) <= 5e-4, (g, volume / reference - 1)
-
-
-def test_charlotte_small_mesh_meets_the_fine_grid_volume(charlotte, charlotte_scene):
-    """Issue 35's bound at d_max 100 m: the 1-degree mesh within 0.11 % of the 0.2-degree
-    brute-force volume at bench/accuracy.py's 10 POIs along paper_small (measured <= 0.087 %; 0.110 %
-    before edges were split at the buildings' feet)."""
-    path = vt.PoiPath.from_csv(str(charlotte / "paths" / "paper_small.csv"), speed=5.0)
-    pois, _ = path_pois(charlotte_scene, charlotte / "paths" / "paper_small.csv", np.linspace(0.0, path.duration, 10))
-    for g in pois:
-        reference = reference_volume(charlotte_scene, g, 100.0)
-        volume = vt.visibility_volume(charlotte_scene, g, 100.0, None, 1.0).volume
-        assert abs(volume / reference - 1) <= 1.1e-3, (g, volume / reference - 1)
+        reference = reference_volume(charlotte_scene, g, d_max)
+        volume = vt.visibility_volume(charlotte_scene, g, d_max, None, 1.0).volume
+        assert abs(volume / reference - 1) <= bound, (g, volume / reference - 1)
 
 
 def test_mesh_bends_at_a_buildings_foot(box_env):
