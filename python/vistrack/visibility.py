@@ -182,8 +182,8 @@ def reference_rays(
     """The brute-force rays behind :func:`reference_volume`, independent of the VV's code: one ray
     per cell of a ``resolution_deg`` grid through a point staggered inside it (Weyl sequences, as
     the VV's cell rays were before file format 4, uniform in solid angle), min(first hit, exact
-    ground plane, d_max) along each. bench/vv_error_sources.py compares a VV's mesh with them ray
-    by ray."""
+    ground plane, d_max) along each. bench/vv_error_sources.py compares a VV's mesh with them cell
+    by cell."""
     grid = _core.DirectionGrid.from_resolution(resolution_deg)
     ne, na = grid.num_elevation, grid.num_azimuth
     x = np.mod(0.5 + 0.7548776662466927 * np.arange(ne), 1.0)[:, None]

@@ -23,9 +23,9 @@
 // inside its triangle slot, whose faces the radial XOR overlaps), and the new edges get walls in
 // turn. An edge from the ground to a building's wall is split where it crosses the building's
 // foot instead (beyond the paper, issue 35): r = min(ground, wall) bends there, and the edge's
-// straight interpolation cut the corner between ground and wall (the mesh of a street-level POI
-// held up to 16 % too little in those directions: the largest error of bench/accuracy.py's
-// paper_small VVs came from there). The foot's place on the edge is closed-form (the wall
+// straight interpolation cut the corner between ground and wall (around a box's foot seen from
+// 0.5 m the mesh held 17 % too little; 0.02-0.04 % of paper_small's Charlotte VVs went missing
+// there, bench/vv_error_sources.py). The foot's place on the edge is closed-form (the wall
 // triangle's plane meets the ground plane on a line) and one ray there confirms that nothing
 // stands in front of it; that ray replaces the edge's middle ray.
 //

@@ -80,7 +80,7 @@ struct StarMeshScratch {
   std::vector<std::vector<std::uint8_t>> chunk_gap;  // per chunk of rows: which quads have a gap
   std::vector<Jump> jumps;
   EdgeMap edges;
-  // The middle ray of each jump of a first pass that splits its edge (numbered after the pass).
+  // The ray where each jump of a first pass splits its edge (numbered after the pass).
   std::vector<Middle> middle;
   std::vector<JumpBlock> blocks;  // one per block of jumps (each block is located by one thread)
   // Samples past the corners: the points where edges were split.
