@@ -752,52 +752,70 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       if (!live(sphere.neighbour(t, e))) face(outer(c[static_cast<std::size_t>((e + 1) % 3)]), outer(c[static_cast<std::size_t>(e)]), apex);
   };
 
-  // Count pass: faces per slot (mesh_triangle_faces) and centroids per row.
+  // Count pass: faces per slot (mesh_triangle_faces) and centroids per row. When the VV is spread
+  // over the threads, the rows are counted in parallel from zero and then shifted by the faces of
+  // the rows before them (the same offsets either way).
+  const bool parallel = tracer.parallel;
   auto& triangle_faces = vv.mesh_triangle_faces;
   triangle_faces.resize(static_cast<std::size_t>(nt) + 1);
   triangle_faces[0] = 0;
   auto& row_centroid = sc.row_centroid;
   row_centroid.assign(static_cast<std::size_t>(ne) + 1, 0);
-  bool any_border = false;
-  {
-    const std::uint8_t* f = flags.data();
-    std::int32_t* offsets = triangle_faces.data();
-    std::int32_t faces = 0;
-    auto& plain_row = sc.plain_row;
-    plain_row.assign(static_cast<std::size_t>(ne), 0);
-    for (int i = 0; i < ne; ++i) {
-      int centroids = 0;
-      // A row of plain slots only (no dead corner anywhere): one face each, no branch per slot.
-      if (all_alive) {
-        int plain = 0;
-        for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) plain += f[t] == kLive;
-        if (plain == 2 * na) {
-          plain_row[static_cast<std::size_t>(i)] = 1;
-          for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) offsets[t + 1] = ++faces;
-          continue;
-        }
+  auto& plain_row = sc.plain_row;
+  plain_row.assign(static_cast<std::size_t>(ne), 0);
+  auto& row_border = sc.row_border;
+  row_border.assign(static_cast<std::size_t>(ne), 0);
+  const std::uint8_t* slot_flag = flags.data();
+  std::int32_t* offsets = triangle_faces.data();
+  // Row i's offsets counted on from `faces`; returns the count after the row.
+  auto count_row = [&](int i, std::int32_t faces) {
+    int centroids = 0;
+    // A row of plain slots only (no dead corner anywhere): one face each, no branch per slot.
+    if (all_alive) {
+      int plain = 0;
+      for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) plain += slot_flag[t] == kLive;
+      if (plain == 2 * na) {
+        plain_row[static_cast<std::size_t>(i)] = 1;
+        for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) offsets[t + 1] = ++faces;
+        return faces;
       }
-      for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) {
-        if (f[t] == kLive) {
-          ++faces;
-        } else if (f[t] & kLive) {
-          auto count_face = [&](int, int, int) { ++faces; };
-          auto count_centroid = [&](int, int, int) {
-            ++centroids;
-            return 0;
-          };
-          for_each_piece(t, [&](const Triangle& c) { emit(c, count_face, count_centroid); });
-        }
-        if (!all_alive && (f[t] & kLive)) {
-          const int before = faces;
-          border(t, slot_corners(t), [&](int, int, int) { ++faces; }, 0);
-          any_border = any_border || faces > before;
-        }
-        offsets[t + 1] = faces;
-      }
-      row_centroid[static_cast<std::size_t>(i) + 1] = centroids;
     }
+    for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) {
+      if (slot_flag[t] == kLive) {
+        ++faces;
+      } else if (slot_flag[t] & kLive) {
+        auto count_face = [&](int, int, int) { ++faces; };
+        auto count_centroid = [&](int, int, int) {
+          ++centroids;
+          return 0;
+        };
+        for_each_piece(t, [&](const Triangle& c) { emit(c, count_face, count_centroid); });
+      }
+      if (!all_alive && (slot_flag[t] & kLive)) {
+        const int before = faces;
+        border(t, slot_corners(t), [&](int, int, int) { ++faces; }, 0);
+        if (faces > before) row_border[static_cast<std::size_t>(i)] = 1;
+      }
+      offsets[t + 1] = faces;
+    }
+    row_centroid[static_cast<std::size_t>(i) + 1] = centroids;
+    return faces;
+  };
+  if (!parallel) {
+    std::int32_t faces = 0;
+    for (int i = 0; i < ne; ++i) faces = count_row(i, faces);
+  } else {
+    auto& row_faces = sc.row_faces;
+    row_faces.assign(static_cast<std::size_t>(ne) + 1, 0);
+    for_each_index(true, ne, [&](int i) { row_faces[static_cast<std::size_t>(i) + 1] = count_row(i, 0); });
+    for (std::size_t i = 1; i < row_faces.size(); ++i) row_faces[i] += row_faces[i - 1];
+    for_each_index(true, ne, [&](int i) {
+      const std::int32_t base = row_faces[static_cast<std::size_t>(i)];
+      if (base == 0) return;
+      for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) offsets[t + 1] += base;
+    });
   }
+  const bool any_border = std::find(row_border.begin(), row_border.end(), std::uint8_t{1}) != row_border.end();
   row_centroid[0] = num_vertices;
   for (std::size_t i = 1; i < row_centroid.size(); ++i) row_centroid[i] += row_centroid[i - 1];
   num_vertices = row_centroid.back();
@@ -806,7 +824,6 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   TriangleMesh& mesh = vv.mesh;
   mesh.vertices.resize(num_vertices, 3);
   mesh.faces.resize(triangle_faces.back(), 3);
-  const bool parallel = tracer.parallel;
   auto set_vertex = [&](int id, const Vec3& p) {
     double* out = mesh.vertices.data() + 3 * static_cast<std::size_t>(id);
     out[0] = p.x();

@@ -96,6 +96,8 @@ struct StarMeshScratch {
   bool corner_identity = false;              // corner_vertex holds v -> v (every corner used)
   std::vector<std::int32_t> row_centroid;    // first centroid vertex of each sphere row
   std::vector<std::uint8_t> plain_row;       // sphere rows of plain slots only
+  std::vector<std::uint8_t> row_border;      // sphere rows with a border fan to g
+  std::vector<std::int32_t> row_faces;       // faces before each sphere row (rows counted in parallel)
   std::vector<double> row_volume;
   std::vector<int> pole_ring;
 };
