@@ -9,6 +9,7 @@ from __future__ import annotations
 import ctypes
 import math
 import sys
+from dataclasses import dataclass
 from typing import Any, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -155,6 +156,7 @@ def polygon_agreement(scene: VisibilityScene, vv: VisibilityVolume, altitude: fl
     return float(np.sum(truth & ours) / either) if either else 1.0
 
 
+@dataclass
 class ReferenceRays:
     """The rays of :func:`reference_volume`: one per cell of a ``resolution_deg`` grid, in the
     grid's row-major order (``num_elevation`` rows from the south pole, ``num_azimuth`` columns).
@@ -162,18 +164,33 @@ class ReferenceRays:
     (min(first hit, exact ground plane, d_max)) and ``solid_angles`` (n,) the cell each ray
     stands for (they sum to 4 pi)."""
 
-    def __init__(self, directions: np.ndarray, distances: np.ndarray, solid_angles: np.ndarray,
-                 num_elevation: int, num_azimuth: int) -> None:
-        self.directions = directions
-        self.distances = distances
-        self.solid_angles = solid_angles
-        self.num_elevation = num_elevation
-        self.num_azimuth = num_azimuth
+    directions: np.ndarray
+    distances: np.ndarray
+    solid_angles: np.ndarray
+    num_elevation: int
+    num_azimuth: int
 
     @property
     def volume(self) -> float:
         """The sum of the cells' cones, solid angle times distance cubed over 3 (m^3)."""
         return float(np.sum(self.solid_angles * self.distances**3) / 3.0)
+
+    def mesh_volumes(self, vv: VisibilityVolume) -> np.ndarray:
+        """The volume of ``vv``'s mesh per cell (n,): each face's signed tetrahedron with the POI
+        (they sum to the mesh's volume: the divergence theorem) in the cell of its centroid's
+        direction. Radial walls hold none (their planes pass through the POI). A part of the sphere
+        bounded by whole rows and columns of the VV's own grid gets exactly its faces (each stays
+        inside its grid slot); elsewhere a face's volume lands in one cell of the several it spans."""
+        g = np.asarray(vv.poi, dtype=float)
+        corners = np.asarray(vv.vertices)[np.asarray(vv.faces)] - g  # (faces, 3, 3)
+        six = np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2]))
+        centroid = corners.mean(axis=1)
+        elevation = np.arctan2(centroid[:, 2], np.hypot(centroid[:, 0], centroid[:, 1]))
+        azimuth = np.mod(np.arctan2(centroid[:, 1], centroid[:, 0]), 2.0 * np.pi)
+        row = np.clip(((elevation + np.pi / 2) / (np.pi / self.num_elevation)).astype(int), 0, self.num_elevation - 1)
+        column = np.clip((azimuth / (2.0 * np.pi / self.num_azimuth)).astype(int), 0, self.num_azimuth - 1)
+        return np.bincount(row * self.num_azimuth + column, weights=six / 6.0,
+                           minlength=self.num_elevation * self.num_azimuth)
 
 
 def reference_rays(

@@ -225,6 +225,8 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   auto sample_surface = [&](int v) { return v < nv ? surface[v] : sc.extra_surface[static_cast<std::size_t>(v - nv)]; };
   auto sample_direction = [&](int v) { return v < nv ? dirs.corner(v) : sc.extra_direction[static_cast<std::size_t>(v - nv)]; };
   auto sample_triangle = [&](int v) { return v < nv ? triangle[v] : sc.extra_triangle[static_cast<std::size_t>(v - nv)]; };
+  // Two samples' distances differ enough for a jump between them (every jump's edge passed this).
+  auto samples_differ = [&](int a, int b) { return differ(sample_far(a), sample_surface(a), sample_far(b), sample_surface(b)); };
   auto slot_corners = [&](int t) { return sphere.corners(t); };
 
   // Live corners (something visible) and live slots (all three corners live).
@@ -572,7 +574,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
         const int b = piece[static_cast<std::size_t>(p)][static_cast<std::size_t>((e + 1) % 3)];
         if (a < nv && b < nv) continue;  // a whole edge of the grid: examined above
         const std::uint64_t key = EdgeMap::key(a, b);
-        if (!differ(sample_far(a), sample_surface(a), sample_far(b), sample_surface(b)) || edges.find(key) >= 0) continue;
+        if (!samples_differ(a, b) || edges.find(key) >= 0) continue;
         // A half of a split grid edge lies on the slot across it too.
         Jump jump;
         jump.u = std::min(a, b);
@@ -612,7 +614,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     std::array<Jump*, 3> edge{};
     for (int e = 0; e < 3; ++e) {
       const int a = c[static_cast<std::size_t>(e)], b = c[static_cast<std::size_t>((e + 1) % 3)];
-      if (!differ(sample_far(a), sample_surface(a), sample_far(b), sample_surface(b))) continue;
+      if (!samples_differ(a, b)) continue;
       const std::int32_t k = edges.find(EdgeMap::key(a, b));
       if (k >= 0 && jumps[static_cast<std::size_t>(k)].confirmed) edge[static_cast<std::size_t>(e)] = &jumps[static_cast<std::size_t>(k)];
     }
