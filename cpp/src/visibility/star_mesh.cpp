@@ -459,7 +459,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
           Jump& jump = jumps[static_cast<std::size_t>(active[m])];
           const double kink = middles ? kink_of(jump) : std::numeric_limits<double>::quiet_NaN();
           kink_ray[m] = std::isfinite(kink) ? 1 : 0;
-          const double lambda = kink_ray[m] ? kink : probe_of(jump);
+          const double lambda = kink_ray[m] ? kink : (middles ? 0.5 * (jump.lambda_lo + jump.lambda_hi) : probe_of(jump));
           probe[m] = lambda;
           direction[m] = ((1.0 - lambda) * sample_direction(jump.u) + lambda * sample_direction(jump.w)).normalized();
         }
