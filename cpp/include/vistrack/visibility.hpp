@@ -140,13 +140,14 @@ std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, c
 // Where one VV's time and rays go (for benchmarks): seconds per phase and ray counts.
 struct VolumeCost {
   double bounds_s = 0.0;  // per-column bounds of the rays that can hit an obstacle
-  double trace_s = 0.0;   // corner rays
+  double trace_s = 0.0;   // corner rays (their first hits from the triangles' footprints)
   double refine_s = 0.0;  // locating the jumps of r (more rays) and refining the mesh there
   double mesh_s = 0.0;    // writing the mesh
   double volume_s = 0.0;  // summing its volume
-  std::size_t rays_traced = 0;   // corner rays handed to Embree
-  std::size_t rays_skipped = 0;  // corner rays decided by the bounds alone
-  std::size_t refine_rays = 0;   // rays traced while refining
+  std::size_t rays_traced = 0;   // corner rays that meet an obstacle
+  std::size_t rays_skipped = 0;  // corner rays that meet none
+  std::size_t corner_tests = 0;  // corner directions tested against a triangle (pairs)
+  std::size_t refine_rays = 0;   // rays traced while refining (Embree)
   // Seconds handing rays to Embree (rtcIntersect1M, with packing the 64-ray batches and reading the
   // hits): wall time per thread, summed over threads; within trace_s + refine_s when parallel = false.
   double embree_s = 0.0;

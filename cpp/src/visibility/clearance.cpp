@@ -95,12 +95,14 @@ ObstacleIndex::ObstacleIndex(const Points3& vertices, const Faces& all_faces, do
   for (std::size_t b = 1; b < bucket_start.size(); ++b) bucket_start[b] += bucket_start[b - 1];
   const auto size = static_cast<std::size_t>(n);
   for (auto* column : {&ax, &ay, &bx, &by, &cx, &cy, &z_min, &z_max}) column->resize(size);
+  face.resize(size);
   bucket_z_min.assign(bucket_start.size() - 1, kInf);
   bucket_z_max.assign(bucket_start.size() - 1, -kInf);
   std::vector<std::int32_t> next(bucket_start.begin(), bucket_start.end() - 1);
   for (Eigen::Index f = 0; f < n; ++f) {
     const auto b = static_cast<std::size_t>(bucket_of[static_cast<std::size_t>(f)]);
     const auto k = static_cast<std::size_t>(next[b]++);
+    face[k] = static_cast<std::uint32_t>(kept[static_cast<std::size_t>(f)]);
     ax[k] = vertices(faces(f, 0), 0);
     ay[k] = vertices(faces(f, 0), 1);
     bx[k] = vertices(faces(f, 1), 0);
@@ -118,6 +120,7 @@ void Clearance::none(int na) {
   num_azimuth = na;
   sin_lo.assign(static_cast<std::size_t>(na), -2.0);
   sin_hi.assign(static_cast<std::size_t>(na), 2.0);
+  footprints.clear();
 }
 
 void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach, int na, bool parallel) {
@@ -125,12 +128,13 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
   // tau ranges, first as tangents (lo: +inf, hi: -inf while nothing reaches the column).
   sin_lo.assign(static_cast<std::size_t>(na), kInf);
   sin_hi.assign(static_cast<std::size_t>(na), -kInf);
+  footprints.clear();
   double all_lo = kInf, all_hi = -kInf;  // triangles over g reach every column
   const double d_az = kTwoPi / na;
   const double gx = g.x(), gy = g.y(), gz = g.z();
   // The buckets' rows [row_begin, row_end) between columns ix0..ix1 into (lo, hi, every_lo, every_hi).
   auto scan = [&](int ix0, int ix1, int row_begin, int row_end, std::vector<double>& col_lo, std::vector<double>& col_hi,
-                  double& every_lo, double& every_hi) {
+                  double& every_lo, double& every_hi, std::vector<Footprint>& found) {
     for (int iy = row_begin; iy < row_end; ++iy) {
       for (int ix = ix0; ix <= ix1; ++ix) {
         const auto b = static_cast<std::size_t>(iy * index.nx + ix);
@@ -176,8 +180,10 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
           if (rho_min <= 1e-9 || span_hi - span_lo > kPi - 1e-3) {
             every_lo = std::min(every_lo, lo);
             every_hi = std::max(every_hi, hi);
+            found.push_back({index.face[k], true, lo, hi, 0.0, kTwoPi});
             continue;
           }
+          found.push_back({index.face[k], false, lo, hi, span_lo - kAngleSlack, span_hi + kAngleSlack});
           const int j0 = static_cast<int>(std::floor((span_lo - kAngleSlack) / d_az));
           const int j1 = static_cast<int>(std::floor((span_hi + kAngleSlack) / d_az));
           for (int j = j0; j <= j1; ++j) {
@@ -200,8 +206,10 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
       half_lo.assign(static_cast<std::size_t>(na), kInf);
       half_hi.assign(static_cast<std::size_t>(na), -kInf);
       double half_all_lo = kInf, half_all_hi = -kInf;
-      tbb::parallel_invoke([&] { scan(ix0, ix1, iy0, middle, sin_lo, sin_hi, all_lo, all_hi); },
-                           [&] { scan(ix0, ix1, middle, iy1 + 1, half_lo, half_hi, half_all_lo, half_all_hi); });
+      half_footprints.clear();
+      tbb::parallel_invoke([&] { scan(ix0, ix1, iy0, middle, sin_lo, sin_hi, all_lo, all_hi, footprints); },
+                           [&] { scan(ix0, ix1, middle, iy1 + 1, half_lo, half_hi, half_all_lo, half_all_hi, half_footprints); });
+      footprints.insert(footprints.end(), half_footprints.begin(), half_footprints.end());
       for (std::size_t c = 0; c < sin_lo.size(); ++c) {
         sin_lo[c] = std::min(sin_lo[c], half_lo[c]);
         sin_hi[c] = std::max(sin_hi[c], half_hi[c]);
@@ -209,7 +217,7 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
       all_lo = std::min(all_lo, half_all_lo);
       all_hi = std::max(all_hi, half_all_hi);
     } else {
-      scan(ix0, ix1, iy0, iy1 + 1, sin_lo, sin_hi, all_lo, all_hi);
+      scan(ix0, ix1, iy0, iy1 + 1, sin_lo, sin_hi, all_lo, all_hi, footprints);
     }
   }
   for (std::size_t c = 0; c < sin_lo.size(); ++c) {

@@ -28,6 +28,7 @@ struct ObstacleIndex {
   // Per triangle, ordered by bucket (a triangle sits in the bucket of its centroid; buckets grow
   // by `overhang`, the largest distance from a centroid to its triangle's corners).
   std::vector<double> ax, ay, bx, by, cx, cy, z_min, z_max;
+  std::vector<std::uint32_t> face;  // its row in the faces given (Embree's primID)
   double overhang = 0.0;
 
   ObstacleIndex() = default;
@@ -37,6 +38,15 @@ struct ObstacleIndex {
   std::size_t size() const { return ax.size(); }
 };
 
+// A triangle within reach of g and the directions from g its rays can lie in: tangents of
+// elevation [tan_lo, tan_hi] and azimuths [az_lo, az_hi] (radians, az_lo may be negative and
+// az_hi above 2 pi: the span wraps), or every azimuth.
+struct Footprint {
+  std::uint32_t face = 0;
+  bool every = false;
+  double tan_lo = 0.0, tan_hi = 0.0, az_lo = 0.0, az_hi = 0.0;
+};
+
 // Per azimuth column j (azimuths [j, j + 1] * 2 pi / na, closed), the sines of elevation between
 // which a ray may hit an obstacle: a ray in column j with sin_el > sin_hi[j] or sin_el < sin_lo[j]
 // meets none. A column no triangle reaches has sin_lo = +2 and sin_hi = -2 (every ray is clear).
@@ -44,6 +54,8 @@ struct Clearance {
   int num_azimuth = 0;
   std::vector<double> sin_lo, sin_hi;
   std::vector<double> half_lo, half_hi;  // the second half's columns when computed in parallel
+  std::vector<Footprint> footprints;     // every triangle within reach (compute; none: empty)
+  std::vector<Footprint> half_footprints;
   bool clear(double sin_el, int column) const {
     return sin_el > sin_hi[static_cast<std::size_t>(column)] || sin_el < sin_lo[static_cast<std::size_t>(column)];
   }

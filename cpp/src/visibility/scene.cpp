@@ -121,8 +121,11 @@ EmbreeScene::EmbreeScene(const Environment& env)
       for (int k = 0; k < 3; ++k) top = std::max(top, mesh.vertices(mesh.faces(f, k), 2));
       on_ground[static_cast<std::size_t>(f)] = top <= ground_level + kOnGround ? 1 : 0;
     }
-    Points3 local = mesh.vertices;
-    local.rowwise() -= origin.transpose();
+    // Embree's own float corners: the clearance footprints then bound exactly the triangles that
+    // corner_hits tests and cone_exit aims at.
+    Points3 local(mesh.vertices.rows(), 3);
+    for (Eigen::Index i = 0; i < mesh.vertices.rows(); ++i)
+      for (int k = 0; k < 3; ++k) local(i, k) = vertices[3 * i + k];
     obstacles = ObstacleIndex(local, mesh.faces, ground_level - origin.z() + kOnGround);
   }
 

@@ -11,6 +11,7 @@
 #include <mutex>
 #include <string>
 
+#include "visibility/corner_hits.hpp"
 #include "visibility/embree_scene.hpp"
 #include "visibility/radial_mesh.hpp"
 #include "visibility/star_mesh.hpp"
@@ -93,6 +94,8 @@ std::vector<double> vertex_row_sines(const DirectionGrid& grid, const Setup& s) 
 // Buffers of one VV, kept between VVs (a batch allocates them once per thread).
 struct Workspace {
   detail::Clearance clearance;
+  std::vector<double> corner_hit;  // first obstacle hit per corner ray (+inf: none)
+  std::vector<double> corner_owner;
   std::vector<double> corner_far;
   std::vector<detail::Surface> corner_surface;
   std::vector<std::uint32_t> corner_triangle;  // the obstacle triangle each corner ray hit
@@ -240,34 +243,31 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   const detail::TraceContext tracer{embree, s, w.clearance, parallel, &counts};
   detail::PhaseTimer trace_timer(cost ? &cost->trace_s : nullptr);
 
-  // A corner ray lies on its column's left edge (the poles in every column). One division per
-  // chunk of 64 rays: rows and columns are stepped.
-  auto corner_ray = [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
-    const auto columns = static_cast<std::size_t>(na);
-    std::size_t k = start;
-    if (k == 0) d[0] = dirs.corner(0), column[0] = 0, ++k;  // south pole
-    std::size_t i = 1 + (k - 1) / columns, j = (k - 1) % columns;
-    for (; k < start + count && k + 1 < n_corners; ++k) {
-      const double c = dirs.cos_el_corner[i];
-      d[k - start] = Vec3(c * dirs.cos_az_corner[j], c * dirs.sin_az_corner[j], dirs.sin_el_corner[i]);
-      column[k - start] = static_cast<int>(j);
-      if (++j == columns) j = 0, ++i;
+  // The corner rays' first hits from the triangles' footprints (corner_hits.hpp), not Embree.
+  const std::size_t tests = detail::corner_hits(w.clearance, embree.triangles, g - embree.origin, s, sphere, dirs,
+                                                parallel, w.corner_hit, w.corner_owner, w.corner_triangle);
+  auto each_corner = [&](auto&& store) {
+    for (int i = 0; i <= sphere.ne; ++i) {
+      const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)];
+      const auto first = static_cast<std::size_t>(sphere.row_first(i));
+      const std::size_t last = i == 0 || i == sphere.ne ? first + 1 : first + static_cast<std::size_t>(na);
+      for (std::size_t k = first; k < last; ++k) store(k, sin_el, w.corner_hit[k]);
     }
-    if (k + 1 == n_corners && k < start + count) d[k - start] = dirs.corner(static_cast<int>(k)), column[k - start] = 0;
   };
   if (s.poi_in_band) {
     w.corner_far.resize(n_corners);
     w.corner_surface.resize(n_corners);
-    w.corner_triangle.resize(n_corners);
-    detail::trace_all(tracer, n_corners, corner_ray, [&](std::size_t k, const Vec3& d, double hit, std::uint32_t triangle) {
-      w.corner_far[k] = detail::star_far(s, d.z(), hit, w.corner_surface[k]);
-      w.corner_triangle[k] = triangle;
-    });
+    each_corner([&](std::size_t k, double sin_el, double hit) { w.corner_far[k] = detail::star_far(s, sin_el, hit, w.corner_surface[k]); });
   } else {
     w.corner.resize(n_corners);
-    detail::trace_all(tracer, n_corners, corner_ray, [&](std::size_t k, const Vec3& d, double hit) {
-      w.corner[k] = detail::visible_interval(s, d.z(), hit);
-    });
+    each_corner([&](std::size_t k, double sin_el, double hit) { w.corner[k] = detail::visible_interval(s, sin_el, hit); });
+  }
+  if (cost != nullptr) {
+    const auto met = static_cast<std::size_t>(
+        std::count_if(w.corner_hit.begin(), w.corner_hit.end(), [](double t) { return t < kInf; }));
+    cost->rays_traced += met;
+    cost->rays_skipped += n_corners - met;
+    cost->corner_tests += tests;
   }
   grid_intervals(vv, s, sphere, row_sines, dirs, tracer, w);
   trace_timer.stop();
@@ -280,7 +280,7 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
     vv.mesh = detail::build_shell_mesh(s, sphere, dirs, w.corner, vv.volume);
   }
   if (cost != nullptr) {
-    cost->rays_traced += counts.traced;
+    cost->rays_traced += counts.traced;  // the corner rows that are no vertex rows (grid_intervals)
     cost->rays_skipped += counts.skipped;
     cost->embree_s += 1e-9 * static_cast<double>(counts.embree_ns.load());
   }

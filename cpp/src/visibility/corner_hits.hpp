@@ -1,0 +1,26 @@
+// The first obstacle hit of every corner ray of a VV without tracing it (private to the library;
+// beyond the paper, issue 35): each triangle within reach is tested against the corner
+// directions inside its footprint (Clearance::footprints), like a z-buffer on the sphere.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "visibility/clearance.hpp"
+#include "visibility/radial_mesh.hpp"
+
+namespace vistrack::detail {
+
+// hit[v] and triangle[v] per corner v of `sphere` (directions `dirs`): the nearest obstacle
+// triangle whose cone from g holds the direction and lies within visible_far_bound along it, its
+// distance and face (Embree's primID), else +inf and kNoTriangle: what tracing the ray in exact
+// arithmetic would return. `triangles`: 9 floats per face relative to the scene's origin
+// (EmbreeScene::triangles), g_local: g relative to it. Rows in two halves on TBB's threads when
+// `parallel` (each corner is decided on one thread, over the footprints in the same order: the
+// same result; of two triangles at exactly the same distance the first in that order wins).
+// `owner`: scratch (the winning footprint per corner). Returns the number of (direction, triangle) tests made.
+std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& triangles, const Vec3& g_local,
+                        const Setup& s, const SphereGrid& sphere, const Directions& dirs, bool parallel,
+                        std::vector<double>& hit, std::vector<double>& owner, std::vector<std::uint32_t>& triangle);
+
+}  // namespace vistrack::detail
