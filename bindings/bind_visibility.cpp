@@ -207,10 +207,12 @@ void bind_visibility(py::module_& m) {
       .def_readonly("refine_s", &VolumeCost::refine_s, "s: locating the jumps of r and refining the mesh there")
       .def_readonly("mesh_s", &VolumeCost::mesh_s, "s: writing the mesh")
       .def_readonly("volume_s", &VolumeCost::volume_s, "s: summing its volume")
-      .def_readonly("rays_traced", &VolumeCost::rays_traced, "corner rays that meet an obstacle")
-      .def_readonly("rays_skipped", &VolumeCost::rays_skipped, "corner rays that meet none")
+      .def_readonly("rays_traced", &VolumeCost::rays_traced,
+                    "corner rays handed to Embree (the grid's corner rows that are no mesh rows)")
+      .def_readonly("rays_skipped", &VolumeCost::rays_skipped,
+                    "corner rays decided without Embree (the triangle tests, or the bounds)")
       .def_readonly("corner_tests", &VolumeCost::corner_tests,
-                    "corner directions tested against an obstacle triangle's cone (pairs)")
+                    "(corner direction, obstacle triangle) tests of the corner rays' first hits")
       .def_readonly("refine_rays", &VolumeCost::refine_rays, "rays traced while refining")
       .def_readonly("embree_s", &VolumeCost::embree_s,
                     "s in Embree's rtcIntersect1M calls with their ray packing, per thread and summed over "

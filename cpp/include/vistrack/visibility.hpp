@@ -144,9 +144,9 @@ struct VolumeCost {
   double refine_s = 0.0;  // locating the jumps of r (more rays) and refining the mesh there
   double mesh_s = 0.0;    // writing the mesh
   double volume_s = 0.0;  // summing its volume
-  std::size_t rays_traced = 0;   // corner rays that meet an obstacle
-  std::size_t rays_skipped = 0;  // corner rays that meet none
-  std::size_t corner_tests = 0;  // corner directions tested against a triangle (pairs)
+  std::size_t rays_traced = 0;   // corner rays handed to Embree (grid rows that are no mesh rows)
+  std::size_t rays_skipped = 0;  // corner rays decided without it (the triangle tests, the bounds)
+  std::size_t corner_tests = 0;  // (corner direction, obstacle triangle) tests
   std::size_t refine_rays = 0;   // rays traced while refining (Embree)
   // Seconds handing rays to Embree (rtcIntersect1M, with packing the 64-ray batches and reading the
   // hits): wall time per thread, summed over threads; within trace_s + refine_s when parallel = false.

@@ -3,6 +3,7 @@
 // directions inside its footprint (Clearance::footprints), like a z-buffer on the sphere.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -11,16 +12,23 @@
 
 namespace vistrack::detail {
 
-// hit[v] and triangle[v] per corner v of `sphere` (directions `dirs`): the nearest obstacle
+// The corner rays' first hits, with the scratch that finds them.
+struct CornerHits {
+  std::vector<double> hit;              // per corner: the first obstacle hit's distance, +inf: none
+  std::vector<std::uint32_t> triangle;  // its face (EmbreeScene::kNoTriangle: none)
+  std::array<std::vector<double>, 2> inverse, owner;  // per thread: 1 / distance, footprint ordinal
+};
+
+// out.hit[v] and out.triangle[v] per corner v of `sphere` (directions `dirs`): the nearest obstacle
 // triangle whose cone from g holds the direction and lies within visible_far_bound along it, its
 // distance and face (Embree's primID), else +inf and kNoTriangle: what tracing the ray in exact
 // arithmetic would return. `triangles`: 9 floats per face relative to the scene's origin
-// (EmbreeScene::triangles), g_local: g relative to it. Rows in two halves on TBB's threads when
-// `parallel` (each corner is decided on one thread, over the footprints in the same order: the
-// same result; of two triangles at exactly the same distance the first in that order wins).
-// `owner`: scratch (the winning footprint per corner). Returns the number of (direction, triangle) tests made.
+// (EmbreeScene::triangles), g_local: g relative to it. Alternate footprints on two of TBB's
+// threads when `parallel`, merged to the same result (of two triangles at exactly the same
+// distance the first footprint wins either way). Returns the number of (direction, triangle)
+// tests made.
 std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& triangles, const Vec3& g_local,
                         const Setup& s, const SphereGrid& sphere, const Directions& dirs, bool parallel,
-                        std::vector<double>& hit, std::vector<double>& owner, std::vector<std::uint32_t>& triangle);
+                        CornerHits& out);
 
 }  // namespace vistrack::detail

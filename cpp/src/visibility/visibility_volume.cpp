@@ -1,5 +1,7 @@
-// alpha(g) of eq. (4) (section III.D) on a direction grid: Embree rays give the visible interval
-// per direction, and the grid corners' intervals give a closed radial mesh.
+// alpha(g) of eq. (4) (section III.D) on a direction grid: the first obstacle hit per direction
+// (per-triangle tests at the grid corners, Embree rays elsewhere) gives the visible interval, and
+// the grid corners' intervals give a closed radial mesh.
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -94,11 +96,9 @@ std::vector<double> vertex_row_sines(const DirectionGrid& grid, const Setup& s) 
 // Buffers of one VV, kept between VVs (a batch allocates them once per thread).
 struct Workspace {
   detail::Clearance clearance;
-  std::vector<double> corner_hit;  // first obstacle hit per corner ray (+inf: none)
-  std::vector<double> corner_owner;
+  detail::CornerHits hits;  // first obstacle hit per corner ray, and the triangle hit
   std::vector<double> corner_far;
   std::vector<detail::Surface> corner_surface;
-  std::vector<std::uint32_t> corner_triangle;  // the obstacle triangle each corner ray hit
   std::vector<Interval> corner;  // shell meshes
   std::vector<int> missing_rows;  // grid corner rows that are no vertex row of the mesh
   detail::StarMeshScratch star;
@@ -225,9 +225,9 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
     s.poi_in_band = g.z() >= s.low - kBandTolerance && g.z() <= s.high + kBandTolerance;
   }
 
-  // Rays: one per corner of the sphere grid (the mesh and the grid's intervals); the star mesh
-  // traces more where it locates jumps. Rays the clearance bounds show to meet no obstacle are
-  // not traced.
+  // Rays: one per corner of the sphere grid (the mesh and the grid's intervals), answered by the
+  // obstacle triangles' footprints (corner_hits); the star mesh traces more with Embree where it
+  // locates jumps, except those the clearance bounds show to meet no obstacle.
   const std::vector<double> row_sines = vertex_row_sines(vv.grid, s);
   const detail::SphereGrid sphere{static_cast<int>(row_sines.size()) - 1, na};
   const detail::Directions dirs(sphere, row_sines);
@@ -245,14 +245,21 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
 
   // The corner rays' first hits from the triangles' footprints (corner_hits.hpp), not Embree.
   const std::size_t tests = detail::corner_hits(w.clearance, embree.triangles, g - embree.origin, s, sphere, dirs,
-                                                parallel, w.corner_hit, w.corner_owner, w.corner_triangle);
+                                                parallel, w.hits);
   auto each_corner = [&](auto&& store) {
-    for (int i = 0; i <= sphere.ne; ++i) {
+    auto row = [&](int i) {
       const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)];
       const auto first = static_cast<std::size_t>(sphere.row_first(i));
       const std::size_t last = i == 0 || i == sphere.ne ? first + 1 : first + static_cast<std::size_t>(na);
-      for (std::size_t k = first; k < last; ++k) store(k, sin_el, w.corner_hit[k]);
+      for (std::size_t k = first; k < last; ++k) store(k, sin_el, w.hits.hit[k]);
+    };
+    if (!parallel) {
+      for (int i = 0; i <= sphere.ne; ++i) row(i);
+      return;
     }
+    tbb::parallel_for(tbb::blocked_range<int>(0, sphere.ne + 1, 16), [&](const tbb::blocked_range<int>& r) {
+      for (int i = r.begin(); i < r.end(); ++i) row(i);
+    });
   };
   if (s.poi_in_band) {
     w.corner_far.resize(n_corners);
@@ -263,16 +270,13 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
     each_corner([&](std::size_t k, double sin_el, double hit) { w.corner[k] = detail::visible_interval(s, sin_el, hit); });
   }
   if (cost != nullptr) {
-    const auto met = static_cast<std::size_t>(
-        std::count_if(w.corner_hit.begin(), w.corner_hit.end(), [](double t) { return t < kInf; }));
-    cost->rays_traced += met;
-    cost->rays_skipped += n_corners - met;
+    cost->rays_skipped += n_corners;  // every vertex row's corner ray: no Embree
     cost->corner_tests += tests;
   }
   grid_intervals(vv, s, sphere, row_sines, dirs, tracer, w);
   trace_timer.stop();
   if (s.poi_in_band) {
-    detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, w.corner_triangle, tracer, w.star, vv,
+    detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, w.hits.triangle, tracer, w.star, vv,
                             cost);
     vv.mesh_row_sines = row_sines;
   } else {
@@ -280,7 +284,7 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
     vv.mesh = detail::build_shell_mesh(s, sphere, dirs, w.corner, vv.volume);
   }
   if (cost != nullptr) {
-    cost->rays_traced += counts.traced;  // the corner rows that are no vertex rows (grid_intervals)
+    cost->rays_traced += counts.traced;  // the grid's corner rows that are no vertex rows (grid_intervals)
     cost->rays_skipped += counts.skipped;
     cost->embree_s += 1e-9 * static_cast<double>(counts.embree_ns.load());
   }

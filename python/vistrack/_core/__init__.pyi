@@ -761,6 +761,11 @@ class VolumeCost:
         s: per-column bounds of the rays that can hit an obstacle
         """
     @property
+    def corner_tests(self) -> int:
+        """
+        (corner direction, obstacle triangle) tests of the corner rays' first hits
+        """
+    @property
     def embree_s(self) -> float:
         """
         s in Embree's rtcIntersect1M calls with their ray packing, per thread and summed over threads: within trace_s + refine_s when parallel=False
@@ -773,12 +778,12 @@ class VolumeCost:
     @property
     def rays_skipped(self) -> int:
         """
-        cell and corner rays decided by the bounds alone
+        corner rays decided without Embree (the triangle tests, or the bounds)
         """
     @property
     def rays_traced(self) -> int:
         """
-        cell and corner rays handed to Embree
+        corner rays handed to Embree (the grid's corner rows that are no mesh rows)
         """
     @property
     def refine_rays(self) -> int:
