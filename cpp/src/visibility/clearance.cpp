@@ -180,10 +180,12 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
           if (rho_min <= 1e-9 || span_hi - span_lo > kPi - 1e-3) {
             every_lo = std::min(every_lo, lo);
             every_hi = std::max(every_hi, hi);
-            found.push_back({index.face[k], true, lo, hi, 0.0, kTwoPi});
+            found.push_back({index.face[k], true, sine_of_tangent(lo) - kSineSlack, sine_of_tangent(hi) + kSineSlack,
+                             0.0, kTwoPi});
             continue;
           }
-          found.push_back({index.face[k], false, lo, hi, span_lo - kAngleSlack, span_hi + kAngleSlack});
+          found.push_back({index.face[k], false, sine_of_tangent(lo) - kSineSlack, sine_of_tangent(hi) + kSineSlack,
+                           span_lo - kAngleSlack, span_hi + kAngleSlack});
           const int j0 = static_cast<int>(std::floor((span_lo - kAngleSlack) / d_az));
           const int j1 = static_cast<int>(std::floor((span_hi + kAngleSlack) / d_az));
           for (int j = j0; j <= j1; ++j) {

@@ -38,13 +38,13 @@ struct ObstacleIndex {
   std::size_t size() const { return ax.size(); }
 };
 
-// A triangle within reach of g and the directions from g its rays can lie in: tangents of
-// elevation [tan_lo, tan_hi] and azimuths [az_lo, az_hi] (radians, az_lo may be negative and
-// az_hi above 2 pi: the span wraps), or every azimuth.
+// A triangle within reach of g and the directions from g its rays can lie in: sines of
+// elevation [sin_lo, sin_hi] and azimuths [az_lo, az_hi] (radians, az_lo may be negative and
+// az_hi above 2 pi: the span wraps), or every azimuth; with the bounds' slack.
 struct Footprint {
   std::uint32_t face = 0;
   bool every = false;
-  double tan_lo = 0.0, tan_hi = 0.0, az_lo = 0.0, az_hi = 0.0;
+  double sin_lo = 0.0, sin_hi = 0.0, az_lo = 0.0, az_hi = 0.0;
 };
 
 // Per azimuth column j (azimuths [j, j + 1] * 2 pi / na, closed), the sines of elevation between

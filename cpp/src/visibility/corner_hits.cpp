@@ -27,13 +27,6 @@ namespace vistrack::detail {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kSineSlack = 1e-6;  // as the clearance bounds': a direction this close is tested
-
-double sine_of(double tangent) {
-  if (tangent == kInf) return 1.0;
-  if (tangent == -kInf) return -1.0;
-  return tangent / std::sqrt(1.0 + tangent * tangent);
-}
 
 // One triangle's tests, relative to g: inside(d) = all edge[e] . d >= 0; the distance
 // along d to its plane is offset / plane . d.
@@ -109,9 +102,8 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
     for (std::size_t k = part; k < clearance.footprints.size(); k += parts) {
       const Footprint& f = clearance.footprints[k];
       const auto ordinal = static_cast<double>(k);
-      const double lo = sine_of(f.tan_lo) - kSineSlack, hi = sine_of(f.tan_hi) + kSineSlack;
-      int i0 = static_cast<int>(std::lower_bound(sines.begin(), sines.end(), lo) - sines.begin());
-      int i1 = static_cast<int>(std::upper_bound(sines.begin(), sines.end(), hi) - sines.begin()) - 1;
+      const int i0 = static_cast<int>(std::lower_bound(sines.begin(), sines.end(), f.sin_lo) - sines.begin());
+      const int i1 = static_cast<int>(std::upper_bound(sines.begin(), sines.end(), f.sin_hi) - sines.begin()) - 1;
       if (i0 > i1) continue;
       const Cone cone = cone_of(triangles.data() + 9 * static_cast<std::size_t>(f.face), g_local);
       if (!cone.valid) continue;
