@@ -92,7 +92,7 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
     const double t_max = visible_far_bound(s, sines[i]) * (1.0 + 1e-6);
     row_w_min[i] = t_max > 0.0 ? 1.0 / t_max : kInf;
   }
-  // Footprints k = part, part + parts, ... into buffer `part` (the poles: one direction each).
+  // Footprints k = part, part + parts, ... into buffer `part`.
   auto scan = [&](std::size_t part, std::size_t parts) {
     out.inverse[part].assign(n, 0.0);  // on the thread that fills it
     out.owner[part].assign(n, -1.0);
@@ -134,16 +134,6 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
         const double sin_el = sines[static_cast<std::size_t>(i)];
         const double w_min = row_w_min[static_cast<std::size_t>(i)];
         if (w_min == kInf) continue;
-        if (i == 0 || i == ne) {
-          const Vec3 d(0.0, 0.0, sin_el);
-          const std::size_t v = i == 0 ? 0 : n - 1;
-          ++tested;
-          if (cone.edge[0].dot(d) >= 0.0 && cone.edge[1].dot(d) >= 0.0 && cone.edge[2].dot(d) >= 0.0) {
-            const double w = cone.plane.dot(d) * inv_offset;
-            if (w >= w_min && w > hit[v]) hit[v] = w, owner[v] = ordinal;
-          }
-          continue;
-        }
         const double cos_el = dirs.cos_el_corner[static_cast<std::size_t>(i)];
         // edge e . d = a_e cos az + b_e sin az + c_e along the row.
         std::array<double, 4> a{}, b{}, c{};
@@ -155,10 +145,13 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
         }
         double* row_hit = hit + sphere.row_first(i);
         double* row_owner = owner + sphere.row_first(i);
-        for (int r = 0; r < runs; ++r) {
-          tested += static_cast<std::size_t>(last[r] - first[r] + 1);
-          scan_run(dirs.cos_az_corner.data(), dirs.sin_az_corner.data(), first[r], last[r], a.data(), b.data(), c.data(),
-                   inv_offset, w_min, ordinal, row_hit, row_owner);
+        // A pole is one direction, column 0's: cos el = 0 makes the row's formula (0, 0, sin el).
+        const bool pole = i == 0 || i == ne;
+        for (int r = 0; r < (pole ? 1 : runs); ++r) {
+          const int j0 = pole ? 0 : first[static_cast<std::size_t>(r)], j1 = pole ? 0 : last[static_cast<std::size_t>(r)];
+          tested += static_cast<std::size_t>(j1 - j0 + 1);
+          scan_run(dirs.cos_az_corner.data(), dirs.sin_az_corner.data(), j0, j1, a.data(), b.data(), c.data(), inv_offset,
+                   w_min, ordinal, row_hit, row_owner);
         }
       }
     }
@@ -167,8 +160,8 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
   std::size_t tested = 0;
   if (parallel) {
     // Alternate footprints on two threads (neighbours in the list share a bucket row, so both
-    // threads get near and far triangles), each into its own buffer, merged as one pass in list order would have decided: the larger inverse
-    // distance, on a tie the earlier footprint.
+    // threads get near and far triangles), each into its own buffer, merged as one pass in list
+    // order would have decided: the larger inverse distance, on a tie the earlier footprint.
     std::size_t even = 0, odd = 0;
     tbb::parallel_invoke([&] { even = scan(0, 2); }, [&] { odd = scan(1, 2); });
     tested = even + odd;

@@ -2,6 +2,9 @@
 // ray, the triangulated sphere of grid corners, and a mesh writer that sums the volume.
 #pragma once
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -15,6 +18,18 @@ namespace vistrack::detail {
 // Which surface ends a visible interval: the position of a mesh vertex on a band cap or on the
 // ground gets that surface's exact z.
 enum class Surface : unsigned char { radial, band_low, band_high, ground };
+
+// Runs body(i) for i in [0, n): in parallel when asked (each i must touch its own data only).
+template <class Body>
+void for_each_index(bool parallel, int n, Body body) {
+  if (!parallel) {
+    for (int i = 0; i < n; ++i) body(i);
+    return;
+  }
+  tbb::parallel_for(tbb::blocked_range<int>(0, n, 8), [&](const tbb::blocked_range<int>& r) {
+    for (int i = r.begin(); i < r.end(); ++i) body(i);
+  });
+}
 
 struct Setup {
   Vec3 g;
@@ -101,8 +116,9 @@ struct SphereGrid {
     const int i = (t / 2) / na;
     return (t % 2 == 0) ? i >= 1 : i <= ne - 2;
   }
-  // First vertex of row i (a pole row is one vertex).
+  // First vertex of row i, and one past its last (a pole row is one vertex).
   int row_first(int i) const { return i == 0 ? 0 : (i == ne ? num_vertices() - 1 : 1 + (i - 1) * na); }
+  int row_end(int i) const { return row_first(i) + (i == 0 || i == ne ? 1 : na); }
   // The quads of row i: quad(j) gives the corners (i, j), (i, j+1), (i+1, j), (i+1, j+1) of quad
   // (i, j), j in [0, na), without vertex()'s branches per corner (the hot loops of the mesh).
   struct QuadRow {

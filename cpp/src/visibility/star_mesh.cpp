@@ -37,8 +37,6 @@
 #include "visibility/star_mesh.hpp"
 
 #include <Eigen/Geometry>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -86,18 +84,6 @@ double distance_on(const Setup& s, double far, Surface surface, const Vec3& d) {
   else return far;
   const double t = (z - s.g.z()) / d.z();
   return std::isfinite(t) && t > 0.0 ? std::min(t, s.d_max) : far;
-}
-
-// Runs body(i) for i in [0, n): in parallel when asked (each i must touch its own data only).
-template <class Body>
-void for_each_index(bool parallel, int n, Body body) {
-  if (!parallel) {
-    for (int i = 0; i < n; ++i) body(i);
-    return;
-  }
-  tbb::parallel_for(tbb::blocked_range<int>(0, n, 8), [&](const tbb::blocked_range<int>& r) {
-    for (int i = r.begin(); i < r.end(); ++i) body(i);
-  });
 }
 
 double six_volume_of(const Vec3& g, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -838,8 +824,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   static_assert(static_cast<int>(Surface::band_low) == 1 && static_cast<int>(Surface::band_high) == 2 &&
                 static_cast<int>(Surface::ground) == 3);
   for_each_index(parallel, ne + 1, [&](int i) {
-    const int first = sphere.row_first(i);
-    const int last = i == 0 || i == ne ? first + 1 : first + na;
+    const int first = sphere.row_first(i), last = sphere.row_end(i);
     const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)], cos_el = dirs.cos_el_corner[static_cast<std::size_t>(i)];
     for (int v = first; v < last; ++v) {
       const int id = corner_vertex[v];

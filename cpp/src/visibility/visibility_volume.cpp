@@ -1,7 +1,6 @@
 // alpha(g) of eq. (4) (section III.D) on a direction grid: the first obstacle hit per direction
 // (per-triangle tests at the grid corners, Embree rays elsewhere) gives the visible interval, and
 // the grid corners' intervals give a closed radial mesh.
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -247,18 +246,12 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   const std::size_t tests = detail::corner_hits(w.clearance, embree.triangles, g - embree.origin, s, sphere, dirs,
                                                 parallel, w.hits);
   auto each_corner = [&](auto&& store) {
-    auto row = [&](int i) {
+    detail::for_each_index(parallel, sphere.ne + 1, [&](int i) {
       const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)];
-      const auto first = static_cast<std::size_t>(sphere.row_first(i));
-      const std::size_t last = i == 0 || i == sphere.ne ? first + 1 : first + static_cast<std::size_t>(na);
-      for (std::size_t k = first; k < last; ++k) store(k, sin_el, w.hits.hit[k]);
-    };
-    if (!parallel) {
-      for (int i = 0; i <= sphere.ne; ++i) row(i);
-      return;
-    }
-    tbb::parallel_for(tbb::blocked_range<int>(0, sphere.ne + 1, 16), [&](const tbb::blocked_range<int>& r) {
-      for (int i = r.begin(); i < r.end(); ++i) row(i);
+      for (int k = sphere.row_first(i); k < sphere.row_end(i); ++k) {
+        const auto v = static_cast<std::size_t>(k);
+        store(v, sin_el, w.hits.hit[v]);
+      }
     });
   };
   if (s.poi_in_band) {
