@@ -58,6 +58,7 @@ const double kBracketWidth = std::ldexp(1.0, -kBisections);  // a jump is locate
 const double kAimStep = std::ldexp(1.0, -12);
 constexpr int kMaxAimed = 4;  // per jump (each miss walks to the next triangle of the occluder)
 constexpr std::uint32_t kNoTriangle = EmbreeScene::kNoTriangle;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr std::size_t kJumpBlock = 128;  // jumps located together (two chunks of rays per early round)
 constexpr int kPendingSplit = -2;        // Jump::split of an edge to split, before it is numbered
 
@@ -68,10 +69,27 @@ constexpr int kSplitShift = 2;        // bits 2..4: edge e of the slot is split
 
 bool is_plane(Surface s) { return s != Surface::radial; }
 
+// r differs enough between two rays to look for a jump between them: the one criterion of the
+// vectorized pre-filter (mark_gaps) and the exact test (differ).
+inline bool gap_between(double x, double y) { return std::abs(x - y) > kJumpCandidate * std::max(x, y); }
+
+// The pre-filter of one row of quads between the poles, without branches (most quads have no gap):
+// gap[j] = 1 (else 0) when quad j (lower corners lo[j], lo[j + 1], upper hi[j], hi[j + 1]) has a
+// gap on its bottom, left or diagonal edge, for j < count. A function of its own with restrict
+// pointers and doubles for flags, so that GCC vectorizes it (a byte flag in the lambda kept it
+// scalar: the iterations could not be counted, and no vector holds doubles and bytes alike).
+void mark_gaps(const double* __restrict lo, const double* __restrict hi, int count, double* __restrict gap) {
+  for (int j = 0; j < count; ++j) {
+    const double a = lo[j], b = lo[j + 1], c = hi[j], d = hi[j + 1];
+    const bool any = gap_between(a, d) | gap_between(a, b) | gap_between(a, c);
+    gap[j] = any ? 1.0 : 0.0;
+  }
+}
+
 // r differs enough between two rays to look for a jump between them (two hits on one plane are
 // joined exactly by the flat triangle between them).
 bool differ(double a, Surface sa, double b, Surface sb) {
-  return std::abs(a - b) > kJumpCandidate * std::max(a, b) && !(sa == sb && is_plane(sa));
+  return gap_between(a, b) && !(sa == sb && is_plane(sa));
 }
 
 // Distance along unit d to the surface that ended an interval measured on a nearby ray: the exact
@@ -112,6 +130,13 @@ double cone_exit(const float* t, const Vec3& g_local, const Vec3& a, const Vec3&
     if (along > 0.0 && along < nearest) nearest = along, exit = from + along * (to - from);
   }
   return exit;
+}
+
+// Distance from g along unit d to the plane of triangle t (9 floats, g's frame offset by g_local).
+double plane_distance(const float* t, const Vec3& g_local, const Vec3& d) {
+  const Vec3 p0(t[0], t[1], t[2]), p1(t[3], t[4], t[5]), p2(t[6], t[7], t[8]);
+  const Vec3 n = (p1 - p0).cross(p2 - p0);
+  return n.dot(p0 - g_local) / n.dot(d);
 }
 
 // The triangles of a slot with corners c (outward order; edge e runs from c[e] to c[e + 1]) and
@@ -219,10 +244,17 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   auto& alive = sc.alive;
   alive.resize(static_cast<std::size_t>(nv));
   int dead = 0;
-  for (int v = 0; v < nv; ++v) {
-    const std::uint8_t a = far[v] > alive_gap ? 1 : 0;
-    alive[v] = a;
-    dead += 1 - a;
+  {
+    // Locals: a byte store could otherwise alias the vectors' own pointers and nv (which lambdas
+    // capture by reference), reloaded per corner.
+    const double* r = far.data();
+    std::uint8_t* live_corner = alive.data();
+    const int corners = nv;
+    for (int v = 0; v < corners; ++v) {
+      const std::uint8_t a = r[v] > alive_gap ? 1 : 0;
+      live_corner[v] = a;
+      dead += 1 - a;
+    }
   }
   const bool all_alive = dead == 0;
   auto& flags = sc.slot_flags;
@@ -309,29 +341,21 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     // across the byte-sized flag writes); the surfaces only when it passes.
     const double* r = far.data();
     const Surface* sf = surface.data();
-    // One jump criterion for the vectorized pre-filter and the exact test.
-    auto gap_between = [](double x, double y) { return std::abs(x - y) > kJumpCandidate * std::max(x, y); };
     auto gap = [&](int p, int q) { return gap_between(r[p], r[q]); };
     auto plane_pair = [&](int p, int q) { return sf[p] == sf[q] && is_plane(sf[p]); };
-    // Rows between the poles first test every quad without branches (a loop the compiler
-    // vectorizes; most quads have no gap), then look at the few that have one.
-    std::vector<std::uint8_t>& any_gap = sc.chunk_gap[static_cast<std::size_t>(chunk)];
+    // Rows between the poles first test every quad without branches (mark_gaps), then look at the
+    // few that have a gap.
+    std::vector<double>& any_gap = sc.chunk_gap[static_cast<std::size_t>(chunk)];
     any_gap.resize(static_cast<std::size_t>(na));
     for (int i = chunk * kRowChunk; i < std::min(ne, (chunk + 1) * kRowChunk); ++i) {
       const SphereGrid::QuadRow row = sphere.quad_row(i);
       const bool inner = !row.south && !row.north;
       if (inner) {
-        const double* lo = r + row.lo;
-        const double* hi = r + row.hi;
-        for (int j = 0; j + 1 < na; ++j) {
-          const double a = lo[j], b = lo[j + 1], c = hi[j], d = hi[j + 1];
-          const bool g = gap_between(a, d) | gap_between(a, b) | gap_between(a, c);
-          any_gap[static_cast<std::size_t>(j)] = g ? 1 : 0;
-        }
-        any_gap[static_cast<std::size_t>(na - 1)] = 1;  // the wrapping quad: tested below
+        mark_gaps(r + row.lo, r + row.hi, na - 1, any_gap.data());
+        any_gap[static_cast<std::size_t>(na - 1)] = 1.0;  // the wrapping quad: tested below
       }
       for (int j = 0; j < na; ++j) {
-        if (inner && !any_gap[static_cast<std::size_t>(j)]) continue;
+        if (inner && any_gap[static_cast<std::size_t>(j)] == 0.0) continue;
         const auto [v00, v01, v10, v11] = row.quad(j);
         const bool diagonal = gap(v00, v11), bottom = !row.south && gap(v00, v01), left = gap(v00, v10);
         if (!(diagonal || bottom || left)) continue;
@@ -378,7 +402,8 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   // still meets the occluder (its next triangle) narrows the bracket all the same and aims again
   // from there, at most kMaxAimed times.
   const Vec3 g_local = s.g - tracer.embree.origin;
-  auto probe_of = [&](Jump& jump) {
+  auto probe_of = [&](Jump& jump, std::uint32_t& predicted) {
+    predicted = kNoTriangle;
     const double middle = 0.5 * (jump.lambda_lo + jump.lambda_hi);
     if (jump.aimed >= kMaxAimed) return middle;
     const bool lo_near = jump.lo_far <= jump.hi_far;
@@ -394,6 +419,9 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     };
     const double probe = inside(exit + step) ? exit + step : (inside(exit - step) ? exit - step : middle);
     if (probe != middle) ++jump.aimed;
+    // The ray just before the exit lies inside the occluder's cone (the rays from `from` to the exit
+    // do: the inside of a cone is an interval of lambda): it meets the occluder, at its plane.
+    if (probe == exit - step) predicted = occluder;
     return probe;
   };
   // The foot of a building seen from above the ground: an edge from a ray on the ground to one on
@@ -430,7 +458,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     sc.middle.resize(end - first);
     auto run_block = [&](std::size_t begin, std::size_t stop, JumpBlock& block) {
       FlushDenormals flush;
-      auto& [active, direction, probe, mid_far, mid_surface, mid_triangle, kink_ray] = block;
+      auto& [active, direction, probe, mid_far, mid_surface, mid_triangle, kink_ray, traced] = block;
       active.clear();
       for (std::size_t k = begin; k < stop; ++k) active.push_back(static_cast<std::int32_t>(k));
       for (int round = 0; round < kBisections + kMaxAimed && !active.empty(); ++round) {
@@ -441,26 +469,41 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
         direction.resize(n);
         probe.resize(n);
         kink_ray.resize(n);
+        mid_far.resize(n);
+        mid_surface.resize(n);
+        mid_triangle.resize(n);
+        traced.clear();
         for (std::size_t m = 0; m < n; ++m) {
           Jump& jump = jumps[static_cast<std::size_t>(active[m])];
           const double kink = middles ? kink_of(jump) : std::numeric_limits<double>::quiet_NaN();
           kink_ray[m] = std::isfinite(kink) ? 1 : 0;
-          const double lambda = kink_ray[m] ? kink : (middles ? 0.5 * (jump.lambda_lo + jump.lambda_hi) : probe_of(jump));
+          std::uint32_t predicted = kNoTriangle;
+          const double lambda =
+              kink_ray[m] ? kink : (middles ? 0.5 * (jump.lambda_lo + jump.lambda_hi) : probe_of(jump, predicted));
           probe[m] = lambda;
           direction[m] = ((1.0 - lambda) * sample_direction(jump.u) + lambda * sample_direction(jump.w)).normalized();
+          if (predicted == kNoTriangle) {
+            traced.push_back(static_cast<std::int32_t>(m));
+            continue;
+          }
+          // As a traced ray would store it: hits count up to the visible part's end.
+          const double hit = plane_distance(tracer.embree.triangles.data() + 9 * static_cast<std::size_t>(predicted),
+                                            g_local, direction[m]);
+          const bool within = hit <= visible_far_bound(s, direction[m].z()) * (1.0 + 1e-6);
+          mid_far[m] = star_far(s, direction[m].z(), within ? hit : kInfinity, mid_surface[m]);
+          mid_triangle[m] = within ? predicted : kNoTriangle;
         }
-        mid_far.resize(n);
-        mid_surface.resize(n);
-        mid_triangle.resize(n);
         trace_range(
-            tracer, 0, n,
+            tracer, 0, traced.size(),
             [&](std::size_t start, std::size_t count, Vec3* d, int* column) {
-              for (std::size_t m = 0; m < count; ++m) {
-                d[m] = direction[start + m];
-                column[m] = (jumps[static_cast<std::size_t>(active[start + m])].slot / 2) % na;
+              for (std::size_t k = 0; k < count; ++k) {
+                const auto m = static_cast<std::size_t>(traced[start + k]);
+                d[k] = direction[m];
+                column[k] = (jumps[static_cast<std::size_t>(active[m])].slot / 2) % na;
               }
             },
-            [&](std::size_t m, const Vec3& d, double hit, std::uint32_t hit_triangle) {
+            [&](std::size_t k, const Vec3& d, double hit, std::uint32_t hit_triangle) {
+              const auto m = static_cast<std::size_t>(traced[k]);
               mid_far[m] = star_far(s, d.z(), hit, mid_surface[m]);
               mid_triangle[m] = hit_triangle;
             });
@@ -764,8 +807,9 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) plain += slot_flag[t] == kLive;
       if (plain == 2 * na) {
         plain_row[static_cast<std::size_t>(i)] = 1;
-        for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) offsets[t + 1] = ++faces;
-        return faces;
+        const int first = 2 * i * na, slots = 2 * na;  // locals: the stores could alias na otherwise
+        for (int k = 0; k < slots; ++k) offsets[first + k + 1] = faces + k + 1;
+        return faces + slots;
       }
     }
     for (int t = 2 * i * na; t < 2 * (i + 1) * na; ++t) {

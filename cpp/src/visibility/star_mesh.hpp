@@ -71,13 +71,14 @@ struct JumpBlock {
   std::vector<Surface> mid_surface;
   std::vector<std::uint32_t> mid_triangle;
   std::vector<std::uint8_t> kink_ray;
+  std::vector<std::int32_t> traced;  // the probes handed to Embree (the others are predicted)
 };
 
 // Buffers of one star mesh, kept between VVs so that a batch allocates them once.
 struct StarMeshScratch {
   std::vector<std::uint8_t> alive, slot_flags, candidate;
   std::vector<std::vector<Jump>> chunk_jumps;        // the jump candidates found per chunk of rows
-  std::vector<std::vector<std::uint8_t>> chunk_gap;  // per chunk of rows: which quads have a gap
+  std::vector<std::vector<double>> chunk_gap;  // per chunk of rows: which quads have a gap (0 or 1)
   std::vector<Jump> jumps;
   EdgeMap edges;
   // The ray where each jump of a first pass splits its edge (numbered after the pass).
