@@ -142,14 +142,21 @@ def main() -> int:
     for res in (1.0, 0.5):
         costs = [_core.visibility_volume_cost(scene, p, args.d_max, None, res, False)[1] for p in pois]
         fields = ("bounds_s", "trace_s", "refine_s", "mesh_s", "volume_s", "rays_traced", "rays_skipped", "refine_rays",
-                  "embree_s", "corner_tests")
+                  "embree_s", "corner_tests", "refine_predicted")
         total = {k: float(np.mean([getattr(c, k) for c in costs])) for k in fields}
         phases = ("bounds_s", "trace_s", "refine_s", "mesh_s", "volume_s")
         spent = sum(total[k] for k in phases)
         print(f"{res:g} deg, one VV on one thread: {spent * 1e3:.2f} ms = "
               + ", ".join(f"{k[:-2]} {total[k] * 1e3:.2f}" for k in phases)
               + f"; corner rays: {total['rays_skipped']:.0f} decided without Embree ({total['corner_tests']:.0f} "
-              f"triangle tests), {total['rays_traced']:.0f} traced; {total['refine_rays']:.0f} refining rays")
+              f"triangle tests), {total['rays_traced']:.0f} traced; {total['refine_rays']:.0f} refining rays traced, "
+              f"{total['refine_predicted']:.0f} predicted")
+        # The predicted rays (just before an occluder's edge) traced as well, once, as a check.
+        checks = [_core.visibility_volume_cost(scene, p, args.d_max, None, res, False, True)[1] for p in pois]
+        predicted = sum(c.refine_predicted for c in checks)
+        misses = sum(c.predicted_misses for c in checks)
+        print(f"  predicted rays traced as a check: {misses} of {predicted} differ from Embree by more than 0.1 % "
+              f"(largest |predicted / traced - 1| {max(c.predicted_error for c in checks):.1e})")
         # The floor these rays set: Embree's own time, whatever the rest of the VV costs.
         cores = len(os.sched_getaffinity(0))
         cap = f"{cores / total['embree_s']:.0f}" if total["embree_s"] > 0 else "no"

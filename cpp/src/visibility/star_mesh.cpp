@@ -214,7 +214,8 @@ std::int32_t EdgeMap::find(std::uint64_t k) const {
 
 void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs, const std::vector<double>& far,
                      const std::vector<Surface>& surface, const std::vector<std::uint32_t>& triangle,
-                     const TraceContext& tracer_in, StarMeshScratch& sc, VisibilityVolume& vv, VolumeCost* cost) {
+                     const TraceContext& tracer_in, StarMeshScratch& sc, VisibilityVolume& vv, VolumeCost* cost,
+                     bool check_predicted) {
   PhaseTimer refine_timer(cost ? &cost->refine_s : nullptr);
   RayCounts refine_counts;
   refine_counts.timed = cost != nullptr;
@@ -458,7 +459,8 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     sc.middle.resize(end - first);
     auto run_block = [&](std::size_t begin, std::size_t stop, JumpBlock& block) {
       FlushDenormals flush;
-      auto& [active, direction, probe, mid_far, mid_surface, mid_triangle, kink_ray, traced] = block;
+      auto& [active, direction, probe, mid_far, mid_surface, mid_triangle, kink_ray, traced, predicted_ray, predictions,
+             prediction_misses, prediction_error] = block;
       active.clear();
       for (std::size_t k = begin; k < stop; ++k) active.push_back(static_cast<std::int32_t>(k));
       for (int round = 0; round < kBisections + kMaxAimed && !active.empty(); ++round) {
@@ -472,6 +474,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
         mid_far.resize(n);
         mid_surface.resize(n);
         mid_triangle.resize(n);
+        predicted_ray.assign(n, 0);
         traced.clear();
         for (std::size_t m = 0; m < n; ++m) {
           Jump& jump = jumps[static_cast<std::size_t>(active[m])];
@@ -482,10 +485,10 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
               kink_ray[m] ? kink : (middles ? 0.5 * (jump.lambda_lo + jump.lambda_hi) : probe_of(jump, predicted));
           probe[m] = lambda;
           direction[m] = ((1.0 - lambda) * sample_direction(jump.u) + lambda * sample_direction(jump.w)).normalized();
-          if (predicted == kNoTriangle) {
-            traced.push_back(static_cast<std::int32_t>(m));
-            continue;
-          }
+          if (predicted == kNoTriangle || check_predicted) traced.push_back(static_cast<std::int32_t>(m));
+          if (predicted == kNoTriangle) continue;
+          predicted_ray[m] = 1;
+          ++predictions;
           // As a traced ray would store it: hits count up to the visible part's end.
           const double hit = plane_distance(tracer.embree.triangles.data() + 9 * static_cast<std::size_t>(predicted),
                                             g_local, direction[m]);
@@ -504,7 +507,16 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
             },
             [&](std::size_t k, const Vec3& d, double hit, std::uint32_t hit_triangle) {
               const auto m = static_cast<std::size_t>(traced[k]);
-              mid_far[m] = star_far(s, d.z(), hit, mid_surface[m]);
+              Surface traced_surface;
+              const double traced_far = star_far(s, d.z(), hit, traced_surface);
+              if (predicted_ray[m]) {  // checked only: the prediction stays
+                const double error = std::abs(mid_far[m] / traced_far - 1.0);
+                prediction_misses += error > 1e-3 ? 1 : 0;
+                prediction_error = std::max(prediction_error, error);
+                return;
+              }
+              mid_far[m] = traced_far;
+              mid_surface[m] = traced_surface;
               mid_triangle[m] = hit_triangle;
             });
         std::size_t kept = 0;
@@ -545,10 +557,20 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     };
     const std::size_t blocks = (end - first + kJumpBlock - 1) / kJumpBlock;
     if (sc.blocks.size() < blocks) sc.blocks.resize(blocks);
+    for (std::size_t b = 0; b < blocks; ++b) {
+      sc.blocks[b].predictions = sc.blocks[b].prediction_misses = 0;
+      sc.blocks[b].prediction_error = 0.0;
+    }
     for_each_index(tracer.parallel && blocks > 1, static_cast<int>(blocks), [&](int b) {
       const std::size_t begin = first + static_cast<std::size_t>(b) * kJumpBlock;
       run_block(begin, std::min(end, begin + kJumpBlock), sc.blocks[static_cast<std::size_t>(b)]);
     });
+    if (cost != nullptr)
+      for (std::size_t b = 0; b < blocks; ++b) {
+        cost->refine_predicted += sc.blocks[b].predictions;
+        cost->predicted_misses += sc.blocks[b].prediction_misses;
+        cost->predicted_error = std::max(cost->predicted_error, sc.blocks[b].prediction_error);
+      }
     for (std::size_t k = first; k < end; ++k) {
       Jump& jump = jumps[k];
       if (jump.split != kPendingSplit) continue;

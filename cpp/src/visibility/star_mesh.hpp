@@ -72,6 +72,10 @@ struct JumpBlock {
   std::vector<std::uint32_t> mid_triangle;
   std::vector<std::uint8_t> kink_ray;
   std::vector<std::int32_t> traced;  // the probes handed to Embree (the others are predicted)
+  std::vector<std::uint8_t> predicted;  // per probe: predicted (traced only when checked)
+  std::size_t predictions = 0;          // over the block's rounds
+  std::size_t prediction_misses = 0;    // checked: predicted and traced far differ by > 0.1 %
+  double prediction_error = 0.0;        // checked: the largest |predicted / traced - 1| of far
 };
 
 // Buffers of one star mesh, kept between VVs so that a batch allocates them once.
@@ -108,10 +112,11 @@ struct StarMeshScratch {
 // obstacle triangle triangle[v] that ended the corner's ray), with radial walls at the jumps of r
 // located with more rays (aimed at the edge of the occluding triangle, else by bisection), and the grid's triangles split
 // where an edge holds two jumps. Sets vv.mesh, vv.volume and vv.mesh_triangle_faces (the faces
-// built over each triangle slot of `sphere`).
+// built over each triangle slot of `sphere`). check_predicted traces the rays it predicts too,
+// into cost->predicted_error (the mesh keeps the predictions).
 void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs, const std::vector<double>& far,
                      const std::vector<Surface>& surface, const std::vector<std::uint32_t>& triangle,
                      const TraceContext& tracer, StarMeshScratch& scratch, VisibilityVolume& vv,
-                     VolumeCost* cost = nullptr);
+                     VolumeCost* cost = nullptr, bool check_predicted = false);
 
 }  // namespace vistrack::detail

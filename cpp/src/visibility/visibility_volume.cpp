@@ -205,7 +205,7 @@ void grid_intervals(VisibilityVolume& vv, const Setup& s, const detail::SphereGr
 // The VV; `parallel` spreads its rays and rows over TBB's threads (the result is the same).
 VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_max,
                          const std::optional<std::pair<double, double>>& band, double resolution_deg, bool parallel,
-                         VolumeCost* cost = nullptr) {
+                         VolumeCost* cost = nullptr, bool check_predicted = false) {
   VisibilityVolume vv;
   vv.poi = g;
   vv.d_max = d_max;
@@ -270,7 +270,7 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   trace_timer.stop();
   if (s.poi_in_band) {
     detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, w.hits.triangle, tracer, w.star, vv,
-                            cost);
+                            cost, check_predicted);
     vv.mesh_row_sines = row_sines;
   } else {
     detail::PhaseTimer mesh_timer(cost ? &cost->mesh_s : nullptr);
@@ -299,11 +299,12 @@ VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, 
 
 VisibilityVolume visibility_volume_with_cost(const VisibilityScene& scene, const Vec3& g, double d_max,
                                              std::optional<std::pair<double, double>> altitude_band,
-                                             double resolution_deg, VolumeCost& cost, bool parallel) {
+                                             double resolution_deg, VolumeCost& cost, bool parallel,
+                                             bool check_predicted) {
   validate(scene, g, d_max, altitude_band, "g");
   (void)DirectionGrid::from_resolution(resolution_deg);
   VisibilityVolume vv;
-  tbb::this_task_arena::isolate([&] { vv = compute(scene, g, d_max, altitude_band, resolution_deg, parallel, &cost); });
+  tbb::this_task_arena::isolate([&] { vv = compute(scene, g, d_max, altitude_band, resolution_deg, parallel, &cost, check_predicted); });
   return vv;
 }
 

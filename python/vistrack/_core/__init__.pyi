@@ -776,6 +776,16 @@ class VolumeCost:
         s: writing the mesh
         """
     @property
+    def predicted_error(self) -> float:
+        """
+        with check_predicted=True: the largest |predicted / traced - 1| of those rays' visible distance
+        """
+    @property
+    def predicted_misses(self) -> int:
+        """
+        with check_predicted=True (each predicted ray traced as well, and counted in refine_rays; the VV keeps the predictions): how many differ from Embree by more than 0.1 % in visible distance (where the ray grazes the occluder's edge closer than Embree's float test resolves)
+        """
+    @property
     def rays_skipped(self) -> int:
         """
         corner rays decided without Embree (the triangle tests, or the bounds)
@@ -784,6 +794,11 @@ class VolumeCost:
     def rays_traced(self) -> int:
         """
         corner rays handed to Embree (the grid's corner rows that are no mesh rows)
+        """
+    @property
+    def refine_predicted(self) -> int:
+        """
+        refining rays decided without Embree: a ray just before an occluder's edge lies inside its cone and meets it at its plane
         """
     @property
     def refine_rays(self) -> int:
@@ -1916,9 +1931,9 @@ def visibility_volume(scene: VisibilityScene, g: typing.Annotated[numpy.typing.A
     """
     Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when given, on a grid of about resolution_deg degrees.
     """
-def visibility_volume_cost(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, parallel: bool = True) -> tuple[VisibilityVolume, VolumeCost]:
+def visibility_volume_cost(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, parallel: bool = True, check_predicted: bool = False) -> tuple[VisibilityVolume, VolumeCost]:
     """
-    visibility_volume and where its time and rays went: (vv, VolumeCost); parallel=False keeps it on the calling thread (as in a batch).
+    visibility_volume and where its time and rays went: (vv, VolumeCost); parallel=False keeps it on the calling thread (as in a batch); check_predicted=True also traces the refining rays it predicts (VolumeCost.predicted_misses, predicted_error).
     """
 def visibility_volumes(scene: VisibilityScene, pois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> list[VisibilityVolume]:
     """
