@@ -891,17 +891,23 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
                 static_cast<int>(Surface::ground) == 3);
   for_each_index(parallel, ne + 1, [&](int i) {
     const int first = sphere.row_first(i), last = sphere.row_end(i);
+    // Locals: the stores of doubles could otherwise alias g, the row's angles and the arrays'
+    // pointers, reloaded per corner.
     const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)], cos_el = dirs.cos_el_corner[static_cast<std::size_t>(i)];
+    const double gx = s.g.x(), gy = s.g.y(), gz = s.g.z();
+    const double* r = far.data();
+    const Surface* on = surface.data();
+    const double* cos_az = dirs.cos_az_corner.data();
+    const double* sin_az = dirs.sin_az_corner.data();
+    const std::int32_t* id = corner_vertex.data();
+    double* vertices = mesh.vertices.data();
     for (int v = first; v < last; ++v) {
-      const int id = corner_vertex[v];
-      if (id < 0) continue;
-      const std::size_t j = static_cast<std::size_t>(v - first);
-      const double r = far[v];
-      double* out = mesh.vertices.data() + 3 * static_cast<std::size_t>(id);
-      out[0] = s.g.x() + r * (cos_el * dirs.cos_az_corner[j]);
-      out[1] = s.g.y() + r * (cos_el * dirs.sin_az_corner[j]);
-      out[2] = s.g.z() + r * sin_el;
-      if (surface[v] != Surface::radial) out[2] = plane_z[static_cast<std::size_t>(surface[v])];
+      if (id[v] < 0) continue;
+      const auto j = static_cast<std::size_t>(v - first);
+      double* out = vertices + 3 * static_cast<std::size_t>(id[v]);
+      out[0] = gx + r[v] * (cos_el * cos_az[j]);
+      out[1] = gy + r[v] * (cos_el * sin_az[j]);
+      out[2] = on[v] == Surface::radial ? gz + r[v] * sin_el : plane_z[static_cast<std::size_t>(on[v])];
     }
   });
   for (std::size_t k = 0; k < extra_vertex.size(); ++k)

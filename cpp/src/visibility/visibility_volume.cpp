@@ -173,6 +173,13 @@ void grid_intervals(VisibilityVolume& vv, const Setup& s, const detail::SphereGr
     }
     const int first = sphere.row_first(static_cast<int>(v));
     const bool pole = v == 0 || v + 1 == row_sines.size();
+    if (s.poi_in_band && !pole) {
+      // A star VV's row as set() writes it, in a loop the compiler vectorizes (near stays 0).
+      const double* from = w.corner_far.data() + first;
+      double* to = vv.far.data() + static_cast<std::size_t>(i) * n;
+      for (std::size_t j = 0; j < n; ++j) to[j] = std::max(0.0, from[j]);
+      continue;
+    }
     for (std::size_t j = 0; j < n; ++j) {
       const auto c = static_cast<std::size_t>(pole ? first : first + static_cast<int>(j));
       const std::size_t k = static_cast<std::size_t>(i) * n + j;
