@@ -171,15 +171,18 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
   out.hit.resize(n);
   out.triangle.resize(n);
   auto finish = [&](std::size_t begin, std::size_t end) {
+    // Locals: the stores could otherwise alias the vectors' pointers, reloaded per corner.
+    const double *w0 = out.inverse[0].data(), *owner0 = out.owner[0].data();
+    const double *w1 = out.inverse[1].data(), *owner1 = out.owner[1].data();
+    const Footprint* footprints = clearance.footprints.data();
+    double* hit = out.hit.data();
+    std::uint32_t* triangle = out.triangle.data();
     for (std::size_t v = begin; v < end; ++v) {
-      double w = out.inverse[0][v], owner = out.owner[0][v];
-      if (parallel) {
-        const double w1 = out.inverse[1][v], owner1 = out.owner[1][v];
-        if (w1 > w || (w1 == w && owner1 >= 0.0 && owner1 < owner)) w = w1, owner = owner1;
-      }
+      double w = w0[v], owner = owner0[v];
+      if (parallel && (w1[v] > w || (w1[v] == w && owner1[v] >= 0.0 && owner1[v] < owner))) w = w1[v], owner = owner1[v];
       const bool met = owner >= 0.0;
-      out.hit[v] = met ? 1.0 / w : kInf;
-      out.triangle[v] = met ? clearance.footprints[static_cast<std::size_t>(owner)].face : EmbreeScene::kNoTriangle;
+      hit[v] = met ? 1.0 / w : kInf;
+      triangle[v] = met ? footprints[static_cast<std::size_t>(owner)].face : EmbreeScene::kNoTriangle;
     }
   };
   if (parallel) tbb::parallel_invoke([&] { finish(0, n / 2); }, [&] { finish(n / 2, n); });

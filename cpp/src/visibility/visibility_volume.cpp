@@ -252,22 +252,26 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   // The corner rays' first hits from the triangles' footprints (corner_hits.hpp), not Embree.
   const std::size_t tests = detail::corner_hits(w.clearance, embree.triangles, g - embree.origin, s, sphere, dirs,
                                                 parallel, w.hits);
+  // Per corner from its hit, on locals (the stores could otherwise alias the row's bounds and the
+  // arrays' pointers, reloaded per corner).
   auto each_corner = [&](auto&& store) {
     detail::for_each_index(parallel, sphere.ne + 1, [&](int i) {
       const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)];
-      for (int k = sphere.row_first(i); k < sphere.row_end(i); ++k) {
-        const auto v = static_cast<std::size_t>(k);
-        store(v, sin_el, w.hits.hit[v]);
-      }
+      const auto first = static_cast<std::size_t>(sphere.row_first(i)), end = static_cast<std::size_t>(sphere.row_end(i));
+      const double* hit = w.hits.hit.data();
+      for (std::size_t v = first; v < end; ++v) store(v, sin_el, hit[v]);
     });
   };
   if (s.poi_in_band) {
     w.corner_far.resize(n_corners);
     w.corner_surface.resize(n_corners);
-    each_corner([&](std::size_t k, double sin_el, double hit) { w.corner_far[k] = detail::star_far(s, sin_el, hit, w.corner_surface[k]); });
+    double* far = w.corner_far.data();
+    detail::Surface* surface = w.corner_surface.data();
+    each_corner([&](std::size_t k, double sin_el, double hit) { far[k] = detail::star_far(s, sin_el, hit, surface[k]); });
   } else {
     w.corner.resize(n_corners);
-    each_corner([&](std::size_t k, double sin_el, double hit) { w.corner[k] = detail::visible_interval(s, sin_el, hit); });
+    Interval* corner = w.corner.data();
+    each_corner([&](std::size_t k, double sin_el, double hit) { corner[k] = detail::visible_interval(s, sin_el, hit); });
   }
   if (cost != nullptr) {
     cost->rays_skipped += n_corners;  // every vertex row's corner ray: no Embree
