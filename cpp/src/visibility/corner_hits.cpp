@@ -55,8 +55,10 @@ Cone cone_of(const float* t, const Vec3& g_local) {
 // One run of columns [first, last] of a row: coefficients a, b, c give edge e . d (e < 3) and
 // plane . d (e = 3) as a[e] cos az + b[e] sin az + c[e]. Keeps per column the nearest hit as its
 // inverse distance w = plane . d / offset (no division per direction; larger is nearer, 0 none)
-// and its owner (the footprint's ordinal, as a double so that the loop vectorizes: the same
-// lanes).
+// and its owner (the footprint's ordinal, as a double). GCC compiles the two stores under one
+// branch and does not vectorize the loop; written branch-free (a max, and the owner by
+// arithmetic) it vectorized, or stayed scalar without that branch, and neither was faster on
+// these short runs (about 5 columns).
 inline void scan_run(
     const double* __restrict cos_az, const double* __restrict sin_az, int first, int last, const double* a,
     const double* b, const double* c, double inv_offset, double w_min, double owner, double* __restrict row_w,
@@ -69,7 +71,6 @@ inline void scan_run(
     const double e1 = a1 * ca + b1 * sa + c1;
     const double e2 = a2 * ca + b2 * sa + c2;
     const double w = (a3 * ca + b3 * sa + c3) * inv_offset;
-    // Without branches (the edge tests flip unpredictably along a row).
     const bool take = (e0 >= 0.0) & (e1 >= 0.0) & (e2 >= 0.0) & (w >= w_min) & (w > row_w[j]);
     row_w[j] = take ? w : row_w[j];
     row_owner[j] = take ? owner : row_owner[j];
@@ -94,8 +95,10 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
   }
   // Footprints k = part, part + parts, ... into buffer `part`.
   auto scan = [&](std::size_t part, std::size_t parts) {
-    out.inverse[part].assign(n, 0.0);  // on the thread that fills it
-    out.owner[part].assign(n, -1.0);
+    // On the thread that fills it. The owner is read only where a hit was kept (w > 0), which
+    // sets it: no fill (stale values from the previous VV, never read).
+    out.inverse[part].assign(n, 0.0);
+    out.owner[part].resize(n);
     double* hit = out.inverse[part].data();
     double* owner = out.owner[part].data();
     std::size_t tested = 0;
@@ -179,8 +182,8 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
     std::uint32_t* triangle = out.triangle.data();
     for (std::size_t v = begin; v < end; ++v) {
       double w = w0[v], owner = owner0[v];
-      if (parallel && (w1[v] > w || (w1[v] == w && owner1[v] >= 0.0 && owner1[v] < owner))) w = w1[v], owner = owner1[v];
-      const bool met = owner >= 0.0;
+      if (parallel && (w1[v] > w || (w1[v] == w && w > 0.0 && owner1[v] < owner))) w = w1[v], owner = owner1[v];
+      const bool met = w > 0.0;
       hit[v] = met ? 1.0 / w : kInf;
       triangle[v] = met ? footprints[static_cast<std::size_t>(owner)].face : EmbreeScene::kNoTriangle;
     }
