@@ -113,7 +113,7 @@ struct StarMeshScratch {
 // located with more rays (aimed at the edge of the occluding triangle, else by bisection), and the grid's triangles split
 // where an edge holds two jumps. Sets vv.mesh, vv.volume and vv.mesh_triangle_faces (the faces
 // built over each triangle slot of `sphere`). check_predicted traces the rays it predicts too,
-// into cost->predicted_error (the mesh keeps the predictions).
+// into cost's predicted_misses and predicted_error (the mesh keeps the predictions).
 void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs, const std::vector<double>& far,
                      const std::vector<Surface>& surface, const std::vector<std::uint32_t>& triangle,
                      const TraceContext& tracer, StarMeshScratch& scratch, VisibilityVolume& vv,

@@ -257,7 +257,8 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   auto each_corner = [&](auto&& store) {
     detail::for_each_index(parallel, sphere.ne + 1, [&](int i) {
       const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)];
-      const auto first = static_cast<std::size_t>(sphere.row_first(i)), end = static_cast<std::size_t>(sphere.row_end(i));
+      const auto first = static_cast<std::size_t>(sphere.row_first(i));
+      const auto end = static_cast<std::size_t>(sphere.row_end(i));
       const double* hit = w.hits.hit.data();
       for (std::size_t v = first; v < end; ++v) store(v, sin_el, hit[v]);
     });
@@ -315,7 +316,8 @@ VisibilityVolume visibility_volume_with_cost(const VisibilityScene& scene, const
   validate(scene, g, d_max, altitude_band, "g");
   (void)DirectionGrid::from_resolution(resolution_deg);
   VisibilityVolume vv;
-  tbb::this_task_arena::isolate([&] { vv = compute(scene, g, d_max, altitude_band, resolution_deg, parallel, &cost, check_predicted); });
+  tbb::this_task_arena::isolate(
+      [&] { vv = compute(scene, g, d_max, altitude_band, resolution_deg, parallel, &cost, check_predicted); });
   return vv;
 }
 
