@@ -30,7 +30,6 @@ if os.environ.get("VISTRACK_BUILD_DIR"):
 from follow_city_options import changed, cities, city_follower
 from vistrack import VisibilityScene
 from vistrack.follow import FollowScenario
-from vistrack.follow.simulation import baseline
 
 FILES = [REPO / "examples" / f"follow_{name}_city.yaml" for name in ("straight", "wind")]
 BOTH = "camera_and_line_of_sight_fraction"
@@ -40,10 +39,7 @@ def from_start(scenario: FollowScenario, scene: VisibilityScene, env: Any, pose:
                ) -> dict[str, float]:
     """Camera and line of sight together for the baseline, the orbit and the horizon follower from ``pose``,
     each as ``FollowScenario.run`` flies it (the same wind knowledge, flight, camera and reports)."""
-    base = baseline(scenario.city_vehicle(env), scenario.uav, scenario.baseline_radius,
-                    control=scenario.baseline_control, parameters=scenario.parameters, wind=scenario.wind,
-                    flight=scenario.flight, camera=scenario.camera, offset_schedule=scenario.offset_schedule,
-                    reports=scenario.reports, scene=scene, start=pose)
+    base = scenario.baseline_run(scenario.city_vehicle(env), scenario.parameters, scene=scene, start=pose)
     out = {"baseline": base.metrics[BOTH]}
     for planner in ("orbit", "horizon"):
         changed(scenario, {"planner": planner})

@@ -207,6 +207,19 @@ class FollowScenario:
         road = read_road_path(self.city.road, "city.road")
         return GroundVehicle.along_path(road, self.legs)
 
+    def shared_conditions(self) -> dict[str, Any]:
+        """What the planner's run and the baseline's share (a fair baseline): wind, flight, camera,
+        offset schedule and vehicle reports, as keyword arguments of ``simulate`` and ``baseline``."""
+        return {"wind": self.wind, "flight": self.flight, "camera": self.camera,
+                "offset_schedule": self.offset_schedule, "reports": self.reports}
+
+    def baseline_run(self, vehicle: GroundVehicle, parameters: FollowParameters, **extra: Any) -> FollowResult:
+        """The baseline (the tracking paper's vector field at the file's constant radius and control)
+        about ``vehicle`` as ``run`` flies it, under the planner's conditions (shared_conditions);
+        ``extra``: more of ``baseline``'s arguments (``scene``, ``start``)."""
+        return baseline(vehicle, self.uav, self.baseline_radius, control=self.baseline_control,
+                        parameters=parameters, **self.shared_conditions(), **extra)
+
     def run(self, compensation: Optional[bool] = None, city: bool = True,
             stage: Optional[Callable[[str], Any]] = None) -> "FollowStudy":
         """The planner's run, the baseline's, and with ``city`` (when the scenario has one) both
@@ -221,9 +234,7 @@ class FollowScenario:
             # Auto's standoff candidate is the baseline's orbit: its constant radius (and its law, follow_run.cpp).
             parameters = copy.copy(parameters)  # not the scenario's own
             parameters.standoff_radius = self.baseline_radius or lemma6_radius(self.vehicle, self.uav, parameters)
-        # Both followers get the same offset schedule and the same reports (a fair baseline).
-        common: dict[str, Any] = {"wind": self.wind, "flight": self.flight, "camera": self.camera,
-                                  "offset_schedule": self.offset_schedule, "reports": self.reports}
+        common = self.shared_conditions()
         say("follow")
         follow = simulate(self.vehicle, self.uav, parameters, wind_estimate=self.wind_estimate, **common)
         flies = self.baseline_control is not None
@@ -231,8 +242,7 @@ class FollowScenario:
         reason = baseline_infeasibility(self.vehicle, self.uav) if flies else None
         if flies and reason is None:
             say("baseline")
-            orbit = baseline(self.vehicle, self.uav, self.baseline_radius, control=self.baseline_control,
-                             parameters=parameters, **common)
+            orbit = self.baseline_run(self.vehicle, parameters)
         study = FollowStudy(self, parameters, follow, orbit, baseline_reason=reason)
         if self.aircraft is not None:
             if self.offset_schedule:
@@ -257,8 +267,7 @@ class FollowScenario:
                                          **common)
             study.city_baseline_reason = baseline_infeasibility(vehicle, uav) if flies else None
             if flies and study.city_baseline_reason is None:
-                study.city_baseline = baseline(vehicle, uav, self.baseline_radius, control=self.baseline_control,
-                                               parameters=parameters, scene=scene, **common)
+                study.city_baseline = self.baseline_run(vehicle, parameters, scene=scene)
             # Beyond every anchor (follow.city_horizon, or follow.city_orbit's orbits inside the visibility
             # polygons); it observes the vehicle at each update itself, about the vehicle (no offset schedule).
             bar = say(f"city {self.city_orbit.planner}")
