@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any, Mapping
+from typing import Any, Mapping, Optional
 
+from .._core import Control
 from .._core import limits as _limits
-from ..schema import boolean, fail, number, positive, reject_unknown, section
+from ..schema import beta as schema_beta
+from ..schema import boolean, fail, heading_gain, number, positive, reject_unknown, section
 from .city_orbit import CityOrbitOptions
 from .simulation import VehicleLeg, VehicleReportOptions
 
@@ -39,6 +41,20 @@ def threshold_value(key: str, value: Any) -> float | str:
 
 
 REPORT_KEYS = ("position_noise", "velocity_noise", "latency", "dropout", "timeout", "seed")
+
+
+def baseline_block(data: Mapping[str, Any]) -> tuple[Optional[float], Optional[Control]]:
+    """The file's baseline: its constant radius (None: Lemma 6's) and control, or (None, None) for
+    ``baseline: false``."""
+    if data.get("baseline") is False:
+        return None, None
+    b = section(data, "baseline", {"radius", "beta", "k_psi", "direction"})
+    radius = number("baseline.radius", b.get("radius", 0.0), low=0.0)
+    d = Control()
+    control = Control(beta=schema_beta("baseline.beta", b.get("beta", d.beta)),
+                      k_psi=heading_gain("baseline.k_psi", b.get("k_psi", d.k_psi)),
+                      direction=str(b.get("direction", d.direction)))
+    return (radius or None), control
 
 
 def reports_block(data: Mapping[str, Any]) -> VehicleReportOptions:

@@ -67,13 +67,12 @@ from ..scenario_blocks import (
     wind_block,
     with_dynamics,
 )
-from ..schema import beta as schema_beta
-from ..schema import fail, heading_gain, number, positive, reject_unknown, resolve_path, section
+from ..schema import fail, number, positive, reject_unknown, resolve_path, section
 from .city_horizon import city_horizon_follow
 from .city_orbit import CityOrbitOptions, CityOrbitResult, city_orbit_follow
 from .fdm import FollowFdm, fly_follow_fdm
 from .files import read_road_path, read_vehicle_track
-from .keys import HEADINGS, city_orbit_block, reports_block, threshold_value, vehicle_legs
+from .keys import HEADINGS, baseline_block, city_orbit_block, reports_block, threshold_value, vehicle_legs
 from .simulation import (
     DownwardCamera,
     FollowFlight,
@@ -171,7 +170,7 @@ class FollowScenario:
                               guidance=guidance,
                               l1_period=positive("flight.l1_period", f.get("l1_period", fd.l1_period)),
                               l1_damping=positive("flight.l1_damping", f.get("l1_damping", fd.l1_damping)))
-        radius, control = _baseline(data)
+        radius, control = baseline_block(data)
         return cls(vehicle=vehicle, legs=legs, uav=uav, parameters=parameters, offset_schedule=schedule, wind=wind,
                    wind_estimate=estimate, camera=camera, flight=flight, baseline_radius=radius,
                    baseline_control=control, reports=reports_block(data), city=_city(data, base, route), route=route,
@@ -412,18 +411,6 @@ def _offset_schedule(data: Mapping[str, Any]) -> list[tuple[float, float, float]
         keys.append((number(f"{key}.t", c["t"]), number(f"{key}.distance", c.get("distance", 0.0), low=0.0),
                      math.radians(number(f"{key}.angle_deg", c.get("angle_deg", 0.0)))))
     return keys
-
-
-def _baseline(data: Mapping[str, Any]) -> tuple[Optional[float], Optional[Control]]:
-    if data.get("baseline") is False:
-        return None, None
-    b = section(data, "baseline", {"radius", "beta", "k_psi", "direction"})
-    radius = number("baseline.radius", b.get("radius", 0.0), low=0.0)
-    d = Control()
-    control = Control(beta=schema_beta("baseline.beta", b.get("beta", d.beta)),
-                      k_psi=heading_gain("baseline.k_psi", b.get("k_psi", d.k_psi)),
-                      direction=str(b.get("direction", d.direction)))
-    return (radius or None), control
 
 
 def _city(data: Mapping[str, Any], base: Path, route: Optional[dict]) -> Optional[City]:
