@@ -8,7 +8,8 @@ volume: a VV always has both, so "with its volume" and "with its mesh" are one t
 a time and for the parallel batch, the rays per second that implies, the trace-only rays per second
 of VisibilityScene.first_hits, and the peer's rays per second for the same directions (trimesh's
 intersects_location, first hits with their distances), and where a VV's time goes (one VV on one
-thread: per-column bounds, corner rays, refinement at the jumps, mesh, volume). Beside the peer
+thread: per-column bounds, corner rays, refinement at the jumps, mesh, volume; then the same phases
+of one VV spread over the cores, and how much each gains from them). Beside the peer
 ratio, the fraction of Embree's floor reached: the VV rate divided by the rate Embree alone allows
 for the same rays (its own time on one thread, VolumeCost.embree_s, spread over the cores). Goals:
 issue 7, a 1-degree Charlotte VV in <= 10 ms and >= 3x the peer's rays per second; issue 35,
@@ -151,6 +152,15 @@ def main() -> int:
               + f"; corner rays: {total['rays_skipped']:.0f} decided without Embree ({total['corner_tests']:.0f} "
               f"triangle tests), {total['rays_traced']:.0f} traced; {total['refine_rays']:.0f} refining rays traced, "
               f"{total['refine_predicted']:.0f} predicted")
+        # The same VVs spread over the cores (visibility_volume alone): which phases gain from them
+        # (the pass over the POIs with the least time of --repeat: the threads' wake-ups vary).
+        passes = [[_core.visibility_volume_cost(scene, p, args.d_max, None, res, True)[1] for p in pois]
+                  for _ in range(args.repeat)]
+        spread = min(passes, key=lambda costs: sum(getattr(c, k) for c in costs for k in phases))
+        spread_total = {k: float(np.mean([getattr(c, k) for c in spread])) for k in phases}
+        print(f"  one VV on {len(os.sched_getaffinity(0))} threads: "
+              + ", ".join(f"{k[:-2]} {spread_total[k] * 1e3:.2f} (x{total[k] / spread_total[k]:.2f})"
+                          for k in phases if spread_total[k] > 0))
         # The predicted rays (just before an occluder's edge) traced as well, once, as a check.
         checks = [_core.visibility_volume_cost(scene, p, args.d_max, None, res, False, True)[1] for p in pois]
         predicted = sum(c.refine_predicted for c in checks)

@@ -132,11 +132,17 @@ double cone_exit(const float* t, const Vec3& g_local, const Vec3& a, const Vec3&
   return exit;
 }
 
-// Distance from g along unit d to the plane of triangle t (9 floats, g's frame offset by g_local).
-double plane_distance(const float* t, const Vec3& g_local, const Vec3& d) {
+// The plane of triangle t (9 floats, g's frame offset by g_local) relative to g: the points x
+// (from g) with normal . x = offset; a ray along d meets it at offset / normal . d.
+struct TrianglePlane {
+  Vec3 normal;
+  double offset = 0.0;
+};
+
+TrianglePlane plane_of(const float* t, const Vec3& g_local) {
   const Vec3 p0(t[0], t[1], t[2]), p1(t[3], t[4], t[5]), p2(t[6], t[7], t[8]);
   const Vec3 n = (p1 - p0).cross(p2 - p0);
-  return n.dot(p0 - g_local) / n.dot(d);
+  return {n, n.dot(p0 - g_local)};
 }
 
 // The triangles of a slot with corners c (outward order; edge e runs from c[e] to c[e + 1]) and
@@ -440,11 +446,10 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     if (lo_ground == hi_ground || !(height < 0.0)) return kNaN;
     const std::uint32_t t = lo_ground ? jump.hi_triangle : jump.lo_triangle;
     if (t == kNoTriangle || (lo_ground ? jump.hi_surface : jump.lo_surface) != Surface::radial) return kNaN;
-    const float* v = tracer.embree.triangles.data() + 9 * static_cast<std::size_t>(t);
-    const Vec3 p0(v[0], v[1], v[2]), p1(v[3], v[4], v[5]), p2(v[6], v[7], v[8]);
-    const Vec3 n = (p1 - p0).cross(p2 - p0);
+    const TrianglePlane plane = plane_of(tracer.embree.triangles.data() + 9 * static_cast<std::size_t>(t), g_local);
+    const Vec3& n = plane.normal;
     const Vec3 a = sample_direction(jump.u), b = sample_direction(jump.w);
-    const double c = n.dot(g_local - p0);
+    const double c = -plane.offset;  // n . (g - p0)
     const double f0 = c * a.z() + height * n.dot(a), f1 = c * b.z() + height * n.dot(b);
     if (!(std::abs(f0 - f1) > 0.0)) return kNaN;
     const double lambda = f0 / (f0 - f1);
@@ -492,8 +497,9 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
           predicted_ray[m] = 1;
           ++predictions;
           // As a traced ray would store it: hits count up to the visible part's end.
-          const double hit = plane_distance(tracer.embree.triangles.data() + 9 * static_cast<std::size_t>(predicted),
-                                            g_local, direction[m]);
+          const TrianglePlane plane =
+              plane_of(tracer.embree.triangles.data() + 9 * static_cast<std::size_t>(predicted), g_local);
+          const double hit = plane.offset / plane.normal.dot(direction[m]);
           const bool within = hit <= visible_far_bound(s, direction[m].z()) * (1.0 + 1e-6);
           mid_far[m] = star_far(s, direction[m].z(), within ? hit : kInfinity, mid_surface[m]);
           mid_triangle[m] = within ? predicted : kNoTriangle;
