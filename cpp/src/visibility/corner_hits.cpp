@@ -55,14 +55,14 @@ Cone cone_of(const float* t, const Vec3& g_local) {
 // One run of columns [first, last] of a row: coefficients a, b, c give edge e . d (e < 3) and
 // plane . d (e = 3) as a[e] cos az + b[e] sin az + c[e]. Keeps per column the nearest hit as its
 // inverse distance w = plane . d / offset (no division per direction; larger is nearer, 0 none)
-// and its owner (the footprint's ordinal, as a double). GCC compiles the two stores under one
+// and its owner (the footprint's ordinal). GCC compiles the two stores under one
 // branch and does not vectorize the loop; written branch-free (a max, and the owner by
 // arithmetic) it vectorized, or stayed scalar without that branch, and neither was faster on
 // these short runs (about 5 columns).
 inline void scan_run(
     const double* __restrict cos_az, const double* __restrict sin_az, int first, int last, const double* a,
-    const double* b, const double* c, double inv_offset, double w_min, double owner, double* __restrict row_w,
-    double* __restrict row_owner) {
+    const double* b, const double* c, double inv_offset, double w_min, std::uint32_t owner, double* __restrict row_w,
+    std::uint32_t* __restrict row_owner) {
   const double a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], b0 = b[0], b1 = b[1], b2 = b[2], b3 = b[3];
   const double c0 = c[0], c1 = c[1], c2 = c[2], c3 = c[3];
   for (int j = first; j <= last; ++j) {
@@ -93,18 +93,21 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
     const double t_max = visible_far_bound(s, sines[i]) * (1.0 + 1e-6);
     row_w_min[i] = t_max > 0.0 ? 1.0 / t_max : kInf;
   }
-  // Footprints k = part, part + parts, ... into buffer `part`.
+  // Footprints k = part, part + parts, ... into the first thread's arrays (part 0: the result's,
+  // the owner in place of the triangle until `finish`) or the second's.
   auto scan = [&](std::size_t part, std::size_t parts) {
     // On the thread that fills it. The owner is read only where a hit was kept (w > 0), which
     // sets it: no fill (stale values from the previous VV, never read).
-    out.inverse[part].assign(n, 0.0);
-    out.owner[part].resize(n);
-    double* hit = out.inverse[part].data();
-    double* owner = out.owner[part].data();
+    std::vector<double>& inverse = part == 0 ? out.inverse : out.second_inverse;
+    std::vector<std::uint32_t>& owners = part == 0 ? out.triangle : out.second_owner;
+    inverse.assign(n, 0.0);
+    owners.resize(n);
+    double* hit = inverse.data();
+    std::uint32_t* owner = owners.data();
     std::size_t tested = 0;
     for (std::size_t k = part; k < clearance.footprints.size(); k += parts) {
       const Footprint& f = clearance.footprints[k];
-      const auto ordinal = static_cast<double>(k);
+      const auto ordinal = static_cast<std::uint32_t>(k);
       const int i0 = static_cast<int>(std::lower_bound(sines.begin(), sines.end(), f.sin_lo) - sines.begin());
       const int i1 = static_cast<int>(std::upper_bound(sines.begin(), sines.end(), f.sin_hi) - sines.begin()) - 1;
       if (i0 > i1) continue;
@@ -147,7 +150,7 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
           c[e] = sin_el * m.z();
         }
         double* row_hit = hit + sphere.row_first(i);
-        double* row_owner = owner + sphere.row_first(i);
+        std::uint32_t* row_owner = owner + sphere.row_first(i);
         // A pole is one direction, column 0's: cos el = 0 makes the row's formula (0, 0, sin el).
         const bool pole = i == 0 || i == ne;
         for (int r = 0; r < (pole ? 1 : runs); ++r) {
@@ -171,21 +174,21 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
   } else {
     tested = scan(0, 1);
   }
-  out.hit.resize(n);
-  out.triangle.resize(n);
   auto finish = [&](std::size_t begin, std::size_t end) {
     // Locals: the stores could otherwise alias the vectors' pointers, reloaded per corner.
-    const double *w0 = out.inverse[0].data(), *owner0 = out.owner[0].data();
-    const double *w1 = out.inverse[1].data(), *owner1 = out.owner[1].data();
+    double* w0 = out.inverse.data();
+    std::uint32_t* owner0 = out.triangle.data();  // becomes the triangle
+    const double* w1 = out.second_inverse.data();
+    const std::uint32_t* owner1 = out.second_owner.data();
     const Footprint* footprints = clearance.footprints.data();
-    double* hit = out.hit.data();
-    std::uint32_t* triangle = out.triangle.data();
     for (std::size_t v = begin; v < end; ++v) {
-      double w = w0[v], owner = owner0[v];
-      if (parallel && (w1[v] > w || (w1[v] == w && w > 0.0 && owner1[v] < owner))) w = w1[v], owner = owner1[v];
-      const bool met = w > 0.0;
-      hit[v] = met ? 1.0 / w : kInf;
-      triangle[v] = met ? footprints[static_cast<std::size_t>(owner)].face : EmbreeScene::kNoTriangle;
+      double w = w0[v];
+      std::uint32_t owner = owner0[v];
+      if (parallel && (w1[v] > w || (w1[v] == w && w > 0.0 && owner1[v] < owner))) {
+        w = w1[v], owner = owner1[v];
+        w0[v] = w;
+      }
+      owner0[v] = w > 0.0 ? footprints[owner].face : EmbreeScene::kNoTriangle;
     }
   };
   if (parallel) tbb::parallel_invoke([&] { finish(0, n / 2); }, [&] { finish(n / 2, n); });

@@ -3,8 +3,8 @@
 // directions inside its footprint (Clearance::footprints), like a z-buffer on the sphere.
 #pragma once
 
-#include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "visibility/clearance.hpp"
@@ -12,14 +12,20 @@
 
 namespace vistrack::detail {
 
-// The corner rays' first hits, with the scratch that finds them.
+// The corner rays' first hits, with the scratch that finds them. Kept as inverse distances and
+// read through distance_of(): a VV's per-corner arrays do not fit in a core's cache, so every array
+// and pass fewer is memory traffic saved (the distances were a second array, the owners doubles).
 struct CornerHits {
-  std::vector<double> hit;              // per corner: the first obstacle hit's distance, +inf: none
+  std::vector<double> inverse;          // per corner: 1 / the first obstacle hit's distance, 0: none
   std::vector<std::uint32_t> triangle;  // its face (EmbreeScene::kNoTriangle: none)
-  std::array<std::vector<double>, 2> inverse, owner;  // per thread: 1 / distance, footprint ordinal
+  std::vector<double> second_inverse;   // the second thread's, while two threads scan
+  std::vector<std::uint32_t> second_owner;
+  static double distance_of(double inverse) {
+    return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
+  }
 };
 
-// out.hit[v] and out.triangle[v] per corner v of `sphere` (directions `dirs`): the nearest obstacle
+// CornerHits::distance_of(out.inverse[v]) and out.triangle[v] per corner v of `sphere` (directions `dirs`): the nearest obstacle
 // triangle whose cone from g holds the direction and lies within visible_far_bound along it, its
 // distance and face (Embree's primID), else +inf and kNoTriangle: what tracing the ray in exact
 // arithmetic would return. `triangles`: 9 floats per face relative to the scene's origin

@@ -259,8 +259,8 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
       const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)];
       const auto first = static_cast<std::size_t>(sphere.row_first(i));
       const auto end = static_cast<std::size_t>(sphere.row_end(i));
-      const double* hit = w.hits.hit.data();
-      for (std::size_t v = first; v < end; ++v) store(v, sin_el, hit[v]);
+      const double* inverse = w.hits.inverse.data();
+      for (std::size_t v = first; v < end; ++v) store(v, sin_el, detail::CornerHits::distance_of(inverse[v]));
     });
   };
   if (s.poi_in_band) {
