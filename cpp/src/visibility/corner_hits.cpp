@@ -18,8 +18,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 #include "visibility/embree_scene.hpp"
@@ -165,54 +163,6 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
     }
     return tested;
   };
-  // The index for the rays traced later (prototype).
-  {
-    SphereIndex& index = out.index;
-    index.triangles.clear();
-    for (const Footprint& f : clearance.footprints) {
-      const Cone cone = cone_of(triangles.data() + 9 * static_cast<std::size_t>(f.face), g_local);
-      if (!cone.valid) continue;
-      IndexedTriangle t;
-      t.edge = cone.edge;
-      t.plane = cone.plane;
-      t.offset = cone.offset;
-      t.sin_lo = f.sin_lo;
-      t.sin_hi = f.sin_hi;
-      t.az_lo = f.every ? 0.0 : f.az_lo;
-      t.az_span = f.every ? 10.0 : f.az_hi - f.az_lo;
-      t.face = f.face;
-      index.triangles.push_back(t);
-    }
-    index.columns = (na + 1) / 2;
-    index.column_width = kTwoPi / index.columns;
-    index.bands = 64;
-    const int tiles = index.columns * index.bands;
-    index.tile_start.assign(static_cast<std::size_t>(tiles) + 1, 0);
-    index.everywhere.clear();
-    auto band_of = [&](double sine) { return std::clamp(static_cast<int>(std::floor((sine + 1.0) * 0.5 * index.bands)), 0, index.bands - 1); };
-    auto each_tile = [&](const IndexedTriangle& t, int k, auto&& visit) {
-      if (t.az_span >= kTwoPi) {
-        return false;
-      }
-      const int b0 = band_of(t.sin_lo), b1 = band_of(t.sin_hi);
-      const int c0 = static_cast<int>(std::floor(t.az_lo / index.column_width));
-      const int c1 = static_cast<int>(std::floor((t.az_lo + t.az_span) / index.column_width));
-      for (int c = c0; c <= std::min(c1, c0 + index.columns - 1); ++c) {
-        const int cw = ((c % index.columns) + index.columns) % index.columns;
-        for (int b = b0; b <= b1; ++b) visit(cw * index.bands + b, k);
-      }
-      return true;
-    };
-    for (int k = 0; k < static_cast<int>(index.triangles.size()); ++k)
-      if (!each_tile(index.triangles[static_cast<std::size_t>(k)], k, [&](int tile, int) { ++index.tile_start[static_cast<std::size_t>(tile) + 1]; }))
-        index.everywhere.push_back(k);
-    for (std::size_t i = 1; i < index.tile_start.size(); ++i) index.tile_start[i] += index.tile_start[i - 1];
-    index.tile_items.resize(static_cast<std::size_t>(index.tile_start.back()));
-    std::vector<std::int32_t> fill(index.tile_start.begin(), index.tile_start.end() - 1);
-    for (int k = 0; k < static_cast<int>(index.triangles.size()); ++k)
-      each_tile(index.triangles[static_cast<std::size_t>(k)], k, [&](int tile, int kk) { index.tile_items[static_cast<std::size_t>(fill[static_cast<std::size_t>(tile)]++)] = kk; });
-  }
-  if (std::getenv("VT_INDEX_STATS")) fprintf(stderr, "triangles %zu items %zu every %zu\n", out.index.triangles.size(), out.index.tile_items.size(), out.index.everywhere.size());
   std::size_t tested = 0;
   if (parallel) {
     // Alternate footprints on two threads (neighbours in the list share a bucket row, so both
@@ -244,37 +194,6 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
   if (parallel) tbb::parallel_invoke([&] { finish(0, n / 2); }, [&] { finish(n / 2, n); });
   else finish(0, n);
   return tested;
-}
-
-double SphereIndex::first_hit(const Vec3& d, double w_min, std::uint32_t& face) const {
-  face = EmbreeScene::kNoTriangle;
-  if (columns == 0) return kInf;
-  double az = std::atan2(d.y(), d.x());
-  if (az < 0.0) az += kTwoPi;
-  const double sine = d.z();
-  const int c = std::min(columns - 1, static_cast<int>(az / column_width));
-  const int b = std::clamp(static_cast<int>(std::floor((sine + 1.0) * 0.5 * bands)), 0, bands - 1);
-  const int tile = c * bands + b;
-  double best = 0.0;
-  std::int32_t owner = -1;
-  auto test = [&](std::int32_t k) {
-    const IndexedTriangle& t = triangles[static_cast<std::size_t>(k)];
-    if (sine < t.sin_lo || sine > t.sin_hi) return;
-    if (t.az_span < kTwoPi) {
-      double rel = az - t.az_lo;
-      rel -= kTwoPi * std::floor(rel / kTwoPi);
-      if (rel > t.az_span) return;
-    }
-    if (t.edge[0].dot(d) < 0.0 || t.edge[1].dot(d) < 0.0 || t.edge[2].dot(d) < 0.0) return;
-    const double w = t.plane.dot(d) / t.offset;
-    if (w >= w_min && (w > best || (w == best && k < owner))) best = w, owner = k;
-  };
-  for (std::int32_t i = tile_start[static_cast<std::size_t>(tile)]; i < tile_start[static_cast<std::size_t>(tile) + 1]; ++i)
-    test(tile_items[static_cast<std::size_t>(i)]);
-  for (std::int32_t k : everywhere) test(k);
-  if (owner < 0) return kInf;
-  face = triangles[static_cast<std::size_t>(owner)].face;
-  return 1.0 / best;
 }
 
 }  // namespace vistrack::detail

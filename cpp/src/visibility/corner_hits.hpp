@@ -3,7 +3,6 @@
 // directions inside its footprint (Clearance::footprints), like a z-buffer on the sphere.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -13,24 +12,6 @@
 
 namespace vistrack::detail {
 
-// The obstacle triangles within reach as seen from g, indexed by tiles of the sphere (columns of
-// azimuth by bands of sin el): any ray's first hit from a few tests (SphereIndex::first_hit).
-struct IndexedTriangle {
-  std::array<Vec3, 3> edge;  // inside the cone: edge[e] . d >= 0
-  Vec3 plane;                // hit at offset / plane . d
-  double offset = 0.0;
-  double sin_lo = 0.0, sin_hi = 0.0, az_lo = 0.0, az_span = 0.0;  // the footprint (az_span >= 2 pi: all)
-  std::uint32_t face = 0;
-};
-struct SphereIndex {
-  int columns = 0, bands = 0;
-  double column_width = 0.0;
-  std::vector<IndexedTriangle> triangles;  // valid ones, footprint order
-  std::vector<std::int32_t> tile_start, tile_items, everywhere;
-  // The nearest triangle along unit d within 1 / w_min: its distance (+inf none) and face.
-  double first_hit(const Vec3& d, double w_min, std::uint32_t& face) const;
-};
-
 // The corner rays' first hits, with the scratch that finds them. Kept as inverse distances and
 // read through distance_of(): a VV's per-corner arrays do not fit in a core's cache, so every array
 // and pass fewer is memory traffic saved (the distances were a second array, the owners doubles).
@@ -39,7 +20,6 @@ struct CornerHits {
   std::vector<std::uint32_t> triangle;  // its face (EmbreeScene::kNoTriangle: none)
   std::vector<double> second_inverse;   // the second thread's, while two threads scan
   std::vector<std::uint32_t> second_owner;
-  SphereIndex index;
   static double distance_of(double inverse) {
     return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
   }

@@ -16,7 +16,6 @@
 #include <type_traits>
 
 #include "visibility/clearance.hpp"
-#include "visibility/corner_hits.hpp"
 #include "visibility/embree_scene.hpp"
 #include "visibility/radial_mesh.hpp"
 
@@ -54,7 +53,6 @@ struct TraceContext {
   const Clearance& clearance;
   bool parallel = false;         // spread the rays over TBB's threads
   RayCounts* counts = nullptr;   // optional
-  const SphereIndex* index = nullptr;  // prototype: answer rays from it instead of Embree
 };
 
 // Rays k in [begin, end): fill(start, count, d, column) sets the unit directions d[m] of rays
@@ -96,16 +94,7 @@ void trace_range(const TraceContext& c, std::size_t begin, std::size_t end, Fill
       t_max[traced] = static_cast<float>(bound) * (1.0f + 1e-6f);
       slot[traced++] = static_cast<std::uint8_t>(k);
     }
-    if (traced > 0 && c.index != nullptr) {
-      for (std::size_t m = 0; m < traced; ++m) {
-        const Vec3& dm = d[slot[m]];
-        std::uint32_t face = EmbreeScene::kNoTriangle;
-        const double h = c.index->first_hit(dm, 1.0 / static_cast<double>(t_max[m]), face);
-        ground[m] = true;  // stored here
-        hit[slot[m]] = h;
-        if constexpr (wants_triangle) hit_triangle[slot[m]] = face;
-      }
-    } else if (traced > 0) {
+    if (traced > 0) {
       const auto before = timed ? std::chrono::steady_clock::now() : std::chrono::steady_clock::time_point{};
       c.embree.trace(s.g, rays.data(), traced, 0.0f, t_far, t.data(), ground.data(), t_max.data(),
                      wants_triangle ? triangle.data() : nullptr);

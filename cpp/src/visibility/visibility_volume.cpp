@@ -5,7 +5,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -282,9 +281,7 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   grid_intervals(vv, s, sphere, row_sines, dirs, tracer, w);
   trace_timer.stop();
   if (s.poi_in_band) {
-    detail::TraceContext indexed = tracer;
-    if (std::getenv("VT_INDEX") != nullptr) indexed.index = &w.hits.index;
-    detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, w.hits.triangle, indexed, w.star, vv,
+    detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, w.hits.triangle, tracer, w.star, vv,
                             cost, check_predicted);
     vv.mesh_row_sines = row_sines;
   } else {
