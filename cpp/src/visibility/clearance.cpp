@@ -4,6 +4,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -132,10 +133,14 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
   double all_lo = kInf, all_hi = -kInf;  // triangles over g reach every column
   const double d_az = kTwoPi / na;
   const double gx = g.x(), gy = g.y(), gz = g.z();
-  // The buckets' rows [row_begin, row_end) between columns ix0..ix1 into (lo, hi, every_lo, every_hi).
-  auto scan = [&](int ix0, int ix1, int row_begin, int row_end, std::vector<double>& col_lo, std::vector<double>& col_hi,
-                  double& every_lo, double& every_hi, std::vector<Footprint>& found) {
-    for (int iy = row_begin; iy < row_end; ++iy) {
+  // The buckets' rows row_begin, row_begin + row_step, ... below row_end between columns ix0..ix1
+  // into (lo, hi, every_lo, every_hi), and their footprints into `found` (with the count after each
+  // row into row_ends, when given).
+  auto scan = [&](int ix0, int ix1, int row_begin, int row_step, int row_end, std::vector<double>& col_lo,
+                  std::vector<double>& col_hi, double& every_lo, double& every_hi, std::vector<Footprint>& found,
+                  std::vector<std::uint32_t>* row_ends) {
+    for (int iy = row_begin; iy < row_end; iy += row_step) {
+      if (row_ends != nullptr && iy > row_begin) row_ends->push_back(static_cast<std::uint32_t>(found.size()));
       for (int ix = ix0; ix <= ix1; ++ix) {
         const auto b = static_cast<std::size_t>(iy * index.nx + ix);
         if (index.bucket_start[b] == index.bucket_start[b + 1]) continue;
@@ -204,14 +209,32 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
     const int iy0 = std::max(0, static_cast<int>(std::floor((gy - margin - index.y0) / index.cell)));
     const int iy1 = std::min(index.ny - 1, static_cast<int>(std::floor((gy + margin - index.y0) / index.cell)));
     if (parallel && iy1 > iy0) {
-      const int middle = iy0 + (iy1 - iy0 + 1) / 2;
+      // Alternate rows on the two threads (halves of the rows were uneven: g's surroundings fill
+      // some rows more than others), their footprints then joined in row order: the list a
+      // serial pass makes, so that corner_hits breaks ties the same way.
       half_lo.assign(static_cast<std::size_t>(na), kInf);
       half_hi.assign(static_cast<std::size_t>(na), -kInf);
       double half_all_lo = kInf, half_all_hi = -kInf;
-      half_footprints.clear();
-      tbb::parallel_invoke([&] { scan(ix0, ix1, iy0, middle, sin_lo, sin_hi, all_lo, all_hi, footprints); },
-                           [&] { scan(ix0, ix1, middle, iy1 + 1, half_lo, half_hi, half_all_lo, half_all_hi, half_footprints); });
-      footprints.insert(footprints.end(), half_footprints.begin(), half_footprints.end());
+      for (std::size_t part = 0; part < 2; ++part) {
+        split_footprints[part].clear();
+        split_row_ends[part].clear();
+      }
+      tbb::parallel_invoke(
+          [&] { scan(ix0, ix1, iy0, 2, iy1 + 1, sin_lo, sin_hi, all_lo, all_hi, split_footprints[0], &split_row_ends[0]); },
+          [&] {
+            scan(ix0, ix1, iy0 + 1, 2, iy1 + 1, half_lo, half_hi, half_all_lo, half_all_hi, split_footprints[1],
+                 &split_row_ends[1]);
+          });
+      for (std::size_t part = 0; part < 2; ++part)
+        split_row_ends[part].push_back(static_cast<std::uint32_t>(split_footprints[part].size()));
+      std::array<std::uint32_t, 2> taken{0, 0};
+      for (int iy = iy0; iy <= iy1; ++iy) {
+        const auto part = static_cast<std::size_t>((iy - iy0) % 2);
+        const std::uint32_t end = split_row_ends[part][static_cast<std::size_t>((iy - iy0) / 2)];
+        footprints.insert(footprints.end(), split_footprints[part].begin() + taken[part],
+                          split_footprints[part].begin() + end);
+        taken[part] = end;
+      }
       for (std::size_t c = 0; c < sin_lo.size(); ++c) {
         sin_lo[c] = std::min(sin_lo[c], half_lo[c]);
         sin_hi[c] = std::max(sin_hi[c], half_hi[c]);
@@ -219,7 +242,7 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
       all_lo = std::min(all_lo, half_all_lo);
       all_hi = std::max(all_hi, half_all_hi);
     } else {
-      scan(ix0, ix1, iy0, iy1 + 1, sin_lo, sin_hi, all_lo, all_hi, footprints);
+      scan(ix0, ix1, iy0, 1, iy1 + 1, sin_lo, sin_hi, all_lo, all_hi, footprints, nullptr);
     }
   }
   for (std::size_t c = 0; c < sin_lo.size(); ++c) {

@@ -10,6 +10,7 @@
 // the interval the ground, the band and d_max give, exactly what tracing them would return.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -53,15 +54,17 @@ struct Footprint {
 struct Clearance {
   int num_azimuth = 0;
   std::vector<double> sin_lo, sin_hi;
-  std::vector<double> half_lo, half_hi;  // the second half's columns when computed in parallel
+  std::vector<double> half_lo, half_hi;  // the second thread's columns when computed in parallel
   std::vector<Footprint> footprints;     // every triangle within reach (compute; none: empty)
-  std::vector<Footprint> half_footprints;
+  std::array<std::vector<Footprint>, 2> split_footprints;  // per thread when computed in parallel
+  std::array<std::vector<std::uint32_t>, 2> split_row_ends;  // the count after each of its rows
   bool clear(double sin_el, int column) const {
     return sin_el > sin_hi[static_cast<std::size_t>(column)] || sin_el < sin_lo[static_cast<std::size_t>(column)];
   }
   // The bounds for rays from g (relative to the local origin) that end within `reach` of it, on
-  // na columns. Reuses the vectors' storage. `parallel`: the buckets' rows in two halves on TBB's
-  // threads (min and max merge exactly: the same bounds either way).
+  // na columns. Reuses the vectors' storage. `parallel`: alternate rows of buckets on two of TBB's
+  // threads (min and max merge exactly, the footprints are joined in row order: the same result
+  // either way).
   void compute(const ObstacleIndex& index, const Vec3& g, double reach, int na, bool parallel = false);
   // Every ray traced (no bounds): the result then equals tracing everything.
   void none(int na);
