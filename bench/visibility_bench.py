@@ -9,7 +9,8 @@ a time and for the parallel batch, the rays per second that implies, the trace-o
 of VisibilityScene.first_hits, and the peer's rays per second for the same directions (trimesh's
 intersects_location, first hits with their distances), and where a VV's time goes (one VV on one
 thread: per-column bounds, corner rays, refinement at the jumps, mesh, volume; then the same phases
-of one VV spread over the cores, and how much each gains from them). Beside the peer
+of one VV spread over the cores, and how much each gains from them; the refinement and the mesh
+also by stage). Beside the peer
 ratio, the fraction of Embree's floor reached: the VV rate divided by the rate Embree alone allows
 for the same rays (its own time on one thread, VolumeCost.embree_s, spread over the cores). Goals:
 issue 7, a 1-degree Charlotte VV in <= 10 ms and >= 3x the peer's rays per second; issue 35,
@@ -161,6 +162,15 @@ def main() -> int:
         print(f"  one VV on {len(os.sched_getaffinity(0))} threads: "
               + ", ".join(f"{k[:-2]} {spread_total[k] * 1e3:.2f} (x{total[k] / spread_total[k]:.2f})"
                           for k in phases if spread_total[k] > 0))
+        # The refinement and the mesh by stage, one thread -> spread over the cores: the stages that
+        # do not gain from the cores are what one VV alone waits for.
+        stages = {"refine": ("candidates_s", "first_pass_s", "second_pass_s", "untwist_s"),
+                  "mesh": ("count_s", "vertices_s", "fill_s")}
+        one = {k: float(np.mean([getattr(c, k) for c in costs])) for ks in stages.values() for k in ks}
+        both = {k: float(np.mean([getattr(c, k) for c in spread])) for ks in stages.values() for k in ks}
+        for name, keys in stages.items():
+            print(f"  {name} by stage, one thread -> {len(os.sched_getaffinity(0))} threads: "
+                  + ", ".join(f"{k[:-2].replace('_', ' ')} {one[k] * 1e3:.2f} -> {both[k] * 1e3:.2f}" for k in keys))
         # The predicted rays (just before an occluder's edge) traced as well, once, as a check.
         checks = [_core.visibility_volume_cost(scene, p, args.d_max, None, res, False, True)[1] for p in pois]
         predicted = sum(c.refine_predicted for c in checks)

@@ -144,6 +144,13 @@ struct VolumeCost {
   double refine_s = 0.0;  // locating the jumps of r (more rays) and refining the mesh there
   double mesh_s = 0.0;    // writing the mesh
   double volume_s = 0.0;  // summing its volume
+  // refine_s of a star VV (the POI in its band) by stage: the jump candidates (live corners, the
+  // search over the grid's edges, the edge map), the first pass over them (the grid edges' rays),
+  // the second (the split edges' new edges), confirming and untwisting the walls.
+  double candidates_s = 0.0, first_pass_s = 0.0, second_pass_s = 0.0, untwist_s = 0.0;
+  // mesh_s of a star VV by stage: numbering the vertices and counting the faces per slot, the
+  // vertices, the faces with the volume.
+  double count_s = 0.0, vertices_s = 0.0, fill_s = 0.0;
   std::size_t rays_traced = 0;   // corner rays handed to Embree (grid rows that are no mesh rows)
   std::size_t rays_skipped = 0;  // corner rays decided without it (the triangle tests, the bounds)
   std::size_t corner_tests = 0;  // (corner direction, obstacle triangle) tests

@@ -224,6 +224,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
                      const TraceContext& tracer_in, StarMeshScratch& sc, VisibilityVolume& vv, VolumeCost* cost,
                      bool check_predicted) {
   PhaseTimer refine_timer(cost ? &cost->refine_s : nullptr);
+  PhaseTimer candidates_timer(cost ? &cost->candidates_s : nullptr);
   RayCounts refine_counts;
   refine_counts.timed = cost != nullptr;
   TraceContext tracer = tracer_in;
@@ -592,7 +593,11 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       sc.extra_parent.push_back(static_cast<std::int32_t>(k));
     }
   };
+  candidates_timer.stop();
+  PhaseTimer first_pass_timer(cost ? &cost->first_pass_s : nullptr);
   bisect(0, true);
+  first_pass_timer.stop();
+  PhaseTimer second_pass_timer(cost ? &cost->second_pass_s : nullptr);
 
   // Split edges: mark the slots on both sides, then look for jumps on the new edges (the halves
   // of the split edges and the edges inside the split slots).
@@ -655,6 +660,8 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       }
   }
   bisect(level0_jumps, false);
+  second_pass_timer.stop();
+  PhaseTimer untwist_timer(cost ? &cost->untwist_s : nullptr);
 
   // Confirmed jumps, and the slots they touch (on both sides of a grid edge): marked in the flags,
   // then listed in ascending order by one pass over them, eight flags at a time (nothing set
@@ -742,12 +749,14 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     dropped_at.erase(std::unique(dropped_at.begin(), dropped_at.end()), dropped_at.end());
     visit.swap(dropped_at);
   }
+  untwist_timer.stop();
   refine_timer.stop();
   if (cost != nullptr) {
     cost->refine_rays += refine_counts.traced;
     cost->embree_s += 1e-9 * static_cast<double>(refine_counts.embree_ns.load());
   }
   PhaseTimer mesh_timer(cost ? &cost->mesh_s : nullptr);
+  PhaseTimer count_timer(cost ? &cost->count_s : nullptr);
 
   // Vertices: the used corners, the split points of edges, two per confirmed jump, a centroid
   // per triangle with one jump edge (counted per row), and g when the mesh borders the dead region
@@ -899,6 +908,8 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   num_vertices = row_centroid.back();
   const int apex = any_border ? num_vertices++ : -1;
 
+  count_timer.stop();
+  PhaseTimer vertices_timer(cost ? &cost->vertices_s : nullptr);
   TriangleMesh& mesh = vv.mesh;
   mesh.vertices.resize(num_vertices, 3);
   mesh.faces.resize(triangle_faces.back(), 3);
@@ -945,6 +956,8 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   }
   if (apex >= 0) set_vertex(apex, s.g);
 
+  vertices_timer.stop();
+  PhaseTimer fill_timer(cost ? &cost->fill_s : nullptr);
   // Fill pass, with the volume (signed tetrahedra against g, divergence theorem) per row. A
   // plain slot's face is g + far d at its three corners: its six-fold volume is
   // r_a r_b r_c det(d_a, d_b, d_c), and the determinant is the same along a row.
@@ -1023,6 +1036,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     }
     row_volume[static_cast<std::size_t>(i)] = plain + other;
   });
+  fill_timer.stop();
   mesh_timer.stop();
   PhaseTimer volume_timer(cost ? &cost->volume_s : nullptr);
   double six_volume = 0.0;

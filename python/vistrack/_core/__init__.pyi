@@ -761,14 +761,34 @@ class VolumeCost:
         s: per-column bounds of the rays that can hit an obstacle
         """
     @property
+    def candidates_s(self) -> float:
+        """
+        s of refine_s (star VV): live corners, the search for jump candidates, the edge map
+        """
+    @property
     def corner_tests(self) -> int:
         """
         (corner direction, obstacle triangle) tests of the corner rays' first hits
         """
     @property
+    def count_s(self) -> float:
+        """
+        s of mesh_s (star VV): numbering the vertices, counting the faces per slot
+        """
+    @property
     def embree_s(self) -> float:
         """
         s in Embree's rtcIntersect1M calls with their ray packing, per thread and summed over threads: within trace_s + refine_s when parallel=False
+        """
+    @property
+    def fill_s(self) -> float:
+        """
+        s of mesh_s (star VV): the faces, with the volume
+        """
+    @property
+    def first_pass_s(self) -> float:
+        """
+        s of refine_s (star VV): locating the grid edges' jumps
         """
     @property
     def mesh_s(self) -> float:
@@ -811,9 +831,24 @@ class VolumeCost:
         s: locating the jumps of r and refining the mesh there
         """
     @property
+    def second_pass_s(self) -> float:
+        """
+        s of refine_s (star VV): the split edges' new edges and their jumps
+        """
+    @property
     def trace_s(self) -> float:
         """
-        s: cell and corner rays
+        s: corner rays (their first hits from the triangles' footprints) and the grid's intervals
+        """
+    @property
+    def untwist_s(self) -> float:
+        """
+        s of refine_s (star VV): confirming and untwisting the walls
+        """
+    @property
+    def vertices_s(self) -> float:
+        """
+        s of mesh_s (star VV): the vertices
         """
     @property
     def volume_s(self) -> float:
