@@ -690,23 +690,42 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       if (f[t] & kComplex) complex_slots.push_back(t);
   }
 
-  // The confirmed jumps on the edges of triangle (a, b, c). Only an edge whose ends differ can
-  // hold one (every jump was made on such an edge): the others are not looked up.
-  auto jumps_of = [&](const Triangle& c) {
+  // Each complex slot's pieces with the jumps on their edges, found once (the twist check, the
+  // count and the fill pass read them; each looked them up in the edge map before). Only an edge
+  // whose ends differ can hold a jump (every jump was made on such an edge): the others are not
+  // looked up. A complex slot's pieces are piece_of[t] >> 3 on, piece_of[t] & 7 of them (only
+  // complex slots are set).
+  auto& slot_pieces = sc.slot_pieces;
+  auto& piece_of = sc.piece_of;
+  slot_pieces.clear();
+  piece_of.resize(static_cast<std::size_t>(nt));
+  for (int t : complex_slots) {
+    const Triangle c = slot_corners(t);
+    std::array<Triangle, 4> piece;
+    const int n = pieces(c, flags[static_cast<std::size_t>(t)] >> kSplitShift, midpoints(t, c), piece);
+    piece_of[static_cast<std::size_t>(t)] = static_cast<std::int32_t>(slot_pieces.size() << 3) | n;
+    for (int p = 0; p < n; ++p) {
+      SlotPiece q{piece[static_cast<std::size_t>(p)], {-1, -1, -1}};
+      for (std::size_t e = 0; e < 3; ++e) {
+        const int a = q.corners[e], b = q.corners[(e + 1) % 3];
+        if (samples_differ(a, b)) q.jump[e] = edges.find(EdgeMap::key(a, b));
+      }
+      slot_pieces.push_back(q);
+    }
+  }
+  // The confirmed jumps on the edges of a piece.
+  auto jumps_of = [&](const SlotPiece& q) {
     std::array<Jump*, 3> edge{};
-    for (int e = 0; e < 3; ++e) {
-      const int a = c[static_cast<std::size_t>(e)], b = c[static_cast<std::size_t>((e + 1) % 3)];
-      if (!samples_differ(a, b)) continue;
-      const std::int32_t k = edges.find(EdgeMap::key(a, b));
-      if (k >= 0 && jumps[static_cast<std::size_t>(k)].confirmed) edge[static_cast<std::size_t>(e)] = &jumps[static_cast<std::size_t>(k)];
+    for (std::size_t e = 0; e < 3; ++e) {
+      const std::int32_t k = q.jump[e];
+      if (k >= 0 && jumps[static_cast<std::size_t>(k)].confirmed) edge[e] = &jumps[static_cast<std::size_t>(k)];
     }
     return edge;
   };
   auto for_each_piece = [&](int t, auto visit) {
-    const Triangle c = slot_corners(t);
-    std::array<Triangle, 4> piece;
-    const int n = pieces(c, flags[static_cast<std::size_t>(t)] >> kSplitShift, midpoints(t, c), piece);
-    for (int p = 0; p < n; ++p) visit(piece[static_cast<std::size_t>(p)]);
+    const std::int32_t entry = piece_of[static_cast<std::size_t>(t)];
+    const SlotPiece* first = slot_pieces.data() + (entry >> 3);
+    for (int p = 0; p < (entry & 7); ++p) visit(first[p]);
   };
   // r just beside the jump on sample p's side.
   auto side_far = [](const Jump& jump, int p) { return p == jump.u ? jump.lo_far : jump.hi_far; };
@@ -724,8 +743,9 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     dropped_at.clear();
     for (int t : visit) {
       if (!live(t)) continue;
-      for_each_piece(t, [&](const Triangle& c) {
-        const std::array<Jump*, 3> edge = jumps_of(c);
+      for_each_piece(t, [&](const SlotPiece& piece) {
+        const Triangle& c = piece.corners;
+        const std::array<Jump*, 3> edge = jumps_of(piece);
         const int count = (edge[0] != nullptr) + (edge[1] != nullptr) + (edge[2] != nullptr);
         if (count < 2) return;
         if (count == 2) {
@@ -791,10 +811,11 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
       num_vertices += 2;
     }
 
-  // Faces of triangle (a, b, c) in outward order with its confirmed jumps; face(a, b, c) writes
+  // Faces of a piece (a, b, c) in outward order with its confirmed jumps; face(a, b, c) writes
   // or counts one face, centroid(x, y, z) makes (or counts) the centroid of three outer vertices.
-  auto emit = [&](const Triangle& corners, auto&& face, auto&& centroid) {
-    const std::array<Jump*, 3> edge = jumps_of(corners);
+  auto emit = [&](const SlotPiece& piece, auto&& face, auto&& centroid) {
+    const Triangle& corners = piece.corners;
+    const std::array<Jump*, 3> edge = jumps_of(piece);
     const int count = (edge[0] != nullptr) + (edge[1] != nullptr) + (edge[2] != nullptr);
     auto jump_vertex = [](const Jump& jump, int p) { return p == jump.u ? jump.vertex : jump.vertex + 1; };
     if (count == 0) {
@@ -876,7 +897,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
           ++centroids;
           return 0;
         };
-        for_each_piece(t, [&](const Triangle& c) { emit(c, count_face, count_centroid); });
+        for_each_piece(t, [&](const SlotPiece& piece) { emit(piece, count_face, count_centroid); });
       }
       if (!all_alive && (slot_flag[t] & kLive)) {
         const int before = faces;
@@ -1020,7 +1041,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
         out += 3;
         plain += r[v00] * r[v01] * r[v11] * det[0];
       } else if (f[2 * j] & kLive) {
-        for_each_piece(2 * (i * na + j), [&](const Triangle& piece) { emit(piece, face, make_centroid); });
+        for_each_piece(2 * (i * na + j), [&](const SlotPiece& piece) { emit(piece, face, make_centroid); });
       }
       if (!all_alive && (f[2 * j] & kLive)) border(2 * (i * na + j), Triangle{v00, v01, v11}, face, apex);
       if (f[2 * j + 1] == kLive) {
@@ -1030,7 +1051,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
         out += 3;
         plain += r[v00] * r[v11] * r[v10] * det[1];
       } else if (f[2 * j + 1] & kLive) {
-        for_each_piece(2 * (i * na + j) + 1, [&](const Triangle& piece) { emit(piece, face, make_centroid); });
+        for_each_piece(2 * (i * na + j) + 1, [&](const SlotPiece& piece) { emit(piece, face, make_centroid); });
       }
       if (!all_alive && (f[2 * j + 1] & kLive)) border(2 * (i * na + j) + 1, Triangle{v00, v11, v10}, face, apex);
     }

@@ -1,6 +1,7 @@
 // The mesh of a VV whose POI lies in the altitude band (private to the library); see star_mesh.cpp.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -31,6 +32,13 @@ struct Jump {
   int split = -1;   // the sample where the edge was split (it held two jumps, or a building's foot)
   int vertex = -1;  // the two mesh vertices on the jump's ray (vertex: u's side, vertex + 1: w's)
   double gap() const { return hi_far > lo_far ? hi_far - lo_far : lo_far - hi_far; }
+};
+
+// A triangle of a complex slot (the slot itself, or a part of it cut by split edges): its samples
+// in outward order, and the Jump on each edge (edge e from corners[e] to corners[e + 1]; -1: none).
+struct SlotPiece {
+  std::array<int, 3> corners;
+  std::array<std::int32_t, 3> jump;
 };
 
 // Open-addressing map from an edge (two sample ids) to its Jump.
@@ -96,6 +104,8 @@ struct StarMeshScratch {
   std::vector<std::int32_t> extra_parent;  // the split edge's Jump
   std::vector<std::int32_t> extra_vertex;
   std::vector<std::int32_t> complex_slots;   // slots with a split or a jump, ascending
+  std::vector<SlotPiece> slot_pieces;       // the complex slots' pieces, in slot order
+  std::vector<std::int32_t> piece_of;        // per complex slot: its first piece << 3 | their count
   std::vector<std::int32_t> twist_visit, twist_next;  // slots the twist check visits in a pass, and the next's
   std::vector<std::int32_t> corner_vertex;   // mesh vertex of each used corner, else -1
   bool corner_identity = false;              // corner_vertex holds v -> v (every corner used)
