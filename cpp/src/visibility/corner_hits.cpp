@@ -93,6 +93,34 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
     const double t_max = visible_far_bound(s, sines[i]) * (1.0 + 1e-6);
     row_w_min[i] = t_max > 0.0 ? 1.0 / t_max : kInf;
   }
+  // A footprint's rows are those with sin_lo <= sine <= sin_hi: std::lower_bound and upper_bound
+  // on the row sines, started from a table of buckets of sine instead of a binary search (its
+  // unpredictable branches cost more than the tests of a small footprint). first_row[k]: the first
+  // row at or above bucket k's start; a search starts one bucket lower (the start's rounding) and
+  // walks up a few rows.
+  const int buckets = 4 * ne;
+  const double per_unit = 0.5 * buckets;
+  std::vector<int>& first_row = out.first_row;
+  first_row.resize(static_cast<std::size_t>(buckets) + 1);
+  for (int k = 0, i = 0; k <= buckets; ++k) {
+    const double start = -1.0 + k / per_unit;
+    while (i <= ne && sines[static_cast<std::size_t>(i)] < start) ++i;
+    first_row[static_cast<std::size_t>(k)] = i;
+  }
+  auto walk_from = [&](double x) {
+    const double bucket = std::floor((x + 1.0) * per_unit) - 1.0;
+    return first_row[static_cast<std::size_t>(std::clamp(bucket, 0.0, static_cast<double>(buckets)))];
+  };
+  auto lower_row = [&](double x) {  // std::lower_bound(sines, x) - begin
+    int i = walk_from(x);
+    while (i <= ne && sines[static_cast<std::size_t>(i)] < x) ++i;
+    return i;
+  };
+  auto upper_row = [&](double x) {  // std::upper_bound(sines, x) - begin
+    int i = walk_from(x);
+    while (i <= ne && sines[static_cast<std::size_t>(i)] <= x) ++i;
+    return i;
+  };
   // Footprints k = part, part + parts, ... into the first thread's arrays (part 0: the result's,
   // the owner in place of the triangle until `finish`) or the second's.
   auto scan = [&](std::size_t part, std::size_t parts) {
@@ -108,8 +136,7 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
     for (std::size_t k = part; k < clearance.footprints.size(); k += parts) {
       const Footprint& f = clearance.footprints[k];
       const auto ordinal = static_cast<std::uint32_t>(k);
-      const int i0 = static_cast<int>(std::lower_bound(sines.begin(), sines.end(), f.sin_lo) - sines.begin());
-      const int i1 = static_cast<int>(std::upper_bound(sines.begin(), sines.end(), f.sin_hi) - sines.begin()) - 1;
+      const int i0 = lower_row(f.sin_lo), i1 = upper_row(f.sin_hi) - 1;
       if (i0 > i1) continue;
       const Cone cone = cone_of(triangles.data() + 9 * static_cast<std::size_t>(f.face), g_local);
       if (!cone.valid) continue;

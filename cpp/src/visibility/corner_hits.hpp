@@ -20,6 +20,7 @@ struct CornerHits {
   std::vector<std::uint32_t> triangle;  // its face (EmbreeScene::kNoTriangle: none)
   std::vector<double> second_inverse;   // the second thread's, while two threads scan
   std::vector<std::uint32_t> second_owner;
+  std::vector<int> first_row;  // rows by buckets of sine (corner_hits)
   static double distance_of(double inverse) {
     return inverse > 0.0 ? 1.0 / inverse : std::numeric_limits<double>::infinity();
   }
