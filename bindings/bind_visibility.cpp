@@ -203,17 +203,20 @@ void bind_visibility(py::module_& m) {
       "given, on a grid of about resolution_deg degrees.");
   py::class_<VolumeCost>(m, "VolumeCost", "Where one VV's time and rays went (for benchmarks).")
       .def_readonly("bounds_s", &VolumeCost::bounds_s, "s: per-column bounds of the rays that can hit an obstacle")
-      .def_readonly("trace_s", &VolumeCost::trace_s, "s: corner rays (their first hits from the triangles' footprints) and the grid's intervals")
+      .def_readonly("trace_s", &VolumeCost::trace_s,
+                    "s: corner rays (their first hits from the triangles' footprints) and the grid's intervals")
       .def_readonly("refine_s", &VolumeCost::refine_s, "s: locating the jumps of r and refining the mesh there")
       .def_readonly("mesh_s", &VolumeCost::mesh_s, "s: writing the mesh")
       .def_readonly("volume_s", &VolumeCost::volume_s, "s: summing its volume")
       .def_readonly("candidates_s", &VolumeCost::candidates_s,
                     "s of refine_s (star VV): live corners, the search for jump candidates, the edge map")
-      .def_readonly("first_pass_s", &VolumeCost::first_pass_s, "s of refine_s (star VV): locating the grid edges' jumps")
+      .def_readonly("first_pass_s", &VolumeCost::first_pass_s,
+                    "s of refine_s (star VV): locating the grid edges' jumps")
       .def_readonly("second_pass_s", &VolumeCost::second_pass_s,
                     "s of refine_s (star VV): the split edges' new edges and their jumps")
       .def_readonly("untwist_s", &VolumeCost::untwist_s, "s of refine_s (star VV): confirming and untwisting the walls")
-      .def_readonly("count_s", &VolumeCost::count_s, "s of mesh_s (star VV): numbering the vertices, counting the faces per slot")
+      .def_readonly("count_s", &VolumeCost::count_s,
+                    "s of mesh_s (star VV): numbering the vertices, counting the faces per slot")
       .def_readonly("vertices_s", &VolumeCost::vertices_s, "s of mesh_s (star VV): the vertices")
       .def_readonly("fill_s", &VolumeCost::fill_s, "s of mesh_s (star VV): the faces, with the volume")
       .def_readonly("rays_traced", &VolumeCost::rays_traced,

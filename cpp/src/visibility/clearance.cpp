@@ -220,7 +220,9 @@ void Clearance::compute(const ObstacleIndex& index, const Vec3& g, double reach,
         split_row_ends[part].clear();
       }
       tbb::parallel_invoke(
-          [&] { scan(ix0, ix1, iy0, 2, iy1 + 1, sin_lo, sin_hi, all_lo, all_hi, split_footprints[0], &split_row_ends[0]); },
+          [&] {
+            scan(ix0, ix1, iy0, 2, iy1 + 1, sin_lo, sin_hi, all_lo, all_hi, split_footprints[0], &split_row_ends[0]);
+          },
           [&] {
             scan(ix0, ix1, iy0 + 1, 2, iy1 + 1, half_lo, half_hi, half_all_lo, half_all_hi, split_footprints[1],
                  &split_row_ends[1]);

@@ -94,10 +94,9 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
     row_w_min[i] = t_max > 0.0 ? 1.0 / t_max : kInf;
   }
   // A footprint's rows are those with sin_lo <= sine <= sin_hi: std::lower_bound and upper_bound
-  // on the row sines, started from a table of buckets of sine instead of a binary search (its
-  // unpredictable branches cost more than the tests of a small footprint). first_row[k]: the first
-  // row at or above bucket k's start; a search starts one bucket lower (the start's rounding) and
-  // walks up a few rows.
+  // on the row sines, started from a table of buckets of sine instead of a binary search over all
+  // rows (whose branches are unpredictable). first_row[k]: the first row at or above bucket k's
+  // start; a search starts one bucket lower (the start's rounding) and walks up a few rows.
   const int buckets = 4 * ne;
   const double per_unit = 0.5 * buckets;
   std::vector<int>& first_row = out.first_row;

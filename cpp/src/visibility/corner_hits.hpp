@@ -12,9 +12,8 @@
 
 namespace vistrack::detail {
 
-// The corner rays' first hits, with the scratch that finds them. Kept as inverse distances and
-// read through distance_of(): a VV's per-corner arrays do not fit in a core's cache, so every array
-// and pass fewer is memory traffic saved (the distances were a second array, the owners doubles).
+// The corner rays' first hits, with the scratch that finds them. Kept as inverse distances, read
+// through distance_of(), so that the distances need no array and pass of their own.
 struct CornerHits {
   std::vector<double> inverse;          // per corner: 1 / the first obstacle hit's distance, 0: none
   std::vector<std::uint32_t> triangle;  // its face (EmbreeScene::kNoTriangle: none)
@@ -26,14 +25,14 @@ struct CornerHits {
   }
 };
 
-// CornerHits::distance_of(out.inverse[v]) and out.triangle[v] per corner v of `sphere` (directions `dirs`): the nearest obstacle
-// triangle whose cone from g holds the direction and lies within visible_far_bound along it, its
-// distance and face (Embree's primID), else +inf and kNoTriangle: what tracing the ray in exact
-// arithmetic would return. `triangles`: 9 floats per face relative to the scene's origin
-// (EmbreeScene::triangles), g_local: g relative to it. Alternate footprints on two of TBB's
-// threads when `parallel`, merged to the same result (of two triangles at exactly the same
-// distance the first footprint wins either way). Returns the number of (direction, triangle)
-// tests made.
+// CornerHits::distance_of(out.inverse[v]) and out.triangle[v] per corner v of `sphere` (directions
+// `dirs`): the nearest obstacle triangle whose cone from g holds the direction and lies within
+// visible_far_bound along it, its distance and face (Embree's primID), else +inf and kNoTriangle:
+// what tracing the ray in exact arithmetic would return. `triangles`: 9 floats per face relative
+// to the scene's origin (EmbreeScene::triangles), g_local: g relative to it. Alternate footprints
+// on two of TBB's threads when `parallel`, merged to the same result (of two triangles at exactly
+// the same distance the first footprint wins either way). Returns the number of (direction,
+// triangle) tests made.
 std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& triangles, const Vec3& g_local,
                         const Setup& s, const SphereGrid& sphere, const Directions& dirs, bool parallel,
                         CornerHits& out);
