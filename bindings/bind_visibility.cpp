@@ -214,7 +214,9 @@ void bind_visibility(py::module_& m) {
                     "s of refine_s (star VV): locating the grid edges' jumps")
       .def_readonly("second_pass_s", &VolumeCost::second_pass_s,
                     "s of refine_s (star VV): the split edges' new edges and their jumps")
-      .def_readonly("untwist_s", &VolumeCost::untwist_s, "s of refine_s (star VV): confirming and untwisting the walls")
+      .def_readonly("untwist_s", &VolumeCost::untwist_s,
+                    "s of refine_s (star VV): confirming the jumps (with the complex slots' pieces, which the mesh "
+                    "reuses) and untwisting the walls")
       .def_readonly("count_s", &VolumeCost::count_s,
                     "s of mesh_s (star VV): numbering the vertices, counting the faces per slot")
       .def_readonly("vertices_s", &VolumeCost::vertices_s, "s of mesh_s (star VV): the vertices")

@@ -400,7 +400,7 @@ def test_predicted_refine_rays_match_traced_rays_on_charlotte(charlotte, charlot
     graze the occluder's edge closer than Embree's float test resolves; bench/visibility_bench.py
     counts 0 of 14.3k at 1 degree, 2 of 28.3k at 0.5), the VV is the same as without the check,
     and each predicted ray is traced exactly once more. Predicting from the wrong side of the edge
-    (the probe past it) misses 11.3k of 13.5k on paper_slow."""
+    (the probe past it) fails this test: most predicted rays then miss."""
     pois, _poi = path_pois(charlotte_scene, charlotte / "paths" / f"{path}.csv", np.linspace(0.0, 60.0, 7))
     predicted = misses = 0
     for g in pois:

@@ -146,7 +146,8 @@ struct VolumeCost {
   double volume_s = 0.0;  // summing its volume
   // refine_s of a star VV (the POI in its band) by stage: the jump candidates (live corners, the
   // search over the grid's edges, the edge map), the first pass over them (the grid edges' rays),
-  // the second (the split edges' new edges), confirming and untwisting the walls.
+  // the second (the split edges' new edges), confirming the jumps (with the complex slots' pieces,
+  // which the mesh reuses) and untwisting the walls.
   double candidates_s = 0.0, first_pass_s = 0.0, second_pass_s = 0.0, untwist_s = 0.0;
   // mesh_s of a star VV by stage: numbering the vertices and counting the faces per slot, the
   // vertices, the faces with the volume.

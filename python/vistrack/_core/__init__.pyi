@@ -843,7 +843,7 @@ class VolumeCost:
     @property
     def untwist_s(self) -> float:
         """
-        s of refine_s (star VV): confirming and untwisting the walls
+        s of refine_s (star VV): confirming the jumps (with the complex slots' pieces, which the mesh reuses) and untwisting the walls
         """
     @property
     def vertices_s(self) -> float:
