@@ -8,13 +8,18 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <random>
 #include <sstream>
 
+#include "simd/cpu.hpp"
 #include "test_data.hpp"
+#include "visibility/corner_scan.hpp"
 #include "vistrack/error.hpp"
 #include "vistrack/orbit.hpp"
 #include "vistrack/volume.hpp"
@@ -153,6 +158,57 @@ TEST(DirectionGrid, CornersLieOnTheCellBoundaries) {
 
 // vv.far[k] is the distance along grid.corner(i, j): the VV computes its rays with trig tables,
 // DirectionGrid::corner directly; a wall x = 40 facing g checks both angles.
+TEST(CornerScan, Avx2KernelIsBitIdenticalToScalar) {
+  // corner_hits scans runs of a row four columns per AVX2 instruction where the CPU has it; every
+  // column must round and decide exactly as the scalar loop. Random triangles' coefficients over
+  // runs of 1 to 23 columns (tails of every length), repeated runs (a tie keeps the earlier owner),
+  // negative offsets, floors that cut some hits, and NaN coefficients (no hit).
+  if (!detail::avx2_kernel_available()) GTEST_SKIP() << "this CPU has no AVX2: only the scalar loop runs";
+  constexpr int kColumns = 360;
+  std::vector<double> cos_az(kColumns), sin_az(kColumns);
+  for (int j = 0; j < kColumns; ++j) {
+    cos_az[static_cast<std::size_t>(j)] = std::cos(2.0 * kPi * j / kColumns);
+    sin_az[static_cast<std::size_t>(j)] = std::sin(2.0 * kPi * j / kColumns);
+  }
+  std::mt19937_64 rng(35);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> column(0, kColumns - 1), length(1, 23);
+  std::vector<double> w_scalar(kColumns, 0.0), w_avx2(kColumns, 0.0);
+  std::vector<std::uint32_t> owner_scalar(kColumns, 7u), owner_avx2(kColumns, 7u);
+  std::size_t taken = 0;
+  for (std::uint32_t run = 0; run < 20000; ++run) {
+    std::array<double, 4> a{}, b{}, c{};
+    for (std::size_t e = 0; e < 4; ++e) {
+      a[e] = unit(rng);
+      b[e] = unit(rng);
+      c[e] = 0.3 * unit(rng) + (e < 3 ? 0.2 : 0.0);
+    }
+    if (run % 97 == 0) a[run % 4] = std::numeric_limits<double>::quiet_NaN();
+    const double inv_offset = 1.0 / (run % 5 == 0 ? -(1.0 + unit(rng)) : 1.0 + unit(rng) + 0.01);
+    const double w_min = run % 3 == 0 ? 0.5 * std::abs(unit(rng)) : 0.0;
+    const int first = column(rng), last = std::min(kColumns - 1, first + length(rng) - 1);
+    for (int repeat = 0; repeat < (run % 11 == 0 ? 2 : 1); ++repeat) {
+      const std::uint32_t owner = 2 * run + static_cast<std::uint32_t>(repeat);
+      detail::scan_run(cos_az.data(), sin_az.data(), first, last, a.data(), b.data(), c.data(), inv_offset, w_min, owner,
+                       w_scalar.data(), owner_scalar.data());
+      detail::scan_run_avx2(cos_az.data(), sin_az.data(), first, last, a.data(), b.data(), c.data(), inv_offset, w_min,
+                            owner, w_avx2.data(), owner_avx2.data());
+    }
+    for (int j = 0; j < kColumns; ++j) {
+      const auto k = static_cast<std::size_t>(j);
+      ASSERT_EQ(std::memcmp(&w_scalar[k], &w_avx2[k], sizeof(double)), 0) << "run " << run << " column " << j;
+      ASSERT_EQ(owner_scalar[k], owner_avx2[k]) << "run " << run << " column " << j;
+    }
+    if (run % 500 == 499) {
+      // Start over now and then, so that later runs still find columns to take.
+      taken += static_cast<std::size_t>(std::count_if(w_scalar.begin(), w_scalar.end(), [](double w) { return w > 0.0; }));
+      std::fill(w_scalar.begin(), w_scalar.end(), 0.0);
+      std::fill(w_avx2.begin(), w_avx2.end(), 0.0);
+    }
+  }
+  EXPECT_GT(taken, 1000u);  // the runs did take hits
+}
+
 TEST(VisibilityVolume, IntervalsLieAlongTheGridsCorners) {
   const VisibilityScene scene(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)}}));
   const VisibilityVolume vv = visibility_volume(scene, Vec3(0, 0, 0.5), 200.0, std::nullopt, 1.0);

@@ -5,9 +5,6 @@
 
 namespace vistrack::detail {
 
-// Whether this build has the AVX2 kernel and the CPU runs it.
-bool avx2_kernel_available();
-
 // For `count` pairs (rows of 3 doubles) whose |psi0| and |psi1 - psi0| are below the
 // polynomial range (kFastTrigLimit): shortest length (units of rho) and word code over all six
 // words, bit-identical to shortest_length_normalised(make_frame_poly(...)); ccc is set to 0

@@ -13,6 +13,7 @@
 #include "dubins/batch_avx2.hpp"
 #include "dubins/kernel.hpp"
 #include "dubins/validate.hpp"
+#include "simd/cpu.hpp"
 #include "vistrack/dubins.hpp"
 #include "vistrack/error.hpp"
 
@@ -78,15 +79,6 @@ void lengths_range(const double* q0s, const double* q1s, std::size_t begin, std:
 }
 
 }  // namespace
-
-// Here, not in the AVX2 file: this check must itself run on any x86-64 CPU.
-bool detail::avx2_kernel_available() {
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-  return __builtin_cpu_supports("avx2");
-#else
-  return false;
-#endif
-}
 
 double dubins_shortest_length(const Configuration& q0, const Configuration& q1, double rho,
                               DubinsWord* word) {

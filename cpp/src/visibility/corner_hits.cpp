@@ -20,6 +20,8 @@
 #include <cmath>
 #include <limits>
 
+#include "simd/cpu.hpp"
+#include "visibility/corner_scan.hpp"
 #include "visibility/embree_scene.hpp"
 
 namespace vistrack::detail {
@@ -52,31 +54,6 @@ Cone cone_of(const float* t, const Vec3& g_local) {
   return cone;
 }
 
-// One run of columns [first, last] of a row: coefficients a, b, c give edge e . d (e < 3) and
-// plane . d (e = 3) as a[e] cos az + b[e] sin az + c[e]. Keeps per column the nearest hit as its
-// inverse distance w = plane . d / offset (no division per direction; larger is nearer, 0 none)
-// and its owner (the footprint's ordinal). GCC compiles the two stores under one
-// branch and does not vectorize the loop; written branch-free (a max, and the owner by
-// arithmetic) it vectorized, or stayed scalar without that branch, and neither was faster on
-// these short runs (about 5 columns).
-inline void scan_run(
-    const double* __restrict cos_az, const double* __restrict sin_az, int first, int last, const double* a,
-    const double* b, const double* c, double inv_offset, double w_min, std::uint32_t owner, double* __restrict row_w,
-    std::uint32_t* __restrict row_owner) {
-  const double a0 = a[0], a1 = a[1], a2 = a[2], a3 = a[3], b0 = b[0], b1 = b[1], b2 = b[2], b3 = b[3];
-  const double c0 = c[0], c1 = c[1], c2 = c[2], c3 = c[3];
-  for (int j = first; j <= last; ++j) {
-    const double ca = cos_az[j], sa = sin_az[j];
-    const double e0 = a0 * ca + b0 * sa + c0;
-    const double e1 = a1 * ca + b1 * sa + c1;
-    const double e2 = a2 * ca + b2 * sa + c2;
-    const double w = (a3 * ca + b3 * sa + c3) * inv_offset;
-    const bool take = (e0 >= 0.0) & (e1 >= 0.0) & (e2 >= 0.0) & (w >= w_min) & (w > row_w[j]);
-    row_w[j] = take ? w : row_w[j];
-    row_owner[j] = take ? owner : row_owner[j];
-  }
-}
-
 }  // namespace
 
 std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& triangles, const Vec3& g_local,
@@ -86,6 +63,7 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
   const auto n = static_cast<std::size_t>(sphere.num_vertices());
   const std::vector<double>& sines = dirs.sin_el_corner;
   const double d_az = kTwoPi / na;
+  const bool avx2 = avx2_kernel_available();  // the same hits either way (corner_scan.hpp)
   // Hits count up to where the ray's visible part ends anyway (as the traced rays' t_max): as an
   // inverse distance, from w_min on (+inf: the row sees nothing).
   std::vector<double> row_w_min(static_cast<std::size_t>(ne) + 1);
@@ -182,8 +160,13 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
         for (int r = 0; r < (pole ? 1 : runs); ++r) {
           const int j0 = pole ? 0 : first[static_cast<std::size_t>(r)], j1 = pole ? 0 : last[static_cast<std::size_t>(r)];
           tested += static_cast<std::size_t>(j1 - j0 + 1);
-          scan_run(dirs.cos_az_corner.data(), dirs.sin_az_corner.data(), j0, j1, a.data(), b.data(), c.data(), inv_offset,
-                   w_min, ordinal, row_hit, row_owner);
+          const double* cos_az = dirs.cos_az_corner.data();
+          const double* sin_az = dirs.sin_az_corner.data();
+          if (avx2)
+            scan_run_avx2(cos_az, sin_az, j0, j1, a.data(), b.data(), c.data(), inv_offset, w_min, ordinal, row_hit,
+                          row_owner);
+          else
+            scan_run(cos_az, sin_az, j0, j1, a.data(), b.data(), c.data(), inv_offset, w_min, ordinal, row_hit, row_owner);
         }
       }
     }
