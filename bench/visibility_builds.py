@@ -11,7 +11,8 @@ e.g., glibc's allocator settings: --env tuned:GLIBC_TUNABLES=glibc.malloc.trim_t
 bench/visibility_bench.py, d_max 400 m): wall ms one VV at a time (visibility_volume, which
 spreads one VV over the cores when the build can), wall ms per VV of a batch of the same 10
 (visibility_volumes) and VVs per second of a batch of 60, and the CPU ms per VV of that batch
-(all threads: what the VV costs, less disturbed by a loaded machine than wall time).
+(all threads: what the VV costs, less disturbed by a loaded machine than wall time). --volume-only
+times VVs with their volume only (with_mesh=False; builds from issue 35's fourth session on).
 
 Charlotte geometry (c) OpenStreetMap contributors (ODbL).
 """
@@ -30,7 +31,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 
 
-def child(repo: Path, build: str, data: Path, inner: int) -> None:
+def child(repo: Path, build: str, data: Path, inner: int, volume_only: bool) -> None:
     """One sample in this process: JSON on stdout."""
     os.environ["VISTRACK_BUILD_DIR"] = build
     sys.path.insert(0, str(repo / "tests" / "python"))
@@ -54,11 +55,12 @@ def child(repo: Path, build: str, data: Path, inner: int) -> None:
             cpu.append(time.process_time() - c)
         return wall, cpu
 
-    [vt.visibility_volume(scene, p, 400.0, None, 1.0) for p in pois]  # warm up
+    extra = {"with_mesh": False} if volume_only else {}
+    [vt.visibility_volume(scene, p, 400.0, None, 1.0, **extra) for p in pois]  # warm up
     load = os.getloadavg()[0]
-    single, _ = run(lambda: [vt.visibility_volume(scene, p, 400.0, None, 1.0) for p in pois])
-    batch, _ = run(lambda: vt.visibility_volumes(scene, pois, 400.0, None, 1.0))
-    batch60, cpu60 = run(lambda: vt.visibility_volumes(scene, pois60, 400.0, None, 1.0))
+    single, _ = run(lambda: [vt.visibility_volume(scene, p, 400.0, None, 1.0, **extra) for p in pois])
+    batch, _ = run(lambda: vt.visibility_volumes(scene, pois, 400.0, None, 1.0, **extra))
+    batch60, cpu60 = run(lambda: vt.visibility_volumes(scene, pois60, 400.0, None, 1.0, **extra))
     print(json.dumps({"load": load, "single_ms": min(single) / 10 * 1e3, "batch_ms": min(batch) / 10 * 1e3,
                       "batch_vvs_per_s": 60 / min(batch60), "batch_cpu_ms": min(cpu60) / 60 * 1e3}))
 
@@ -73,10 +75,11 @@ def main() -> int:
     data = Path(os.environ.get("VISTRACK_DATA", REPO.parent / "shared" / "data"))
     parser.add_argument("--data", type=Path, default=data)
     parser.add_argument("--json", type=Path)
+    parser.add_argument("--volume-only", action="store_true", help="VVs with their volume only (with_mesh=False)")
     parser.add_argument("--child", nargs=2, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child:
-        child(Path(args.child[0]), args.child[1], args.data, args.inner)
+        child(Path(args.child[0]), args.child[1], args.data, args.inner, args.volume_only)
         return 0
     if not args.build:
         parser.error("give at least one --build NAME=BUILD_DIR")
@@ -96,11 +99,13 @@ def main() -> int:
     for _ in range(args.rounds):
         for name, build in builds.items():
             out = subprocess.run([sys.executable, __file__, "--child", str(repos[name]), str(Path(build).resolve()),
-                                  "--inner", str(args.inner), "--data", str(args.data)],
+                                  "--inner", str(args.inner), "--data", str(args.data)]
+                                 + (["--volume-only"] if args.volume_only else []),
                                  capture_output=True, text=True, check=True, env=envs[name])
             samples[name].append(json.loads(out.stdout.strip().splitlines()[-1]))
     keys = ("single_ms", "batch_ms", "batch_vvs_per_s", "batch_cpu_ms", "load")
-    print(f"1-degree Charlotte VVs, d_max 400 m; medians of {args.rounds} interleaved rounds (each the best of "
+    kind = " with their volume only" if args.volume_only else ""
+    print(f"1-degree Charlotte VVs{kind}, d_max 400 m; medians of {args.rounds} interleaved rounds (each the best of "
           f"{args.inner}); {os.cpu_count()} cores")
     header = f"{'build':>10} {'ms/VV alone':>11} {'batch ms/VV':>11} {'batch VVs/s':>11} {'CPU ms/VV':>9} {'load':>5}"
     print(header)

@@ -88,11 +88,25 @@ void bind_visibility(py::module_& m) {
                              "Start of the visible interval per grid corner, (num_elevation + 1, num_azimuth) metres.")
       .def_property_readonly("far", [](const VisibilityVolume& vv) { return per_corner(vv, vv.far); },
                              "End of the visible interval per grid corner (near >= far: nothing visible).")
-      .def_property_readonly("vertices", [](const VisibilityVolume& vv) { return vv.mesh.vertices; },
-                             "Mesh vertices (n, 3).")
-      .def_property_readonly("faces", [](const VisibilityVolume& vv) { return vv.mesh.faces; },
-                             "Mesh triangles (m, 3) int32, outward oriented.")
-      .def_readonly("volume", &VisibilityVolume::volume, "Volume of the mesh (m^3).")
+      .def_property_readonly(
+          "vertices",
+          [](const VisibilityVolume& vv) {
+            detail::require_mesh(vv, "vv.vertices");
+            return vv.mesh.vertices;
+          },
+          "Mesh vertices (n, 3); VistrackError for a VV computed with with_mesh=False.")
+      .def_property_readonly(
+          "faces",
+          [](const VisibilityVolume& vv) {
+            detail::require_mesh(vv, "vv.faces");
+            return vv.mesh.faces;
+          },
+          "Mesh triangles (m, 3) int32, outward oriented; VistrackError for a VV computed with with_mesh=False.")
+      .def_readonly("volume", &VisibilityVolume::volume,
+                    "Volume of the mesh (m^3); the same value when computed with with_mesh=False.")
+      .def_readonly("has_mesh", &VisibilityVolume::has_mesh,
+                    "False for a VV computed with with_mesh=False: its intervals and volume only (no vertices,\n"
+                    "faces, slices, XOR or files).")
       .def_readonly("mesh_row_sines", &VisibilityVolume::mesh_row_sines,
                     "Star VVs (POI in the band): sines of the elevations of the mesh's vertex rows (grid row\n"
                     "boundaries plus the creases where d_max meets the ground or a band plane); empty otherwise.")
@@ -121,7 +135,11 @@ void bind_visibility(py::module_& m) {
           "The VV stored in a binary VV file (save_binary or the VV cache). VistrackError naming the file when "
           "it is missing, unreadable, truncated, corrupt (checksum) or of another format version.")
       .def("__repr__", [](const VisibilityVolume& vv) {
-        return Repr("VisibilityVolume").add("poi", vv.poi).add("volume", vv.volume).add("faces", vv.mesh.faces.rows()).str();
+        Repr repr("VisibilityVolume");
+        repr.add("poi", vv.poi).add("volume", vv.volume);
+        if (vv.has_mesh) repr.add("faces", vv.mesh.faces.rows());
+        else repr.item("has_mesh=False");
+        return repr.str();
       });
 
   py::class_<VisibilityScene>(m, "VisibilityScene",
@@ -192,15 +210,17 @@ void bind_visibility(py::module_& m) {
 
   m.def(
       "visibility_volume",
-      [](const VisibilityScene& scene, const Eigen::VectorXd& g, double d_max, Band band, double resolution_deg) {
+      [](const VisibilityScene& scene, const Eigen::VectorXd& g, double d_max, Band band, double resolution_deg,
+         bool with_mesh) {
         const Vec3 p = as_point(g, "g");
         py::gil_scoped_release release;
-        return visibility_volume(scene, p, d_max, band, resolution_deg);
+        return visibility_volume(scene, p, d_max, band, resolution_deg, with_mesh);
       },
       py::arg("scene"), py::arg("g"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
-      py::arg("resolution_deg") = kDefaultResolutionDeg,
+      py::arg("resolution_deg") = kDefaultResolutionDeg, py::arg("with_mesh") = true,
       "Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when "
-      "given, on a grid of about resolution_deg degrees.");
+      "given, on a grid of about resolution_deg degrees; with_mesh=False leaves the mesh out (the same "
+      "intervals and volume, less work).");
   py::class_<VolumeCost>(m, "VolumeCost", "Where one VV's time and rays went (for benchmarks).")
       .def_readonly("bounds_s", &VolumeCost::bounds_s, "s: per-column bounds of the rays that can hit an obstacle")
       .def_readonly("trace_s", &VolumeCost::trace_s,
@@ -243,29 +263,33 @@ void bind_visibility(py::module_& m) {
   m.def(
       "visibility_volume_cost",
       [](const VisibilityScene& scene, const Eigen::VectorXd& g, double d_max, Band band, double resolution_deg,
-         bool parallel, bool check_predicted) {
+         bool parallel, bool check_predicted, bool with_mesh) {
         const Vec3 p = as_point(g, "g");
         VolumeCost cost;
         VisibilityVolume vv;
         {
           py::gil_scoped_release release;
-          vv = visibility_volume_with_cost(scene, p, d_max, band, resolution_deg, cost, parallel, check_predicted);
+          vv = visibility_volume_with_cost(scene, p, d_max, band, resolution_deg, cost, parallel, check_predicted,
+                                           with_mesh);
         }
         return std::make_pair(std::move(vv), cost);
       },
       py::arg("scene"), py::arg("g"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
       py::arg("resolution_deg") = kDefaultResolutionDeg, py::arg("parallel") = true, py::arg("check_predicted") = false,
+      py::arg("with_mesh") = true,
       "visibility_volume and where its time and rays went: (vv, VolumeCost); parallel=False keeps it on the "
       "calling thread (as in a batch); check_predicted=True also traces the refining rays it predicts "
-      "(VolumeCost.predicted_misses, predicted_error).");
+      "(VolumeCost.predicted_misses, predicted_error); with_mesh as in visibility_volume.");
   m.def(
       "visibility_volumes",
-      [](const VisibilityScene& scene, const Points3& pois, double d_max, Band band, double resolution_deg) {
+      [](const VisibilityScene& scene, const Points3& pois, double d_max, Band band, double resolution_deg,
+         bool with_mesh) {
         py::gil_scoped_release release;
-        return visibility_volumes(scene, pois, d_max, band, resolution_deg);
+        return visibility_volumes(scene, pois, d_max, band, resolution_deg, with_mesh);
       },
       py::arg("scene"), py::arg("pois"), py::arg("d_max"), py::arg("altitude_band") = py::none(),
-      py::arg("resolution_deg") = kDefaultResolutionDeg, "VVs for every row of pois (n, 3), in parallel over the points.");
+      py::arg("resolution_deg") = kDefaultResolutionDeg, py::arg("with_mesh") = true,
+      "VVs for every row of pois (n, 3), in parallel over the points; with_mesh as in visibility_volume.");
   m.def("mesh_volume",
         [](const Points3& v, const Faces& f) {
           validate_triangle_mesh(v, f);

@@ -54,7 +54,12 @@ void bind_volume(py::module_& m) {
          py::call_guard<py::gil_scoped_release>(),
          "Visibility polygon at world altitude z: list of Polygon. By default only the part(s) containing "
          "the POI's vertical; all_parts=True keeps every part.");
-  vv.def("check", [](const VisibilityVolume& v) { return check_closed_mesh(v.mesh); },
+  vv.def(
+      "check",
+      [](const VisibilityVolume& v) {
+        detail::require_mesh(v, "vv");
+        return check_closed_mesh(v.mesh);
+      },
          py::call_guard<py::gil_scoped_release>(), "check_closed_mesh on this VV's mesh.");
 }
 

@@ -62,16 +62,20 @@ def visibility_volume(
     d_max: float,
     altitude_band: Band = None,
     resolution_deg: float = Planning().resolution_deg,
+    with_mesh: bool = True,
 ) -> VisibilityVolume:
     """Visibility volume alpha(g) of eq. (4): the points within ``d_max`` of the POI ``g`` (x, y, z),
     inside ``altitude_band`` = (h_lo, h_hi) of world z when given, with a clear line of sight.
 
     The result holds the per-direction intervals (``near``, ``far`` on ``grid``), a closed,
     outward-oriented triangle mesh (``vertices``, ``faces``), its ``volume``, ``slice(h)`` and
-    ``save(path)``. Raises VistrackError naming the field for bad input.
+    ``save(path)``. ``with_mesh=False`` leaves the mesh out (``has_mesh`` is False): the same
+    intervals and volume for less work; what reads the mesh then raises VistrackError (beyond
+    the paper). Raises VistrackError naming the field for bad input.
     """
     return _core.visibility_volume(
-        visibility_scene(env), np.asarray(g, dtype=float), float(d_max), altitude_band, float(resolution_deg)
+        visibility_scene(env), np.asarray(g, dtype=float), float(d_max), altitude_band, float(resolution_deg),
+        bool(with_mesh),
     )
 
 
@@ -81,13 +85,15 @@ def visibility_volumes(
     d_max: float,
     altitude_band: Band = None,
     resolution_deg: float = Planning().resolution_deg,
+    with_mesh: bool = True,
 ) -> list[VisibilityVolume]:
-    """VVs for every row of ``pois`` (n, 3), computed in parallel over the points (GIL released)."""
+    """VVs for every row of ``pois`` (n, 3), computed in parallel over the points (GIL released);
+    ``with_mesh`` as in :func:`visibility_volume`."""
     points = np.asarray(pois, dtype=float)
     if points.ndim != 2 or points.shape[1] != 3:
         raise _core.VistrackError(f"pois: shape = {points.shape}: must be (n, 3)")
     return _core.visibility_volumes(
-        visibility_scene(env), points, float(d_max), altitude_band, float(resolution_deg)
+        visibility_scene(env), points, float(d_max), altitude_band, float(resolution_deg), bool(with_mesh)
     )
 
 

@@ -244,6 +244,36 @@ TEST(VisibilityVolume, WallsAndCreasesKeepTheMeshVolume) {
   }
 }
 
+// with_mesh = false: the same intervals and volume to the bit (walls and split slots summed from
+// points computed in place of stored), a star VV and a shell; what reads the mesh refuses it.
+TEST(VisibilityVolume, VolumeWithoutMeshIsTheMeshs) {
+  const VisibilityScene scene(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)},
+                                         {Vec3(-50, 30, 0), Vec3(-10, 80, 70)},
+                                         {Vec3(-80, -90, 0), Vec3(-20, -40, 15)}}));
+  for (const auto& band : {std::optional<std::pair<double, double>>{}, std::optional(std::make_pair(0.0, 40.0)),
+                           std::optional(std::make_pair(20.0, 60.0))}) {
+    for (const Vec3& g : {Vec3(0, 0, 0.5), Vec3(10, -30, 2.0)}) {
+      const VisibilityVolume meshed = visibility_volume(scene, g, 200.0, band, 1.0);
+      const VisibilityVolume bare = visibility_volume(scene, g, 200.0, band, 1.0, false);
+      EXPECT_TRUE(meshed.has_mesh);
+      EXPECT_FALSE(bare.has_mesh);
+      EXPECT_GT(meshed.volume, 0.0);
+      EXPECT_EQ(bare.volume, meshed.volume) << "g " << g.transpose();
+      EXPECT_EQ(bare.far, meshed.far);
+      EXPECT_EQ(bare.near, meshed.near);
+      EXPECT_EQ(bare.mesh.faces.rows(), 0);
+      EXPECT_TRUE(bare.mesh_triangle_faces.empty());
+    }
+  }
+  const VisibilityVolume bare = visibility_volume(scene, Vec3(0, 0, 0.5), 200.0, std::nullopt, 1.0, false);
+  try {
+    (void)visibility_polygon(bare, 10.0);
+    ADD_FAILURE() << "a VV without its mesh was sliced";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("vv: a VV computed without its mesh"), std::string::npos) << e.what();
+  }
+}
+
 // Open field: the VV is the ball of radius d_max cut by the ground and the band (analytic).
 TEST(VisibilityVolume, OpenFieldMatchesAnalyticVolume) {
   const VisibilityScene scene(open_field());

@@ -416,6 +416,40 @@ def test_predicted_refine_rays_match_traced_rays_on_charlotte(charlotte, charlot
     assert predicted > 2000 and misses <= 1e-3 * predicted, (predicted, misses)
 
 
+@pytest.mark.parametrize(("path", "d_max", "band"), [("paper_slow", 400.0, None), ("paper_small", 100.0, None),
+                                                   ("paper_slow", 300.0, (0.0, 60.0)),
+                                                   ("paper_slow", 300.0, (40.0, 80.0))])
+def test_volume_without_mesh_is_the_meshs_on_charlotte(charlotte, charlotte_scene, tmp_path, path, d_max, band):
+    """with_mesh=False skips the mesh but not its volume: the sums of the fill pass over the points
+    its faces would join. Equal to the last bit to the meshed VV's (star VVs with walls and split
+    slots, and shells, the POI above the band (40, 80)), alone and in a batch, with the same
+    intervals; leaving out the walls' and split slots' faces would change it. What reads the mesh
+    refuses the VV, naming it; the grid XOR, which reads the intervals, takes it."""
+    pois, _poi = path_pois(charlotte_scene, charlotte / "paths" / f"{path}.csv", [0.0, 30.0, 60.0])
+    meshed = vt.visibility_volumes(charlotte_scene, pois, d_max, band, 1.0)
+    bare = vt.visibility_volumes(charlotte_scene, pois, d_max, band, 1.0, with_mesh=False)
+    for g, a, b in zip(pois, meshed, bare):
+        alone = vt.visibility_volume(charlotte_scene, g, d_max, band, 1.0, with_mesh=False)
+        assert a.has_mesh and not b.has_mesh and not alone.has_mesh
+        assert a.volume > 0.0 and b.volume == a.volume and alone.volume == a.volume
+        assert np.array_equal(b.near, a.near) and np.array_equal(b.far, a.far)
+        assert len(b.mesh_row_sines) == 0 and len(b.mesh_triangle_faces) == 0
+    if band is None:
+        assert len(meshed[0].mesh_row_sines) > 0  # star VVs: the walls and splits were there to add up
+    b = bare[0]
+    refuses(lambda: b.vertices, "vv.vertices", "with_mesh")
+    refuses(lambda: b.faces, "vv.faces", "with_mesh")
+    refuses(lambda: b.slice(20.0), "vv:", "with_mesh")
+    refuses(lambda: vt.plane_visibility_polygon(b, 20.0), "vv:", "with_mesh")
+    refuses(lambda: b.check(), "vv:", "with_mesh")
+    refuses(lambda: b.save(str(tmp_path / "vv.obj")), "vv:", "with_mesh")
+    refuses(lambda: b.save_binary(tmp_path / "vv.bin"), "vv:", "with_mesh")
+    refuses(lambda: vt.radial_xor_volume(b, meshed[1]), "a:", "with_mesh")
+    refuses(lambda: vt.xor_volume(meshed[1], b, method="mesh"), "b:", "with_mesh")
+    assert not list(tmp_path.iterdir())  # nothing written
+    assert vt.xor_volume(b, bare[1]) == vt.grid_xor_volume(meshed[0], meshed[1]) > 0.0
+
+
 def test_polygon_agreement_sees_a_wrong_polygon(box_env, open_field):
     """The VP-against-line-of-sight score: near 1 for a VV in its own scene, clearly lower for an
     open-field VV scored against a scene with a box in front of the POI."""

@@ -20,6 +20,7 @@ bool ends_with(const std::string& text, const std::string& suffix) {
 }  // namespace
 
 void VisibilityVolume::save(const std::string& path) const {
+  detail::require_mesh(*this, "vv");
   const bool obj = ends_with(path, ".obj");
   const bool ply = ends_with(path, ".ply");
   if (!obj && !ply) detail::fail_field("path", path, "extension must be .obj or .ply");

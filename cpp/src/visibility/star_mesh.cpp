@@ -221,8 +221,8 @@ std::int32_t EdgeMap::find(std::uint64_t k) const {
 
 void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs, const std::vector<double>& far,
                      const std::vector<Surface>& surface, const std::vector<std::uint32_t>& triangle,
-                     const TraceContext& tracer_in, StarMeshScratch& sc, VisibilityVolume& vv, VolumeCost* cost,
-                     bool check_predicted) {
+                     const TraceContext& tracer_in, StarMeshScratch& sc, VisibilityVolume& vv, bool with_mesh,
+                     VolumeCost* cost, bool check_predicted) {
   PhaseTimer refine_timer(cost ? &cost->refine_s : nullptr);
   PhaseTimer candidates_timer(cost ? &cost->candidates_s : nullptr);
   RayCounts refine_counts;
@@ -775,6 +775,120 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     cost->refine_rays += refine_counts.traced;
     cost->embree_s += 1e-9 * static_cast<double>(refine_counts.embree_ns.load());
   }
+  // Faces of a piece (a, b, c) in outward order with its confirmed jumps: face(a, b, c) writes,
+  // counts or adds up one face, centroid(x, y, z) makes (or counts) the centroid of three outer
+  // vertices; vertex(v) is sample v's vertex and jump_end(jump, p) the jump's end on sample p's
+  // side (mesh vertex ids, or the points themselves for the volume alone).
+  auto emit = [&](const SlotPiece& piece, auto&& face, auto&& centroid, auto&& vertex, auto&& jump_end) {
+    const Triangle& corners = piece.corners;
+    const std::array<Jump*, 3> edge = jumps_of(piece);
+    const int count = (edge[0] != nullptr) + (edge[1] != nullptr) + (edge[2] != nullptr);
+    if (count == 0) {
+      face(vertex(corners[0]), vertex(corners[1]), vertex(corners[2]));
+      return;
+    }
+    const int r = count == 1 ? (edge[0] != nullptr ? 0 : (edge[1] != nullptr ? 1 : 2))
+                             : (edge[1] == nullptr ? 0 : (edge[2] == nullptr ? 1 : 2));
+    const int x = corners[static_cast<std::size_t>(r)];
+    const int y = corners[static_cast<std::size_t>((r + 1) % 3)];
+    const int z = corners[static_cast<std::size_t>((r + 2) % 3)];
+    if (count == 1) {
+      // The jump on edge x-y ends inside the triangle: a wall from it to the centroid.
+      const Jump& jump = *edge[static_cast<std::size_t>(r)];
+      const auto px = jump_end(jump, x), py = jump_end(jump, y);
+      const auto centre = centroid(vertex(x), vertex(y), vertex(z));
+      face(vertex(x), px, centre);
+      face(py, vertex(y), centre);
+      face(vertex(y), vertex(z), centre);
+      face(vertex(z), vertex(x), centre);
+      face(px, py, centre);
+    } else {
+      // Jumps on the two edges at the lone corner x: its corner piece, the far piece, and the
+      // wall between them.
+      const Jump& p = *edge[static_cast<std::size_t>(r)];            // on x-y
+      const Jump& q = *edge[static_cast<std::size_t>((r + 2) % 3)];  // on z-x
+      const auto px = jump_end(p, x), py = jump_end(p, y);
+      const auto qx = jump_end(q, x), qz = jump_end(q, z);
+      face(vertex(x), px, qx);
+      face(py, vertex(y), vertex(z));
+      face(py, vertex(z), qz);
+      face(qx, px, py);
+      face(qx, py, qz);
+    }
+  };
+  // Where a confirmed jump's wall meets the surface on its near (lo) or far (hi) side.
+  auto jump_point = [&](const Jump& jump, bool far_side) {
+    const double lambda = 0.5 * (jump.lambda_lo + jump.lambda_hi);
+    const Vec3 d = ((1.0 - lambda) * sample_direction(jump.u) + lambda * sample_direction(jump.w)).normalized();
+    return far_side ? point_on(s, d, distance_on(s, jump.hi_far, jump.hi_surface, d), jump.hi_surface)
+                    : point_on(s, d, distance_on(s, jump.lo_far, jump.lo_surface, d), jump.lo_surface);
+  };
+  // A corner's exact z on a plane (point_on's, without a call per corner).
+  const std::array<double, 4> plane_z = {0.0, s.low, s.high, s.ground};
+  static_assert(static_cast<int>(Surface::band_low) == 1 && static_cast<int>(Surface::band_high) == 2 &&
+                static_cast<int>(Surface::ground) == 3);
+  // The determinants of the directions at the corners of row i's two kinds of slot: a plain
+  // slot's face is g + far d at its three corners, so its six-fold volume is r_a r_b r_c
+  // det(d_a, d_b, d_c), and the determinant is the same along a row.
+  auto row_determinants = [&](int i) {
+    std::array<double, 2> det{};
+    for (int h = 0; h < 2; ++h) {
+      const Triangle c = slot_corners(2 * i * na + h);
+      det[static_cast<std::size_t>(h)] = dirs.corner(c[0]).dot(dirs.corner(c[1]).cross(dirs.corner(c[2])));
+    }
+    return det;
+  };
+  auto& row_volume = sc.row_volume;
+  auto total_volume = [&] {
+    double six_volume = 0.0;
+    for (double r : row_volume) six_volume += r;
+    return six_volume / 6.0;
+  };
+  if (!with_mesh) {
+    // The volume alone (no mesh asked for; beyond the paper, issue 35): the fill pass's sums below,
+    // in its order, over the points its faces would join, computed here instead of stored, so that
+    // the volume is the mesh's to the last bit. The border fans all end at g: they add nothing.
+    PhaseTimer volume_timer(cost ? &cost->volume_s : nullptr);
+    auto corner_point = [&](int v) {  // as the vertex pass below writes it
+      if (v >= nv) {
+        const auto k = static_cast<std::size_t>(v - nv);
+        return point_on(s, sc.extra_direction[k], sc.extra_far[k], sc.extra_surface[k]);
+      }
+      const int i = v == 0 ? 0 : (v == nv - 1 ? ne : 1 + (v - 1) / na);
+      const auto j = static_cast<std::size_t>(v - sphere.row_first(i));
+      const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)];
+      const double cos_el = dirs.cos_el_corner[static_cast<std::size_t>(i)];
+      const auto k = static_cast<std::size_t>(v);
+      return Vec3(s.g.x() + far[k] * (cos_el * dirs.cos_az_corner[j]), s.g.y() + far[k] * (cos_el * dirs.sin_az_corner[j]),
+                  surface[k] == Surface::radial ? s.g.z() + far[k] * sin_el : plane_z[static_cast<std::size_t>(surface[k])]);
+    };
+    auto end_point = [&](const Jump& jump, int p) { return jump_point(jump, p != jump.u); };
+    auto centroid_point = [](const Vec3& x, const Vec3& y, const Vec3& z) { return Vec3((x + y + z) / 3.0); };
+    row_volume.assign(static_cast<std::size_t>(ne), 0.0);
+    for_each_index(tracer.parallel, ne, [&](int i) {
+      const std::array<double, 2> det = row_determinants(i);
+      double plain = 0.0, other = 0.0;
+      auto face = [&](const Vec3& a, const Vec3& b, const Vec3& c) { other += six_volume_of(s.g, a, b, c); };
+      const std::uint8_t* f = flags.data() + 2 * i * na;
+      const double* r = far.data();
+      const SphereGrid::QuadRow row = sphere.quad_row(i);
+      for (int j = 0; j < na; ++j) {
+        const auto [v00, v01, v10, v11] = row.quad(j);
+        for (int h = 0; h < 2; ++h) {
+          const std::uint8_t flag = f[2 * j + h];
+          if (flag == kLive)
+            plain += h == 0 ? r[v00] * r[v01] * r[v11] * det[0] : r[v00] * r[v11] * r[v10] * det[1];
+          else if (flag & kLive)
+            for_each_piece(2 * (i * na + j) + h,
+                           [&](const SlotPiece& piece) { emit(piece, face, centroid_point, corner_point, end_point); });
+        }
+      }
+      row_volume[static_cast<std::size_t>(i)] = plain + other;
+    });
+    vv.volume = total_volume();
+    return;
+  }
+
   PhaseTimer mesh_timer(cost ? &cost->mesh_s : nullptr);
   PhaseTimer count_timer(cost ? &cost->count_s : nullptr);
 
@@ -805,52 +919,13 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   extra_vertex.resize(sc.extra_far.size());
   for (auto& id : extra_vertex) id = num_vertices++;
   auto outer = [&](int v) { return v < nv ? corner_vertex[v] : extra_vertex[static_cast<std::size_t>(v - nv)]; };
+  auto jump_vertex = [](const Jump& jump, int p) { return p == jump.u ? jump.vertex : jump.vertex + 1; };
   for (Jump& jump : jumps)
     if (jump.confirmed) {
       jump.vertex = num_vertices;
       num_vertices += 2;
     }
 
-  // Faces of a piece (a, b, c) in outward order with its confirmed jumps; face(a, b, c) writes
-  // or counts one face, centroid(x, y, z) makes (or counts) the centroid of three outer vertices.
-  auto emit = [&](const SlotPiece& piece, auto&& face, auto&& centroid) {
-    const Triangle& corners = piece.corners;
-    const std::array<Jump*, 3> edge = jumps_of(piece);
-    const int count = (edge[0] != nullptr) + (edge[1] != nullptr) + (edge[2] != nullptr);
-    auto jump_vertex = [](const Jump& jump, int p) { return p == jump.u ? jump.vertex : jump.vertex + 1; };
-    if (count == 0) {
-      face(outer(corners[0]), outer(corners[1]), outer(corners[2]));
-      return;
-    }
-    const int r = count == 1 ? (edge[0] != nullptr ? 0 : (edge[1] != nullptr ? 1 : 2))
-                             : (edge[1] == nullptr ? 0 : (edge[2] == nullptr ? 1 : 2));
-    const int x = corners[static_cast<std::size_t>(r)];
-    const int y = corners[static_cast<std::size_t>((r + 1) % 3)];
-    const int z = corners[static_cast<std::size_t>((r + 2) % 3)];
-    if (count == 1) {
-      // The jump on edge x-y ends inside the triangle: a wall from it to the centroid.
-      const Jump& jump = *edge[static_cast<std::size_t>(r)];
-      const int px = jump_vertex(jump, x), py = jump_vertex(jump, y);
-      const int centre = centroid(outer(x), outer(y), outer(z));
-      face(outer(x), px, centre);
-      face(py, outer(y), centre);
-      face(outer(y), outer(z), centre);
-      face(outer(z), outer(x), centre);
-      face(px, py, centre);
-    } else {
-      // Jumps on the two edges at the lone corner x: its corner piece, the far piece, and the
-      // wall between them.
-      const Jump& p = *edge[static_cast<std::size_t>(r)];            // on x-y
-      const Jump& q = *edge[static_cast<std::size_t>((r + 2) % 3)];  // on z-x
-      const int px = jump_vertex(p, x), py = jump_vertex(p, y);
-      const int qx = jump_vertex(q, x), qz = jump_vertex(q, z);
-      face(outer(x), px, qx);
-      face(py, outer(y), outer(z));
-      face(py, outer(z), qz);
-      face(qx, px, py);
-      face(qx, py, qz);
-    }
-  };
   // Border fans to g on the slot's edges next to the dead region (the border only appears where
   // far = 0, i.e. the ground or a band face through g: the fan is exact).
   auto border = [&](int t, const Triangle& c, auto&& face, int apex) {
@@ -897,7 +972,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
           ++centroids;
           return 0;
         };
-        for_each_piece(t, [&](const SlotPiece& piece) { emit(piece, count_face, count_centroid); });
+        for_each_piece(t, [&](const SlotPiece& piece) { emit(piece, count_face, count_centroid, outer, jump_vertex); });
       }
       if (!all_alive && (slot_flag[t] & kLive)) {
         const int before = faces;
@@ -940,11 +1015,8 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     out[1] = p.y();
     out[2] = p.z();
   };
-  // Vertices first (the centroids are made from them): corners by rows of the sphere. A corner on
-  // a plane gets its exact z (point_on's, without a call per corner).
-  const std::array<double, 4> plane_z = {0.0, s.low, s.high, s.ground};
-  static_assert(static_cast<int>(Surface::band_low) == 1 && static_cast<int>(Surface::band_high) == 2 &&
-                static_cast<int>(Surface::ground) == 3);
+  // Vertices first (the centroids are made from them): corners by rows of the sphere, a corner on
+  // a plane at its plane_z.
   for_each_index(parallel, ne + 1, [&](int i) {
     const int first = sphere.row_first(i), last = sphere.row_end(i);
     // Locals: the stores of doubles could otherwise alias g, the row's angles and the arrays'
@@ -970,31 +1042,22 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     set_vertex(extra_vertex[k], point_on(s, sc.extra_direction[k], sc.extra_far[k], sc.extra_surface[k]));
   for (const Jump& jump : jumps) {
     if (!jump.confirmed) continue;
-    const double lambda = 0.5 * (jump.lambda_lo + jump.lambda_hi);
-    const Vec3 d = ((1.0 - lambda) * sample_direction(jump.u) + lambda * sample_direction(jump.w)).normalized();
-    set_vertex(jump.vertex, point_on(s, d, distance_on(s, jump.lo_far, jump.lo_surface, d), jump.lo_surface));
-    set_vertex(jump.vertex + 1, point_on(s, d, distance_on(s, jump.hi_far, jump.hi_surface, d), jump.hi_surface));
+    set_vertex(jump.vertex, jump_point(jump, false));
+    set_vertex(jump.vertex + 1, jump_point(jump, true));
   }
   if (apex >= 0) set_vertex(apex, s.g);
 
   vertices_timer.stop();
   PhaseTimer fill_timer(cost ? &cost->fill_s : nullptr);
-  // Fill pass, with the volume (signed tetrahedra against g, divergence theorem) per row. A
-  // plain slot's face is g + far d at its three corners: its six-fold volume is
-  // r_a r_b r_c det(d_a, d_b, d_c), and the determinant is the same along a row.
-  auto& row_volume = sc.row_volume;
+  // Fill pass, with the volume (signed tetrahedra against g, divergence theorem) per row; a plain
+  // slot's by row_determinants.
   row_volume.assign(static_cast<std::size_t>(ne), 0.0);
   auto position = [&](int id) {
     const double* p = mesh.vertices.data() + 3 * static_cast<std::size_t>(id);
     return Vec3(p[0], p[1], p[2]);
   };
   for_each_index(parallel, ne, [&](int i) {
-    const std::array<int, 2> first_slot = {2 * i * na, 2 * i * na + 1};
-    double det[2];
-    for (int h = 0; h < 2; ++h) {
-      const Triangle c = slot_corners(first_slot[static_cast<std::size_t>(h)]);
-      det[h] = dirs.corner(c[0]).dot(dirs.corner(c[1]).cross(dirs.corner(c[2])));
-    }
+    const std::array<double, 2> det = row_determinants(i);
     std::int32_t* out = mesh.faces.data() + 3 * static_cast<std::size_t>(triangle_faces[static_cast<std::size_t>(2 * i * na)]);
     int centroid = row_centroid[static_cast<std::size_t>(i)];
     double plain = 0.0, other = 0.0;
@@ -1041,7 +1104,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
         out += 3;
         plain += r[v00] * r[v01] * r[v11] * det[0];
       } else if (f[2 * j] & kLive) {
-        for_each_piece(2 * (i * na + j), [&](const SlotPiece& piece) { emit(piece, face, make_centroid); });
+        for_each_piece(2 * (i * na + j), [&](const SlotPiece& piece) { emit(piece, face, make_centroid, outer, jump_vertex); });
       }
       if (!all_alive && (f[2 * j] & kLive)) border(2 * (i * na + j), Triangle{v00, v01, v11}, face, apex);
       if (f[2 * j + 1] == kLive) {
@@ -1051,7 +1114,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
         out += 3;
         plain += r[v00] * r[v11] * r[v10] * det[1];
       } else if (f[2 * j + 1] & kLive) {
-        for_each_piece(2 * (i * na + j) + 1, [&](const SlotPiece& piece) { emit(piece, face, make_centroid); });
+        for_each_piece(2 * (i * na + j) + 1, [&](const SlotPiece& piece) { emit(piece, face, make_centroid, outer, jump_vertex); });
       }
       if (!all_alive && (f[2 * j + 1] & kLive)) border(2 * (i * na + j) + 1, Triangle{v00, v11, v10}, face, apex);
     }
@@ -1060,9 +1123,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   fill_timer.stop();
   mesh_timer.stop();
   PhaseTimer volume_timer(cost ? &cost->volume_s : nullptr);
-  double six_volume = 0.0;
-  for (double r : row_volume) six_volume += r;
-  vv.volume = six_volume / 6.0;
+  vv.volume = total_volume();
 }
 
 }  // namespace vistrack::detail

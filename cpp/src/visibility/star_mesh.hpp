@@ -122,11 +122,12 @@ struct StarMeshScratch {
 // obstacle triangle triangle[v] that ended the corner's ray), with radial walls at the jumps of r
 // located with more rays (aimed at the edge of the occluding triangle, else by bisection), and the grid's triangles split
 // where an edge holds two jumps. Sets vv.mesh, vv.volume and vv.mesh_triangle_faces (the faces
-// built over each triangle slot of `sphere`). check_predicted traces the rays it predicts too,
-// into cost's predicted_misses and predicted_error (the mesh keeps the predictions).
+// built over each triangle slot of `sphere`); without `with_mesh`, only vv.volume, the same value.
+// check_predicted traces the rays it predicts too, into cost's predicted_misses and
+// predicted_error (the mesh keeps the predictions).
 void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions& dirs, const std::vector<double>& far,
                      const std::vector<Surface>& surface, const std::vector<std::uint32_t>& triangle,
-                     const TraceContext& tracer, StarMeshScratch& scratch, VisibilityVolume& vv,
+                     const TraceContext& tracer, StarMeshScratch& scratch, VisibilityVolume& vv, bool with_mesh = true,
                      VolumeCost* cost = nullptr, bool check_predicted = false);
 
 }  // namespace vistrack::detail

@@ -212,7 +212,7 @@ void grid_intervals(VisibilityVolume& vv, const Setup& s, const detail::SphereGr
 // The VV; `parallel` spreads its rays and rows over TBB's threads (the result is the same).
 VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_max,
                          const std::optional<std::pair<double, double>>& band, double resolution_deg, bool parallel,
-                         VolumeCost* cost = nullptr, bool check_predicted = false) {
+                         bool with_mesh, VolumeCost* cost = nullptr, bool check_predicted = false) {
   VisibilityVolume vv;
   vv.poi = g;
   vv.d_max = d_max;
@@ -282,12 +282,15 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
   trace_timer.stop();
   if (s.poi_in_band) {
     detail::build_star_mesh(s, sphere, dirs, w.corner_far, w.corner_surface, w.hits.triangle, tracer, w.star, vv,
-                            cost, check_predicted);
-    vv.mesh_row_sines = row_sines;
+                            with_mesh, cost, check_predicted);
+    if (with_mesh) vv.mesh_row_sines = row_sines;
   } else {
+    // A shell's volume comes from its mesh (few of these: the POI outside the band).
     detail::PhaseTimer mesh_timer(cost ? &cost->mesh_s : nullptr);
     vv.mesh = detail::build_shell_mesh(s, sphere, dirs, w.corner, vv.volume);
+    if (!with_mesh) vv.mesh = TriangleMesh{};
   }
+  vv.has_mesh = with_mesh;
   if (cost != nullptr) {
     cost->rays_traced += counts.traced;  // the grid's corner rows that are no vertex rows (grid_intervals)
     cost->rays_skipped += counts.skipped;
@@ -299,31 +302,39 @@ VisibilityVolume compute(const VisibilityScene& scene, const Vec3& g, double d_m
 }  // namespace
 
 VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, double d_max,
-                                   std::optional<std::pair<double, double>> altitude_band, double resolution_deg) {
+                                   std::optional<std::pair<double, double>> altitude_band, double resolution_deg,
+                                   bool with_mesh) {
   validate(scene, g, d_max, altitude_band, "g");
   (void)DirectionGrid::from_resolution(resolution_deg);
   // One VV alone: its rays and rows over every thread, isolated so that a thread waiting in it
   // takes no unrelated task.
   VisibilityVolume vv;
-  tbb::this_task_arena::isolate([&] { vv = compute(scene, g, d_max, altitude_band, resolution_deg, true); });
+  tbb::this_task_arena::isolate([&] { vv = compute(scene, g, d_max, altitude_band, resolution_deg, true, with_mesh); });
   return vv;
 }
 
 VisibilityVolume visibility_volume_with_cost(const VisibilityScene& scene, const Vec3& g, double d_max,
                                              std::optional<std::pair<double, double>> altitude_band,
                                              double resolution_deg, VolumeCost& cost, bool parallel,
-                                             bool check_predicted) {
+                                             bool check_predicted, bool with_mesh) {
   validate(scene, g, d_max, altitude_band, "g");
   (void)DirectionGrid::from_resolution(resolution_deg);
   VisibilityVolume vv;
   tbb::this_task_arena::isolate(
-      [&] { vv = compute(scene, g, d_max, altitude_band, resolution_deg, parallel, &cost, check_predicted); });
+      [&] { vv = compute(scene, g, d_max, altitude_band, resolution_deg, parallel, with_mesh, &cost, check_predicted); });
   return vv;
 }
 
 VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double d_max,
-                                   std::optional<std::pair<double, double>> altitude_band, double resolution_deg) {
-  return visibility_volume(VisibilityScene(env), g, d_max, altitude_band, resolution_deg);
+                                   std::optional<std::pair<double, double>> altitude_band, double resolution_deg,
+                                   bool with_mesh) {
+  return visibility_volume(VisibilityScene(env), g, d_max, altitude_band, resolution_deg, with_mesh);
+}
+
+void detail::require_mesh(const VisibilityVolume& vv, const std::string& field) {
+  if (!vv.has_mesh)
+    throw Error(field + ": a VV computed without its mesh (with_mesh = false; its intervals and volume only): "
+                "compute it with its mesh to slice, XOR, save or test points against it");
 }
 
 double volume_bytes(double resolution_deg) {
@@ -338,7 +349,7 @@ double volume_bytes(double resolution_deg) {
 
 std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, const Points3& pois, double d_max,
                                                  std::optional<std::pair<double, double>> altitude_band,
-                                                 double resolution_deg) {
+                                                 double resolution_deg, bool with_mesh) {
   const double each = volume_bytes(resolution_deg);
   const double count = static_cast<double>(pois.rows());
   require_work_bytes(count * each, "pois", detail::to_text(count) + " points",
@@ -354,7 +365,7 @@ std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, c
   const bool parallel_inside = pois.rows() < tbb::this_task_arena::max_concurrency();
   tbb::parallel_for(Eigen::Index{0}, pois.rows(), [&](Eigen::Index k) {
     result[static_cast<std::size_t>(k)] = compute(scene, pois.row(k).transpose(), d_max, altitude_band, resolution_deg,
-                                                  parallel_inside);
+                                                  parallel_inside, with_mesh);
   });
   return result;
 }

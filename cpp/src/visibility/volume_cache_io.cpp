@@ -129,6 +129,7 @@ std::string temporary_path(const std::string& path) {
 }  // namespace
 
 void write_volume_file(const VisibilityVolume& vv, const std::string& path) {
+  detail::require_mesh(vv, "vv");
   const std::size_t cells = vv.grid.num_corners();
   if (vv.near.size() != cells || vv.far.size() != cells)
     detail::fail_field("vv.near.size()", vv.near.size(), "differs from the grid's corner count " + detail::to_text(cells));

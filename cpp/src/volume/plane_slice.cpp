@@ -79,6 +79,7 @@ std::vector<Ring> plane_slice_rings(const TriangleMesh& mesh, double altitude) {
 }
 
 std::vector<Polygon> plane_visibility_polygon(const VisibilityVolume& vv, double altitude) {
+  detail::require_mesh(vv, "vv");
   const std::optional<double> z = visibility_slice_height(vv, altitude);
   if (!z) return {};
   std::vector<Polygon> kept;

@@ -192,6 +192,7 @@ std::optional<double> visibility_slice_height(const VisibilityVolume& vv, double
 }
 
 std::vector<Polygon> visibility_polygon(const VisibilityVolume& vv, double altitude, bool all_parts) {
+  detail::require_mesh(vv, "vv");
   const std::optional<double> z = visibility_slice_height(vv, altitude);
   if (!z) return {};
   std::vector<Polygon> polygons = nest_rings(slice_rings(vv.mesh, *z));

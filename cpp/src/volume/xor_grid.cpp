@@ -76,6 +76,8 @@ double xor_volume(const VisibilityVolume& a, const VisibilityVolume& b, XorFrame
                          "the per-direction XOR needs both VVs about one point: frame \"poi\" or equal POIs");
     return method == XorMethod::radial ? radial_xor_volume(a, b) : grid_xor_volume(a, b);
   }
+  detail::require_mesh(a, "a");
+  detail::require_mesh(b, "b");
   if (frame == XorFrame::world) return mesh_xor_volume(a.mesh, b.mesh, options);
   const TriangleMesh a_local{translated(a.mesh.vertices, a.poi), a.mesh.faces};
   const TriangleMesh b_local{translated(b.mesh.vertices, b.poi), b.mesh.faces};

@@ -212,6 +212,8 @@ bool shares_radial_mesh(const VisibilityVolume& a, const VisibilityVolume& b) {
 }
 
 double radial_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b) {
+  detail::require_mesh(a, "a");
+  detail::require_mesh(b, "b");
   if (!shares_radial_mesh(a, b))
     detail::fail_field("b.mesh_row_sines", std::to_string(b.mesh_row_sines.size()) + " rows",
                        "the radial XOR needs two star VVs (POI inside the band) on the same direction grid, "

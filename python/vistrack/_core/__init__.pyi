@@ -663,7 +663,7 @@ class VisibilityVolume:
     @property
     def faces(self) -> typing.Annotated[numpy.typing.NDArray[numpy.int32], "[m, 3]"]:
         """
-        Mesh triangles (m, 3) int32, outward oriented.
+        Mesh triangles (m, 3) int32, outward oriented; VistrackError for a VV computed with with_mesh=False.
         """
     @property
     def far(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -674,6 +674,12 @@ class VisibilityVolume:
     def grid(self) -> DirectionGrid:
         """
         The direction grid.
+        """
+    @property
+    def has_mesh(self) -> bool:
+        """
+        False for a VV computed with with_mesh=False: its intervals and volume only (no vertices,
+        faces, slices, XOR or files).
         """
     @property
     def mesh_row_sines(self) -> list[float]:
@@ -701,12 +707,12 @@ class VisibilityVolume:
     @property
     def vertices(self) -> typing.Annotated[numpy.typing.NDArray[numpy.float64], "[m, 3]"]:
         """
-        Mesh vertices (n, 3).
+        Mesh vertices (n, 3); VistrackError for a VV computed with with_mesh=False.
         """
     @property
     def volume(self) -> float:
         """
-        Volume of the mesh (m^3).
+        Volume of the mesh (m^3); the same value when computed with with_mesh=False.
         """
 class VisibilityScene:
     """
@@ -1962,17 +1968,17 @@ def vector_field(xi: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[2
     """
     The constant-speed guidance vector field (74) at position xi (2,): desired heading (77) and its rate along the field (85). heading_hint orients the frame at the exact centre.
     """
-def visibility_volume(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> VisibilityVolume:
+def visibility_volume(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, with_mesh: bool = True) -> VisibilityVolume:
     """
-    Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when given, on a grid of about resolution_deg degrees.
+    Visibility volume of POI g (3,) within d_max, inside the altitude band (h_lo, h_hi) of world z when given, on a grid of about resolution_deg degrees; with_mesh=False leaves the mesh out (the same intervals and volume, less work).
     """
-def visibility_volume_cost(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, parallel: bool = True, check_predicted: bool = False) -> tuple[VisibilityVolume, VolumeCost]:
+def visibility_volume_cost(scene: VisibilityScene, g: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 1]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, parallel: bool = True, check_predicted: bool = False, with_mesh: bool = True) -> tuple[VisibilityVolume, VolumeCost]:
     """
-    visibility_volume and where its time and rays went: (vv, VolumeCost); parallel=False keeps it on the calling thread (as in a batch); check_predicted=True also traces the refining rays it predicts (VolumeCost.predicted_misses, predicted_error).
+    visibility_volume and where its time and rays went: (vv, VolumeCost); parallel=False keeps it on the calling thread (as in a batch); check_predicted=True also traces the refining rays it predicts (VolumeCost.predicted_misses, predicted_error); with_mesh as in visibility_volume.
     """
-def visibility_volumes(scene: VisibilityScene, pois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0) -> list[VisibilityVolume]:
+def visibility_volumes(scene: VisibilityScene, pois: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[m, 3]"], d_max: typing.SupportsFloat | typing.SupportsIndex, altitude_band: tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex] | None = None, resolution_deg: typing.SupportsFloat | typing.SupportsIndex = 1.0, with_mesh: bool = True) -> list[VisibilityVolume]:
     """
-    VVs for every row of pois (n, 3), in parallel over the points.
+    VVs for every row of pois (n, 3), in parallel over the points; with_mesh as in visibility_volume.
     """
 def visible_disk_radius(scene: VisibilityScene, poi: typing.Annotated[numpy.typing.ArrayLike, numpy.float64, "[3, 1]"], altitude: typing.SupportsFloat | typing.SupportsIndex, sensor: Sensor, azimuths: typing.SupportsInt | typing.SupportsIndex = 360, rings: typing.SupportsInt | typing.SupportsIndex = 8) -> float:
     """
