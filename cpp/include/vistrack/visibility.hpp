@@ -126,9 +126,9 @@ class VisibilityScene {
 // grid corner gives near/far and the mesh (a piecewise-linear radial surface, band caps with
 // exact z), with radial walls where the visible distance jumps (silhouettes, located by bisection
 // with more rays). with_mesh = false leaves the mesh out (VisibilityVolume::has_mesh): the same
-// intervals and volume, about a fifth less work (beyond the paper, issue 35). Throws Error naming
-// the field for g below the ground or inside an obstacle, d_max <= 0, NaN, or a band with
-// h_lo >= h_hi.
+// intervals and volume, about a fifth less CPU on Charlotte (beyond the paper, issue 35). Throws
+// Error naming the field for g below the ground or inside an obstacle, d_max <= 0, NaN, or a band
+// with h_lo >= h_hi.
 VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, double d_max,
                                    std::optional<std::pair<double, double>> altitude_band = std::nullopt,
                                    double resolution_deg = kDefaultResolutionDeg, bool with_mesh = true);
