@@ -325,7 +325,7 @@ def _call(numbers: Numbers) -> Any:
         return roads.shortest_route(n.integer(-1, 5), n.integer(-1, 5))
     if which == 9:
         return vt.visibility_volume(demo(), (n.number(), n.number(), n.number()), n.number(),
-                                    resolution_deg=30.0).volume
+                                    resolution_deg=30.0, with_mesh=n.integer(0, 1) == 1).volume
     if which == 10:
         uav = vt.Uav(speed=n.number(), min_turn_radius=n.number(), altitude=n.number())
         return vt.min_feasible_radius(uav, n.number())
