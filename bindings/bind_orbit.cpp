@@ -113,8 +113,9 @@ void bind_orbit(py::module_& m) {
       .def("__repr__", [](const WorkEstimate& w) {
         return Repr("WorkEstimate").add("volumes", w.volumes).add("bytes", w.bytes()).str();
       });
-  m.def("volume_bytes", &volume_bytes, py::arg("resolution_deg"),
-        "Memory of one VV on a grid of resolution_deg degrees (bytes; ~4.7 MB at 1 degree).");
+  m.def("volume_bytes", &volume_bytes, py::arg("resolution_deg"), py::arg("with_mesh") = true,
+        "Memory of one VV on a grid of resolution_deg degrees, estimated from above (bytes; ~4.7 MB at 1 "
+        "degree); with_mesh=False: its intervals only (~1 MB).");
   m.def(
       "check_work",
       [](const PoiPath& poi, const Planning& planning) {

@@ -79,7 +79,8 @@ void bind_visibility(py::module_& m) {
 
   py::class_<VisibilityVolume>(m, "VisibilityVolume",
                                "Visibility volume alpha(g) (eq. 4): per-direction visible intervals on a grid "
-                               "and a closed, outward-oriented triangle mesh.")
+                               "and a closed, outward-oriented triangle mesh (left out with with_mesh=False: "
+                               "has_mesh).")
       .def_readonly("poi", &VisibilityVolume::poi, "The POI g (3,).")
       .def_readonly("d_max", &VisibilityVolume::d_max, "Maximum viewing distance (m).")
       .def_readonly("altitude_band", &VisibilityVolume::altitude_band, "(h_lo, h_hi) in world z, or None.")
@@ -109,20 +110,23 @@ void bind_visibility(py::module_& m) {
                     "faces, slices, XOR or files).")
       .def_readonly("mesh_row_sines", &VisibilityVolume::mesh_row_sines,
                     "Star VVs (POI in the band): sines of the elevations of the mesh's vertex rows (grid row\n"
-                    "boundaries plus the creases where d_max meets the ground or a band plane); empty otherwise.")
+                    "boundaries plus the creases where d_max meets the ground or a band plane); empty otherwise,\n"
+                    "and with with_mesh=False.")
       .def_readonly("mesh_triangle_faces", &VisibilityVolume::mesh_triangle_faces,
                     "Star VVs: faces[mesh_triangle_faces[t]:mesh_triangle_faces[t + 1]] are built over triangle slot\n"
                     "t of the sphere of grid corners (two per quad, row-major); what the radial XOR reads. Empty\n"
-                    "otherwise.")
+                    "otherwise, and with with_mesh=False.")
       .def("grid_volume", &VisibilityVolume::grid_volume,
            "Volume represented by the grid intervals: sum over corners of corner_weight * (far^3 - near^3) / 3.")
-      .def("save", &VisibilityVolume::save, py::arg("path"), "Write the mesh to .obj or .ply.")
+      .def("save", &VisibilityVolume::save, py::arg("path"),
+           "Write the mesh to .obj or .ply (VistrackError for a VV computed with with_mesh=False).")
       .def(
           "save_binary",
           [](const VisibilityVolume& vv, const py::object& path) { write_volume_file(vv, fspath(path)); },
           py::arg("path"),
           "Write the whole VV (grid intervals, mesh, volume) to a binary VV file, the format of the on-disk "
-          "VV cache (vv-<hex>.bin, written by OrbitPlanner(cache_dir=...)); atomic (temporary file renamed).")
+          "VV cache (vv-<hex>.bin, written by OrbitPlanner(cache_dir=...)); atomic (temporary file renamed). "
+          "VistrackError for a VV computed with with_mesh=False.")
       .def_static(
           "load",
           [](const py::object& path) {
@@ -227,7 +231,8 @@ void bind_visibility(py::module_& m) {
                     "s: corner rays (their first hits from the triangles' footprints) and the grid's intervals")
       .def_readonly("refine_s", &VolumeCost::refine_s, "s: locating the jumps of r and refining the mesh there")
       .def_readonly("mesh_s", &VolumeCost::mesh_s, "s: writing the mesh")
-      .def_readonly("volume_s", &VolumeCost::volume_s, "s: summing its volume")
+      .def_readonly("volume_s", &VolumeCost::volume_s,
+                    "s: summing its volume (with_mesh=False: the whole volume pass, in place of mesh_s)")
       .def_readonly("candidates_s", &VolumeCost::candidates_s,
                     "s of refine_s (star VV): live corners, the search for jump candidates, the edge map")
       .def_readonly("first_pass_s", &VolumeCost::first_pass_s,

@@ -53,14 +53,16 @@ void bind_volume(py::module_& m) {
   vv.def("slice", &visibility_polygon, py::arg("altitude"), py::arg("all_parts") = false,
          py::call_guard<py::gil_scoped_release>(),
          "Visibility polygon at world altitude z: list of Polygon. By default only the part(s) containing "
-         "the POI's vertical; all_parts=True keeps every part.");
+         "the POI's vertical; all_parts=True keeps every part. VistrackError for a VV computed with "
+         "with_mesh=False.");
   vv.def(
       "check",
       [](const VisibilityVolume& v) {
         detail::require_mesh(v, "vv");
         return check_closed_mesh(v.mesh);
       },
-         py::call_guard<py::gil_scoped_release>(), "check_closed_mesh on this VV's mesh.");
+         py::call_guard<py::gil_scoped_release>(),
+         "check_closed_mesh on this VV's mesh (VistrackError for a VV computed with with_mesh=False).");
 }
 
 }  // namespace vistrack::bindings

@@ -75,7 +75,7 @@ def visibility_volume(
     """
     return _core.visibility_volume(
         visibility_scene(env), np.asarray(g, dtype=float), float(d_max), altitude_band, float(resolution_deg),
-        bool(with_mesh),
+        schema.boolean("with_mesh", with_mesh),
     )
 
 
@@ -93,7 +93,8 @@ def visibility_volumes(
     if points.ndim != 2 or points.shape[1] != 3:
         raise _core.VistrackError(f"pois: shape = {points.shape}: must be (n, 3)")
     return _core.visibility_volumes(
-        visibility_scene(env), points, float(d_max), altitude_band, float(resolution_deg), bool(with_mesh)
+        visibility_scene(env), points, float(d_max), altitude_band, float(resolution_deg),
+        schema.boolean("with_mesh", with_mesh),
     )
 
 

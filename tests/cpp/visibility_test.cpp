@@ -156,8 +156,6 @@ TEST(DirectionGrid, CornersLieOnTheCellBoundaries) {
   EXPECT_EQ(grid.corner(grid.num_elevation, 17), Vec3(0, 0, 1));
 }
 
-// vv.far[k] is the distance along grid.corner(i, j): the VV computes its rays with trig tables,
-// DirectionGrid::corner directly; a wall x = 40 facing g checks both angles.
 TEST(CornerScan, Avx2KernelIsBitIdenticalToScalar) {
   // corner_hits scans runs of a row four columns per AVX2 instruction where the CPU has it; every
   // column must round and decide exactly as the scalar loop. Random triangles' coefficients over
@@ -209,6 +207,8 @@ TEST(CornerScan, Avx2KernelIsBitIdenticalToScalar) {
   EXPECT_GT(taken, 1000u);  // the runs did take hits
 }
 
+// vv.far[k] is the distance along grid.corner(i, j): the VV computes its rays with trig tables,
+// DirectionGrid::corner directly; a wall x = 40 facing g checks both angles.
 TEST(VisibilityVolume, IntervalsLieAlongTheGridsCorners) {
   const VisibilityScene scene(boxes_env({{Vec3(40, -20, 0), Vec3(60, 20, 30)}}));
   const VisibilityVolume vv = visibility_volume(scene, Vec3(0, 0, 0.5), 200.0, std::nullopt, 1.0);

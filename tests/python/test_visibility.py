@@ -147,6 +147,8 @@ def test_vv_memory_is_estimated_from_above(charlotte):
             held = (vv.vertices.nbytes + vv.faces.nbytes + vv.near.nbytes + vv.far.nbytes
                     + 4 * len(vv.mesh_triangle_faces) + 8 * len(vv.mesh_row_sines))
             assert held <= vt.volume_bytes(res), (res, t, held, vt.volume_bytes(res))
+            bare = vt.visibility_volume(scene, poi.position(t), 400.0, None, res, with_mesh=False)
+            assert bare.near.nbytes + bare.far.nbytes <= vt.volume_bytes(res, with_mesh=False) < held
 
 
 def test_save_round_trip(open_field, tmp_path: Path):
@@ -422,10 +424,11 @@ def test_predicted_refine_rays_match_traced_rays_on_charlotte(charlotte, charlot
 def test_volume_without_mesh_is_the_meshs_on_charlotte(charlotte, charlotte_scene, tmp_path, path, d_max, band):
     """with_mesh=False skips the mesh but not its volume: the sums of the fill pass over the points
     its faces would join. Equal to the last bit to the meshed VV's (star VVs with walls and split
-    slots, and shells, the POI above the band (40, 80)), alone and in a batch, with the same
+    slots, and shells, the POI below the band (40, 80)), alone and in a batch, with the same
     intervals; leaving out the walls' and split slots' faces would change it. What reads the mesh
-    refuses the VV, naming it; the grid XOR, which reads the intervals, takes it."""
-    pois, _poi = path_pois(charlotte_scene, charlotte / "paths" / f"{path}.csv", [0.0, 30.0, 60.0])
+    refuses the VV, naming it; the XOR too unless asked for the grid's, which reads the intervals
+    (no silent switch from the exact radial XOR)."""
+    pois, poi = path_pois(charlotte_scene, charlotte / "paths" / f"{path}.csv", [0.0, 30.0, 60.0])
     meshed = vt.visibility_volumes(charlotte_scene, pois, d_max, band, 1.0)
     bare = vt.visibility_volumes(charlotte_scene, pois, d_max, band, 1.0, with_mesh=False)
     for g, a, b in zip(pois, meshed, bare):
@@ -446,8 +449,14 @@ def test_volume_without_mesh_is_the_meshs_on_charlotte(charlotte, charlotte_scen
     refuses(lambda: b.save_binary(tmp_path / "vv.bin"), "vv:", "with_mesh")
     refuses(lambda: vt.radial_xor_volume(b, meshed[1]), "a:", "with_mesh")
     refuses(lambda: vt.xor_volume(meshed[1], b, method="mesh"), "b:", "with_mesh")
+    refuses(lambda: vt.xor_volume(b, bare[1]), "a:", "with_mesh")
+    refuses(lambda: vt.visibility_volume(charlotte_scene, pois[0], d_max, band, 1.0, with_mesh="False"),
+            "with_mesh", "'False'")
+    uav = vt.Uav(speed=20.0, min_turn_radius=50.0, altitude=300.0)
+    refuses(lambda: vt.plan_on_volumes(poi, uav, vt.Planning(), [0.0, 10.0], [meshed[0], b]), "volumes[1]",
+            "with_mesh")
     assert not list(tmp_path.iterdir())  # nothing written
-    assert vt.xor_volume(b, bare[1]) == vt.grid_xor_volume(meshed[0], meshed[1]) > 0.0
+    assert vt.xor_volume(b, bare[1], method="grid") == vt.grid_xor_volume(meshed[0], meshed[1]) > 0.0
 
 
 def test_polygon_agreement_sees_a_wrong_polygon(box_env, open_field):
@@ -483,6 +492,37 @@ def test_volume_cost_accounts_for_every_ray_and_returns_the_same_vv(charlotte, c
         phases = [cost.bounds_s, cost.trace_s, cost.refine_s, cost.mesh_s, cost.volume_s]
         assert all(p >= 0.0 for p in phases) and sum(phases) > 0.0
         assert 0.0 < cost.embree_s <= cost.trace_s + cost.refine_s
+
+
+_KERNELS = """
+import sys
+sys.path.insert(0, sys.argv[1])
+import conftest  # vistrack from the build tree when VISTRACK_BUILD_DIR is set
+import hashlib
+import numpy as np
+import vistrack as vt
+env = vt.Environment.from_mesh(sys.argv[2], up="y")
+vv = vt.visibility_volume(vt.VisibilityScene(env), (-150.0, -45.0, 0.5), 400.0, None, 1.0)
+q0 = np.random.default_rng(3).uniform(-30.0, 30.0, (999, 3))
+lengths, _ = vt.dubins.shortest_lengths(np.ascontiguousarray(q0), np.ascontiguousarray(q0[::-1]), 7.0)
+print(hashlib.sha256(vv.far.tobytes() + vv.vertices.tobytes() + np.float64(vv.volume).tobytes()
+                     + lengths.tobytes()).hexdigest())
+"""
+
+
+def test_the_plain_loops_give_the_same_results(charlotte, tmp_path: Path):
+    """VISTRACK_SCALAR_KERNELS=1 keeps the plain loops where the CPU has AVX2 (how the kernels are
+    timed against them): the same Charlotte VV (intervals, mesh, volume) and Dubins lengths to the
+    bit as with the AVX2 kernels."""
+    script = tmp_path / "kernels.py"
+    script.write_text(_KERNELS)
+    here, city = str(Path(__file__).parent), str(charlotte / "uptown_charlotte.obj")
+    digests = {}
+    for value in ("0", "1"):
+        env = {**os.environ, "VISTRACK_SCALAR_KERNELS": value}
+        digests[value] = subprocess.run([sys.executable, str(script), here, city], check=True, capture_output=True,
+                                        text=True, env=env).stdout.split()[-1]
+    assert digests["0"] == digests["1"]
 
 
 _RETAINED = """

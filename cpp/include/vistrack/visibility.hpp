@@ -54,7 +54,8 @@ struct VisibilityVolume {
   // visible along it.
   std::vector<double> near;
   std::vector<double> far;
-  TriangleMesh mesh;        // closed, outward oriented, 2-manifold, no self-intersections
+  TriangleMesh mesh;        // closed, outward oriented, 2-manifold, no self-intersections (empty
+                            // without has_mesh: read through what checks it, not directly)
   double volume = 0.0;      // of the mesh (divergence theorem)
   // False for a VV computed without its mesh (with_mesh = false): its intervals and its volume
   // (the mesh's, to the last bit) only; mesh, mesh_row_sines and mesh_triangle_faces are empty,
@@ -126,7 +127,8 @@ class VisibilityScene {
 // grid corner gives near/far and the mesh (a piecewise-linear radial surface, band caps with
 // exact z), with radial walls where the visible distance jumps (silhouettes, located by bisection
 // with more rays). with_mesh = false leaves the mesh out (VisibilityVolume::has_mesh): the same
-// intervals and volume, about a fifth less CPU on Charlotte (beyond the paper, issue 35). Throws
+// intervals and volume, for a star VV (the POI in its band) about a fifth less CPU on Charlotte; a
+// shell's volume still comes from its mesh (beyond the paper, issue 35). Throws
 // Error naming the field for g below the ground or inside an obstacle, d_max <= 0, NaN, or a band
 // with h_lo >= h_hi.
 VisibilityVolume visibility_volume(const VisibilityScene& scene, const Vec3& g, double d_max,
@@ -137,8 +139,8 @@ VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double
                                    std::optional<std::pair<double, double>> altitude_band = std::nullopt,
                                    double resolution_deg = kDefaultResolutionDeg, bool with_mesh = true);
 // Memory of one VV on a grid of resolution_deg degrees, estimated from above: its intervals (16 bytes
-// per corner) and its mesh (56 bytes per cell, plus its walls: 3000 sqrt(cells)).
-double volume_bytes(double resolution_deg);
+// per corner) and, with_mesh, its mesh (56 bytes per cell, plus its walls: 3000 sqrt(cells)).
+double volume_bytes(double resolution_deg, bool with_mesh = true);
 // VVs for many POI positions (rows of `pois`), in parallel over the points (TBB); refused naming
 // pois when they would hold more than limits::kMaxWorkBytes (volume_bytes each).
 std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, const Points3& pois,
@@ -151,7 +153,7 @@ struct VolumeCost {
   double trace_s = 0.0;   // corner rays (their first hits from the triangles' footprints)
   double refine_s = 0.0;  // locating the jumps of r (more rays) and refining the mesh there
   double mesh_s = 0.0;    // writing the mesh
-  double volume_s = 0.0;  // summing its volume
+  double volume_s = 0.0;  // summing its volume (with_mesh = false: the volume pass, no mesh_s)
   // refine_s of a star VV (the POI in its band) by stage: the jump candidates (live corners, the
   // search over the grid's edges, the edge map), the first pass over them (the grid edges' rays),
   // the second (the split edges' new edges), confirming the jumps (with the complex slots' pieces,

@@ -119,6 +119,7 @@ VisibilityOrbitPlan plan_on_volumes(const PoiPath& poi, const Uav& uav, const Pl
     detail::fail_field("volumes", volumes.size(), "need one VV per arc length (" + std::to_string(n) + "), at least one");
   for (std::size_t k = 0; k < n; ++k) {
     if (!volumes[k]) detail::fail_field("volumes[" + std::to_string(k) + "]", "None", "must be a VV");
+    detail::require_mesh(*volumes[k], "volumes[" + std::to_string(k) + "]");
     require_finite(arc_lengths[k], "arc_lengths[" + std::to_string(k) + "]");
     if (k > 0 && !(arc_lengths[k] > arc_lengths[k - 1]))
       detail::fail_field("arc_lengths[" + std::to_string(k) + "]", arc_lengths[k], "must increase");

@@ -4,7 +4,8 @@
 
 namespace vistrack::detail {
 
-// Whether this build has the AVX2 kernels and the CPU runs them.
+// Whether this build has the AVX2 kernels and the CPU runs them (and the environment variable
+// VISTRACK_SCALAR_KERNELS is unset or 0).
 bool avx2_kernel_available();
 
 }  // namespace vistrack::detail

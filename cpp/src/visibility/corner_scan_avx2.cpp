@@ -1,7 +1,7 @@
 // scan_run four columns at a time with AVX2 (see corner_scan.hpp). Like dubins_batch_avx2.cpp,
-// this file is compiled for AVX2 by the pragma below and includes nothing but intrinsics and
-// the header's declarations, so no inline function built for AVX2 can leak into the rest of the
-// library; corner_hits checks the CPU before calling it.
+// this file is compiled for AVX2 by the pragma below, which follows the only other include (the
+// header, whose inline scan_run is thus built for plain x86-64), so no inline function built for
+// AVX2 can leak into the rest of the library; corner_hits checks the CPU before calling it.
 #include "visibility/corner_scan.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)

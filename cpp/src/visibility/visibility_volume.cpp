@@ -334,23 +334,24 @@ VisibilityVolume visibility_volume(const Environment& env, const Vec3& g, double
 void detail::require_mesh(const VisibilityVolume& vv, const std::string& field) {
   if (!vv.has_mesh)
     throw Error(field + ": a VV computed without its mesh (with_mesh = false; its intervals and volume only): "
-                "compute it with its mesh to slice, XOR, save or test points against it");
+                "compute it with its mesh to read its mesh, slice it, save it or XOR it (but on the grid)");
 }
 
-double volume_bytes(double resolution_deg) {
+double volume_bytes(double resolution_deg, bool with_mesh) {
   const DirectionGrid grid = DirectionGrid::from_resolution(resolution_deg);
   // Near and far per corner (16 bytes); per cell about one mesh vertex (24), two faces (24) and
   // their slots (8); the walls' and splits' vertices and faces follow the silhouettes, whose length
   // in cells grows as sqrt(cells): a ground POI in uptown Charlotte takes 2.5k sqrt(cells) bytes
   // at 5 degrees, 1.0k at 1 and 0.8k at 0.25 (test_visibility checks the estimate from above).
   const double cells = static_cast<double>(grid.size());
-  return 16.0 * static_cast<double>(grid.num_corners()) + 56.0 * cells + 3000.0 * std::sqrt(cells);
+  const double intervals = 16.0 * static_cast<double>(grid.num_corners());
+  return with_mesh ? intervals + 56.0 * cells + 3000.0 * std::sqrt(cells) : intervals;
 }
 
 std::vector<VisibilityVolume> visibility_volumes(const VisibilityScene& scene, const Points3& pois, double d_max,
                                                  std::optional<std::pair<double, double>> altitude_band,
                                                  double resolution_deg, bool with_mesh) {
-  const double each = volume_bytes(resolution_deg);
+  const double each = volume_bytes(resolution_deg, with_mesh);
   const double count = static_cast<double>(pois.rows());
   require_work_bytes(count * each, "pois", detail::to_text(count) + " points",
                      "their VVs (" + limits::bytes_text(each) + " each at resolution_deg " +

@@ -66,6 +66,12 @@ double grid_xor_volume(const VisibilityVolume& a, const VisibilityVolume& b) {
 
 double xor_volume(const VisibilityVolume& a, const VisibilityVolume& b, XorFrame frame, XorMethod method,
                   const MeshXorOptions& options) {
+  // Every method but the grid's reads the meshes: a VV without its mesh is refused, not quietly
+  // given the grid's trapezoid rule in place of the exact radial XOR.
+  if (method != XorMethod::grid) {
+    detail::require_mesh(a, "a");
+    detail::require_mesh(b, "b");
+  }
   // Star-shaped about one common point: both in the POI frame, or the same POI in the world.
   const bool common_centre = frame == XorFrame::poi || (a.poi - b.poi).norm() == 0.0;
   if (method == XorMethod::automatic && common_centre)
@@ -76,8 +82,6 @@ double xor_volume(const VisibilityVolume& a, const VisibilityVolume& b, XorFrame
                          "the per-direction XOR needs both VVs about one point: frame \"poi\" or equal POIs");
     return method == XorMethod::radial ? radial_xor_volume(a, b) : grid_xor_volume(a, b);
   }
-  detail::require_mesh(a, "a");
-  detail::require_mesh(b, "b");
   if (frame == XorFrame::world) return mesh_xor_volume(a.mesh, b.mesh, options);
   const TriangleMesh a_local{translated(a.mesh.vertices, a.poi), a.mesh.faces};
   const TriangleMesh b_local{translated(b.mesh.vertices, b.poi), b.mesh.faces};

@@ -621,7 +621,7 @@ class DirectionGrid:
         """
 class VisibilityVolume:
     """
-    Visibility volume alpha(g) (eq. 4): per-direction visible intervals on a grid and a closed, outward-oriented triangle mesh.
+    Visibility volume alpha(g) (eq. 4): per-direction visible intervals on a grid and a closed, outward-oriented triangle mesh (left out with with_mesh=False: has_mesh).
     """
     @staticmethod
     def load(path: typing.Any) -> VisibilityVolume:
@@ -632,7 +632,7 @@ class VisibilityVolume:
         ...
     def check(self) -> MeshCheck:
         """
-        check_closed_mesh on this VV's mesh.
+        check_closed_mesh on this VV's mesh (VistrackError for a VV computed with with_mesh=False).
         """
     def grid_volume(self) -> float:
         """
@@ -640,15 +640,15 @@ class VisibilityVolume:
         """
     def save(self, path: str) -> None:
         """
-        Write the mesh to .obj or .ply.
+        Write the mesh to .obj or .ply (VistrackError for a VV computed with with_mesh=False).
         """
     def save_binary(self, path: typing.Any) -> None:
         """
-        Write the whole VV (grid intervals, mesh, volume) to a binary VV file, the format of the on-disk VV cache (vv-<hex>.bin, written by OrbitPlanner(cache_dir=...)); atomic (temporary file renamed).
+        Write the whole VV (grid intervals, mesh, volume) to a binary VV file, the format of the on-disk VV cache (vv-<hex>.bin, written by OrbitPlanner(cache_dir=...)); atomic (temporary file renamed). VistrackError for a VV computed with with_mesh=False.
         """
     def slice(self, altitude: typing.SupportsFloat | typing.SupportsIndex, all_parts: bool = False) -> list[Polygon]:
         """
-        Visibility polygon at world altitude z: list of Polygon. By default only the part(s) containing the POI's vertical; all_parts=True keeps every part.
+        Visibility polygon at world altitude z: list of Polygon. By default only the part(s) containing the POI's vertical; all_parts=True keeps every part. VistrackError for a VV computed with with_mesh=False.
         """
     @property
     def altitude_band(self) -> tuple[float, float] | None:
@@ -685,14 +685,15 @@ class VisibilityVolume:
     def mesh_row_sines(self) -> list[float]:
         """
         Star VVs (POI in the band): sines of the elevations of the mesh's vertex rows (grid row
-        boundaries plus the creases where d_max meets the ground or a band plane); empty otherwise.
+        boundaries plus the creases where d_max meets the ground or a band plane); empty otherwise,
+        and with with_mesh=False.
         """
     @property
     def mesh_triangle_faces(self) -> list[int]:
         """
         Star VVs: faces[mesh_triangle_faces[t]:mesh_triangle_faces[t + 1]] are built over triangle slot
         t of the sphere of grid corners (two per quad, row-major); what the radial XOR reads. Empty
-        otherwise.
+        otherwise, and with with_mesh=False.
         """
     @property
     def near(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -859,7 +860,7 @@ class VolumeCost:
     @property
     def volume_s(self) -> float:
         """
-        s: summing its volume
+        s: summing its volume (with_mesh=False: the whole volume pass, in place of mesh_s)
         """
 class MeshCheck:
     """
@@ -1984,9 +1985,9 @@ def visible_disk_radius(scene: VisibilityScene, poi: typing.Annotated[numpy.typi
     """
     MaxRadius by line of sight (the locus check's probe): the largest disk at world z = altitude centred above the POI (placed on the surface) every point of which sees it, by occlusion rays along `azimuths` directions on `rings` circles and then by bisection.
     """
-def volume_bytes(resolution_deg: typing.SupportsFloat | typing.SupportsIndex) -> float:
+def volume_bytes(resolution_deg: typing.SupportsFloat | typing.SupportsIndex, with_mesh: bool = True) -> float:
     """
-    Memory of one VV on a grid of resolution_deg degrees (bytes; ~4.7 MB at 1 degree).
+    Memory of one VV on a grid of resolution_deg degrees, estimated from above (bytes; ~4.7 MB at 1 degree); with_mesh=False: its intervals only (~1 MB).
     """
 def wrap_to_pi(angle: typing.SupportsFloat | typing.SupportsIndex) -> float:
     """
