@@ -15,10 +15,10 @@ from pathlib import Path
 
 from support.paths import REPO
 
-# Bottom to top. error/limits (the input ranges)/geometry are the base every area may use;
-# planners are peers of one another and may not include each other.
+# Bottom to top. error/limits (the input ranges)/simd (the CPU check of the AVX2 kernels)/geometry
+# are the base every area may use; planners are peers of one another and may not include each other.
 LEVELS = {
-    "error": 0, "limits": 0.5, "geometry": 1, "environment": 3, "dubins": 4, "visibility": 5,
+    "error": 0, "limits": 0.5, "simd": 0.5, "geometry": 1, "environment": 3, "dubins": 4, "visibility": 5,
     "volume": 6,
     "vehicle": 4.5, "orbit": 7, "guidance": 8, "ode": 9, "simulate": 10, "flight": 11,
     "waypoint_nav": 12, "loiter": 12, "follow": 12,
