@@ -104,9 +104,10 @@ def main() -> int:
         rays = len(dirs)
         single = best_of(args.repeat, lambda: [vt.visibility_volume(scene, p, args.d_max, None, res) for p in pois])
         batch = best_of(args.repeat, lambda: vt.visibility_volumes(scene, pois, args.d_max, None, res))
-        volume_single = best_of(args.repeat, lambda: [vt.visibility_volume(scene, p, args.d_max, None, res, False)
-                                                      for p in pois])
-        volume_batch = best_of(args.repeat, lambda: vt.visibility_volumes(scene, pois, args.d_max, None, res, False))
+        volume_single = best_of(args.repeat, lambda: [vt.visibility_volume(scene, p, args.d_max, None, res,
+                                                                           with_mesh=False) for p in pois])
+        volume_batch = best_of(args.repeat, lambda: vt.visibility_volumes(scene, pois, args.d_max, None, res,
+                                                                          with_mesh=False))
         trace = best_of(args.repeat, lambda: [scene.first_hits(p, dirs, args.d_max) for p in pois])
 
         def peer_run() -> None:

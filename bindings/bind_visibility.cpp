@@ -107,7 +107,7 @@ void bind_visibility(py::module_& m) {
                     "Volume of the mesh (m^3); the same value when computed with with_mesh=False.")
       .def_readonly("has_mesh", &VisibilityVolume::has_mesh,
                     "False for a VV computed with with_mesh=False: its intervals and volume only (no vertices,\n"
-                    "faces, slices, XOR or files).")
+                    "faces, slices or files; the XOR on the grid only).")
       .def_readonly("mesh_row_sines", &VisibilityVolume::mesh_row_sines,
                     "Star VVs (POI in the band): sines of the elevations of the mesh's vertex rows (grid row\n"
                     "boundaries plus the creases where d_max meets the ground or a band plane); empty otherwise,\n"

@@ -61,8 +61,8 @@ void bind_volume(py::module_& m) {
         detail::require_mesh(v, "vv");
         return check_closed_mesh(v.mesh);
       },
-         py::call_guard<py::gil_scoped_release>(),
-         "check_closed_mesh on this VV's mesh (VistrackError for a VV computed with with_mesh=False).");
+      py::call_guard<py::gil_scoped_release>(),
+      "check_closed_mesh on this VV's mesh (VistrackError for a VV computed with with_mesh=False).");
 }
 
 }  // namespace vistrack::bindings

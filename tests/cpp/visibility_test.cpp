@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +17,7 @@
 #include <limits>
 #include <random>
 #include <sstream>
+#include <string>
 
 #include "simd/cpu.hpp"
 #include "test_data.hpp"
@@ -154,6 +156,24 @@ TEST(DirectionGrid, CornersLieOnTheCellBoundaries) {
   EXPECT_EQ(grid.corner(grid.num_elevation / 2, 17).z(), 0.0);
   EXPECT_EQ(grid.corner(0, 17), Vec3(0, 0, -1));
   EXPECT_EQ(grid.corner(grid.num_elevation, 17), Vec3(0, 0, 1));
+}
+
+TEST(CpuCheck, ScalarKernelsVariableTurnsAvx2Off) {
+  // VISTRACK_SCALAR_KERNELS=1 keeps the plain loops (how the kernels are timed); unset or 0, the
+  // AVX2 kernels run where the CPU has them.
+  const char* saved = std::getenv("VISTRACK_SCALAR_KERNELS");
+  const std::string kept = saved != nullptr ? saved : "";
+  ::unsetenv("VISTRACK_SCALAR_KERNELS");
+  const bool has_avx2 = detail::avx2_kernel_available();
+  ::setenv("VISTRACK_SCALAR_KERNELS", "0", 1);
+  EXPECT_EQ(detail::avx2_kernel_available(), has_avx2);
+  ::setenv("VISTRACK_SCALAR_KERNELS", "1", 1);
+  EXPECT_FALSE(detail::avx2_kernel_available());
+  if (saved != nullptr) ::setenv("VISTRACK_SCALAR_KERNELS", kept.c_str(), 1);
+  else ::unsetenv("VISTRACK_SCALAR_KERNELS");
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+  EXPECT_EQ(has_avx2, static_cast<bool>(__builtin_cpu_supports("avx2")));
+#endif
 }
 
 TEST(CornerScan, Avx2KernelIsBitIdenticalToScalar) {

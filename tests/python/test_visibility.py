@@ -439,6 +439,11 @@ def test_volume_without_mesh_is_the_meshs_on_charlotte(charlotte, charlotte_scen
         assert len(b.mesh_row_sines) == 0 and len(b.mesh_triangle_faces) == 0
     if band is None:
         assert len(meshed[0].mesh_row_sines) > 0  # star VVs: the walls and splits were there to add up
+    # The timed path too: the volume pass stands in for the mesh's.
+    timed, cost = vt._core.visibility_volume_cost(charlotte_scene, pois[0], d_max, band, 1.0, False, with_mesh=False)
+    assert not timed.has_mesh and timed.volume == meshed[0].volume
+    if len(meshed[0].mesh_row_sines) > 0:  # a star VV (a shell's volume still comes from its mesh)
+        assert cost.mesh_s == 0.0 and cost.fill_s == 0.0 and cost.volume_s > 0.0
     b = bare[0]
     refuses(lambda: b.vertices, "vv.vertices", "with_mesh")
     refuses(lambda: b.faces, "vv.faces", "with_mesh")
@@ -513,7 +518,10 @@ print(hashlib.sha256(vv.far.tobytes() + vv.vertices.tobytes() + np.float64(vv.vo
 def test_the_plain_loops_give_the_same_results(charlotte, tmp_path: Path):
     """VISTRACK_SCALAR_KERNELS=1 keeps the plain loops where the CPU has AVX2 (how the kernels are
     timed against them): the same Charlotte VV (intervals, mesh, volume) and Dubins lengths to the
-    bit as with the AVX2 kernels."""
+    bit as with the AVX2 kernels. That the variable switches the kernels off is
+    CpuCheck.ScalarKernelsVariableTurnsAvx2Off (visibility_test)."""
+    if " avx2" not in Path("/proc/cpuinfo").read_text():
+        pytest.skip("this CPU has no AVX2: only the plain loops run either way")
     script = tmp_path / "kernels.py"
     script.write_text(_KERNELS)
     here, city = str(Path(__file__).parent), str(charlotte / "uptown_charlotte.obj")

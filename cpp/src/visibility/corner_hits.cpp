@@ -64,6 +64,8 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
   const std::vector<double>& sines = dirs.sin_el_corner;
   const double d_az = kTwoPi / na;
   const bool avx2 = avx2_kernel_available();  // the same hits either way (corner_scan.hpp)
+  const double* cos_az = dirs.cos_az_corner.data();
+  const double* sin_az = dirs.sin_az_corner.data();
   // Hits count up to where the ray's visible part ends anyway (as the traced rays' t_max): as an
   // inverse distance, from w_min on (+inf: the row sees nothing).
   std::vector<double> row_w_min(static_cast<std::size_t>(ne) + 1);
@@ -160,8 +162,6 @@ std::size_t corner_hits(const Clearance& clearance, const std::vector<float>& tr
         for (int r = 0; r < (pole ? 1 : runs); ++r) {
           const int j0 = pole ? 0 : first[static_cast<std::size_t>(r)], j1 = pole ? 0 : last[static_cast<std::size_t>(r)];
           tested += static_cast<std::size_t>(j1 - j0 + 1);
-          const double* cos_az = dirs.cos_az_corner.data();
-          const double* sin_az = dirs.sin_az_corner.data();
           if (avx2)
             scan_run_avx2(cos_az, sin_az, j0, j1, a.data(), b.data(), c.data(), inv_offset, w_min, ordinal, row_hit,
                           row_owner);

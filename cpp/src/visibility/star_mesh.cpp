@@ -827,6 +827,10 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
   const std::array<double, 4> plane_z = {0.0, s.low, s.high, s.ground};
   static_assert(static_cast<int>(Surface::band_low) == 1 && static_cast<int>(Surface::band_high) == 2 &&
                 static_cast<int>(Surface::ground) == 3);
+  // Split point k (sample nv + k).
+  auto extra_point = [&](std::size_t k) {
+    return point_on(s, sc.extra_direction[k], sc.extra_far[k], sc.extra_surface[k]);
+  };
   // The determinants of the directions at the corners of row i's two kinds of slot: a plain
   // slot's face is g + far d at its three corners, so its six-fold volume is r_a r_b r_c
   // det(d_a, d_b, d_c), and the determinant is the same along a row.
@@ -849,11 +853,11 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     // in its order, over the points its faces would join, computed here instead of stored, so that
     // the volume is the mesh's to the last bit. The border fans all end at g: they add nothing.
     PhaseTimer volume_timer(cost ? &cost->volume_s : nullptr);
-    auto corner_point = [&](int v) {  // as the vertex pass below writes it
-      if (v >= nv) {
-        const auto k = static_cast<std::size_t>(v - nv);
-        return point_on(s, sc.extra_direction[k], sc.extra_far[k], sc.extra_surface[k]);
-      }
+    // As the vertex pass below writes it (its hot loop keeps g and the row's angles in locals, which
+    // a shared function would make it reload per corner; the equality of the two volumes, tested,
+    // holds them together).
+    auto corner_point = [&](int v) {
+      if (v >= nv) return extra_point(static_cast<std::size_t>(v - nv));
       const int i = v == 0 ? 0 : (v == nv - 1 ? ne : 1 + (v - 1) / na);
       const auto j = static_cast<std::size_t>(v - sphere.row_first(i));
       const double sin_el = dirs.sin_el_corner[static_cast<std::size_t>(i)];
@@ -1039,7 +1043,7 @@ void build_star_mesh(const Setup& s, const SphereGrid& sphere, const Directions&
     }
   });
   for (std::size_t k = 0; k < extra_vertex.size(); ++k)
-    set_vertex(extra_vertex[k], point_on(s, sc.extra_direction[k], sc.extra_far[k], sc.extra_surface[k]));
+    set_vertex(extra_vertex[k], extra_point(k));
   for (const Jump& jump : jumps) {
     if (!jump.confirmed) continue;
     set_vertex(jump.vertex, jump_point(jump, false));

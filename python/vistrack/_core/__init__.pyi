@@ -679,7 +679,7 @@ class VisibilityVolume:
     def has_mesh(self) -> bool:
         """
         False for a VV computed with with_mesh=False: its intervals and volume only (no vertices,
-        faces, slices, XOR or files).
+        faces, slices or files; the XOR on the grid only).
         """
     @property
     def mesh_row_sines(self) -> list[float]:
